@@ -1,0 +1,17 @@
+"""The public API of pdps_core: everything a plugin or a Python user may import.
+
+Plugins import from here only; anything else in pdps_core may change without notice.
+"""
+
+from .errors import ScriptError, SimulationError
+from .neighbor.neighbor import NeighborList
+from .random import pair_gaussian, philox4x32
+from .run.hookspec import HOOKS
+from .simulation import Simulation
+from .state import observables
+from .styles import (Analyze, Compute, Dump, Fix, Pair, Region, StyleArgs, keyword, parse_args,
+                     registry)
+
+__all__ = ["Analyze", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "Region",
+           "ScriptError", "SimulationError", "Simulation", "StyleArgs", "keyword", "observables",
+           "pair_gaussian", "parse_args", "philox4x32", "registry"]

@@ -1,0 +1,104 @@
+"""The ``pdps`` command.
+
+    pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--debug]
+    pdps styles                 every installed style, by kind, with the distribution that provides it
+    pdps doc KIND STYLE         a style's documentation (imports only that style)
+"""
+
+import argparse
+import sys
+import traceback
+
+from .errors import ScriptError
+
+
+def _parser():
+    parser = argparse.ArgumentParser(prog="pdps", description="particle dynamics, PDPS/LAMMPS scripts")
+    sub = parser.add_subparsers(dest="action", required=True)
+    run = sub.add_parser("run", help="run an input script")
+    run.add_argument("script")
+    run.add_argument("-var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
+                     help="define an index variable, as LAMMPS's -var")
+    run.add_argument("-log", default="log.pdps", help="log file (default log.pdps; none for no log)")
+    run.add_argument("--debug", action="store_true", help="show the traceback of an error")
+    sub.add_parser("styles", help="list installed styles without importing them")
+    doc = sub.add_parser("doc", help="show a style's documentation")
+    doc.add_argument("kind", choices=["pair", "fix", "compute", "analyze", "dump", "region"])
+    doc.add_argument("style")
+    return parser
+
+
+def main(argv=None):
+    args = _parser().parse_args(argv)
+    if args.action == "styles":
+        return _styles()
+    if args.action == "doc":
+        return _doc(args.kind, args.style)
+    return _run(args)
+
+
+def _styles():
+    from .styles import registry
+    rows = registry.listing()
+    if not rows:
+        print("no styles installed")
+        return 0
+    kind_w = max(len(r[0]) for r in rows)
+    name_w = max(len(r[1]) for r in rows)
+    for kind, name, dist, _ in rows:
+        print(f"{kind:<{kind_w}}  {name:<{name_w}}  {dist}")
+    return 0
+
+
+def _doc(kind, style):
+    import inspect
+
+    from .styles import registry
+    try:
+        cls = registry.lookup(kind, style)
+    except ScriptError as exc:
+        print(f"ERROR: {exc}", file=sys.stderr)
+        return 1
+    print(inspect.getdoc(sys.modules[cls.__module__]) or inspect.getdoc(cls) or "(no documentation)")
+    return 0
+
+
+def _run(args):
+    from .simulation import Simulation
+    log = None if args.log == "none" else args.log
+    sim = None
+    try:
+        sim = Simulation(log=log, variables=dict(args.var))
+        sim.file(args.script)
+        return 0
+    except ScriptError as exc:
+        _fail(sim, f"ERROR: {exc}", args.debug)
+        return 1
+    except KeyboardInterrupt:
+        _fail(sim, "ERROR: interrupted", args.debug)
+        return 1
+    except Exception as exc:  # a bug in pdps or a plugin: still one line unless --debug
+        where = f" at {sim.source}:{sim.line}" if sim is not None and sim.source else ""
+        _fail(sim, f"ERROR: internal error{where}: {type(exc).__name__}: {exc} "
+                   "(run with --debug for the traceback)", args.debug)
+        return 1
+    finally:
+        if sim is not None:
+            sim.close()
+
+
+def _fail(sim, message, debug):
+    if debug:
+        traceback.print_exc()
+    print(message, file=sys.stderr)
+    if sim is not None and sim.output.log is not None:
+        print(message, file=sim.output.log)
+        sim.output.log.flush()
+
+
+def entry():
+    sys.exit(main())
+
+
+if __name__ == "__main__":
+    entry()

@@ -1,0 +1,15 @@
+"""The core commands. Each is a function ``(sim, args)`` registered under its name(s) with ``command``;
+they parse and validate their words and call into the Simulation, nothing more."""
+
+COMMANDS = {}
+
+
+def command(*names):
+    def register(function):
+        for name in names:
+            COMMANDS[name] = function
+        return function
+    return register
+
+
+from . import control, geometry, particles, setup, styles  # noqa: E402,F401  (they register)

@@ -1,0 +1,47 @@
+"""Geometry commands: region and create_box."""
+
+import numpy as np
+
+from ..errors import ScriptError
+from ..state.box import Box
+from ..styles import registry
+from . import command
+from .words import count, integer
+
+
+@command("region")
+def region(sim, args):
+    if len(args) < 2:
+        raise ScriptError("expected: region ID STYLE args")
+    ident, style = args[0], args[1]
+    if ident in sim.regions:
+        raise ScriptError(f"region {ident} is already defined")
+    cls = registry.lookup("region", style)
+    sim.regions[ident] = cls(sim, ident, cls.parse(args[2:]))
+
+
+@command("create_box")
+def create_box(sim, args):
+    count(args, 2, "create_box NTYPES REGION-ID")
+    if sim.box is not None:
+        raise ScriptError("the simulation box already exists")
+    ntypes = integer(args[0], "ntypes", low=1)
+    lo, hi = sim.region(args[1]).bounds()
+    make_box(sim, lo, hi, ntypes)
+
+
+def make_box(sim, lo, hi, ntypes):
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
+        raise ScriptError("box bounds must be finite")
+    if sim.dimension == 2:
+        if sim.periodicity[2] != "p":
+            raise ScriptError("a 2-d simulation needs a periodic z boundary (boundary x y p)")
+        if not lo[2] < 0 < hi[2]:
+            lo[2], hi[2] = -0.5, 0.5
+    for axis, a, b in zip("xyz", lo, hi):
+        if not a < b:
+            raise ScriptError(f"box {axis} bounds must have lo < hi (got {a:g} {b:g})")
+    sim.box = Box(lo, hi, [p == "p" for p in sim.periodicity], sim.dimension)
+    sim.ntypes = ntypes
+    sim.type_mass = np.full(ntypes + 1, np.nan)

@@ -1,0 +1,304 @@
+"""Particle commands: create_particle, read_data, mass, group, velocity."""
+
+import math
+
+import numpy as np
+
+from ..errors import ScriptError
+from ..state import observables as obs
+from . import command
+from .geometry import make_box
+from .words import choice, count, integer, number, type_range, yes_no
+
+SPHERE_KEYWORDS = ("diameter", "density")
+
+
+def _sphere_values(sim, keywords):
+    """Per-particle radius and rmass for particle_style sphere (diameter 1, density 1 by default)."""
+    if sim.particle_style != "sphere":
+        if keywords:
+            raise ScriptError(f"{next(iter(keywords))} needs particle_style sphere")
+        return {}
+    diameter = keywords.get("diameter", 1.0)
+    density = keywords.get("density", 1.0)
+    radius = 0.5 * diameter
+    if sim.dimension == 2:
+        rmass = density * math.pi * radius ** 2
+    else:
+        rmass = density * 4.0 / 3.0 * math.pi * radius ** 3
+    return {"radius": radius, "rmass": rmass}
+
+
+def _split_keywords(args, names):
+    """Trailing ``name value`` pairs for the given names -> (rest, {name: float})."""
+    values, rest, i = {}, [], 0
+    while i < len(args):
+        if args[i] in names:
+            if i + 1 >= len(args):
+                raise ScriptError(f"keyword {args[i]} needs a value")
+            values[args[i]] = number(args[i + 1], args[i], low=0.0, strict_low=True)
+            i += 2
+        else:
+            rest.append(args[i])
+            i += 1
+    return rest, values
+
+
+@command("create_particle", "create_atoms")
+def create_particle(sim, args):
+    usage = ("create_particle TYPE single X Y Z | spacing REGION | region REGION | box | "
+             "random_no_overlap N REGION MIN_DISTANCE SEED  [diameter D] [density RHO]")
+    sim.require_box("create_particle")
+    args, keywords = _split_keywords(args, SPHERE_KEYWORDS)
+    if len(args) < 2:
+        raise ScriptError(f"expected a type and a style; usage: {usage}")
+    ptype = integer(args[0], "type", low=1, high=sim.ntypes)
+    style = choice(args[1], "create_particle style",
+                   ("single", "spacing", "region", "box", "random_no_overlap", "random"))
+    rest = args[2:]
+    if style == "single":
+        count(rest, 3, usage)
+        x = np.array([[number(w, f"{a}") for a, w in zip("xyz", rest)]])
+        if sim.dimension == 2:
+            x[:, 2] = 0.0
+        if not sim.box.inside(x).all():
+            raise ScriptError(f"position {' '.join(rest)} is outside the box")
+    elif style in ("spacing", "region", "box"):
+        if style == "box":
+            count(rest, 0, usage)
+            region = None
+        else:
+            count(rest, 1, usage)
+            region = sim.region(rest[0])
+        x = _lattice_sites(sim, region)
+    else:
+        if style == "random_no_overlap":
+            count(rest, 4, usage)
+            n = integer(rest[0], "N", low=0)
+            region = sim.region(rest[1])
+            dmin = number(rest[2], "minimum distance", low=0.0)
+            seed = integer(rest[3], "seed", low=1)
+        else:  # LAMMPS: random N SEED REGION [overlap D]
+            if len(rest) not in (3, 5) or (len(rest) == 5 and rest[3] != "overlap"):
+                raise ScriptError("usage: create_particle TYPE random N SEED REGION [overlap D]")
+            n = integer(rest[0], "N", low=0)
+            seed = integer(rest[1], "seed", low=1)
+            region = sim.region(rest[2])
+            dmin = number(rest[4], "overlap", low=0.0) if len(rest) == 5 else 0.0
+        x = _random_no_overlap(sim, n, region, dmin, seed)
+    sim.particles.add(x, ptype, **_sphere_values(sim, keywords))
+    sim.groups.update(sim)
+    sim.output.message(f"Created {len(x)} particles")
+
+
+def _lattice_sites(sim, region):
+    if sim.lattice is None:
+        raise ScriptError("creating particles on a lattice needs a lattice command first")
+    spacing, basis = sim.lattice
+    box = sim.box
+    lo, hi = (box.lo, box.hi) if region is None else region.bounds()
+    lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
+    axes = []
+    for d in range(3):
+        if sim.dimension == 2 and d == 2:
+            axes.append(np.zeros(1))
+            continue
+        n = int(math.ceil((hi[d] - lo[d]) / spacing[d] - 1e-9)) + 1
+        axes.append(np.arange(n) * spacing[d])
+    cells = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+    sites = (cells[:, None, :] + basis[None, :, :] * spacing).reshape(-1, 3) + lo * [1, 1, sim.dimension == 3]
+    tolerance = 1e-9 * spacing
+    keep = np.all((sites >= lo - tolerance) & (sites < hi - tolerance), axis=1)
+    sites = sites[keep]
+    if region is not None:
+        sites = sites[region.inside(sites)]
+    return sites[box.inside(sites)]
+
+
+def _random_no_overlap(sim, n, region, dmin, seed, max_tries_per_particle=1000):
+    """Random positions in ``region``, none closer than dmin to another (periodic images counted)."""
+    rng = np.random.default_rng(seed)
+    box = sim.box
+    lo, hi = region.bounds()
+    lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
+    dims = 2 if sim.dimension == 2 else 3
+    cell = max(dmin, 1e-12)
+    grid = {}
+    length = box.length
+    periodic = np.array(box.periodic)
+
+    def key(p):
+        return tuple(int(math.floor(c / cell)) for c in p[:dims])
+
+    existing = sim.particles.x[: sim.particles.nlocal]
+    for p in existing:
+        grid.setdefault(key(p), []).append(p)
+
+    def free(p):
+        if dmin <= 0:
+            return True
+        k = key(p)
+        reach = [range(-1, 2)] * dims
+        for offset in np.stack(np.meshgrid(*reach, indexing="ij"), -1).reshape(-1, dims):
+            for q in grid.get(tuple(np.add(k, offset)), ()):
+                delta = p - q
+                delta = np.where(periodic, delta - length * np.round(delta / length), delta)
+                if delta @ delta < dmin * dmin:
+                    return False
+        # near a periodic face the neighbouring cell of an image may be far in key space
+        if np.any(periodic[:dims] & ((p[:dims] - box.lo[:dims] < dmin) | (box.hi[:dims] - p[:dims] < dmin))):
+            for q_list in grid.values():
+                for q in q_list:
+                    delta = p - q
+                    delta = np.where(periodic, delta - length * np.round(delta / length), delta)
+                    if delta @ delta < dmin * dmin:
+                        return False
+        return True
+
+    placed = []
+    tries = 0
+    limit = max_tries_per_particle * max(n, 1)
+    while len(placed) < n:
+        if tries >= limit:
+            raise ScriptError(f"placed only {len(placed)} of {n} particles in region {region.id} "
+                              f"without overlap after {tries} tries (minimum distance {dmin:g}): "
+                              "the region is too full")
+        tries += 1
+        p = lo + rng.random(3) * (hi - lo)
+        if sim.dimension == 2:
+            p[2] = 0.0
+        if not (region.inside(p[None])[0] and box.inside(p[None])[0]) or not free(p):
+            continue
+        placed.append(p)
+        grid.setdefault(key(p), []).append(p)
+    return np.array(placed).reshape(-1, 3)
+
+
+@command("mass")
+def mass(sim, args):
+    count(args, 2, "mass TYPE VALUE")
+    sim.require_box("mass")
+    lo, hi = type_range(args[0], sim.ntypes)
+    sim.type_mass[lo:hi + 1] = number(args[1], "mass", low=0.0, strict_low=True)
+
+
+@command("group")
+def group(sim, args):
+    usage = "group ID [all | region REGION-ID | type T... | delete]"
+    if not args:
+        raise ScriptError(f"expected a group id; usage: {usage}")
+    name, rest = args[0], args[1:]
+    if name == "all" and not rest:
+        return
+    if not rest:
+        raise ScriptError(f"expected a group style; usage: {usage}")
+    style = choice(rest[0], "group style", ("all", "region", "type", "delete"))
+    if style == "region":
+        count(rest[1:], 1, usage)
+        sim.region(rest[1])
+        definition = ("region", rest[1])
+    elif style == "type":
+        if len(rest) < 2:
+            raise ScriptError(f"expected at least one type; usage: {usage}")
+        sim.require_box("group type")
+        definition = ("type", *[type_range(w.replace(":", "*"), sim.ntypes) for w in rest[1:]])
+    else:
+        count(rest[1:], 0, usage)
+        definition = (style,)
+    sim.groups.define(sim, name, definition)
+
+
+@command("velocity")
+def velocity(sim, args):
+    usage = ("velocity GROUP create T SEED [uniform|gaussian] [dist uniform|gaussian] [mom yes|no] "
+             "| velocity GROUP set VX VY VZ (NULL keeps a component)")
+    if len(args) < 2:
+        raise ScriptError(f"expected a group and a style; usage: {usage}")
+    sim.require_box("velocity")
+    name = sim.require_group(args[0])
+    style = choice(args[1], "velocity style", ("create", "set"))
+    chosen = sim.groups.select(sim, name)
+    v = sim.particles.v[: sim.particles.nlocal]
+    if style == "set":
+        count(args[2:], 3, usage)
+        for d, word in enumerate(args[2:5]):
+            if word != "NULL":
+                v[chosen, d] = number(word, "v" + "xyz"[d])
+        return
+    if len(args) < 4:
+        raise ScriptError(f"expected a temperature and a seed; usage: {usage}")
+    temp = number(args[2], "temperature", low=0.0)
+    seed = integer(args[3], "seed", low=1)
+    dist, momentum, rest = "uniform", True, args[4:]
+    i = 0
+    while i < len(rest):
+        word = rest[i]
+        if word in ("uniform", "gaussian"):
+            dist, i = word, i + 1
+        elif word in ("dist", "mom", "loop") and i + 1 < len(rest):
+            if word == "dist":
+                dist = choice(rest[i + 1], "dist", ("uniform", "gaussian"))
+            elif word == "mom":
+                momentum = yes_no(rest[i + 1], "mom")
+            else:
+                choice(rest[i + 1], "loop", ("all", "local", "geom"))
+            i += 2
+        else:
+            raise ScriptError(f"unknown velocity keyword {word}; usage: {usage}")
+    create_velocities(sim, chosen, name, temp, seed, dist, momentum)
+
+
+def create_velocities(sim, chosen, group, temp, seed, dist, momentum):
+    """Random velocities keyed by particle tag (so the same on any number of ranks), then the group's
+    net momentum removed and the group scaled to exactly ``temp``, as LAMMPS's ``loop all`` does."""
+    p = sim.particles
+    n = p.nlocal
+    rng = np.random.default_rng(seed)
+    ntags = int(sim.comm.max(int(p.tag[:n].max()) if n else 0))
+    draw = rng.standard_normal if dist == "gaussian" else (lambda size: rng.random(size) - 0.5)
+    by_tag = draw((ntags + 1, 3))
+    v = p.v[:n]
+    v[chosen] = by_tag[p.tag[:n][chosen]]
+    if sim.dimension == 2:
+        v[chosen, 2] = 0.0
+    m = obs.masses(sim, chosen)
+    if momentum:
+        total_mass = sim.comm.sum(float(m.sum()))
+        if total_mass > 0:
+            vcm = sim.comm.sum((m[:, None] * v[chosen]).sum(axis=0)) / total_mass
+            v[chosen] -= vcm
+    current = obs.temperature(sim, group)
+    if current > 0:
+        v[chosen] *= math.sqrt(temp / current)
+
+
+@command("read_data")
+def read_data(sim, args):
+    from ..state.data_file import read_data_file
+    count(args, 1, "read_data FILE")
+    if sim.box is not None:
+        raise ScriptError("read_data needs no box to exist yet (it creates it)")
+    data = read_data_file(sim.resolve(args[0]), sim.particle_style)
+    make_box(sim, data.lo, data.hi, data.ntypes)
+    for t, value in data.masses.items():
+        if not 1 <= t <= data.ntypes:
+            raise ScriptError(f"{args[0]}: Masses: type {t} is out of range 1..{data.ntypes}")
+        sim.type_mass[t] = value
+    p = sim.particles
+    if np.any(data.types < 1) or np.any(data.types > data.ntypes):
+        bad = int(data.types[(data.types < 1) | (data.types > data.ntypes)][0])
+        raise ScriptError(f"{args[0]}: Atoms: type {bad} is out of range 1..{data.ntypes}")
+    extra = {}
+    if sim.particle_style == "sphere":
+        extra = {"radius": 0.5 * data.diameter,
+                 "rmass": data.density * (math.pi * (0.5 * data.diameter) ** 2 if sim.dimension == 2
+                                          else 4.0 / 3.0 * math.pi * (0.5 * data.diameter) ** 3)}
+    start = p.nlocal
+    p.add(data.x, data.types, **extra)
+    p.tag[start:] = data.tags
+    p.image[start:] = data.images
+    p.next_tag = int(data.tags.max()) + 1 if len(data.tags) else p.next_tag
+    if data.velocities is not None:
+        p.v[start:] = data.velocities
+    sim.groups.update(sim)
+    sim.output.message(f"Read {len(data.tags)} particles from {args[0]}")

@@ -1,0 +1,159 @@
+"""Initialization commands: units, dimension, boundary, timestep, lattice, neighbor, neigh_modify,
+particle_style, processors, integrate, comm_modify, newton."""
+
+import numpy as np
+
+from ..errors import ScriptError
+from ..state.units import UNITS
+from . import command
+from .words import choice, count, integer, number, yes_no
+
+# LAMMPS's default skins: 0.3 sigma in lj units, 1 mm in SI.
+DEFAULT_SKIN = {"lj": 0.3, "si": 0.001}
+
+
+def _before_box(sim, name):
+    if sim.box is not None:
+        raise ScriptError(f"{name} must come before the simulation box is created")
+
+
+@command("units")
+def units(sim, args):
+    count(args, 1, "units lj|si")
+    _before_box(sim, "units")
+    style = choice(args[0], "units style", tuple(UNITS))
+    sim.unit_system = UNITS[style]
+    sim.dt = sim.unit_system.dt
+    sim.neighbors.skin = DEFAULT_SKIN[style]
+
+
+@command("dimension")
+def dimension(sim, args):
+    count(args, 1, "dimension 2|3")
+    _before_box(sim, "dimension")
+    sim.dimension = int(choice(args[0], "dimension", ("2", "3")))
+
+
+@command("boundary")
+def boundary(sim, args):
+    count(args, 3, "boundary x y z  (each p or f)")
+    _before_box(sim, "boundary")
+    for axis, word in zip("xyz", args):
+        choice(word, f"boundary {axis}", ("p", "f"))
+    sim.periodicity = tuple(args)
+
+
+@command("timestep")
+def timestep(sim, args):
+    count(args, 1, "timestep dt")
+    sim.dt = number(args[0], "timestep", low=0.0, strict_low=True)
+
+
+@command("lattice")
+def lattice(sim, args):
+    """``lattice spacing x DX y DY z DZ`` (PDPS) or ``lattice sc|bcc|fcc SCALE`` (LAMMPS: in lj units
+    SCALE is the reduced density, otherwise the lattice constant)."""
+    usage = "lattice spacing x DX y DY z DZ | lattice sc|bcc|fcc SCALE"
+    if not args:
+        raise ScriptError(f"expected arguments; usage: {usage}")
+    style = choice(args[0], "lattice style", ("spacing", "sc", "bcc", "fcc", "none"))
+    if style == "none":
+        sim.lattice = None
+        return
+    if style == "spacing":
+        spacing = np.ones(3)
+        words = args[1:]
+        if not words or len(words) % 2:
+            raise ScriptError(f"expected pairs of axis and spacing; usage: {usage}")
+        for axis, value in zip(words[::2], words[1::2]):
+            choice(axis, "lattice axis", ("x", "y", "z"))
+            spacing["xyz".index(axis)] = number(value, f"lattice spacing {axis}", low=0.0, strict_low=True)
+        sim.lattice = (spacing, np.zeros((1, 3)))
+        return
+    count(args, 2, usage)
+    scale = number(args[1], "lattice scale", low=0.0, strict_low=True)
+    basis = {"sc": [[0, 0, 0]],
+             "bcc": [[0, 0, 0], [0.5, 0.5, 0.5]],
+             "fcc": [[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]]}[style]
+    basis = np.array(basis, dtype=float)
+    if sim.dimension == 2:
+        basis = np.unique(basis * [1, 1, 0], axis=0)
+    if sim.unit_system.name == "lj":
+        constant = (len(basis) / scale) ** (1.0 / sim.dimension)
+    else:
+        constant = scale
+    spacing = np.full(3, constant)
+    sim.lattice = (spacing, basis)
+
+
+@command("neighbor")
+def neighbor(sim, args):
+    count(args, 1, "neighbor SKIN [single|multi|bin]", at_most=2)
+    sim.neighbors.skin = number(args[0], "skin", low=0.0)
+    if len(args) == 2:
+        style = choice(args[1], "neighbor style", ("single", "multi", "bin"))
+        sim.neighbors.style = "single" if style == "bin" else style
+
+
+@command("neigh_modify", "neighbor_modify")
+def neigh_modify(sim, args):
+    usage = "neigh_modify [every N] [delay N] [check yes|no]"
+    if not args or len(args) % 2:
+        raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
+    values = {}
+    for key, value in zip(args[::2], args[1::2]):
+        choice(key, "neigh_modify keyword", ("every", "delay", "check"))
+        if key == "check":
+            values[key] = yes_no(value, "check")
+        else:
+            values[key] = integer(value, key, low=1 if key == "every" else 0)
+    sim.neighbors.modify(**values)
+
+
+@command("particle_style", "atom_style")
+def particle_style(sim, args):
+    count(args, 1, "particle_style atomic|sphere")
+    _before_box(sim, "particle_style")
+    style = choice(args[0], "particle style", ("atomic", "sphere"))
+    sim.particle_style = style
+    if style == "sphere":
+        for name in ("radius", "rmass", "omega", "torque"):
+            sim.particles.request(name)
+
+
+@command("processors")
+def processors(sim, args):
+    count(args, 3, "processors nx ny nz")
+    grid = []
+    for axis, word in zip("xyz", args):
+        grid.append(None if word == "*" else integer(word, f"processors n{axis}", low=1))
+    fixed = int(np.prod([g for g in grid if g is not None]))
+    nprocs = sim.comm.nprocs
+    if None not in grid and fixed != nprocs:
+        raise ScriptError(f"processor grid {' x '.join(args)} = {fixed} does not match the "
+                          f"{nprocs} rank(s) of this run")
+    if nprocs % fixed:
+        raise ScriptError(f"processor grid {' '.join(args)} cannot divide {nprocs} rank(s)")
+    sim.processors = tuple(grid)
+
+
+@command("integrate", "run_style")
+def integrate(sim, args):
+    count(args, 1, "integrate v_verlet")
+    style = "v_verlet" if args[0] == "verlet" else args[0]
+    choice(style, "integrate style", ("v_verlet",))
+
+
+@command("comm_modify")
+def comm_modify(sim, args):
+    """LAMMPS's ``comm_modify vel yes``: ghosts carry velocities even if no style asks for them."""
+    if len(args) != 2 or args[0] != "vel":
+        raise ScriptError("only 'comm_modify vel yes|no' is supported")
+    sim.ghost_velocity = yes_no(args[1], "vel")
+
+
+@command("newton")
+def newton(sim, args):
+    count(args, 1, "newton on", at_most=2)
+    if any(word != "on" for word in args):
+        raise ScriptError("only newton on is supported (pairs with ghosts are summed back)")

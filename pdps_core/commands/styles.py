@@ -1,0 +1,110 @@
+"""Commands that create styles from plugins: pair_style, pair_coeff, fix, compute, analyze, dump,
+and their removal (unfix, uncompute, unanalyze, undump)."""
+
+from ..errors import ScriptError
+from ..styles import registry
+from . import command
+from .words import count, integer, type_range
+
+
+@command("pair_style")
+def pair_style(sim, args):
+    if not args:
+        raise ScriptError(f"expected a style; installed: {', '.join(registry.names('pair')) or 'none'}")
+    if args[0] == "none":
+        sim.pair = None
+        return
+    cls = registry.lookup("pair", args[0])
+    pair = cls(sim, cls.parse(args[1:]))
+    if sim.pair is not None and sim.pair.name == pair.name:
+        pair.coeffs = sim.pair.coeffs          # LAMMPS keeps coefficients when the style is the same
+    sim.pair = pair
+
+
+@command("pair_coeff")
+def pair_coeff(sim, args):
+    if sim.pair is None:
+        raise ScriptError("pair_coeff before pair_style")
+    sim.require_box("pair_coeff")
+    if len(args) < 2:
+        raise ScriptError(f"expected I J and coefficients; usage: pair_coeff I J {sim.pair.coeff_usage}")
+    ilo, ihi = type_range(args[0], sim.ntypes, "I")
+    jlo, jhi = type_range(args[1], sim.ntypes, "J")
+    coeff = sim.pair.parse_coeff(args[2:])
+    for i in range(ilo, ihi + 1):
+        for j in range(jlo, jhi + 1):
+            sim.pair.coeff(i, j, coeff)
+
+
+def _create(sim, kind, table, args, usage):
+    if len(args) < 3:
+        raise ScriptError(f"expected: {usage}")
+    ident, group, style = args[0], args[1], args[2]
+    sim.require_box(kind)
+    sim.require_group(group)
+    cls = registry.lookup(kind, style)
+    previous = table.get(ident)
+    if previous is not None and kind != "fix":
+        raise ScriptError(f"{kind} {ident} is already defined")
+    if previous is not None and previous.name != style:
+        raise ScriptError(f"fix {ident} is already defined with style {previous.name}; unfix it first")
+    instance = cls(sim, ident, group, cls.parse(args[3:]))
+    for name in cls.per_atom:
+        sim.particles.request(name)
+    table[ident] = instance          # a replaced fix keeps its place in the order
+    return instance
+
+
+def _remove(sim, kind, table, args):
+    count(args, 1, f"un{kind} ID")
+    instance = table.pop(args[0], None)
+    if instance is None:
+        raise ScriptError(f"{kind} {args[0]} is not defined")
+    return instance
+
+
+@command("fix")
+def fix(sim, args):
+    _create(sim, "fix", sim.fixes, args, "fix ID GROUP STYLE args")
+
+
+@command("unfix")
+def unfix(sim, args):
+    _remove(sim, "fix", sim.fixes, args)
+
+
+@command("compute")
+def compute(sim, args):
+    _create(sim, "compute", sim.computes, args, "compute ID GROUP STYLE args")
+
+
+@command("uncompute")
+def uncompute(sim, args):
+    _remove(sim, "compute", sim.computes, args)
+
+
+@command("analyze")
+def analyze(sim, args):
+    _create(sim, "analyze", sim.analyzes, args, "analyze ID GROUP STYLE args")
+
+
+@command("unanalyze")
+def unanalyze(sim, args):
+    _remove(sim, "analyze", sim.analyzes, args)
+
+
+@command("dump")
+def dump(sim, args):
+    usage = "dump ID GROUP STYLE N FILE [columns...]"
+    if len(args) < 5:
+        raise ScriptError(f"expected: {usage}")
+    if args[0] in sim.output.dumps:
+        raise ScriptError(f"dump {args[0]} is already defined")
+    integer(args[3], "N", low=1)
+    resolved = list(args)
+    _create(sim, "dump", sim.output.dumps, resolved, usage)
+
+
+@command("undump")
+def undump(sim, args):
+    _remove(sim, "dump", sim.output.dumps, args).close()

@@ -1,0 +1,104 @@
+"""numba kernels for neighbor lists: cell binning and half/full Verlet lists in CSR form.
+
+A half list holds each pair once. Pairs of two owned particles are kept as (i, j > i); a pair of an
+owned particle and a ghost is kept on the side where the ghost lies "above" (larger z, then y, then x),
+LAMMPS's newton-on rule, so that of the two periodic images of one pair exactly one is listed.
+"""
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True)
+def bin_particles(x, nall, lo, binsize, nbins):
+    """Counting sort of particles into cells; returns (cell of each particle, cell starts, order)."""
+    ncells = nbins[0] * nbins[1] * nbins[2]
+    cell = np.empty(nall, dtype=np.int64)
+    count = np.zeros(ncells + 1, dtype=np.int64)
+    for i in range(nall):
+        c = np.empty(3, dtype=np.int64)
+        for d in range(3):
+            k = int((x[i, d] - lo[d]) / binsize[d])
+            if k < 0:
+                k = 0
+            elif k >= nbins[d]:
+                k = nbins[d] - 1
+            c[d] = k
+        cell[i] = (c[2] * nbins[1] + c[1]) * nbins[0] + c[0]
+        count[cell[i] + 1] += 1
+    for c in range(ncells):
+        count[c + 1] += count[c]
+    start = count.copy()
+    order = np.empty(nall, dtype=np.int64)
+    fill = count[:-1].copy()
+    for i in range(nall):
+        order[fill[cell[i]]] = i
+        fill[cell[i]] += 1
+    return cell, start, order
+
+
+@njit(cache=True)
+def build_list(x, type_, nlocal, cutneighsq, cell, start, order, nbins, half, capacity):
+    """Neighbors of each owned particle within cutneighsq[type_i, type_j]; -1 total on overflow."""
+    offsets = np.zeros(nlocal + 1, dtype=np.int64)
+    neighbors = np.empty(capacity, dtype=np.int64)
+    k = 0
+    for i in range(nlocal):
+        offsets[i] = k
+        ci = cell[i]
+        cx = ci % nbins[0]
+        cy = (ci // nbins[0]) % nbins[1]
+        cz = ci // (nbins[0] * nbins[1])
+        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
+        ti = type_[i]
+        for dz in range(-1, 2):
+            z = cz + dz
+            if z < 0 or z >= nbins[2]:
+                continue
+            for dy in range(-1, 2):
+                y = cy + dy
+                if y < 0 or y >= nbins[1]:
+                    continue
+                for dx in range(-1, 2):
+                    xc = cx + dx
+                    if xc < 0 or xc >= nbins[0]:
+                        continue
+                    c = (z * nbins[1] + y) * nbins[0] + xc
+                    for p in range(start[c], start[c + 1]):
+                        j = order[p]
+                        if j == i:
+                            continue
+                        if half:
+                            if j < nlocal:
+                                if j < i:
+                                    continue
+                            elif x[j, 2] < zi:
+                                continue
+                            elif x[j, 2] == zi:
+                                if x[j, 1] < yi:
+                                    continue
+                                elif x[j, 1] == yi and x[j, 0] <= xi:
+                                    continue
+                        delx = xi - x[j, 0]
+                        dely = yi - x[j, 1]
+                        delz = zi - x[j, 2]
+                        if delx * delx + dely * dely + delz * delz < cutneighsq[ti, type_[j]]:
+                            if k >= capacity:
+                                return offsets, neighbors, -1
+                            neighbors[k] = j
+                            k += 1
+    offsets[nlocal] = k
+    return offsets, neighbors, k
+
+
+@njit(cache=True)
+def max_displacement_sq(x, xhold, nlocal):
+    worst = 0.0
+    for i in range(nlocal):
+        dx = x[i, 0] - xhold[i, 0]
+        dy = x[i, 1] - xhold[i, 1]
+        dz = x[i, 2] - xhold[i, 2]
+        r = dx * dx + dy * dy + dz * dz
+        if r > worst:
+            worst = r
+    return worst

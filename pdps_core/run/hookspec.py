@@ -1,0 +1,51 @@
+"""The hooks a fix (or analyze style) can join, in the order the timestep calls them.
+
+A style implements a hook by defining a method of that name taking ``sim``; no decorator is needed.
+Within a hook, styles run in the order the script defined them (as in LAMMPS).
+"""
+
+import pluggy
+
+hookspec = pluggy.HookspecMarker("pdps")
+
+# The order of one timestep; `setup` runs once at the start of each run, after the first forces.
+HOOKS = ("setup", "initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor",
+         "pre_force", "post_force", "final_integrate", "end_of_step")
+
+
+class TimestepSpec:
+    @hookspec
+    def setup(self, sim):
+        """After the setup forces of a run (force fixes usually apply their post_force here)."""
+
+    @hookspec
+    def initial_integrate(self, sim):
+        """First half of the step: half-kick and drift (fix nve)."""
+
+    @hookspec
+    def post_integrate(self, sim):
+        """After positions moved, before neighbor decisions (fix wall/reflect)."""
+
+    @hookspec
+    def pre_exchange(self, sim):
+        """On rebuild steps, before particles are wrapped and migrated (insertion, deletion)."""
+
+    @hookspec
+    def pre_neighbor(self, sim):
+        """On rebuild steps, after ghosts are made, before lists are built."""
+
+    @hookspec
+    def pre_force(self, sim):
+        """After forces were cleared, before the pair style."""
+
+    @hookspec
+    def post_force(self, sim):
+        """After pair forces are complete on owned particles (addforce, setforce, walls)."""
+
+    @hookspec
+    def final_integrate(self, sim):
+        """Second half-kick."""
+
+    @hookspec
+    def end_of_step(self, sim):
+        """After integration: analyze styles, computes that accumulate."""

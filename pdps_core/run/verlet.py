@@ -1,0 +1,171 @@
+"""The timestep loop (LAMMPS's Verlet): setup once per run, then the hook sequence every step.
+
+    setup:  exchange, borders, build neighbors, force_clear, pair, reverse_comm, fix setup
+    step:   initial_integrate, post_integrate,
+            rebuild? pre_exchange, exchange, borders, pre_neighbor, build : forward_comm
+            force_clear, pre_force, pair, reverse_comm, post_force, final_integrate, end_of_step,
+            output when due
+
+Energy and virial are computed only on steps where an output reads them, and always on the last
+step of a run, so values read between runs are current.
+"""
+
+import time
+
+import numpy as np
+import pluggy
+
+from ..errors import SimulationError
+from .hookspec import HOOKS, TimestepSpec
+from .timers import timed_hooks
+
+
+def _implements(style, hook):
+    return callable(getattr(type(style), hook, None))
+
+
+class StyleHooks(pluggy.PluginManager):
+    """A plugin manager that takes a style's plain methods named like a hook as implementations,
+    so a fix needs no decorator: defining ``post_force(self, sim)`` is enough."""
+
+    def parse_hookimpl_opts(self, plugin, name):
+        opts = super().parse_hookimpl_opts(plugin, name)
+        if opts is None and name in HOOKS and callable(getattr(plugin, name, None)):
+            opts = {"wrapper": False, "hookwrapper": False, "optionalhook": False,
+                    "tryfirst": False, "trylast": False, "specname": None}
+        return opts
+
+
+class Verlet:
+    def __init__(self, sim):
+        self.sim = sim
+        self.hooks = {}
+        self.forward = ("x",)
+        self.reverse = ("f",)
+
+    # ---- setup ----------------------------------------------------------------------------------
+    def _register_hooks(self):
+        sim = self.sim
+        manager = StyleHooks("pdps")
+        manager.add_hookspecs(TimestepSpec)
+        styles = list(sim.fixes.values()) + list(sim.analyzes.values())
+        # pluggy calls the last registered implementation first: register in reverse script order
+        for style in reversed(styles):
+            hooks = [h for h in HOOKS if _implements(style, h)]
+            if hooks:
+                manager.register(timed_hooks(style, sim.timers, hooks),
+                                 name=f"{style.kind}:{style.id}")
+        self.hooks = {h: getattr(manager.hook, h) for h in HOOKS
+                      if getattr(manager.hook, h).get_hookimpls()}
+
+    def _call(self, hook):
+        caller = self.hooks.get(hook)
+        if caller is not None:
+            t0 = time.perf_counter()
+            caller(sim=self.sim)
+            self.sim.timers.stage["Modify"] += time.perf_counter() - t0
+
+    def setup(self):
+        sim = self.sim
+        particles = sim.particles
+        styles = [s for s in [sim.pair, *sim.fixes.values(), *sim.computes.values(),
+                              *sim.analyzes.values()] if s is not None]
+        for style in styles:
+            for name in style.per_atom:
+                particles.request(name)
+        ghost_velocity = sim.ghost_velocity or any(s.ghost_velocity for s in styles)
+        self.forward = ("x", "v") if ghost_velocity else ("x",)
+        self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
+        sim.neighbor.clear_requests()
+        sim.pair_list = None
+        if sim.pair is not None:
+            cutoff = sim.pair.init(sim.ntypes)
+            sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff)
+        sim.groups.update(sim)
+        self._register_hooks()
+
+        sim.comm.exchange(particles, sim.box, sim.step)
+        self._reneighbor()
+        self._forces(eflag=True, vflag=True)
+        self._call("setup")
+        self._check_finite()
+
+    def _reneighbor(self):
+        sim, particles = self.sim, self.sim.particles
+        t0 = time.perf_counter()
+        sim.comm.borders(particles, sim.box, sim.neighbor.cutghost())
+        sim.timers.stage["Comm"] += time.perf_counter() - t0
+        self._call("pre_neighbor")
+        t1 = time.perf_counter()
+        sim.neighbor.build(particles, sim.box)
+        t2 = time.perf_counter()
+        sim.timers.stage["Neigh"] += t2 - t1
+
+    def _forces(self, eflag, vflag):
+        sim, particles = self.sim, self.sim.particles
+        particles.f[:] = 0.0
+        if particles.has("torque"):
+            particles.torque[:] = 0.0
+        self._call("pre_force")
+        if sim.pair is not None:
+            t0 = time.perf_counter()
+            sim.pair.energy = 0.0
+            sim.pair.compute(sim, sim.pair_list, eflag, vflag)
+            if vflag:
+                x, f = particles.x, particles.f
+                sim.virial[:] = (np.einsum("ij,ij->j", x, f).tolist()
+                                 + [float(x[:, 0] @ f[:, 1]), float(x[:, 0] @ f[:, 2]),
+                                    float(x[:, 1] @ f[:, 2])])
+            sim.timers.stage["Pair"] += time.perf_counter() - t0
+            t0 = time.perf_counter()
+            sim.comm.reverse_comm(particles, self.reverse)
+            sim.timers.stage["Comm"] += time.perf_counter() - t0
+        elif vflag:
+            sim.virial[:] = 0.0
+        if eflag:
+            sim.pe = sim.pair.energy if sim.pair is not None else 0.0
+            sim.energy_step = sim.step
+        if vflag:
+            sim.virial_step = sim.step
+
+    def _check_finite(self):
+        particles = self.sim.particles
+        n = particles.nlocal
+        for name in ("x", "f"):
+            values = particles.arrays[name][:n]
+            if not np.isfinite(values).all():
+                i = int(np.flatnonzero(~np.isfinite(values).all(axis=1))[0])
+                what = "position" if name == "x" else "force"
+                raise SimulationError(
+                    f"particle {int(particles.tag[i])} has a non-finite {what} "
+                    f"({', '.join(f'{c:.6g}' for c in values[i])}) at step {self.sim.step}; "
+                    "the run is unstable (time step too large or particles overlapping?)")
+
+    # ---- steps ----------------------------------------------------------------------------------
+    def run(self, nsteps):
+        sim = self.sim
+        particles = sim.particles
+        last = sim.step + nsteps
+        for _ in range(nsteps):
+            sim.step += 1
+            sim.time += sim.dt
+            step = sim.step
+            eflag, vflag = sim.output.flags(step, last)
+            self._call("initial_integrate")
+            self._call("post_integrate")
+            if sim.neighbor.decide(particles):
+                self._call("pre_exchange")
+                t0 = time.perf_counter()
+                sim.comm.exchange(particles, sim.box, step)
+                sim.timers.stage["Comm"] += time.perf_counter() - t0
+                self._reneighbor()
+            else:
+                t0 = time.perf_counter()
+                sim.comm.forward_comm(particles, self.forward)
+                sim.timers.stage["Comm"] += time.perf_counter() - t0
+            self._forces(eflag, vflag)
+            self._call("post_force")
+            self._check_finite()
+            self._call("final_integrate")
+            self._call("end_of_step")
+            sim.output.write(step, last)

@@ -1,0 +1,117 @@
+"""The input-script lexer, following LAMMPS's parsing rules.
+
+1. A line ending in ``&`` continues on the next line.
+2. ``#`` starts a comment, unless it stands inside quotes.
+3. ``$x`` and ``${name}`` are replaced by the variable's value, unless inside quotes.
+4. The line is split into words at white space; ``"..."``, ``'...'`` and ``\"\"\"...\"\"\"`` make one word.
+"""
+
+from ..errors import ScriptError
+
+QUOTES = ('"""', '"', "'")
+
+
+def logical_lines(text):
+    """Yield (first physical line number, text) with ``&`` continuations joined."""
+    pending, start = [], None
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.rstrip()
+        if start is None:
+            start = number
+        if line.endswith("&"):
+            pending.append(line[:-1])
+            continue
+        pending.append(line)
+        yield start, " ".join(pending)
+        pending, start = [], None
+    if pending:
+        yield start, " ".join(pending)
+
+
+def _quote_at(text, i):
+    for quote in QUOTES:
+        if text.startswith(quote, i):
+            return quote
+    return None
+
+
+def _end_of_quote(text, i, quote):
+    end = text.find(quote, i + len(quote))
+    if end < 0:
+        raise ScriptError(f"unbalanced quote {quote} in: {text.strip()}")
+    return end + len(quote)
+
+
+def strip_comment(text):
+    """Remove a ``#`` comment that is not inside quotes."""
+    i = 0
+    while i < len(text):
+        quote = _quote_at(text, i)
+        if quote:
+            i = _end_of_quote(text, i, quote)
+        elif text[i] == "#":
+            return text[:i]
+        else:
+            i += 1
+    return text
+
+
+def substitute(text, value_of):
+    """Replace ``$x``, ``${name}`` and ``$(expression)`` outside quotes; ``value_of(name)`` gives the text."""
+    out, i = [], 0
+    while i < len(text):
+        quote = _quote_at(text, i)
+        if quote:
+            end = _end_of_quote(text, i, quote)
+            out.append(text[i:end])
+            i = end
+            continue
+        if text[i] != "$":
+            out.append(text[i])
+            i += 1
+            continue
+        if text.startswith("${", i):
+            end = text.find("}", i)
+            if end < 0:
+                raise ScriptError(f"unterminated ${{ in: {text.strip()}")
+            name, i = text[i + 2:end], end + 1
+            out.append(value_of(name))
+        elif text.startswith("$(", i):
+            depth, j = 0, i + 1
+            while j < len(text):
+                depth += {"(": 1, ")": -1}.get(text[j], 0)
+                if depth == 0:
+                    break
+                j += 1
+            if depth:
+                raise ScriptError(f"unterminated $( in: {text.strip()}")
+            out.append(value_of("(" + text[i + 2:j] + ")"))
+            i = j + 1
+        elif i + 1 < len(text) and not text[i + 1].isspace():
+            out.append(value_of(text[i + 1]))
+            i += 2
+        else:
+            raise ScriptError(f"a lone $ in: {text.strip()}")
+    return "".join(out)
+
+
+def split_words(text):
+    """Split at white space; quoted text is one word, without its quotes."""
+    words, i, n = [], 0, len(text)
+    while i < n:
+        if text[i].isspace():
+            i += 1
+            continue
+        word, quoted = [], False
+        while i < n and not text[i].isspace():
+            quote = _quote_at(text, i)
+            if quote:
+                end = _end_of_quote(text, i, quote)
+                word.append(text[i + len(quote):end - len(quote)])
+                quoted, i = True, end
+            else:
+                word.append(text[i])
+                i += 1
+        if word or quoted:
+            words.append("".join(word))
+    return words

@@ -1,0 +1,336 @@
+"""Simulation: the one object a script or a Python user drives.
+
+    from pdps_core.api import Simulation
+    sim = Simulation(log=None)
+    sim.file("in.water")            # a whole script
+    sim.command("run 100")          # one or more lines of script
+    sim.run(100)                    # the same, as a typed call
+    sim.x, sim.v, sim.f             # numpy views of the owned particles
+
+Script lines and typed calls go through one path: ``execute(words)``, which looks the command up in
+``pdps_core.commands.COMMANDS``. Errors raise ``ScriptError`` naming the file, line and command.
+"""
+
+import math
+import os
+import time
+
+import numpy as np
+
+from .comm.serial import SerialComm
+from .commands import COMMANDS
+from .errors import ScriptError
+from .neighbor.neighbor import Neighbor
+from .output.output import Output
+from .output.thermo import keyword_value
+from .run.timers import Timers
+from .script.lexer import logical_lines, split_words, strip_comment, substitute
+from .script.variables import Variables
+from .state.groups import Groups
+from .state.particles import Particles
+from .state.units import UNITS
+
+
+class Simulation:
+    def __init__(self, *, screen=None, log="log.pdps", variables=None, comm=None):
+        """``screen``: a text stream (default stdout) or False for silence; ``log``: a path or None;
+        ``variables``: {name: value} defined as index variables, as ``-var NAME VALUE`` does."""
+        self.unit_system = UNITS["lj"]
+        self.dimension = 3
+        self.periodicity = ("p", "p", "p")
+        self.box = None
+        self.ntypes = 0
+        self.type_mass = np.zeros(1)
+        self.particle_style = "atomic"
+        self.lattice = None
+        self.particles = Particles()
+        self.neighbors = Neighbor(skin=0.3)
+        self.comm = comm if comm is not None else SerialComm()
+        self.processors = None
+        self.groups = Groups()
+        self.regions = {}
+        self.pair = None
+        self.pair_list = None
+        self.fixes = {}
+        self.computes = {}
+        self.analyzes = {}
+        self.variables = Variables(self._read_keyword)
+        for name, value in (variables or {}).items():
+            self.variables.define([name, "index", str(value)], from_command_line=True)
+        self.output = Output(self, screen=screen, log=log)
+        self.timers = Timers()
+        self.ghost_velocity = False
+        self.step = 0
+        self.run_first_step = 0
+        self.dt = self.unit_system.dt
+        self.time = 0.0
+        self.pe = 0.0
+        self.virial = np.zeros(6)
+        self.energy_step = None
+        self.virial_step = None
+        self.setup_done_step = None
+        self.source = None
+        self.line = None
+        self._integrator = None
+
+    # ---- names a style reads ----------------------------------------------------------------------
+    @property
+    def units(self):
+        return self.unit_system
+
+    @property
+    def mass(self):
+        """Mass per type (index 0 unused); NaN where not yet set."""
+        return self.type_mass
+
+    @property
+    def neighbor(self):
+        return self.neighbors
+
+    # ---- numpy views of the owned particles -------------------------------------------------------
+    @property
+    def nlocal(self):
+        return self.particles.nlocal
+
+    def _owned(self, name):
+        return self.particles.arrays[name][: self.particles.nlocal]
+
+    x = property(lambda self: self._owned("x"), doc="positions of owned particles (n x 3 view)")
+    v = property(lambda self: self._owned("v"), doc="velocities of owned particles (n x 3 view)")
+    f = property(lambda self: self._owned("f"), doc="forces on owned particles (n x 3 view)")
+    tag = property(lambda self: self._owned("tag"), doc="global ids of owned particles")
+    type = property(lambda self: self._owned("type"), doc="types of owned particles")
+
+    # ---- scripts ----------------------------------------------------------------------------------
+    def file(self, path):
+        """Run a whole script file."""
+        try:
+            with open(path) as handle:
+                text = handle.read()
+        except OSError as exc:
+            raise ScriptError(f"cannot read input script {path}: {exc.strerror}") from None
+        here = os.path.dirname(os.path.abspath(path))
+        self._script(text, os.path.basename(path) if self.source is None else path, here)
+        return self
+
+    def command(self, text):
+        """Run one or more lines of script text."""
+        self._script(text, "<command>", os.getcwd())
+        return self
+
+    def _script(self, text, source, directory):
+        outer = self.source, self.line, getattr(self, "directory", None)
+        self.source, self.directory = source, directory
+        try:
+            for number, raw in logical_lines(text):
+                self.line = number
+                try:
+                    line = strip_comment(raw)
+                    line = substitute(line, self.variables.text)
+                    words = split_words(line)
+                    if not words:
+                        continue
+                    self.output.echo(line.strip())
+                    self.execute(words)
+                except ScriptError as exc:
+                    name = words[0] if "words" in locals() and words else None
+                    raise exc.locate(source, number, name)
+                finally:
+                    words = None
+        finally:
+            self.source, self.line, self.directory = outer
+
+    def execute(self, words):
+        """Run one command given as words: the single path scripts and typed calls share."""
+        name, args = words[0], list(words[1:])
+        entry = COMMANDS.get(name)
+        if entry is None:
+            import difflib
+            close = difflib.get_close_matches(name, COMMANDS, n=1)
+            hint = f"; did you mean {close[0]}?" if close else ""
+            raise ScriptError(f"unknown command {name}{hint}", command=name)
+        try:
+            entry(self, args)
+        except ScriptError as exc:
+            if exc.command is None:
+                exc.command = name
+            raise
+
+    def resolve(self, path):
+        """A file path named in a script, relative to the directory of that script."""
+        if os.path.isabs(path) or getattr(self, "directory", None) is None:
+            return path
+        candidate = os.path.join(self.directory, path)
+        return candidate if os.path.exists(candidate) or not os.path.exists(path) else path
+
+    # ---- typed calls for the common commands (the same path as script lines) ----------------------
+    def _call(self, name, *args):
+        self.execute([name, *(_word(a) for a in args)])
+        return self
+
+    def units_style(self, style: str):
+        return self._call("units", style)
+
+    def set_dimension(self, n: int):
+        return self._call("dimension", n)
+
+    def boundary(self, x: str, y: str, z: str):
+        return self._call("boundary", x, y, z)
+
+    def create_box(self, ntypes: int, region: str):
+        return self._call("create_box", ntypes, region)
+
+    def create_particle(self, type: int, style: str, *args):
+        return self._call("create_particle", type, style, *args)
+
+    def read_data(self, path: str):
+        return self._call("read_data", path)
+
+    def set_mass(self, type, value: float):
+        return self._call("mass", type, value)
+
+    def group(self, id: str, *definition):
+        return self._call("group", id, *definition)
+
+    def pair_style(self, style: str, *args):
+        return self._call("pair_style", style, *args)
+
+    def pair_coeff(self, i, j, *args):
+        return self._call("pair_coeff", i, j, *args)
+
+    def velocity(self, group: str, style: str, *args):
+        return self._call("velocity", group, style, *args)
+
+    def fix(self, id: str, group: str, style: str, *args):
+        return self._call("fix", id, group, style, *args)
+
+    def unfix(self, id: str):
+        return self._call("unfix", id)
+
+    def compute(self, id: str, group: str, style: str, *args):
+        return self._call("compute", id, group, style, *args)
+
+    def timestep(self, dt: float):
+        return self._call("timestep", dt)
+
+    def thermo(self, every: int):
+        return self._call("thermo", every)
+
+    def thermo_style(self, *keywords):
+        return self._call("thermo_style", *keywords)
+
+    def dump(self, id: str, group: str, style: str, every: int, path: str, *columns):
+        return self._call("dump", id, group, style, every, path, *columns)
+
+    def run(self, nsteps: int):
+        return self._call("run", nsteps)
+
+    def variable(self, name: str, style: str, *args):
+        return self._call("variable", name, style, *args)
+
+    # ---- state helpers used by commands and styles -----------------------------------------------
+    def require_box(self, what):
+        if self.box is None:
+            raise ScriptError(f"{what} before the simulation box exists (use create_box or read_data first)")
+
+    def region(self, id, style=None, *args):
+        """``region(id)`` looks a region up; ``region(id, style, *args)`` defines one."""
+        if style is not None:
+            return self._call("region", id, style, *args)
+        try:
+            return self.regions[id]
+        except KeyError:
+            raise ScriptError(f"region {id} is not defined (defined: {', '.join(self.regions) or 'none'})") from None
+
+    def require_group(self, name):
+        self.groups.bit(name)
+        return name
+
+    def _read_keyword(self, name, indices):
+        """What a variable expression reads: thermo keywords and c_ID[...] references."""
+        if name.startswith("c_"):
+            return self.compute_value(name[2:], indices)
+        return keyword_value(self, name, indices)
+
+    def compute_value(self, ident, indices=()):
+        compute = self.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"compute {ident} is not defined")
+        if len(indices) == 0:
+            return float(compute.scalar(self))
+        values = compute.vector(self) if len(indices) == 1 else compute.array(self)
+        try:
+            return float(values[indices])
+        except IndexError:
+            raise ScriptError(f"c_{ident}{''.join(f'[{i}]' for i in indices)} is out of range "
+                              f"(compute {ident} has shape {np.shape(values)})") from None
+
+    def compute_needs(self, ident):
+        compute = self.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"compute {ident} is not defined")
+        return ({"energy"} if compute.needs_energy else set()) | ({"virial"} if compute.needs_virial else set())
+
+    def require_energy(self):
+        if self.energy_step != self.step:
+            raise ScriptError(f"potential energy was not computed on step {self.step}: "
+                              "read it on a thermo step, or run 0 first")
+
+    def require_virial(self):
+        if self.virial_step != self.step:
+            raise ScriptError(f"virial was not computed on step {self.step}: "
+                              "read it on a thermo step, or run 0 first")
+
+    # ---- running -----------------------------------------------------------------------------------
+    def run_steps(self, nsteps):
+        from .run.verlet import Verlet
+        self.require_box("run")
+        self._check_masses()
+        t_start = time.perf_counter()
+        self.run_first_step = self.step
+        last = self.step + nsteps
+        integrator = Verlet(self)
+        self._integrator = integrator
+        try:
+            integrator.setup()
+            self.output.setup(self.step, last)
+            self.timers.reset()
+            t_loop = time.perf_counter()
+            integrator.run(nsteps)
+            loop = time.perf_counter() - t_loop
+        finally:
+            self.output.flush()
+        self._report(nsteps, loop, time.perf_counter() - t_start)
+
+    def _check_masses(self):
+        p = self.particles
+        if p.has("rmass") or p.nlocal == 0:
+            return
+        used = np.unique(p.type[: p.nlocal])
+        unset = [int(t) for t in used if not (self.type_mass[t] > 0)]
+        if unset:
+            raise ScriptError(f"mass is not set for type {unset[0]} (use the mass command)")
+
+    def _report(self, nsteps, loop, total):
+        n = self.particles.nlocal
+        message = self.output.message
+        message(f"Loop time of {loop:.6g} on {self.comm.nprocs} procs for {nsteps} steps with {n} particles")
+        if loop > 0 and nsteps:
+            message(f"Performance: {nsteps / loop:.4g} timesteps/s, {n * nsteps / loop / 1e6:.4g} M particle-steps/s")
+        for line in self.timers.report(loop):
+            message(line)
+        neighbor = self.neighbors
+        if neighbor.requests:
+            message(f"Neighbor list builds = {neighbor.builds}, dangerous builds = {neighbor.dangerous}")
+        message("")
+
+    def close(self):
+        self.output.close()
+
+
+def _word(value):
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, float) and math.isfinite(value):
+        return repr(value)
+    return str(value)

@@ -1,0 +1,57 @@
+"""The simulation box: an orthogonal block with periodic (p) or fixed (f) faces.
+
+A particle leaving through an ``f`` face is lost, and the run stops (PDPS manual, ``boundary``).
+Positions of particles that cross a periodic face are wrapped and their image counters updated.
+"""
+
+import numpy as np
+
+from ..errors import SimulationError
+
+
+class Box:
+    def __init__(self, lo, hi, periodic, dimension=3):
+        self.lo = np.asarray(lo, dtype=np.float64)
+        self.hi = np.asarray(hi, dtype=np.float64)
+        self.periodic = tuple(bool(p) for p in periodic)
+        self.dimension = dimension
+
+    @property
+    def length(self):
+        return self.hi - self.lo
+
+    @property
+    def volume(self):
+        """Volume in 3-d, area in 2-d (LAMMPS's convention for pressure)."""
+        lengths = self.length
+        return float(np.prod(lengths[: self.dimension]))
+
+    def bounds_label(self):
+        return " ".join("pp" if p else "ff" for p in self.periodic)
+
+    def wrap(self, x, image, tag, step):
+        """Bring owned particles back into the box; raise when one has left through a fixed face."""
+        for d in range(3):
+            if self.periodic[d]:
+                length = self.hi[d] - self.lo[d]
+                shift = np.floor((x[:, d] - self.lo[d]) / length)
+                moved = shift != 0
+                if moved.any():
+                    x[moved, d] -= shift[moved] * length
+                    image[moved, d] += shift[moved].astype(np.int32)
+                    # floor() rounding can leave x == hi; hi belongs to the next image
+                    at_hi = x[:, d] >= self.hi[d]
+                    x[at_hi, d] = self.lo[d]
+            else:
+                out = (x[:, d] < self.lo[d]) | (x[:, d] > self.hi[d]) | ~np.isfinite(x[:, d])
+                if out.any():
+                    i = int(np.flatnonzero(out)[0])
+                    axis = "xyz"[d]
+                    raise SimulationError(
+                        f"particle {int(tag[i])} lost through the fixed {axis} boundary at step {step}: "
+                        f"{axis} = {x[i, d]:.6g} outside [{self.lo[d]:g}, {self.hi[d]:g}]"
+                        f" ({int(out.sum())} particle(s) outside)")
+
+    def inside(self, x):
+        """Mask of positions inside [lo, hi) on every axis."""
+        return np.all((x >= self.lo) & (x < self.hi), axis=1)

@@ -1,0 +1,126 @@
+"""Per-particle state as structure-of-arrays: owned particles first (``0..nlocal``), ghosts after.
+
+Every particle has ``x, v, f`` (float64, n x 3), ``tag`` (int64 global id, from 1), ``type`` (int32,
+from 1), ``mask`` (uint32 group bits) and ``image`` (int32, n x 3). Any other per-atom array, such as
+``radius``, ``rmass``, ``omega`` or ``torque``, exists only after a style has asked for it with
+``request``: a scene that needs no rotation never allocates ``omega``.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ScriptError
+
+
+@dataclass(frozen=True)
+class Property:
+    name: str
+    width: int          # values per particle: 1 (scalar) or 3 (vector)
+    dtype: type
+    default: float = 0.0
+
+
+CORE = {
+    "x": Property("x", 3, np.float64),
+    "v": Property("v", 3, np.float64),
+    "f": Property("f", 3, np.float64),
+    "tag": Property("tag", 1, np.int64),
+    "type": Property("type", 1, np.int32, 1),
+    "mask": Property("mask", 1, np.uint32, 1),
+    "image": Property("image", 3, np.int32),
+}
+
+# Properties styles commonly ask for, so that two styles asking for "radius" agree on its shape.
+KNOWN = {
+    "radius": Property("radius", 1, np.float64, 0.5),
+    "rmass": Property("rmass", 1, np.float64, 1.0),
+    "omega": Property("omega", 3, np.float64),
+    "torque": Property("torque", 3, np.float64),
+}
+
+
+class Particles:
+    def __init__(self):
+        self.properties = dict(CORE)
+        self.arrays = {name: self._empty(p, 0) for name, p in self.properties.items()}
+        self.nlocal = 0
+        self.nghost = 0
+        self.next_tag = 1
+
+    @staticmethod
+    def _empty(prop, n):
+        shape = (n, prop.width) if prop.width > 1 else (n,)
+        return np.full(shape, prop.default, dtype=prop.dtype)
+
+    # ---- properties -------------------------------------------------------------------------------
+    def request(self, name, width=None, dtype=np.float64, default=0.0):
+        """Allocate a per-atom array (idempotent); known names have a fixed shape."""
+        prop = KNOWN.get(name) or Property(name, width or 1, dtype, default)
+        existing = self.properties.get(name)
+        if existing is not None:
+            if existing.width != prop.width or existing.dtype != prop.dtype:
+                raise ScriptError(f"per-atom property {name} requested with two different shapes")
+            return self.arrays[name]
+        self.properties[name] = prop
+        self.arrays[name] = self._empty(prop, self.nlocal + self.nghost)
+        return self.arrays[name]
+
+    def has(self, name):
+        return name in self.arrays
+
+    def __getattr__(self, name):
+        arrays = self.__dict__.get("arrays")
+        if arrays is not None and name in arrays:
+            return arrays[name]
+        raise AttributeError(name)
+
+    # ---- counts ---------------------------------------------------------------------------------
+    @property
+    def nall(self):
+        return self.nlocal + self.nghost
+
+    # ---- owned particles ------------------------------------------------------------------------
+    def add(self, x, type_, **values):
+        """Append owned particles at positions x (n x 3) of the given type(s); returns their indices."""
+        self.clear_ghosts()
+        x = np.atleast_2d(np.asarray(x, dtype=np.float64))
+        n = len(x)
+        start = self.nlocal
+        for name, prop in self.properties.items():
+            self.arrays[name] = np.concatenate([self.arrays[name], self._empty(prop, n)])
+        self.arrays["x"][start:] = x
+        self.arrays["type"][start:] = type_
+        self.arrays["tag"][start:] = np.arange(self.next_tag, self.next_tag + n)
+        for name, value in values.items():
+            self.arrays[name][start:] = value
+        self.next_tag += n
+        self.nlocal += n
+        return np.arange(start, start + n)
+
+    def keep(self, selection):
+        """Keep only the owned particles selected (boolean mask or index array), in that order."""
+        self.clear_ghosts()
+        for name in self.arrays:
+            self.arrays[name] = self.arrays[name][selection]
+        self.nlocal = len(self.arrays["tag"])
+
+    # ---- ghosts ---------------------------------------------------------------------------------
+    def clear_ghosts(self):
+        if self.nghost:
+            for name in self.arrays:
+                self.arrays[name] = self.arrays[name][: self.nlocal]
+            self.nghost = 0
+
+    def set_ghosts(self, source, shift):
+        """Replace the ghosts by copies of owned particles ``source`` displaced by ``shift`` (n x 3)."""
+        self.clear_ghosts()
+        for name in self.arrays:
+            self.arrays[name] = np.concatenate([self.arrays[name], self.arrays[name][source]])
+        self.arrays["x"][self.nlocal:] += shift
+        self.nghost = len(source)
+
+    # ---- lookup ---------------------------------------------------------------------------------
+    def index_of_tag(self, tag):
+        hits = np.flatnonzero(self.arrays["tag"][: self.nlocal] == tag)
+        return int(hits[0]) if len(hits) else -1

@@ -1,0 +1,337 @@
+"""Base classes for styles, their script arguments, and the entry-point registry.
+
+A style is a class with a ``name``, an ``Args`` pydantic model for its script arguments, and the hooks
+it implements. Arguments are read from the script words in the order the model declares its fields;
+a field made with ``keyword(...)`` is an optional ``name value...`` pair instead. A ``tuple[...]`` field
+takes as many words as it has members; a ``list[...]`` positional field takes every word left.
+
+Styles are found through the entry-point groups ``pdps.pair``, ``pdps.fix``, ``pdps.compute``,
+``pdps.analyze``, ``pdps.dump`` and ``pdps.region``; the entry-point name is the style name. Listing
+styles reads package metadata only: a style's module is imported the first time a script names it.
+"""
+
+import difflib
+import typing
+from importlib import metadata
+from typing import ClassVar
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from .errors import ScriptError
+
+KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
+
+
+# ---- script arguments ---------------------------------------------------------------------------
+class StyleArgs(BaseModel):
+    """Base of every ``Args`` model: no NaN/inf, no unknown fields, immutable."""
+    model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True)
+
+
+def keyword(default=None, **kwargs):
+    """A field given in the script as ``name value...`` (any order, after the positional words)."""
+    extra = kwargs.pop("json_schema_extra", {}) or {}
+    return Field(default, json_schema_extra={**extra, "keyword": True}, **kwargs)
+
+
+def _is_keyword(info):
+    extra = info.json_schema_extra
+    return isinstance(extra, dict) and extra.get("keyword", False)
+
+
+def _arity(annotation):
+    """How many words a field takes: 1, n for tuple[...] of n, or None for 'all the rest'."""
+    origin = typing.get_origin(annotation)
+    if origin is typing.Annotated:
+        return _arity(typing.get_args(annotation)[0])
+    if origin is tuple:
+        members = typing.get_args(annotation)
+        return None if (len(members) == 2 and members[1] is Ellipsis) else len(members)
+    if origin is list:
+        return None
+    if origin in (typing.Union, getattr(__import__("types"), "UnionType", None)):
+        arities = {_arity(a) for a in typing.get_args(annotation) if a is not type(None)}
+        return arities.pop() if len(arities) == 1 else 1
+    return 1
+
+
+def explain(error):
+    """One pydantic error as the sentence a user reads."""
+    loc = ".".join(str(part) for part in error["loc"] if not isinstance(part, int)) or "argument"
+    kind, ctx, value = error["type"], error.get("ctx", {}), error.get("input")
+    shown = " ".join(map(str, value)) if isinstance(value, (list, tuple)) else value
+    got = f"(got {shown})"
+    limits = {"greater_than": ">", "greater_than_equal": ">=", "less_than": "<", "less_than_equal": "<="}
+    if kind in limits:
+        bound = ctx.get({"greater_than": "gt", "greater_than_equal": "ge",
+                         "less_than": "lt", "less_than_equal": "le"}[kind])
+        return f"{loc} must be {limits[kind]} {bound} {got}"
+    if kind in ("float_parsing", "float_type", "finite_number"):
+        return f"{loc} must be a finite number {got}"
+    if kind in ("int_parsing", "int_type", "int_from_float"):
+        return f"{loc} must be an integer {got}"
+    if kind in ("bool_parsing", "bool_type"):
+        return f"{loc} must be yes or no {got}"
+    if kind in ("literal_error", "enum"):
+        return f"{loc} must be one of {ctx.get('expected')} {got}"
+    if kind == "missing":
+        return f"missing argument {loc}"
+    if kind in ("too_short", "too_long"):
+        return f"{loc} takes {ctx.get('min_length', ctx.get('max_length'))} value(s) {got}"
+    message = error["msg"].removeprefix("Value error, ")
+    return f"{loc}: {message} {got}" if value is not None else f"{loc}: {message}"
+
+
+def parse_args(model, words, usage=""):
+    """Read script words into ``model``; any problem becomes a one-line ScriptError."""
+    fields = model.model_fields
+    positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
+    keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
+    values, i = {}, 0
+    for name, info in positional:
+        if i >= len(words) or words[i] in keywords:
+            if info.is_required():
+                hint = f"; usage: {usage}" if usage else ""
+                raise ScriptError(f"missing argument {name}{hint}")
+            continue
+        arity = _arity(info.annotation)
+        if arity is None:
+            values[name] = list(words[i:])
+            i = len(words)
+        elif arity == 1:
+            values[name] = words[i]
+            i += 1
+        else:
+            values[name] = tuple(words[i:i + arity])
+            i += arity
+    while i < len(words):
+        word = words[i]
+        if word not in keywords:
+            if not keywords:
+                raise ScriptError(f"too many arguments: unexpected {word!r}" + (f"; usage: {usage}" if usage else ""))
+            raise ScriptError(f"unknown keyword {word} (known: {', '.join(keywords)})")
+        info = keywords[word]
+        arity = _arity(info.annotation)
+        arity = 1 if arity is None else arity
+        taken = words[i + 1:i + 1 + arity]
+        if len(taken) < arity:
+            raise ScriptError(f"keyword {word} needs {arity} value(s) (got {len(taken)})")
+        if typing.get_origin(info.annotation) is list:
+            values.setdefault(word, []).append(taken[0] if arity == 1 else tuple(taken))
+        else:
+            values[word] = taken[0] if arity == 1 else tuple(taken)
+        i += 1 + arity
+    try:
+        return model(**values)
+    except ValidationError as exc:
+        raise ScriptError(explain(exc.errors()[0])) from None
+
+
+# ---- style base classes -------------------------------------------------------------------------
+class Style:
+    """What every style shares: its name, its arguments, and what it needs from the core."""
+    name: ClassVar[str] = ""
+    kind: ClassVar[str] = ""
+    Args: ClassVar[type[StyleArgs]] = StyleArgs
+    usage: ClassVar[str] = ""
+    per_atom: ClassVar[tuple[str, ...]] = ()   # per-atom arrays to allocate (radius, omega, torque, ...)
+    ghost_velocity: ClassVar[bool] = False     # ghosts must carry v (DPD, granular damping)
+
+    @classmethod
+    def parse(cls, words):
+        return parse_args(cls.Args, words, cls.usage)
+
+
+class Pair(Style):
+    """A pair style: ``pair_style NAME args`` then ``pair_coeff I J coeffs`` for each type pair.
+
+    Subclasses set ``Coeff`` (the pair_coeff model) and implement ``init_one`` (derived constants and
+    the cutoff of one type pair) and ``compute``. The core builds the ``neighbor_list`` kind they ask
+    for with the cutoffs ``init_one`` returned, sums ghost forces back (newton on), and derives the
+    virial from sum(x * f) over owned and ghost particles when asked for it.
+    """
+    kind = "pair"
+    Coeff: ClassVar[type[StyleArgs]] = StyleArgs
+    coeff_usage: ClassVar[str] = ""
+    neighbor_list: ClassVar[str] = "half"
+
+    def __init__(self, sim, args):
+        self.sim = sim
+        self.args = args
+        self.coeffs = {}        # (i, j) with i <= j -> Coeff
+        self.energy = 0.0
+
+    def coeff(self, i, j, coeff):
+        self.coeffs[(min(i, j), max(i, j))] = coeff
+
+    def parse_coeff(self, words):
+        return parse_args(self.Coeff, words, self.coeff_usage)
+
+    def mix(self, i, j):
+        """Coefficients for an unset i != j pair; the default is LAMMPS's error."""
+        raise ScriptError(f"pair coefficients are not set for types {i} {j}"
+                          " (give pair_coeff for every type pair)")
+
+    def init(self, ntypes):
+        """Called at the start of every run; returns the (ntypes+1)^2 cutoff matrix."""
+        import numpy as np
+        cut = np.zeros((ntypes + 1, ntypes + 1))
+        for i in range(1, ntypes + 1):
+            for j in range(i, ntypes + 1):
+                if (i, j) not in self.coeffs:
+                    if i == j:
+                        raise ScriptError(f"pair coefficients are not set for types {i} {j}"
+                                          " (give pair_coeff for every type pair)")
+                    self.coeffs[(i, j)] = self.mix(i, j)
+                cut[i, j] = cut[j, i] = self.init_one(i, j)
+        return cut
+
+    def init_one(self, i, j):
+        raise NotImplementedError
+
+    def compute(self, sim, nlist, eflag, vflag):
+        raise NotImplementedError
+
+
+class Fix(Style):
+    """A fix: joins the timestep through hooks. Define any of the methods named in
+    ``pdps_core.run.hookspec`` (``initial_integrate(self, sim)``, ``post_force(self, sim)``, ...);
+    only the hooks a fix defines are ever called for it."""
+    kind = "fix"
+
+    def __init__(self, sim, id, group, args):
+        self.sim, self.id, self.group, self.args = sim, id, group, args
+
+
+class Compute(Style):
+    """A compute: a global value read as ``c_ID`` (scalar), ``c_ID[i]`` (vector) or ``c_ID[i][j]``
+    (array). Indices are 0-based as in the PDPS manual. ``needs_energy``/``needs_virial`` tell the
+    core to compute them on the steps this compute is read."""
+    kind = "compute"
+    needs_energy: ClassVar[bool] = False
+    needs_virial: ClassVar[bool] = False
+
+    def __init__(self, sim, id, group, args):
+        self.sim, self.id, self.group, self.args = sim, id, group, args
+
+    def scalar(self, sim):
+        raise ScriptError(f"compute {self.id} ({self.name}) has no scalar value; use c_{self.id}[i]")
+
+    def vector(self, sim):
+        raise ScriptError(f"compute {self.id} ({self.name}) has no vector value")
+
+    def array(self, sim):
+        raise ScriptError(f"compute {self.id} ({self.name}) has no array value")
+
+
+class Analyze(Style):
+    """An analyze style: reads computes at end_of_step and reduces them (time/space averages)."""
+    kind = "analyze"
+
+    def __init__(self, sim, id, group, args):
+        self.sim, self.id, self.group, self.args = sim, id, group, args
+
+
+class Dump(Style):
+    """A dump: ``dump ID group STYLE N FILE args``; ``write(sim)`` is called every N steps."""
+    kind = "dump"
+
+    def __init__(self, sim, id, group, args):
+        self.sim, self.id, self.group, self.args = sim, id, group, args
+        self.every = int(getattr(args, "every", 1))
+
+    def write(self, sim):
+        raise NotImplementedError
+
+    def close(self):
+        pass
+
+
+class Region(Style):
+    """A region: ``region ID STYLE args``; ``inside(x)`` marks positions inside it."""
+    kind = "region"
+
+    def __init__(self, sim, id, args):
+        self.sim, self.id, self.args = sim, id, args
+
+    def inside(self, x):
+        raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")
+
+    def bounds(self):
+        """(lo, hi) of a box that holds the region, for create_box and lattice filling."""
+        raise ScriptError(f"region {self.id} ({self.name}) has no extent to make a box from")
+
+
+BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,
+         "region": Region}
+
+
+# ---- registry -----------------------------------------------------------------------------------
+class Registry:
+    """Styles by kind and name: entry points of installed distributions, plus in-process ones."""
+
+    def __init__(self):
+        self._local = {kind: {} for kind in KINDS}
+        self._entry_points = None
+        self._loaded = {}
+
+    def _scan(self):
+        if self._entry_points is None:
+            found = {kind: {} for kind in KINDS}
+            for kind in KINDS:
+                for ep in metadata.entry_points(group=f"pdps.{kind}"):
+                    dist = ep.dist.name if ep.dist is not None else "?"
+                    claims = found[kind].setdefault(ep.name, {})
+                    claims.setdefault(dist, ep)
+            self._entry_points = found
+        return self._entry_points
+
+    def register(self, kind, name, cls):
+        """Make a style class available in this process (for Python users and tests)."""
+        self._local[kind][name] = cls
+        self._loaded.pop((kind, name), None)
+
+    def names(self, kind):
+        return sorted(set(self._scan()[kind]) | set(self._local[kind]))
+
+    def listing(self):
+        """(kind, name, distribution, module) for every installed style, without importing any."""
+        rows = []
+        for kind in KINDS:
+            for name, claims in sorted(self._scan()[kind].items()):
+                for dist, ep in claims.items():
+                    rows.append((kind, name, dist, ep.value))
+            for name, cls in sorted(self._local[kind].items()):
+                rows.append((kind, name, "(registered in process)", f"{cls.__module__}:{cls.__qualname__}"))
+        return rows
+
+    def lookup(self, kind, name):
+        key = (kind, name)
+        if key in self._loaded:
+            return self._loaded[key]
+        if name in self._local[kind]:
+            cls = self._local[kind][name]
+        else:
+            claims = self._scan()[kind].get(name)
+            if not claims:
+                known = self.names(kind)
+                close = difflib.get_close_matches(name, known, n=1)
+                hint = f"; did you mean {close[0]}?" if close else ""
+                raise ScriptError(f"unknown {kind} style {name}{hint} "
+                                  f"(installed: {', '.join(known) or 'none'})")
+            if len(claims) > 1:
+                raise ScriptError(f"{kind} style {name} is provided by more than one distribution: "
+                                  f"{' and '.join(sorted(claims))}; uninstall one of them")
+            (dist, ep), = claims.items()
+            try:
+                cls = ep.load()
+            except Exception as exc:
+                raise ScriptError(f"{kind} style {name} from {dist} failed to import: {exc}") from exc
+        base = BASES[kind]
+        if not (isinstance(cls, type) and issubclass(cls, base)):
+            raise ScriptError(f"{kind} style {name} is not a {base.__name__} subclass")
+        self._loaded[key] = cls
+        return cls
+
+
+registry = Registry()
