@@ -16,15 +16,15 @@ def bin_particles(x, nall, lo, binsize, nbins):
     cell = np.empty(nall, dtype=np.int64)
     count = np.zeros(ncells + 1, dtype=np.int64)
     for i in range(nall):
-        c = np.empty(3, dtype=np.int64)
-        for d in range(3):
+        index = 0
+        for d in range(2, -1, -1):
             k = int((x[i, d] - lo[d]) / binsize[d])
             if k < 0:
                 k = 0
             elif k >= nbins[d]:
                 k = nbins[d] - 1
-            c[d] = k
-        cell[i] = (c[2] * nbins[1] + c[1]) * nbins[0] + c[0]
+            index = index * nbins[d] + k
+        cell[i] = index
         count[cell[i] + 1] += 1
     for c in range(ncells):
         count[c + 1] += count[c]

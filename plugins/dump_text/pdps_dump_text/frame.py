@@ -38,10 +38,9 @@ class TextDump(Dump):
         header.append(f"ITEM: ATOMS {' '.join(self.columns)}\n")
         rows = ""
         if len(chosen):
-            table = np.empty((len(chosen), len(values)), dtype=object)
-            for k, column in enumerate(values):
-                table[:, k] = column.tolist()
-            rows = ((" ".join(formats) + "\n") * len(chosen)) % tuple(table.ravel())
+            # one float table: "%d" prints a float's integer part, and ids stay exact below 2**53
+            table = np.column_stack([np.asarray(column, dtype=np.float64) for column in values])
+            rows = ((" ".join(formats) + "\n") * len(chosen)) % tuple(table.ravel().tolist())
         self.handle.write("".join(header) + rows)
         self.handle.flush()
 

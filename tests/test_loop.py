@@ -1,0 +1,204 @@
+"""The timestep loop: hook order, what is computed on which step, what is allocated and sent."""
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Fix, Pair, ScriptError, SimulationError, StyleArgs, registry
+
+BOX = """
+region box block 0 6 0 6 0 6
+create_box 1 box
+mass 1 1
+lattice spacing x 1 y 1 z 1
+create_particle 1 region box
+"""
+
+
+class Recorder(Fix):
+    """Appends (fix id, hook, step) to sim.calls for every hook of the timestep."""
+    name = "test/recorder"
+
+    def _record(self, sim, hook):
+        sim.__dict__.setdefault("calls", []).append((self.id, hook, sim.step))
+
+    def setup(self, sim):
+        self._record(sim, "setup")
+
+    def initial_integrate(self, sim):
+        self._record(sim, "initial_integrate")
+
+    def post_integrate(self, sim):
+        self._record(sim, "post_integrate")
+
+    def pre_exchange(self, sim):
+        self._record(sim, "pre_exchange")
+
+    def pre_neighbor(self, sim):
+        self._record(sim, "pre_neighbor")
+
+    def pre_force(self, sim):
+        self._record(sim, "pre_force")
+
+    def post_force(self, sim):
+        self._record(sim, "post_force")
+
+    def final_integrate(self, sim):
+        self._record(sim, "final_integrate")
+
+    def end_of_step(self, sim):
+        self._record(sim, "end_of_step")
+
+
+class OnlyPostForce(Fix):
+    name = "test/postforce"
+
+    def post_force(self, sim):
+        sim.__dict__.setdefault("calls", []).append((self.id, "post_force", sim.step))
+
+
+class FlagPair(Pair):
+    """A pair style with no force that records the eflag/vflag it was asked for on each step."""
+    name = "test/flags"
+
+    class Coeff(StyleArgs):
+        pass
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        sim.__dict__.setdefault("flags", {})[sim.step] = (bool(eflag), bool(vflag))
+        self.energy = 0.0
+
+
+class NaNForce(Fix):
+    name = "test/nan"
+
+    def post_force(self, sim):
+        if sim.step == 3:
+            sim.f[2, 1] = np.nan
+
+
+@pytest.fixture(autouse=True)
+def test_styles():
+    registry.register("fix", "test/recorder", Recorder)
+    registry.register("fix", "test/postforce", OnlyPostForce)
+    registry.register("fix", "test/nan", NaNForce)
+    registry.register("pair", "test/flags", FlagPair)
+
+
+def test_hooks_run_in_timestep_order_and_fixes_in_script_order(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\nneigh_modify every 1 delay 0 check no\n"
+                "fix b all test/recorder\nfix a all test/recorder\nrun 1")
+    step1 = [(fid, hook) for fid, hook, step in sim.calls if step == 1]
+    expected_hooks = ["initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor",
+                      "pre_force", "post_force", "final_integrate", "end_of_step"]
+    assert step1 == [(fid, hook) for hook in expected_hooks for fid in ("b", "a")]
+    setup = [(fid, hook) for fid, hook, step in sim.calls if step == 0]
+    assert setup == [("b", "pre_neighbor"), ("a", "pre_neighbor"), ("b", "pre_force"),
+                     ("a", "pre_force"), ("b", "setup"), ("a", "setup")]
+
+
+def test_a_fix_is_called_only_for_the_hooks_it_defines(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "fix p all test/postforce\nrun 3")
+    assert [hook for _, hook, _ in sim.calls] == ["post_force"] * 3
+    assert set(sim._integrator.hooks) == {"post_force"}
+
+
+def test_redefining_a_fix_keeps_its_place_and_unfix_removes_it(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "fix x all test/postforce\nfix y all test/postforce\nfix x all test/postforce\nrun 1")
+    assert [fid for fid, _, step in sim.calls if step == 1] == ["x", "y"]
+    sim.calls.clear()
+    sim.command("unfix x\nrun 1")
+    assert [fid for fid, _, _ in sim.calls] == ["y"]
+
+
+def test_energy_and_virial_only_on_steps_that_read_them(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\nthermo 5\nthermo_style custom step temp pe\nrun 12")
+    flags = sim.flags
+    assert flags[0] == (True, True)                     # setup always computes both
+    energy_steps = [s for s in range(1, 13) if flags[s][0]]
+    virial_steps = [s for s in range(1, 13) if flags[s][1]]
+    assert energy_steps == [5, 10, 12]                  # thermo steps and the last step
+    assert virial_steps == [12]                         # nothing reads the virial but the last step
+    sim.command("thermo_style custom step press\nrun 4")
+    assert [s for s in range(13, 17) if sim.flags[s][1]] == [15, 16]
+    assert [s for s in range(13, 17) if sim.flags[s][0]] == [16]
+
+
+def test_compute_pressure_asks_for_the_virial(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\ncompute p all pressure\n"
+                "thermo 2\nthermo_style custom step c_p\nrun 5")
+    assert [s for s in range(1, 6) if sim.flags[s][1]] == [2, 4, 5]
+    assert [s for s in range(1, 6) if sim.flags[s][0]] == [5]
+
+
+def test_reading_energy_on_a_step_where_it_was_not_computed_is_an_error(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\nrun 2\n")
+    sim.step += 1        # as if a step ran that tallied nothing
+    with pytest.raises(ScriptError, match="potential energy was not computed on step 3"):
+        sim.command("variable e equal pe\nprint ${e}")
+
+
+def test_ghost_velocities_sent_only_when_a_style_needs_them(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\nrun 0")
+    assert sim._integrator.forward == ("x",)
+    sim.command("pair_style dpd 1.0 1.0 3\npair_coeff * * 25 4.5\nrun 0")
+    assert sim._integrator.forward == ("x", "v")
+    sim.command("pair_style test/flags\npair_coeff * *\ncomm_modify vel yes\nrun 0")
+    assert sim._integrator.forward == ("x", "v")
+
+
+def test_optional_per_atom_arrays_exist_only_when_asked_for(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style dpd 1.0 1.0 3\npair_coeff * * 25 4.5\nfix 1 all nve\nrun 2")
+    assert set(sim.particles.arrays) == {"x", "v", "f", "tag", "type", "mask", "image"}
+    sphere = make_sim()
+    sphere.command("particle_style sphere\n" + BOX + "run 0")
+    assert {"radius", "rmass", "omega", "torque"} <= set(sphere.particles.arrays)
+    assert sphere._integrator.reverse == ("f", "torque")
+
+
+def test_non_finite_force_stops_the_run_naming_step_and_particle(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "fix 1 all nve\nfix n all test/nan")
+    with pytest.raises(SimulationError) as info:
+        sim.command("run 10")
+    tag = int(sim.tag[2])
+    assert str(info.value).startswith(f"<command>:1: run: particle {tag} has a non-finite force (0, nan, 0) at step 3")
+
+
+def test_a_particle_leaving_a_fixed_boundary_stops_the_run(make_sim):
+    sim = make_sim()
+    sim.command("boundary p p f\n" + BOX + "velocity all set 0 0 0\nvelocity all set NULL NULL 0\nfix 1 all nve")
+    assert sim.x[7, 2] == 1.0
+    sim.v[7, 2] = 2.0
+    tag = int(sim.tag[7])
+    with pytest.raises(SimulationError) as info:
+        sim.command("timestep 0.1\nrun 100")
+    message = str(info.value)
+    assert f"particle {tag} lost through the fixed z boundary at step" in message
+    step = int(message.split("at step ")[1].split(":")[0])
+    # at 0.2 per step from z = 1 it passes z = 6 on step 25 (checked every step: skin/2 < 0.2)
+    assert step in (25, 26)
+    assert message.endswith("outside [0, 6] (1 particle(s) outside)")
+
+
+def test_run_reports_where_the_time_went(make_sim):
+    import io
+    screen = io.StringIO()
+    sim = make_sim(screen=screen)
+    sim.command(BOX + "pair_style dpd 1.0 1.0 3\npair_coeff * * 25 4.5\nfix 1 all nve\nrun 5")
+    text = screen.getvalue()
+    assert "Loop time of " in text and "for 5 steps with 216 particles" in text
+    for stage in ("Pair", "Neigh", "Comm", "Modify", "Output", "Other"):
+        assert f"\n{stage} " in text
+    assert "fix 1 (nve)" in text
+    assert "Neighbor list builds = " in text
