@@ -3,6 +3,7 @@
     pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--debug]
     pdps styles                 every installed style, by kind, with the distribution that provides it
     pdps doc KIND STYLE         a style's documentation (imports only that style)
+    pdps new-plugin NAME        a working, tested plugin skeleton in plugins/fix_NAME
 """
 
 import argparse
@@ -25,6 +26,9 @@ def _parser():
     doc = sub.add_parser("doc", help="show a style's documentation")
     doc.add_argument("kind", choices=["pair", "fix", "compute", "analyze", "dump", "region"])
     doc.add_argument("style")
+    new = sub.add_parser("new-plugin", help="write a working, tested plugin skeleton")
+    new.add_argument("name")
+    new.add_argument("--dir", default="plugins", help="where to put it (default plugins/)")
     return parser
 
 
@@ -34,7 +38,20 @@ def main(argv=None):
         return _styles()
     if args.action == "doc":
         return _doc(args.kind, args.style)
+    if args.action == "new-plugin":
+        return _new_plugin(args.name, args.dir)
     return _run(args)
+
+
+def _new_plugin(name, directory):
+    from .skeleton import new_plugin
+    try:
+        root = new_plugin(name, directory)
+    except ScriptError as exc:
+        print(f"ERROR: {exc}", file=sys.stderr)
+        return 1
+    print(f"wrote {root}: pip install -e {root}, then 'fix ID GROUP {name} DVX DVY DVZ' in a script")
+    return 0
 
 
 def _styles():
