@@ -157,3 +157,13 @@ def newton(sim, args):
     count(args, 1, "newton on", at_most=2)
     if any(word != "on" for word in args):
         raise ScriptError("only newton on is supported (pairs with ghosts are summed back)")
+
+
+@command("atom_modify")
+def atom_modify(sim, args):
+    """LAMMPS's ``atom_modify sort N BINSIZE``: re-sort owned particles by cell every N steps (0: never).
+    The bin size is accepted; pdps sorts on cells of half the neighbor cutoff."""
+    if len(args) != 3 or args[0] != "sort":
+        raise ScriptError("only 'atom_modify sort N BINSIZE' is supported")
+    sim.neighbors.sort_every = integer(args[1], "sort interval", low=0)
+    number(args[2], "bin size", low=0.0)

@@ -8,6 +8,10 @@ then. A rebuild taken on the first step it was allowed is counted as *dangerous*
 have been missed, and the run reports how many there were.
 
 A style asks for a list with ``Neighbor.request``; a scene with no request builds no list at all.
+
+Owned particles are re-sorted by cell every ``sort_every`` steps at a rebuild (LAMMPS's
+``atom_modify sort``, default 1000), so neighbors sit close in memory. Per-particle state a style
+keeps must therefore live in ``particles.request(...)`` arrays, which move with their particles.
 """
 
 from dataclasses import dataclass, field
@@ -43,6 +47,8 @@ class Neighbor:
         self.xhold = None
         self.builds = 0
         self.dangerous = 0
+        self.sort_every = 1000
+        self.last_sort = None
         self._capacity = 0
 
     def modify(self, every=None, delay=None, check=None):
@@ -88,6 +94,22 @@ class Neighbor:
         if self.ago == max(self.every, self.delay) and self.check:
             self.dangerous += 1
         return True
+
+    # ---- spatial sort ---------------------------------------------------------------------------
+    def sort_due(self, step):
+        if not self.requests or self.sort_every <= 0:
+            return False
+        return self.last_sort is None or step - self.last_sort >= self.sort_every
+
+    def spatial_order(self, particles, box, step):
+        """Permutation of owned particles that groups them by cell (cells of half the cutoff)."""
+        self.last_sort = step
+        binsize = max(self.cutghost(), 1e-12) * 0.5
+        nbins = np.maximum(1, np.floor(box.length / binsize)).astype(np.int64)
+        if box.dimension == 2:
+            nbins[2] = 1
+        cell, _, order = bin_particles(particles.x, particles.nlocal, box.lo, box.length / nbins, nbins)
+        return order
 
     # ---- build ----------------------------------------------------------------------------------
     def build(self, particles, box):

@@ -93,6 +93,8 @@ class Verlet:
     def _reneighbor(self):
         sim, particles = self.sim, self.sim.particles
         t0 = time.perf_counter()
+        if sim.neighbors.sort_due(sim.step):
+            particles.keep(sim.neighbors.spatial_order(particles, sim.box, sim.step))
         sim.comm.borders(particles, sim.box, sim.neighbor.cutghost())
         sim.timers.stage["Comm"] += time.perf_counter() - t0
         self._call("pre_neighbor")
