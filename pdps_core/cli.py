@@ -107,6 +107,7 @@ def _run(args):
 def _fail(sim, message, debug):
     if debug:
         traceback.print_exc()
+    message = " ".join(message.splitlines())      # one line, whatever a style put in its message
     print(message, file=sys.stderr)
     if sim is not None and sim.output.log is not None:
         print(message, file=sim.output.log)

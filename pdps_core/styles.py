@@ -65,6 +65,7 @@ def explain(error):
     if kind in limits:
         bound = ctx.get({"greater_than": "gt", "greater_than_equal": "ge",
                          "less_than": "lt", "less_than_equal": "le"}[kind])
+        bound = f"{bound:g}" if isinstance(bound, (int, float)) else bound
         return f"{loc} must be {limits[kind]} {bound} {got}"
     if kind in ("float_parsing", "float_type", "finite_number"):
         return f"{loc} must be a finite number {got}"
@@ -79,6 +80,8 @@ def explain(error):
     if kind in ("too_short", "too_long"):
         return f"{loc} takes {ctx.get('min_length', ctx.get('max_length'))} value(s) {got}"
     message = error["msg"].removeprefix("Value error, ")
+    if not error["loc"]:
+        return message          # a model-level check: its message names what is wrong itself
     return f"{loc}: {message} {got}" if value is not None else f"{loc}: {message}"
 
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, Pair, ScriptError, SimulationError, StyleArgs, registry
+from pdps_core.api import Analyze, Fix, Pair, ScriptError, SimulationError, StyleArgs, registry
 
 BOX = """
 region box block 0 6 0 6 0 6
@@ -202,3 +202,22 @@ def test_run_reports_where_the_time_went(make_sim):
         assert f"\n{stage} " in text
     assert "fix 1 (nve)" in text
     assert "Neighbor list builds = " in text
+
+
+class CountingAnalyze(Analyze):
+    """An analyze style that counts the steps it was called on."""
+    name = "test/count"
+
+    def end_of_step(self, sim):
+        sim.__dict__.setdefault("analyzed", []).append((self.id, sim.step))
+
+
+def test_analyze_styles_are_called_at_end_of_step_until_unanalyze(make_sim):
+    registry.register("analyze", "test/count", CountingAnalyze)
+    sim = make_sim()
+    sim.command(BOX + "analyze a all test/count\nrun 3")
+    assert sim.analyzed == [("a", 1), ("a", 2), ("a", 3)]
+    sim.command("unanalyze a\nrun 2")
+    assert len(sim.analyzed) == 3
+    with pytest.raises(ScriptError, match="analyze a is not defined"):
+        sim.command("unanalyze a")

@@ -1,5 +1,6 @@
 """Particle commands: create_particle, read_data, mass, group, velocity."""
 
+import itertools
 import math
 
 import numpy as np
@@ -115,63 +116,85 @@ def _lattice_sites(sim, region):
     return sites[box.inside(sites)]
 
 
-def _random_no_overlap(sim, n, region, dmin, seed, max_tries_per_particle=1000):
-    """Random positions in ``region``, none closer than dmin to another (periodic images counted)."""
+def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
+    """Random positions in ``region``, none closer than dmin to another (periodic images counted).
+
+    Candidates are checked against a grid of the box with cells at least dmin wide, wrapped across
+    periodic faces, so a check looks only at the 3^d cells around the candidate. After ``max_misses``
+    rejected candidates in a row the region counts as too full: an error, never a hang."""
     rng = np.random.default_rng(seed)
     box = sim.box
     lo, hi = region.bounds()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
-    dims = 2 if sim.dimension == 2 else 3
-    cell = max(dmin, 1e-12)
-    grid = {}
-    length = box.length
-    periodic = np.array(box.periodic)
+    dims = sim.dimension
+    periodic = box.periodic[:dims]
+    length = box.length[:dims].tolist()
+    origin = box.lo[:dims].tolist()
+    # capped so the keys stay small; a capped cell is still wider than dmin
+    ncell = [max(1, int(min(L / dmin, 2 ** 20))) if dmin > 0 else 1 for L in length]
+    offsets = list(itertools.product((-1, 0, 1), repeat=dims))
+    grid, around = {}, {}
+    dmin_sq = dmin * dmin
 
-    def key(p):
-        return tuple(int(math.floor(c / cell)) for c in p[:dims])
+    def cell_of(p):
+        key = []
+        for d in range(dims):
+            c = math.floor((p[d] - origin[d]) / length[d] * ncell[d])
+            key.append(c % ncell[d] if periodic[d] else min(max(c, 0), ncell[d] - 1))
+        return tuple(key)
 
-    existing = sim.particles.x[: sim.particles.nlocal]
-    for p in existing:
-        grid.setdefault(key(p), []).append(p)
+    def neighbour_cells(cell):
+        keys = set()
+        for offset in offsets:
+            key = [c + o for c, o in zip(cell, offset)]
+            for d in range(dims):
+                if periodic[d]:
+                    key[d] %= ncell[d]
+            if all(0 <= k < m for k, m in zip(key, ncell)):
+                keys.add(tuple(key))
+        return keys
 
     def free(p):
-        if dmin <= 0:
-            return True
-        k = key(p)
-        reach = [range(-1, 2)] * dims
-        for offset in np.stack(np.meshgrid(*reach, indexing="ij"), -1).reshape(-1, dims):
-            for q in grid.get(tuple(np.add(k, offset)), ()):
-                delta = p - q
-                delta = np.where(periodic, delta - length * np.round(delta / length), delta)
-                if delta @ delta < dmin * dmin:
+        cell = cell_of(p)
+        if cell not in around:
+            around[cell] = neighbour_cells(cell)
+        for key in around[cell]:
+            for q in grid.get(key, ()):
+                r_sq = 0.0
+                for d in range(dims):
+                    delta = p[d] - q[d]
+                    if periodic[d]:
+                        delta -= length[d] * round(delta / length[d])
+                    r_sq += delta * delta
+                if r_sq < dmin_sq:
                     return False
-        # near a periodic face the neighbouring cell of an image may be far in key space
-        if np.any(periodic[:dims] & ((p[:dims] - box.lo[:dims] < dmin) | (box.hi[:dims] - p[:dims] < dmin))):
-            for q_list in grid.values():
-                for q in q_list:
-                    delta = p - q
-                    delta = np.where(periodic, delta - length * np.round(delta / length), delta)
-                    if delta @ delta < dmin * dmin:
-                        return False
         return True
 
-    placed = []
-    tries = 0
-    limit = max_tries_per_particle * max(n, 1)
+    def add(p):
+        grid.setdefault(cell_of(p), []).append(p)
+
+    for p in sim.particles.x[: sim.particles.nlocal].tolist():
+        add(p)
+    placed, misses = [], 0
     while len(placed) < n:
-        if tries >= limit:
-            raise ScriptError(f"placed only {len(placed)} of {n} particles in region {region.id} "
-                              f"without overlap after {tries} tries (minimum distance {dmin:g}): "
-                              "the region is too full")
-        tries += 1
-        p = lo + rng.random(3) * (hi - lo)
-        if sim.dimension == 2:
-            p[2] = 0.0
-        if not (region.inside(p[None])[0] and box.inside(p[None])[0]) or not free(p):
-            continue
-        placed.append(p)
-        grid.setdefault(key(p), []).append(p)
-    return np.array(placed).reshape(-1, 3)
+        candidates = lo + rng.random((batch, 3)) * (hi - lo)
+        if dims == 2:
+            candidates[:, 2] = 0.0
+        usable = region.inside(candidates) & box.inside(candidates)
+        for p, ok in zip(candidates.tolist(), usable.tolist()):
+            if ok and (dmin <= 0 or free(p)):
+                placed.append(p)
+                add(p)
+                misses = 0
+                if len(placed) == n:
+                    break
+                continue
+            misses += 1
+            if misses >= max_misses:
+                raise ScriptError(f"placed only {len(placed)} of {n} particles in region {region.id} "
+                                  f"without overlap: {max_misses} random tries in a row failed "
+                                  f"(minimum distance {dmin:g}); the region is too full")
+    return np.array(placed, dtype=np.float64).reshape(-1, 3)
 
 
 @command("mass")
@@ -281,13 +304,8 @@ def read_data(sim, args):
     data = read_data_file(sim.resolve(args[0]), sim.particle_style)
     make_box(sim, data.lo, data.hi, data.ntypes)
     for t, value in data.masses.items():
-        if not 1 <= t <= data.ntypes:
-            raise ScriptError(f"{args[0]}: Masses: type {t} is out of range 1..{data.ntypes}")
         sim.type_mass[t] = value
     p = sim.particles
-    if np.any(data.types < 1) or np.any(data.types > data.ntypes):
-        bad = int(data.types[(data.types < 1) | (data.types > data.ntypes)][0])
-        raise ScriptError(f"{args[0]}: Atoms: type {bad} is out of range 1..{data.ntypes}")
     extra = {}
     if sim.particle_style == "sphere":
         extra = {"radius": 0.5 * data.diameter,

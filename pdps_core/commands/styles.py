@@ -30,10 +30,15 @@ def pair_coeff(sim, args):
         raise ScriptError(f"expected I J and coefficients; usage: pair_coeff I J {sim.pair.coeff_usage}")
     ilo, ihi = type_range(args[0], sim.ntypes, "I")
     jlo, jhi = type_range(args[1], sim.ntypes, "J")
+    if "*" not in args[0] + args[1] and ilo > jhi:
+        ilo, ihi, jlo, jhi = jlo, jhi, ilo, ihi      # pair_coeff 2 1 means pair_coeff 1 2
     coeff = sim.pair.parse_coeff(args[2:])
-    for i in range(ilo, ihi + 1):
-        for j in range(jlo, jhi + 1):
-            sim.pair.coeff(i, j, coeff)
+    # as LAMMPS: a range sets only the pairs with I <= J (pair_coeff * 2 sets 1 2 and 2 2, not 2 3)
+    pairs = [(i, j) for i in range(ilo, ihi + 1) for j in range(max(jlo, i), jhi + 1)]
+    if not pairs:
+        raise ScriptError(f"pair_coeff {args[0]} {args[1]} names no type pair with I <= J")
+    for i, j in pairs:
+        sim.pair.coeff(i, j, coeff)
 
 
 def _create(sim, kind, table, args, usage):

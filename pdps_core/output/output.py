@@ -72,8 +72,10 @@ class Output:
         t0 = time.perf_counter()
         wrote = False
         for dump in self.dumps.values():
-            if step % dump.every == 0:
+            # a run starting where the last one ended has written this frame already (LAMMPS)
+            if step % dump.every == 0 and getattr(dump, "last_step", None) != step:
                 dump.write(self.sim)
+                dump.last_step = step
                 wrote = True
         if self.thermo.due(step, self.sim.run_first_step, last):
             self.message(self.thermo.line())

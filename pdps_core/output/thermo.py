@@ -28,6 +28,9 @@ def keyword_value(sim, name, indices=()):
         return sim.dt
     if name == "time":
         return sim.time
+    if name in HEADERS:
+        # the rest describe particles in a box; a variable may read them before one exists
+        sim.require_box(f"thermo keyword {name}")
     if name == "atoms":
         return obs.count(sim)
     if name == "temp":

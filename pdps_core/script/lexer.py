@@ -1,6 +1,7 @@
 """The input-script lexer, following LAMMPS's parsing rules.
 
-1. A line ending in ``&`` continues on the next line.
+1. A line ending in ``&`` continues on the next line: the ``&`` is removed and the lines are joined
+   as they stand. A line with an open ``\"\"\"`` continues too, keeping its line break.
 2. ``#`` starts a comment, unless it stands inside quotes.
 3. ``$x`` and ``${name}`` are replaced by the variable's value, unless inside quotes.
 4. The line is split into words at white space; ``"..."``, ``'...'`` and ``\"\"\"...\"\"\"`` make one word.
@@ -12,20 +13,28 @@ QUOTES = ('"""', '"', "'")
 
 
 def logical_lines(text):
-    """Yield (first physical line number, text) with ``&`` continuations joined."""
-    pending, start = [], None
+    """Yield (first physical line number, text) with continuations joined, as LAMMPS reads them."""
+    pending, start = "", None
     for number, raw in enumerate(text.splitlines(), start=1):
         line = raw.rstrip()
         if start is None:
             start = number
         if line.endswith("&"):
-            pending.append(line[:-1])
+            pending += line[:-1]
             continue
-        pending.append(line)
-        yield start, " ".join(pending)
-        pending, start = [], None
-    if pending:
-        yield start, " ".join(pending)
+        pending += line
+        if pending.count('"""') % 2:
+            pending += "\n"
+            continue
+        yield start, pending
+        pending, start = "", None
+    if start is not None:
+        yield start, pending
+
+
+def _shown(text):
+    """A line as an error message quotes it: on one line, even when a triple quote spans several."""
+    return " ".join(text.split())
 
 
 def _quote_at(text, i):
@@ -38,7 +47,7 @@ def _quote_at(text, i):
 def _end_of_quote(text, i, quote):
     end = text.find(quote, i + len(quote))
     if end < 0:
-        raise ScriptError(f"unbalanced quote {quote} in: {text.strip()}")
+        raise ScriptError(f"unbalanced quote {quote} in: {_shown(text)}")
     return end + len(quote)
 
 
@@ -73,7 +82,7 @@ def substitute(text, value_of):
         if text.startswith("${", i):
             end = text.find("}", i)
             if end < 0:
-                raise ScriptError(f"unterminated ${{ in: {text.strip()}")
+                raise ScriptError(f"unterminated ${{ in: {_shown(text)}")
             name, i = text[i + 2:end], end + 1
             out.append(value_of(name))
         elif text.startswith("$(", i):
@@ -84,14 +93,14 @@ def substitute(text, value_of):
                     break
                 j += 1
             if depth:
-                raise ScriptError(f"unterminated $( in: {text.strip()}")
+                raise ScriptError(f"unterminated $( in: {_shown(text)}")
             out.append(value_of("(" + text[i + 2:j] + ")"))
             i = j + 1
         elif i + 1 < len(text) and not text[i + 1].isspace():
             out.append(value_of(text[i + 1]))
             i += 2
         else:
-            raise ScriptError(f"a lone $ in: {text.strip()}")
+            raise ScriptError(f"a lone $ in: {_shown(text)}")
     return "".join(out)
 
 

@@ -4,8 +4,9 @@ Semantics follow LAMMPS: an ``equal`` variable is evaluated each time it is read
 run (``variable t equal temp``); an ``index`` variable set with ``-var`` on the command line is not
 redefined by the script; ``next NAME`` steps an index variable to its next value.
 
-Expressions use numbers, ``+ - * / ^ %``, parentheses, comparisons, the functions in ``FUNCTIONS``,
-thermo keywords (``step``, ``temp``, ...), ``v_NAME``, ``c_ID``, ``c_ID[i]`` and ``c_ID[i][j]``.
+Expressions use numbers, ``+ - * / ^ %``, parentheses, comparisons, ``&& || !``, the functions in
+``FUNCTIONS``, thermo keywords (``step``, ``temp``, ...), ``v_NAME``, ``c_ID``, ``c_ID[i]`` and
+``c_ID[i][j]``.
 They are parsed with Python's ``ast`` and walked node by node; nothing is ``eval``-ed.
 """
 
@@ -19,7 +20,8 @@ from ..errors import ScriptError
 FUNCTIONS = {
     "sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs,
     "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin, "acos": math.acos,
-    "atan": math.atan, "atan2": math.atan2, "floor": math.floor, "ceil": math.ceil, "round": round,
+    "atan": math.atan, "atan2": math.atan2, "floor": math.floor, "ceil": math.ceil,
+    "round": lambda x: math.floor(x + 0.5),    # 2.5 -> 3 as in LAMMPS (Python's round gives 2)
     "min": min, "max": max,
 }
 CONSTANTS = {"PI": math.pi}
@@ -62,8 +64,12 @@ class Variables:
         if not args:
             raise ScriptError(f"variable {name} {style} needs a value")
         existing = self._vars.get(name)
-        if existing is not None and existing.style == "index" and style == "index":
-            return  # LAMMPS: an index variable, once set (e.g. by -var), keeps its value
+        if existing is not None and style == "index":
+            return  # LAMMPS: a variable, once set (e.g. by -var), keeps its value
+        if existing is not None and existing.style != style:
+            # LAMMPS refuses too: silently replacing it would lose a -var value
+            raise ScriptError(f"variable {name} is already defined as {existing.style}; it cannot become "
+                              f"{style} (use variable {name} delete first)")
         if style == "index":
             values = args
         else:
@@ -103,10 +109,16 @@ class Variables:
         var = self._get(name)
         if var.style == "equal":
             return self.evaluate(var.values[0], name)
-        return self.evaluate(var.values[var.index], name)
+        text = var.values[var.index]
+        try:
+            return float(text)
+        except ValueError:
+            # LAMMPS reads an index or string variable in a formula as a number, never as a formula
+            raise ScriptError(f"variable {name} is not a number (got {text})") from None
 
     def _parse(self, expression, name=None):
         source = expression.replace("^", "**").replace("&&", " and ").replace("||", " or ")
+        source = re.sub(r"!(?!=)", " not ", source)
         try:
             return ast.parse(source.strip(), mode="eval").body
         except SyntaxError:
@@ -118,13 +130,20 @@ class Variables:
 
     def _eval(self, node, expression):
         if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
-            return node.value
+            try:
+                return float(node.value)
+            except OverflowError:
+                raise ScriptError(f"number too large in {expression!r}") from None
         if isinstance(node, ast.BinOp) and type(node.op) in BINARY:
-            left, right = self._eval(node.left, expression), self._eval(node.right, expression)
+            # doubles, as in LAMMPS: Python integers would make 10^10^10 a hang instead of an overflow
+            left = float(self._eval(node.left, expression))
+            right = float(self._eval(node.right, expression))
             try:
                 return BINARY[type(node.op)](left, right)
             except ZeroDivisionError:
                 raise ScriptError(f"division by zero in {expression!r}") from None
+            except OverflowError:
+                raise ScriptError(f"overflow in {expression!r}") from None
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd, ast.Not)):
             value = self._eval(node.operand, expression)
             return -value if isinstance(node.op, ast.USub) else (value if isinstance(node.op, ast.UAdd) else float(not value))
@@ -138,7 +157,7 @@ class Variables:
             args = [self._eval(a, expression) for a in node.args]
             try:
                 return FUNCTIONS[node.func.id](*args)
-            except (ValueError, TypeError) as exc:
+            except (ValueError, TypeError, OverflowError) as exc:
                 raise ScriptError(f"{node.func.id}() in {expression!r}: {exc}") from None
         if isinstance(node, ast.Name):
             if node.id in CONSTANTS:

@@ -42,6 +42,7 @@ class Box:
                     # floor() rounding can leave x == hi; hi belongs to the next image
                     at_hi = x[:, d] >= self.hi[d]
                     x[at_hi, d] = self.lo[d]
+                    image[at_hi, d] += 1
             else:
                 out = (x[:, d] < self.lo[d]) | (x[:, d] > self.hi[d]) | ~np.isfinite(x[:, d])
                 if out.any():

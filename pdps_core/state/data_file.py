@@ -56,7 +56,10 @@ def read_data_file(path, particle_style):
             continue
         words = text.split()
         head = words[0]
-        if head in SECTIONS:
+        if head[0].isalpha():
+            # only section names start with a letter (LAMMPS's rule); Bonds, Pair Coeffs, ... are not read
+            if head not in SECTIONS:
+                fail(number, f"unsupported section {text} (sections read: {', '.join(SECTIONS)})")
             section = head
             hint = re.search(r"#\s*(\w+)", raw)
             if head == "Atoms" and hint and hint.group(1) != particle_style:
@@ -84,7 +87,7 @@ def read_data_file(path, particle_style):
             continue
         try:
             if section == "Masses":
-                masses[int(words[0])] = float(words[1])
+                masses[int(words[0])] = (number, float(words[1]))
             elif section == "Atoms":
                 width = COLUMNS[particle_style]
                 if len(words) not in (width, width + 3):
@@ -92,11 +95,17 @@ def read_data_file(path, particle_style):
                                  f"(got {len(words)})")
                 atoms.append((number, words))
             elif section == "Velocities":
-                velocities[int(words[0])] = [float(w) for w in words[1:4]]
+                if len(words) < 4:
+                    fail(number, f"expected id vx vy vz (got {len(words)} values)")
+                velocities[int(words[0])] = (number, [float(w) for w in words[1:4]])
         except (ValueError, IndexError):
             fail(number, f"cannot read {section} line: {text}")
     if natoms is None or ntypes is None:
         fail(1, "header must give the number of atoms and of atom types")
+    for t, (number, _) in masses.items():
+        if not 1 <= t <= ntypes:
+            fail(number, f"Masses: type {t} is out of range 1..{ntypes}")
+    masses = {t: value for t, (_, value) in masses.items()}
     if len(atoms) != natoms:
         fail(len(lines), f"header says {natoms} atoms but the Atoms section has {len(atoms)}")
     n = len(atoms)
@@ -106,6 +115,7 @@ def read_data_file(path, particle_style):
     images = np.zeros((n, 3), dtype=np.int32)
     diameter = np.ones(n)
     density = np.ones(n)
+    seen = {}
     for k, (number, words) in enumerate(atoms):
         try:
             tags[k], types[k] = int(words[0]), int(words[1])
@@ -121,16 +131,19 @@ def read_data_file(path, particle_style):
             fail(number, f"cannot read Atoms line: {' '.join(words)}")
         if not np.isfinite(x[k]).all():
             fail(number, f"non-finite position: {' '.join(words)}")
-    if len(np.unique(tags)) != n:
-        fail(len(lines), "duplicate atom ids in the Atoms section")
-    if np.any(diameter <= 0) or np.any(density <= 0):
-        fail(len(lines), "diameter and density must be > 0")
+        if not 1 <= types[k] <= ntypes:
+            fail(number, f"atom type {types[k]} is out of range 1..{ntypes}")
+        if diameter[k] <= 0 or density[k] <= 0:
+            fail(number, f"diameter and density must be > 0: {' '.join(words)}")
+        if tags[k] in seen:
+            fail(number, f"atom id {tags[k]} appears twice in Atoms (first on line {seen[tags[k]]})")
+        seen[tags[k]] = number
     v = None
     if velocities:
         v = np.zeros((n, 3))
         index = {int(t): k for k, t in enumerate(tags)}
-        for tag, value in velocities.items():
+        for tag, (number, value) in velocities.items():
             if tag not in index:
-                fail(len(lines), f"Velocities name atom {tag}, which is not in Atoms")
+                fail(number, f"Velocities name atom {tag}, which is not in Atoms")
             v[index[tag]] = value
     return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v)

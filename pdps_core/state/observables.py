@@ -51,11 +51,13 @@ def virial_trace(sim):
     return float(sum(sim.virial[: sim.dimension]))
 
 
-def pressure(sim, temp=None):
-    """Pressure of the whole system from the virial theorem, with the temperature of group all."""
+def pressure(sim, temp=None, temp_group="all"):
+    """Pressure of the whole system from the virial theorem. The kinetic part is N_dof k_B T of
+    ``temp_group`` (LAMMPS: the temperature compute's own degrees of freedom); T defaults to its
+    temperature."""
     if temp is None:
-        temp = temperature(sim)
-    dof = degrees_of_freedom(sim)
+        temp = temperature(sim, temp_group)
+    dof = degrees_of_freedom(sim, temp_group)
     return (dof * sim.units.boltz * temp + virial_trace(sim)) / (sim.dimension * sim.box.volume) \
         * sim.units.nktv2p
 

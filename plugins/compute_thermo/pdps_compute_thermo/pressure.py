@@ -5,7 +5,8 @@ r"""Compute ``pressure``: the pressure of the whole system from the virial theor
     P = \frac{N_\mathrm{dof} k_B T + \sum_i \mathbf{r}_i \cdot \mathbf{f}_i}{d\,V}
 
 summed over owned and ghost particles (so periodic images count once), with T the temperature of
-group ``all`` or of the temperature compute named, d the dimension and V the volume (area in 2-d).
+group ``all`` or, as in LAMMPS, of the temperature compute named (its T and its group's degrees of
+freedom), d the dimension and V the volume (area in 2-d).
 
 Syntax::
 
@@ -40,7 +41,7 @@ class ComputePressure(Compute):
             raise ScriptError(f"compute {args.temperature} is not defined (temperature for pressure)")
 
     def scalar(self, sim):
-        temp = None
-        if self.args.temperature is not None:
-            temp = sim.compute_value(self.args.temperature)
-        return observables.pressure(sim, temp)
+        if self.args.temperature is None:
+            return observables.pressure(sim)
+        compute = sim.computes[self.args.temperature]
+        return observables.pressure(sim, sim.compute_value(self.args.temperature), compute.group)

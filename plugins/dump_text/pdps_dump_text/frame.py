@@ -34,7 +34,8 @@ class TextDump(Dump):
         values, formats = self.column_values(sim, chosen)
         header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ATOMS\n{len(chosen)}\n",
                   f"ITEM: BOX BOUNDS {box.bounds_label()}\n"]
-        header += [f"{lo:.16g} {hi:.16g}\n" for lo, hi in zip(box.lo, box.hi)]
+        # shortest repr that reads back to the same double (LAMMPS prints 17 digits, %-1.16e)
+        header += [f"{lo!r} {hi!r}\n" for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
         header.append(f"ITEM: ATOMS {' '.join(self.columns)}\n")
         rows = ""
         if len(chosen):

@@ -13,6 +13,7 @@ Example::
     create_box 1 box
 """
 
+import math
 from typing import Annotated
 
 import numpy as np
@@ -53,9 +54,12 @@ class RegionBlock(Region):
                 value = getattr(self, name)
                 if isinstance(value, str) and value != "EDGE":
                     try:
-                        float(value)
+                        finite = math.isfinite(float(value))
                     except ValueError:
-                        raise ValueError(f"{name} must be a number, INF, -INF or EDGE (got {value})") from None
+                        finite = False
+                    # float() also reads "nan", "inf" and "1e999": only INF/-INF may be unbounded
+                    if not finite:
+                        raise ValueError(f"{name} must be a number, INF, -INF or EDGE (got {value})")
             return self
 
     def __init__(self, sim, id, args):

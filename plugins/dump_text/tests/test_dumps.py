@@ -1,0 +1,218 @@
+"""Dumps atom and custom, read back with an independent parser of LAMMPS's text dump format:
+
+    ITEM: TIMESTEP / step / ITEM: NUMBER OF ATOMS / n / ITEM: BOX BOUNDS xx yy zz / 3 x "lo hi" /
+    ITEM: ATOMS col... / n rows
+"""
+
+import re
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation, SimulationError
+
+LO = np.array([-2.0, 1.0, 0.0])
+HI = np.array([3.0123456789012345, 5.0, 4.5])
+
+
+def read_dump(path):
+    """Every frame of a LAMMPS text dump; fails on a frame that is cut short or malformed."""
+    lines = path.read_text().splitlines()
+    frames, i = [], 0
+    while i < len(lines):
+        assert lines[i] == "ITEM: TIMESTEP", (i, lines[i])
+        step = int(lines[i + 1])
+        assert lines[i + 2] == "ITEM: NUMBER OF ATOMS"
+        n = int(lines[i + 3])
+        head = lines[i + 4].split()
+        assert head[:3] == ["ITEM:", "BOX", "BOUNDS"] and len(head) == 6
+        bounds = np.array([[float(w) for w in lines[i + 5 + d].split()] for d in range(3)])
+        assert bounds.shape == (3, 2)
+        atoms = lines[i + 8].split()
+        assert atoms[:2] == ["ITEM:", "ATOMS"]
+        columns = atoms[2:]
+        rows = lines[i + 9:i + 9 + n]
+        assert len(rows) == n, f"frame at step {step} has {len(rows)} of {n} rows"
+        table = np.array([[float(w) for w in row.split()] for row in rows]).reshape(n, len(columns))
+        frames.append({"step": step, "n": n, "labels": head[3:], "lo": bounds[:, 0],
+                       "hi": bounds[:, 1], "columns": columns, "rows": rows,
+                       "data": {c: table[:, k] for k, c in enumerate(columns)}})
+        i += 9 + n
+    return frames
+
+
+def write_data(path, n=40, seed=4):
+    """Particles in the box LO..HI with ids written in shuffled order; returns (ids, x, types)."""
+    rng = np.random.default_rng(seed)
+    ids = rng.permutation(np.arange(1, n + 1) * 3)           # not contiguous, not sorted
+    x = LO + rng.random((n, 3)) * (HI - LO)
+    types = 1 + (ids % 2)
+    lines = ["dump test", "", f"{n} atoms", "2 atom types", ""]
+    lines += [f"{LO[d]} {HI[d]} {a}lo {a}hi" for d, a in enumerate("xyz")]
+    lines += ["", "Masses", "", "1 1.0", "2 2.0", "", "Atoms # atomic", ""]
+    lines += [f"{ids[k]} {types[k]} {x[k, 0]:.17g} {x[k, 1]:.17g} {x[k, 2]:.17g}" for k in range(n)]
+    path.write_text("\n".join(lines) + "\n")
+    return ids, x, types
+
+
+def make(tmp_path, monkeypatch, boundary="p p p"):
+    monkeypatch.chdir(tmp_path)
+    ids, x, types = write_data(tmp_path / "data.in")
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        boundary {boundary}
+        atom_modify sort 1 0.0
+        read_data data.in
+        pair_style dpd 1.0 1.0 77
+        pair_coeff * * 25.0 4.5
+        velocity all create 1.0 3
+        timestep 0.02
+        fix 1 all nve
+    """)
+    return sim, ids
+
+
+def state_by_tag(sim):
+    order = np.argsort(sim.tag)
+    return order, sim.tag[order]
+
+
+def test_dump_atom_frames_ids_scaled_coordinates_and_box(tmp_path, monkeypatch):
+    sim, ids = make(tmp_path, monkeypatch)
+    sim.command("dump 1 all atom 5 dump.atom\nrun 20")
+    frames = read_dump(tmp_path / "dump.atom")
+    assert [f["step"] for f in frames] == [0, 5, 10, 15, 20]      # steps / N + 1 frames
+    for frame in frames:
+        assert frame["columns"] == ["id", "type", "xs", "ys", "zs"]
+        assert frame["labels"] == ["pp", "pp", "pp"]
+        np.testing.assert_array_equal(frame["lo"], LO)
+        np.testing.assert_array_equal(frame["hi"], HI)
+        assert frame["n"] == len(ids)
+        np.testing.assert_array_equal(frame["data"]["id"], np.sort(ids))
+        assert all(re.fullmatch(r"\d+ [12] \S+ \S+ \S+", row) for row in frame["rows"])
+    order, tags = state_by_tag(sim)
+    last = frames[-1]["data"]
+    np.testing.assert_array_equal(last["type"], sim.type[order])
+    scaled = (sim.x[order] - LO) / (HI - LO)
+    for d, name in enumerate(("xs", "ys", "zs")):
+        np.testing.assert_allclose(last[name], scaled[:, d], rtol=1e-7, atol=1e-8)
+    # the particles moved between the first and the last frame
+    assert not np.allclose(frames[0]["data"]["xs"], last["xs"])
+
+
+def test_dump_custom_columns_match_the_particle_state(tmp_path, monkeypatch):
+    sim, ids = make(tmp_path, monkeypatch)
+    columns = "id type mass x y z xs xu yu zu ix iy iz vx vy vz fx fy fz step"
+    sim.command(f"dump 2 all custom 4 dump.custom {columns}\nrun 12")
+    frames = read_dump(tmp_path / "dump.custom")
+    assert [f["step"] for f in frames] == [0, 4, 8, 12]
+    for frame in frames:
+        assert frame["columns"] == columns.split()
+        np.testing.assert_array_equal(frame["data"]["id"], np.sort(ids))
+        np.testing.assert_array_equal(frame["data"]["step"], frame["step"])
+    order, _ = state_by_tag(sim)
+    last = frames[-1]["data"]
+    p = sim.particles
+    image = p.image[: sim.nlocal][order]
+    length = HI - LO
+    expected = {"type": sim.type[order], "mass": np.where(sim.type[order] == 1, 1.0, 2.0),
+                "xs": (sim.x[order, 0] - LO[0]) / length[0]}
+    for d, axis in enumerate("xyz"):
+        expected[axis] = sim.x[order, d]
+        expected[f"{axis}u"] = sim.x[order, d] + image[:, d] * length[d]
+        expected[f"i{axis}"] = image[:, d]
+        expected[f"v{axis}"] = sim.v[order, d]
+        expected[f"f{axis}"] = sim.f[order, d]
+    for name, values in expected.items():
+        np.testing.assert_allclose(last[name], values, rtol=1e-9, atol=1e-12, err_msg=name)
+    # integer columns are written as integers
+    assert all(re.fullmatch(r"-?\d+", w) for row in frames[-1]["rows"]
+               for k, w in enumerate(row.split()) if columns.split()[k] in ("id", "ix", "step"))
+
+
+def test_dump_of_a_group_and_fixed_boundaries(tmp_path, monkeypatch):
+    sim, ids = make(tmp_path, monkeypatch, boundary="p f p")
+    # nothing integrates: with no wall, particles would leave through the fixed y faces
+    sim.command("unfix 1\ngroup odd type 2\ndump 3 odd custom 10 dump.odd id type\nrun 10")
+    frames = read_dump(tmp_path / "dump.odd")
+    assert len(frames) == 2
+    for frame in frames:
+        assert frame["labels"] == ["pp", "ff", "pp"]
+        np.testing.assert_array_equal(frame["data"]["id"], np.sort(ids[ids % 2 == 1]))
+        assert np.all(frame["data"]["type"] == 2)
+
+
+def test_dump_of_an_empty_group_writes_headers_only(tmp_path, monkeypatch):
+    sim, _ = make(tmp_path, monkeypatch)
+    sim.command("region far block 100 101 100 101 100 101\ngroup none region far\n"
+                "dump 4 none atom 1 dump.none\nrun 2")
+    frames = read_dump(tmp_path / "dump.none")
+    assert [(f["step"], f["n"]) for f in frames] == [(0, 0), (1, 0), (2, 0)]
+
+
+def test_run_stopped_by_an_error_keeps_complete_frames(tmp_path, monkeypatch):
+    """A particle flies out through a fixed face; the run stops with an error. Every frame written
+    before is complete and readable at once (flushed), though the dump was never closed."""
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None)
+    sim.command("""
+        boundary f f f
+        region box block 0 10 0 10 0 10
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 single 5.0 5.0 5.0
+        create_particle 1 single 9.0 5.0 5.0
+        timestep 0.01
+        fix 1 all nve
+        dump 1 all custom 2 dump.lost id x vx
+    """)
+    sim.v[sim.tag == 2] = [10.0, 0.0, 0.0]
+    with pytest.raises(SimulationError, match="lost through the fixed x boundary") as info:
+        sim.command("run 100")
+    failed_at = int(re.search(r"at step (\d+)", str(info.value)).group(1))
+    frames = read_dump(tmp_path / "dump.lost")
+    steps = [f["step"] for f in frames]
+    assert len(steps) >= 3
+    assert steps == list(range(0, 2 * len(steps), 2))
+    assert steps[-1] < failed_at <= steps[-1] + 2
+    assert all(f["n"] == 2 for f in frames)
+    # rows are sorted by id: row 1 is particle 2, flying at 10 per unit time
+    np.testing.assert_allclose(frames[-1]["data"]["x"][1], 9.0 + 0.1 * steps[-1], rtol=1e-9)
+
+
+def test_consecutive_runs_do_not_duplicate_a_frame(tmp_path, monkeypatch):
+    sim, _ = make(tmp_path, monkeypatch)
+    sim.command("dump 1 all atom 5 dump.atom\nrun 10\nrun 10")
+    assert [f["step"] for f in read_dump(tmp_path / "dump.atom")] == [0, 5, 10, 15, 20]
+
+
+@pytest.mark.parametrize("line, words", [
+    ("dump 1 all custom 5 d.txt id bogus", ("unknown dump column bogus",)),
+    ("dump 1 all custom 5 d.txt id radius", ("radius", "particle_style sphere")),
+    ("dump 1 all atom 0 d.txt", ("N must be >= 1",)),
+    ("dump 1 all atom 5 no/such/dir/d.txt", ("cannot open dump file",)),
+    ("dump 1 nobody atom 5 d.txt", ("group nobody is not defined",)),
+])
+def test_bad_dump_commands(tmp_path, monkeypatch, line, words):
+    sim, _ = make(tmp_path, monkeypatch)
+    with pytest.raises(ScriptError) as info:
+        sim.command(line)
+    for word in words:
+        assert word in str(info.value)
+
+
+def test_mdanalysis_reads_the_dump(tmp_path, monkeypatch):
+    mda = pytest.importorskip("MDAnalysis")
+    sim, ids = make(tmp_path, monkeypatch)
+    sim.command("dump 1 all atom 5 dump.atom\nrun 10")
+    ours = read_dump(tmp_path / "dump.atom")
+    universe = mda.Universe(str(tmp_path / "dump.atom"), format="LAMMPSDUMP")
+    assert universe.trajectory.n_frames == len(ours) == 3
+    assert len(universe.atoms) == len(ids)
+    length = HI - LO
+    for ts, frame in zip(universe.trajectory, ours):
+        np.testing.assert_allclose(ts.dimensions[:3], length, rtol=1e-6)
+        scaled = np.column_stack([frame["data"][c] for c in ("xs", "ys", "zs")])
+        # MDAnalysis puts the box origin at 0: positions are xs * L
+        np.testing.assert_allclose(np.sort(ts.positions, axis=0), np.sort(scaled * length, axis=0),
+                                   atol=1e-3)
