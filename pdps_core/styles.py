@@ -149,7 +149,8 @@ class Pair(Style):
     """A pair style: ``pair_style NAME args`` then ``pair_coeff I J coeffs`` for each type pair.
 
     Subclasses set ``Coeff`` (the pair_coeff model) and implement ``init_one`` (derived constants and
-    the cutoff of one type pair) and ``compute``. The core builds the ``neighbor_list`` kind they ask
+    the cutoff of one type pair, from ``self.resolved[(i, j)]``: the pair's explicit or mixed
+    coefficients) and ``compute``. The core builds the ``neighbor_list`` kind they ask
     for with the cutoffs ``init_one`` returned, sums ghost forces back (newton on), and derives the
     virial from sum(x * f) over owned and ghost particles when asked for it.
     """
@@ -170,22 +171,37 @@ class Pair(Style):
     def parse_coeff(self, words):
         return parse_args(self.Coeff, words, self.coeff_usage)
 
+    mix_rule: str | None = None     # set by pair_modify mix; None: every pair must be given
+
     def mix(self, i, j):
-        """Coefficients for an unset i != j pair; the default is LAMMPS's error."""
-        raise ScriptError(f"pair coefficients are not set for types {i} {j}"
-                          " (give pair_coeff for every type pair)")
+        """Coefficients for an unset i != j pair: an error unless ``pair_modify mix`` chose a rule,
+        then the style's ``mix_coeff`` combines the i i and j j coefficients."""
+        if self.mix_rule is None:
+            raise ScriptError(f"pair coefficients are not set for types {i} {j}"
+                              " (give pair_coeff for every type pair, or a rule with pair_modify mix)")
+        for k in (i, j):
+            if (k, k) not in self.coeffs:
+                raise ScriptError(f"pair coefficients for types {k} {k} are needed to mix {i} {j}")
+        return self.mix_coeff(self.coeffs[(i, i)], self.coeffs[(j, j)], self.mix_rule)
+
+    def mix_coeff(self, ci, cj, rule):
+        raise ScriptError(f"pair style {self.name} has no mixing rule; give pair_coeff {rule} pairs")
 
     def init(self, ntypes):
         """Called at the start of every run; returns the (ntypes+1)^2 cutoff matrix."""
         import numpy as np
         cut = np.zeros((ntypes + 1, ntypes + 1))
+        # explicit coefficients, and mixed ones derived afresh each run (LAMMPS re-mixes at init)
+        self.resolved = {}
         for i in range(1, ntypes + 1):
             for j in range(i, ntypes + 1):
-                if (i, j) not in self.coeffs:
-                    if i == j:
-                        raise ScriptError(f"pair coefficients are not set for types {i} {j}"
-                                          " (give pair_coeff for every type pair)")
-                    self.coeffs[(i, j)] = self.mix(i, j)
+                if (i, j) in self.coeffs:
+                    self.resolved[(i, j)] = self.coeffs[(i, j)]
+                elif i == j:
+                    raise ScriptError(f"pair coefficients are not set for types {i} {j}"
+                                      " (give pair_coeff for every type pair)")
+                else:
+                    self.resolved[(i, j)] = self.mix(i, j)
                 cut[i, j] = cut[j, i] = self.init_one(i, j)
         return cut
 

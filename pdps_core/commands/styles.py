@@ -4,7 +4,7 @@ and their removal (unfix, uncompute, unanalyze, undump)."""
 from ..errors import ScriptError
 from ..styles import registry
 from . import command
-from .words import count, integer, type_range
+from .words import choice, count, integer, type_range
 
 
 @command("pair_style")
@@ -113,3 +113,13 @@ def dump(sim, args):
 @command("undump")
 def undump(sim, args):
     _remove(sim, "dump", sim.output.dumps, args).close()
+
+
+@command("pair_modify")
+def pair_modify(sim, args):
+    """``pair_modify mix geometric|arithmetic``: how unset i != j coefficients are derived (LAMMPS)."""
+    if sim.pair is None:
+        raise ScriptError("pair_modify before pair_style")
+    if len(args) != 2 or args[0] != "mix":
+        raise ScriptError("expected: pair_modify mix geometric|arithmetic")
+    sim.pair.mix_rule = choice(args[1], "mix rule", ("geometric", "arithmetic"))

@@ -24,7 +24,10 @@ Parameters (LAMMPS/PDPS units of the run):
 - ``pair_coeff I J a gamma [rc]``: ``a`` repulsion (force), ``gamma`` friction (>= 0, force/velocity),
   ``rc`` cutoff of this pair (distance; default the global one).
 
-Every type pair must be given; ghosts carry velocities (the dissipative force needs v_j).
+Every type pair must be given, or derived from the i i and j j coefficients with ``pair_modify mix
+geometric`` (:math:`a_{ij} = \sqrt{a_i a_j}`, likewise gamma and rc) or ``arithmetic``
+(:math:`a_{ij} = (a_i + a_j)/2`, likewise gamma and rc). Ghosts carry velocities (the dissipative force
+needs v_j).
 
 Example (the PDPS manual's water)::
 
@@ -38,7 +41,7 @@ import numpy as np
 from numba import njit
 from pydantic import Field
 
-from pdps_core.api import Pair, StyleArgs, pair_gaussian
+from pdps_core.api import Pair, ScriptError, StyleArgs, pair_gaussian
 
 EPSILON = 1.0e-10
 
@@ -96,13 +99,22 @@ class PairDPD(Pair):
         gamma: float = Field(ge=0)
         cutoff: float | None = Field(default=None, gt=0)
 
+    def mix_coeff(self, ci, cj, rule):
+        combine = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))
+        rc_i = ci.cutoff if ci.cutoff is not None else self.args.cutoff
+        rc_j = cj.cutoff if cj.cutoff is not None else self.args.cutoff
+        if rule == "geometric" and ci.a * cj.a < 0:
+            raise ScriptError("geometric mixing needs a of one sign for both types")
+        return self.Coeff(a=combine(ci.a, cj.a), gamma=combine(ci.gamma, cj.gamma),
+                          cutoff=combine(rc_i, rc_j))
+
     def init(self, ntypes):
         shape = (ntypes + 1, ntypes + 1)
         self.a, self.gamma, self.sigma, self.cut = (np.zeros(shape) for _ in range(4))
         return super().init(ntypes)
 
     def init_one(self, i, j):
-        c = self.coeffs[(i, j)]
+        c = self.resolved[(i, j)]
         cut = c.cutoff if c.cutoff is not None else self.args.cutoff
         kT = self.sim.units.boltz * self.args.temperature
         for table, value in ((self.a, c.a), (self.gamma, c.gamma), (self.cut, cut),
