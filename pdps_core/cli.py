@@ -95,7 +95,8 @@ def _run(args):
         _fail(sim, "ERROR: interrupted", args.debug)
         return 1
     except Exception as exc:  # a bug in pdps or a plugin: still one line unless --debug
-        where = f" at {sim.source}:{sim.line}" if sim is not None and sim.source else ""
+        location = sim.error_location if sim is not None else None
+        where = f" at {location[0]}:{location[1]}" if location else ""
         _fail(sim, f"ERROR: internal error{where}: {type(exc).__name__}: {exc} "
                    "(run with --debug for the traceback)", args.debug)
         return 1

@@ -71,6 +71,8 @@ class Simulation:
         self.setup_done_step = None
         self.source = None
         self.line = None
+        self.warnings = []
+        self.error_location = None
         self._integrator = None
 
     # ---- names a style reads ----------------------------------------------------------------------
@@ -124,19 +126,22 @@ class Simulation:
         try:
             for number, raw in logical_lines(text):
                 self.line = number
+                first = raw.split(maxsplit=1)
+                name = first[0] if first else None      # known even if the line cannot be read
                 try:
-                    line = strip_comment(raw)
-                    line = substitute(line, self.variables.text)
+                    line = substitute(strip_comment(raw), self.variables.text)
                     words = split_words(line)
                     if not words:
                         continue
                     self.output.echo(line.strip())
                     self.execute(words)
                 except ScriptError as exc:
-                    name = words[0] if "words" in locals() and words else None
                     raise exc.locate(source, number, name)
-                finally:
-                    words = None
+                except Exception:
+                    # the innermost place a bug surfaced, for the one-line internal error
+                    if self.error_location is None:
+                        self.error_location = (source, number)
+                    raise
         finally:
             self.source, self.line, self.directory = outer
 
@@ -229,6 +234,11 @@ class Simulation:
         return self._call("variable", name, style, *args)
 
     # ---- state helpers used by commands and styles -----------------------------------------------
+    def warn(self, message):
+        """A warning on screen and in the log, kept in ``sim.warnings``; the run goes on."""
+        self.warnings.append(message)
+        self.output.message(f"WARNING: {message}")
+
     def require_box(self, what):
         if self.box is None:
             raise ScriptError(f"{what} before the simulation box exists (use create_box or read_data first)")

@@ -2,7 +2,8 @@
 
 A style is a class with a ``name``, an ``Args`` pydantic model for its script arguments, and the hooks
 it implements. Arguments are read from the script words in the order the model declares its fields;
-a field made with ``keyword(...)`` is an optional ``name value...`` pair instead. A ``tuple[...]`` field
+a field made with ``keyword(...)`` is an optional ``name value...`` pair instead. A field's ``alias`` is
+the name scripts and messages use (``Field(0.5, alias="lambda")`` for a Python keyword). A ``tuple[...]`` field
 takes as many words as it has members; a ``list[...]`` positional field takes every word left.
 
 Styles are found through the entry-point groups ``pdps.pair``, ``pdps.fix``, ``pdps.compute``,
@@ -25,7 +26,7 @@ KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
 # ---- script arguments ---------------------------------------------------------------------------
 class StyleArgs(BaseModel):
     """Base of every ``Args`` model: no NaN/inf, no unknown fields, immutable."""
-    model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True)
+    model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True, populate_by_name=True)
 
 
 def keyword(default=None, **kwargs):
@@ -87,7 +88,7 @@ def explain(error):
 
 def parse_args(model, words, usage=""):
     """Read script words into ``model``; any problem becomes a one-line ScriptError."""
-    fields = model.model_fields
+    fields = {info.alias or name: info for name, info in model.model_fields.items()}
     positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
     values, i = {}, 0
@@ -137,7 +138,7 @@ class Style:
     kind: ClassVar[str] = ""
     Args: ClassVar[type[StyleArgs]] = StyleArgs
     usage: ClassVar[str] = ""
-    per_atom: ClassVar[tuple[str, ...]] = ()   # per-atom arrays to allocate (radius, omega, torque, ...)
+    per_atom: ClassVar[tuple] = ()   # per-atom arrays to allocate: "radius", "omega", or ("name", width)
     ghost_velocity: ClassVar[bool] = False     # ghosts must carry v (DPD, granular damping)
 
     @classmethod

@@ -33,3 +33,21 @@ def run_pdps(tmp_path):
         return subprocess.run([*PDPS, "run", name, *extra], cwd=tmp_path, capture_output=True,
                               text=True, env={**os.environ, **(env or {})}, timeout=600)
     return run
+
+
+@pytest.fixture
+def pdps_cli(tmp_path, monkeypatch, capsys):
+    """`pdps run` in-process (``cli.main``, the code path of the console script) in a temp dir:
+    writes the script, runs it and returns a CompletedProcess (exit code, stdout, stderr).
+    As fast as ``make_sim``; use ``run_pdps`` where the process itself matters."""
+    from pdps_core import cli
+    monkeypatch.chdir(tmp_path)
+
+    def run(script, *extra, name="in.test"):
+        (tmp_path / name).write_text(textwrap.dedent(script))
+        argv = ["run", name, *extra]
+        capsys.readouterr()
+        code = cli.main(argv)
+        out, err = capsys.readouterr()
+        return subprocess.CompletedProcess(argv, code, out, err)
+    return run

@@ -97,3 +97,6 @@ class SerialComm:
 
     def max(self, value):
         return value
+
+    def min(self, value):
+        return value

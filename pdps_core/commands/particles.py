@@ -244,9 +244,12 @@ def velocity(sim, args):
     v = sim.particles.v[: sim.particles.nlocal]
     if style == "set":
         count(args[2:], 3, usage)
-        for d, word in enumerate(args[2:5]):
-            if word != "NULL":
-                v[chosen, d] = number(word, "v" + "xyz"[d])
+        # every value is read before any is set, so a bad one changes nothing
+        values = [None if word == "NULL" else number(word, "v" + axis)
+                  for axis, word in zip("xyz", args[2:5])]
+        for d, value in enumerate(values):
+            if value is not None:
+                v[chosen, d] = value
         return
     if len(args) < 4:
         raise ScriptError(f"expected a temperature and a seed; usage: {usage}")

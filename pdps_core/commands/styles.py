@@ -54,8 +54,7 @@ def _create(sim, kind, table, args, usage):
     if previous is not None and previous.name != style:
         raise ScriptError(f"fix {ident} is already defined with style {previous.name}; unfix it first")
     instance = cls(sim, ident, group, cls.parse(args[3:]))
-    for name in cls.per_atom:
-        sim.particles.request(name)
+    sim.particles.request_all(cls.per_atom)
     table[ident] = instance          # a replaced fix keeps its place in the order
     return instance
 

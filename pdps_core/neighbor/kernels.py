@@ -93,7 +93,9 @@ def build_list(x, type_, nlocal, cutneighsq, cell, start, order, nbins, half, ca
 
 @njit(cache=True)
 def max_displacement_sq(x, xhold, nlocal):
+    """(largest squared displacement since the last build, index of the particle that made it)."""
     worst = 0.0
+    who = -1
     for i in range(nlocal):
         dx = x[i, 0] - xhold[i, 0]
         dy = x[i, 1] - xhold[i, 1]
@@ -101,4 +103,5 @@ def max_displacement_sq(x, xhold, nlocal):
         r = dx * dx + dy * dy + dz * dz
         if r > worst:
             worst = r
-    return worst
+            who = i
+    return worst, who

@@ -47,6 +47,8 @@ class Neighbor:
         self.xhold = None
         self.builds = 0
         self.dangerous = 0
+        self.overrun = 0.0          # largest move beyond the whole skin between builds, this run
+        self.moved = (0.0, -1)      # (largest move since the last build, owned index), at the last decision
         self.sort_every = 1000
         self.last_sort = None
         self._capacity = 0
@@ -87,10 +89,14 @@ class Neighbor:
         self.ago += 1
         if self.ago < self.delay or self.ago % self.every:
             return False
+        moved_sq, who = max_displacement_sq(particles.x, self.xhold, len(self.xhold))
+        self.moved = (float(np.sqrt(moved_sq)), who)
         if self.check:
             limit = 0.5 * self.skin
-            if max_displacement_sq(particles.x, self.xhold, len(self.xhold)) <= limit * limit:
+            if moved_sq <= limit * limit:
                 return False
+            if self.requests and moved_sq > self.skin * self.skin:
+                self.overrun = max(self.overrun, self.moved[0])
         if self.ago == max(self.every, self.delay) and self.check:
             self.dangerous += 1
         return True

@@ -42,6 +42,7 @@ class Verlet:
         self.hooks = {}
         self.forward = ("x",)
         self.reverse = ("f",)
+        self.warned_overrun = False
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
@@ -71,12 +72,12 @@ class Verlet:
         styles = [s for s in [sim.pair, *sim.fixes.values(), *sim.computes.values(),
                               *sim.analyzes.values()] if s is not None]
         for style in styles:
-            for name in style.per_atom:
-                particles.request(name)
+            particles.request_all(style.per_atom)
         ghost_velocity = sim.ghost_velocity or any(s.ghost_velocity for s in styles)
         self.forward = ("x", "v") if ghost_velocity else ("x",)
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
+        sim.neighbor.overrun = 0.0
         sim.pair_list = None
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
@@ -143,6 +144,18 @@ class Verlet:
                     f"({', '.join(f'{c:.6g}' for c in values[i])}) at step {self.sim.step}; "
                     "the run is unstable (time step too large or particles overlapping?)")
 
+    def _check_runaway(self, step):
+        """A particle that crossed half the box between two neighbor decisions has no meaningful
+        trajectory left (its pairs and its image are guesses): stop rather than print garbage."""
+        sim = self.sim
+        distance, i = sim.neighbor.moved
+        half_box = 0.5 * float(sim.box.length[: sim.dimension].min())
+        if distance > half_box:
+            raise SimulationError(
+                f"particle {int(sim.particles.tag[i])} moved {distance:.3g} since the last neighbor "
+                f"list build, more than half the box ({half_box:g}), at step {step}: the run has "
+                "blown up (time step too large or forces too strong?)")
+
     # ---- steps ----------------------------------------------------------------------------------
     def run(self, nsteps):
         sim = self.sim
@@ -156,6 +169,12 @@ class Verlet:
             self._call("initial_integrate")
             self._call("post_integrate")
             if sim.neighbor.decide(particles):
+                self._check_runaway(step)
+                if sim.neighbor.overrun and not self.warned_overrun:
+                    self.warned_overrun = True
+                    sim.warn(f"a particle moved {sim.neighbor.overrun:.3g} between neighbor list builds, "
+                             f"more than the skin {sim.neighbor.skin:g}, at step {step}: interactions may "
+                             "have been missed (time step too large or velocities too high?)")
                 self._call("pre_exchange")
                 t0 = time.perf_counter()
                 sim.comm.exchange(particles, sim.box, step)

@@ -176,6 +176,7 @@ class Variables:
 
 
 def _format(value):
+    """As LAMMPS substitutes a number: an integer when it is one, else 15 significant digits."""
     if float(value).is_integer() and abs(value) < 1e15:
         return str(int(value))
-    return repr(float(value))
+    return f"{float(value):.15g}"

@@ -66,6 +66,14 @@ class Particles:
         self.arrays[name] = self._empty(prop, self.nlocal + self.nghost)
         return self.arrays[name]
 
+    def request_all(self, entries):
+        """Allocate what a style's ``per_atom`` lists: names, or (name, width) pairs."""
+        for entry in entries:
+            if isinstance(entry, str):
+                self.request(entry)
+            else:
+                self.request(*entry)
+
     def has(self, name):
         return name in self.arrays
 

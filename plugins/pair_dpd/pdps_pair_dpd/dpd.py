@@ -29,6 +29,20 @@ geometric`` (:math:`a_{ij} = \sqrt{a_i a_j}`, likewise gamma and rc) or ``arithm
 (:math:`a_{ij} = (a_i + a_j)/2`, likewise gamma and rc). Ghosts carry velocities (the dissipative force
 needs v_j).
 
+Stability check. At the start of each run the style estimates, for every type pair, how stiff the
+fluid is for the time step, using the mean number of neighbors within the cutoff
+:math:`n_c = \rho\, \tfrac{4}{3}\pi r_c^3` (:math:`\rho\pi r_c^2` in 2-d):
+
+.. math::
+
+    S_C = \Delta t \sqrt{\frac{n_c\, a}{r_c\, m}}, \qquad
+    S_D = \Delta t\, \frac{\gamma\, n_c \langle w^2 \rangle}{m}, \quad
+    \langle w^2\rangle = \tfrac{1}{10}\ (\tfrac16 \text{ in 2-d})
+
+and warns, naming the setting, when :math:`S_C > 1.5` or :math:`S_D > 1`. Calibration on the PDPS
+water example (rho = 4, gamma = 4.5, dt = 0.04): a = 25 (S_C = 0.82) gives T = 1.03; a = 150
+(S_C = 2.0) T = 1.11; a = 200 (2.3) T = 1.30; a = 300 (2.8) T = 400.
+
 Example (the PDPS manual's water)::
 
     pair_style dpd 1.0 1.0 3442527
@@ -41,7 +55,7 @@ import numpy as np
 from numba import njit
 from pydantic import Field
 
-from pdps_core.api import Pair, ScriptError, StyleArgs, pair_gaussian
+from pdps_core.api import Pair, ScriptError, StyleArgs, observables, pair_gaussian
 
 EPSILON = 1.0e-10
 
@@ -88,6 +102,7 @@ class PairDPD(Pair):
     usage = "pair_style dpd T rc seed"
     coeff_usage = "a gamma [rc]"
     ghost_velocity = True
+    split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
     class Args(StyleArgs):
         temperature: float = Field(ge=0)
@@ -111,7 +126,39 @@ class PairDPD(Pair):
     def init(self, ntypes):
         shape = (ntypes + 1, ntypes + 1)
         self.a, self.gamma, self.sigma, self.cut = (np.zeros(shape) for _ in range(4))
-        return super().init(ntypes)
+        cutoffs = super().init(ntypes)
+        self.check_stability(ntypes)
+        return cutoffs
+
+    def check_stability(self, ntypes):
+        """Warn when dt is too large for the conservative or dissipative stiffness (docstring)."""
+        sim = self.sim
+        count = observables.count(sim)
+        if count == 0:
+            return
+        density = count / sim.box.volume
+        mass = sim.comm.min(float(observables.masses(sim).min()) if sim.nlocal else math.inf)
+        dt = sim.dt
+        two_d = sim.dimension == 2
+        for i in range(1, ntypes + 1):
+            for j in range(i, ntypes + 1):
+                rc = self.cut[i, j]
+                neighbors = density * (math.pi * rc ** 2 if two_d else 4.0 / 3.0 * math.pi * rc ** 3)
+                mean_w2 = 1.0 / 6.0 if two_d else 0.1
+                stiffness = dt * math.sqrt(max(self.a[i, j], 0.0) * neighbors / (rc * mass))
+                friction = dt * self.gamma[i, j] * neighbors * mean_w2 / mass
+                if stiffness > 1.5:
+                    safe = 1.5 * dt / stiffness
+                    sim.warn(f"pair dpd: timestep {dt:g} is too large for a = {self.a[i, j]:g} "
+                             f"(types {i} {j}) at number density {density:.3g}: dt*sqrt(n_c a/(rc m)) = "
+                             f"{stiffness:.2f} > 1.5, where velocity Verlet loses temperature control; "
+                             f"use timestep <= {safe:.3g} or a smaller a")
+                if friction > 1.0 and not self.split:
+                    safe = dt / friction
+                    sim.warn(f"pair dpd: timestep {dt:g} is too large for gamma = {self.gamma[i, j]:g} "
+                             f"(types {i} {j}) at number density {density:.3g}: "
+                             f"dt*gamma*n_c*<w^2>/m = {friction:.2f} > 1, the friction overshoots; "
+                             f"use timestep <= {safe:.3g} or a smaller gamma")
 
     def init_one(self, i, j):
         c = self.resolved[(i, j)]

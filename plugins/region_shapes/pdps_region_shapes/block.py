@@ -4,7 +4,8 @@ Syntax::
 
     region ID block xlo xhi ylo yhi zlo zhi
 
-Each bound is a number (distance units), ``INF``/``-INF`` (unbounded) or ``EDGE`` (the simulation box's
+Each bound is a number (distance units), ``INF`` or ``-INF`` (unbounded on that side, whichever
+sign is written, as in LAMMPS) or ``EDGE`` (the simulation box's
 face, which must exist then), as in LAMMPS. Points on the faces are inside.
 
 Example::
@@ -14,26 +15,17 @@ Example::
 """
 
 import math
-from typing import Annotated
 
 import numpy as np
-from pydantic import BeforeValidator, model_validator
+from pydantic import model_validator
 
 from pdps_core.api import Region, ScriptError, StyleArgs
 
 HUGE = 1e300
 
 
-def _bound(word):
-    if isinstance(word, str):
-        if word == "INF":
-            return HUGE
-        if word == "-INF":
-            return -HUGE
-    return word
-
-
-Bound = Annotated[float | str, BeforeValidator(_bound)]
+UNBOUNDED = ("INF", "-INF")
+Bound = float | str
 
 
 class RegionBlock(Region):
@@ -52,7 +44,7 @@ class RegionBlock(Region):
         def _words(self):
             for name in ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi"):
                 value = getattr(self, name)
-                if isinstance(value, str) and value != "EDGE":
+                if isinstance(value, str) and value not in ("EDGE", *UNBOUNDED):
                     try:
                         finite = math.isfinite(float(value))
                     except ValueError:
@@ -67,16 +59,19 @@ class RegionBlock(Region):
         bounds = []
         for k, name in enumerate(("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")):
             value = getattr(args, name)
-            if value == "EDGE":
+            is_lo = k % 2 == 0
+            if value in UNBOUNDED:
+                value = -HUGE if is_lo else HUGE       # LAMMPS: INF opens the block on that side
+            elif value == "EDGE":
                 if sim.box is None:
-                    raise ScriptError(f"region {id}: EDGE needs the simulation box to exist")
-                value = (sim.box.lo if k % 2 == 0 else sim.box.hi)[k // 2]
+                    raise ScriptError(f"{name} EDGE needs the simulation box to exist")
+                value = (sim.box.lo if is_lo else sim.box.hi)[k // 2]
             bounds.append(float(value))
         self.lo = np.array(bounds[0::2])
         self.hi = np.array(bounds[1::2])
         for axis, lo, hi in zip("xyz", self.lo, self.hi):
             if not lo <= hi:
-                raise ScriptError(f"region {id}: {axis}lo must be <= {axis}hi (got {lo:g} {hi:g})")
+                raise ScriptError(f"{axis}lo must be <= {axis}hi (got {lo:g} {hi:g})")
 
     def inside(self, x):
         return np.all((x >= self.lo) & (x <= self.hi), axis=1)

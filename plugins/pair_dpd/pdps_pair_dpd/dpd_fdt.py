@@ -1,0 +1,103 @@
+r"""Pair style ``dpd/fdt``: DPD whose dissipative and random parts are left to ``fix shardlow``
+(LAMMPS's pair dpd/fdt; Lisal, Brennan & Bonet Avalos, J. Chem. Phys. 135, 204105 (2011); Larentzos
+et al., Comput. Phys. Commun. 185, 1987 (2014)).
+
+With a ``fix shardlow`` defined, this style computes only the conservative DPD force; the
+fluctuation-dissipation pair (the "fdt" of the name) is integrated by the Shardlow splitting in the
+fix. With :math:`\mathbf{r}_{ij} = \mathbf{r}_i - \mathbf{r}_j`, :math:`\hat{\mathbf{r}}_{ij} =
+\mathbf{r}_{ij}/r_{ij}` and :math:`w = 1 - r_{ij}/r_c`, for :math:`r_{ij} < r_c`:
+
+.. math::
+
+    \mathbf{F}_{ij} = a\,w\,\hat{\mathbf{r}}_{ij}, \qquad E = \tfrac12\,a\,r_c\,w^2
+
+Without ``fix shardlow`` it computes the full DPD force of ``pair_style dpd`` (conservative,
+dissipative :math:`-\gamma w^2 (\hat{\mathbf{r}}_{ij}\cdot\mathbf{v}_{ij})\hat{\mathbf{r}}_{ij}` and
+random :math:`\sigma w \xi_{ij} \Delta t^{-1/2} \hat{\mathbf{r}}_{ij}`, :math:`\sigma^2 = 2 k_B T
+\gamma`), as LAMMPS does; then ghosts carry velocities, otherwise they need not.
+Pairs closer than 1e-10 are skipped, as in LAMMPS.
+
+Parameters (units of the run), the same words as ``pair_style dpd``:
+
+- ``pair_style dpd/fdt T rc seed``: ``T`` temperature of the fluctuation-dissipation theorem
+  (>= 0, temperature units), ``rc`` global cutoff (> 0, distance), ``seed`` integer >= 1 (fix
+  shardlow derives its noise key from it).
+- ``pair_coeff I J a gamma [rc]``: ``a`` repulsion (force), ``gamma`` friction (>= 0,
+  force/velocity), ``rc`` cutoff of this pair (distance; default the global one).
+
+Unlike LAMMPS, whose dpd/fdt takes ``sigma`` as the second coefficient, pdps takes ``gamma`` here,
+as ``pair_style dpd`` does (sigma = sqrt(2 k_B T gamma)): the two styles read the same pair_coeff
+lines. A LAMMPS script's ``pair_coeff * * 25.0 3.0`` (sigma 3, k_B T 1) is ``25.0 4.5`` here.
+
+Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
+
+    pair_style dpd/fdt 1.0 1.0 3442527
+    pair_coeff * * 25.0 4.5
+    fix 1 all shardlow
+    fix 2 all nve
+"""
+
+import math
+
+from numba import njit
+
+from .dpd import EPSILON, PairDPD
+
+
+@njit(cache=True)
+def conservative_compute(x, f, type_, offsets, neighbors, nlocal, a, cut, eflag):
+    energy = 0.0
+    for i in range(nlocal):
+        ti = type_[i]
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            tj = type_[j]
+            delx = x[i, 0] - x[j, 0]
+            dely = x[i, 1] - x[j, 1]
+            delz = x[i, 2] - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            rc = cut[ti, tj]
+            if rsq >= rc * rc:
+                continue
+            r = math.sqrt(rsq)
+            if r < EPSILON:
+                continue
+            w = 1.0 - r / rc
+            fpair = a[ti, tj] * w / r
+            f[i, 0] += delx * fpair
+            f[i, 1] += dely * fpair
+            f[i, 2] += delz * fpair
+            f[j, 0] -= delx * fpair
+            f[j, 1] -= dely * fpair
+            f[j, 2] -= delz * fpair
+            if eflag:
+                energy += 0.5 * a[ti, tj] * rc * w * w
+    return energy
+
+
+def shardlow_defined(sim):
+    """True when a fix shardlow takes over the dissipative and random forces (LAMMPS: a fix whose
+    style starts with ``shardlow``)."""
+    return any(fix.name.startswith("shardlow") for fix in sim.fixes.values())
+
+
+class PairDPDfdt(PairDPD):
+    name = "dpd/fdt"
+    usage = "pair_style dpd/fdt T rc seed"
+
+    @property
+    def ghost_velocity(self):
+        # read by the core before init(): the conservative force alone needs no ghost velocity
+        return not shardlow_defined(self.sim)
+
+    def init(self, ntypes):
+        self.split = shardlow_defined(self.sim)
+        return super().init(ntypes)
+
+    def compute(self, sim, nlist, eflag, vflag):
+        if not self.split:
+            super().compute(sim, nlist, eflag, vflag)
+            return
+        p = sim.particles
+        self.energy = conservative_compute(p.x, p.f, p.type, nlist.offsets, nlist.neighbors,
+                                           p.nlocal, self.a, self.cut, eflag)

@@ -1,0 +1,392 @@
+"""DPD integrators: fix mvv/dpd (Groot & Warren's modified velocity Verlet) and fix shardlow with
+pair style dpd/fdt (Shardlow's S1 splitting, as LAMMPS).
+
+Temperatures are averages over many steps of the Groot-Warren fluid (rho = 3, a = 25, gamma = 4.5,
+k_B T = 1, 648 particles); each test states the sampling error behind its tolerance and checks that
+error is as small as assumed, so a noisier run fails instead of passing by luck. Runs are seeded and
+do not depend on wall-clock time.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Fix, ScriptError, Simulation, observables, pair_gaussian, registry
+
+SEED = 7351
+SHARDLOW_KEY = 0x53484152444C4F57      # documented in shardlow.py: noise key = seed ^ this
+
+
+class _Record(Fix):
+    """Test fix: total momentum and thermal temperature (centre-of-mass motion removed, 3N - 3
+    degrees of freedom) after every step."""
+    name = "test_integrators_record"
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.temperature, self.momentum = [], []
+
+    def end_of_step(self, sim):
+        m = observables.masses(sim)
+        momentum = (m[:, None] * sim.v).sum(axis=0)
+        thermal = sim.v - momentum / m.sum()
+        self.momentum.append(momentum)
+        self.temperature.append(float(m @ (thermal ** 2).sum(axis=1)) / (3 * len(m) - 3))
+
+
+registry.register("fix", _Record.name, _Record)
+
+
+def by_tag(sim, array):
+    return np.asarray(array)[np.argsort(sim.tag)]
+
+
+def mean_and_error(values, blocks=20):
+    """Mean and its standard error from block averages (blocks longer than the correlation time
+    of the kinetic energy, a few steps here)."""
+    values = np.asarray(values)
+    means = values[: len(values) // blocks * blocks].reshape(blocks, -1).mean(axis=1)
+    return float(values.mean()), float(means.std(ddof=1) / math.sqrt(blocks))
+
+
+def fluid(integrator, *, pair="dpd", dt=0.04, a=25.0, n=648, length=6.0, equilibrate=200,
+          average=1000, seed=SEED):
+    """Groot-Warren fluid from random positions; returns the record of the averaging run."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        units lj
+        region box block 0 {length} 0 {length} 0 {length}
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 random {n} {seed} box
+        pair_style {pair} 1.0 1.0 {seed}
+        pair_coeff * * {a} 4.5
+        timestep {dt}
+        velocity all create 1.0 {seed} gaussian
+        {integrator}
+        run {equilibrate}
+        fix record all {_Record.name}
+        run {average}
+    """)
+    return sim, sim.fixes["record"]
+
+
+SHARDLOW = "fix 1 all shardlow\nfix 2 all nve"
+
+
+# ---- fix mvv/dpd --------------------------------------------------------------------------------
+def _small_run(integrator, steps=60):
+    """120 particles, two types and masses, neighbor lists rebuilt and particles re-sorted in
+    memory at almost every step: `vest` must move with its particle between the two half steps."""
+    rng = np.random.default_rng(5)
+    n, length = 120, 3.5
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        atom_modify sort 1 0.0
+        neighbor 0.05
+        region box block 0 {length} 0 {length} 0 {length}
+        create_box 2 box
+        mass 1 1.0
+        mass 2 2.5
+        create_particle 1 random {n} 17 box
+        pair_style dpd 1.0 1.0 {SEED}
+        pair_coeff * * 25.0 4.5
+        pair_coeff 1 2 35.0 3.0
+        timestep 0.04
+    """)
+    sim.type[::3] = 2
+    sim.v[:] = rng.normal(size=(n, 3))
+    sim.command(f"{integrator}\nrun {steps}")
+    return sim
+
+
+def test_mvv_dpd_with_lambda_one_half_is_velocity_verlet():
+    """lambda = 1/2: the predicted velocity is the half-step one and the trajectory is fix nve's,
+    to the last bit, through neighbor rebuilds and re-sorts; lambda = 0.65 is another trajectory."""
+    reference = _small_run("fix 1 all nve")
+    mvv = _small_run("fix 1 all mvv/dpd")
+    other = _small_run("fix 1 all mvv/dpd 0.65")
+    assert reference.neighbor.builds > 20
+    assert not np.array_equal(mvv.tag, np.arange(1, mvv.nlocal + 1))     # storage was re-sorted
+    for name in ("x", "v"):
+        expected = by_tag(reference, getattr(reference, name))
+        np.testing.assert_array_equal(by_tag(mvv, getattr(mvv, name)), expected)
+        assert np.abs(by_tag(other, getattr(other, name)) - expected).max() > 1e-3
+    assert mvv.fixes["1"].args.prediction == 0.5
+
+
+def test_mvv_dpd_one_step_formulas():
+    """Two particles, a = 25 only (no noise): after one step x = x0 + dt v0 + dt^2/2 f0/m and
+    v = v0 + dt/2 (f0 + f1)/m where f1 is evaluated with v0 + lambda dt f0/m."""
+    lam, dt, a = 0.8, 0.05, 25.0
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        boundary f f f
+        region box block 0 10 0 10 0 10
+        create_box 1 box
+        mass 1 2.0
+        create_particle 1 single 5.0 5.0 5.0
+        create_particle 1 single 5.5 5.2 4.9
+        pair_style dpd 0.0 1.0 {SEED}
+        pair_coeff * * {a} 3.0
+        timestep {dt}
+        fix 1 all mvv/dpd {lam}
+    """)
+    v0 = np.array([[0.3, -0.2, 0.5], [-0.4, 0.1, 0.0]])
+    sim.v[:] = v0
+    x0 = sim.x.copy()
+    m, gamma = 2.0, 3.0
+
+    def force(x, v):
+        delta = x[0] - x[1]
+        r = np.linalg.norm(delta)
+        e, w = delta / r, 1.0 - r
+        f = (a * w - gamma * w * w * float(e @ (v[0] - v[1]))) * e
+        return np.array([f, -f])
+
+    f0 = force(x0, v0)
+    x1 = x0 + dt * v0 + 0.5 * dt * dt * f0 / m
+    f1 = force(x1, v0 + lam * dt * f0 / m)
+    sim.command("run 1")
+    np.testing.assert_allclose(sim.x, x1, rtol=1e-13)
+    np.testing.assert_allclose(sim.v, v0 + 0.5 * dt * (f0 + f1) / m, rtol=1e-12)
+
+
+@pytest.mark.parametrize("words, message", [
+    ("1.5", "lambda must be <= 1 (got 1.5)"),
+    ("-0.1", "lambda must be >= 0 (got -0.1)"),
+    ("abc", "lambda must be a finite number (got abc)"),
+    ("0.6 7", "unexpected '7'"),
+])
+def test_mvv_dpd_bad_lambda(words, message):
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box")
+    with pytest.raises(ScriptError) as info:
+        sim.command(f"fix 1 all mvv/dpd {words}")
+    assert message in str(info.value)
+
+
+def test_mvv_dpd_temperature_of_groot_warren_fluid():
+    """lambda = 0.65 at dt = 0.04 (Groot & Warren's choice): <T> within 3 % of k_B T = 1.
+    Measured 1.002 here (1.009 with another seed), standard error 0.004 over 1000 steps; velocity
+    Verlet gives 1.025-1.033 at this step. 3 % is 5 standard errors beyond the worst of these."""
+    _, record = fluid("fix 1 all mvv/dpd 0.65", dt=0.04)
+    temperature, error = mean_and_error(record.temperature)
+    assert error < 0.006
+    assert abs(temperature - 1.0) < 0.03
+
+
+# ---- pair dpd/fdt -------------------------------------------------------------------------------
+def _pair_forces(pair, integrator="", a=25.0, gamma=4.5, T=1.3):
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        region box block 0 3 0 3 0 3
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 random 60 11 box
+        velocity all create 2.0 3 gaussian
+        pair_style {pair} {T} 1.0 {SEED}
+        pair_coeff * * {a} {gamma}
+        {integrator}
+        reset_timestep 9
+        run 0
+    """)
+    return sim, by_tag(sim, sim.f)
+
+
+def test_dpd_fdt_alone_is_full_dpd_and_with_shardlow_conservative_only():
+    """As LAMMPS: without fix shardlow, dpd/fdt computes pair dpd's full force (same seed, same
+    numbers); with it, only a w r_hat, and ghosts need no velocities."""
+    fdt, alone = _pair_forces("dpd/fdt")
+    _, full = _pair_forces("dpd")
+    np.testing.assert_array_equal(alone, full)
+    assert fdt.pair.ghost_velocity
+    split, conservative = _pair_forces("dpd/fdt", SHARDLOW)
+    _, expected = _pair_forces("dpd", gamma=0.0)
+    np.testing.assert_allclose(conservative, expected, rtol=1e-13, atol=1e-12)
+    assert np.abs(conservative - full).max() > 1.0
+    assert not split.pair.ghost_velocity
+
+
+# ---- fix shardlow: one pair ---------------------------------------------------------------------
+def _s1_update(x, v, m, gamma, T, dt, step, tags=(1, 2), length=None):
+    """LAMMPS's ssa_update_dpd for one pair, written out independently (minimum image when
+    periodic)."""
+    delta = x[0] - x[1]
+    if length is not None:
+        delta -= length * np.round(delta / length)
+    r = np.linalg.norm(delta)
+    e, w = delta / r, 1.0 - r
+    sigma = math.sqrt(2.0 * T * gamma)
+    s = 0.5 * sigma * w * math.sqrt(dt) * pair_gaussian(SEED ^ SHARDLOW_KEY, step, *tags)
+    g = 0.5 * gamma * w * w * dt
+    v = v.copy()
+    for implicit in (False, True):
+        impulse = s - g * float(e @ (v[0] - v[1]))
+        if implicit:
+            impulse /= 1.0 + (1.0 / m[0] + 1.0 / m[1]) * g
+        v[0] += impulse * e / m[0]
+        v[1] -= impulse * e / m[1]
+    return v
+
+
+def _pair(x, v, *, T=1.3, gamma=4.5, dt=0.06, boundary="f f f", length=10.0, steps=1):
+    """Two particles of masses 1 and 3 with a = 0 (fix nve leaves v alone): after `steps` steps
+    the velocities are what the Shardlow sweeps made of them."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        boundary {boundary}
+        region box block 0 {length} 0 {length} 0 {length}
+        create_box 2 box
+        mass 1 1.0
+        mass 2 3.0
+        create_particle 1 single {x[0][0]} {x[0][1]} {x[0][2]}
+        create_particle 2 single {x[1][0]} {x[1][1]} {x[1][2]}
+        pair_style dpd/fdt {T} 1.0 {SEED}
+        pair_coeff * * 0.0 {gamma}
+        timestep {dt}
+        {SHARDLOW}
+    """)
+    sim.v[:] = v
+    sim.command(f"run {steps}")
+    return sim
+
+
+@pytest.mark.parametrize("T", [1.3, 0.0])
+def test_one_pair_update_is_lammps_s1_and_conserves_the_pair_momentum(T):
+    x = np.array([[5.0, 5.0, 5.0], [5.35, 4.8, 5.25]])
+    v = np.array([[0.7, -0.4, 0.2], [-0.5, 0.3, 0.6]])
+    m = np.array([1.0, 3.0])
+    sim = _pair(x, v, T=T)
+    after = by_tag(sim, sim.v)
+    np.testing.assert_allclose(after, _s1_update(x, v, m, 4.5, T, 0.06, step=1), rtol=1e-13)
+    p_before, p_after = m @ v, m @ after
+    assert np.abs(p_after - p_before).max() < 1e-15 * np.abs(m[:, None] * v).sum()
+    change = after[0] - v[0]
+    assert np.linalg.norm(change) > 1e-2
+    e = (x[0] - x[1]) / np.linalg.norm(x[0] - x[1])
+    np.testing.assert_allclose(np.cross(change, e), 0.0, atol=1e-15)   # impulse along r_hat
+    if T == 0.0:
+        # pure friction, trapezoidal rule: u' = u (1 - mu g) / (1 + mu g), tangential part kept
+        w, mu = 1.0 - np.linalg.norm(x[0] - x[1]), 1.0 + 1.0 / 3.0
+        g = 0.5 * 4.5 * w * w * 0.06
+        u, u_after = e @ (v[0] - v[1]), e @ (after[0] - after[1])
+        assert u_after == pytest.approx(u * (1 - mu * g) / (1 + mu * g), rel=1e-13)
+
+
+def test_pair_across_the_periodic_face_updates_the_owner():
+    """The partner is a ghost: its velocity change must land on its owner (momentum conserved,
+    the same update as the minimum-image pair), over several steps without a rebuild."""
+    x = np.array([[0.1, 2.5, 2.5], [4.75, 2.65, 2.4]])
+    v = np.array([[-0.02, 0.01, 0.0], [0.03, 0.0, -0.01]])
+    m = np.array([1.0, 3.0])
+    sim = _pair(x, v, boundary="p p p", length=5.0, dt=0.01, steps=3)
+    assert sim.particles.nghost > 0 and sim.neighbor.builds == 1
+    expected, position = v, x.copy()
+    for step in (1, 2, 3):
+        expected = _s1_update(position, expected, m, 4.5, 1.3, 0.01, step=step, length=5.0)
+        position = position + 0.01 * expected
+    np.testing.assert_allclose(by_tag(sim, sim.v), expected, rtol=1e-12)
+    np.testing.assert_allclose(m @ by_tag(sim, sim.v), m @ v, atol=1e-15)
+
+
+# ---- fix shardlow: the fluid --------------------------------------------------------------------
+def test_shardlow_conserves_momentum_every_step_and_keeps_the_temperature():
+    """Momentum (with a net drift) is conserved to round-off at every step. The thermal <T> at
+    dt = 0.04 is 1.012-1.016 with a standard error of 0.004 over 1000 steps: within 3 % of k_B T
+    (the pair friction acts on relative velocities only: the drift does not heat or cool)."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        region box block 0 6 0 6 0 6
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 random 648 {SEED} box
+        pair_style dpd/fdt 1.0 1.0 {SEED}
+        pair_coeff * * 25.0 4.5
+        timestep 0.04
+        velocity all create 1.0 {SEED} gaussian
+        {SHARDLOW}
+        run 200
+    """)
+    sim.v[:] += [0.3, -0.1, 0.2]
+    p0 = sim.v.sum(axis=0)
+    sim.command(f"fix record all {_Record.name}\nrun 1000")
+    record = sim.fixes["record"]
+    drift = np.abs(np.array(record.momentum) - p0).max()
+    assert drift < 1e-12 * np.abs(sim.v).sum()
+    temperature, error = mean_and_error(record.temperature)
+    assert error < 0.006
+    assert abs(temperature - 1.0) < 0.03
+
+
+def test_shardlow_is_exact_for_an_ideal_dpd_gas_at_any_time_step():
+    """a = 0: each pair update keeps the Maxwell-Boltzmann distribution exactly (the trapezoidal
+    rule's stationary variance of the radial relative velocity is k_B T / m_reduced for any dt),
+    so <T> = k_B T even at dt = 0.2, where velocity Verlet with pair dpd is 40 % hot.
+    Measured 0.998, standard error 0.004 over 1000 steps; tolerance 1.5 %. A wrong factor on
+    sigma or gamma (e.g. a full instead of a half step in either) shifts T by tens of percent."""
+    _, record = fluid(SHARDLOW, pair="dpd/fdt", a=0.0, dt=0.2, n=375, length=5.0,
+                      equilibrate=100)
+    temperature, error = mean_and_error(record.temperature)
+    assert error < 0.005
+    assert abs(temperature - 1.0) < 0.015
+
+
+def test_shardlow_temperature_error_is_smaller_than_velocity_verlet_at_large_dt():
+    """dt = 0.08, Groot-Warren fluid: velocity Verlet with pair dpd runs at <T> = 1.138, Shardlow
+    at 1.057 (its error comes from the conservative part only: see the ideal-gas test). Standard
+    errors of the 800-step means are about 0.005, so the 0.08 gap is ~12 combined standard
+    errors; we ask for 0.03."""
+    _, nve = fluid("fix 1 all nve", dt=0.08, equilibrate=150, average=800)
+    _, shardlow = fluid(SHARDLOW, pair="dpd/fdt", dt=0.08, equilibrate=150, average=800)
+    t_nve, e_nve = mean_and_error(nve.temperature)
+    t_shardlow, e_shardlow = mean_and_error(shardlow.temperature)
+    assert max(e_nve, e_shardlow) < 0.008
+    assert t_nve - 1.0 > 0.05                   # the error being fixed is there
+    assert abs(t_shardlow - 1.0) < abs(t_nve - 1.0) - 0.03
+
+
+# ---- fix shardlow: bad scripts ------------------------------------------------------------------
+def _box(pair="pair_style dpd/fdt 1.0 1.0 5\npair_coeff * * 25.0 4.5"):
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+        region box block 0 4 0 4 0 4
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 random 20 3 box
+        {pair}
+    """)
+    return sim
+
+
+@pytest.mark.parametrize("pair, got", [
+    ("pair_style dpd 1.0 1.0 5\npair_coeff * * 25.0 4.5", "got pair_style dpd)"),
+    ("", "got pair_style none)"),
+])
+def test_shardlow_needs_pair_dpd_fdt(pair, got):
+    sim = _box(pair)
+    with pytest.raises(ScriptError) as info:
+        sim.command("fix 1 all shardlow")
+    message = str(info.value)
+    assert "fix shardlow needs pair_style dpd/fdt" in message and got in message
+    assert "\n" not in message
+
+
+def test_shardlow_checks_the_pair_style_again_at_run():
+    sim = _box()
+    sim.command(f"{SHARDLOW}\npair_style dpd 1.0 1.0 5\npair_coeff * * 25.0 4.5")
+    with pytest.raises(ScriptError, match="needs pair_style dpd/fdt"):
+        sim.command("run 1")
+
+
+@pytest.mark.parametrize("fixes, message", [
+    ("fix 1 all nve\nfix 2 all shardlow", "fix 1 nve is defined before fix shardlow"),
+    ("fix 1 all shardlow", "needs a deterministic integrator defined after it"),
+])
+def test_shardlow_order_of_fixes(fixes, message):
+    sim = _box()
+    sim.command(fixes)
+    with pytest.raises(ScriptError) as info:
+        sim.command("run 1")
+    assert message in str(info.value) and "\n" not in str(info.value)

@@ -1,0 +1,267 @@
+"""The `pdps` command: exit codes, the one-line error contract, logs, -var, and `pdps styles`.
+
+Most cases run ``cli.main`` in-process (``pdps_cli``: the console script's code path, fast); a few run
+the real process (``run_pdps``) where the process itself is the point: exit status, stray output.
+"""
+
+import re
+import subprocess
+import sys
+
+import pytest
+
+from pdps_core.styles import registry
+
+BOX = """\
+region box block 0 4 0 4 0 4
+create_box 1 box
+mass 1 1
+"""
+
+LINE = re.compile(r"^ERROR: in\.test:\d+: \S+: .+$")
+
+
+def one_error_line(result):
+    """The single stderr line of a failed run, checked against the contract."""
+    assert result.returncode == 1, result
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    assert "Traceback" not in result.stderr and "Traceback" not in result.stdout
+    return lines[0]
+
+
+# ---- exit codes, through the real process ------------------------------------------------------------
+def test_a_good_script_exits_0_with_nothing_on_stderr(run_pdps):
+    result = run_pdps(BOX + "create_particle 1 single 1 1 1\nprint done\nrun 2\n", "-log", "none")
+    assert (result.returncode, result.stderr) == (0, "")
+    assert "done" in result.stdout.splitlines()
+
+
+def test_a_run_that_fails_exits_1_with_one_line_and_no_traceback(run_pdps, tmp_path):
+    result = run_pdps(BOX + "create_particle 1 single 1 1 1\nvelocity all set 0 0 1\nfix 1 all nve\n"
+                            "timestep 0.5\nrun 1\nbogus_command\n")
+    assert one_error_line(result) == "ERROR: in.test:9: bogus_command: unknown command bogus_command"
+    assert (tmp_path / "log.pdps").exists()
+
+
+def test_usage_errors_exit_2(run_pdps):
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run"], capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "usage: pdps run" in result.stderr
+
+
+def test_styles_lists_every_style_with_its_distribution_without_importing_it():
+    code = ("import sys; from pdps_core import cli; cli.main(['styles']); "
+            "print('imported:', sorted(m for m in sys.modules if m.startswith('pdps_') and '.' in m "
+            "and not m.startswith('pdps_core')))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[-1] == "imported: []"               # listing reads metadata only
+    rows = {tuple(line.split()) for line in lines[:-1]}
+    for expected in [("pair", "dpd", "pdps-pair-dpd"), ("fix", "nve", "pdps-fix-nve"),
+                     ("compute", "temp", "pdps-compute-thermo"), ("compute", "pressure", "pdps-compute-thermo"),
+                     ("compute", "centroid", "pdps-compute-thermo"), ("dump", "atom", "pdps-dump-text"),
+                     ("dump", "custom", "pdps-dump-text"), ("region", "block", "pdps-region-shapes"),
+                     ("region", "polygon", "pdps-region-shapes")]:
+        assert expected in rows
+    installed = {(kind, name, dist) for kind, name, dist, _ in registry.listing()
+                 if dist != "(registered in process)"}     # other tests may register styles in-process
+    assert rows == installed
+
+
+# ---- the one-line error contract -----------------------------------------------------------------
+@pytest.mark.parametrize("script, expected", [
+    # unknown command, with and without a close match
+    ("pair_cof 1 1 1 1", "ERROR: in.test:1: pair_cof: unknown command pair_cof; did you mean pair_coeff?"),
+    ("print ok\nfrobnicate 3", "ERROR: in.test:2: frobnicate: unknown command frobnicate"),
+    # unknown style: the installed ones, and a close match
+    ("region box blok 0 1 0 1 0 1",
+     "ERROR: in.test:1: region: unknown region style blok; did you mean block? (installed: {region})"),
+    (BOX + "fix 1 all nvee",
+     "ERROR: in.test:4: fix: unknown fix style nvee; did you mean nve? (installed: {fix})"),
+    ("pair_style lj/cut 2.5", "ERROR: in.test:1: pair_style: unknown pair style lj/cut (installed: {pair})"),
+    # wrong argument count
+    ("boundary p p", "ERROR: in.test:1: boundary: expected 3 argument(s), got 2; usage: boundary x y z  (each p or f)"),
+    (BOX + "fix 1 all nve extra", "ERROR: in.test:4: fix: too many arguments: unexpected 'extra'; usage: fix ID GROUP nve"),
+    ("region box block 0 1 0 1 0",
+     "ERROR: in.test:1: region: missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi"),
+    # non-numeric and out-of-range values, quoted as given
+    ("timestep fast", "ERROR: in.test:1: timestep: timestep must be a number (got fast)"),
+    (BOX + "mass 1 heavy", "ERROR: in.test:4: mass: mass must be a number (got heavy)"),
+    ("region box block 0 1 0 x 0 1", "ERROR: in.test:1: region: yhi must be a number, INF, -INF or EDGE (got x)"),
+    (BOX + "pair_style dpd 1.0 1.0 1\npair_coeff 1 1 abc 4.5",
+     "ERROR: in.test:5: pair_coeff: a must be a finite number (got abc)"),
+    (BOX + "pair_style dpd 1.0 1.0 1\npair_coeff 1 1 25 -4.5",
+     "ERROR: in.test:5: pair_coeff: gamma must be >= 0 (got -4.5)"),
+    # undefined names
+    (BOX + "velocity hot create 1.0 1", "ERROR: in.test:4: velocity: group hot is not defined (defined: all)"),
+    (BOX + "create_particle 1 region nowhere",
+     "ERROR: in.test:4: create_particle: region nowhere is not defined (defined: box)"),
+    (BOX + "uncompute 7", "ERROR: in.test:4: uncompute: compute 7 is not defined"),
+    (BOX + "thermo_style custom step c_7\nrun 0",
+     "ERROR: in.test:5: run: thermo_style: compute 7 is not defined (thermo keyword c_7)"),
+    (BOX + "thermo_style custom step v_nope\nrun 0",
+     "ERROR: in.test:5: run: thermo_style: variable nope is not defined (thermo keyword v_nope)"),
+    ('print "${nope}"', "ERROR: in.test:1: print: undefined variable nope"),
+    ('variable a equal v_nope+1\nprint "$(v_a)"', "ERROR: in.test:2: print: undefined variable nope"),
+    # state a command needs
+    ("run 0", "ERROR: in.test:1: run: run before the simulation box exists (use create_box or read_data first)"),
+    ("region box block 0 4 0 4 0 4\ncreate_box 1 box\ncreate_particle 1 single 1 1 1\nrun 0",
+     "ERROR: in.test:4: run: mass is not set for type 1 (use the mass command)"),
+    (BOX + "processors 2 1 1",
+     "ERROR: in.test:4: processors: processor grid 2 x 1 x 1 = 2 does not match the 1 rank(s) of this run"),
+])
+def test_bad_input_gives_one_line(pdps_cli, script, expected):
+    if "(installed: {" in expected:      # the list is read when the test runs: tests may register styles
+        expected = expected.format(**{kind: ", ".join(registry.names(kind)) for kind in ("pair", "fix", "region")})
+    result = pdps_cli(script, "-log", "none")
+    assert one_error_line(result) == expected
+    assert LINE.match(expected)
+
+
+@pytest.mark.parametrize("script, expected", [
+    ("timestep ${dt}", "ERROR: in.test:1: timestep: undefined variable dt"),
+    ("print ok\nthermo $n", "ERROR: in.test:2: thermo: undefined variable n"),
+    ("variable a equal 1/0\ntimestep $a", "ERROR: in.test:2: timestep: division by zero in '1/0'"),
+    ('print "open', 'ERROR: in.test:1: print: unbalanced quote " in: print "open'),
+])
+def test_errors_found_while_substituting_name_the_command(pdps_cli, script, expected):
+    assert one_error_line(pdps_cli(script, "-log", "none")) == expected
+
+
+def test_missing_pair_coeff_for_a_type_pair(pdps_cli):
+    result = pdps_cli("""\
+        region box block 0 4 0 4 0 4
+        create_box 2 box
+        mass * 1
+        create_particle 1 single 1 1 1
+        create_particle 2 single 2 2 2
+        pair_style dpd 1.0 1.0 1234
+        pair_coeff 1 1 25 4.5
+        pair_coeff 2 2 25 4.5
+        run 0
+        """, "-log", "none")
+    assert one_error_line(result).startswith(
+        "ERROR: in.test:9: run: pair coefficients are not set for types 1 2 (give pair_coeff")
+
+
+def test_missing_script_file(tmp_path):
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "nowhere.in", "-log", "none"],
+                            cwd=tmp_path, capture_output=True, text=True)
+    assert result.returncode == 1
+    assert result.stderr == "ERROR: cannot read input script nowhere.in: No such file or directory\n"
+
+
+# ---- a particle leaving through an f boundary, and what is kept ----------------------------------
+LOST = """\
+boundary p f p
+region box block 0 4 0 4 0 4
+create_box 1 box
+mass 1 1
+create_particle 1 single 1 1 1
+create_particle 1 single 2 3.55 2
+velocity all set 0 1 0
+fix 1 all nve
+timestep 0.1
+neigh_modify every 1 delay 0 check no
+thermo 1
+dump 1 all atom 1 frames.atom
+run 20
+"""
+
+
+def test_lost_particle_names_particle_axis_and_step(pdps_cli):
+    line = one_error_line(pdps_cli(LOST))
+    assert line == ("ERROR: in.test:13: run: particle 2 lost through the fixed y boundary at step 5: "
+                    "y = 4.05 outside [0, 4] (1 particle(s) outside)")
+
+
+def test_output_written_before_the_error_is_kept(pdps_cli, tmp_path):
+    result = pdps_cli(LOST)
+    error = one_error_line(result)
+    log = (tmp_path / "log.pdps").read_text().splitlines()
+    assert log[-1] == error                               # the error closes the log
+    rows = [line.split() for line in log if re.match(r"^\s+\d+\s", line)]
+    assert [int(r[0]) for r in rows] == [0, 1, 2, 3, 4]   # every thermo line up to the failing step
+    frames = (tmp_path / "frames.atom").read_text().split("ITEM: TIMESTEP\n")[1:]
+    assert [int(f.split()[0]) for f in frames] == [0, 1, 2, 3, 4]
+    for frame in frames:                                  # every frame is complete
+        lines = frame.splitlines()
+        assert lines[1:3] == ["ITEM: NUMBER OF ATOMS", "2"]
+        assert len(lines) == 1 + 2 + 4 + 1 + 2
+
+
+@pytest.fixture
+def broken_fix(monkeypatch):
+    """A fix style whose hook raises a plain Python error: a bug in a plugin, not bad input."""
+    from pdps_core.styles import Fix
+
+    class Broken(Fix):
+        name = "broken"
+
+        def initial_integrate(self, sim):
+            raise ZeroDivisionError("boom")
+
+    monkeypatch.setattr(registry, "_local", {**registry._local, "fix": {"broken": Broken}})
+    monkeypatch.setattr(registry, "_loaded", {})
+    return BOX + "create_particle 1 single 1 1 1\nfix 1 all broken\nrun 3\n"
+
+
+def test_internal_error_is_one_line_too(pdps_cli, broken_fix):
+    line = one_error_line(pdps_cli(broken_fix, "-log", "none"))
+    assert line.startswith("ERROR: internal error")
+    assert line.endswith(": ZeroDivisionError: boom (run with --debug for the traceback)")
+
+
+def test_debug_shows_the_traceback(pdps_cli, broken_fix):
+    result = pdps_cli(broken_fix, "-log", "none", "--debug")
+    assert result.returncode == 1
+    assert "Traceback" in result.stderr and "ZeroDivisionError: boom" in result.stderr
+    assert result.stderr.splitlines()[-1].startswith("ERROR: internal error")
+
+
+def test_internal_error_names_file_and_line(pdps_cli, broken_fix):
+    assert one_error_line(pdps_cli(broken_fix, "-log", "none")) == (
+        "ERROR: internal error at in.test:6: ZeroDivisionError: boom (run with --debug for the traceback)")
+
+
+# ---- -log and -var -------------------------------------------------------------------------------
+def test_default_log_file(pdps_cli, tmp_path):
+    result = pdps_cli(BOX + 'print "hello log"\n')
+    assert result.returncode == 0
+    log = (tmp_path / "log.pdps").read_text().splitlines()
+    assert "region box block 0 4 0 4 0 4" in log          # commands are echoed to the log
+    assert log[-1] == "hello log"
+
+
+def test_log_file_named(pdps_cli, tmp_path):
+    assert pdps_cli(BOX + "print there\n", "-log", "run.log").returncode == 0
+    assert (tmp_path / "run.log").read_text().splitlines()[-1] == "there"
+    assert not (tmp_path / "log.pdps").exists()
+
+
+def test_log_none_writes_no_file(pdps_cli, tmp_path):
+    result = pdps_cli(BOX + "print quiet\n", "-log", "none")
+    assert result.returncode == 0
+    assert "quiet" in result.stdout.splitlines()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.test"]
+
+
+def test_var_overrides_the_scripts_index_variable(pdps_cli):
+    script = "variable T index 1.0\nvariable n index 3\nprint T=${T} n=$n\n"
+    assert "T=1.0 n=3" in pdps_cli(script, "-log", "none").stdout.splitlines()
+    result = pdps_cli(script, "-log", "none", "-var", "T", "2.5", "-var", "n", "7")
+    assert result.returncode == 0
+    assert "T=2.5 n=7" in result.stdout.splitlines()
+
+
+def test_var_defines_a_variable_the_script_only_reads(pdps_cli):
+    result = pdps_cli('print "seed ${seed}"\n', "-log", "none", "-var", "seed", "4242")
+    assert "seed 4242" in result.stdout.splitlines()
+
+
+def test_bad_var_name(pdps_cli):
+    result = pdps_cli("print ok\n", "-log", "none", "-var", "bad-name", "1")
+    assert result.returncode == 1
+    assert result.stderr == "ERROR: variable name must be letters, digits and _ (got bad-name)\n"
