@@ -122,7 +122,11 @@ def main():
     parser.add_argument("--equilibrate", type=float, default=10.0, help="time units before measuring")
     parser.add_argument("--produce", type=float, default=40.0, help="time units measured")
     parser.add_argument("--seed", type=int, default=2024)
+    parser.add_argument("--plot-only", action="store_true", help="redraw the plot from the results file")
     args = parser.parse_args()
+    if args.plot_only:
+        plot(json.loads(RESULTS.read_text()))
+        return
     workdir = HERE / "results"
     workdir.mkdir(exist_ok=True)
     common = (args.length, args.equilibrate, args.produce, args.seed, workdir)
@@ -160,11 +164,16 @@ def plot(results):
     for name in INTEGRATORS:
         rows = [r for r in results[1:] if r["integrator"] == name and "failed" not in r]
         cost = [r["wall_per_time"] for r in rows]
-        left.loglog(cost, [max(abs(r["T"] - 1.0), 1e-4) for r in rows], "o-", label=name)
+        left.errorbar(cost, [max(abs(r["T"] - 1.0), 1e-4) for r in rows], yerr=[r["T_sem"] for r in rows],
+                      fmt="o-", capsize=2, label=name)
         right.loglog(cost, [max(r["rdf_distance"], 1e-4) for r in rows], "o-", label=name)
         for r in rows:
             left.annotate(f"{r['dt']:g}", (r["wall_per_time"], max(abs(r["T"] - 1.0), 1e-4)),
                           fontsize=7, xytext=(3, 3), textcoords="offset points")
+    left.set_xscale("log")
+    left.set_yscale("log")
+    right.axhline(0.006, color="gray", lw=0.8, ls="--")
+    right.annotate("statistical floor", (0.065, 0.0062), fontsize=7, color="gray")
     left.set(xlabel="wall seconds per unit of simulated time (3000 particles, 1 core)",
              ylabel="|<T> - kT|", title="temperature error (labels: dt)")
     right.set(xlabel="wall seconds per unit of simulated time", ylabel="||g - g_ref||",

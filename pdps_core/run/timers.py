@@ -18,18 +18,18 @@ class Timers:
         self.start = time.perf_counter()
 
     def report(self, total):
-        """Lines of the breakdown table: stage, seconds, percent of the loop."""
-        lines = ["Section |  time (s)  | %total", "--------+------------+-------"]
+        """Lines of the breakdown table: stage (and each style under Modify), seconds, percent."""
         accounted = sum(self.stage[s] for s in STAGES if s != "Other")
-        other = max(total - accounted, 0.0)
+        rows = []
         for name in STAGES:
-            seconds = other if name == "Other" else self.stage[name]
-            share = 100.0 * seconds / total if total > 0 else 0.0
-            lines.append(f"{name:<7} | {seconds:10.4g} | {share:6.2f}")
+            rows.append((name, max(total - accounted, 0.0) if name == "Other" else self.stage[name]))
             if name == "Modify":
-                for style, t in sorted(self.style.items(), key=lambda kv: -kv[1]):
-                    share = 100.0 * t / total if total > 0 else 0.0
-                    lines.append(f"  {style:<20} {t:10.4g} | {share:6.2f}")
+                rows += [(f"  {style}", t) for style, t in sorted(self.style.items(), key=lambda kv: -kv[1])]
+        width = max(len(label) for label, _ in rows)
+        lines = [f"{'Section':<{width}} |  time (s)  | %total", f"{'-' * width}-+------------+-------"]
+        for label, seconds in rows:
+            share = 100.0 * seconds / total if total > 0 else 0.0
+            lines.append(f"{label:<{width}} | {seconds:10.4g} | {share:6.2f}")
         return lines
 
 

@@ -36,15 +36,15 @@ def test_very_strong_repulsion_is_named_in_a_warning_then_stops_before_output_go
         sim.command(script)
     text = screen.getvalue()
     warning = ("WARNING: pair dpd: timestep 0.04 is too large for a = 500 (types 1 1) at number density 4: "
-               "dt*sqrt(n_c a/(rc m)) = 3.66 > 1.5, where velocity Verlet loses temperature control; "
-               "use timestep <= 0.0164 or a smaller a")
+               "dt*sqrt(n_c a/(rc m)) = 3.66 > 1.2, where velocity Verlet loses temperature control; "
+               "use timestep <= 0.0131 or a smaller a")
     assert warning in text.splitlines()
     assert text.index(warning) < text.index("Step")        # before the run's first line
     assert np.isfinite(thermo_rows(text)).all()             # never NaN in the output
 
 
 def test_the_suggested_timestep_keeps_the_strong_repulsion_fluid_at_its_temperature():
-    sim, script, screen = water(a=500.0, dt=0.016, steps=1500, thermo=10, edge=5)
+    sim, script, screen = water(a=500.0, dt=0.013, steps=1800, thermo=10, edge=5)
     sim.command(script)
     assert not [w for w in sim.warnings if w.startswith("pair dpd")]
     temps = thermo_rows(screen.getvalue())[:, 1]
