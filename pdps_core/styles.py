@@ -140,6 +140,7 @@ class Style:
     usage: ClassVar[str] = ""
     per_atom: ClassVar[tuple] = ()   # per-atom arrays to allocate: "radius", "omega", or ("name", width)
     ghost_velocity: ClassVar[bool] = False     # ghosts must carry v (DPD, granular damping)
+    ghost_fields: ClassVar[tuple] = ()         # other per-atom arrays ghosts need every step ("omega")
 
     @classmethod
     def parse(cls, words):
@@ -280,6 +281,13 @@ class Region(Style):
     def bounds(self):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""
         raise ScriptError(f"region {self.id} ({self.name}) has no extent to make a box from")
+
+    def surface_contacts(self, x, reach):
+        """Where the region's surface is within ``reach`` of the points ``x`` (n x 3), for walls:
+        (indices of the points, their distances to the surface, unit normals pointing from the
+        surface to the point, surface element ids). Several rows per point are allowed (one per
+        face touched)."""
+        raise ScriptError(f"region {self.id} ({self.name}) cannot act as a wall")
 
 
 BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,

@@ -72,6 +72,11 @@ class SerialComm:
         self.ghost_shift = shift[nlocal:]
         p.set_ghosts(self.ghost_source, self.ghost_shift)
 
+    def owners(self, particles):
+        """Owned index of every particle, owned or ghost (ghost -> the particle it copies). On one
+        rank every ghost's owner is local; the MPI version maps only its own ghosts."""
+        return np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
+
     def forward_comm(self, particles, names=("x",)):
         p = particles
         src = self.ghost_source

@@ -74,7 +74,10 @@ class Verlet:
         for style in styles:
             particles.request_all(style.per_atom)
         ghost_velocity = sim.ghost_velocity or any(s.ghost_velocity for s in styles)
-        self.forward = ("x", "v") if ghost_velocity else ("x",)
+        forward = ["x"] + (["v"] if ghost_velocity else [])
+        for style in styles:
+            forward += [name for name in style.ghost_fields if name not in forward]
+        self.forward = tuple(forward)
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
         sim.neighbor.overrun = 0.0
