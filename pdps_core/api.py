@@ -3,6 +3,7 @@
 Plugins import from here only; anything else in pdps_core may change without notice.
 """
 
+from . import contact_models
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
@@ -13,6 +14,6 @@ from .state import observables
 from .styles import (Analyze, Compute, Dump, Fix, Pair, Region, StyleArgs, keyword, parse_args,
                      registry)
 
-__all__ = ["Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "Region",
+__all__ = ["Analyze", "ContactHistory", "contact_models", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "Region",
            "ScriptError", "SimulationError", "Simulation", "StyleArgs", "keyword", "observables",
            "pair_gaussian", "parse_args", "philox4x32", "registry"]
