@@ -65,7 +65,9 @@ STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more
 
 @njit(cache=True)
 def dpd_compute(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, sigma, cut,
-                dt_inv_sqrt, seed, step, eflag):
+                dt_inv_sqrt, seed, step, eflag, thermostat):
+    """Pair forces; with ``thermostat`` False only the conservative part (a splitting integrator
+    takes friction and noise)."""
     energy = 0.0
     for i in range(nlocal):
         ti = type_[i]
@@ -83,12 +85,14 @@ def dpd_compute(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, sigma
             if r < EPSILON:
                 continue
             rinv = 1.0 / r
-            dot = (delx * (v[i, 0] - v[j, 0]) + dely * (v[i, 1] - v[j, 1])
-                   + delz * (v[i, 2] - v[j, 2]))
             w = 1.0 - r / rc
-            xi = pair_gaussian(seed, step, tag[i], tag[j])
-            fpair = (a[ti, tj] * w - gamma[ti, tj] * w * w * dot * rinv
-                     + sigma[ti, tj] * w * xi * dt_inv_sqrt) * rinv
+            fpair = a[ti, tj] * w
+            if thermostat:
+                dot = (delx * (v[i, 0] - v[j, 0]) + dely * (v[i, 1] - v[j, 1])
+                       + delz * (v[i, 2] - v[j, 2]))
+                xi = pair_gaussian(seed, step, tag[i], tag[j])
+                fpair += -gamma[ti, tj] * w * w * dot * rinv + sigma[ti, tj] * w * xi * dt_inv_sqrt
+            fpair *= rinv
             f[i, 0] += delx * fpair
             f[i, 1] += dely * fpair
             f[i, 2] += delz * fpair
@@ -176,4 +180,5 @@ class PairDPD(Pair):
         p = sim.particles
         self.energy = dpd_compute(p.x, p.v, p.f, p.type, p.tag, nlist.offsets, nlist.neighbors,
                                   p.nlocal, self.a, self.gamma, self.sigma, self.cut,
-                                  1.0 / math.sqrt(sim.dt), self.args.seed, sim.step, eflag)
+                                  1.0 / math.sqrt(sim.dt), self.args.seed, sim.step, eflag,
+                                  not self.split)

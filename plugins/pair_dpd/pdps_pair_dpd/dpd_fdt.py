@@ -37,42 +37,7 @@ Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
     fix 2 all nve
 """
 
-import math
-
-from numba import njit
-
-from .dpd import EPSILON, PairDPD
-
-
-@njit(cache=True)
-def conservative_compute(x, f, type_, offsets, neighbors, nlocal, a, cut, eflag):
-    energy = 0.0
-    for i in range(nlocal):
-        ti = type_[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            tj = type_[j]
-            delx = x[i, 0] - x[j, 0]
-            dely = x[i, 1] - x[j, 1]
-            delz = x[i, 2] - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            rc = cut[ti, tj]
-            if rsq >= rc * rc:
-                continue
-            r = math.sqrt(rsq)
-            if r < EPSILON:
-                continue
-            w = 1.0 - r / rc
-            fpair = a[ti, tj] * w / r
-            f[i, 0] += delx * fpair
-            f[i, 1] += dely * fpair
-            f[i, 2] += delz * fpair
-            f[j, 0] -= delx * fpair
-            f[j, 1] -= dely * fpair
-            f[j, 2] -= delz * fpair
-            if eflag:
-                energy += 0.5 * a[ti, tj] * rc * w * w
-    return energy
+from .dpd import PairDPD
 
 
 def shardlow_defined(sim):
@@ -93,11 +58,3 @@ class PairDPDfdt(PairDPD):
     def init(self, ntypes):
         self.split = shardlow_defined(self.sim)
         return super().init(ntypes)
-
-    def compute(self, sim, nlist, eflag, vflag):
-        if not self.split:
-            super().compute(sim, nlist, eflag, vflag)
-            return
-        p = sim.particles
-        self.energy = conservative_compute(p.x, p.f, p.type, nlist.offsets, nlist.neighbors,
-                                           p.nlocal, self.a, self.cut, eflag)
