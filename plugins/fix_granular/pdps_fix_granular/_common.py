@@ -1,0 +1,44 @@
+"""What several styles of this pack share: the particles a force fix acts on, axis names, and the
+checks for finite-size particles."""
+
+from typing import Literal
+
+import numpy as np
+
+from pdps_core.api import ScriptError
+
+Axis = Literal["x", "y", "z"]
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def chosen(sim, group, region=None):
+    """Boolean mask over owned particles: in ``group`` and, when ``region`` is given, inside it now."""
+    selected = sim.groups.select(sim, group)
+    if region is not None:
+        p = sim.particles
+        selected &= np.asarray(sim.region(region).inside(p.x[: p.nlocal]), dtype=bool)
+    return selected
+
+
+def require_spheres(sim, what):
+    """Per-particle radius and mass exist only with particle_style sphere (set before the box)."""
+    p = sim.particles
+    if not (p.has("radius") and p.has("rmass")):
+        raise ScriptError(f"{what} needs finite-size particles (per-particle radius and mass): "
+                          "use particle_style sphere before creating the box")
+
+
+def require_radii(sim, group, what):
+    """Every particle of the group must have a radius > 0 (their moment of inertia divides by it)."""
+    p = sim.particles
+    selected = sim.groups.select(sim, group)
+    bad = selected & ~(p.radius[: p.nlocal] > 0.0)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise ScriptError(f"{what} needs finite-size particles: particle {int(p.tag[i])} has "
+                          f"radius {p.radius[i]:g}")
+
+
+def require_plane(sim, axis, what):
+    if sim.dimension == 2 and axis == "z":
+        raise ScriptError(f"{what} along z in a 2-d simulation would move particles out of the plane")

@@ -1,0 +1,123 @@
+r"""Fix ``addforce``: Stokes drag and buoyancy on spheres (PDPS manual's fix addforce), or a constant
+force (LAMMPS's fix addforce).
+
+Stokes drag with fluid viscosity :math:`\mu` (``drag_stokes``), for a sphere of radius :math:`R`
+moving with velocity :math:`\mathbf{v}` through fluid at rest:
+
+.. math::  \mathbf{F}_d = -6\pi\mu R\,\mathbf{v}
+
+The PDPS manual writes the magnitude, :math:`F_d = 6\pi\mu R v`; the force opposes the velocity.
+
+Buoyancy along axis :math:`d` (``buoyancy``), for fluid density :math:`\rho` and gravity :math:`g`:
+
+.. math::  F_{b,d} = \rho\, g\, V, \qquad V = \tfrac43\pi R^3
+
+As in the manual, the force points along +d for g > 0 and against it for g < 0: for gravity
+pulling towards -z, buoyancy is ``buoyancy z RHO 9.81``. In 2-d, V is the disc's area
+:math:`\pi R^2`, as pdps's sphere masses are then :math:`\rho\pi R^2`, so a particle as dense as the
+fluid floats. The manual's example gives :math:`\rho` and :math:`g` as two numbers
+(``buoyancy z 0.789 9.81``); a single number is read as the product :math:`\rho g`.
+
+A constant force :math:`(F_x, F_y, F_z)` is added to each particle of the group with LAMMPS's
+syntax ``addforce FX FY FZ``. Any of the three parts can be combined in one fix; ``region RID``
+(LAMMPS) restricts them to particles inside the region. Applied in ``post_force`` and at setup.
+Drag and buoyancy need per-particle radii (``particle_style sphere``).
+
+Parameters:
+
+- ``FX FY FZ`` (optional): constant force (force units).
+- ``drag_stokes MU``: dynamic viscosity of the fluid (force*time/area units), >= 0.
+- ``buoyancy DIM RHO G`` or ``buoyancy DIM RHO_G``: axis (x, y or z; not z in 2-d), fluid density
+  (mass/volume) and gravity (force/mass), or their product.
+- ``region RID`` (optional): act only on particles inside region RID.
+
+Syntax::
+
+    fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]
+
+Examples::
+
+    fix drag water addforce drag_stokes 1.0950
+    fix floating water addforce buoyancy z 0.789 9.81
+    fix kick flow addforce 1.0 0.0 0.0
+"""
+
+import math
+
+import numpy as np
+from pydantic import model_validator
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
+
+from ._common import AXES, Axis, chosen, require_plane, require_spheres
+
+KEYWORDS = ("drag_stokes", "buoyancy", "region")
+
+
+class FixAddForce(Fix):
+    name = "addforce"
+    usage = "fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]"
+
+    class Args(StyleArgs):
+        fx: float | None = None
+        fy: float | None = None
+        fz: float | None = None
+        drag_stokes: float | None = keyword(None, ge=0)
+        buoyancy: tuple[Axis, float, float] | None = keyword(None)
+        region: str | None = keyword(None)
+
+        @model_validator(mode="after")
+        def _something_to_add(self):
+            force = [c for c in (self.fx, self.fy, self.fz) if c is not None]
+            if 0 < len(force) < 3:
+                raise ValueError("a constant force needs three components FX FY FZ "
+                                 f"(got {' '.join(f'{c:g}' for c in force)})")
+            if not force and self.drag_stokes is None and self.buoyancy is None:
+                raise ValueError("nothing to add: give FX FY FZ, drag_stokes MU or buoyancy DIM RHO G")
+            return self
+
+    @classmethod
+    def parse(cls, words):
+        words = list(words)
+        if "buoyancy" in words:
+            # the manual's example gives RHO and G, its syntax line one value: read one as RHO*G
+            start = words.index("buoyancy") + 1
+            values = 0
+            while start + values < len(words) and words[start + values] not in KEYWORDS and values < 3:
+                values += 1
+            if values == 2:
+                words.insert(start + 2, "1")
+            elif values != 3:
+                raise ScriptError(f"buoyancy takes DIM RHO G or DIM RHO_G (got "
+                                  f"{' '.join(words[start:start + values]) or 'nothing'})")
+        return super().parse(words)
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        if args.drag_stokes is not None:
+            require_spheres(sim, "fix addforce drag_stokes")
+        if args.buoyancy is not None:
+            require_spheres(sim, "fix addforce buoyancy")
+            require_plane(sim, args.buoyancy[0], "fix addforce buoyancy")
+        if args.region is not None:
+            sim.region(args.region)
+        self.force = None if args.fx is None else np.array([args.fx, args.fy, args.fz])
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        n = p.nlocal
+        selected = chosen(sim, self.group, self.args.region)
+        f = p.f[:n]
+        if self.force is not None:
+            f[selected] += self.force
+        if self.args.drag_stokes is not None:
+            radius = p.radius[:n][selected]
+            f[selected] -= (6.0 * math.pi * self.args.drag_stokes * radius)[:, None] * p.v[:n][selected]
+        if self.args.buoyancy is not None:
+            axis, rho, g = self.args.buoyancy
+            radius = p.radius[:n][selected]
+            volume = math.pi * radius ** 2 if sim.dimension == 2 else 4.0 / 3.0 * math.pi * radius ** 3
+            f[selected, AXES[axis]] += rho * g * volume

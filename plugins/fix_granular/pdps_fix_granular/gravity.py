@@ -1,0 +1,100 @@
+r"""Fix ``gravity``: the same acceleration on every particle of a group, along any direction
+(LAMMPS's and LIGGGHTS's fix gravity).
+
+.. math::  \mathbf{F}_i \mathrel{+}= m_i\, g\, \hat{\mathbf{n}}, \qquad
+           \hat{\mathbf{n}} = \mathbf{n} / |\mathbf{n}|
+
+:math:`m_i` is the per-particle mass (``rmass``) when present, else the type's mass; :math:`g` the
+magnitude. The direction :math:`\hat{\mathbf{n}}` is
+
+- ``vector X Y Z``: the vector normalised (only its direction matters; in 2-d its z is ignored);
+- ``chute ANGLE``: tilted by ANGLE degrees towards +x from -z (3-d) or -y (2-d):
+  :math:`(\sin\theta, 0, -\cos\theta)`, in 2-d :math:`(\sin\theta, -\cos\theta, 0)`;
+- ``spherical PHI THETA``: :math:`\phi` from +x, :math:`\theta` from +z (3-d), in degrees:
+  :math:`(\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta)`; in 2-d :math:`\theta` is measured
+  from +y in the xy plane, :math:`(\sin\theta, \cos\theta, 0)`, and :math:`\phi` is ignored.
+
+Unlike ``fix addforce``, the force is proportional to mass. Applied in ``post_force`` and at setup,
+so the first step feels it. Variables (``v_name``) are not supported for the values.
+
+Parameters:
+
+- ``MAGNITUDE``: acceleration g (force/mass units); negative reverses the direction.
+- ``vector X Y Z`` | ``chute ANGLE`` | ``spherical PHI THETA``: the direction (angles in degrees).
+
+Syntax::
+
+    fix ID GROUP gravity MAGNITUDE vector X Y Z
+    fix ID GROUP gravity MAGNITUDE chute ANGLE
+    fix ID GROUP gravity MAGNITUDE spherical PHI THETA
+
+Examples::
+
+    fix grav all gravity 9.81 vector 0 0 -1
+    fix 1 all gravity 1.0 chute 24.0
+"""
+
+import math
+from typing import Literal
+
+import numpy as np
+from pydantic import model_validator
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, observables
+
+from ._common import chosen
+
+VALUES = {"vector": "X Y Z", "chute": "ANGLE", "spherical": "PHI THETA"}
+
+
+def direction(style, values, dimension):
+    """Unit vector of the acceleration for a style and its values (angles in degrees)."""
+    if style == "chute":
+        angle = math.radians(values[0])
+        if dimension == 2:
+            return np.array([math.sin(angle), -math.cos(angle), 0.0])
+        return np.array([math.sin(angle), 0.0, -math.cos(angle)])
+    if style == "spherical":
+        phi, theta = math.radians(values[0]), math.radians(values[1])
+        if dimension == 2:
+            return np.array([math.sin(theta), math.cos(theta), 0.0])
+        return np.array([math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)])
+    vector = np.array(values, dtype=float)
+    if dimension == 2:
+        vector[2] = 0.0
+    length = float(np.linalg.norm(vector))
+    if length == 0.0:
+        plane = " in the xy plane (z is ignored in 2-d)" if dimension == 2 else ""
+        raise ScriptError(f"gravity vector {' '.join(f'{c:g}' for c in values)} has no direction{plane}")
+    return vector / length
+
+
+class FixGravity(Fix):
+    name = "gravity"
+    usage = "fix ID GROUP gravity MAGNITUDE vector X Y Z | chute ANGLE | spherical PHI THETA"
+
+    class Args(StyleArgs):
+        magnitude: float
+        style: Literal["vector", "chute", "spherical"]
+        values: list[float] = []
+
+        @model_validator(mode="after")
+        def _count(self):
+            wanted = len(VALUES[self.style].split())
+            if len(self.values) != wanted:
+                raise ValueError(f"gravity {self.style} takes {VALUES[self.style]} "
+                                 f"(got {' '.join(f'{c:g}' for c in self.values) or 'nothing'})")
+            return self
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.direction = direction(args.style, args.values, sim.dimension)
+        self.acceleration = args.magnitude * self.direction
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        selected = chosen(sim, self.group)
+        p.f[: p.nlocal][selected] += observables.masses(sim, selected)[:, None] * self.acceleration

@@ -1,0 +1,177 @@
+"""In-process test styles (forces, torques, a recorder, pair styles with and without time-step
+limits) and a helper that builds a small scene of spheres."""
+
+import io
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Fix, Pair, Simulation, StyleArgs, registry
+
+
+class ConstantForce(Fix):
+    """Adds a constant force to its group, at setup and every step."""
+    name = "test/granular/force"
+
+    class Args(StyleArgs):
+        fx: float
+        fy: float
+        fz: float
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        sim.f[sim.groups.select(sim, self.group)] += [self.args.fx, self.args.fy, self.args.fz]
+
+
+class ConstantTorque(Fix):
+    """Adds a constant torque to its group, at setup and every step."""
+    name = "test/granular/torque"
+
+    class Args(StyleArgs):
+        tx: float
+        ty: float
+        tz: float
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        p.torque[: p.nlocal][sim.groups.select(sim, self.group)] += [self.args.tx, self.args.ty,
+                                                                     self.args.tz]
+
+
+class OverlapRepulsion(Fix):
+    """A stiff harmonic repulsion between overlapping spheres, F = K (R_i + R_j - r) along the line
+    of centres (all pairs of owned particles; the scenes are tiny and not periodic)."""
+    name = "test/granular/overlap"
+
+    class Args(StyleArgs):
+        stiffness: float
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        n = p.nlocal
+        x, radius = p.x[:n], p.radius[:n]
+        for i in range(n):
+            for j in range(i + 1, n):
+                delta = x[i] - x[j]
+                r = float(np.linalg.norm(delta))
+                overlap = radius[i] + radius[j] - r
+                if overlap > 0:
+                    force = self.args.stiffness * overlap * delta / r
+                    p.f[i] += force
+                    p.f[j] -= force
+
+
+class Recorder(Fix):
+    """Positions, velocities and angular velocities after every step, in tag order."""
+    name = "test/granular/record"
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.x, self.v, self.omega = [], [], []
+
+    def end_of_step(self, sim):
+        order = np.argsort(sim.tag)
+        self.x.append(sim.x[order].copy())
+        self.v.append(sim.v[order].copy())
+        if sim.particles.has("omega"):
+            self.omega.append(sim.particles.omega[: sim.nlocal][order].copy())
+
+
+class LimitsPair(Pair):
+    """No forces; reports the time-step limits it was given (``pair_style test/granular/limits
+    RAYLEIGH HERTZ CONTACT``, 0 meaning none). ``shrink`` makes the Rayleigh time
+    RAYLEIGH / (1 + shrink * step), to see a limit passed in the middle of a run."""
+    name = "test/granular/limits"
+
+    class Args(StyleArgs):
+        rayleigh: float
+        hertz: float
+        contact: float
+        shrink: float = 0.0
+
+    class Coeff(StyleArgs):
+        pass
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        self.energy = 0.0
+
+    def timestep_limits(self, sim):
+        a = self.args
+        rayleigh = a.rayleigh / (1.0 + a.shrink * sim.step)
+        return {"rayleigh": rayleigh or None, "hertz": a.hertz or None, "contact": a.contact}
+
+
+class PlainPair(Pair):
+    """No forces and no timestep_limits method."""
+    name = "test/granular/plain"
+
+    class Coeff(StyleArgs):
+        pass
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        self.energy = 0.0
+
+
+for style in (ConstantForce, ConstantTorque, OverlapRepulsion, Recorder):
+    registry.register("fix", style.name, style)
+for style in (LimitsPair, PlainPair):
+    registry.register("pair", style.name, style)
+
+
+@pytest.fixture
+def spheres(tmp_path, monkeypatch):
+    """``spheres(particles, dimension=3, box=..., boundary=...)``: a silent Simulation with
+    particle_style sphere and one particle type; ``particles`` is script text (create_particle ...).
+    ``sim.output.screen.getvalue()`` is what it printed."""
+    monkeypatch.chdir(tmp_path)
+
+    def make(particles, dimension=3, box="-20 20 -20 20 -20 20", boundary="f f f", ntypes=1):
+        sim = Simulation(screen=io.StringIO(), log=None)
+        if dimension == 2:
+            box = " ".join(box.split()[:4]) + " -0.5 0.5"
+            boundary = " ".join(boundary.split()[:2]) + " p"
+        sim.command(f"""
+            units lj
+            dimension {dimension}
+            particle_style sphere
+            boundary {boundary}
+            region box block {box}
+            create_box {ntypes} box
+        """)
+        sim.command(particles)
+        return sim
+    return make
+
+
+@pytest.fixture
+def make_plain(tmp_path, monkeypatch):
+    """A silent Simulation of two point particles (particle_style atomic) in a fixed 10^3 box."""
+    monkeypatch.chdir(tmp_path)
+
+    def make():
+        sim = Simulation(screen=False, log=None)
+        sim.command("""
+            units lj
+            boundary f f f
+            region box block 0 10 0 10 0 10
+            create_box 1 box
+            mass 1 2.0
+            create_particle 1 single 2 2 2
+            create_particle 1 single 7 7 7
+        """)
+        return sim
+    return make

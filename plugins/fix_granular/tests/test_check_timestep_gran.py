@@ -1,0 +1,112 @@
+"""fix check/timestep/gran: warns with the three ratios when dt passes a set fraction of the
+Rayleigh or Hertz (or contact) time or a step's motion passes the skin, stays silent when fine,
+checks every NEVERY steps, says once when the pair style gives no limits, stops with error yes."""
+
+import pytest
+
+from pdps_core.api import ScriptError, SimulationError
+
+
+def scene(spheres, limits, fix="check/timestep/gran 100 0.1 0.1", dt=0.001):
+    return spheres(f"""
+        create_particle 1 single 0 0 0 diameter 1.0
+        create_particle 1 single 3 0 0 diameter 1.0
+        pair_style {limits}
+        pair_coeff * *
+        timestep {dt}
+        fix 1 all nve/sphere
+        fix ts all {fix}
+    """)
+
+
+def test_warns_when_dt_passes_the_fraction_of_the_rayleigh_time(spheres):
+    sim = scene(spheres, "test/granular/limits 0.005 0.1 0.2")
+    sim.command("run 250")
+    # said once, at the start of the run, though every check (steps 0, 100, 200) finds it
+    assert sim.warnings == ["fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.1 of the "
+                            "Rayleigh time 0.005 (dt/t_rayleigh = 0.2, dt/t_hertz = 0.01, "
+                            "v_max*dt/skin = 0)"]
+    assert sim.fixes["ts"].ratios == pytest.approx((0.2, 0.01, 0.0))
+
+
+def test_silent_when_the_time_step_is_fine(spheres):
+    sim = scene(spheres, "test/granular/limits 0.05 0.02 0.03")
+    sim.v[:] = [100.0, 0.0, 0.0]
+    sim.command("run 10")
+    assert sim.warnings == []
+    assert sim.fixes["ts"].ratios == pytest.approx((0.02, 0.05, 100.0 * 0.001 / 0.3))
+
+
+def test_contact_time_stands_in_when_there_is_no_hertz_time(spheres):
+    sim = scene(spheres, "test/granular/limits 0 0 0.004", fix="check/timestep/gran 100 0.1 0.2")
+    sim.command("run 0")
+    assert sim.warnings == ["fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.2 of the "
+                            "contact time 0.004 (dt/t_rayleigh = n/a, dt/t_contact = 0.25, "
+                            "v_max*dt/skin = 0)"]
+
+
+def test_no_hertz_time_beside_a_rayleigh_time_leaves_that_ratio_out(spheres):
+    sim = scene(spheres, "test/granular/limits 0.05 0 0.001")
+    sim.command("run 0")
+    assert sim.warnings == []
+    assert sim.fixes["ts"].ratios == pytest.approx((0.02, None, 0.0))
+
+
+def test_motion_beyond_the_skin_in_one_step_is_named_with_every_limit_passed(spheres):
+    sim = scene(spheres, "test/granular/limits 0.005 0.1 0.2")
+    sim.v[0] = [0.0, 400.0, 0.0]
+    sim.command("run 0")
+    assert sim.warnings == ["fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.1 of the "
+                            "Rayleigh time 0.005; particles move up to 0.4 per step, more than the skin "
+                            "0.3 (dt/t_rayleigh = 0.2, dt/t_hertz = 0.01, v_max*dt/skin = 1.333)"]
+
+
+def test_checks_every_nevery_steps(spheres):
+    # t_R = 0.1 / (1 + step): dt / t_R = 0.01 (1 + step) passes 0.1 from step 10, seen at step 12
+    sim = scene(spheres, "test/granular/limits 0.1 0 0.5 1.0", fix="check/timestep/gran 4 0.1 0.1")
+    sim.command("run 20")
+    assert sim.warnings == ["fix ts (check/timestep/gran) at step 12: time step 0.001 exceeds 0.1 of the "
+                            "Rayleigh time 0.007692 (dt/t_rayleigh = 0.13, dt/t_hertz = n/a, "
+                            "v_max*dt/skin = 0)"]
+
+
+def test_a_pair_style_without_limits_is_reported_once(spheres):
+    sim = scene(spheres, "test/granular/plain", fix="check/timestep/gran 1 0.1 0.1")
+    sim.command("run 5\nrun 5")
+    assert sim.warnings == ["fix ts (check/timestep/gran): pair style test/granular/plain gives no "
+                            "time-step limits (it has no timestep_limits method), so only the skin "
+                            "ratio is checked"]
+    assert sim.fixes["ts"].ratios == (None, None, 0.0)
+
+
+def test_no_pair_style_is_reported(spheres):
+    sim = spheres("""
+        create_particle 1 single 0 0 0 diameter 1.0
+        fix ts all check/timestep/gran 1 0.1 0.1
+        run 2
+    """)
+    assert sim.warnings == ["fix ts (check/timestep/gran): no pair style is defined, so only the skin "
+                            "ratio is checked"]
+
+
+def test_error_yes_stops_the_run(spheres):
+    sim = scene(spheres, "test/granular/limits 0.005 0.1 0.2",
+                fix="check/timestep/gran 100 0.1 0.1 error yes")
+    with pytest.raises(SimulationError) as error:
+        sim.command("run 10")
+    assert str(error.value).startswith("<command>:1: run: fix ts (check/timestep/gran) at step 0: time "
+                                       "step 0.001 exceeds 0.1 of the Rayleigh time 0.005")
+
+
+@pytest.mark.parametrize("args, message", [
+    ("0 0.1 0.1", "nevery must be >= 1 (got 0)"),
+    ("10 0.1", "missing argument fraction_h; usage: fix ID GROUP check/timestep/gran NEVERY "
+     "FRACTION_R FRACTION_H [error yes|no]"),
+    ("10 -0.1 0.1", "fraction_r must be > 0 (got -0.1)"),
+    ("10 0.1 0.1 error maybe", "error must be yes or no (got maybe)"),
+])
+def test_bad_arguments_are_one_line_errors(spheres, args, message):
+    sim = spheres("create_particle 1 single 0 0 0")
+    with pytest.raises(ScriptError) as error:
+        sim.command(f"fix 1 all check/timestep/gran {args}")
+    assert error.value.message == message
