@@ -234,6 +234,10 @@ class Simulation:
         return self._call("variable", name, style, *args)
 
     # ---- state helpers used by commands and styles -----------------------------------------------
+    def info(self, message):
+        """A line on screen and in the log (a style's summary or notice)."""
+        self.output.message(message)
+
     def warn(self, message):
         """A warning on screen and in the log, kept in ``sim.warnings``; the run goes on."""
         self.warnings.append(message)

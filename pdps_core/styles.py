@@ -2,7 +2,7 @@
 
 A style is a class with a ``name``, an ``Args`` pydantic model for its script arguments, and the hooks
 it implements. Arguments are read from the script words in the order the model declares its fields;
-a field made with ``keyword(...)`` is an optional ``name value...`` pair instead. A field's ``alias`` is
+a field made with ``keyword(...)`` is an optional ``name value...`` pair instead (a ``list[tuple[...]]`` keyword may be repeated). A field's ``alias`` is
 the name scripts and messages use (``Field(0.5, alias="lambda")`` for a Python keyword). A ``tuple[...]`` field
 takes as many words as it has members; a ``list[...]`` positional field takes every word left.
 
@@ -32,6 +32,8 @@ class StyleArgs(BaseModel):
 def keyword(default=None, **kwargs):
     """A field given in the script as ``name value...`` (any order, after the positional words)."""
     extra = kwargs.pop("json_schema_extra", {}) or {}
+    if "default_factory" in kwargs:
+        return Field(json_schema_extra={**extra, "keyword": True}, **kwargs)
     return Field(default, json_schema_extra={**extra, "keyword": True}, **kwargs)
 
 
@@ -115,12 +117,14 @@ def parse_args(model, words, usage=""):
                 raise ScriptError(f"too many arguments: unexpected {word!r}" + (f"; usage: {usage}" if usage else ""))
             raise ScriptError(f"unknown keyword {word} (known: {', '.join(keywords)})")
         info = keywords[word]
-        arity = _arity(info.annotation)
+        repeated = typing.get_origin(info.annotation) is list
+        member = typing.get_args(info.annotation)[0] if repeated else info.annotation
+        arity = _arity(member)
         arity = 1 if arity is None else arity
         taken = words[i + 1:i + 1 + arity]
         if len(taken) < arity:
             raise ScriptError(f"keyword {word} needs {arity} value(s) (got {len(taken)})")
-        if typing.get_origin(info.annotation) is list:
+        if repeated:
             values.setdefault(word, []).append(taken[0] if arity == 1 else tuple(taken))
         else:
             values[word] = taken[0] if arity == 1 else tuple(taken)

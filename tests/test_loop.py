@@ -221,3 +221,20 @@ def test_analyze_styles_are_called_at_end_of_step_until_unanalyze(make_sim):
     assert len(sim.analyzed) == 3
     with pytest.raises(ScriptError, match="analyze a is not defined"):
         sim.command("unanalyze a")
+
+
+def test_post_run_is_called_once_after_the_last_step(make_sim):
+    class Summary(Fix):
+        name = "test/summary"
+
+        def post_run(self, sim):
+            sim.info(f"summary at step {sim.step}")
+            sim.__dict__.setdefault("summaries", []).append(sim.step)
+
+    registry.register("fix", "test/summary", Summary)
+    import io
+    screen = io.StringIO()
+    sim = make_sim(screen=screen)
+    sim.command(BOX + "fix s all test/summary\nrun 4\nrun 2")
+    assert sim.summaries == [4, 6]
+    assert "summary at step 6" in screen.getvalue().splitlines()

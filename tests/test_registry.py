@@ -119,3 +119,18 @@ def test_a_broken_plugin_is_reported_in_one_line(tmp_path):
             print(exc)
     """, tmp_path, env={"PYTHONPATH": str(tmp_path), "PATH": ""})
     assert out == "fix style broken from pdps-broken failed to import: No module named 'no_such_module_xyz'"
+
+
+def test_a_repeated_keyword_of_several_words_collects_each_use():
+    from pydantic import Field
+
+    from pdps_core.api import StyleArgs, keyword, parse_args
+
+    class Args(StyleArgs):
+        gamma: float = Field(ge=0)
+        scale: list[tuple[int, float]] = keyword(default_factory=list)
+
+    args = parse_args(Args, ["0.5", "scale", "1", "2.0", "scale", "3", "0.5"])
+    assert args.scale == [(1, 2.0), (3, 0.5)]
+    with pytest.raises(ScriptError, match=r"keyword scale needs 2 value\(s\) \(got 1\)"):
+        parse_args(Args, ["0.5", "scale", "1"])

@@ -10,7 +10,7 @@ hookspec = pluggy.HookspecMarker("pdps")
 
 # The order of one timestep; `setup` runs once at the start of each run, after the first forces.
 HOOKS = ("setup", "initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor",
-         "pre_force", "post_force", "final_integrate", "end_of_step")
+         "pre_force", "post_force", "final_integrate", "end_of_step", "post_run")
 
 
 class TimestepSpec:
@@ -49,3 +49,7 @@ class TimestepSpec:
     @hookspec
     def end_of_step(self, sim):
         """After integration: analyze styles, computes that accumulate."""
+
+    @hookspec
+    def post_run(self, sim):
+        """Once after the last step of a run (summaries, closing per-run state)."""

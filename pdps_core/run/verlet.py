@@ -193,3 +193,4 @@ class Verlet:
             self._call("final_integrate")
             self._call("end_of_step")
             sim.output.write(step, last)
+        self._call("post_run")
