@@ -2,8 +2,8 @@ r"""Granular contact laws shared by pair styles and walls (numba functions over 
 
 A contact between body i and body j (a particle or a wall) with overlap :math:`\delta > 0`, unit normal
 :math:`\mathbf{n}` pointing from j to i, and relative velocity of the contact points
-:math:`\mathbf{v} = \mathbf{v}_i - \mathbf{v}_j + (R_i \boldsymbol{\omega}_i + R_j \boldsymbol{\omega}_j)
-\times \mathbf{n}` splits into :math:`v_n = \mathbf{v}\cdot\mathbf{n}` and
+:math:`\mathbf{v} = \mathbf{v}_i - \mathbf{v}_j - (R_i \boldsymbol{\omega}_i + R_j \boldsymbol{\omega}_j)
+\times \mathbf{n}` (the contact point lies at :math:`-R_i\mathbf{n}` from i and :math:`+R_j\mathbf{n}` from j) splits into :math:`v_n = \mathbf{v}\cdot\mathbf{n}` and
 :math:`\mathbf{v}_t = \mathbf{v} - v_n \mathbf{n}`. The tangential spring :math:`\boldsymbol{\xi}`
 (history, kept per contact) grows by :math:`\mathbf{v}_t \Delta t`, is turned into the current tangent
 plane, and is truncated so that Coulomb's law :math:`|\mathbf{F}_t| \le \mu |F_n|` holds (LAMMPS's

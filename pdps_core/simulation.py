@@ -72,6 +72,7 @@ class Simulation:
         self.source = None
         self.line = None
         self.warnings = []
+        self.in_setup = False         # True while a run computes its setup forces
         self.error_location = None
         self._integrator = None
 

@@ -90,8 +90,13 @@ class Verlet:
 
         sim.comm.exchange(particles, sim.box, sim.step)
         self._reneighbor()
-        self._forces(eflag=True, vflag=True)
-        self._call("setup")
+        # styles with history read it without advancing it during the setup forces (LAMMPS setupflag)
+        sim.in_setup = True
+        try:
+            self._forces(eflag=True, vflag=True)
+            self._call("setup")
+        finally:
+            sim.in_setup = False
         self._check_finite()
 
     def _reneighbor(self):

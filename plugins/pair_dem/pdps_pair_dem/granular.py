@@ -1,0 +1,212 @@
+r"""What the DEM pair styles share: contact geometry, per-contact history on both particles, forces
+and torques on both particles, and the base class that declares what granular contacts need.
+
+Geometry of a contact between spheres i and j (radii :math:`R_i, R_j`) at distance :math:`r <
+R_i + R_j`: overlap :math:`\delta = R_i + R_j - r`, unit normal :math:`\mathbf{n} = (\mathbf{x}_i -
+\mathbf{x}_j)/r` (from j to i), and lever arms from each centre to the contact point
+:math:`a_i = R_i - \delta/2`, :math:`a_j = R_j - \delta/2` (LAMMPS's pair granular), so that
+:math:`a_i + a_j = r`. The contact points move with
+
+.. math::
+
+    \mathbf{v} = \mathbf{v}_i - \mathbf{v}_j - (a_i\boldsymbol{\omega}_i + a_j\boldsymbol{\omega}_j)
+                 \times \mathbf{n}
+
+and the contact force :math:`\mathbf{F}` on i (:math:`-\mathbf{F}` on j) gives the torques
+
+.. math::
+
+    \boldsymbol{\tau}_i = -a_i\, \mathbf{n}\times\mathbf{F}, \qquad
+    \boldsymbol{\tau}_j = -a_j\, \mathbf{n}\times\mathbf{F}.
+
+Because the arms add up to the centre distance, the torques and the couple of the tangential force
+cancel: a contact conserves the total angular momentum :math:`\sum \mathbf{x}\times m\mathbf{v} +
+I\boldsymbol{\omega}` exactly (LAMMPS's gran/hooke/history uses the radii as arms, which loses
+:math:`\delta\,\mathbf{n}\times\mathbf{F}_t` per contact).
+
+History. The tangential spring :math:`\boldsymbol{\xi}` of a contact is kept on both particles in
+``pdps_core.api.ContactHistory`` arrays, keyed by the partner's tag: i holds :math:`\boldsymbol{\xi}`
+(the spring acting on i), j holds :math:`-\boldsymbol{\xi}`, so either particle can compute the pair
+after a rebuild or a re-sort swaps their roles. A ghost partner's copy is written to its owner. A
+contact not seen in a step's force computation (the spheres separated) has its slots freed at the end
+of that step. In the setup force computation of a run the springs are read but not advanced (LAMMPS's
+``shearupdate = 0`` during setup), so splitting a run in two does not change the trajectory.
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
+
+HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
+DEFAULT_CONTACTS = 16
+
+
+@njit(cache=True)
+def contact_geometry(x, radius, i, j, n):
+    """Overlap of spheres i and j (<= 0: no contact) and their lever arms; the normal into ``n``."""
+    delx = x[i, 0] - x[j, 0]
+    dely = x[i, 1] - x[j, 1]
+    delz = x[i, 2] - x[j, 2]
+    rsq = delx * delx + dely * dely + delz * delz
+    radsum = radius[i] + radius[j]
+    if rsq >= radsum * radsum or rsq == 0.0:
+        # coincident centres have no normal: such a pair exerts no force (as PDPS and LAMMPS)
+        return 0.0, 0.0, 0.0
+    r = math.sqrt(rsq)
+    n[0] = delx / r
+    n[1] = dely / r
+    n[2] = delz / r
+    overlap = radsum - r
+    return overlap, radius[i] - 0.5 * overlap, radius[j] - 0.5 * overlap
+
+
+@njit(cache=True)
+def contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel):
+    """Relative velocity of the contact points of i and j into ``vrel``."""
+    wx = arm_i * omega[i, 0] + arm_j * omega[j, 0]
+    wy = arm_i * omega[i, 1] + arm_j * omega[j, 1]
+    wz = arm_i * omega[i, 2] + arm_j * omega[j, 2]
+    vrel[0] = v[i, 0] - v[j, 0] - (wy * n[2] - wz * n[1])
+    vrel[1] = v[i, 1] - v[j, 1] - (wz * n[0] - wx * n[2])
+    vrel[2] = v[i, 2] - v[j, 2] - (wx * n[1] - wy * n[0])
+
+
+@njit(cache=True)
+def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
+    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
+
+    When ``update`` the slots are made if new and marked as seen this step; a negative slot means
+    that particle has no free slot. In setup (not ``update``) nothing is made or marked."""
+    if not update:
+        slot = find_slot(partner, i, tag[j])
+        for d in range(3):
+            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
+        return slot, -1
+    jo = owner[j]
+    slot_i = open_slot(partner, history, i, tag[j], 3)
+    slot_j = open_slot(partner, history, jo, tag[i], 3)
+    if slot_i < 0 or slot_j < 0:
+        return slot_i, slot_j
+    touched[i, slot_i] = True
+    touched[jo, slot_j] = True
+    for d in range(3):
+        shear[d] = history[i, 3 * slot_i + d]
+    return slot_i, slot_j
+
+
+@njit(cache=True)
+def store_spring(history, owner, i, j, slot_i, slot_j, shear):
+    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
+    jo = owner[j]
+    for d in range(3):
+        history[i, 3 * slot_i + d] = shear[d]
+        history[jo, 3 * slot_j + d] = -shear[d]
+
+
+@njit(cache=True)
+def apply_contact(f, torque, i, j, n, force, arm_i, arm_j):
+    """Force on i and its reaction on j; the torques of the force about both centres."""
+    cx = n[1] * force[2] - n[2] * force[1]
+    cy = n[2] * force[0] - n[0] * force[2]
+    cz = n[0] * force[1] - n[1] * force[0]
+    for d in range(3):
+        f[i, d] += force[d]
+        f[j, d] -= force[d]
+    torque[i, 0] -= arm_i * cx
+    torque[i, 1] -= arm_i * cy
+    torque[i, 2] -= arm_i * cz
+    torque[j, 0] -= arm_j * cx
+    torque[j, 1] -= arm_j * cy
+    torque[j, 2] -= arm_j * cz
+
+
+@njit(cache=True)
+def free_stale(partner, touched, nlocal):
+    """Free the slots of contacts that no pair computation touched this step (spheres apart)."""
+    for i in range(nlocal):
+        for s in range(partner.shape[1]):
+            if partner[i, s] >= 0 and not touched[i, s]:
+                partner[i, s] = -1
+
+
+class GranularPair(Pair):
+    """Base of the DEM pair styles: spheres with radius, per-particle mass and rotation, ghosts that
+    carry v and omega, and a tangential spring per contact."""
+    per_atom = ("radius", "rmass", "omega", "torque")
+    ghost_velocity = True
+    ghost_fields = ("omega",)
+
+    def __init__(self, sim, args):
+        super().__init__(sim, args)
+        self.history = None
+
+    # ---- start of a run ---------------------------------------------------------------------------
+    def init(self, ntypes):
+        sim = self.sim
+        if sim.particle_style != "sphere":
+            raise ScriptError(f"pair {self.name} needs particle_style sphere "
+                              "(per-particle radius, mass and rotation)")
+        self.open_history()
+        self.max_radius, _ = self.extremes(ntypes)
+        self.check_box()
+        return super().init(ntypes)
+
+    def open_history(self):
+        if self.history is not None:
+            return
+        capacity = self.args.max_contacts
+        particles = self.sim.particles
+        name = f"{HISTORY_NAME}_partner"
+        if particles.has(name) and particles.arrays[name].shape[1] != capacity:
+            raise ScriptError(f"max_contacts cannot change once contacts are stored "
+                              f"(stored: {particles.arrays[name].shape[1]}, asked: {capacity})")
+        self.history = ContactHistory(self.sim, HISTORY_NAME, width=3, capacity=capacity)
+
+    def extremes(self, ntypes):
+        """Largest radius and smallest mass of each type among the particles now present (0 and inf
+        for a type with none)."""
+        sim, p = self.sim, self.sim.particles
+        n = p.nlocal
+        types, radius, mass = p.type[:n], p.radius[:n], p.rmass[:n]
+        max_radius = np.zeros(ntypes + 1)
+        min_mass = np.full(ntypes + 1, math.inf)
+        for t in range(1, ntypes + 1):
+            chosen = types == t
+            max_radius[t] = sim.comm.max(float(radius[chosen].max()) if chosen.any() else 0.0)
+            min_mass[t] = sim.comm.min(float(mass[chosen].min()) if chosen.any() else math.inf)
+        return max_radius, min_mass
+
+    def check_box(self):
+        sim = self.sim
+        largest = 2.0 * float(self.max_radius.max())
+        for d, axis in enumerate("xyz"[: sim.dimension]):
+            length = float(sim.box.length[d])
+            if sim.box.periodic[d] and length <= largest:
+                raise ScriptError(f"pair {self.name}: the periodic box is thinner along {axis} ({length:g}) "
+                                  f"than the largest particle (diameter {largest:g}): a particle would "
+                                  "touch its own image")
+
+    def contact_reach(self, i, j):
+        """Neighbor cutoff that sees every contact of types i and j present at the start of the run."""
+        return float(self.max_radius[i] + self.max_radius[j])
+
+    # ---- forces -----------------------------------------------------------------------------------
+    def compute(self, sim, nlist, eflag, vflag):
+        p = sim.particles
+        update = not sim.in_setup      # the setup forces read the springs without advancing them
+        history = self.history
+        touched = np.zeros((p.nlocal, history.capacity), dtype=np.bool_)
+        bad = self.kernel(sim, nlist, update, sim.comm.owners(p), history.partner, history.values,
+                          touched)
+        if bad >= 0:
+            raise SimulationError(f"particle {bad} has more than {history.capacity} contacts at step "
+                                  f"{sim.step}; raise max_contacts of pair_style {self.name}")
+        # contact forces are dissipative: no potential energy is reported (the elastic part is not
+        # a potential once friction slides), as LAMMPS's granular pair styles
+        self.energy = 0.0
+
+    def kernel(self, sim, nlist, update, owner, partner, values, touched):
+        raise NotImplementedError
