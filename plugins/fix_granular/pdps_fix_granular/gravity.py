@@ -42,7 +42,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, observables
 
-from ._common import chosen
+from ._common import add_weight
 
 VALUES = {"vector": "X Y Z", "chute": "ANGLE", "spherical": "PHI THETA"}
 
@@ -96,5 +96,5 @@ class FixGravity(Fix):
 
     def post_force(self, sim):
         p = sim.particles
-        selected = chosen(sim, self.group)
-        p.f[: p.nlocal][selected] += observables.masses(sim, selected)[:, None] * self.acceleration
+        add_weight(p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group), p.nlocal,
+                   self.acceleration)
