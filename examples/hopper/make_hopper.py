@@ -1,7 +1,7 @@
 """Write hopper.stl: a square hopper, a vertical bin over a funnel that narrows to an outlet.
 
-    outlet: |x|, |y| <= 2.5 at z = 0         (five particle diameters: no arching for d = 1)
-    funnel: widens to |x|, |y| <= 10 at z = 10 (walls 37 degrees from the vertical)
+    outlet: |x|, |y| <= 4 at z = 0           (eight particle diameters: no arching for d = 1)
+    funnel: widens to |x|, |y| <= 10 at z = 10 (walls 31 degrees from the vertical)
     bin:    vertical walls |x|, |y| = 10 from z = 10 to z = 30, open at the top
 
 Each quadrilateral face is written as two triangles with normals pointing into the hopper.
@@ -12,7 +12,7 @@ import pathlib
 
 import numpy as np
 
-OUTLET, TOP, FUNNEL_HEIGHT, BIN_TOP = 2.5, 10.0, 10.0, 30.0
+OUTLET, TOP, FUNNEL_HEIGHT, BIN_TOP = 4.0, 10.0, 10.0, 30.0
 
 
 def square(half, z):

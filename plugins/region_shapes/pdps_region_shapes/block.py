@@ -8,6 +8,22 @@ Each bound is a number (distance units), ``INF`` or ``-INF`` (unbounded on that 
 sign is written, as in LAMMPS) or ``EDGE`` (the simulation box's
 face, which must exist then), as in LAMMPS. Points on the faces are inside.
 
+As a wall (``fix wall/dem``), the block is seen from the side the point is on. These are the two
+cases of LAMMPS's region walls (``surface_interior`` for ``side in``, ``surface_exterior`` for ``side
+out``); a pdps block has no ``side`` keyword, the point's position chooses:
+
+- a point inside the block (a container) touches every face closer than the reach, one contact per
+  face, at distance :math:`x - x_{lo}` with normal :math:`+\hat{x}`, :math:`x_{hi} - x` with normal
+  :math:`-\hat{x}`, and so on; a sphere in a corner touches two or three faces. Element ids: 0 xlo,
+  1 xhi, 2 ylo, 3 yhi, 4 zlo, 5 zhi.
+- a point outside the block (an obstacle) touches it once, at the block's closest point
+  :math:`\mathbf{c} = \mathrm{clamp}(\mathbf{x}, \mathbf{lo}, \mathbf{hi})`, with normal
+  :math:`(\mathbf{x}-\mathbf{c})/\lvert\mathbf{x}-\mathbf{c}\rvert`: on a face, an edge or a
+  corner. Element id 6 in every case, so a sphere rolling over an edge keeps its contact history.
+
+A sphere whose centre crosses a face changes side (a thin block is a wall from both sides). ``INF``
+faces are never touched.
+
 Example::
 
     region box block 0 10 0 10 0 10
@@ -17,6 +33,7 @@ Example::
 import math
 
 import numpy as np
+from numba import njit
 from pydantic import model_validator
 
 from pdps_core.api import Region, ScriptError, StyleArgs
@@ -26,6 +43,49 @@ HUGE = 1e300
 
 UNBOUNDED = ("INF", "-INF")
 Bound = float | str
+EXTERIOR = 6        # element id of a contact from outside (face, edge or corner alike)
+
+
+@njit(cache=True)
+def block_contacts(x, lo, hi, reach):
+    """Contacts of points x with the block's surface closer than reach (see the module docstring)."""
+    n = x.shape[0]
+    index = np.empty(6 * n, dtype=np.int64)
+    distance = np.empty(6 * n)
+    normal = np.zeros((6 * n, 3))
+    element = np.empty(6 * n, dtype=np.int64)
+    m = 0
+    for p in range(n):
+        inside = True
+        for d in range(3):
+            if x[p, d] < lo[d] or x[p, d] > hi[d]:
+                inside = False
+        if inside:
+            for d in range(3):
+                for side in range(2):
+                    gap = x[p, d] - lo[d] if side == 0 else hi[d] - x[p, d]
+                    if gap < reach:
+                        index[m] = p
+                        distance[m] = gap
+                        normal[m, d] = 1.0 if side == 0 else -1.0
+                        element[m] = 2 * d + side
+                        m += 1
+        else:
+            gap_sq = 0.0
+            delta = np.empty(3)
+            for d in range(3):
+                closest = min(max(x[p, d], lo[d]), hi[d])
+                delta[d] = x[p, d] - closest
+                gap_sq += delta[d] * delta[d]
+            gap = math.sqrt(gap_sq)
+            if gap < reach:
+                index[m] = p
+                distance[m] = gap
+                for d in range(3):
+                    normal[m, d] = delta[d] / gap
+                element[m] = EXTERIOR
+                m += 1
+    return index[:m], distance[:m], normal[:m], element[:m]
 
 
 class RegionBlock(Region):
@@ -80,3 +140,7 @@ class RegionBlock(Region):
         if np.any(np.abs(self.lo) >= HUGE) or np.any(np.abs(self.hi) >= HUGE):
             raise ScriptError(f"region {self.id} is unbounded (INF) and cannot define a box")
         return self.lo.copy(), self.hi.copy()
+
+    def surface_contacts(self, x, reach):
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        return block_contacts(x, self.lo, self.hi, float(reach))

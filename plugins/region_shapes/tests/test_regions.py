@@ -172,3 +172,79 @@ def test_polygon_is_a_surface_without_inside_or_extent():
         sim.command("group g region w")
     with pytest.raises(ScriptError, match="no extent"):
         sim.region("w").bounds()
+
+
+# ---- surfaces for walls -------------------------------------------------------------------------
+def contacts_by_point(region, x, reach):
+    index, distance, normal, element = region.surface_contacts(np.asarray(x, dtype=float), reach)
+    rows = {}
+    for i, d, n, e in zip(index, distance, normal, element):
+        rows.setdefault(int(i), []).append((int(e), float(d), tuple(float(c) for c in n)))
+    return {i: sorted(r) for i, r in rows.items()}
+
+
+def test_block_surface_from_inside_touches_each_near_face():
+    """Inside (a container): one contact per face within reach, normal into the block; a point in a
+    corner touches three faces; a point in the middle none."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("region r block 0 4 0 6 0 8")
+    found = contacts_by_point(sim.region("r"), [[0.25, 3, 4], [3.5, 5.75, 0.5], [2, 3, 4]], 0.6)
+    assert found[0] == [(0, 0.25, (1.0, 0.0, 0.0))]
+    assert found[1] == [(1, 0.5, (-1.0, 0.0, 0.0)), (3, 0.25, (0.0, -1.0, 0.0)),
+                        (4, 0.5, (0.0, 0.0, 1.0))]
+    assert 2 not in found
+
+
+def test_block_surface_from_outside_is_one_contact_at_the_closest_point():
+    """Outside (an obstacle): face, edge and corner contacts, each once, element 6, with the normal
+    from the block's closest point to the point."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("region r block 0 4 0 6 0 8")
+    s = 0.3 / np.sqrt(2.0)
+    c = 0.3 / np.sqrt(3.0)
+    points = [[2, 3, 8.3], [4 + s, 3, 8 + s], [-c, -c, -c], [2, 3, 9.0]]
+    index, distance, normal, element = sim.region("r").surface_contacts(np.array(points), 0.5)
+    np.testing.assert_array_equal(index, [0, 1, 2])
+    np.testing.assert_allclose(distance, [0.3, 0.3, 0.3], rtol=1e-14)
+    r2, r3 = 1 / np.sqrt(2.0), 1 / np.sqrt(3.0)
+    np.testing.assert_allclose(normal, [[0, 0, 1], [r2, 0, r2], [-r3, -r3, -r3]], rtol=1e-14,
+                               atol=1e-15)
+    np.testing.assert_array_equal(element, [6, 6, 6])
+
+
+def test_block_with_inf_faces_is_a_floor():
+    sim = Simulation(screen=False, log=None)
+    sim.command("region floor block INF INF INF INF -5 0")
+    index, distance, normal, element = sim.region("floor").surface_contacts(
+        np.array([[1e6, -3e5, 0.4], [0.0, 0.0, -4.8]]), 0.5)
+    np.testing.assert_array_equal(index, [0, 1])
+    np.testing.assert_allclose(distance, [0.4, 0.2], rtol=1e-12)
+    np.testing.assert_allclose(normal, [[0, 0, 1], [0, 0, 1]])
+    np.testing.assert_array_equal(element, [6, 4])
+
+
+def test_polygon_surface_face_edge_and_corner_from_both_sides():
+    """The PDPS manual's square wall (normal +z): above and below the face, beside an edge, beyond a
+    corner; farther than reach gives nothing."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("region w polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0")
+    points = [[12, 5, 0.4], [12, 5, -0.3], [15.3, 5, 0.4], [9.7, -0.4, 0.0], [12, 5, 0.6],
+              [16, 5, 0]]
+    index, distance, normal, element = sim.region("w").surface_contacts(np.array(points), 0.55)
+    np.testing.assert_array_equal(index, [0, 1, 2, 3])
+    np.testing.assert_allclose(distance, [0.4, 0.3, 0.5, 0.5], rtol=1e-14)
+    np.testing.assert_allclose(normal, [[0, 0, 1], [0, 0, -1], [0.6, 0, 0.8], [-0.6, -0.8, 0]],
+                               rtol=1e-14, atol=1e-15)
+    np.testing.assert_array_equal(element, [0, 0, 0, 0])
+
+
+def test_polygon_surface_of_a_non_convex_polygon():
+    """An L-shaped polygon: the foot in the notch is outside the polygon, so the contact is with the
+    nearest edge, not with the plane."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("region L polygon a 0 0 0 b 2 0 0 c 2 1 0 d 1 1 0 e 1 2 0 f 0 2 0")
+    index, distance, normal, _ = sim.region("L").surface_contacts(
+        np.array([[0.5, 1.5, 0.2], [1.5, 1.3, 0.4]]), 0.6)
+    np.testing.assert_array_equal(index, [0, 1])
+    np.testing.assert_allclose(distance, [0.2, 0.5], rtol=1e-14)
+    np.testing.assert_allclose(normal[1], [0, 0.6, 0.8], rtol=1e-14, atol=1e-15)

@@ -1,0 +1,176 @@
+r"""Fix ``wall/dem``: granular (DEM) walls made of regions, with a linear spring-dashpot contact law
+and Coulomb friction (PDPS manual 2.2.8.5).
+
+A particle i of radius :math:`R_i` at distance :math:`d` from a wall surface, with unit normal
+:math:`\mathbf{n}` from the surface to its centre, overlaps the wall by :math:`\delta = R_i - d > 0`.
+The wall is body j of infinite mass and radius (so :math:`m^* = m_i`); with the relative velocity of
+the contact points :math:`\mathbf{v} = \mathbf{v}_i + \boldsymbol\omega_i\times(-R_i\mathbf{n})`,
+:math:`v_n = \mathbf{v}\cdot\mathbf{n}`, :math:`\mathbf{v}_t = \mathbf{v} - v_n\mathbf{n}` and the
+tangential spring :math:`\boldsymbol\xi` (grown by :math:`\mathbf{v}_t\Delta t` over the contact, kept
+per particle-wall contact):
+
+.. math::
+
+    \mathbf{F}_i = (k_n\delta - C_n v_n)\,\mathbf{n} + \mathbf{F}_t, \qquad
+    \mathbf{F}_t = -k_t\boldsymbol\xi - C_t\mathbf{v}_t, \quad
+    |\mathbf{F}_t| \le \mu\,|k_n\delta - C_n v_n|, \qquad
+    \boldsymbol\tau_i = (-R_i\mathbf{n})\times\mathbf{F}_i
+
+(``pdps_core.contact_models.lsd_contact``; when the Coulomb limit is reached the spring is cut back
+to it). The normal force is not clipped at zero near the end of a contact, as LAMMPS by default, so
+a head-on impact rebounds with exactly
+
+.. math::
+
+    e = \exp\!\left(-\frac{\pi\zeta}{\sqrt{1-\zeta^2}}\right), \quad \zeta = \frac{C_n}{2\sqrt{k_n m_i}},
+    \qquad t_c = \frac{\pi}{\sqrt{k_n/m_i - (C_n/2m_i)^2}}.
+
+Walls are regions with a surface: ``block`` (its six faces, touched from inside as a container or
+from outside as an obstacle) and ``polygon`` (a flat polygon, touched from both sides, at its face,
+edges or corners); see ``pdps doc region block`` and ``pdps doc region polygon``. A particle touching
+several faces (a corner of a box) gets one contact per face. Walls do not move.
+
+Parameters:
+
+- ``e``: restitution coefficient (0 < e <= 1). The PDPS form reads it and, as PDPS does, does not
+  use it: the damping is ``Cn``. The restitution form derives ``Cn`` from it for each particle's mass.
+- ``kn`` normal stiffness (force/distance), ``Cn`` normal damping (force/velocity), ``kt``
+  tangential stiffness (force/distance), ``Ct`` tangential damping (force/velocity), ``mu`` friction
+  coefficient (>= 0, no unit).
+- ``cutoff`` (distance): the contact distance of particles without a radius (``particle_style
+  atomic``), as in PDPS; spheres touch at their radius.
+
+Syntax::
+
+    fix ID GROUP wall/dem lsd region R1 [region R2 ...] e kn Cn kt Ct mu cutoff    (PDPS)
+    fix ID GROUP wall/dem lsd region R1 [region R2 ...] e kn mu [cutoff]           (restitution form)
+
+The restitution form sets :math:`C_n = 2\zeta\sqrt{k_n m_i}` with :math:`\zeta` from ``e`` for each
+particle, :math:`k_t = \tfrac27 k_n` and :math:`C_t = C_n/2` (LAMMPS's gran/hooke defaults).
+
+Particles with ``omega`` and ``torque`` (``particle_style sphere``) feel the torque and their spin
+enters the contact velocity; others slide without rotating. Forces are added in ``post_force`` (and
+at setup, without advancing the contact history). The run warns when the time step resolves the
+lightest particle's contact time with fewer than 10 steps.
+
+Example (PDPS manual)::
+
+    region wall1 polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0
+    region wall2 block 0 20 0 20 0 20
+    fix 2 all wall/dem lsd region wall1 region wall2 0.85 3000 28.6527 571.43 15.82634 0.4 0.5
+"""
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, observables
+
+from .wall_contact import HISTORY_WIDTH, ContactLaw, check_law_numbers, particle_wall_contacts, read_numbers
+
+ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
+
+
+@njit(cache=True)
+def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, v, omega,
+                    f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu, per_mass,
+                    e_star, g_star, beta, dt, update):
+    """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``.
+    Returns -1, or the index of a particle whose contact history overflowed."""
+    used = np.empty(partner.shape[1], dtype=np.bool_)
+    most = 0
+    for k in range(len(chosen)):
+        most = max(most, offsets[k + 1] - offsets[k])
+    slots = np.empty(max(most, 1), dtype=np.int64)
+    for k in range(len(chosen)):
+        i = chosen[k]
+        ok = particle_wall_contacts(i, offsets[k], offsets[k + 1], distance, normal, key,
+                                    wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
+                                    partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
+                                    g_star, beta, dt, update, used, slots)
+        if not ok:
+            return i
+    return -1
+
+
+class FixWallDEM(Fix):
+    name = "wall/dem"
+    usage = ("fix ID GROUP wall/dem lsd region R1 [region R2 ...] e kn Cn kt Ct mu cutoff"
+             " | ... e kn mu [cutoff]")
+
+    class Args(StyleArgs):
+        words: list[str]
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.words)
+        if not words:
+            raise ScriptError(f"missing the contact model; usage: {self.usage}")
+        if words[0] != "lsd":
+            raise ScriptError(f"contact model must be lsd (got {words[0]})")
+        self.regions, k = [], 1
+        while k < len(words) and words[k] == "region":
+            if k + 1 >= len(words):
+                raise ScriptError("keyword region needs a region ID")
+            region = sim.region(words[k + 1])
+            if type(region).surface_contacts is Region.surface_contacts:
+                raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
+            self.regions.append(region)
+            k += 2
+        if not self.regions:
+            raise ScriptError(f"expected at least one region R after lsd; usage: {self.usage}")
+        numbers = words[k:]
+        if len(numbers) == 7:
+            e, kn, cn, kt, ct, mu, cutoff = read_numbers(numbers, "wall/dem parameter")
+            check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
+            self.law = ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
+        elif len(numbers) in (3, 4):
+            e, kn, mu, *rest = read_numbers(numbers, "wall/dem parameter")
+            check_law_numbers(e=e, kn=kn, mu=mu)
+            self.law = ContactLaw.lsd(kn, mu, e=e)
+            cutoff = rest[0] if rest else None
+        else:
+            raise ScriptError(f"expected e kn Cn kt Ct mu cutoff, or e kn mu [cutoff], after the regions "
+                              f"(got {' '.join(numbers) or 'nothing'})")
+        if cutoff is not None and not cutoff > 0.0:
+            raise ScriptError(f"cutoff must be > 0 (got {cutoff:g})")
+        self.cutoff = cutoff
+        self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
+
+    def setup(self, sim):
+        p = sim.particles
+        if not p.has("radius") and self.cutoff is None:
+            raise ScriptError(f"fix {self.id} (wall/dem) needs particle radii (particle_style sphere) "
+                              "or a cutoff for particles without one")
+        chosen = np.flatnonzero(sim.groups.select(sim, self.group))
+        self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
+        self._forces(sim, update=False)
+
+    def post_force(self, sim):
+        self._forces(sim, update=True)
+
+    def _forces(self, sim, update):
+        p = sim.particles
+        n = p.nlocal
+        chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+        reach = p.radius[:n] if p.has("radius") else np.full(n, self.cutoff)
+        x = p.x[chosen]
+        farthest = float(reach[chosen].max()) if len(chosen) else 0.0
+        parts = [region.surface_contacts(x, farthest) for region in self.regions]
+        index = np.concatenate([part[0] for part in parts])
+        order = np.argsort(index, kind="stable")
+        index = index[order]
+        distance = np.concatenate([part[1] for part in parts])[order]
+        normal = np.ascontiguousarray(np.concatenate([part[2] for part in parts])[order])
+        key = np.concatenate([(np.int64(w) << ELEMENT_BITS) + part[3]
+                              for w, part in enumerate(parts)])[order]
+        offsets = np.searchsorted(index, np.arange(len(chosen) + 1)).astype(np.int64)
+        rotation = p.has("omega") and p.has("torque")
+        omega = p.omega if rotation else p.v
+        torque = p.torque if rotation else p.f
+        still = np.zeros((len(index), 3))
+        bad = dem_wall_forces(chosen, offsets, distance, normal, key, still, reach,
+                              observables.masses(sim), p.v, omega, p.f, torque, rotation,
+                              self.history.partner, self.history.values, *self.law.kernel_args(),
+                              sim.dt, update)
+        if bad >= 0:
+            self.history.overflowed(p.tag[bad])

@@ -1,0 +1,594 @@
+r"""Fix ``wall/mesh``: granular walls from a triangulated surface file (STL, VTK, OBJ, ...: anything
+meshio reads), fixed or moving (LIGGGHTS's fix mesh/surface with fix wall/gran, in one command).
+
+Geometry. The file's triangles are the wall (quads are split in two; other cells are ignored). The
+surface is two-sided: a sphere of radius :math:`R_i` touches it wherever a point :math:`\mathbf{p}`
+of the mesh is closer than :math:`R_i` to its centre :math:`\mathbf{x}_i` and is a *local* closest
+point: the closest point of every triangle that contains it (found per triangle with the
+closest-point-on-triangle construction, face, edge or corner). Overlap :math:`\delta = R_i -
+|\mathbf{x}_i - \mathbf{p}|`, normal :math:`\mathbf{n} = (\mathbf{x}_i - \mathbf{p})/|\mathbf{x}_i -
+\mathbf{p}|`. So a sphere over an edge or a corner shared by several triangles gets one contact,
+with the normal from that edge or corner (duplicates of one point are merged, and an edge point of
+one triangle that lies on a neighbour whose closest point is elsewhere is no contact), while a sphere
+in a valley touching two faces gets two. A sphere whose centre passes through the surface is pushed
+out on the other side. Meshes are not repeated across periodic boundaries.
+
+Contact law (``pdps_core.contact_models``, the wall being body j with infinite mass and radius, so
+:math:`m^* = m_i`, :math:`R^* = R_i`):
+
+- ``model lsd e kn Cn kt Ct mu``: linear spring-dashpot with Coulomb friction, as fix wall/dem (PDPS's
+  parameter order; ``e`` is read and not used, the damping is ``Cn``); ``model lsd e kn mu``: ``Cn``
+  from the restitution coefficient for each particle's mass, :math:`k_t = \tfrac27 k_n`,
+  :math:`C_t = C_n/2` (LAMMPS's gran/hooke defaults). Units: kn, kt force/distance; Cn, Ct
+  force/velocity.
+- ``model hertz Y nu e mu``: Hertz-Mindlin with wall and particles of one material, Young's modulus
+  ``Y`` (pressure), Poisson ratio ``nu``, :math:`E^* = Y/2(1-\nu^2)`, :math:`G^* = Y/4(2-\nu)(1+\nu)`,
+  damping from the restitution coefficient ``e`` (LIGGGHTS's hertz model).
+
+Relative velocity of the contact points :math:`\mathbf{v} = \mathbf{v}_i + \boldsymbol\omega_i \times
+(-R_i\mathbf{n}) - \mathbf{v}_w(\mathbf{p})`; force on i from the law, torque :math:`(-R_i\mathbf{n})
+\times \mathbf{F}`. The tangential spring of each contact is kept per particle and triangle, and
+taken over by the next triangle as a sphere rolls across a tessellated surface.
+
+Placement, applied once in the order given (LIGGGHTS): ``scale S`` (about the origin), ``move DX DY
+DZ`` (distance), ``rotate axis AX AY AZ angle DEG`` (about the axis through the origin, right-hand
+rule, degrees).
+
+Motion:
+
+- ``velocity VX VY VZ``: the mesh translates (velocity units).
+- ``omega WX WY WZ about PX PY PZ``: the mesh rotates with angular velocity :math:`\boldsymbol\omega`
+  (rad/time; its direction is the axis, right-hand rule) about the axis through the point P (which
+  moves with ``velocity`` if both are given): a stirrer. The wall's velocity at a contact point is
+  :math:`\mathbf{v}_w = \mathbf{V} + \boldsymbol\omega\times(\mathbf{p} - \mathbf{P}(t))`.
+- ``surface_vel VX VY VZ``: a conveyor belt (LIGGGHTS's ``surface_vel``): the mesh stays where it is,
+  its surface moves: on each triangle, with the given velocity projected onto the triangle's plane and
+  scaled back to the given speed. Not together with ``velocity`` or ``omega``.
+
+Cost: triangles are binned on a grid of cells at least the largest radius plus the skin wide, and
+each particle keeps the triangles whose bounding box is within its radius plus the skin; the lists
+are rebuilt only when a particle or a mesh vertex has moved more than half the skin
+(``neighbor SKIN``) since, or particles were re-sorted.
+
+Errors: a missing file, an empty file or a file with no triangles gives one line naming the file.
+Particles need radii (``particle_style sphere``); with ``omega`` and ``torque`` they also spin.
+
+Syntax::
+
+    fix ID GROUP wall/mesh file FILE [scale S] [move DX DY DZ] [rotate axis AX AY AZ angle DEG]
+        [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] [surface_vel VX VY VZ]
+        model lsd e kn Cn kt Ct mu | model lsd e kn mu | model hertz Y nu e mu
+
+Example::
+
+    fix chute all wall/mesh file chute.stl scale 0.001 rotate axis 0 1 0 angle 30 model lsd 0.8 2e5 0.3
+    fix stir all wall/mesh file blade.stl omega 0 0 6.283 about 0 0 0 model hertz 5e6 0.3 0.7 0.5
+"""
+
+import contextlib
+import io
+import math
+import os
+
+import meshio
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, observables
+
+from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, particle_wall_contacts,
+                           read_numbers)
+
+MAX_CELLS_PER_AXIS = 64
+MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the coordinates) are one
+
+
+# ---- reading and placing the mesh ---------------------------------------------------------------
+def read_triangles(path, shown):
+    """(vertices n x 3, triangles m x 3) of a surface mesh file; ScriptError naming ``shown``."""
+    if not os.path.isfile(path):
+        raise ScriptError(f"mesh file {shown} does not exist")
+    if os.path.getsize(path) == 0:
+        raise ScriptError(f"mesh file {shown} is empty")
+    try:
+        # meshio reports format guesses on stderr; the user gets one line from us instead
+        with contextlib.redirect_stderr(io.StringIO()), np.errstate(all="ignore"):
+            mesh = meshio.read(path)
+    except Exception as exc:
+        reason = " ".join(str(exc).split()) or type(exc).__name__
+        raise ScriptError(f"mesh file {shown} cannot be read as a surface mesh: {reason}") from None
+    points = np.asarray(mesh.points, dtype=np.float64)
+    if points.ndim == 2 and points.shape[1] == 2:
+        points = np.column_stack([points, np.zeros(len(points))])
+    blocks = []
+    for cells in mesh.cells:
+        data = np.asarray(cells.data, dtype=np.int64)
+        if cells.type == "triangle":
+            blocks.append(data)
+        elif cells.type == "quad":
+            blocks += [data[:, [0, 1, 2]], data[:, [0, 2, 3]]]
+    triangles = np.concatenate(blocks) if blocks else np.zeros((0, 3), dtype=np.int64)
+    if len(triangles):
+        corners = points[triangles]
+        area = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]),
+                              axis=1)
+        triangles = triangles[area > 0.0]
+    if len(triangles) == 0:
+        raise ScriptError(f"mesh file {shown} has no triangles: not a surface mesh")
+    return points, triangles
+
+
+def rotation_matrix(axis, angle):
+    """Rodrigues' rotation by ``angle`` (rad) about the unit vector ``axis``."""
+    ax, ay, az = axis
+    k = np.array([[0.0, -az, ay], [az, 0.0, -ax], [-ay, ax, 0.0]])
+    return np.eye(3) + math.sin(angle) * k + (1.0 - math.cos(angle)) * (k @ k)
+
+
+def unit(vector, what):
+    vector = np.asarray(vector, dtype=np.float64)
+    length = float(np.linalg.norm(vector))
+    if length == 0.0:
+        raise ScriptError(f"{what} must not be zero")
+    return vector / length
+
+
+# ---- geometry kernels ---------------------------------------------------------------------------
+@njit(cache=True)
+def closest_on_triangle(px, py, pz, a, b, c, out):
+    """Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5) into
+    ``out``; returns True when it is inside the face, False on an edge or a corner."""
+    abx, aby, abz = b[0] - a[0], b[1] - a[1], b[2] - a[2]
+    acx, acy, acz = c[0] - a[0], c[1] - a[1], c[2] - a[2]
+    apx, apy, apz = px - a[0], py - a[1], pz - a[2]
+    d1 = abx * apx + aby * apy + abz * apz
+    d2 = acx * apx + acy * apy + acz * apz
+    if d1 <= 0.0 and d2 <= 0.0:
+        out[0], out[1], out[2] = a[0], a[1], a[2]
+        return False
+    bpx, bpy, bpz = px - b[0], py - b[1], pz - b[2]
+    d3 = abx * bpx + aby * bpy + abz * bpz
+    d4 = acx * bpx + acy * bpy + acz * bpz
+    if d3 >= 0.0 and d4 <= d3:
+        out[0], out[1], out[2] = b[0], b[1], b[2]
+        return False
+    vc = d1 * d4 - d3 * d2
+    if vc <= 0.0 and d1 >= 0.0 and d3 <= 0.0:
+        t = d1 / (d1 - d3)
+        out[0], out[1], out[2] = a[0] + t * abx, a[1] + t * aby, a[2] + t * abz
+        return False
+    cpx, cpy, cpz = px - c[0], py - c[1], pz - c[2]
+    d5 = abx * cpx + aby * cpy + abz * cpz
+    d6 = acx * cpx + acy * cpy + acz * cpz
+    if d6 >= 0.0 and d5 <= d6:
+        out[0], out[1], out[2] = c[0], c[1], c[2]
+        return False
+    vb = d5 * d2 - d1 * d6
+    if vb <= 0.0 and d2 >= 0.0 and d6 <= 0.0:
+        t = d2 / (d2 - d6)
+        out[0], out[1], out[2] = a[0] + t * acx, a[1] + t * acy, a[2] + t * acz
+        return False
+    va = d3 * d6 - d5 * d4
+    if va <= 0.0 and d4 - d3 >= 0.0 and d5 - d6 >= 0.0:
+        t = (d4 - d3) / ((d4 - d3) + (d5 - d6))
+        out[0] = b[0] + t * (c[0] - b[0])
+        out[1] = b[1] + t * (c[1] - b[1])
+        out[2] = b[2] + t * (c[2] - b[2])
+        return False
+    scale = 1.0 / (va + vb + vc)
+    v = vb * scale
+    w = vc * scale
+    out[0] = a[0] + v * abx + w * acx
+    out[1] = a[1] + v * aby + w * acy
+    out[2] = a[2] + v * abz + w * acz
+    return True
+
+
+@njit(cache=True)
+def bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, margin):
+    """Cells (CSR) listing the triangles whose bounding box, widened by ``margin``, meets them."""
+    ntri = box_lo.shape[0]
+    ncells = nbins[0] * nbins[1] * nbins[2]
+    counts = np.zeros(ncells + 1, dtype=np.int64)
+    lo_cell = np.empty((ntri, 3), dtype=np.int64)
+    hi_cell = np.empty((ntri, 3), dtype=np.int64)
+    for t in range(ntri):
+        for d in range(3):
+            lo_cell[t, d] = min(max(int((box_lo[t, d] - margin - grid_lo[d]) / cell[d]), 0), nbins[d] - 1)
+            hi_cell[t, d] = min(max(int((box_hi[t, d] + margin - grid_lo[d]) / cell[d]), 0), nbins[d] - 1)
+        for ix in range(lo_cell[t, 0], hi_cell[t, 0] + 1):
+            for iy in range(lo_cell[t, 1], hi_cell[t, 1] + 1):
+                for iz in range(lo_cell[t, 2], hi_cell[t, 2] + 1):
+                    counts[(ix * nbins[1] + iy) * nbins[2] + iz + 1] += 1
+    for k in range(ncells):
+        counts[k + 1] += counts[k]
+    fill = counts[:-1].copy()
+    members = np.empty(counts[ncells], dtype=np.int64)
+    for t in range(ntri):
+        for ix in range(lo_cell[t, 0], hi_cell[t, 0] + 1):
+            for iy in range(lo_cell[t, 1], hi_cell[t, 1] + 1):
+                for iz in range(lo_cell[t, 2], hi_cell[t, 2] + 1):
+                    k = (ix * nbins[1] + iy) * nbins[2] + iz
+                    members[fill[k]] = t
+                    fill[k] += 1
+    return counts, members
+
+
+@njit(cache=True)
+def cell_of(x, i, grid_lo, cell, nbins):
+    """Flat index of the grid cell holding particle i, or -1 outside the grid."""
+    flat = 0
+    for d in range(3):
+        c = int(math.floor((x[i, d] - grid_lo[d]) / cell[d]))
+        if c < 0 or c >= nbins[d]:
+            return -1
+        flat = flat * nbins[d] + c
+    return flat
+
+
+@njit(cache=True)
+def box_gap_sq(x, i, lo, hi):
+    """Squared distance from particle i to the box [lo, hi]."""
+    gap = 0.0
+    for d in range(3):
+        if x[i, d] < lo[d]:
+            gap += (lo[d] - x[i, d]) ** 2
+        elif x[i, d] > hi[d]:
+            gap += (x[i, d] - hi[d]) ** 2
+    return gap
+
+
+@njit(cache=True)
+def candidate_triangles(x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, cell_start,
+                        cell_members):
+    """For each chosen particle, the triangles whose bounding box is closer than its reach (CSR)."""
+    n = len(chosen)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    for k in range(n):
+        i = chosen[k]
+        flat = cell_of(x, i, grid_lo, cell, nbins)
+        found = 0
+        if flat >= 0:
+            for m in range(cell_start[flat], cell_start[flat + 1]):
+                t = cell_members[m]
+                if box_gap_sq(x, i, box_lo[t], box_hi[t]) < reach[i] * reach[i]:
+                    found += 1
+        offsets[k + 1] = offsets[k] + found
+    candidates = np.empty(offsets[n], dtype=np.int64)
+    for k in range(n):
+        i = chosen[k]
+        flat = cell_of(x, i, grid_lo, cell, nbins)
+        slot = offsets[k]
+        if flat >= 0:
+            for m in range(cell_start[flat], cell_start[flat + 1]):
+                t = cell_members[m]
+                if box_gap_sq(x, i, box_lo[t], box_hi[t]) < reach[i] * reach[i]:
+                    candidates[slot] = t
+                    slot += 1
+    return offsets, candidates
+
+
+@njit(cache=True)
+def separation(p, a, q, b):
+    """Distance between row a of p and row b of q (3-vectors)."""
+    return math.sqrt((p[a, 0] - q[b, 0]) ** 2 + (p[a, 1] - q[b, 1]) ** 2 + (p[a, 2] - q[b, 2]) ** 2)
+
+
+@njit(cache=True)
+def belt_on_face(belt, face_normal, out):
+    """A conveyor's surface velocity on a face: the belt velocity projected onto the face's plane,
+    at the belt's speed (LIGGGHTS's surface_vel)."""
+    along = belt[0] * face_normal[0] + belt[1] * face_normal[1] + belt[2] * face_normal[2]
+    in_plane = 0.0
+    for d in range(3):
+        out[d] = belt[d] - along * face_normal[d]
+        in_plane += out[d] * out[d]
+    speed = math.sqrt(belt[0] * belt[0] + belt[1] * belt[1] + belt[2] * belt[2])
+    scale = speed / math.sqrt(in_plane) if in_plane > 0.0 else 0.0
+    for d in range(3):
+        out[d] *= scale
+
+
+@njit(cache=True)
+def rigid_velocity(point, velocity, spin, pivot, out):
+    """Velocity of a point of a mesh moving with ``velocity`` and turning with ``spin`` about the
+    axis through ``pivot``: V + omega x (p - P)."""
+    rx, ry, rz = point[0] - pivot[0], point[1] - pivot[1], point[2] - pivot[2]
+    out[0] = velocity[0] + spin[1] * rz - spin[2] * ry
+    out[1] = velocity[1] + spin[2] * rx - spin[0] * rz
+    out[2] = velocity[2] + spin[0] * ry - spin[1] * rx
+
+
+@njit(cache=True)
+def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_normal, radius, mass,
+                     v, omega, f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu,
+                     per_mass, e_star, g_star, beta, dt, update, velocity, spin, pivot, belt,
+                     conveyor):
+    """Contacts of the chosen particles with their candidate triangles (module docstring), then the
+    forces. Returns -1, or the index of a particle whose contact history overflowed."""
+    most = 1
+    for k in range(len(chosen)):
+        most = max(most, offsets[k + 1] - offsets[k])
+    tri = np.empty(most, dtype=np.int64)
+    point = np.empty((most, 3))
+    gap = np.empty(most)
+    on_face = np.empty(most, dtype=np.bool_)
+    keep = np.empty(most, dtype=np.bool_)
+    distance = np.empty(most)
+    normal = np.empty((most, 3))
+    key = np.empty(most, dtype=np.int64)
+    wall_velocity = np.empty((most, 3))
+    used = np.empty(partner.shape[1], dtype=np.bool_)
+    slots = np.empty(most, dtype=np.int64)
+    probe = np.empty((1, 3))
+    for k in range(len(chosen)):
+        i = chosen[k]
+        r = radius[i]
+        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
+        tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
+        nc = 0
+        for m in range(offsets[k], offsets[k + 1]):
+            t = candidates[m]
+            inside = closest_on_triangle(xi, yi, zi, vertices[triangles[t, 0]],
+                                         vertices[triangles[t, 1]], vertices[triangles[t, 2]],
+                                         point[nc])
+            g = math.sqrt((xi - point[nc, 0]) ** 2 + (yi - point[nc, 1]) ** 2
+                          + (zi - point[nc, 2]) ** 2)
+            if g < r:
+                tri[nc] = t
+                gap[nc] = g
+                on_face[nc] = inside
+                keep[nc] = True
+                nc += 1
+        # an edge or corner point lying on another touched triangle whose closest point is
+        # elsewhere is not a local closest point; equal points are one contact
+        for a in range(nc):
+            if on_face[a]:
+                continue
+            for b in range(nc):
+                if b == a:
+                    continue
+                if separation(point, a, point, b) <= tolerance:
+                    continue
+                t = tri[b]
+                closest_on_triangle(point[a, 0], point[a, 1], point[a, 2],
+                                    vertices[triangles[t, 0]], vertices[triangles[t, 1]],
+                                    vertices[triangles[t, 2]], probe[0])
+                if separation(probe, 0, point, a) <= tolerance:
+                    keep[a] = False
+                    break
+        for a in range(nc):
+            if not keep[a]:
+                continue
+            for b in range(a):
+                if keep[b] and separation(point, a, point, b) <= tolerance:
+                    keep[a] = False
+                    break
+        count = 0
+        for a in range(nc):
+            if not keep[a]:
+                continue
+            t = tri[a]
+            distance[count] = gap[a]
+            key[count] = t
+            if gap[a] > tolerance:
+                normal[count, 0] = (xi - point[a, 0]) / gap[a]
+                normal[count, 1] = (yi - point[a, 1]) / gap[a]
+                normal[count, 2] = (zi - point[a, 2]) / gap[a]
+            else:
+                for d in range(3):
+                    normal[count, d] = face_normal[t, d]
+            if conveyor:
+                belt_on_face(belt, face_normal[t], wall_velocity[count])
+            else:
+                rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[count])
+            count += 1
+        ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, r, mass[i], v,
+                                    omega, f, torque, rotation, partner, values, model, kn, cn, kt,
+                                    ct, mu, per_mass, e_star, g_star, beta, dt, update, used, slots)
+        if not ok:
+            return i
+    return -1
+
+
+# ---- the style ----------------------------------------------------------------------------------
+class FixWallMesh(Fix):
+    name = "wall/mesh"
+    usage = ("fix ID GROUP wall/mesh file FILE [scale S] [move DX DY DZ] "
+             "[rotate axis AX AY AZ angle DEG] [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] "
+             "[surface_vel VX VY VZ] model lsd e kn Cn kt Ct mu | model lsd e kn mu | "
+             "model hertz Y nu e mu")
+
+    class Args(StyleArgs):
+        words: list[str]
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self._read_words(sim, list(args.words))
+        self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
+        self.elapsed = 0.0
+        self.vertices = self.placed
+        self._place()
+        self.stale = True
+        self.builds = 0
+        self.chosen = np.zeros(0, dtype=np.int64)
+        self.nlocal_built = -1
+        self.tags_built = np.zeros(0, dtype=np.int64)
+
+    # ---- script words ----
+    def _read_words(self, sim, words):
+        arity = {"file": 1, "scale": 1, "move": 3, "rotate": 6, "velocity": 3, "omega": 7,
+                 "surface_vel": 3}
+        given, transforms, k = {}, [], 0
+        while k < len(words):
+            word = words[k]
+            if word == "model":
+                given["model"] = words[k + 1:]
+                break
+            if word not in arity:
+                raise ScriptError(f"unknown keyword {word} (known: {', '.join(arity)}, model)")
+            if word in given:
+                raise ScriptError(f"keyword {word} is given twice")
+            values = words[k + 1:k + 1 + arity[word]]
+            short = [w for w in values if w in arity or w == "model"]
+            if len(values) < arity[word] or short:
+                taken = values[:values.index(short[0])] if short else values
+                raise ScriptError(f"keyword {word} needs {arity[word]} value(s) "
+                                  f"(got {' '.join(taken) or 'none'})")
+            given[word] = values
+            if word in ("scale", "move", "rotate"):
+                transforms.append(word)
+            k += 1 + arity[word]
+        if "file" not in given:
+            raise ScriptError(f"missing keyword file; usage: {self.usage}")
+        if "model" not in given:
+            raise ScriptError(f"missing keyword model; usage: {self.usage}")
+        shown = given["file"][0]
+        points, self.triangles = read_triangles(sim.resolve(shown), shown)
+        self.file = shown
+        for word in transforms:
+            if word == "scale":
+                (factor,) = read_numbers(given[word], "scale")
+                if not factor > 0.0:
+                    raise ScriptError(f"scale must be > 0 (got {factor:g})")
+                points = points * factor
+            elif word == "move":
+                points = points + read_numbers(given[word], "move")
+            else:
+                w = given[word]
+                if w[0] != "axis" or w[4] != "angle":
+                    raise ScriptError(f"rotate takes axis AX AY AZ angle DEG (got {' '.join(w)})")
+                axis = unit(read_numbers(w[1:4], "rotate axis"), "rotate axis")
+                (angle,) = read_numbers(w[5:6], "rotate angle")
+                points = points @ rotation_matrix(axis, math.radians(angle)).T
+        self.placed = np.ascontiguousarray(points)
+        self.velocity = np.array(read_numbers(given["velocity"], "velocity") if "velocity" in given
+                                 else [0.0, 0.0, 0.0])
+        self.spin = np.zeros(3)
+        self.pivot0 = np.zeros(3)
+        if "omega" in given:
+            w = given["omega"]
+            if w[3] != "about":
+                raise ScriptError(f"omega takes WX WY WZ about PX PY PZ (got {' '.join(w)})")
+            self.spin = np.array(read_numbers(w[:3], "omega"))
+            self.pivot0 = np.array(read_numbers(w[4:], "omega point"))
+        self.belt = np.array(read_numbers(given["surface_vel"], "surface_vel") if "surface_vel" in given
+                             else [0.0, 0.0, 0.0])
+        self.conveyor = "surface_vel" in given
+        self.moving = bool(np.any(self.velocity) or np.any(self.spin))
+        if self.conveyor and ("velocity" in given or "omega" in given):
+            raise ScriptError("surface_vel (a conveyor) cannot be combined with velocity or omega")
+        self.law = self._read_model(given["model"])
+
+    def _read_model(self, words):
+        if not words:
+            raise ScriptError("model needs lsd or hertz and its parameters")
+        model, numbers = words[0], words[1:]
+        if model == "lsd":
+            if len(numbers) == 6:
+                e, kn, cn, kt, ct, mu = read_numbers(numbers, "model lsd parameter")
+                check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
+                return ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
+            if len(numbers) == 3:
+                e, kn, mu = read_numbers(numbers, "model lsd parameter")
+                check_law_numbers(e=e, kn=kn, mu=mu)
+                return ContactLaw.lsd(kn, mu, e=e)
+            raise ScriptError(f"model lsd takes e kn Cn kt Ct mu, or e kn mu "
+                              f"(got {' '.join(numbers) or 'nothing'})")
+        if model == "hertz":
+            if len(numbers) != 4:
+                raise ScriptError(f"model hertz takes Y nu e mu (got {' '.join(numbers) or 'nothing'})")
+            youngs, poisson, e, mu = read_numbers(numbers, "model hertz parameter")
+            if not youngs > 0.0:
+                raise ScriptError(f"Y must be > 0 (got {youngs:g})")
+            if not -1.0 < poisson < 0.5:
+                raise ScriptError(f"nu must be in (-1, 0.5) (got {poisson:g})")
+            check_law_numbers(e=e, mu=mu)
+            return ContactLaw.hertz(youngs, poisson, e, mu)
+        raise ScriptError(f"model must be one of lsd, hertz (got {model})")
+
+    # ---- mesh motion and candidate lists ----
+    def _place(self):
+        """Vertices, pivot and face normals at the mesh's current time."""
+        self.pivot = self.pivot0 + self.velocity * self.elapsed
+        if self.moving:
+            angle = float(np.linalg.norm(self.spin)) * self.elapsed
+            points = self.placed
+            if angle != 0.0:
+                turn = rotation_matrix(self.spin / np.linalg.norm(self.spin), angle)
+                points = (points - self.pivot0) @ turn.T + self.pivot0
+            self.vertices = np.ascontiguousarray(points + self.velocity * self.elapsed)
+        corners = self.vertices[self.triangles]
+        normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        self.face_normal = np.ascontiguousarray(normal / np.linalg.norm(normal, axis=1)[:, None])
+
+    def _rebuild_if_needed(self, sim, chosen, radius):
+        p = sim.particles
+        half_skin = 0.5 * sim.neighbor.skin
+        x = p.x[chosen]
+        if not self.stale and len(chosen) == len(self.x_built):
+            moved = float(np.max(np.sum((x - self.x_built) ** 2, axis=1))) if len(chosen) else 0.0
+            shifted = (float(np.max(np.sum((self.vertices - self.vertices_built) ** 2, axis=1)))
+                       if self.moving else 0.0)
+            if moved <= half_skin ** 2 and shifted <= half_skin ** 2:
+                return
+        skin = sim.neighbor.skin
+        reach = radius + skin
+        farthest = float(reach[chosen].max()) if len(chosen) else skin
+        corners = self.vertices[self.triangles]
+        box_lo, box_hi = corners.min(axis=1), corners.max(axis=1)
+        grid_lo = box_lo.min(axis=0) - farthest
+        extent = box_hi.max(axis=0) + farthest - grid_lo
+        size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS)
+        nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
+        cell = extent / nbins
+        start, members = bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, farthest)
+        self.offsets, self.candidates = candidate_triangles(
+            p.x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, start, members)
+        self.x_built = x
+        self.vertices_built = self.vertices.copy()
+        self.stale = False
+        self.builds += 1
+
+    # ---- hooks ----
+    def setup(self, sim):
+        p = sim.particles
+        if not p.has("radius"):
+            raise ScriptError(f"fix {self.id} (wall/mesh) needs particle radii (particle_style sphere)")
+        chosen = sim.groups.select(sim, self.group)
+        self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
+        self.builds = 0
+        self.stale = True
+        self._forces(sim, update=False)
+
+    def pre_neighbor(self, sim):
+        # the candidate lists name particles by index: re-sorting or migration makes them stale
+        p = sim.particles
+        if (p.nlocal != self.nlocal_built
+                or not np.array_equal(p.tag[self.chosen], self.tags_built)):
+            self.stale = True
+
+    def post_force(self, sim):
+        self.elapsed += sim.dt
+        self._forces(sim, update=True)
+
+    def _forces(self, sim, update):
+        p = sim.particles
+        if self.stale:
+            self.chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+            self.nlocal_built = p.nlocal
+            self.tags_built = p.tag[self.chosen].copy()
+        if self.moving:
+            self._place()
+        radius = p.radius
+        self._rebuild_if_needed(sim, self.chosen, radius)
+        rotation = p.has("omega") and p.has("torque")
+        omega = p.omega if rotation else p.v
+        torque = p.torque if rotation else p.f
+        bad = mesh_wall_forces(self.chosen, self.offsets, self.candidates, p.x, self.vertices,
+                               self.triangles, self.face_normal, radius, observables.masses(sim),
+                               p.v, omega, p.f, torque, rotation, self.history.partner,
+                               self.history.values, *self.law.kernel_args(), sim.dt, update,
+                               self.velocity, self.spin, self.pivot, self.belt, self.conveyor)
+        if bad >= 0:
+            self.history.overflowed(p.tag[bad])

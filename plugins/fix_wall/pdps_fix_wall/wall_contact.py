@@ -1,0 +1,215 @@
+r"""What every granular wall of this package shares: the contact law's parameters read from script
+words, and the numba kernel that turns one particle's wall contacts into force and torque, keeping
+each contact's tangential history.
+
+A wall is body j of infinite mass and radius, so the shared laws of ``pdps_core.contact_models`` take
+:math:`m^* = m_i` and :math:`R^* = R_i`. For a contact at distance :math:`d` from the surface, with unit
+normal :math:`\mathbf{n}` from the surface to the centre of particle i and overlap
+:math:`\delta = R_i - d > 0`, the relative velocity of the contact points is
+
+.. math::
+
+    \mathbf{v} = \mathbf{v}_i + \boldsymbol{\omega}_i \times (-R_i\mathbf{n}) - \mathbf{v}_w(\mathbf{p})
+
+with :math:`\mathbf{v}_w(\mathbf{p})` the wall's velocity at the contact point :math:`\mathbf{p}`. The
+force :math:`\mathbf{F}` of the law acts on i, and the torque is :math:`(-R_i\mathbf{n})\times\mathbf{F}`
+(lever arm :math:`R_i`, as LAMMPS's fix wall/gran).
+
+History: each contact keeps its tangential spring (3 values) and its last normal (3 values) in a
+``ContactHistory`` keyed by the wall element's id. A contact that opens in the same step as another
+of the same wall closes, with a normal within about 6 degrees of it, takes over its spring: a sphere
+rolling from one triangle of a tessellated surface onto the next keeps its static friction.
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ScriptError, contact_models
+
+LSD, HERTZ = 0, 1
+HISTORY_WIDTH = 6           # tangential spring (3) and the contact's last normal (3)
+TRANSFER_COS = 0.995        # a new contact whose normal is this close to one just ended continues it
+
+
+class ContactLaw:
+    """The wall's contact law as plain numbers for the kernel.
+
+    lsd: ``kn``, ``cn``, ``kt``, ``ct``, ``mu``; when the damping comes from a restitution coefficient
+    ``e``, ``cn`` and ``ct`` are per unit square-root mass and ``per_mass`` is set (C_n = 2 zeta
+    sqrt(kn m), so C_n(m) = C_n(1) sqrt(m)). hertz: ``e_star``, ``g_star``, ``beta``, ``mu``.
+    """
+
+    def __init__(self, model, *, kn=0.0, cn=0.0, kt=0.0, ct=0.0, mu=0.0, per_mass=False,
+                 e_star=0.0, g_star=0.0, beta=0.0, restitution=None):
+        self.model = model
+        self.kn, self.cn, self.kt, self.ct, self.mu = kn, cn, kt, ct, mu
+        self.per_mass = per_mass
+        self.e_star, self.g_star, self.beta = e_star, g_star, beta
+        self.restitution = restitution
+
+    @classmethod
+    def lsd(cls, kn, mu, *, e=None, cn=None, kt=None, ct=None):
+        """Linear spring-dashpot. With ``cn``, ``kt``, ``ct``: as written (PDPS). With only ``e``:
+        C_n from e for m* = m_i, and LAMMPS's defaults k_t = 2/7 k_n, C_t = C_n / 2."""
+        if cn is not None:
+            return cls(LSD, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu, restitution=e)
+        unit = contact_models.lsd_damping(kn, 1.0, e)
+        return cls(LSD, kn=kn, cn=unit, kt=2.0 / 7.0 * kn, ct=0.5 * unit, mu=mu, per_mass=True,
+                   restitution=e)
+
+    @classmethod
+    def hertz(cls, youngs, poisson, e, mu):
+        """Hertz-Mindlin with wall and particles of one material (LIGGGHTS's effective moduli for
+        two bodies of Young's modulus Y and Poisson ratio nu): E* = Y / (2 (1 - nu^2)),
+        G* = Y / (4 (2 - nu)(1 + nu))."""
+        e_star = youngs / (2.0 * (1.0 - poisson * poisson))
+        g_star = youngs / (4.0 * (2.0 - poisson) * (1.0 + poisson))
+        return cls(HERTZ, e_star=e_star, g_star=g_star, beta=contact_models.restitution_beta(e),
+                   mu=mu, restitution=e)
+
+    def kernel_args(self):
+        return (self.model, self.kn, self.cn, self.kt, self.ct, self.mu, self.per_mass,
+                self.e_star, self.g_star, self.beta)
+
+    def check_timestep(self, sim, fix, masses):
+        """Warn when the time step resolves a linear contact with fewer than 10 steps."""
+        if self.model != LSD:
+            return
+        m = sim.comm.min(float(np.min(masses)) if len(masses) else math.inf)
+        if not math.isfinite(m):
+            return
+        cn = self.cn * math.sqrt(m) if self.per_mass else self.cn
+        if self.kn / m <= (cn / (2.0 * m)) ** 2:
+            return          # overdamped: no rebound to resolve
+        duration = contact_models.lsd_contact_time(self.kn, cn, m)
+        if sim.dt > duration / 10.0:
+            sim.warn(f"fix {fix.id} ({fix.name}): timestep {sim.dt:g} resolves a wall contact of the "
+                     f"lightest particle (mass {m:.4g}, duration {duration:.4g}) with fewer than 10 "
+                     f"steps; use timestep <= {duration / 50.0:.3g} for accurate rebounds")
+
+
+def read_numbers(words, what):
+    values = []
+    for word in words:
+        try:
+            value = float(word)
+        except ValueError:
+            raise ScriptError(f"{what} must be a number (got {word})") from None
+        if not math.isfinite(value):
+            raise ScriptError(f"{what} must be a finite number (got {word})")
+        values.append(value)
+    return values
+
+
+def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
+    """Ranges a user gets told about by name."""
+    if e is not None and not 0.0 < e <= 1.0:
+        raise ScriptError(f"e must be in (0, 1] (got {e:g})")
+    if kn is not None and not kn > 0.0:
+        raise ScriptError(f"kn must be > 0 (got {kn:g})")
+    for name, value in (("Cn", cn), ("kt", kt), ("Ct", ct), ("mu", mu)):
+        if value is not None and value < 0.0:
+            raise ScriptError(f"{name} must be >= 0 (got {value:g})")
+
+
+@njit(cache=True)
+def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
+                           v, omega, f, torque, rotation, partner, values,
+                           model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
+                           used, slots):
+    """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
+    surface, normal from surface to centre, element key, wall velocity at the contact point).
+    Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
+    taken over, closed); without it (setup) forces use the stored springs and change nothing.
+    Returns False when particle i has no free history slot."""
+    width = HISTORY_WIDTH
+    capacity = partner.shape[1]
+    for s in range(capacity):
+        used[s] = False
+    # contacts already known keep their slot
+    for c in range(start, end):
+        slots[c - start] = -1
+        if distance[c] < reach:
+            s = -1
+            for k in range(capacity):
+                if partner[i, k] == key[c]:
+                    s = k
+            slots[c - start] = s
+            if s >= 0:
+                used[s] = True
+    if update:
+        # a new contact continues one that just ended with nearly the same normal
+        for c in range(start, end):
+            if distance[c] < reach and slots[c - start] < 0:
+                best, best_cos = -1, TRANSFER_COS
+                for k in range(capacity):
+                    if partner[i, k] >= 0 and not used[k]:
+                        cos = (normal[c, 0] * values[i, k * width + 3]
+                               + normal[c, 1] * values[i, k * width + 4]
+                               + normal[c, 2] * values[i, k * width + 5])
+                        if cos > best_cos:
+                            best, best_cos = k, cos
+                if best >= 0:
+                    partner[i, best] = key[c]
+                    used[best] = True
+                    slots[c - start] = best
+        # contacts that ended free their slot, then the remaining new ones open one
+        for k in range(capacity):
+            if partner[i, k] >= 0 and not used[k]:
+                partner[i, k] = -1
+        for c in range(start, end):
+            if distance[c] < reach and slots[c - start] < 0:
+                s = -1
+                for k in range(capacity):
+                    if partner[i, k] < 0:
+                        s = k
+                        break
+                if s < 0:
+                    return False
+                partner[i, s] = key[c]
+                for h in range(width):
+                    values[i, s * width + h] = 0.0
+                used[s] = True
+                slots[c - start] = s
+    n = np.empty(3)
+    rel = np.empty(3)
+    force = np.empty(3)
+    spring = np.zeros(3)
+    for c in range(start, end):
+        overlap = reach - distance[c]
+        if overlap <= 0.0:
+            continue
+        for d in range(3):
+            n[d] = normal[c, d]
+            rel[d] = v[i, d] - wall_velocity[c, d]
+            force[d] = 0.0
+        if rotation:
+            # omega x (-R n) is R (n x omega)
+            rel[0] += reach * (n[1] * omega[i, 2] - n[2] * omega[i, 1])
+            rel[1] += reach * (n[2] * omega[i, 0] - n[0] * omega[i, 2])
+            rel[2] += reach * (n[0] * omega[i, 1] - n[1] * omega[i, 0])
+        s = slots[c - start]
+        if update:
+            shear = values[i, s * width:s * width + 3]
+            for d in range(3):
+                values[i, s * width + 3 + d] = n[d]
+        else:
+            for d in range(3):
+                spring[d] = values[i, s * width + d] if s >= 0 else 0.0
+            shear = spring
+        if model == LSD:
+            root_mass = math.sqrt(mass) if per_mass else 1.0
+            contact_models.lsd_contact(overlap, n, rel, shear, kn, cn * root_mass, kt,
+                                       ct * root_mass, mu, dt, False, force)
+        else:
+            contact_models.hertz_contact(overlap, n, rel, shear, e_star, g_star, reach, mass, beta,
+                                         mu, dt, False, force)
+        for d in range(3):
+            f[i, d] += force[d]
+        if rotation:
+            torque[i, 0] -= reach * (n[1] * force[2] - n[2] * force[1])
+            torque[i, 1] -= reach * (n[2] * force[0] - n[0] * force[2])
+            torque[i, 2] -= reach * (n[0] * force[1] - n[1] * force[0])
+    return True
