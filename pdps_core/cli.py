@@ -1,6 +1,7 @@
 """The ``pdps`` command.
 
-    pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--debug]
+    pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--no-progress] [--debug]
+    pdps plot LOG [-o PNG] [--columns COLUMN...]   thermo columns against step, one panel each
     pdps styles                 every installed style, by kind, with the distribution that provides it
     pdps doc KIND STYLE         a style's documentation (imports only that style)
     pdps new-plugin NAME        a working, tested plugin skeleton in plugins/fix_NAME
@@ -21,7 +22,14 @@ def _parser():
     run.add_argument("-var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
                      help="define an index variable, as LAMMPS's -var")
     run.add_argument("-log", default="log.pdps", help="log file (default log.pdps; none for no log)")
+    run.add_argument("--no-progress", action="store_true",
+                     help="no progress line (percent done, steps/s, time left) on stderr")
     run.add_argument("--debug", action="store_true", help="show the traceback of an error")
+    plot = sub.add_parser("plot", help="plot thermo columns against step into a PNG")
+    plot.add_argument("log", help="a thermo CSV (log.pdps.csv) or a log file (its thermo tables)")
+    plot.add_argument("-o", dest="output", metavar="PNG", help="the PNG to write (default LOG.png)")
+    plot.add_argument("--columns", nargs="+", metavar="COLUMN",
+                      help="header names (Temp) or thermo keywords (temp); default: all but Step")
     sub.add_parser("styles", help="list installed styles without importing them")
     doc = sub.add_parser("doc", help="show a style's documentation")
     doc.add_argument("kind", choices=["pair", "fix", "compute", "analyze", "dump", "region"])
@@ -40,7 +48,20 @@ def main(argv=None):
         return _doc(args.kind, args.style)
     if args.action == "new-plugin":
         return _new_plugin(args.name, args.dir)
+    if args.action == "plot":
+        return _plot(args)
     return _run(args)
+
+
+def _plot(args):
+    from .output.plot import plot_thermo
+    try:
+        path = plot_thermo(args.log, args.output, args.columns)
+    except ScriptError as exc:
+        print(f"ERROR: {exc}", file=sys.stderr)
+        return 1
+    print(path)
+    return 0
 
 
 def _new_plugin(name, directory):
@@ -86,10 +107,12 @@ def _run(args):
     sim = None
     try:
         sim = Simulation(log=log, variables=dict(args.var))
+        if args.no_progress:
+            sim.output.progress = None
         sim.file(args.script)
         return 0
     except ScriptError as exc:
-        _fail(sim, f"ERROR: {exc}", args.debug)
+        _fail(sim, f"ERROR: {exc}", args.debug, alone=_found_alone(sim, exc))
         return 1
     except KeyboardInterrupt:
         _fail(sim, "ERROR: interrupted", args.debug)
@@ -105,11 +128,25 @@ def _run(args):
             sim.close()
 
 
-def _fail(sim, message, debug):
+def _found_alone(sim, exc):
+    """True for an error one rank of a parallel run found by itself (the others would wait)."""
+    from .errors import SimulationError
+    parallel = sim is not None and sim.comm.nprocs > 1
+    return parallel and isinstance(exc, SimulationError) and not getattr(exc, "agreed", False)
+
+
+def _fail(sim, message, debug, alone=False):
+    """Print the error once: every rank of a parallel run meets a script error, rank 0 reports it;
+    an error one rank found alone is reported by that rank, which then stops all of them."""
     if debug:
         traceback.print_exc()
     message = " ".join(message.splitlines())      # one line, whatever a style put in its message
+    if sim is not None and not sim.comm.is_root and not alone:
+        return
     print(message, file=sys.stderr)
+    if alone:
+        sys.stderr.flush()
+        sim.comm.world.Abort(1)
     if sim is not None and sim.output.log is not None:
         print(message, file=sim.output.log)
         sim.output.log.flush()

@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from .comm.serial import SerialComm
+from .comm import world
 from .commands import COMMANDS
 from .errors import ScriptError
 from .neighbor.neighbor import Neighbor
@@ -45,7 +45,7 @@ class Simulation:
         self.lattice = None
         self.particles = Particles()
         self.neighbors = Neighbor(skin=0.3)
-        self.comm = comm if comm is not None else SerialComm()
+        self.comm = comm if comm is not None else world()
         self.processors = None
         self.groups = Groups()
         self.regions = {}
@@ -327,7 +327,8 @@ class Simulation:
             raise ScriptError(f"mass is not set for type {unset[0]} (use the mass command)")
 
     def _report(self, nsteps, loop, total):
-        n = self.particles.nlocal
+        n = int(self.comm.sum(self.particles.nlocal))
+        loop = float(self.comm.max(loop))
         message = self.output.message
         message(f"Loop time of {loop:.6g} on {self.comm.nprocs} procs for {nsteps} steps with {n} particles")
         if loop > 0 and nsteps:

@@ -26,6 +26,7 @@ def _sum_onto_owners(values, source, nlocal):
 class SerialComm:
     nprocs = 1
     rank = 0
+    is_root = True
 
     def __init__(self):
         self.ghost_source = np.zeros(0, dtype=np.int64)
@@ -95,6 +96,25 @@ class SerialComm:
             return
         for name in names:
             _sum_onto_owners(p.arrays[name], self.ghost_source, p.nlocal)
+
+    def set_grid(self, fixed):
+        """Validated by the processors command: on one rank every factor is 1."""
+
+    def distribute(self, particles, box):
+        """Every particle created belongs to the only rank."""
+
+    def gather_rows(self, rows):
+        return rows
+
+    def allgather_rows(self, rows):
+        return rows
+
+    def agree(self, message):
+        """The MPI version agrees across ranks; on one rank a message is simply the error."""
+        if message:
+            error = SimulationError(message)
+            error.agreed = True
+            raise error
 
     # global reductions: identity on one rank, the MPI version sums over ranks
     def sum(self, value):

@@ -88,6 +88,7 @@ def create_particle(sim, args):
             dmin = number(rest[4], "overlap", low=0.0) if len(rest) == 5 else 0.0
         x = _random_no_overlap(sim, n, region, dmin, seed)
     sim.particles.add(x, ptype, **_sphere_values(sim, keywords))
+    sim.comm.distribute(sim.particles, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Created {len(x)} particles")
 
@@ -173,7 +174,8 @@ def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
     def add(p):
         grid.setdefault(cell_of(p), []).append(p)
 
-    for p in sim.particles.x[: sim.particles.nlocal].tolist():
+    # every rank places the same particles: each must see all existing ones, not only its own
+    for p in sim.comm.allgather_rows(sim.particles.x[: sim.particles.nlocal]).tolist():
         add(p)
     placed, misses = [], 0
     while len(placed) < n:
@@ -321,5 +323,6 @@ def read_data(sim, args):
     p.next_tag = int(data.tags.max()) + 1 if len(data.tags) else p.next_tag
     if data.velocities is not None:
         p.v[start:] = data.velocities
+    sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Read {len(data.tags)} particles from {args[0]}")

@@ -135,6 +135,7 @@ def processors(sim, args):
     if nprocs % fixed:
         raise ScriptError(f"processor grid {' '.join(args)} cannot divide {nprocs} rank(s)")
     sim.processors = tuple(grid)
+    sim.comm.set_grid(sim.processors)
 
 
 @command("integrate", "run_style")

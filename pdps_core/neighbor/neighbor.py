@@ -12,6 +12,12 @@ A style asks for a list with ``Neighbor.request``; a scene with no request build
 Owned particles are re-sorted by cell every ``sort_every`` steps at a rebuild (LAMMPS's
 ``atom_modify sort``, default 1000), so neighbors sit close in memory. Per-particle state a style
 keeps must therefore live in ``particles.request(...)`` arrays, which move with their particles.
+
+Resuming. The rebuild schedule (``ago``, ``xhold``) and the lists carry over from one run to the next
+(and through a restart file): when nothing that the lists depend on has changed since the last run
+ended, the next run re-creates the lists of the last build from ``xhold`` instead of wrapping, sorting
+and building afresh (``can_resume``). Wrapping or sorting at a run's start would change positions and
+summation order in the last bits, so only this makes ``run N`` + ``run M`` follow ``run N+M``.
 """
 
 from dataclasses import dataclass, field
@@ -52,6 +58,8 @@ class Neighbor:
         self.sort_every = 1000
         self.last_sort = None
         self._capacity = 0
+        self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
+        self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
 
     def modify(self, every=None, delay=None, check=None):
         if every is not None:
@@ -83,20 +91,21 @@ class Neighbor:
         return max(float(r.cutoff.max()) for r in self.requests) + self.skin
 
     # ---- rebuild decision ---------------------------------------------------------------------
-    def decide(self, particles):
+    def decide(self, particles, comm):
         """Called once per step before forces: True when particles must be re-wrapped and the lists
         rebuilt now. Without any list it still decides when to wrap, so lost particles are caught."""
         self.ago += 1
         if self.ago < self.delay or self.ago % self.every:
             return False
-        moved_sq, who = max_displacement_sq(particles.x, self.xhold, len(self.xhold))
-        self.moved = (float(np.sqrt(moved_sq)), who)
+        local_sq, who = max_displacement_sq(particles.x, self.xhold, len(self.xhold))
+        self.moved = (float(np.sqrt(local_sq)), who)          # this rank's, for naming a particle
+        moved_sq = comm.max(local_sq)                          # every rank decides alike
         if self.check:
             limit = 0.5 * self.skin
             if moved_sq <= limit * limit:
                 return False
             if self.requests and moved_sq > self.skin * self.skin:
-                self.overrun = max(self.overrun, self.moved[0])
+                self.overrun = max(self.overrun, float(np.sqrt(moved_sq)))
         if self.ago == max(self.every, self.delay) and self.check:
             self.dangerous += 1
         return True
@@ -117,12 +126,47 @@ class Neighbor:
         cell, _, order = bin_particles(particles.x, particles.nlocal, box.lo, box.length / nbins, nbins)
         return order
 
+    # ---- resuming -------------------------------------------------------------------------------
+    def mark_current(self, particles):
+        """The lists and the rebuild schedule are current for these particles (a run ended, or a
+        restart is written): remember their positions and order, so the next run can resume."""
+        n = particles.nlocal
+        self.current_for = (particles.x[:n].copy(), particles.tag[:n].copy())
+
+    def is_current(self, particles):
+        """True when no particle moved, appeared, vanished or changed place since ``mark_current``."""
+        if self.current_for is None or self.xhold is None:
+            return False
+        x, tag = self.current_for
+        n = particles.nlocal
+        return (len(tag) == n and len(self.xhold) == n and np.array_equal(particles.tag[:n], tag)
+                and np.array_equal(particles.x[:n], x))
+
+    def can_resume(self, particles, box):
+        """Called at the start of a run, after the styles made their requests: True when the lists of
+        the last build are still right (same particles, positions, box, skin and cutoffs), so the run
+        continues the schedule instead of starting afresh. Answers once per mark."""
+        current = self.is_current(particles)
+        self.current_for = None
+        if not current or self.built_with is None:
+            return False
+        skin, lists, lo, hi, periodic = self.built_with
+        return (skin == self.skin and np.array_equal(lo, box.lo) and np.array_equal(hi, box.hi)
+                and periodic == box.periodic and len(lists) == len(self.requests)
+                and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
+                        for (kind, cutoff), r in zip(lists, self.requests)))
+
     # ---- build ----------------------------------------------------------------------------------
-    def build(self, particles, box):
-        """Build every requested list; with none, only remember positions for the next decision."""
+    def build(self, particles, box, resume=False):
+        """Build every requested list; with none, only remember positions for the next decision.
+        ``resume``: owned positions are ``xhold`` and the lists of the last build are made again;
+        the rebuild schedule goes on."""
         p = particles
-        self.xhold = p.x[:p.nlocal].copy()
-        self.ago = 0
+        if not resume:
+            self.xhold = p.x[:p.nlocal].copy()
+            self.ago = 0
+        self.built_with = (self.skin, [(r.kind, r.cutoff.copy()) for r in self.requests],
+                           box.lo.copy(), box.hi.copy(), box.periodic)
         if not self.requests:
             return
         x, nall, nlocal = p.x, p.nall, p.nlocal

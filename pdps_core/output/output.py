@@ -1,21 +1,31 @@
-"""Everything a run writes: the screen, the log file, thermo lines and dumps.
+"""Everything a run writes: the screen, the log file, thermo lines and their CSV copy, dumps, and
+the progress line.
 
-The log file gets every command as it is read, the thermo table and the timing table; both the log
-and each dump are flushed at every output step, so a run that stops loses nothing already written.
+The log file gets every command as it is read, the thermo table and the timing table; the log, its
+CSV copy (see ``thermo_csv``) and each dump are flushed at every output step, so a run that stops
+loses nothing already written. Progress goes to stderr (see ``progress``).
 """
 
 import sys
 import time
 
+from .progress import Progress
 from .thermo import Thermo
+from .thermo_csv import ThermoCSV
 
 
 class Output:
     def __init__(self, sim, screen=None, log=None):
         self.sim = sim
-        self.screen = sys.stdout if screen is None else screen
+        # in a parallel run every rank computes what is written, rank 0 alone writes it
+        self.root = sim.comm.is_root
+        self.screen = (sys.stdout if screen is None else screen) if self.root else False
         self.log = None
         self.thermo = Thermo(sim)
+        self.csv = ThermoCSV()
+        self.csv_follows_log = True
+        # a silent simulation (and every rank but 0) shows no progress
+        self.progress = None if self.screen is False else Progress()
         self.dumps = {}
         if log:
             self.open_log(log)
@@ -23,15 +33,27 @@ class Output:
     # ---- screen and log -------------------------------------------------------------------------
     def open_log(self, path):
         self.close_log()
-        self.log = open(path, "w")
+        if self.root:
+            self.log = open(path, "w")
+            if self.csv_follows_log:
+                self.csv.use(f"{path}.csv")
 
     def close_log(self):
         if self.log is not None:
             self.log.close()
             self.log = None
+        if self.csv_follows_log:
+            self.csv.use(None)
+
+    def thermo_csv(self, path):
+        """The thermo CSV at ``path`` from the next run on (None: none), wherever the log goes."""
+        self.csv_follows_log = False
+        self.csv.use(path if self.root else None)
 
     def message(self, text):
         if self.screen is not False:
+            if self.progress is not None:
+                self.progress.clear()
             print(text, file=self.screen)
         if self.log is not None:
             print(text, file=self.log)
@@ -42,8 +64,11 @@ class Output:
             print(text, file=self.log)
 
     def flush(self):
+        if self.progress is not None:
+            self.progress.clear()
         if self.log is not None:
             self.log.flush()
+        self.csv.flush()
         if self.screen not in (None, False):
             self.screen.flush()
 
@@ -65,7 +90,12 @@ class Output:
     # ---- writing --------------------------------------------------------------------------------
     def setup(self, step, last):
         self.thermo.validate()
+        begun = self.csv.start(self.thermo.names())
+        if begun:
+            self.message(f"thermo columns changed: the thermo CSV goes on in {begun}")
         self.message(self.thermo.header())
+        if self.progress is not None:
+            self.progress.start(step, last)
         self.write(step, last)
 
     def write(self, step, last):
@@ -78,10 +108,14 @@ class Output:
                 dump.last_step = step
                 wrote = True
         if self.thermo.due(step, self.sim.run_first_step, last):
-            self.message(self.thermo.line())
+            values = self.thermo.values()
+            self.message(self.thermo.line(values))
+            self.csv.row(values, self.thermo.integer())
             wrote = True
         if wrote:
             self.flush()
+        if self.progress is not None:
+            self.progress.update(step)
         self.sim.timers.stage["Output"] += time.perf_counter() - t0
 
     def close(self):
@@ -89,6 +123,7 @@ class Output:
             dump.close()
         self.flush()
         self.close_log()
+        self.csv.close()
 
 
 def analyze_needs(sim, analyze, step):

@@ -1,6 +1,8 @@
 """The timestep loop (LAMMPS's Verlet): setup once per run, then the hook sequence every step.
 
     setup:  exchange, borders, build neighbors, force_clear, pair, reverse_comm, fix setup
+            (or, when nothing changed since the last run ended or since the restart it was read
+            from: the lists of the last build made again, and no wrap or sort; Neighbor.can_resume)
     step:   initial_integrate, post_integrate,
             rebuild? pre_exchange, exchange, borders, pre_neighbor, build : forward_comm
             force_clear, pre_force, pair, reverse_comm, post_force, final_integrate, end_of_step,
@@ -88,8 +90,11 @@ class Verlet:
         sim.groups.update(sim)
         self._register_hooks()
 
-        sim.comm.exchange(particles, sim.box, sim.step)
-        self._reneighbor()
+        if sim.neighbor.can_resume(particles, sim.box):
+            self._resume_lists()
+        else:
+            sim.comm.exchange(particles, sim.box, sim.step)
+            self._reneighbor()
         # styles with history read it without advancing it during the setup forces (LAMMPS setupflag)
         sim.in_setup = True
         try:
@@ -111,6 +116,21 @@ class Verlet:
         sim.neighbor.build(particles, sim.box)
         t2 = time.perf_counter()
         sim.timers.stage["Neigh"] += t2 - t1
+
+    def _resume_lists(self):
+        """The lists of the last build, made again from the positions they were built with (xhold),
+        then the current positions put back: the run goes on as if the previous one had not ended."""
+        sim, particles = self.sim, self.sim.particles
+        n = particles.nlocal
+        t0 = time.perf_counter()
+        current = particles.x[:n].copy()
+        particles.x[:n] = sim.neighbor.xhold
+        sim.comm.borders(particles, sim.box, sim.neighbor.cutghost())
+        sim.neighbor.build(particles, sim.box, resume=True)
+        particles.x[:n] = current
+        sim.comm.forward_comm(particles, self.forward)
+        sim.timers.stage["Neigh"] += time.perf_counter() - t0
+        self._call("pre_neighbor")
 
     def _forces(self, eflag, vflag):
         sim, particles = self.sim, self.sim.particles
@@ -142,15 +162,17 @@ class Verlet:
     def _check_finite(self):
         particles = self.sim.particles
         n = particles.nlocal
+        message = None
         for name in ("x", "f"):
             values = particles.arrays[name][:n]
             if not np.isfinite(values).all():
                 i = int(np.flatnonzero(~np.isfinite(values).all(axis=1))[0])
                 what = "position" if name == "x" else "force"
-                raise SimulationError(
-                    f"particle {int(particles.tag[i])} has a non-finite {what} "
-                    f"({', '.join(f'{c:.6g}' for c in values[i])}) at step {self.sim.step}; "
-                    "the run is unstable (time step too large or particles overlapping?)")
+                message = (f"particle {int(particles.tag[i])} has a non-finite {what} "
+                           f"({', '.join(f'{c:.6g}' for c in values[i])}) at step {self.sim.step}; "
+                           "the run is unstable (time step too large or particles overlapping?)")
+                break
+        self.sim.comm.agree(message)
 
     def _check_runaway(self, step):
         """A particle that crossed half the box between two neighbor decisions has no meaningful
@@ -158,11 +180,12 @@ class Verlet:
         sim = self.sim
         distance, i = sim.neighbor.moved
         half_box = 0.5 * float(sim.box.length[: sim.dimension].min())
-        if distance > half_box:
-            raise SimulationError(
-                f"particle {int(sim.particles.tag[i])} moved {distance:.3g} since the last neighbor "
-                f"list build, more than half the box ({half_box:g}), at step {step}: the run has "
-                "blown up (time step too large or forces too strong?)")
+        message = None
+        if distance > half_box and i >= 0:
+            message = (f"particle {int(sim.particles.tag[i])} moved {distance:.3g} since the last neighbor "
+                       f"list build, more than half the box ({half_box:g}), at step {step}: the run has "
+                       "blown up (time step too large or forces too strong?)")
+        sim.comm.agree(message)
 
     # ---- steps ----------------------------------------------------------------------------------
     def run(self, nsteps):
@@ -176,7 +199,7 @@ class Verlet:
             eflag, vflag = sim.output.flags(step, last)
             self._call("initial_integrate")
             self._call("post_integrate")
-            if sim.neighbor.decide(particles):
+            if sim.neighbor.decide(particles, sim.comm):
                 self._check_runaway(step)
                 if sim.neighbor.overrun and not self.warned_overrun:
                     self.warned_overrun = True
@@ -198,4 +221,9 @@ class Verlet:
             self._call("final_integrate")
             self._call("end_of_step")
             sim.output.write(step, last)
+            if sim.restart_output is not None:
+                t0 = time.perf_counter()
+                sim.restart_output.write(sim, step)
+                sim.timers.stage["Output"] += time.perf_counter() - t0
+        sim.neighbor.mark_current(particles)
         self._call("post_run")

@@ -48,7 +48,7 @@ def temperature(sim, group="all"):
 def virial_trace(sim):
     """sum_i r_i . f_i over the box's dimensions (x, y and, in 3-d, z)."""
     sim.require_virial()
-    return float(sum(sim.virial[: sim.dimension]))
+    return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension]))))
 
 
 def pressure(sim, temp=None, temp_group="all"):

@@ -128,6 +128,44 @@ class Particles:
         self.arrays["x"][self.nlocal:] += shift
         self.nghost = len(source)
 
+    # ---- rows: every per-atom value of a particle as one float64 row (migration, ghosts) ----------
+    def row_width(self):
+        return sum(prop.width for prop in self.properties.values())
+
+    def pack(self, index):
+        """Rows of all per-atom values of the particles ``index``, in property order; every rank
+        requests properties in script order, so the layout agrees between ranks."""
+        rows = np.empty((len(index), self.row_width()))
+        column = 0
+        for name, prop in self.properties.items():
+            values = self.arrays[name][index]
+            rows[:, column:column + prop.width] = values.reshape(len(index), prop.width)
+            column += prop.width
+        return rows
+
+    def _unpack(self, rows):
+        column, out = 0, {}
+        for name, prop in self.properties.items():
+            block = rows[:, column:column + prop.width]
+            values = block.astype(prop.dtype)
+            out[name] = values if prop.width > 1 else values[:, 0]
+            column += prop.width
+        return out
+
+    def append_owned(self, rows):
+        """Particles arriving from another rank become owned (ghosts are cleared first)."""
+        self.clear_ghosts()
+        for name, values in self._unpack(rows).items():
+            self.arrays[name] = np.concatenate([self.arrays[name], values])
+        self.nlocal += len(rows)
+
+    def set_ghost_rows(self, rows):
+        """Replace the ghosts by particles received as rows."""
+        self.clear_ghosts()
+        for name, values in self._unpack(rows).items():
+            self.arrays[name] = np.concatenate([self.arrays[name], values])
+        self.nghost = len(rows)
+
     # ---- lookup ---------------------------------------------------------------------------------
     def index_of_tag(self, tag):
         hits = np.flatnonzero(self.arrays["tag"][: self.nlocal] == tag)

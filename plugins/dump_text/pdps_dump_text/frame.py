@@ -18,10 +18,12 @@ class TextDump(Dump):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         self.path = args.file
-        try:
-            self.handle = open(self.path, "w")
-        except OSError as exc:
-            raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+        self.handle = None
+        if sim.comm.is_root:           # rank 0 alone writes
+            try:
+                self.handle = open(self.path, "w")
+            except OSError as exc:
+                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
 
     def column_values(self, sim, chosen):
         """(list of 1-d arrays, list of printf formats), one per column."""
@@ -30,21 +32,26 @@ class TextDump(Dump):
     def write(self, sim):
         p, box = sim.particles, sim.box
         chosen = np.flatnonzero(sim.groups.select(sim, self.group))
-        chosen = chosen[np.argsort(p.tag[chosen], kind="stable")]
         values, formats = self.column_values(sim, chosen)
-        header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ATOMS\n{len(chosen)}\n",
+        # one float table, led by the tag to sort on: "%d" prints a float's integer part, and ids
+        # stay exact below 2**53; in a parallel run rank 0 gathers every rank's rows and writes
+        local = np.column_stack([p.tag[chosen].astype(np.float64)]
+                                + [np.asarray(column, dtype=np.float64) for column in values])
+        table = sim.comm.gather_rows(local.reshape(len(chosen), len(values) + 1))
+        if not sim.comm.is_root:
+            return
+        table = table[np.argsort(table[:, 0], kind="stable"), 1:]
+        header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ATOMS\n{len(table)}\n",
                   f"ITEM: BOX BOUNDS {box.bounds_label()}\n"]
         # shortest repr that reads back to the same double (LAMMPS prints 17 digits, %-1.16e)
         header += [f"{lo!r} {hi!r}\n" for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
         header.append(f"ITEM: ATOMS {' '.join(self.columns)}\n")
         rows = ""
-        if len(chosen):
-            # one float table: "%d" prints a float's integer part, and ids stay exact below 2**53
-            table = np.column_stack([np.asarray(column, dtype=np.float64) for column in values])
-            rows = ((" ".join(formats) + "\n") * len(chosen)) % tuple(table.ravel().tolist())
+        if len(table):
+            rows = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist())
         self.handle.write("".join(header) + rows)
         self.handle.flush()
 
     def close(self):
-        if not self.handle.closed:
+        if self.handle is not None and not self.handle.closed:
             self.handle.close()
