@@ -1,0 +1,300 @@
+r"""Analyze ``ave/time`` (also ``fix ave/time``): time averages of computes and variables.
+
+At every step :math:`n` that is a multiple of NFREQ, the average of NREPEAT samples taken NEVERY
+steps apart and ending at :math:`n`:
+
+.. math::
+
+    \bar{A}(n) = \frac{1}{N_\mathrm{repeat}} \sum_{k=0}^{N_\mathrm{repeat}-1} A(n - k\,N_\mathrm{every})
+
+taken element by element for vectors and arrays (an RDF's g(r) and coordination number at every r).
+NFREQ must be a multiple of NEVERY, and NREPEAT*NEVERY at most NFREQ (LAMMPS's fix ave/time rule);
+a run's first step is sampled when it is due, so ``1 1 N`` averages step 0 too.
+
+Values (any number, in the units of what they read):
+
+- ``c_ID``: a compute's scalar; for a compute that has only a vector, each of its elements; for one
+  that has only an array (``compute rdf``), the whole array, averaged element by element and written
+  as a block of rows (LAMMPS's ``mode vector``). Whole arrays are averaged on their own or with
+  arrays of as many rows, not with scalars.
+- ``c_ID[i]``, ``c_ID[i][j]``: one element (0-based, as everywhere in pdps); ``c_ID[*]``: every
+  element of the vector.
+- ``v_NAME``: a variable, read as a number.
+
+Keywords: ``file NAME`` writes each average to NAME (created when the command is read, written
+when the first average is complete, each block appended and closed at once, so nothing written is
+lost); ``mode scalar|vector`` as LAMMPS: in ``mode vector`` each value is a column (``c_ID``: the
+compute's vector, or every column of its array; ``c_ID[j]``: column j of its array; ``c_ID[*]``:
+every column).
+
+File format (LAMMPS's; numbers as ``%g``)::
+
+    # Time-averaged data for analyze ID            # one row per average
+    # TimeStep c_t v_s
+    100 1.0213 95
+    # Time-averaged data for analyze ID            # a block per average
+    # TimeStep Number-of-rows
+    # Row c_1[0] c_1[1] c_1[2]
+    100 50
+    1 0.025 0 0
+    ...
+
+Energy and the virial are computed on the sampled steps when a value needs them (a pressure or
+energy compute, any variable). The fix spelling cannot ask for them yet (the core asks analyze
+styles only): there, such values work on thermo steps only; use the analyze spelling.
+
+The last average is the style's output: ``scalar(sim)`` (one number), ``vector(sim)`` (one row or
+one column) and ``array(sim)`` (rows x columns); before the first average, 0 and empty arrays
+(LAMMPS gives 0). Scripts cannot read them yet: the core has no ``f_ID`` reference.
+
+Syntax::
+
+    analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]
+    fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]
+
+GROUP is not used (LAMMPS). Examples::
+
+    analyze 3 all ave/time 1 10000 10000 c_1 file Al-Al.rdf     # PDPS: c_1 a compute rdf
+    fix 4 all ave/time 10 5 100 c_t c_c[0] v_e file thermo.avg       # c_c a centroid
+    fix 5 all ave/time 100 1 100 c_rdf[*] file tmp.rdf mode vector
+"""
+
+import re
+
+import numpy as np
+
+from pdps_core.api import Analyze, Compute, Fix, ScriptError
+
+from .schedule import Schedule, ScheduleArgs
+
+REFERENCE = re.compile(r"^(c|v)_([A-Za-z0-9_]+)((?:\[(?:\d+|\*)\])*)$")
+KEYWORDS = ("file", "mode")
+
+
+def provides(compute, kind):
+    """Whether a compute defines ``scalar``, ``vector`` or ``array`` itself."""
+    return getattr(type(compute), kind) is not getattr(Compute, kind)
+
+
+class Value:
+    """One value of the command: ``read(sim)`` gives a rows x columns block; ``many_rows`` tells a
+    whole vector column or array (a block of rows per average) from a row of numbers."""
+
+    def __init__(self, word, read, many_rows, indexed_names, needs):
+        self.word, self.read, self.many_rows = word, read, many_rows
+        self.indexed_names = indexed_names      # columns named word[k] rather than word itself
+        self.needs = needs
+
+    def names(self, width):
+        if not self.indexed_names:
+            return [self.word]
+        stem = self.word.removesuffix("[*]")
+        return [f"{stem}[{k}]" for k in range(width)]
+
+
+class AveTime:
+    """What analyze ave/time and fix ave/time share (all of it)."""
+    Args = ScheduleArgs
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.rest)
+        # values run up to the first word that names no compute, fix or variable (LAMMPS)
+        first_option = next((k for k, w in enumerate(words) if w[:2] not in ("c_", "v_", "f_")), len(words))
+        value_words, options = words[:first_option], words[first_option:]
+        if not value_words and options and options[0] not in KEYWORDS:
+            raise ScriptError("value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME "
+                              f"(got {options[0]})")
+        self.path, self.mode = None, "scalar"
+        for k in range(0, len(options), 2):
+            word = options[k]
+            if word not in KEYWORDS:
+                raise ScriptError(f"unknown keyword {word} (known: {', '.join(KEYWORDS)})")
+            if k + 1 >= len(options):
+                raise ScriptError(f"keyword {word} needs a value")
+            if word == "file":
+                self.path = options[k + 1]
+            elif options[k + 1] in ("scalar", "vector"):
+                self.mode = options[k + 1]
+            else:
+                raise ScriptError(f"mode must be scalar or vector (got {options[k + 1]})")
+        if not value_words:
+            raise ScriptError("no values to average: give c_ID, c_ID[i], c_ID[i][j] or v_NAME "
+                              f"after nfreq; usage: {self.usage}")
+        self.values = [self._value(sim, word) for word in value_words]
+        self.many_rows = any(value.many_rows for value in self.values)
+        if self.many_rows and not all(value.many_rows for value in self.values):
+            single = next(v.word for v in self.values if not v.many_rows)
+            block = next(v.word for v in self.values if v.many_rows)
+            raise ScriptError(f"{block} is averaged as a block of rows and {single} as a single "
+                              f"number: average them in two {self.kind} commands")
+        self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
+        self.total = None           # sum of this window's samples
+        self.average = None         # the last complete average
+        self.columns = None         # column names, known from the first sample
+        self.header_written = False
+        self.root = sim.comm.rank == 0      # every rank averages, one writes
+        if self.path is not None and self.root:
+            try:
+                open(self.path, "w").close()
+            except OSError as exc:
+                raise ScriptError(f"cannot open {self.kind} {self.name} file {self.path}: "
+                                  f"{exc.strerror}") from None
+
+    # ---- what the values are ----------------------------------------------------------------------
+    def _value(self, sim, word):
+        if word.startswith("f_"):
+            raise ScriptError(f"a fix's or analyze's output cannot be read yet (got {word})")
+        match = REFERENCE.match(word)
+        if not match:
+            raise ScriptError(f"value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME (got {word})")
+        prefix, ident, brackets = match.groups()
+        indices = re.findall(r"\[(\d+|\*)\]", brackets)
+        if prefix == "v":
+            if indices or self.mode == "vector":
+                raise ScriptError(f"a variable is a single number: {word} cannot be indexed or used "
+                                  "in mode vector")
+            if ident not in sim.variables:
+                raise ScriptError(f"variable {ident} is not defined (value {word})")
+            # a variable may read anything, as thermo assumes
+            return Value(word, lambda s: np.array([[s.variables.value(ident)]]), False, False,
+                         lambda s: {"energy", "virial"})
+        return self._compute_value(sim, word, ident, indices)
+
+    def _compute_value(self, sim, word, ident, indices):
+        compute = sim.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"compute {ident} is not defined (value {word})")
+        star = indices == ["*"]
+        if "*" in indices and not star:
+            raise ScriptError(f"only c_ID[*] takes a wildcard (got {word})")
+        numbers = () if star else tuple(int(i) for i in indices)
+
+        def whole(s, part):
+            found = s.computes.get(ident)
+            if found is None:
+                raise ScriptError(f"compute {ident} is not defined (value {word} of {self.kind} {self.id})")
+            return np.asarray(getattr(found, part)(s), dtype=float)
+
+        def element(s):
+            return np.array([[s.compute_value(ident, numbers)]])
+
+        def column(s):
+            table = whole(s, "array")
+            if numbers[0] >= table.shape[1]:
+                raise ScriptError(f"{word} is out of range (compute {ident} has {table.shape[1]} columns)")
+            return table[:, numbers[0]:numbers[0] + 1]
+
+        def value(read, many_rows, indexed=False):
+            return Value(word, read, many_rows, indexed, lambda s: s.compute_needs(ident))
+
+        only_vector = not provides(compute, "scalar") and provides(compute, "vector")
+        only_array = not provides(compute, "scalar") and not provides(compute, "vector") \
+            and provides(compute, "array")
+        if self.mode == "vector":
+            if len(numbers) > 1:
+                raise ScriptError(f"mode vector averages columns: {word} is a single element")
+            if numbers:
+                return value(column, True)
+            if not star and provides(compute, "vector"):
+                return value(lambda s: whole(s, "vector")[:, None], True)
+            return value(lambda s: whole(s, "array"), True, indexed=True)
+        if numbers:
+            return value(element, False)
+        if star or only_vector:
+            return value(lambda s: whole(s, "vector")[None, :], False, indexed=True)
+        if only_array:
+            return value(lambda s: whole(s, "array"), True, indexed=True)
+        return value(element, False)
+
+    # ---- the timestep -----------------------------------------------------------------------------
+    def needs(self, step):
+        """Energy/virial for the computes read on a sampling step (output flags)."""
+        if step != self.schedule.due:
+            return set()
+        wanted = set()
+        for value in self.values:
+            wanted |= value.needs(self.sim)
+        return wanted
+
+    def setup(self, sim):
+        self.schedule.run_setup(sim.step)
+        self.end_of_step(sim)
+
+    def end_of_step(self, sim):
+        step = sim.step
+        if step != self.schedule.due:
+            return
+        sample = self._sample(sim)
+        if self.schedule.irepeat == 0:
+            self.total = np.zeros_like(sample)
+        elif sample.shape != self.total.shape:
+            raise ScriptError(f"{self.kind} {self.id} ({self.name}): the values changed shape from "
+                              f"{self.total.shape} to {sample.shape} within an average at step {step}")
+        self.total += sample
+        if self.schedule.advance(step):
+            self.average = self.total / self.schedule.nrepeat
+            self._write(step)
+
+    def _sample(self, sim):
+        blocks = [value.read(sim) for value in self.values]
+        rows = {block.shape[0] for block in blocks}
+        if len(rows) > 1:
+            sizes = ", ".join(f"{v.word} {b.shape[0]}" for v, b in zip(self.values, blocks))
+            raise ScriptError(f"values averaged together need as many rows (got {sizes})")
+        if self.columns is None:
+            self.columns = [name for v, b in zip(self.values, blocks) for name in v.names(b.shape[1])]
+        return np.hstack(blocks)
+
+    def _write(self, step):
+        if self.path is None or not self.root:
+            return
+        lines = []
+        if not self.header_written:
+            names = self.columns
+            lines.append(f"# Time-averaged data for {self.kind} {self.id}")
+            if self.many_rows:
+                lines += ["# TimeStep Number-of-rows", "# Row " + " ".join(names)]
+            else:
+                lines.append("# TimeStep " + " ".join(names))
+            self.header_written = True
+        if self.many_rows:
+            lines.append(f"{step} {self.average.shape[0]}")
+            lines += [f"{i + 1}" + "".join(" %g" % v for v in row)
+                      for i, row in enumerate(self.average.tolist())]
+        else:
+            lines.append(f"{step}" + "".join(" %g" % v for v in self.average[0].tolist()))
+        with open(self.path, "a") as handle:
+            handle.write("\n".join(lines) + "\n")
+
+    # ---- the averages as output -------------------------------------------------------------------
+    def scalar(self, sim):
+        if self.average is None:
+            return 0.0
+        if self.average.size != 1:
+            raise ScriptError(f"{self.kind} {self.id} ({self.name}) averages {self.average.size} "
+                              "numbers, not one: read one of them by index")
+        return float(self.average[0, 0])
+
+    def vector(self, sim):
+        if self.average is None:
+            return np.zeros(0)
+        if self.average.shape[0] == 1:
+            return self.average[0].copy()
+        if self.average.shape[1] == 1:
+            return self.average[:, 0].copy()
+        raise ScriptError(f"{self.kind} {self.id} ({self.name}) averages an array of shape "
+                          f"{self.average.shape}: read it as an array")
+
+    def array(self, sim):
+        return np.zeros((0, 0)) if self.average is None else self.average.copy()
+
+
+class AnalyzeAveTime(AveTime, Analyze):
+    name = "ave/time"
+    usage = "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"
+
+
+class FixAveTime(AveTime, Fix):
+    name = "ave/time"
+    usage = "fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"
