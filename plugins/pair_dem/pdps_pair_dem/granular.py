@@ -27,7 +27,10 @@ I\boldsymbol{\omega}` exactly (LAMMPS's gran/hooke/history uses the radii as arm
 History. The tangential spring :math:`\boldsymbol{\xi}` of a contact is kept on both particles in
 ``pdps_core.api.ContactHistory`` arrays, keyed by the partner's tag: i holds :math:`\boldsymbol{\xi}`
 (the spring acting on i), j holds :math:`-\boldsymbol{\xi}`, so either particle can compute the pair
-after a rebuild or a re-sort swaps their roles. A ghost partner's copy is written to its owner. A
+after a rebuild or a re-sort swaps their roles. A ghost partner's copy is written to its owner
+when that owner is on this rank; in a parallel run a partner owned by another rank is not mirrored,
+so a cross-rank contact whose computing side changes at a rebuild starts a fresh spring (LAMMPS
+sends the partner's copy back with a reverse communication; pdps does not yet). A
 contact not seen in a step's force computation (the spheres separated) has its slots freed at the end
 of that step. In the setup force computation of a run the springs are read but not advanced (LAMMPS's
 ``shearupdate = 0`` during setup), so splitting a run in two does not change the trajectory.
@@ -74,6 +77,9 @@ def contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel):
     vrel[2] = v[i, 2] - v[j, 2] - (wx * n[1] - wy * n[0])
 
 
+REMOTE = -2      # slot code of a partner owned by another rank
+
+
 @njit(cache=True)
 def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
     """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
@@ -87,11 +93,13 @@ def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
         return slot, -1
     jo = owner[j]
     slot_i = open_slot(partner, history, i, tag[j], 3)
-    slot_j = open_slot(partner, history, jo, tag[i], 3)
-    if slot_i < 0 or slot_j < 0:
+    # a partner owned by another rank keeps its own copy there (REMOTE: nothing to mirror here)
+    slot_j = open_slot(partner, history, jo, tag[i], 3) if jo >= 0 else REMOTE
+    if slot_i < 0 or slot_j == -1:
         return slot_i, slot_j
     touched[i, slot_i] = True
-    touched[jo, slot_j] = True
+    if jo >= 0:
+        touched[jo, slot_j] = True
     for d in range(3):
         shear[d] = history[i, 3 * slot_i + d]
     return slot_i, slot_j
@@ -103,7 +111,8 @@ def store_spring(history, owner, i, j, slot_i, slot_j, shear):
     jo = owner[j]
     for d in range(3):
         history[i, 3 * slot_i + d] = shear[d]
-        history[jo, 3 * slot_j + d] = -shear[d]
+        if jo >= 0:
+            history[jo, 3 * slot_j + d] = -shear[d]
 
 
 @njit(cache=True)

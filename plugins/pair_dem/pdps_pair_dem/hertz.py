@@ -101,7 +101,7 @@ def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offs
             r_star = radius[i] * radius[j] / (radius[i] + radius[j])
             m_star = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
             slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
+            if update and (slot_i < 0 or slot_j == -1):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
             contact_models.hertz_contact(overlap, n, vrel, shear, e_star[ti, tj], g_star[ti, tj],

@@ -122,7 +122,7 @@ def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offset
             c_n = cn[ti, tj] + damping
             c_t = ct[ti, tj] + ct_over_cn[ti, tj] * damping
             slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
+            if update and (slot_i < 0 or slot_j == -1):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
             contact_models.lsd_contact(overlap, n, vrel, shear, kn[ti, tj], c_n, kt[ti, tj], c_t,

@@ -174,6 +174,10 @@ class FixShardlow(Fix):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         require_dpd_fdt(sim)
+        if sim.comm.nprocs > 1:
+            # the sequential pair sweep needs LAMMPS's SSA stencil ordering across ranks
+            raise ScriptError("fix shardlow runs on one rank only (for now); use fix nve or mvv/dpd "
+                              "in parallel runs")
 
     def setup(self, sim):
         require_dpd_fdt(sim)

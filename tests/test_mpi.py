@@ -1,0 +1,142 @@
+"""The same script on 1, 2 and 4 ranks (mpiexec from the mpich wheel that `make test` installs)
+gives the same answers: deterministic styles to the last printed digit, DPD's noise too since it is
+keyed by particle ids, not by rank."""
+
+import pathlib
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+ROOT = pathlib.Path(__file__).parents[1]
+MPIEXEC = pathlib.Path(sys.executable).parent / "mpiexec"
+DATA = pathlib.Path("/tmp/pdps-test-data")
+
+
+def run(tmp_path, script, ranks, name="in.test", extra=()):
+    (tmp_path / name).write_text(textwrap.dedent(script))
+    assert MPIEXEC.exists(), "mpiexec missing: make test installs mpich with the core's [mpi] extra"
+    result = subprocess.run([str(MPIEXEC), "-n", str(ranks), sys.executable, "-m", "pdps_core.cli", "run",
+                             name, "-log", "none", *extra], cwd=tmp_path, capture_output=True, text=True,
+                            timeout=900)
+    return result
+
+
+def thermo(stdout):
+    return [line for line in stdout.splitlines() if line.strip()[:1].isdigit()]
+
+
+WATER = (ROOT / "examples" / "water.in").read_text().replace(
+    "dump              1 all atom 1 dump.atom", "dump 1 all custom 50 dump.water id type x y z vx vy vz").replace(
+    "thermo            1", "thermo 10").replace("run               200", "run 100")
+
+
+def test_water_example_gives_the_same_thermo_and_dump_on_1_2_and_4_ranks(tmp_path):
+    outputs, dumps = {}, {}
+    for ranks in (1, 2, 4):
+        result = run(tmp_path, WATER, ranks)
+        assert result.returncode == 0, result.stderr
+        outputs[ranks] = thermo(result.stdout)
+        dumps[ranks] = (tmp_path / "dump.water").read_text()
+        assert f"on {ranks} procs for 100 steps with 4000 particles" in result.stdout
+    assert len(outputs[1]) == 11 + 0 and outputs[1] == outputs[2] == outputs[4]
+    # positions written with 10 digits: identical up to summation order over 100 chaotic steps
+    assert dumps[1].count("ITEM: TIMESTEP") == 3
+    assert dumps[1].splitlines()[:9] == dumps[4].splitlines()[:9]
+
+
+@pytest.fixture(scope="module")
+def bench_data():
+    DATA.mkdir(parents=True, exist_ok=True)
+    for kind in ("dpd_gw", "gran_box"):
+        path = DATA / f"{kind}.data"
+        if not path.exists():
+            subprocess.run([sys.executable, str(ROOT.parent / "shared" / "bench" / "make_data.py"), kind,
+                            str(path)], check=True)
+    return DATA
+
+
+@pytest.mark.parametrize("scene,steps", [("dpd_gw", 20), ("gran_box", 100)])
+def test_bench_scenes_give_the_same_thermo_on_1_2_and_4_ranks(tmp_path, bench_data, scene, steps):
+    script = (ROOT / "benchmarks" / "scenes" / f"in.{scene}").read_text()
+    script = script.replace(f"thermo ${{nsteps}}", "thermo 10") if scene == "gran_box" else \
+        script.replace("thermo 1\n", "thermo 5\n")
+    outputs = {}
+    for ranks in (1, 2, 4):
+        result = run(tmp_path, script, ranks, extra=("-var", "data", str(bench_data / f"{scene}.data"),
+                                                     "-var", "seed", "928342", "-var", "nsteps", str(steps)))
+        assert result.returncode == 0, result.stderr
+        outputs[ranks] = thermo(result.stdout)
+    assert len(outputs[1]) >= 3
+    assert outputs[1] == outputs[2] == outputs[4]
+
+
+def test_particles_crossing_ranks_and_periodic_faces_many_times(tmp_path):
+    script = """
+        region box block 0 4 0 4 0 4
+        create_box 1 box
+        mass 1 1
+        create_particle 1 single 0.5 0.5 0.5
+        create_particle 1 single 3.5 1.0 2.0
+        velocity all set 7.3 -5.1 3.3
+        pair_style dpd 0.0 1.0 5
+        pair_coeff * * 0.0 0.0
+        fix 1 all nve
+        timestep 0.01
+        compute c all centroid
+        thermo 100
+        thermo_style custom step c_c[0] c_c[1] c_c[2]
+        run 500
+    """
+    outputs = {ranks: thermo(run(tmp_path, script, ranks).stdout) for ranks in (1, 4)}
+    # free flight over 36 box lengths in x: the unwrapped centroid is exact arithmetic
+    assert outputs[1] == outputs[4]
+    last = [float(v) for v in outputs[4][-1].split()[1:]]
+    assert last == pytest.approx([(0.5 + 3.5) / 2 + 7.3 * 5.0, (0.5 + 1.0) / 2 - 5.1 * 5.0, 1.25 + 3.3 * 5.0])
+
+
+def test_a_rank_without_particles_and_sub_domains_thinner_than_the_cutoff(tmp_path):
+    script = """
+        processors 4 1 1
+        region box block 0 2.4 0 6 0 6
+        create_box 1 box
+        mass 1 1
+        create_particle 1 single 0.2 3.0 3.0
+        create_particle 1 single 0.9 3.2 3.1
+        create_particle 1 single 2.3 3.0 3.0
+        pair_style dpd 0.0 1.0 5
+        pair_coeff * * 25.0 0.0
+        fix 1 all nve
+        timestep 0.01
+        thermo 10
+        thermo_style custom step pe press
+        run 30
+    """
+    one = run(tmp_path, script.replace("processors 4 1 1", "processors 1 1 1"), 1)
+    four = run(tmp_path, script, 4)
+    assert one.returncode == four.returncode == 0, four.stderr
+    # sub-domains 0.6 wide, cutoff + skin 1.3: ghosts come from two ranks away and across the face
+    assert thermo(one.stdout) == thermo(four.stdout)
+    assert float(thermo(one.stdout)[0].split()[1]) > 0.0          # the pairs across ranks interact
+
+
+def test_an_error_on_one_rank_stops_all_ranks_with_one_message(tmp_path):
+    script = """
+        boundary p p f
+        region box block 0 8 0 8 0 8
+        create_box 1 box
+        mass 1 1
+        create_particle 1 single 1 1 1
+        create_particle 1 single 7 7 7
+        velocity all set 0 0 0
+        fix 1 all nve
+        timestep 0.1
+        run 0
+        velocity all set 0 0 3
+        run 100
+    """
+    result = run(tmp_path, script, 4)
+    assert result.returncode != 0
+    errors = [line for line in result.stderr.splitlines() if line.startswith("ERROR")]
+    assert errors == [errors[0]] and "particle 2 lost through the fixed z boundary" in errors[0]
