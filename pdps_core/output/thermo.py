@@ -120,10 +120,17 @@ class Thermo:
             return True
         return self.every > 0 and step % self.every == 0
 
+    def names(self):
+        """Column names as the header shows them (``Step``, ``Temp``, ``c_1[0]``, ...)."""
+        return [HEADERS.get(word, word) for word in self.columns]
+
+    def integer(self):
+        """Which columns are integers (step, elapsed, atoms)."""
+        return [word in INTEGER for word in self.columns]
+
     def header(self):
         cells = []
-        for word in self.columns:
-            name = HEADERS.get(word, word)
+        for word, name in zip(self.columns, self.names()):
             cells.append(f"{name:>10}" if word in INTEGER else f"{name:>14}")
         return " ".join(cells)
 
@@ -139,8 +146,10 @@ class Thermo:
                 out.append(keyword_value(self.sim, word))
         return out
 
-    def line(self):
+    def line(self, values=None):
+        """The thermo line for ``values`` (read now when not given)."""
+        values = self.values() if values is None else values
         cells = []
-        for word, value in zip(self.columns, self.values()):
+        for word, value in zip(self.columns, values):
             cells.append(f"{int(value):>10d}" if word in INTEGER else f"{value:>14.8g}")
         return " ".join(cells)
