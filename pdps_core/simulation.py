@@ -75,6 +75,8 @@ class Simulation:
         self.in_setup = False         # True while a run computes its setup forces
         self.error_location = None
         self._integrator = None
+        self.restart_output = None     # the `restart N FILE` schedule (state/restart.py)
+        self.restored_states = {}      # (kind, id) -> (style, state, instance) from read_restart
 
     # ---- names a style reads ----------------------------------------------------------------------
     @property
@@ -306,6 +308,9 @@ class Simulation:
         last = self.step + nsteps
         integrator = Verlet(self)
         self._integrator = integrator
+        if self.restored_states:
+            from .state.restart import hand_over_states
+            hand_over_states(self)
         try:
             integrator.setup()
             self.output.setup(self.step, last)

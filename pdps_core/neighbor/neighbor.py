@@ -16,8 +16,9 @@ keeps must therefore live in ``particles.request(...)`` arrays, which move with 
 Resuming. The rebuild schedule (``ago``, ``xhold``) and the lists carry over from one run to the next
 (and through a restart file): when nothing that the lists depend on has changed since the last run
 ended, the next run re-creates the lists of the last build from ``xhold`` instead of wrapping, sorting
-and building afresh (``can_resume``). Wrapping or sorting at a run's start would change positions and
-summation order in the last bits, so only this makes ``run N`` + ``run M`` follow ``run N+M``.
+and building afresh (``can_resume``). A wrap, a sort or a rebuild at a run's start would change
+positions, particle order or summation order in the last bits and shift every later rebuild; resuming
+keeps all of them, so with forces that depend on positions only ``run N`` + ``run M`` is ``run N+M``.
 """
 
 from dataclasses import dataclass, field
@@ -142,19 +143,20 @@ class Neighbor:
         return (len(tag) == n and len(self.xhold) == n and np.array_equal(particles.tag[:n], tag)
                 and np.array_equal(particles.x[:n], x))
 
-    def can_resume(self, particles, box):
+    def can_resume(self, particles, box, comm):
         """Called at the start of a run, after the styles made their requests: True when the lists of
         the last build are still right (same particles, positions, box, skin and cutoffs), so the run
-        continues the schedule instead of starting afresh. Answers once per mark."""
+        continues the schedule instead of starting afresh. Answers once per mark; all ranks agree."""
         current = self.is_current(particles)
         self.current_for = None
-        if not current or self.built_with is None:
-            return False
-        skin, lists, lo, hi, periodic = self.built_with
-        return (skin == self.skin and np.array_equal(lo, box.lo) and np.array_equal(hi, box.hi)
-                and periodic == box.periodic and len(lists) == len(self.requests)
-                and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
-                        for (kind, cutoff), r in zip(lists, self.requests)))
+        same = current and self.built_with is not None
+        if same:
+            skin, lists, lo, hi, periodic = self.built_with
+            same = (skin == self.skin and np.array_equal(lo, box.lo) and np.array_equal(hi, box.hi)
+                    and periodic == box.periodic and len(lists) == len(self.requests)
+                    and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
+                            for (kind, cutoff), r in zip(lists, self.requests)))
+        return bool(comm.min(int(same)))
 
     # ---- build ----------------------------------------------------------------------------------
     def build(self, particles, box, resume=False):

@@ -90,7 +90,7 @@ class Verlet:
         sim.groups.update(sim)
         self._register_hooks()
 
-        if sim.neighbor.can_resume(particles, sim.box):
+        if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:
             sim.comm.exchange(particles, sim.box, sim.step)

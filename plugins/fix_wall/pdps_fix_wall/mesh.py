@@ -45,6 +45,9 @@ Motion:
   its surface moves: on each triangle, with the given velocity projected onto the triangle's plane and
   scaled back to the given speed. Not together with ``velocity`` or ``omega``.
 
+A moving mesh's clock (the time it has moved for) is saved in restart files and restored with the
+fix, also when a script gives the fix again after ``read_restart``.
+
 Cost: triangles are binned on a grid of cells at least the largest radius plus the skin wide, and
 each particle keeps the triangles whose bounding box is within its radius plus the skin; the lists
 are rebuilt only when a particle or a mesh vertex has moved more than half the skin
@@ -549,6 +552,14 @@ class FixWallMesh(Fix):
         self.vertices_built = self.vertices.copy()
         self.stale = False
         self.builds += 1
+
+    # ---- restart files: the mesh's clock is all the instance keeps beyond its arguments ----
+    def state(self):
+        return {"elapsed": self.elapsed}
+
+    def restore(self, state):
+        self.elapsed = float(state["elapsed"])
+        self._place()
 
     # ---- hooks ----
     def setup(self, sim):

@@ -1,0 +1,461 @@
+"""Restart files: the whole state of a simulation, so that a run read back from one goes on exactly.
+
+Format (version 1): a zip archive, members stored uncompressed:
+
+    header.json      {"format": "pdps-restart", "version": 1, ...}: settings, styles, counters
+    NAME.npy         numpy arrays: particles/x, particles/v, ..., mass, box/lo, neighbor/xhold, ...
+
+Why this and not pickle: ``.npy`` keeps every bit, the dtype and the shape of each array; JSON keeps
+the settings readable (``unzip -p FILE header.json``) and free of Python class paths, so a file stays
+readable when modules move; nothing is unpickled, so reading a file runs no code from it; zip keeps
+a CRC-32 per member and its directory at the end, so a truncated or damaged file is detected, never
+half-read. ``version`` names the layout; a reader refuses versions it does not know. The file does
+not depend on the machine (LAMMPS's binary restarts depend on the machine and the LAMMPS version).
+
+What is saved: units, dimension, boundary, box, ntypes and masses, particle style, lattice; every
+per-atom array of the owned particles in order, with its registry entry (width, dtype, default) and
+the next free tag, so style-requested arrays (contact histories, ``vest`` of fix mvv/dpd) come back
+as they were; groups (bits and definitions); regions, the pair style (arguments, coefficients, mix
+rule), fixes, computes and analyze styles, each as style, id, group and parsed ``args``, plus what
+its ``state()`` returns; the neighbor settings (skin, every, delay, check, sort interval, last sort)
+and rebuild schedule (``ago``, ``xhold``, what the lists were built with); timestep, step, time, and
+the last energy and virial. Not saved, as in LAMMPS: thermo settings, dumps, variables, the restart
+schedule itself. Random numbers are keyed by (seed, step, tags): there is no generator state.
+
+Style state protocol. The core always saves ``args`` and re-creates a style from them. A style that
+keeps more than its arguments in the instance defines ``state()`` returning a dict and
+``restore(state)``, called right after the style is re-created. Values: JSON values (numbers,
+strings, booleans, None, lists, dicts with string keys) and numpy arrays, at any depth; tuples come
+back as lists. Per-atom state belongs in ``particles.request`` arrays, which are saved anyway. A
+fix, compute or analyze style given again after ``read_restart`` with the same ID and style
+(LAMMPS scripts do) gets the saved state too, at the next run (or restart written).
+
+Writing: to ``FILE.tmp`` in the same folder, flushed and fsynced, then renamed over ``FILE``
+(``os.replace`` is atomic), then the folder fsynced: at every moment ``FILE`` is either the previous
+complete restart or the new one.
+"""
+
+import glob
+import io
+import json
+import os
+import re
+import zipfile
+import zlib
+
+import numpy as np
+from pydantic import ValidationError
+
+from .. import __version__
+from ..errors import ScriptError
+from ..neighbor.neighbor import Neighbor
+from ..styles import StyleArgs, registry
+from .box import Box
+from .groups import Groups
+from .particles import CORE, Particles, Property
+from .units import UNITS
+
+FORMAT = "pdps-restart"
+VERSION = 1
+STYLE_TABLES = (("fix", "fixes"), ("compute", "computes"), ("analyze", "analyzes"))
+
+
+# ---- writing --------------------------------------------------------------------------------------
+def write_restart(sim, path):
+    header, arrays = capture(sim)
+    write_file(path, header, arrays)
+
+
+def capture(sim):
+    """(header dict, {name: array}) of everything a run needs to go on (module docstring)."""
+    if sim.comm.nprocs > 1:
+        raise ScriptError("restart files are written by serial runs only for now")
+    if sim.restored_states:
+        hand_over_states(sim)          # a fix given again before any run is saved with its state
+    p, neighbor = sim.particles, sim.neighbor
+    n = p.nlocal
+    arrays = {"box/lo": sim.box.lo, "box/hi": sim.box.hi, "mass": sim.type_mass}
+    properties = []
+    for name, prop in p.properties.items():
+        arrays[f"particles/{name}"] = p.arrays[name][:n]
+        properties.append({"name": name, "width": prop.width, "dtype": np.dtype(prop.dtype).name,
+                           "default": _plain(prop.default)})
+    if sim.lattice is not None:
+        arrays["lattice/spacing"], arrays["lattice/basis"] = sim.lattice
+    states = _StateArrays(arrays)
+    header = {
+        "format": FORMAT, "version": VERSION, "written_by": f"pdps {__version__}",
+        "units": sim.unit_system.name, "dimension": sim.dimension,
+        "periodicity": list(sim.periodicity), "periodic": list(sim.box.periodic),
+        "ntypes": sim.ntypes, "particle_style": sim.particle_style,
+        "lattice": sim.lattice is not None,
+        "particles": {"nlocal": n, "next_tag": int(p.next_tag), "properties": properties},
+        "groups": {"bits": dict(sim.groups.bits),
+                   "definitions": {name: _plain(d) for name, d in sim.groups.definitions.items()}},
+        "regions": [{"id": r.id, "style": r.name, "args": _dump_args(f"region {r.id}", r.args),
+                     "state": states.encode(f"region {r.id}", r)} for r in sim.regions.values()],
+        "pair": _pair_record(sim.pair, states),
+        "neighbor": _neighbor_record(neighbor, p, arrays),
+        "step": sim.step, "time": sim.time, "dt": sim.dt, "ghost_velocity": sim.ghost_velocity,
+        "pe": float(sim.pe), "virial": [float(v) for v in sim.virial],
+        "energy_step": sim.energy_step, "virial_step": sim.virial_step,
+    }
+    for kind, table in STYLE_TABLES:
+        header[table] = [{"id": s.id, "group": s.group, "style": s.name,
+                          "args": _dump_args(f"{kind} {s.id}", s.args),
+                          "state": states.encode(f"{kind} {s.id}", s)}
+                         for s in getattr(sim, table).values()]
+    return header, arrays
+
+
+def _pair_record(pair, states):
+    if pair is None:
+        return None
+    coeffs = []
+    for (i, j), coeff in sorted(pair.coeffs.items()):
+        model = type(coeff).__name__
+        if getattr(type(pair), model, None) is not type(coeff):
+            raise ScriptError(f"pair {pair.name}: coefficients of types {i} {j} are a {model}, which "
+                              "is not a class of the pair style, so a restart cannot name it")
+        coeffs.append([i, j, model, _dump_args(f"pair_coeff {i} {j}", coeff)])
+    return {"style": pair.name, "args": _dump_args(f"pair {pair.name}", pair.args), "coeffs": coeffs,
+            "mix_rule": pair.mix_rule, "state": states.encode(f"pair {pair.name}", pair)}
+
+
+def _neighbor_record(neighbor, particles, arrays):
+    record = {"skin": neighbor.skin, "style": neighbor.style, "every": neighbor.every,
+              "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
+              "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
+              "dangerous": neighbor.dangerous, "built_with": None}
+    # the schedule and the lists' recipe go along only while they are current for the particles
+    if neighbor.is_current(particles) and neighbor.built_with is not None:
+        skin, lists, lo, hi, periodic = neighbor.built_with
+        arrays["neighbor/xhold"] = neighbor.xhold
+        arrays["neighbor/lo"], arrays["neighbor/hi"] = lo, hi
+        for k, (_, cutoff) in enumerate(lists):
+            arrays[f"neighbor/cutoff{k}"] = cutoff
+        record["built_with"] = {"skin": skin, "kinds": [kind for kind, _ in lists],
+                                "periodic": list(periodic)}
+    return record
+
+
+def _dump_args(what, model):
+    """A style's parsed arguments as JSON, checked to read back equal to themselves."""
+    data = model.model_dump(mode="json")
+    try:
+        again = type(model).model_validate(json.loads(json.dumps(data)))
+    except ValidationError:
+        again = None
+    if again != model:
+        raise ScriptError(f"{what}: its arguments do not read back equal from JSON, so a restart "
+                          "cannot hold them (a bug of the style's Args model)")
+    return data
+
+
+class _StateArrays:
+    """Encodes what styles' ``state()`` return: arrays go to the archive, the rest stays JSON."""
+
+    def __init__(self, arrays):
+        self.arrays = arrays
+        self.count = 0
+
+    def encode(self, what, style):
+        method = getattr(style, "state", None)
+        if not callable(method):
+            return None
+        try:
+            return self._value(method())
+        except TypeError as exc:
+            raise ScriptError(f"{what}: state() holds {exc}, which a restart cannot keep "
+                              "(use numbers, strings, lists, dicts and numpy arrays)") from None
+
+    def _value(self, value):
+        if isinstance(value, np.ndarray):
+            key = f"state/{self.count}"
+            self.count += 1
+            self.arrays[key] = value
+            return {"__array__": key}
+        if isinstance(value, np.generic):
+            return value.item()
+        if isinstance(value, dict):
+            if not all(isinstance(k, str) for k in value) or "__array__" in value:
+                raise TypeError("a dict whose keys are not all strings (or a key __array__)")
+            return {k: self._value(v) for k, v in value.items()}
+        if isinstance(value, (list, tuple)):
+            return [self._value(v) for v in value]
+        if value is None or isinstance(value, (bool, int, float, str)):
+            return value
+        raise TypeError(f"a {type(value).__name__}")
+
+
+def _plain(value):
+    """Tuples to lists and numpy scalars to Python numbers, for JSON."""
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def write_file(path, header, arrays):
+    """Write to PATH.tmp, flush and fsync it, rename it over PATH, fsync the folder."""
+    temporary = f"{path}.tmp"
+    try:
+        with open(temporary, "wb") as handle:
+            with zipfile.ZipFile(handle, "w", zipfile.ZIP_STORED) as archive:
+                archive.writestr("header.json", json.dumps(header, indent=1))
+                for name, array in arrays.items():
+                    with archive.open(f"{name}.npy", "w", force_zip64=True) as member:
+                        np.lib.format.write_array(member, np.ascontiguousarray(array),
+                                                  allow_pickle=False)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(temporary, path)
+    except OSError as exc:
+        try:
+            os.remove(temporary)
+        except OSError:
+            pass
+        raise ScriptError(f"cannot write restart file {path}: {exc.strerror or exc}") from None
+    _sync_folder(os.path.dirname(os.path.abspath(path)))
+
+
+def _sync_folder(folder):
+    """Make the rename itself durable (POSIX); folders cannot be opened for this everywhere."""
+    try:
+        descriptor = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(descriptor)
+    except OSError:
+        pass
+    finally:
+        os.close(descriptor)
+
+
+class RestartOutput:
+    """``restart N FILE [FILE2]``: a restart file every N steps of a run (not at a run's first
+    step); with two files they take turns; a ``*`` in a name is replaced by the step (LAMMPS)."""
+
+    def __init__(self, every, files):
+        self.every = every
+        self.files = list(files)
+        self.turn = 0
+
+    def write(self, sim, step):
+        if step % self.every:
+            return
+        path = self.files[self.turn].replace("*", str(step))
+        self.turn = (self.turn + 1) % len(self.files)
+        sim.neighbor.mark_current(sim.particles)      # mid-run, the lists are current
+        write_restart(sim, path)
+
+
+# ---- reading --------------------------------------------------------------------------------------
+def latest(pattern):
+    """``restart.*``: the file whose ``*`` stands for the largest step (LAMMPS)."""
+    head, _, tail = pattern.partition("*")
+    steps = {}
+    for name in glob.glob(glob.escape(head) + "*" + glob.escape(tail)):
+        middle = name[len(head):len(name) - len(tail)]
+        if re.fullmatch(r"\d+", middle):
+            steps[int(middle)] = name
+    if not steps:
+        raise ScriptError(f"no restart file matches {pattern}")
+    return steps[max(steps)]
+
+
+def read_file(path, shown=None):
+    """(header, arrays) of a restart file; any problem is one line naming the file (as ``shown``)."""
+    shown = path if shown is None else shown
+    damaged = f"restart file {shown} is truncated, damaged or not a pdps restart file"
+    try:
+        archive = zipfile.ZipFile(path)
+    except FileNotFoundError:
+        raise ScriptError(f"restart file {shown} does not exist") from None
+    except zipfile.BadZipFile:
+        raise ScriptError(damaged) from None
+    except OSError as exc:
+        raise ScriptError(f"cannot read restart file {shown}: {exc.strerror or exc}") from None
+    with archive:
+        try:
+            header = json.loads(archive.read("header.json"))
+            if not isinstance(header, dict) or header.get("format") != FORMAT:
+                raise ScriptError(f"{shown} is not a pdps restart file")
+            version = header.get("version")
+            if version != VERSION:
+                newer = " (written by a newer pdps)" if isinstance(version, int) and version > VERSION else ""
+                raise ScriptError(f"restart file {shown} has format version {version}{newer}; "
+                                  f"pdps {__version__} reads version {VERSION}")
+            arrays = {name[:-4]: np.lib.format.read_array(io.BytesIO(archive.read(name)),
+                                                          allow_pickle=False)
+                      for name in archive.namelist() if name.endswith(".npy")}
+        except ScriptError:
+            raise
+        except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile):
+            raise ScriptError(damaged) from None
+    return header, arrays
+
+
+def read_restart(sim, path, shown=None):
+    """Replace the (empty) simulation by the one saved in ``path``; on any error it stays as it was."""
+    shown = path if shown is None else shown
+    header, arrays = read_file(path, shown)
+    before = dict(sim.__dict__)
+    try:
+        restore(sim, header, arrays)
+    except ScriptError as exc:
+        sim.__dict__.clear()
+        sim.__dict__.update(before)
+        raise ScriptError(f"restart file {shown}: {exc.message}") from None
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
+        sim.__dict__.clear()
+        sim.__dict__.update(before)
+        raise ScriptError(f"restart file {shown} is damaged ({type(exc).__name__}: {exc})") from None
+
+
+def restore(sim, header, arrays):
+    # every object restored into is new, so that read_restart can undo by resetting sim.__dict__
+    sim.unit_system = UNITS[header["units"]]
+    sim.dimension = int(header["dimension"])
+    sim.periodicity = tuple(header["periodicity"])
+    sim.box = Box(arrays["box/lo"].copy(), arrays["box/hi"].copy(), header["periodic"], sim.dimension)
+    sim.ntypes = int(header["ntypes"])
+    sim.type_mass = arrays["mass"].copy()
+    sim.particle_style = header["particle_style"]
+    sim.lattice = ((arrays["lattice/spacing"].copy(), arrays["lattice/basis"].copy())
+                   if header["lattice"] else None)
+    sim.particles = _particles(header["particles"], arrays)
+    groups = Groups()
+    groups.bits = {name: int(bit) for name, bit in header["groups"]["bits"].items()}
+    groups.definitions = {name: tuple(tuple(w) if isinstance(w, list) else w for w in definition)
+                          for name, definition in header["groups"]["definitions"].items()}
+    sim.groups = groups
+    sim.restored_states = {}
+    sim.regions = {}
+    for record in header["regions"]:
+        cls = registry.lookup("region", record["style"])
+        region = cls(sim, record["id"], _load_args(cls.Args, record["args"], f"region {record['id']}"))
+        sim.regions[record["id"]] = region
+        _restore_state(region, record["state"], arrays, f"region {record['id']}")
+    sim.pair = _pair(sim, header["pair"], arrays)
+    sim.pair_list = None
+    for kind, table in STYLE_TABLES:
+        styles = {}
+        setattr(sim, table, styles)
+        for record in header[table]:
+            what = f"{kind} {record['id']}"
+            cls = registry.lookup(kind, record["style"])
+            style = cls(sim, record["id"], record["group"], _load_args(cls.Args, record["args"], what))
+            sim.particles.request_all(cls.per_atom)
+            styles[record["id"]] = style
+            state = _restore_state(style, record["state"], arrays, what)
+            if state is not None:
+                sim.restored_states[(kind, record["id"])] = (record["style"], state, style)
+    sim.neighbors = _neighbor(header["neighbor"], arrays, sim.particles)
+    sim.step = int(header["step"])
+    sim.run_first_step = sim.step
+    sim.time = float(header["time"])
+    sim.dt = float(header["dt"])
+    sim.ghost_velocity = bool(header["ghost_velocity"])
+    sim.pe = float(header["pe"])
+    sim.virial = np.array(header["virial"], dtype=np.float64)
+    sim.energy_step, sim.virial_step = header["energy_step"], header["virial_step"]
+
+
+def _particles(record, arrays):
+    particles = Particles()
+    n = int(record["nlocal"])
+    particles.properties, particles.arrays = {}, {}
+    for entry in record["properties"]:
+        name = entry["name"]
+        prop = Property(name, int(entry["width"]), np.dtype(entry["dtype"]).type, entry["default"])
+        values = arrays[f"particles/{name}"]
+        shape = (n, prop.width) if prop.width > 1 else (n,)
+        if values.shape != shape or values.dtype != np.dtype(prop.dtype):
+            raise ValueError(f"per-atom array {name} has shape {values.shape} and dtype {values.dtype}, "
+                             f"expected {shape} and {np.dtype(prop.dtype).name}")
+        particles.properties[name] = prop
+        particles.arrays[name] = values.copy()
+    missing = [name for name in CORE if name not in particles.properties]
+    if missing:
+        raise ValueError(f"per-atom arrays {', '.join(missing)} are missing")
+    particles.nlocal = n
+    particles.next_tag = int(record["next_tag"])
+    return particles
+
+
+def _pair(sim, record, arrays):
+    if record is None:
+        return None
+    cls = registry.lookup("pair", record["style"])
+    what = f"pair {record['style']}"
+    pair = cls(sim, _load_args(cls.Args, record["args"], what))
+    for i, j, model_name, values in record["coeffs"]:
+        model = getattr(cls, model_name, None)
+        if not (isinstance(model, type) and issubclass(model, StyleArgs)):
+            raise ScriptError(f"pair style {record['style']} has no coefficient class {model_name}")
+        pair.coeffs[(int(i), int(j))] = _load_args(model, values, f"pair_coeff {i} {j}")
+    pair.mix_rule = record["mix_rule"]
+    _restore_state(pair, record["state"], arrays, what)
+    return pair
+
+
+def _neighbor(record, arrays, particles):
+    neighbor = Neighbor(skin=float(record["skin"]))
+    neighbor.style = record["style"]
+    neighbor.modify(every=int(record["every"]), delay=int(record["delay"]), check=bool(record["check"]))
+    neighbor.sort_every = int(record["sort_every"])
+    neighbor.last_sort = record["last_sort"]
+    neighbor.ago = int(record["ago"])
+    neighbor.builds, neighbor.dangerous = int(record["builds"]), int(record["dangerous"])
+    built = record["built_with"]
+    if built is not None:
+        neighbor.xhold = arrays["neighbor/xhold"].copy()
+        lists = [(kind, arrays[f"neighbor/cutoff{k}"].copy()) for k, kind in enumerate(built["kinds"])]
+        neighbor.built_with = (float(built["skin"]), lists, arrays["neighbor/lo"].copy(),
+                               arrays["neighbor/hi"].copy(), tuple(bool(p) for p in built["periodic"]))
+        neighbor.mark_current(particles)      # saved while current: the next run resumes them
+    return neighbor
+
+
+def _load_args(model, data, what):
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        raise ScriptError(f"{what}: saved arguments no longer fit the style "
+                          f"({exc.errors()[0]['msg']})") from None
+
+
+def _restore_state(style, encoded, arrays, what):
+    """Give the style its saved state; returns a copy of it, untouched by the style, or None."""
+    if encoded is None:
+        return None
+    method = getattr(style, "restore", None)
+    if not callable(method):
+        raise ScriptError(f"{what} ({style.name}): the file holds a state but the style has no restore()")
+    method(_decode(encoded, arrays))
+    return _decode(encoded, arrays)
+
+
+def _decode(value, arrays):
+    if isinstance(value, dict):
+        if set(value) == {"__array__"}:
+            return arrays[value["__array__"]].copy()
+        return {k: _decode(v, arrays) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_decode(v, arrays) for v in value]
+    return value
+
+
+def hand_over_states(sim):
+    """A fix, compute or analyze style given again after read_restart with the same ID and style
+    gets the state saved for it (LAMMPS); called once, at the next run or restart written."""
+    for (kind, ident), (style_name, state, restored) in sim.restored_states.items():
+        table = getattr(sim, dict(STYLE_TABLES)[kind])
+        current = table.get(ident)
+        if (current is not None and current is not restored and current.name == style_name
+                and callable(getattr(current, "restore", None))):
+            current.restore(state)
+    sim.restored_states = {}
