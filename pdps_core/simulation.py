@@ -264,23 +264,37 @@ class Simulation:
         return name
 
     def _read_keyword(self, name, indices):
-        """What a variable expression reads: thermo keywords and c_ID[...] references."""
-        if name.startswith("c_"):
-            return self.compute_value(name[2:], indices)
+        """What a variable expression reads: thermo keywords, c_ID[...] and f_ID[...] references."""
         return keyword_value(self, name, indices)
 
     def compute_value(self, ident, indices=()):
+        """``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``: a compute's scalar, vector element or array element."""
         compute = self.computes.get(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined")
+        return self._style_value("c", compute, ident, indices)
+
+    def fix_value(self, ident, indices=()):
+        """``f_ID[...]``: what a fix or analyze style offers through scalar/vector/array, as LAMMPS's
+        f_ references (analyze styles share the prefix: their IDs are in the same script namespace)."""
+        style = self.fixes.get(ident) or self.analyzes.get(ident)
+        if style is None:
+            raise ScriptError(f"fix {ident} is not defined")
+        return self._style_value("f", style, ident, indices)
+
+    def _style_value(self, prefix, style, ident, indices):
+        reader = {0: "scalar", 1: "vector"}.get(len(indices), "array")
+        method = getattr(style, reader, None)
+        if method is None:
+            raise ScriptError(f"{prefix}_{ident}: {style.kind} {ident} ({style.name}) has no {reader} value")
         if len(indices) == 0:
-            return float(compute.scalar(self))
-        values = compute.vector(self) if len(indices) == 1 else compute.array(self)
+            return float(method(self))
+        values = method(self)
         try:
             return float(values[indices])
         except IndexError:
-            raise ScriptError(f"c_{ident}{''.join(f'[{i}]' for i in indices)} is out of range "
-                              f"(compute {ident} has shape {np.shape(values)})") from None
+            raise ScriptError(f"{prefix}_{ident}{''.join(f'[{i}]' for i in indices)} is out of range "
+                              f"({style.kind} {ident} has shape {np.shape(values)})") from None
 
     def compute_needs(self, ident):
         compute = self.computes.get(ident)
@@ -321,6 +335,7 @@ class Simulation:
         finally:
             self.output.flush()
         self._report(nsteps, loop, time.perf_counter() - t_start)
+        self.output.flush()
 
     def _check_masses(self):
         p = self.particles

@@ -238,3 +238,31 @@ def test_post_run_is_called_once_after_the_last_step(make_sim):
     sim.command(BOX + "fix s all test/summary\nrun 4\nrun 2")
     assert sim.summaries == [4, 6]
     assert "summary at step 6" in screen.getvalue().splitlines()
+
+
+def test_fix_and_analyze_values_are_read_as_f_id(make_sim):
+    class Counter(Fix):
+        name = "test/counter"
+
+        def end_of_step(self, sim):
+            self.count = getattr(self, "count", 0) + 1
+
+        def scalar(self, sim):
+            return getattr(self, "count", 0)
+
+        def vector(self, sim):
+            return np.array([1.5, 2.5])
+
+    registry.register("fix", "test/counter", Counter)
+    import io
+    screen = io.StringIO()
+    sim = make_sim(screen=screen)
+    sim.command(BOX + "fix n all test/counter\nthermo 3\nthermo_style custom step f_n f_n[1]\n"
+                "variable twice equal 2*f_n\nrun 6")
+    rows = [line.split() for line in screen.getvalue().splitlines() if line.strip()[:1].isdigit()]
+    assert rows[-1] == ["6", "6", "2.5"]
+    assert sim.variables.value("twice") == 12.0
+    with pytest.raises(ScriptError, match=r"f_n\[5\] is out of range"):
+        sim.command("thermo_style custom step f_n[5]\nrun 1")
+    with pytest.raises(ScriptError, match="thermo_style: fix nope is not defined"):
+        sim.command("thermo_style custom step f_nope\nrun 1")

@@ -83,8 +83,8 @@ class Output:
         for dump in self.dumps.values():
             if step % dump.every == 0:
                 needs |= getattr(dump, "needs", set())
-        for analyze in self.sim.analyzes.values():
-            needs |= analyze_needs(self.sim, analyze, step)
+        for style in [*self.sim.fixes.values(), *self.sim.analyzes.values()]:
+            needs |= analyze_needs(self.sim, style, step)
         return "energy" in needs, "virial" in needs
 
     # ---- writing --------------------------------------------------------------------------------

@@ -15,7 +15,7 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "dt": "Dt", "time": "Time", "at
            "etotal": "TotEng", "vol": "Volume", "lx": "Lx", "ly": "Ly", "lz": "Lz"}
 INTEGER = {"step", "elapsed", "atoms"}
 NEEDS = {"press": {"virial"}, "pe": {"energy"}, "epair": {"energy"}, "etotal": {"energy"}}
-REFERENCE = re.compile(r"^(c|v)_([A-Za-z0-9_]+)((\[\d+\])*)$")
+REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((\[\d+\])*)$")
 
 
 def keyword_value(sim, name, indices=()):
@@ -49,6 +49,8 @@ def keyword_value(sim, name, indices=()):
         return float(sim.box.length["xyz".index(name[1])])
     if name.startswith("c_"):
         return sim.compute_value(name[2:], indices)
+    if name.startswith("f_"):
+        return sim.fix_value(name[2:], indices)
     raise ScriptError(f"unknown thermo keyword {name}")
 
 
@@ -110,6 +112,10 @@ class Thermo:
                 ident, _ = self._reference(word)
                 if ident not in self.sim.computes:
                     raise ScriptError(f"thermo_style: compute {ident} is not defined (thermo keyword {word})")
+            elif word.startswith("f_"):
+                ident, _ = self._reference(word)
+                if ident not in self.sim.fixes and ident not in self.sim.analyzes:
+                    raise ScriptError(f"thermo_style: fix {ident} is not defined (thermo keyword {word})")
             elif word.startswith("v_"):
                 ident, _ = self._reference(word)
                 if ident not in self.sim.variables:
@@ -139,9 +145,10 @@ class Thermo:
         for word in self.columns:
             if word.startswith("v_"):
                 out.append(self.sim.variables.value(self._reference(word)[0]))
-            elif word.startswith("c_"):
+            elif word.startswith("c_") or word.startswith("f_"):
                 ident, indices = self._reference(word)
-                out.append(self.sim.compute_value(ident, indices))
+                read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
+                out.append(read(ident, indices))
             else:
                 out.append(keyword_value(self.sim, word))
         return out

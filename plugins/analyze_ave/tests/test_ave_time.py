@@ -124,8 +124,6 @@ def test_energy_and_virial_are_computed_on_sampled_steps_only(sim):
     assert sim.analyzes["1"].scalar(sim) != 0.0
 
 
-@pytest.mark.xfail(strict=True, reason="core: Output.flags asks analyzes, not fixes, what they read "
-                                       "(see report); fix ave/time of pressure off thermo steps fails")
 def test_fix_spelling_gets_the_virial_on_its_sampled_steps(sim):
     sim.command("compute p all pressure\nfix 2 all ave/time 1 1 3 c_p\nrun 7")
 
