@@ -166,6 +166,13 @@ class MPIComm:
             np.add.at(array.reshape(len(array), width) if width > 1 else array[:, None], index,
                       back.reshape(len(index), width))
 
+    def reverse_rows(self, rows):
+        """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,
+        for values a style merges itself rather than sums."""
+        back = self._alltoall_rows(rows, self._recv_counts)
+        index = np.concatenate([i for i, _ in self._send]) if self._send else np.zeros(0, np.int64)
+        return index, back
+
     # ---- collectives --------------------------------------------------------------------------
     def _alltoall_rows(self, rows, counts, return_counts=False):
         width = rows.shape[1] if rows.ndim == 2 else 1

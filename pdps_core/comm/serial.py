@@ -78,6 +78,10 @@ class SerialComm:
         rank every ghost's owner is local; the MPI version maps only its own ghosts."""
         return np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
 
+    def reverse_rows(self, rows):
+        """Rows of ghost values, with the owned index each ghost copies."""
+        return self.ghost_source, rows
+
     def forward_comm(self, particles, names=("x",)):
         p = particles
         src = self.ghost_source

@@ -27,10 +27,9 @@ I\boldsymbol{\omega}` exactly (LAMMPS's gran/hooke/history uses the radii as arm
 History. The tangential spring :math:`\boldsymbol{\xi}` of a contact is kept on both particles in
 ``pdps_core.api.ContactHistory`` arrays, keyed by the partner's tag: i holds :math:`\boldsymbol{\xi}`
 (the spring acting on i), j holds :math:`-\boldsymbol{\xi}`, so either particle can compute the pair
-after a rebuild or a re-sort swaps their roles. A ghost partner's copy is written to its owner
-when that owner is on this rank; in a parallel run a partner owned by another rank is not mirrored,
-so a cross-rank contact whose computing side changes at a rebuild starts a fresh spring (LAMMPS
-sends the partner's copy back with a reverse communication; pdps does not yet). A
+after a rebuild or a re-sort swaps their roles. A ghost partner's copy is written to its owner;
+in a parallel run a partner owned by another rank gets it through its ghost row, which is sent back to
+the owner after the pair loop and merged slot by slot (LAMMPS's reverse communication of history). A
 contact not seen in a step's force computation (the spheres separated) has its slots freed at the end
 of that step. In the setup force computation of a run the springs are read but not advanced (LAMMPS's
 ``shearupdate = 0`` during setup), so splitting a run in two does not change the trajectory.
@@ -77,9 +76,6 @@ def contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel):
     vrel[2] = v[i, 2] - v[j, 2] - (wx * n[1] - wy * n[0])
 
 
-REMOTE = -2      # slot code of a partner owned by another rank
-
-
 @njit(cache=True)
 def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
     """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
@@ -91,15 +87,15 @@ def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
         for d in range(3):
             shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
         return slot, -1
-    jo = owner[j]
+    # the mirror goes to j's owner; one on another rank gets it through j's ghost row, sent
+    # back after the pair loop (merge_mirrors)
+    jo = owner[j] if owner[j] >= 0 else j
     slot_i = open_slot(partner, history, i, tag[j], 3)
-    # a partner owned by another rank keeps its own copy there (REMOTE: nothing to mirror here)
-    slot_j = open_slot(partner, history, jo, tag[i], 3) if jo >= 0 else REMOTE
-    if slot_i < 0 or slot_j == -1:
+    slot_j = open_slot(partner, history, jo, tag[i], 3)
+    if slot_i < 0 or slot_j < 0:
         return slot_i, slot_j
     touched[i, slot_i] = True
-    if jo >= 0:
-        touched[jo, slot_j] = True
+    touched[jo, slot_j] = True
     for d in range(3):
         shear[d] = history[i, 3 * slot_i + d]
     return slot_i, slot_j
@@ -108,11 +104,10 @@ def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
 @njit(cache=True)
 def store_spring(history, owner, i, j, slot_i, slot_j, shear):
     """i keeps the spring, j's owner its negative (the same spring seen from j)."""
-    jo = owner[j]
+    jo = owner[j] if owner[j] >= 0 else j
     for d in range(3):
         history[i, 3 * slot_i + d] = shear[d]
-        if jo >= 0:
-            history[jo, 3 * slot_j + d] = -shear[d]
+        history[jo, 3 * slot_j + d] = -shear[d]
 
 
 @njit(cache=True)
@@ -130,6 +125,24 @@ def apply_contact(f, torque, i, j, n, force, arm_i, arm_j):
     torque[j, 0] -= arm_j * cx
     torque[j, 1] -= arm_j * cy
     torque[j, 2] -= arm_j * cz
+
+
+@njit(cache=True)
+def merge_mirrors(partner, history, touched, index, rows, capacity):
+    """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
+    is (touched flags, partner tags, values) of one ghost. Returns a tag with no free slot, or -1."""
+    for r in range(len(index)):
+        i = index[r]
+        for k in range(capacity):
+            if rows[r, k] > 0.5:
+                key = np.int64(rows[r, capacity + k])
+                slot = open_slot(partner, history, i, key, 3)
+                if slot < 0:
+                    return i
+                touched[i, slot] = True
+                for d in range(3):
+                    history[i, 3 * slot + d] = rows[r, 2 * capacity + 3 * k + d]
+    return -1
 
 
 @njit(cache=True)
@@ -207,15 +220,31 @@ class GranularPair(Pair):
         p = sim.particles
         update = not sim.in_setup      # the setup forces read the springs without advancing them
         history = self.history
-        touched = np.zeros((p.nlocal, history.capacity), dtype=np.bool_)
-        bad = self.kernel(sim, nlist, update, sim.comm.owners(p), history.partner, history.values,
-                          touched)
+        touched = np.zeros((p.nall, history.capacity), dtype=np.bool_)
+        owner = sim.comm.owners(p)
+        bad = self.kernel(sim, nlist, update, owner, history.partner, history.values, touched)
+        if bad < 0 and update:
+            bad = self.collect_mirrors(sim, owner, touched)
+            free_stale(history.partner, touched, p.nlocal)
         if bad >= 0:
             raise SimulationError(f"particle {bad} has more than {history.capacity} contacts at step "
                                   f"{sim.step}; raise max_contacts of pair_style {self.name}")
         # contact forces are dissipative: no potential energy is reported (the elastic part is not
         # a potential once friction slides), as LAMMPS's granular pair styles
         self.energy = 0.0
+
+    def collect_mirrors(self, sim, owner, touched):
+        """Send springs written into rows of ghosts owned elsewhere back to their owners."""
+        if sim.comm.nprocs == 1:
+            return -1
+        p, history = sim.particles, self.history
+        ghosts = slice(p.nlocal, p.nall)
+        remote = (owner[ghosts] < 0)[:, None]
+        rows = np.hstack([touched[ghosts] & remote, history.partner[ghosts],
+                          history.values[ghosts]]).astype(np.float64)
+        index, back = sim.comm.reverse_rows(rows)
+        bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
+        return -1 if bad < 0 else int(p.tag[bad])
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
         raise NotImplementedError

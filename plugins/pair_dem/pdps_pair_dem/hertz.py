@@ -74,7 +74,7 @@ from pydantic import Field
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
 from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry,
-                       contact_velocity, free_stale, load_spring, store_spring)
+                       contact_velocity, load_spring, store_spring)
 
 
 @njit(cache=True)
@@ -101,7 +101,7 @@ def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offs
             r_star = radius[i] * radius[j] / (radius[i] + radius[j])
             m_star = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
             slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j == -1):
+            if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
             contact_models.hertz_contact(overlap, n, vrel, shear, e_star[ti, tj], g_star[ti, tj],
@@ -110,8 +110,6 @@ def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offs
             if update:
                 store_spring(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
-    if update:
-        free_stale(partner, touched, nlocal)
     return -1
 
 

@@ -90,7 +90,7 @@ from pydantic import Field
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
 from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry,
-                       contact_velocity, free_stale, load_spring, store_spring)
+                       contact_velocity, load_spring, store_spring)
 
 KT_OVER_KN = 2.0 / 7.0        # LAMMPS's default tangential stiffness
 CT_OVER_CN = 0.5              # LAMMPS's default tangential damping
@@ -122,7 +122,7 @@ def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offset
             c_n = cn[ti, tj] + damping
             c_t = ct[ti, tj] + ct_over_cn[ti, tj] * damping
             slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j == -1):
+            if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
             contact_models.lsd_contact(overlap, n, vrel, shear, kn[ti, tj], c_n, kt[ti, tj], c_t,
@@ -130,8 +130,6 @@ def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offset
             if update:
                 store_spring(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
-    if update:
-        free_stale(partner, touched, nlocal)
     return -1
 
 
