@@ -9,7 +9,7 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml $(wildcard plugins/*/pyproject.toml)
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
-	$(VENV)/bin/pip install -q -e '.[mpi]' $(foreach p,$(PLUGINS),-e '$(p)[test]') pytest
+	$(VENV)/bin/pip install -q -e '.[mpi,bench]' $(foreach p,$(PLUGINS),-e '$(p)[test]') pytest
 	touch $(STAMP)
 
 demo: $(STAMP)
