@@ -153,3 +153,23 @@ def test_frictional_contacts_across_ranks_keep_their_history(tmp_path):
         assert result.returncode == 0, result.stderr
         outputs[ranks] = thermo(result.stdout)
     assert len(outputs[1]) == 6 and outputs[1] == outputs[4]
+
+
+def test_a_restart_written_on_2_ranks_continues_on_4_like_the_serial_run(tmp_path):
+    first = WATER.replace("dump 1 all custom 50 dump.water id type x y z vx vy vz", "").replace(
+        "run 100", "run 50\nwrite_restart water.restart")
+    second = """
+        read_restart water.restart
+        thermo 10
+        thermo_style custom step temp press
+        run 50
+    """
+    serial = run(tmp_path, first.replace("write_restart water.restart", "run 50"), 1)
+    assert serial.returncode == 0, serial.stderr
+    written = run(tmp_path, first, 2)
+    assert written.returncode == 0, written.stderr
+    continued = run(tmp_path, second, 4, name="in.more")
+    assert continued.returncode == 0, continued.stderr
+    assert "Read restart file water.restart: 4000 particles at step 50" in continued.stdout
+    # the serial run's second half, from its step-50 line on
+    assert thermo(continued.stdout) == thermo(serial.stdout)[-6:]

@@ -7,17 +7,10 @@ from . import command
 from .words import count, integer
 
 
-def _serial(sim):
-    if sim.comm.nprocs > 1:
-        raise ScriptError(f"restart files are written and read by serial runs only for now "
-                          f"(this run has {sim.comm.nprocs} ranks)")
-
-
 @command("write_restart")
 def write_restart(sim, args):
     count(args, 1, "write_restart FILE")
     sim.require_box("write_restart")
-    _serial(sim)
     files.write_restart(sim, args[0].replace("*", str(sim.step)))
 
 
@@ -26,12 +19,12 @@ def read_restart(sim, args):
     count(args, 1, "read_restart FILE")
     if sim.box is not None:
         raise ScriptError("read_restart needs no box to exist yet (it creates it)")
-    _serial(sim)
     path, shown = sim.resolve(args[0]), args[0]
     if "*" in path:
         path = shown = files.latest(path)
     files.read_restart(sim, path, shown)
-    sim.output.message(f"Read restart file {shown}: {sim.particles.nlocal} particles at step {sim.step}")
+    total = int(sim.comm.sum(sim.particles.nlocal))
+    sim.output.message(f"Read restart file {shown}: {total} particles at step {sim.step}")
 
 
 @command("restart")
@@ -45,5 +38,4 @@ def restart(sim, args):
         sim.restart_output = None
         return
     count(args, 2, usage, at_most=3)
-    _serial(sim)
     sim.restart_output = files.RestartOutput(every, args[1:])

@@ -62,22 +62,33 @@ STYLE_TABLES = (("fix", "fixes"), ("compute", "computes"), ("analyze", "analyzes
 
 # ---- writing --------------------------------------------------------------------------------------
 def write_restart(sim, path):
+    """Rank 0 writes what every rank captured; a failure to write stops every rank alike."""
     header, arrays = capture(sim)
-    write_file(path, header, arrays)
+    message = None
+    if sim.comm.is_root:
+        try:
+            write_file(path, header, arrays)
+        except ScriptError as exc:
+            message = exc.message
+    if sim.comm.nprocs > 1:
+        sim.comm.agree(message)
+    elif message:
+        raise ScriptError(message)
 
 
 def capture(sim):
     """(header dict, {name: array}) of everything a run needs to go on (module docstring)."""
-    if sim.comm.nprocs > 1:
-        raise ScriptError("restart files are written by serial runs only for now")
     if sim.restored_states:
         hand_over_states(sim)          # a fix given again before any run is saved with its state
     p, neighbor = sim.particles, sim.neighbor
-    n = p.nlocal
+    parallel = sim.comm.nprocs > 1
+    n = int(sim.comm.sum(p.nlocal))
     arrays = {"box/lo": sim.box.lo, "box/hi": sim.box.hi, "mass": sim.type_mass}
     properties = []
     for name, prop in p.properties.items():
-        arrays[f"particles/{name}"] = p.arrays[name][:n]
+        # in a parallel run rank 0 holds every rank's particles, in rank order
+        values = p.arrays[name][: p.nlocal]
+        arrays[f"particles/{name}"] = sim.comm.gather_rows(values) if parallel else values
         properties.append({"name": name, "width": prop.width, "dtype": np.dtype(prop.dtype).name,
                            "default": _plain(prop.default)})
     if sim.lattice is not None:
@@ -95,10 +106,12 @@ def capture(sim):
         "regions": [{"id": r.id, "style": r.name, "args": _dump_args(f"region {r.id}", r.args),
                      "state": states.encode(f"region {r.id}", r)} for r in sim.regions.values()],
         "pair": _pair_record(sim.pair, states),
-        "neighbor": _neighbor_record(neighbor, p, arrays),
+        "neighbor": _neighbor_record(neighbor, p, arrays, resumable=not parallel),
         "step": sim.step, "time": sim.time, "dt": sim.dt, "ghost_velocity": sim.ghost_velocity,
         "pe": float(sim.pe), "virial": [float(v) for v in sim.virial],
-        "energy_step": sim.energy_step, "virial_step": sim.virial_step,
+        # per-rank partial sums: a parallel restart has them recomputed by its first run
+        "energy_step": None if parallel else sim.energy_step,
+        "virial_step": None if parallel else sim.virial_step,
     }
     for kind, table in STYLE_TABLES:
         header[table] = [{"id": s.id, "group": s.group, "style": s.name,
@@ -122,13 +135,13 @@ def _pair_record(pair, states):
             "mix_rule": pair.mix_rule, "state": states.encode(f"pair {pair.name}", pair)}
 
 
-def _neighbor_record(neighbor, particles, arrays):
+def _neighbor_record(neighbor, particles, arrays, resumable=True):
     record = {"skin": neighbor.skin, "style": neighbor.style, "every": neighbor.every,
               "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
               "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
               "dangerous": neighbor.dangerous, "built_with": None}
     # the schedule and the lists' recipe go along only while they are current for the particles
-    if neighbor.is_current(particles) and neighbor.built_with is not None:
+    if resumable and neighbor.is_current(particles) and neighbor.built_with is not None:
         skin, lists, lo, hi, periodic = neighbor.built_with
         arrays["neighbor/xhold"] = neighbor.xhold
         arrays["neighbor/lo"], arrays["neighbor/hi"] = lo, hi
@@ -305,6 +318,7 @@ def read_restart(sim, path, shown=None):
     before = dict(sim.__dict__)
     try:
         restore(sim, header, arrays)
+        sim.comm.distribute(sim.particles, sim.box)     # every rank read all: each keeps its own
     except ScriptError as exc:
         sim.__dict__.clear()
         sim.__dict__.update(before)
