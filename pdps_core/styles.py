@@ -231,7 +231,13 @@ class Fix(Style):
 class Compute(Style):
     """A compute: a global value read as ``c_ID`` (scalar), ``c_ID[i]`` (vector) or ``c_ID[i][j]``
     (array). Indices are 0-based as in the PDPS manual. ``needs_energy``/``needs_virial`` tell the
-    core to compute them on the steps this compute is read."""
+    core to compute them on the steps this compute is read.
+
+    A per-atom compute also (or only) defines ``peratom(sim)``: one value per owned particle, a
+    (nlocal,) array, or (nlocal, k) for k values each, in the order of the owned particles (0 for
+    particles outside the compute's group, as LAMMPS). Dumps read it as ``c_ID`` or ``c_ID[k]``
+    (column k, 0-based); reducing computes (``compute reduce``) combine it over ranks themselves,
+    so it holds this rank's particles only."""
     kind = "compute"
     needs_energy: ClassVar[bool] = False
     needs_virial: ClassVar[bool] = False
@@ -247,6 +253,9 @@ class Compute(Style):
 
     def array(self, sim):
         raise ScriptError(f"compute {self.id} ({self.name}) has no array value")
+
+    def peratom(self, sim):
+        raise ScriptError(f"compute {self.id} ({self.name}) has no per-atom values")
 
 
 class Analyze(Style):

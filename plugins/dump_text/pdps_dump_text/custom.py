@@ -9,15 +9,33 @@ omegax omegay omegaz tqx tqy tqz`` and ``step`` (the PDPS manual's: the timestep
 ``x y z`` are wrapped into the box, ``xs ys zs`` scaled to 0..1, ``xu yu zu`` unwrapped through
 periodic images.
 
+References (the header shows them as written):
+
+- ``c_ID``: the per-atom values of a compute with one value per particle (``compute ke``,
+  ``compute property/atom`` of one attribute); ``c_ID[k]``: column k of one with several. k counts
+  from 0, as every pdps index (``c_ID[i]`` in thermo; LAMMPS's dump counts from 1: its ``c_p[1]`` is
+  pdps's ``c_p[0]``).
+- ``f_ID``, ``f_ID[k]``: the same for a fix (or analyze style) that offers per-atom values.
+- ``v_NAME``: a variable's value, the same on every row. LAMMPS's dump reads atom-style variables,
+  one value per particle; pdps has only global (equal, index) variables so far.
+
+The computes, fixes and variables named must exist when the dump is defined and when it writes.
+
 Example::
 
     dump 2 all custom 10 traj.txt id type x y z vx vy vz
+    compute k all ke
+    compute p all property/atom xu radius
+    variable t equal temp
+    dump 3 all custom 100 grains.txt id c_k c_p[0] c_p[1] v_t
 """
+
+import re
 
 import numpy as np
 from pydantic import Field, field_validator
 
-from pdps_core.api import ScriptError, StyleArgs, observables
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables
 
 from .frame import TextDump
 
@@ -27,6 +45,7 @@ VECTOR = {"x": ("x", 0), "y": ("x", 1), "z": ("x", 2), "vx": ("v", 0), "vy": ("v
           "tqx": ("torque", 0), "tqy": ("torque", 1), "tqz": ("torque", 2)}
 SPECIAL = ("id", "type", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "radius", "diameter", "step")
 INTEGER = {"id", "type", "ix", "iy", "iz", "step"}
+REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 
 
 class DumpCustom(TextDump):
@@ -42,8 +61,11 @@ class DumpCustom(TextDump):
         @classmethod
         def _known(cls, columns):
             for column in columns:
-                if column not in VECTOR and column not in SPECIAL:
-                    raise ValueError(f"unknown dump column {column} (known: {', '.join([*SPECIAL, *VECTOR])})")
+                if column not in VECTOR and column not in SPECIAL and not REFERENCE.match(column):
+                    raise ValueError(f"unknown dump column {column} (known: {', '.join([*SPECIAL, *VECTOR])}, "
+                                     "c_ID, c_ID[k], f_ID, f_ID[k], v_NAME)")
+                if column.startswith("v_") and column.endswith("]"):
+                    raise ValueError(f"dump column {column}: a variable has one value, no [k]")
             return columns
 
     def __init__(self, sim, id, group, args):
@@ -53,7 +75,20 @@ class DumpCustom(TextDump):
             if needed and not sim.particles.has(needed):
                 raise ScriptError(f"dump column {column} needs per-particle {needed} "
                                   "(particle_style sphere)")
+            if REFERENCE.match(column):
+                _reference(sim, column)
         super().__init__(sim, id, group, args)
+
+    @property
+    def needs(self):
+        """Energy and virial on the steps this dump writes, when a compute or variable reads them."""
+        needs = set()
+        for column in self.columns:
+            if column.startswith("c_") and REFERENCE.match(column):
+                needs |= self.sim.compute_needs(REFERENCE.match(column).group(2))
+            elif column.startswith("v_"):
+                needs |= {"energy", "virial"}
+        return needs
 
     def column_values(self, sim, chosen):
         p, box = sim.particles, sim.box
@@ -78,8 +113,56 @@ class DumpCustom(TextDump):
                 value = p.x[chosen, d] + p.image[chosen, d] * box.length[d]
             elif column == "radius":
                 value = p.radius[chosen]
-            else:
+            elif column == "diameter":
                 value = 2.0 * p.radius[chosen]
+            else:
+                value = _reference_values(sim, column)[chosen]
             values.append(value)
             formats.append("%d" if column in INTEGER else "%.10g")
         return values, formats
+
+
+def _reference(sim, word):
+    """(style or None, column k or None, variable name or None) of a c_/f_/v_ column; a one-line
+    error when it names nothing, or a style without per-atom values."""
+    prefix, ident, k = REFERENCE.match(word).groups()
+    k = None if k is None else int(k)
+    if prefix == "v":
+        if ident not in sim.variables:
+            raise ScriptError(f"dump column {word}: variable {ident} is not defined")
+        return None, None, ident
+    if prefix == "c":
+        style, kind = sim.computes.get(ident), "compute"
+        offers = style is not None and type(style).peratom is not Compute.peratom
+    else:
+        style, kind = sim.fixes.get(ident) or sim.analyzes.get(ident), "fix"
+        offers = callable(getattr(style, "peratom", None))
+    if style is None:
+        raise ScriptError(f"dump column {word}: {kind} {ident} is not defined")
+    if not offers:
+        raise ScriptError(f"dump column {word}: {kind} {ident} ({style.name}) has no per-atom values")
+    return style, k, None
+
+
+def _reference_values(sim, word):
+    """A c_/f_/v_ column over the owned particles."""
+    style, k, variable = _reference(sim, word)
+    n = sim.particles.nlocal
+    if variable is not None:
+        return np.full(n, float(sim.variables.value(variable)))
+    values = np.asarray(style.peratom(sim), dtype=np.float64)
+    if values.shape[:1] != (n,) or values.ndim > 2:
+        raise ScriptError(f"dump column {word}: {style.kind} {style.id} returned per-atom values of shape "
+                          f"{values.shape}, not ({n},) or ({n}, k)")
+    if k is None:
+        if values.ndim == 2:
+            raise ScriptError(f"dump column {word}: {style.kind} {style.id} has {values.shape[1]} values "
+                              "per particle; name one with [k], k from 0")
+        return values
+    if values.ndim == 1:
+        raise ScriptError(f"dump column {word}: {style.kind} {style.id} has one value per particle; "
+                          "drop the [k]")
+    if k >= values.shape[1]:
+        raise ScriptError(f"dump column {word}: column {k} is out of range ({style.kind} {style.id} has "
+                          f"{values.shape[1]} values per particle, from 0)")
+    return values[:, k]

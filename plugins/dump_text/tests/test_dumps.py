@@ -201,18 +201,24 @@ def test_bad_dump_commands(tmp_path, monkeypatch, line, words):
         assert word in str(info.value)
 
 
-def test_mdanalysis_reads_the_dump(tmp_path, monkeypatch):
+def test_mdanalysis_reads_the_dumps(tmp_path, monkeypatch):
+    """MDAnalysis, an independent reader, reads both dumps frame by frame. It shifts positions so the
+    box starts at 0 (it subtracts the lower corner, also from scaled coordinates, which are already
+    relative to it): the custom dump's x y z read back as x - lo; the atom dump's xs ys zs as
+    xs * L - lo."""
     mda = pytest.importorskip("MDAnalysis")
     sim, ids = make(tmp_path, monkeypatch)
-    sim.command("dump 1 all atom 5 dump.atom\nrun 10")
-    ours = read_dump(tmp_path / "dump.atom")
-    universe = mda.Universe(str(tmp_path / "dump.atom"), format="LAMMPSDUMP")
-    assert universe.trajectory.n_frames == len(ours) == 3
-    assert len(universe.atoms) == len(ids)
+    sim.command("dump 1 all atom 5 dump.atom\ndump 2 all custom 5 dump.xyz id type x y z vx vy vz\nrun 10")
     length = HI - LO
-    for ts, frame in zip(universe.trajectory, ours):
-        np.testing.assert_allclose(ts.dimensions[:3], length, rtol=1e-6)
-        scaled = np.column_stack([frame["data"][c] for c in ("xs", "ys", "zs")])
-        # MDAnalysis puts the box origin at 0: positions are xs * L
-        np.testing.assert_allclose(np.sort(ts.positions, axis=0), np.sort(scaled * length, axis=0),
-                                   atol=1e-3)
+    for name, columns, expected in (("dump.xyz", ("x", "y", "z"), lambda q: q - LO),
+                                    ("dump.atom", ("xs", "ys", "zs"), lambda q: q * length - LO)):
+        ours = read_dump(tmp_path / name)
+        universe = mda.Universe(str(tmp_path / name), format="LAMMPSDUMP")
+        assert universe.trajectory.n_frames == len(ours) == 3
+        assert len(universe.atoms) == len(ids)
+        for ts, frame in zip(universe.trajectory, ours):
+            np.testing.assert_allclose(ts.dimensions[:3], length, rtol=1e-6)
+            order = np.argsort(frame["data"]["id"])
+            mine = np.column_stack([frame["data"][c] for c in columns])[order]
+            theirs = ts.positions[np.argsort(universe.atoms.ids)]
+            np.testing.assert_allclose(theirs, expected(mine), atol=1e-4)

@@ -1,0 +1,2 @@
+"""pdps plugin: computes ke, msd, com, reduce, property/atom and pair/contact; see each style's
+module for the physics and the script syntax."""

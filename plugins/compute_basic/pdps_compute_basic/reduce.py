@@ -1,0 +1,92 @@
+r"""Compute ``reduce``: per-atom values reduced over a group to one number each (LAMMPS's compute
+reduce).
+
+For each input :math:`a` over the particles i of the group G (N of them, on all ranks):
+
+.. math::
+
+    \mathrm{sum} = \sum_{i \in G} a_i, \quad \mathrm{min} = \min_{i \in G} a_i, \quad
+    \mathrm{max} = \max_{i \in G} a_i, \quad \mathrm{ave} = \frac{1}{N}\sum_{i \in G} a_i
+
+in the units of the input. One input gives a scalar ``c_ID``; several give a vector, ``c_ID[k]`` the
+k-th input (0-based). An empty group gives 0 (LAMMPS: 0 for sum and ave, ±1e20 for min and max).
+
+Inputs:
+
+- ``x y z vx vy vz fx fy fz`` (LAMMPS's list; positions wrapped into the box) and any other
+  attribute of ``compute property/atom`` (``xu``, ``mass``, ``radius``, ``omegaz``, ...);
+- ``c_ID``: a per-atom compute with one value per particle (``ke``, ``property/atom`` of one
+  attribute); ``c_ID[k]``: column k (0-based, as every pdps index) of one with several;
+- ``f_ID``, ``f_ID[k]``: the same for a fix that offers per-atom values.
+
+The group of a referenced compute is applied as well: its particles outside that group read 0.
+
+Syntax::
+
+    compute ID GROUP reduce sum|min|max|ave input...
+
+Examples::
+
+    compute zmax all reduce max z
+    compute p all property/atom vx radius
+    compute r all reduce ave c_p[0] c_p[1]       # c_r[0], c_r[1]
+    compute k all ke
+    compute kmax all reduce max c_k
+"""
+
+from typing import Literal
+
+import numpy as np
+from pydantic import Field
+
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables
+
+from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom, peratom_column
+
+
+class ComputeReduce(Compute):
+    name = "reduce"
+    usage = "compute ID GROUP reduce sum|min|max|ave input..."
+
+    class Args(StyleArgs):
+        mode: Literal["sum", "min", "max", "ave"]
+        inputs: list[str] = Field(min_length=1)
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        what = f"compute {id} reduce"
+        for word in args.inputs:
+            if REFERENCE.match(word):
+                find_peratom(sim, word, what)
+            elif word in ATTRIBUTES:
+                check_attribute(sim, word, what)
+            else:
+                raise ScriptError(f"{what}: unknown input {word} (x y z vx vy vz fx fy fz, another "
+                                  "property/atom attribute, c_ID, c_ID[k], f_ID or f_ID[k])")
+
+    def _input(self, sim, word):
+        if word in ATTRIBUTES:
+            return attribute(sim, word)
+        style, column = find_peratom(sim, word, f"compute {self.id} reduce")
+        return peratom_column(sim, style, column, word)
+
+    def vector(self, sim):
+        chosen = sim.groups.select(sim, self.group)
+        values = [self._input(sim, word)[chosen] for word in self.args.inputs]
+        mode = self.args.mode
+        count = observables.count(sim, self.group)
+        if count == 0:
+            return np.zeros(len(values))
+        if mode in ("sum", "ave"):
+            local = np.array([float(a.sum()) for a in values])
+            total = np.asarray(sim.comm.sum(local), dtype=np.float64)
+            return total / count if mode == "ave" else total
+        if mode == "min":
+            return np.array([sim.comm.min(float(a.min()) if len(a) else np.inf) for a in values])
+        return np.array([sim.comm.max(float(a.max()) if len(a) else -np.inf) for a in values])
+
+    def scalar(self, sim):
+        if len(self.args.inputs) > 1:
+            raise ScriptError(f"compute {self.id} reduces {len(self.args.inputs)} inputs: read one with "
+                              f"c_{self.id}[k], k from 0")
+        return float(self.vector(sim)[0])
