@@ -23,10 +23,9 @@ with tag_i < tag_j, rows sorted by (tag_i, tag_j), so the table is the same on a
 (fx, fy, fz) is the contact force on tag_i from tag_j (force units), and the contact point is wrapped
 into the box along periodic axes (distance units). ``c_ID`` is the number of contacts.
 
-Forces. The pair styles keep no per-contact force, so the force columns are filled only when the
-pair style offers ``contact_forces(sim)`` (the arrays tag_i, tag_j and the force on tag_i, one row
-per contact this rank computed at the last force computation); otherwise they are NaN, with a
-warning when the compute is defined. Overlap and contact point are always exact geometry.
+Forces come from the pair style's ``contact_forces(sim)`` (tag_i, tag_j and the force on tag_i, one row
+per contact this rank computed at the last force computation; dem/lsd and dem/hertz provide it); a
+pair style without it leaves them NaN, with a warning when the compute is defined. Overlap and contact point are always exact geometry.
 
 Contacts are found in the pair style's neighbor list, so the compute is read after a run
 (``run 0`` is enough) and sees the positions of the last force computation. The table is gathered

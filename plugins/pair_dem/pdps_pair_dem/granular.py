@@ -146,6 +146,18 @@ def merge_mirrors(partner, history, touched, index, rows, capacity):
 
 
 @njit(cache=True)
+def log_contact(log_pairs, log_force, logged, i, j, force):
+    """Remember a contact and the force on i, for contact_forces (compute pair/contact)."""
+    m = logged[0]
+    if m < log_pairs.shape[0]:
+        log_pairs[m, 0] = i
+        log_pairs[m, 1] = j
+        for d in range(3):
+            log_force[m, d] = force[d]
+        logged[0] = m + 1
+
+
+@njit(cache=True)
 def free_stale(partner, touched, nlocal):
     """Free the slots of contacts that no pair computation touched this step (spheres apart)."""
     for i in range(nlocal):
@@ -245,6 +257,24 @@ class GranularPair(Pair):
         index, back = sim.comm.reverse_rows(rows)
         bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
         return -1 if bad < 0 else int(p.tag[bad])
+
+    def contact_log(self, nlist):
+        """Buffers the kernel fills with the contacts of this force computation (one per list pair
+        at most), reused between steps."""
+        size = max(len(nlist.neighbors), 1)
+        if getattr(self, "_log_pairs", None) is None or len(self._log_pairs) < size:
+            self._log_pairs = np.empty((size, 2), dtype=np.int64)
+            self._log_force = np.empty((size, 3))
+        self._logged = np.zeros(1, dtype=np.int64)
+        return self._log_pairs, self._log_force, self._logged
+
+    def contact_forces(self, sim):
+        """(tag_i, tag_j, force on i) of every contact this rank computed in the last force
+        computation: what compute pair/contact reports."""
+        m = int(self._logged[0]) if getattr(self, "_logged", None) is not None else 0
+        tag = sim.particles.tag
+        pairs = self._log_pairs[:m] if m else np.zeros((0, 2), dtype=np.int64)
+        return tag[pairs[:, 0]], tag[pairs[:, 1]], (self._log_force[:m].copy() if m else np.zeros((0, 3)))
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
         raise NotImplementedError

@@ -73,14 +73,14 @@ from pydantic import Field
 
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
-from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry,
+from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry, log_contact,
                        contact_velocity, load_spring, store_spring)
 
 
 @njit(cache=True)
 def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
                   nlocal, e_star, g_star, beta, mu, dt, update, limit_damping, partner, history,
-                  touched):
+                  touched, log_pairs, log_force, logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
     contact slots are full."""
     # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
@@ -110,6 +110,7 @@ def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offs
             if update:
                 store_spring(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
+            log_contact(log_pairs, log_force, logged, i, j, force)
     return -1
 
 
@@ -187,7 +188,7 @@ class PairDEMHertz(GranularPair):
         return hertz_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
                              nlist.offsets, nlist.neighbors, p.nlocal, self.e_star, self.g_star,
                              self.beta, self.mu, sim.dt, update, self.args.limit_damping, partner,
-                             values, touched)
+                             values, touched, *self.contact_log(nlist))
 
     def timestep_limits(self, sim):
         """Rayleigh and Hertz times of the particles now present (docstring)."""

@@ -89,7 +89,7 @@ from pydantic import Field
 
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
-from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry,
+from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry, log_contact,
                        contact_velocity, load_spring, store_spring)
 
 KT_OVER_KN = 2.0 / 7.0        # LAMMPS's default tangential stiffness
@@ -99,7 +99,7 @@ CT_OVER_CN = 0.5              # LAMMPS's default tangential damping
 @njit(cache=True)
 def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors, nlocal,
                 kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu, dt, update, limit_damping,
-                partner, history, touched):
+                partner, history, touched, log_pairs, log_force, logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
     contact slots are full."""
     # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
@@ -130,6 +130,7 @@ def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offset
             if update:
                 store_spring(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
+            log_contact(log_pairs, log_force, logged, i, j, force)
     return -1
 
 
@@ -196,7 +197,8 @@ class PairDEMLsd(GranularPair):
         return lsd_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
                            nlist.offsets, nlist.neighbors, p.nlocal, self.kn, self.cn, self.kt,
                            self.ct, self.cn_per_root_mass, self.ct_over_cn, self.mu, sim.dt, update,
-                           self.args.limit_damping, partner, values, touched)
+                           self.args.limit_damping, partner, values, touched,
+                           *self.contact_log(nlist))
 
     def damping(self, i, j, m_star):
         return self.cn[i, j] + self.cn_per_root_mass[i, j] * math.sqrt(m_star)
