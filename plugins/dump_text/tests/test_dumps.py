@@ -222,3 +222,21 @@ def test_mdanalysis_reads_the_dumps(tmp_path, monkeypatch):
             mine = np.column_stack([frame["data"][c] for c in columns])[order]
             theirs = ts.positions[np.argsort(universe.atoms.ids)]
             np.testing.assert_allclose(theirs, expected(mine), atol=1e-4)
+
+
+def test_ovito_reads_the_dumps(tmp_path, monkeypatch):
+    """OVITO (the visualiser most LAMMPS users open dumps with) reads both dumps: every frame, the
+    box origin, and the positions to the printed precision."""
+    ovito_io = pytest.importorskip("ovito.io")
+    sim, ids = make(tmp_path, monkeypatch)
+    sim.command("dump 1 all atom 5 dump.atom\ndump 2 all custom 5 dump.xyz id type x y z vx vy vz\nrun 10")
+    order = np.argsort(sim.tag)
+    positions = sim.x[order]
+    for name, tolerance in (("dump.atom", 1e-6), ("dump.xyz", 1e-8)):
+        pipeline = ovito_io.import_file(str(tmp_path / name))
+        assert pipeline.source.num_frames == 3
+        data = pipeline.compute(2)
+        assert data.particles.count == len(ids)
+        np.testing.assert_allclose(np.asarray(data.cell[:, 3]), LO, atol=1e-12)
+        read = np.asarray(data.particles.positions)[np.argsort(np.asarray(data.particles["Particle Identifier"]))]
+        np.testing.assert_allclose(read, positions, atol=tolerance * (HI - LO).max())
