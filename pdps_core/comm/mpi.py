@@ -15,10 +15,62 @@ Errors found on one rank (a lost particle, a non-finite force) are agreed on col
 ``agree`` so that every rank stops with the same one-line message and none hangs.
 """
 
+import math
+
 import numpy as np
+from numba import njit
 
 from ..errors import SimulationError
 from .grid import Decomposition, choose_grid
+
+
+@njit(cache=True)
+def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, capacity):
+    """(rank, particle, image shift) of every ghost this rank must send: particle i, displaced by a
+    whole number of box lengths along periodic axes, inside rank r's sub-domain grown by cutghost.
+    Returns counts -1 when ``capacity`` is too small."""
+    ranks = np.empty(capacity, dtype=np.int64)
+    index = np.empty(capacity, dtype=np.int64)
+    shift = np.empty((capacity, 3))
+    k_lo = np.zeros(3, dtype=np.int64)
+    k_hi = np.zeros(3, dtype=np.int64)
+    m = 0
+    for r in range(sublo.shape[0]):
+        for i in range(nlocal):
+            empty = False
+            for d in range(3):
+                lo = sublo[r, d] - cutghost
+                hi = subhi[r, d] + cutghost
+                if two_d and d == 2:
+                    k_lo[d] = 0
+                    k_hi[d] = 0
+                elif periodic[d]:
+                    # images x + k L with lo <= x + k L < hi
+                    k_lo[d] = math.ceil((lo - x[i, d]) / length[d])
+                    k_hi[d] = math.ceil((hi - x[i, d]) / length[d]) - 1
+                    if k_lo[d] > k_hi[d]:
+                        empty = True
+                else:
+                    k_lo[d] = 0
+                    k_hi[d] = 0
+                    if not (lo <= x[i, d] < hi):
+                        empty = True
+            if empty:
+                continue
+            for kx in range(k_lo[0], k_hi[0] + 1):
+                for ky in range(k_lo[1], k_hi[1] + 1):
+                    for kz in range(k_lo[2], k_hi[2] + 1):
+                        if r == me and kx == 0 and ky == 0 and kz == 0:
+                            continue
+                        if m >= capacity:
+                            return ranks, index, shift, -1
+                        ranks[m] = r
+                        index[m] = i
+                        shift[m, 0] = kx * length[0]
+                        shift[m, 1] = ky * length[1]
+                        shift[m, 2] = kz * length[2]
+                        m += 1
+    return ranks, index, shift, m
 
 
 class MPIComm:
@@ -31,6 +83,8 @@ class MPIComm:
         self.decomposition = None
         self.grid_request = (None, None, None)
         self._send = []          # per destination rank: (local indices, shift rows)
+        self._send_index = np.zeros(0, dtype=np.int64)
+        self._send_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._recv_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._self_ghost = np.zeros(0, dtype=np.int64)
 
@@ -89,43 +143,29 @@ class MPIComm:
         p = particles
         p.clear_ghosts()
         nlocal = p.nlocal
-        x = p.x[:nlocal]
-        shifts = [np.zeros(3)]
         if cutghost > 0:
-            per_axis = []
-            for d in range(3):
-                if box.periodic[d] and not (box.dimension == 2 and d == 2):
-                    k = int(np.ceil(cutghost / box.length[d]))
-                    per_axis.append([j * box.length[d] for j in range(-k, k + 1)])
-                else:
-                    per_axis.append([0.0])
-            shifts = [np.array([a, b, c]) for a in per_axis[0] for b in per_axis[1] for c in per_axis[2]]
-        self._send = []
-        counts = np.zeros(self.nprocs, dtype=np.int64)
-        blocks = []
-        for rank in range(self.nprocs):
-            lo, hi = self.decomposition.bounds(rank)
-            lo, hi = lo - cutghost, hi + cutghost
-            indices, offsets = [], []
-            if cutghost > 0:
-                for shift in shifts:
-                    if rank == self.rank and not shift.any():
-                        continue
-                    moved = x + shift
-                    inside = np.all((moved >= lo) & (moved < hi), axis=1)
-                    if box.dimension == 2:
-                        inside = np.all((moved[:, :2] >= lo[:2]) & (moved[:, :2] < hi[:2]), axis=1)
-                    chosen = np.flatnonzero(inside)
-                    indices.append(chosen)
-                    offsets.append(np.repeat(shift[None, :], len(chosen), axis=0))
-            index = np.concatenate(indices) if indices else np.zeros(0, dtype=np.int64)
-            shift = np.concatenate(offsets) if offsets else np.zeros((0, 3))
-            self._send.append((index, shift))
-            counts[rank] = len(index)
-            rows = p.pack(index)
-            rows[:, :3] += shift          # x is the first property: the rows carry the image position
-            blocks.append(rows)
-        rows = np.concatenate(blocks) if blocks else np.zeros((0, p.row_width()))
+            bounds = [self.decomposition.bounds(r) for r in range(self.nprocs)]
+            sublo = np.array([b[0] for b in bounds])
+            subhi = np.array([b[1] for b in bounds])
+            periodic = np.array(box.periodic, dtype=np.bool_)
+            capacity = max(4 * nlocal, 1024)
+            while True:
+                ranks, index, shift, m = ghost_sends(p.x, nlocal, sublo, subhi, cutghost, box.length,
+                                                     periodic, self.rank, box.dimension == 2, capacity)
+                if m >= 0:
+                    break
+                capacity *= 4
+            ranks, index, shift = ranks[:m], index[:m], shift[:m]
+        else:
+            ranks, index, shift = (np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros((0, 3)))
+        counts = np.bincount(ranks, minlength=self.nprocs).astype(np.int64)
+        starts = np.concatenate([[0], np.cumsum(counts)])
+        self._send = [(index[starts[r]:starts[r + 1]], shift[starts[r]:starts[r + 1]])
+                      for r in range(self.nprocs)]
+        self._send_index = index
+        self._send_counts = counts
+        rows = p.pack(index)
+        rows[:, :3] += shift          # x is the first property: the rows carry the image position
         received, self._recv_counts = self._alltoall_rows(rows, counts, return_counts=True)
         p.set_ghost_rows(received)
         # ghosts this rank sent to itself (periodic self-images), for owners()
@@ -140,45 +180,43 @@ class MPIComm:
 
     def forward_comm(self, particles, names=("x",)):
         p = particles
+        index = self._send_index
         for name in names:
             array = p.arrays[name]
             width = 1 if array.ndim == 1 else array.shape[1]
-            blocks = []
-            for index, shift in self._send:
-                values = array[index].reshape(len(index), width).astype(np.float64)
-                if name == "x":
-                    values = values + shift
-                blocks.append(values)
-            sent = np.concatenate(blocks) if blocks else np.zeros((0, width))
-            counts = np.array([len(index) for index, _ in self._send], dtype=np.int64)
-            received = self._alltoall_rows(sent, counts)
+            values = array[index].reshape(len(index), width).astype(np.float64)
+            if name == "x":
+                values += np.concatenate([shift for _, shift in self._send]) if len(index) else 0.0
+            received = self._alltoall_rows(values, self._send_counts, self._recv_counts)
             ghost = array[p.nlocal:]
             ghost[...] = received.reshape(ghost.shape).astype(array.dtype)
 
     def reverse_comm(self, particles, names=("f",)):
         p = particles
+        index = self._send_index
         for name in names:
             array = p.arrays[name]
             width = 1 if array.ndim == 1 else array.shape[1]
             ghost_values = array[p.nlocal:].reshape(p.nghost, width).astype(np.float64)
-            back = self._alltoall_rows(ghost_values, self._recv_counts)
-            index = np.concatenate([i for i, _ in self._send]) if self._send else np.zeros(0, np.int64)
+            back = self._alltoall_rows(ghost_values, self._recv_counts, self._send_counts)
             np.add.at(array.reshape(len(array), width) if width > 1 else array[:, None], index,
                       back.reshape(len(index), width))
 
     def reverse_rows(self, rows):
         """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,
         for values a style merges itself rather than sums."""
-        back = self._alltoall_rows(rows, self._recv_counts)
-        index = np.concatenate([i for i, _ in self._send]) if self._send else np.zeros(0, np.int64)
-        return index, back
+        back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
+        return self._send_index, back
 
     # ---- collectives --------------------------------------------------------------------------
-    def _alltoall_rows(self, rows, counts, return_counts=False):
+    def _alltoall_rows(self, rows, counts, recv_counts=None, return_counts=False):
+        """Rows to every rank (``counts`` per destination, in rank order); the receive counts are
+        exchanged unless known (ghost lists between rebuilds)."""
         width = rows.shape[1] if rows.ndim == 2 else 1
         counts = np.asarray(counts, dtype=np.int64)
-        recv_counts = np.empty(self.nprocs, dtype=np.int64)
-        self.world.Alltoall(counts, recv_counts)
+        if recv_counts is None:
+            recv_counts = np.empty(self.nprocs, dtype=np.int64)
+            self.world.Alltoall(counts, recv_counts)
         received = np.empty((int(recv_counts.sum()), width))
         send = np.ascontiguousarray(rows, dtype=np.float64).reshape(-1)
         send_counts = counts * width
@@ -210,6 +248,12 @@ class MPIComm:
 
     def agree(self, message):
         """Raise the same SimulationError on every rank when any rank found one (lowest rank's)."""
+        # a one-integer reduction on every step; the messages are gathered only when one exists
+        flag = np.array([1 if message else 0], dtype=np.int64)
+        found = np.empty(1, dtype=np.int64)
+        self.world.Allreduce(flag, found, op=self.MPI.MAX)
+        if not found[0]:
+            return
         messages = self.world.allgather(message)
         first = next((m for m in messages if m), None)
         if first is not None:
