@@ -186,7 +186,25 @@ class GranularPair(Pair):
         self.open_history()
         self.max_radius, _ = self.extremes(ntypes)
         self.check_box()
-        return super().init(ntypes)
+        cutoffs = super().init(ntypes)
+        self.warn_coarse_timestep(sim)
+        return cutoffs
+
+    def warn_coarse_timestep(self, sim):
+        """A collision resolved by few steps loses restitution silently (docs/accuracy-dem.md:
+        ~9 % at t_c/10, ~21 % at t_c/5 for single collisions): say so before the run."""
+        limits = self.timestep_limits(sim)
+        contact = limits.get("contact") or limits.get("hertz")
+        if contact:
+            limit, what = contact / 10.0, f"the shortest contact ({contact:.3g})"
+        elif limits.get("rayleigh"):
+            limit, what = 0.2 * limits["rayleigh"], f"0.2 of the Rayleigh time ({limits['rayleigh']:.3g})"
+        else:
+            return
+        if sim.dt > limit:
+            sim.warn(f"pair {self.name}: timestep {sim.dt:g} is more than {what}"
+                     f"{' / 10' if contact else ''}: collisions lose restitution (up to ~9 % at t_c/10, "
+                     f"~21 % at t_c/5); use timestep <= {limit:.3g}")
 
     def open_history(self):
         if self.history is not None:
