@@ -173,3 +173,24 @@ def test_a_restart_written_on_2_ranks_continues_on_4_like_the_serial_run(tmp_pat
     assert "Read restart file water.restart: 4000 particles at step 50" in continued.stdout
     # the serial run's second half, from its step-50 line on
     assert thermo(continued.stdout) == thermo(serial.stdout)[-6:]
+
+
+def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
+    script = """
+        region box block 0 8 0 8 0 8
+        create_box 1 box
+        mass 1 1
+        create_particle 1 random_no_overlap 1536 box 0.0 7
+        pair_style dpd/fdt 1.0 1.0 4321
+        pair_coeff * * 25.0 4.5 1.0
+        velocity all create 1.0 5 gaussian
+        fix 1 all shardlow
+        fix 2 all nve
+        timestep 0.04
+        thermo 20
+        thermo_style custom step temp press
+        run 100
+    """
+    outputs = {ranks: thermo(run(tmp_path, script, ranks).stdout) for ranks in (1, 2, 4)}
+    assert len(outputs[1]) == 6
+    assert outputs[1] == outputs[2] == outputs[4]

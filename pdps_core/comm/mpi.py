@@ -243,6 +243,10 @@ class MPIComm:
         gathered = self.world.gather(rows, root=0)
         return np.concatenate(gathered) if self.is_root else None
 
+    def bcast(self, value):
+        """Rank 0's value on every rank."""
+        return self.world.bcast(value, root=0)
+
     def allgather_rows(self, rows):
         return np.concatenate(self.world.allgather(rows))
 

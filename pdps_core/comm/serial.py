@@ -110,6 +110,9 @@ class SerialComm:
     def gather_rows(self, rows):
         return rows
 
+    def bcast(self, value):
+        return value
+
     def allgather_rows(self, rows):
         return rows
 

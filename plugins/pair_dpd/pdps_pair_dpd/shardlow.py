@@ -53,13 +53,15 @@ stream. With the pair's own seed, a Shardlow run would reuse, number for number,
 two runs meant to be independent samples would share their noise. A XOR with a large constant
 rather than seed + 1, because seed + 1 is the seed a user is likely to type for the next run.
 
-Serial runs: a pair whose j is a ghost updates the velocity of j's owner (``comm.ghost_source``), so
-every pair update reads the velocities the previous updates left, exactly a sequential sweep. A
-particle paired with its own periodic image (boxes shorter than the cutoff) is skipped: its relative
-velocity and net impulse are zero. Ghost velocities are left stale: with this fix the pair style
-reads none. Parallel runs need LAMMPS's SSA neighbor stencil, which orders the pairs in phases so
-that no two ranks update one particle at once and sends ghost velocity changes back to their owners
-(sub-domains longer than 2 (rc + skin)); that is not implemented yet.
+Order of the sweep: every pair within the cutoff, both particles in the group, is updated once per
+step in one global order, sorted by the pair's two particle ids; each update reads the velocities the
+previous ones left (a sequential sweep). Each rank collects the pairs of its half list, rank 0 sweeps
+them all over the velocities of all particles and sends the result back, so the trajectory is the
+same on any number of ranks and does not depend on how particles are stored. The sweep itself is
+serial: it costs a sort of the pairs and a gather per step. (LAMMPS sweeps its SSA sub-boxes in
+parallel instead; its result depends on the decomposition.) A particle paired with its own periodic
+image (boxes shorter than the cutoff) is skipped: its relative velocity and net impulse are zero.
+Ghost velocities are left stale: with this fix the pair style reads none.
 
 Only pairs with both particles in the fix's group are updated (LAMMPS ignores the group).
 ``pair_style dpd/fdt`` must be the pair style; a deterministic integrator (``fix nve``) must be
@@ -78,6 +80,8 @@ Example::
 """
 
 import math
+
+import numpy as np
 
 from numba import njit
 
@@ -105,19 +109,24 @@ def radial_relative_velocity(v, i, j, ex, ey, ez):
 
 
 @njit(cache=True)
-def shardlow_sweep(x, v, mass, type_, tag, mask, groupbit, offsets, neighbors, ghost_source,
-                   nlocal, gamma, sigma, cut, dt, key, step):
-    sqrt_dt = math.sqrt(dt)
+def collect_pairs(x, type_, tag, mask, groupbit, offsets, neighbors, nlocal, cut):
+    """The pairs this rank's half list holds within the cutoff, both particles in the group, as
+    (lower tag, higher tag, unit vector from the lower-tag particle to the other..., weight, types)."""
+    total = offsets[nlocal]
+    low = np.empty(total, dtype=np.int64)
+    high = np.empty(total, dtype=np.int64)
+    e = np.empty((total, 3))
+    w = np.empty(total)
+    types = np.empty((total, 2), dtype=np.int64)
+    m = 0
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
         ti = type_[i]
-        inv_mi = 1.0 / mass[i]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            # a ghost is an image: its velocity lives on its owner, updated in place
-            owner = j if j < nlocal else ghost_source[j - nlocal]
-            if owner == i or not mask[owner] & groupbit:
+            # a particle's own periodic image is not a partner
+            if tag[j] == tag[i] or not mask[j] & groupbit:
                 continue
             tj = type_[j]
             delx = x[i, 0] - x[j, 0]
@@ -128,18 +137,36 @@ def shardlow_sweep(x, v, mass, type_, tag, mask, groupbit, offsets, neighbors, g
             if rsq >= rc * rc or rsq < EPSILON * EPSILON:
                 continue
             r = math.sqrt(rsq)
-            ex = delx / r
-            ey = dely / r
-            ez = delz / r
-            w = 1.0 - r / rc
-            s = 0.5 * sigma[ti, tj] * w * sqrt_dt * pair_gaussian(key, step, tag[i], tag[j])
-            g = 0.5 * gamma[ti, tj] * w * w * dt
-            inv_mj = 1.0 / mass[owner]
-            implicit = 1.0 / (1.0 + (inv_mi + inv_mj) * g)
-            explicit_half = s - g * radial_relative_velocity(v, i, owner, ex, ey, ez)
-            pair_impulse(v, i, owner, ex, ey, ez, explicit_half, inv_mi, inv_mj)
-            implicit_half = (s - g * radial_relative_velocity(v, i, owner, ex, ey, ez)) * implicit
-            pair_impulse(v, i, owner, ex, ey, ez, implicit_half, inv_mi, inv_mj)
+            sign = 1.0 if tag[i] < tag[j] else -1.0
+            low[m] = min(tag[i], tag[j])
+            high[m] = max(tag[i], tag[j])
+            e[m, 0] = sign * delx / r
+            e[m, 1] = sign * dely / r
+            e[m, 2] = sign * delz / r
+            w[m] = 1.0 - r / rc
+            types[m, 0] = ti
+            types[m, 1] = tj
+            m += 1
+    return low[:m], high[:m], e[:m], w[:m], types[:m]
+
+
+@njit(cache=True)
+def sweep_pairs(v, inv_mass, a, b, low, high, e, w, types, gamma, sigma, dt, key, step):
+    """Shardlow's S1 update pair after pair, in the order given; v and inv_mass are indexed by the
+    dense particle numbers a and b of each pair (a = the lower tag)."""
+    sqrt_dt = math.sqrt(dt)
+    for m in range(len(a)):
+        i, j = a[m], b[m]
+        ti, tj = types[m, 0], types[m, 1]
+        ex, ey, ez = e[m, 0], e[m, 1], e[m, 2]
+        s = 0.5 * sigma[ti, tj] * w[m] * sqrt_dt * pair_gaussian(key, step, low[m], high[m])
+        g = 0.5 * gamma[ti, tj] * w[m] * w[m] * dt
+        inv_mi, inv_mj = inv_mass[i], inv_mass[j]
+        implicit = 1.0 / (1.0 + (inv_mi + inv_mj) * g)
+        explicit_half = s - g * radial_relative_velocity(v, i, j, ex, ey, ez)
+        pair_impulse(v, i, j, ex, ey, ez, explicit_half, inv_mi, inv_mj)
+        implicit_half = (s - g * radial_relative_velocity(v, i, j, ex, ey, ez)) * implicit
+        pair_impulse(v, i, j, ex, ey, ez, implicit_half, inv_mi, inv_mj)
 
 
 def require_dpd_fdt(sim):
@@ -174,20 +201,34 @@ class FixShardlow(Fix):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         require_dpd_fdt(sim)
-        if sim.comm.nprocs > 1:
-            # the sequential pair sweep needs LAMMPS's SSA stencil ordering across ranks
-            raise ScriptError("fix shardlow runs on one rank only (for now); use fix nve or mvv/dpd "
-                              "in parallel runs")
 
     def setup(self, sim):
         require_dpd_fdt(sim)
         check_fix_order(sim)
 
     def initial_integrate(self, sim):
-        p = sim.particles
-        pair = sim.pair
+        """Pairs are swept in one global order, sorted by their two tags, on rank 0 over the
+        velocities of all particles: the same sequence of updates on any number of ranks (LAMMPS
+        instead sweeps sub-box by sub-box in parallel, and its result depends on the decomposition)."""
+        p, pair, comm = sim.particles, sim.pair, sim.comm
         nlist = sim.pair_list
-        shardlow_sweep(p.x, p.v, observables.masses(sim), p.type, p.tag, p.mask,
-                       sim.groups.bit(self.group), nlist.offsets, nlist.neighbors,
-                       sim.comm.ghost_source, p.nlocal, pair.gamma, pair.sigma, pair.cut, sim.dt,
-                       pair.args.seed ^ SHARDLOW_KEY, sim.step)
+        low, high, e, w, types = collect_pairs(p.x, p.type, p.tag, p.mask, sim.groups.bit(self.group),
+                                               nlist.offsets, nlist.neighbors, p.nlocal, pair.cut)
+        n = p.nlocal
+        owned = np.column_stack([p.tag[:n].astype(np.float64), 1.0 / observables.masses(sim), p.v[:n]])
+        pairs = np.column_stack([low, high, types, e, w]).astype(np.float64)
+        owned, pairs = comm.gather_rows(owned), comm.gather_rows(pairs)
+        velocities = None
+        if comm.is_root:
+            order = np.argsort(owned[:, 0], kind="stable")
+            tags = owned[order, 0].astype(np.int64)
+            velocities = np.ascontiguousarray(owned[order, 2:5])
+            pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
+            low, high = pairs[:, 0].astype(np.int64), pairs[:, 1].astype(np.int64)
+            sweep_pairs(velocities, np.ascontiguousarray(owned[order, 1]), np.searchsorted(tags, low),
+                        np.searchsorted(tags, high), low, high, np.ascontiguousarray(pairs[:, 4:7]),
+                        np.ascontiguousarray(pairs[:, 7]), pairs[:, 2:4].astype(np.int64), pair.gamma,
+                        pair.sigma, sim.dt, pair.args.seed ^ SHARDLOW_KEY, sim.step)
+            velocities = (tags, velocities)
+        tags, updated = comm.bcast(velocities)
+        p.v[:n] = updated[np.searchsorted(tags, p.tag[:n])]
