@@ -194,3 +194,11 @@ def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
     outputs = {ranks: thermo(run(tmp_path, script, ranks).stdout) for ranks in (1, 2, 4)}
     assert len(outputs[1]) == 6
     assert outputs[1] == outputs[2] == outputs[4]
+
+
+def test_spheres_on_a_mesh_wall_give_the_same_run_on_1_2_and_4_ranks(tmp_path):
+    stl = ROOT / "plugins" / "fix_wall" / "tests" / "data" / "square.stl"
+    script = (ROOT / "tests" / "data" / "mesh_plate.in").read_text().replace("{stl}", str(stl))
+    outputs = {ranks: thermo(run(tmp_path, script, ranks).stdout) for ranks in (1, 2, 4)}
+    assert len(outputs[1]) == 7
+    assert outputs[1] == outputs[2] == outputs[4]
