@@ -12,8 +12,8 @@ from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
 from .styles import (Analyze, Compute, Dump, Fix, Pair, Region, StyleArgs, keyword, parse_args,
-                     registry)
+                     peratom_column, registry)
 
 __all__ = ["Analyze", "ContactHistory", "contact_models", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "Region",
            "ScriptError", "SimulationError", "Simulation", "StyleArgs", "keyword", "observables",
-           "pair_gaussian", "parse_args", "philox4x32", "registry"]
+           "pair_gaussian", "parse_args", "peratom_column", "philox4x32", "registry"]

@@ -79,8 +79,9 @@ def _split(n, v):
 
 
 @njit(cache=True)
-def lsd_contact(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force):
-    """Linear spring-dashpot with Coulomb friction; returns F_n, adds the force on i to ``force``."""
+def _spring_dashpot(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force):
+    """Both laws once their stiffnesses and dampings are known for this overlap: F_n = kn delta -
+    cn v_n along n, then the tangential spring with its Coulomb limit."""
     vn, vt = _split(n, v)
     fn = kn * overlap - cn * vn
     if limit_damping and fn < 0.0:
@@ -89,6 +90,12 @@ def lsd_contact(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, for
         force[d] += fn * n[d]
     _tangential(n, vt, shear, kt, ct, mu, fn, dt, force)
     return fn
+
+
+@njit(cache=True)
+def lsd_contact(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force):
+    """Linear spring-dashpot with Coulomb friction; returns F_n, adds the force on i to ``force``."""
+    return _spring_dashpot(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force)
 
 
 @njit(cache=True)
@@ -101,14 +108,7 @@ def hertz_contact(overlap, n, v, shear, e_star, g_star, r_star, m_star, beta, mu
     kn = 4.0 / 3.0 * e_star * root
     cn = -HERTZ_DAMPING * beta * math.sqrt(sn * m_star)
     ct = -HERTZ_DAMPING * beta * math.sqrt(st * m_star)
-    vn, vt = _split(n, v)
-    fn = kn * overlap - cn * vn
-    if limit_damping and fn < 0.0:
-        fn = 0.0
-    for d in range(3):
-        force[d] += fn * n[d]
-    _tangential(n, vt, shear, st, ct, mu, fn, dt, force)
-    return fn
+    return _spring_dashpot(overlap, n, v, shear, kn, cn, st, ct, mu, dt, limit_damping, force)
 
 
 def restitution_beta(e):

@@ -16,6 +16,7 @@ import typing
 from importlib import metadata
 from typing import ClassVar
 
+import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from .errors import ScriptError
@@ -195,7 +196,6 @@ class Pair(Style):
 
     def init(self, ntypes):
         """Called at the start of every run; returns the (ntypes+1)^2 cutoff matrix."""
-        import numpy as np
         cut = np.zeros((ntypes + 1, ntypes + 1))
         # explicit coefficients, and mixed ones derived afresh each run (LAMMPS re-mixes at init)
         self.resolved = {}
@@ -256,6 +256,28 @@ class Compute(Style):
 
     def peratom(self, sim):
         raise ScriptError(f"compute {self.id} ({self.name}) has no per-atom values")
+
+
+def peratom_column(sim, style, column, what):
+    """Column ``column`` (None: the only one) of a style's ``peratom(sim)`` values, as (nlocal,)
+    floats, for whatever reads per-atom values (reduce, dump custom); ``what`` names the reference
+    (``c_ID[k]``, ``dump column c_ID[k]``) in errors."""
+    values = np.asarray(style.peratom(sim), dtype=np.float64)
+    n = sim.particles.nlocal
+    if values.shape[:1] != (n,) or values.ndim > 2:
+        raise ScriptError(f"{what}: {style.kind} {style.id} ({style.name}) returned per-atom values of "
+                          f"shape {values.shape}, not ({n},) or ({n}, k)")
+    if column is None:
+        if values.ndim == 2:
+            raise ScriptError(f"{what}: {style.kind} {style.id} has {values.shape[1]} values per particle; "
+                              f"name one with [k], k from 0")
+        return values
+    if values.ndim == 1:
+        raise ScriptError(f"{what}: {style.kind} {style.id} has one value per particle; drop the [k]")
+    if column >= values.shape[1]:
+        raise ScriptError(f"{what}: column {column} is out of range ({style.kind} {style.id} has "
+                          f"{values.shape[1]} values per particle, from 0)")
+    return values[:, column]
 
 
 class Analyze(Style):

@@ -84,6 +84,7 @@ class MPIComm:
         self.grid_request = (None, None, None)
         self._send = []          # per destination rank: (local indices, shift rows)
         self._send_index = np.zeros(0, dtype=np.int64)
+        self._send_shift = np.zeros((0, 3))
         self._send_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._recv_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._self_ghost = np.zeros(0, dtype=np.int64)
@@ -163,6 +164,7 @@ class MPIComm:
         self._send = [(index[starts[r]:starts[r + 1]], shift[starts[r]:starts[r + 1]])
                       for r in range(self.nprocs)]
         self._send_index = index
+        self._send_shift = shift
         self._send_counts = counts
         rows = p.pack(index)
         rows[:, :3] += shift          # x is the first property: the rows carry the image position
@@ -186,7 +188,7 @@ class MPIComm:
             width = 1 if array.ndim == 1 else array.shape[1]
             values = array[index].reshape(len(index), width).astype(np.float64)
             if name == "x":
-                values += np.concatenate([shift for _, shift in self._send]) if len(index) else 0.0
+                values += self._send_shift
             received = self._alltoall_rows(values, self._send_counts, self._recv_counts)
             ghost = array[p.nlocal:]
             ghost[...] = received.reshape(ghost.shape).astype(array.dtype)

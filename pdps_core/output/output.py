@@ -84,7 +84,7 @@ class Output:
             if step % dump.every == 0:
                 needs |= getattr(dump, "needs", set())
         for style in [*self.sim.fixes.values(), *self.sim.analyzes.values()]:
-            needs |= analyze_needs(self.sim, style, step)
+            needs |= style_needs(self.sim, style, step)
         return "energy" in needs, "virial" in needs
 
     # ---- writing --------------------------------------------------------------------------------
@@ -126,7 +126,7 @@ class Output:
         self.csv.close()
 
 
-def analyze_needs(sim, analyze, step):
-    """What an analyze style will read at this step (it may say so with a ``needs(step)`` method)."""
-    needs = getattr(analyze, "needs", None)
+def style_needs(sim, style, step):
+    """What a fix or analyze style will read at this step (it may say so with ``needs(step)``)."""
+    needs = getattr(style, "needs", None)
     return set(needs(step)) if callable(needs) else set()

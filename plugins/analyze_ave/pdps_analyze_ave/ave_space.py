@@ -62,7 +62,7 @@ import numpy as np
 
 from pdps_core.api import Analyze, Fix, ScriptError, observables
 
-from .schedule import Schedule, ScheduleArgs
+from .schedule import Schedule, ScheduleArgs, keyword_pairs
 
 AXES = ("x", "y", "z")
 ORIGINS = ("lower", "center", "upper")
@@ -117,20 +117,15 @@ class AveSpace:
         if not self.values:
             raise ScriptError(f"no values to average: give {', '.join(VALUES)}")
         self.path, self.units = None, self.default_units
-        while i < len(words):
-            word = words[i]
-            if word not in KEYWORDS:
-                raise ScriptError(f"unknown value or keyword {word} (values: {', '.join(VALUES)}; "
-                                  f"keywords: {', '.join(KEYWORDS)})")
-            if i + 1 >= len(words):
-                raise ScriptError(f"keyword {word} needs a value")
+        unknown = (lambda w: f"unknown value or keyword {w} (values: {', '.join(VALUES)}; "
+                   f"keywords: {', '.join(KEYWORDS)})")
+        for word, value in keyword_pairs(words[i:], KEYWORDS, unknown):
             if word == "file":
-                self.path = words[i + 1]
-            elif words[i + 1] in ("box", "lattice"):
-                self.units = words[i + 1]
+                self.path = value
+            elif value in ("box", "lattice"):
+                self.units = value
             else:
-                raise ScriptError(f"units must be box or lattice (got {words[i + 1]})")
-            i += 2
+                raise ScriptError(f"units must be box or lattice (got {value})")
         self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
         self.count_total = self.value_total = None
         self.average = None

@@ -65,7 +65,7 @@ import numpy as np
 
 from pdps_core.api import Analyze, Compute, Fix, ScriptError
 
-from .schedule import Schedule, ScheduleArgs
+from .schedule import Schedule, ScheduleArgs, keyword_pairs
 
 REFERENCE = re.compile(r"^(c|v)_([A-Za-z0-9_]+)((?:\[(?:\d+|\*)\])*)$")
 KEYWORDS = ("file", "mode")
@@ -106,18 +106,14 @@ class AveTime:
             raise ScriptError("value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME "
                               f"(got {options[0]})")
         self.path, self.mode = None, "scalar"
-        for k in range(0, len(options), 2):
-            word = options[k]
-            if word not in KEYWORDS:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(KEYWORDS)})")
-            if k + 1 >= len(options):
-                raise ScriptError(f"keyword {word} needs a value")
+        for word, value in keyword_pairs(options, KEYWORDS,
+                                         lambda w: f"unknown keyword {w} (known: {', '.join(KEYWORDS)})"):
             if word == "file":
-                self.path = options[k + 1]
-            elif options[k + 1] in ("scalar", "vector"):
-                self.mode = options[k + 1]
+                self.path = value
+            elif value in ("scalar", "vector"):
+                self.mode = value
             else:
-                raise ScriptError(f"mode must be scalar or vector (got {options[k + 1]})")
+                raise ScriptError(f"mode must be scalar or vector (got {value})")
         if not value_words:
             raise ScriptError("no values to average: give c_ID, c_ID[i], c_ID[i][j] or v_NAME "
                               f"after nfreq; usage: {self.usage}")

@@ -10,7 +10,21 @@ step 0), and a step already sampled at the end of one run is not sampled again b
 
 from pydantic import Field, model_validator
 
-from pdps_core.api import StyleArgs
+from pdps_core.api import ScriptError, StyleArgs
+
+
+def keyword_pairs(words, known, unknown):
+    """The ``name value`` pairs that follow the values, in order; ``unknown(word)`` is the message
+    for a name not in ``known``."""
+    pairs = []
+    for k in range(0, len(words), 2):
+        word = words[k]
+        if word not in known:
+            raise ScriptError(unknown(word))
+        if k + 1 >= len(words):
+            raise ScriptError(f"keyword {word} needs a value")
+        pairs.append((word, words[k + 1]))
+    return pairs
 
 
 class ScheduleArgs(StyleArgs):

@@ -80,23 +80,3 @@ def find_peratom(sim, word, what):
     if not provides_peratom(style):
         raise ScriptError(f"{what}: {kind} {ident} ({style.name}) has no per-atom values ({word})")
     return style, (None if column is None else int(column))
-
-
-def peratom_column(sim, style, column, word):
-    """Column ``column`` (None: the only one) of a style's per-atom values, as (nlocal,) floats."""
-    values = np.asarray(style.peratom(sim), dtype=np.float64)
-    n = sim.particles.nlocal
-    if values.shape[:1] != (n,) or values.ndim > 2:
-        raise ScriptError(f"{word}: {style.kind} {style.id} ({style.name}) returned per-atom values of "
-                          f"shape {values.shape}, not ({n},) or ({n}, k)")
-    if column is None:
-        if values.ndim == 2:
-            raise ScriptError(f"{word}: {style.kind} {style.id} has {values.shape[1]} values per particle; "
-                              f"name one with [k], k from 0")
-        return values
-    if values.ndim == 1:
-        raise ScriptError(f"{word}: {style.kind} {style.id} has one value per particle; drop the [k]")
-    if column >= values.shape[1]:
-        raise ScriptError(f"{word}: column {column} is out of range ({style.kind} {style.id} has "
-                          f"{values.shape[1]} values per particle, from 0)")
-    return values[:, column]

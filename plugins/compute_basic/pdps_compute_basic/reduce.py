@@ -39,9 +39,9 @@ from typing import Literal
 import numpy as np
 from pydantic import Field
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables, peratom_column
 
-from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom, peratom_column
+from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom
 
 
 class ComputeReduce(Compute):

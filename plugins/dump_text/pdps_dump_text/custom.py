@@ -35,7 +35,7 @@ import re
 import numpy as np
 from pydantic import Field, field_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables, peratom_column
 
 from .frame import TextDump
 
@@ -150,19 +150,4 @@ def _reference_values(sim, word):
     n = sim.particles.nlocal
     if variable is not None:
         return np.full(n, float(sim.variables.value(variable)))
-    values = np.asarray(style.peratom(sim), dtype=np.float64)
-    if values.shape[:1] != (n,) or values.ndim > 2:
-        raise ScriptError(f"dump column {word}: {style.kind} {style.id} returned per-atom values of shape "
-                          f"{values.shape}, not ({n},) or ({n}, k)")
-    if k is None:
-        if values.ndim == 2:
-            raise ScriptError(f"dump column {word}: {style.kind} {style.id} has {values.shape[1]} values "
-                              "per particle; name one with [k], k from 0")
-        return values
-    if values.ndim == 1:
-        raise ScriptError(f"dump column {word}: {style.kind} {style.id} has one value per particle; "
-                          "drop the [k]")
-    if k >= values.shape[1]:
-        raise ScriptError(f"dump column {word}: column {k} is out of range ({style.kind} {style.id} has "
-                          f"{values.shape[1]} values per particle, from 0)")
-    return values[:, k]
+    return peratom_column(sim, style, k, f"dump column {word}")

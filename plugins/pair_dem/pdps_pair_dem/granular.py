@@ -40,7 +40,8 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
+from pdps_core.api import (ContactHistory, Pair, ScriptError, SimulationError, contact_models, find_slot,
+                           open_slot)
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -155,6 +156,52 @@ def log_contact(log_pairs, log_force, logged, i, j, force):
         for d in range(3):
             log_force[m, d] = force[d]
         logged[0] = m + 1
+
+
+@njit(cache=True)
+def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
+                    nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
+                    log_pairs, log_force, logged):
+    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
+    contact slots are full. ``law`` holds the per-type-pair tables of the contact law: for the
+    linear law kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu; for Hertz e_star, g_star, beta, mu."""
+    # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
+    spring_dt = dt if update else 0.0
+    n = np.empty(3)
+    vrel = np.empty(3)
+    shear = np.empty(3)
+    force = np.empty(3)
+    for i in range(nlocal):
+        ti = type_[i]
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            overlap, arm_i, arm_j = contact_geometry(x, radius, i, j, n)
+            if overlap <= 0.0:
+                continue
+            tj = type_[j]
+            contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel)
+            m_star = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
+            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
+            if update and (slot_i < 0 or slot_j < 0):
+                return tag[i] if slot_i < 0 else tag[j]
+            force[:] = 0.0
+            if hertz:
+                r_star = radius[i] * radius[j] / (radius[i] + radius[j])
+                contact_models.hertz_contact(overlap, n, vrel, shear, law[0, ti, tj], law[1, ti, tj],
+                                             r_star, m_star, law[2, ti, tj], law[3, ti, tj], spring_dt,
+                                             limit_damping, force)
+            else:
+                # restitution form: damping from the two masses of this contact
+                damping = law[4, ti, tj] * math.sqrt(m_star)
+                contact_models.lsd_contact(overlap, n, vrel, shear, law[0, ti, tj],
+                                           law[1, ti, tj] + damping, law[2, ti, tj],
+                                           law[3, ti, tj] + law[5, ti, tj] * damping, law[6, ti, tj],
+                                           spring_dt, limit_damping, force)
+            if update:
+                store_spring(history, owner, i, j, slot_i, slot_j, shear)
+            apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
+            log_contact(log_pairs, log_force, logged, i, j, force)
+    return -1
 
 
 @njit(cache=True)
@@ -295,4 +342,12 @@ class GranularPair(Pair):
         return tag[pairs[:, 0]], tag[pairs[:, 1]], (self._log_force[:m].copy() if m else np.zeros((0, 3)))
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
+        p = sim.particles
+        return contact_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
+                               nlist.offsets, nlist.neighbors, p.nlocal, self.hertz, self.law_table(),
+                               sim.dt, update, self.args.limit_damping, partner, values, touched,
+                               *self.contact_log(nlist))
+
+    def law_table(self):
+        """The contact law's per-type-pair tables, stacked in the order contact_compute reads them."""
         raise NotImplementedError

@@ -68,50 +68,11 @@ Example (glass beads in SI units)::
 import math
 
 import numpy as np
-from numba import njit
 from pydantic import Field
 
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
-from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry, log_contact,
-                       contact_velocity, load_spring, store_spring)
-
-
-@njit(cache=True)
-def hertz_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
-                  nlocal, e_star, g_star, beta, mu, dt, update, limit_damping, partner, history,
-                  touched, log_pairs, log_force, logged):
-    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full."""
-    # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
-    spring_dt = dt if update else 0.0
-    n = np.empty(3)
-    vrel = np.empty(3)
-    shear = np.empty(3)
-    force = np.empty(3)
-    for i in range(nlocal):
-        ti = type_[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            overlap, arm_i, arm_j = contact_geometry(x, radius, i, j, n)
-            if overlap <= 0.0:
-                continue
-            tj = type_[j]
-            contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel)
-            r_star = radius[i] * radius[j] / (radius[i] + radius[j])
-            m_star = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
-            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
-                return tag[i] if slot_i < 0 else tag[j]
-            force[:] = 0.0
-            contact_models.hertz_contact(overlap, n, vrel, shear, e_star[ti, tj], g_star[ti, tj],
-                                         r_star, m_star, beta[ti, tj], mu[ti, tj], spring_dt,
-                                         limit_damping, force)
-            if update:
-                store_spring(history, owner, i, j, slot_i, slot_j, shear)
-            apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
-            log_contact(log_pairs, log_force, logged, i, j, force)
-    return -1
+from .granular import DEFAULT_CONTACTS, GranularPair
 
 
 def youngs_effective(youngs_i, poisson_i, youngs_j, poisson_j):
@@ -183,12 +144,11 @@ class PairDEMHertz(GranularPair):
             table[i, j] = table[j, i] = value
         return self.contact_reach(i, j)
 
-    def kernel(self, sim, nlist, update, owner, partner, values, touched):
-        p = sim.particles
-        return hertz_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
-                             nlist.offsets, nlist.neighbors, p.nlocal, self.e_star, self.g_star,
-                             self.beta, self.mu, sim.dt, update, self.args.limit_damping, partner,
-                             values, touched, *self.contact_log(nlist))
+    hertz = True
+
+    def law_table(self):
+        # the rows contact_compute reads for the Hertz law (granular.py)
+        return np.stack([self.e_star, self.g_star, self.beta, self.mu])
 
     def timestep_limits(self, sim):
         """Rayleigh and Hertz times of the particles now present (docstring)."""

@@ -84,54 +84,14 @@ Example (PDPS manual)::
 import math
 
 import numpy as np
-from numba import njit
 from pydantic import Field
 
 from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
 
-from .granular import (DEFAULT_CONTACTS, GranularPair, apply_contact, contact_geometry, log_contact,
-                       contact_velocity, load_spring, store_spring)
+from .granular import DEFAULT_CONTACTS, GranularPair
 
 KT_OVER_KN = 2.0 / 7.0        # LAMMPS's default tangential stiffness
 CT_OVER_CN = 0.5              # LAMMPS's default tangential damping
-
-
-@njit(cache=True)
-def lsd_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors, nlocal,
-                kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu, dt, update, limit_damping,
-                partner, history, touched, log_pairs, log_force, logged):
-    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full."""
-    # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
-    spring_dt = dt if update else 0.0
-    n = np.empty(3)
-    vrel = np.empty(3)
-    shear = np.empty(3)
-    force = np.empty(3)
-    for i in range(nlocal):
-        ti = type_[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            overlap, arm_i, arm_j = contact_geometry(x, radius, i, j, n)
-            if overlap <= 0.0:
-                continue
-            tj = type_[j]
-            contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel)
-            # restitution form: damping from the two masses of this contact
-            damping = cn_per_root_mass[ti, tj] * math.sqrt(rmass[i] * rmass[j] / (rmass[i] + rmass[j]))
-            c_n = cn[ti, tj] + damping
-            c_t = ct[ti, tj] + ct_over_cn[ti, tj] * damping
-            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
-                return tag[i] if slot_i < 0 else tag[j]
-            force[:] = 0.0
-            contact_models.lsd_contact(overlap, n, vrel, shear, kn[ti, tj], c_n, kt[ti, tj], c_t,
-                                       mu[ti, tj], spring_dt, limit_damping, force)
-            if update:
-                store_spring(history, owner, i, j, slot_i, slot_j, shear)
-            apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
-            log_contact(log_pairs, log_force, logged, i, j, force)
-    return -1
 
 
 class PairDEMLsd(GranularPair):
@@ -192,13 +152,12 @@ class PairDEMLsd(GranularPair):
         cutoff = c.cutoff if c.cutoff is not None else self.args.cutoff
         return max(cutoff, self.contact_reach(i, j))
 
-    def kernel(self, sim, nlist, update, owner, partner, values, touched):
-        p = sim.particles
-        return lsd_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
-                           nlist.offsets, nlist.neighbors, p.nlocal, self.kn, self.cn, self.kt,
-                           self.ct, self.cn_per_root_mass, self.ct_over_cn, self.mu, sim.dt, update,
-                           self.args.limit_damping, partner, values, touched,
-                           *self.contact_log(nlist))
+    hertz = False
+
+    def law_table(self):
+        # the rows contact_compute reads for the linear law (granular.py)
+        return np.stack([self.kn, self.cn, self.kt, self.ct, self.cn_per_root_mass, self.ct_over_cn,
+                         self.mu])
 
     def damping(self, i, j, m_star):
         return self.cn[i, j] + self.cn_per_root_mass[i, j] * math.sqrt(m_star)
