@@ -3,7 +3,6 @@
 Plugins import from here only; anything else in pdps_core may change without notice.
 """
 
-from . import contact_models
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
@@ -11,9 +10,9 @@ from .random import pair_gaussian, philox4x32
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
-from .styles import (Analyze, Compute, Dump, Fix, Pair, Region, StyleArgs, keyword, parse_args,
+from .styles import (Analyze, Compute, Dump, Fix, Pair, PairLaw, Region, StyleArgs, keyword, parse_args,
                      peratom_column, registry)
 
-__all__ = ["Analyze", "ContactHistory", "contact_models", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "Region",
+__all__ = ["Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region",
            "ScriptError", "SimulationError", "Simulation", "StyleArgs", "keyword", "observables",
            "pair_gaussian", "parse_args", "peratom_column", "philox4x32", "registry"]

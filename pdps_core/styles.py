@@ -208,14 +208,82 @@ class Pair(Style):
                                       " (give pair_coeff for every type pair)")
                 else:
                     self.resolved[(i, j)] = self.mix(i, j)
-                cut[i, j] = cut[j, i] = self.init_one(i, j)
+                cut[i, j] = cut[j, i] = self._cutoff_of(i, j)
         return cut
+
+    def _cutoff_of(self, i, j):
+        return self.init_one(i, j)
 
     def init_one(self, i, j):
         raise NotImplementedError
 
     def compute(self, sim, nlist, eflag, vflag):
         raise NotImplementedError
+
+
+class PairLaw(Pair):
+    r"""A pair style written as a force law; the core owns the loop around it.
+
+    Subclasses give:
+
+    - ``params``: names of the per-type-pair values the law reads, in order;
+    - ``init_one(i, j)`` returning ``(cutoff, values)``, the values in the order of ``params``
+      (read the pair's coefficients from ``self.resolved[(i, j)]``);
+    - ``law``, a numba function (a ``@staticmethod`` over ``@njit(cache=True)``)::
+
+          law(rsq, dx, dy, dz, coeff, i, j, atom, state) -> (fpair, energy)
+
+      ``rsq`` = r^2 and (dx, dy, dz) = r_i - r_j (distance units); ``coeff`` the type pair's values
+      (1-d float64, order of ``params``); ``i``, ``j`` rows of the pair in the particle arrays;
+      ``atom`` the tuple of per-atom arrays named in ``law_atom`` (e.g. ``("v", "tag")``);
+      ``state`` the tuple ``law_state(sim)`` returns for this step (default ``()``). It returns
+      ``fpair`` = F/r, so that the force on i is ``fpair * (dx, dy, dz)`` (force/distance units),
+      and the pair's energy (energy units; only summed when the step asks for energy).
+
+    The core calls the law for every pair with ``r < cutoff`` and ``r >= 1e-10`` (coincident
+    particles have no direction and are skipped), applies Newton's third law on a half list (or
+    the force on i only on a full list, ``neighbor_list = "full"``), and tallies energy only on
+    steps that read it; the virial comes from sum(r . f) as for every pair style. The tables are
+    ``self.coeff_table`` ((ntypes+1, ntypes+1, len(params)), symmetric) and ``self.cutsq``.
+    """
+    params: ClassVar[tuple] = ()
+    law_atom: ClassVar[tuple] = ()
+    law: ClassVar = None            # the force law (a static numba function)
+    law_source: str | None = None   # or Python source defining ``law`` (generated laws)
+
+    def init(self, ntypes):
+        size = ntypes + 1
+        self.coeff_table = np.zeros((size, size, max(len(self.params), 1)))
+        self._values = {}
+        cut = super().init(ntypes)
+        for (i, j), values in self._values.items():
+            if len(values) != len(self.params):
+                raise ScriptError(f"pair style {self.name}: init_one gave {len(values)} values for "
+                                  f"{len(self.params)} params ({', '.join(self.params)})")
+            self.coeff_table[i, j, :len(values)] = self.coeff_table[j, i, :len(values)] = values
+        self.cutsq = cut * cut
+        self._loops = None
+        return cut
+
+    def _cutoff_of(self, i, j):
+        cutoff, values = self.init_one(i, j)
+        self._values[(i, j)] = tuple(float(v) for v in values)
+        return cutoff
+
+    def law_state(self, sim):
+        """Per-step scalars the law reads (seed, step, 1/sqrt(dt), ...), as a tuple."""
+        return ()
+
+    def compute(self, sim, nlist, eflag, vflag):
+        if self._loops is None:
+            from .pair_loop import loops_for
+            self._loops = (loops_for(source=self.law_source, name=self.name.replace("/", "_"))
+                           if self.law_source is not None else loops_for(law=type(self).law))
+        p = sim.particles
+        loop = self._loops[0] if nlist.half_list else self._loops[1]
+        atom = tuple(p.arrays[name] for name in self.law_atom)
+        self.energy = loop(p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq,
+                           self.coeff_table, atom, self.law_state(sim), bool(eflag))
 
 
 class Fix(Style):

@@ -57,58 +57,39 @@ import numpy as np
 from numba import njit
 from pydantic import Field
 
-from pdps_core.api import Pair, ScriptError, StyleArgs, observables, pair_gaussian
+from pdps_core.api import PairLaw, ScriptError, StyleArgs, observables, pair_gaussian
 
-EPSILON = 1.0e-10
+EPSILON = 1.0e-10        # the core's pair loop skips pairs closer than this (coincident particles)
 STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more than ~5 % (docstring)
 
 
 @njit(cache=True)
-def dpd_compute(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, sigma, cut,
-                dt_inv_sqrt, seed, step, eflag, thermostat):
-    """Pair forces; with ``thermostat`` False only the conservative part (a splitting integrator
-    takes friction and noise)."""
-    energy = 0.0
-    for i in range(nlocal):
-        ti = type_[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            tj = type_[j]
-            delx = x[i, 0] - x[j, 0]
-            dely = x[i, 1] - x[j, 1]
-            delz = x[i, 2] - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            rc = cut[ti, tj]
-            if rsq >= rc * rc:
-                continue
-            r = math.sqrt(rsq)
-            if r < EPSILON:
-                continue
-            rinv = 1.0 / r
-            w = 1.0 - r / rc
-            fpair = a[ti, tj] * w
-            if thermostat:
-                dot = (delx * (v[i, 0] - v[j, 0]) + dely * (v[i, 1] - v[j, 1])
-                       + delz * (v[i, 2] - v[j, 2]))
-                xi = pair_gaussian(seed, step, tag[i], tag[j])
-                fpair += -gamma[ti, tj] * w * w * dot * rinv + sigma[ti, tj] * w * xi * dt_inv_sqrt
-            fpair *= rinv
-            f[i, 0] += delx * fpair
-            f[i, 1] += dely * fpair
-            f[i, 2] += delz * fpair
-            f[j, 0] -= delx * fpair
-            f[j, 1] -= dely * fpair
-            f[j, 2] -= delz * fpair
-            if eflag:
-                energy += 0.5 * a[ti, tj] * rc * w * w
-    return energy
+def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """The force law (docstring formula); coeff = (a, gamma, sigma, rc), atom = (v, tag),
+    state = (seed, step, 1/sqrt(dt), thermostat). With ``thermostat`` False only the conservative
+    part (a splitting integrator takes friction and noise)."""
+    a, gamma, sigma, rc = coeff[0], coeff[1], coeff[2], coeff[3]
+    v, tag = atom
+    seed, step, dt_inv_sqrt, thermostat = state
+    r = math.sqrt(rsq)
+    rinv = 1.0 / r
+    w = 1.0 - r / rc
+    fpair = a * w
+    if thermostat:
+        dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
+        xi = pair_gaussian(seed, step, tag[i], tag[j])
+        fpair += -gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
+    return fpair * rinv, 0.5 * a * rc * w * w
 
 
-class PairDPD(Pair):
+class PairDPD(PairLaw):
     name = "dpd"
     usage = "pair_style dpd T rc seed"
     coeff_usage = "a gamma [rc]"
     ghost_velocity = True
+    params = ("a", "gamma", "sigma", "rc")
+    law_atom = ("v", "tag")
+    law = staticmethod(dpd_law)
     split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
     class Args(StyleArgs):
@@ -171,14 +152,10 @@ class PairDPD(Pair):
         c = self.resolved[(i, j)]
         cut = c.cutoff if c.cutoff is not None else self.args.cutoff
         kT = self.sim.units.boltz * self.args.temperature
-        for table, value in ((self.a, c.a), (self.gamma, c.gamma), (self.cut, cut),
-                             (self.sigma, math.sqrt(2.0 * kT * c.gamma))):
+        sigma = math.sqrt(2.0 * kT * c.gamma)
+        for table, value in ((self.a, c.a), (self.gamma, c.gamma), (self.cut, cut), (self.sigma, sigma)):
             table[i, j] = table[j, i] = value
-        return cut
+        return cut, (c.a, c.gamma, sigma, cut)
 
-    def compute(self, sim, nlist, eflag, vflag):
-        p = sim.particles
-        self.energy = dpd_compute(p.x, p.v, p.f, p.type, p.tag, nlist.offsets, nlist.neighbors,
-                                  p.nlocal, self.a, self.gamma, self.sigma, self.cut,
-                                  1.0 / math.sqrt(sim.dt), self.args.seed, sim.step, eflag,
-                                  not self.split)
+    def law_state(self, sim):
+        return (self.args.seed, sim.step, 1.0 / math.sqrt(sim.dt), not self.split)
