@@ -43,7 +43,8 @@ import time
 
 import numpy as np
 
-from pdps_core.api import Fix, Simulation, contact_models, registry
+from pdps_core.api import Fix, Simulation, registry
+from pdps_granular_contact import contact_models
 
 HERE = pathlib.Path(__file__).parent
 RESULTS = HERE / "results" / "accuracy_dem.json"

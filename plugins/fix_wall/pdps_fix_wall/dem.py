@@ -16,8 +16,8 @@ per particle-wall contact):
     |\mathbf{F}_t| \le \mu\,|k_n\delta - C_n v_n|, \qquad
     \boldsymbol\tau_i = (-R_i\mathbf{n})\times\mathbf{F}_i
 
-(``pdps_core.contact_models.lsd_contact``; when the Coulomb limit is reached the spring is cut back
-to it). The normal force is not clipped at zero near the end of a contact, as LAMMPS by default, so
+(``pdps_granular_contact.contact_models.lsd_contact``; when the Coulomb limit is reached the spring is
+cut back to it). The normal force is not clipped at zero near the end of a contact, as LAMMPS by default, so
 a head-on impact rebounds with exactly
 
 .. math::

@@ -13,8 +13,8 @@ one triangle that lies on a neighbour whose closest point is elsewhere is no con
 in a valley touching two faces gets two. A sphere whose centre passes through the surface is pushed
 out on the other side. Meshes are not repeated across periodic boundaries.
 
-Contact law (``pdps_core.contact_models``, the wall being body j with infinite mass and radius, so
-:math:`m^* = m_i`, :math:`R^* = R_i`):
+Contact law (``pdps_granular_contact.contact_models``, the wall being body j with infinite mass and
+radius, so :math:`m^* = m_i`, :math:`R^* = R_i`):
 
 - ``model lsd e kn Cn kt Ct mu``: linear spring-dashpot with Coulomb friction, as fix wall/dem (PDPS's
   parameter order; ``e`` is read and not used, the damping is ``Cn``); ``model lsd e kn mu``: ``Cn``

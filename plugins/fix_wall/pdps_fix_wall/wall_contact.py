@@ -2,10 +2,10 @@ r"""What every granular wall of this package shares: the contact law's parameter
 words, and the numba kernel that turns one particle's wall contacts into force and torque, keeping
 each contact's tangential history.
 
-A wall is body j of infinite mass and radius, so the shared laws of ``pdps_core.contact_models`` take
-:math:`m^* = m_i` and :math:`R^* = R_i`. For a contact at distance :math:`d` from the surface, with unit
-normal :math:`\mathbf{n}` from the surface to the centre of particle i and overlap
-:math:`\delta = R_i - d > 0`, the relative velocity of the contact points is
+A wall is body j of infinite mass and radius, so the shared laws of
+``pdps_granular_contact.contact_models`` take :math:`m^* = m_i` and :math:`R^* = R_i`. For a contact at
+distance :math:`d` from the surface, with unit normal :math:`\mathbf{n}` from the surface to the centre
+of particle i and overlap :math:`\delta = R_i - d > 0`, the relative velocity of the contact points is
 
 .. math::
 
@@ -26,7 +26,8 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError, contact_models
+from pdps_core.api import ScriptError
+from pdps_granular_contact import contact_models
 
 LSD, HERTZ = 0, 1
 HISTORY_WIDTH = 6           # tangential spring (3) and the contact's last normal (3)

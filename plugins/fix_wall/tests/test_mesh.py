@@ -14,7 +14,8 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.api import Pair, ScriptError, Simulation, StyleArgs, contact_models, registry
+from pdps_core.api import Pair, ScriptError, Simulation, StyleArgs, registry
+from pdps_granular_contact import contact_models
 
 MASS = math.pi / 6.0
 KN, E = 1.0e4, 0.8

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import contact_models as cm
+from pdps_granular_contact import contact_models as cm
 
 
 def collide(law, v0, m_star, dt, steps=200000):

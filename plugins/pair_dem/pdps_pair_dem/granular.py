@@ -40,8 +40,8 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import (ContactHistory, Pair, ScriptError, SimulationError, contact_models, find_slot,
-                           open_slot)
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
+from pdps_granular_contact import contact_models
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16

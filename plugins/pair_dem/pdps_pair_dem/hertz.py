@@ -23,7 +23,7 @@ per particle) touch when :math:`r < R_i + R_j`. Per contact:
     C_n = -2\sqrt{5/6}\,\beta\sqrt{S_n m^*}, \quad C_t = -2\sqrt{5/6}\,\beta\sqrt{S_t m^*}, \quad
     \beta = \frac{\ln e}{\sqrt{\ln^2 e + \pi^2}}
 
-(``pdps_core.api.contact_models.hertz_contact``; overlap, normal, contact-point velocity, the spring
+(``pdps_granular_contact.contact_models.hertz_contact``; overlap, normal, contact-point velocity, the spring
 :math:`\boldsymbol{\xi}` kept per contact and the torques are those of pdps_pair_dem.granular). The
 damping grows as :math:`\delta^{1/4}`, which makes the restitution coefficient independent of the
 impact speed and equal to e. No potential energy is reported (the contact dissipates; pe stays 0); the
@@ -70,7 +70,8 @@ import math
 import numpy as np
 from pydantic import Field
 
-from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
+from pdps_core.api import ScriptError, StyleArgs, keyword, parse_args
+from pdps_granular_contact import contact_models
 
 from .granular import DEFAULT_CONTACTS, GranularPair
 

@@ -16,7 +16,7 @@ force on i is
 and :math:`-\mathbf{F}` on j. :math:`\boldsymbol{\xi}` is the tangential spring of the contact: it
 grows by :math:`\mathbf{v}_t\Delta t` each step, is turned into the current tangent plane, and is cut
 back when the contact slides so that :math:`|\mathbf{F}_t| = \mu|F_n|` (the law is
-``pdps_core.api.contact_models.lsd_contact``). It lives as long as the contact, survives neighbor list
+``pdps_granular_contact.contact_models.lsd_contact``). It lives as long as the contact, survives neighbor list
 rebuilds and re-sorting, and is freed when the spheres separate. Both spheres get the torque of
 :math:`\mathbf{F}` about their centres. No potential energy is reported (the contact dissipates; pe
 stays 0); the virial is the core's :math:`\sum \mathbf{r}\cdot\mathbf{f}`.
@@ -86,7 +86,8 @@ import math
 import numpy as np
 from pydantic import Field
 
-from pdps_core.api import ScriptError, StyleArgs, contact_models, keyword, parse_args
+from pdps_core.api import ScriptError, StyleArgs, keyword, parse_args
+from pdps_granular_contact import contact_models
 
 from .granular import DEFAULT_CONTACTS, GranularPair
 

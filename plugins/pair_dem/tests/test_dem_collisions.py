@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import contact_models as cm
+from pdps_granular_contact import contact_models as cm
 
 V0 = 1.0            # each sphere approaches at V0, so the impact speed is 2 V0
 STEPS_PER_CONTACT = 500

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, SimulationError
-from pdps_core.api import contact_models as cm
+from pdps_granular_contact import contact_models as cm
 
 BOX = "units lj\nparticle_style sphere\nregion box block 0 10 0 10 0 10\ncreate_box 2 box\n"
 

@@ -3,7 +3,8 @@ stay visible; docs/accuracy-dem.md gives the restitution error against dt / t_c)
 
 import pytest
 
-from pdps_core.api import Simulation, contact_models
+from pdps_core.api import Simulation
+from pdps_granular_contact import contact_models
 
 
 def two_spheres(dt):
