@@ -12,11 +12,17 @@ styles reads package metadata only: a style's module is imported the first time 
 """
 
 import difflib
+import importlib
+import os
 import typing
+from dataclasses import dataclass
 from importlib import metadata
 from typing import ClassVar
 
 import numpy as np
+from packaging.specifiers import InvalidSpecifier, SpecifierSet
+from packaging.utils import canonicalize_name
+from packaging.version import Version
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from .errors import ScriptError
@@ -30,12 +36,42 @@ class StyleArgs(BaseModel):
     model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True, populate_by_name=True)
 
 
-def keyword(default=None, **kwargs):
-    """A field given in the script as ``name value...`` (any order, after the positional words)."""
+# the kinds of quantity LAMMPS's ``units`` command names, and counts; a unit of ``param`` is one of
+# these or a product/quotient of them ("force/velocity", "mass/time", "1/distance")
+UNIT_KINDS = frozenset({
+    "mass", "distance", "time", "energy", "velocity", "force", "torque", "temperature", "pressure",
+    "dynamic viscosity", "charge", "dipole", "electric field", "density", "acceleration", "area",
+    "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1"})
+
+
+def _check_unit(unit):
+    parts = [part.strip() for part in unit.replace("*", "/").split("/")]
+    unknown = [part for part in parts if part not in UNIT_KINDS]
+    if unknown:
+        raise ValueError(f"unit {unit!r}: {unknown[0]!r} is not a kind of quantity "
+                         f"(known: {', '.join(sorted(UNIT_KINDS - {'1'}))}, combined with / or *)")
+
+
+def param(default=..., *, unit=None, **field_kwargs):
+    """A script argument with the kind of quantity it is: ``cutoff: float = param(gt=0,
+    unit="distance")``; no default (``...``) makes it required. ``unit`` is a kind as LAMMPS's
+    ``units`` command names them ("distance", "energy", "force/velocity", "dimensionless", ...);
+    ``pdps doc`` shows it with the bounds and the default. Other keywords are pydantic's ``Field``
+    ones (``gt``, ``ge``, ``lt``, ``le``, ``alias``, ``default_factory``)."""
+    extra = dict(field_kwargs.pop("json_schema_extra", None) or {})
+    if unit is not None:
+        _check_unit(unit)
+        extra["unit"] = unit
+    if "default_factory" in field_kwargs:
+        return Field(json_schema_extra=extra or None, **field_kwargs)
+    return Field(default, json_schema_extra=extra or None, **field_kwargs)
+
+
+def keyword(default=None, *, unit=None, **kwargs):
+    """A field given in the script as ``name value...`` (any order, after the positional words);
+    ``unit`` as for ``param``."""
     extra = kwargs.pop("json_schema_extra", {}) or {}
-    if "default_factory" in kwargs:
-        return Field(json_schema_extra={**extra, "keyword": True}, **kwargs)
-    return Field(default, json_schema_extra={**extra, "keyword": True}, **kwargs)
+    return param(default, unit=unit, json_schema_extra={**extra, "keyword": True}, **kwargs)
 
 
 def _is_keyword(info):
@@ -178,18 +214,22 @@ class Pair(Style):
     def parse_coeff(self, words):
         return parse_args(self.Coeff, words, self.coeff_usage)
 
-    mix_rule: str | None = None     # set by pair_modify mix; None: every pair must be given
+    mix_rule: str | None = None     # set by pair_modify mix
+    mix_default: ClassVar[str | None] = None    # the style's own rule (LAMMPS lj/cut: geometric)
+    shift: bool = False             # pair_modify shift yes: energies shifted to 0 at the cutoff
 
     def mix(self, i, j):
-        """Coefficients for an unset i != j pair: an error unless ``pair_modify mix`` chose a rule,
-        then the style's ``mix_coeff`` combines the i i and j j coefficients."""
-        if self.mix_rule is None:
+        """Coefficients for an unset i != j pair: an error unless ``pair_modify mix`` or the style's
+        ``mix_default`` gives a rule, then the style's ``mix_coeff`` combines the i i and j j
+        coefficients."""
+        rule = self.mix_rule or self.mix_default
+        if rule is None:
             raise ScriptError(f"pair coefficients are not set for types {i} {j}"
                               " (give pair_coeff for every type pair, or a rule with pair_modify mix)")
         for k in (i, j):
             if (k, k) not in self.coeffs:
                 raise ScriptError(f"pair coefficients for types {k} {k} are needed to mix {i} {j}")
-        return self.mix_coeff(self.coeffs[(i, i)], self.coeffs[(j, j)], self.mix_rule)
+        return self.mix_coeff(self.coeffs[(i, i)], self.coeffs[(j, j)], rule)
 
     def mix_coeff(self, ci, cj, rule):
         raise ScriptError(f"pair style {self.name} has no mixing rule; give pair_coeff {rule} pairs")
@@ -398,15 +438,72 @@ BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump
 
 
 # ---- registry -----------------------------------------------------------------------------------
+API_VERSION = "1.0"     # the style API (pdps_core.api) this pdps offers; plugins declare a range
+DISABLE_VARIABLE = "PDPS_DISABLE_PLUGINS"
+IN_PROCESS = "(registered in process)"
+
+
+class PluginError(ScriptError):
+    """A style that cannot be used: its distribution failed to import (``status`` "broken") or
+    supports another style API ("incompatible"). ``reason`` is the message without the style's name."""
+
+    def __init__(self, label, status, reason):
+        super().__init__(f"{label} {reason}")
+        self.status, self.reason = status, reason
+
+
+@dataclass(frozen=True)
+class StyleEntry:
+    """One style as its distribution's metadata declares it; nothing is imported to make it."""
+    kind: str
+    name: str
+    dist: str               # distribution name, or IN_PROCESS
+    version: str
+    target: str             # "module:Class"
+    disabled: bool = False  # its distribution is named in PDPS_DISABLE_PLUGINS
+
+
+def disabled_distributions():
+    """Canonical names of the distributions PDPS_DISABLE_PLUGINS (comma-separated) switches off."""
+    words = os.environ.get(DISABLE_VARIABLE, "").split(",")
+    return {canonicalize_name(word.strip()) for word in words if word.strip()}
+
+
+def _one_line(exc):
+    message = " ".join(str(exc).split())
+    return f"{type(exc).__name__}: {message}" if message else type(exc).__name__
+
+
+def check_api(declared, label, where):
+    """Refuse (PluginError) a plugin whose declared PDPS_API range does not hold API_VERSION."""
+    tail = f"this pdps has style API {API_VERSION}"
+    if declared is None:
+        raise PluginError(label, "incompatible", f"declares no style API range (PDPS_API in {where}); {tail}")
+    try:
+        supported = SpecifierSet(declared)
+    except (InvalidSpecifier, TypeError, AttributeError):
+        raise PluginError(label, "incompatible", f"declares style API {declared!r}, not a version range "
+                                                 f"such as '>=1.0,<2' (PDPS_API in {where}); {tail}") from None
+    if not supported.contains(Version(API_VERSION), prereleases=True):
+        raise PluginError(label, "incompatible", f"supports style API {declared.strip()}; {tail}")
+
+
 class Registry:
-    """Styles by kind and name: entry points of installed distributions, plus in-process ones."""
+    """Styles by kind and name: entry points of installed distributions, plus in-process ones.
+
+    A style's distribution is imported when a script first names the style: the top-level package
+    first, whose ``PDPS_API`` (a PEP 440 range such as ``">=1.0,<2"``) must hold API_VERSION, then
+    the style's module. A distribution that fails either way breaks only the scripts that name its
+    styles; one named in PDPS_DISABLE_PLUGINS is not seen at all."""
 
     def __init__(self):
         self._local = {kind: {} for kind in KINDS}
         self._entry_points = None
+        self._disabled = set()
         self._loaded = {}
 
     def _scan(self):
+        """kind -> name -> distribution -> entry point, disabled distributions included."""
         if self._entry_points is None:
             found = {kind: {} for kind in KINDS}
             for kind in KINDS:
@@ -415,7 +512,11 @@ class Registry:
                     claims = found[kind].setdefault(ep.name, {})
                     claims.setdefault(dist, ep)
             self._entry_points = found
+            self._disabled = disabled_distributions()
         return self._entry_points
+
+    def _enabled(self, claims):
+        return {dist: ep for dist, ep in claims.items() if canonicalize_name(dist) not in self._disabled}
 
     def register(self, kind, name, cls):
         """Make a style class available in this process (for Python users and tests)."""
@@ -423,18 +524,55 @@ class Registry:
         self._loaded.pop((kind, name), None)
 
     def names(self, kind):
-        return sorted(set(self._scan()[kind]) | set(self._local[kind]))
+        enabled = {name for name, claims in self._scan()[kind].items() if self._enabled(claims)}
+        return sorted(enabled | set(self._local[kind]))
+
+    def entries(self):
+        """Every installed style (disabled ones marked) and every in-process one, by kind and name."""
+        rows = []
+        for kind in KINDS:
+            claims_by_name = self._scan()[kind]
+            for name, claims in sorted(claims_by_name.items()):
+                enabled = self._enabled(claims)
+                for dist, ep in claims.items():
+                    version = ep.dist.version if ep.dist is not None else "?"
+                    rows.append(StyleEntry(kind, name, dist, version, ep.value, dist not in enabled))
+            for name, cls in sorted(self._local[kind].items()):
+                rows.append(StyleEntry(kind, name, IN_PROCESS, "", f"{cls.__module__}:{cls.__qualname__}"))
+        return rows
 
     def listing(self):
         """(kind, name, distribution, module) for every installed style, without importing any."""
-        rows = []
-        for kind in KINDS:
-            for name, claims in sorted(self._scan()[kind].items()):
-                for dist, ep in claims.items():
-                    rows.append((kind, name, dist, ep.value))
-            for name, cls in sorted(self._local[kind].items()):
-                rows.append((kind, name, "(registered in process)", f"{cls.__module__}:{cls.__qualname__}"))
-        return rows
+        return [(e.kind, e.name, e.dist, e.target) for e in self.entries()]
+
+    def load(self, entry):
+        """The class of one entry (any of several distributions claiming a name), checked as
+        ``lookup`` checks it; PluginError when its distribution is broken or incompatible."""
+        if entry.dist == IN_PROCESS:
+            return self._checked(entry.kind, entry.name, self._local[entry.kind][entry.name])
+        ep = self._scan()[entry.kind][entry.name][entry.dist]
+        return self._checked(entry.kind, entry.name, self._load_entry_point(entry.kind, entry.name, ep))
+
+    def _load_entry_point(self, kind, name, ep):
+        dist = ep.dist.name if ep.dist is not None else "?"
+        version = ep.dist.version if ep.dist is not None else "?"
+        label = f"{kind} style {name} from {dist} {version}"
+        package = ep.module.split(".")[0]
+        try:
+            top = importlib.import_module(package)
+        except (Exception, SystemExit) as exc:
+            raise PluginError(label, "broken", f"failed to import: {_one_line(exc)}") from exc
+        check_api(getattr(top, "PDPS_API", None), label, f"{package}/__init__.py")
+        try:
+            return ep.load()
+        except (Exception, SystemExit) as exc:
+            raise PluginError(label, "broken", f"failed to import: {_one_line(exc)}") from exc
+
+    def _checked(self, kind, name, cls):
+        base = BASES[kind]
+        if not (isinstance(cls, type) and issubclass(cls, base)):
+            raise ScriptError(f"{kind} style {name} is not a {base.__name__} subclass")
+        return cls
 
     def lookup(self, kind, name):
         key = (kind, name)
@@ -443,26 +581,23 @@ class Registry:
         if name in self._local[kind]:
             cls = self._local[kind][name]
         else:
-            claims = self._scan()[kind].get(name)
-            if not claims:
+            claims = self._scan()[kind].get(name, {})
+            enabled = self._enabled(claims)
+            if not enabled:
                 known = self.names(kind)
                 close = difflib.get_close_matches(name, known, n=1)
                 hint = f"; did you mean {close[0]}?" if close else ""
-                raise ScriptError(f"unknown {kind} style {name}{hint} "
+                off = (f"; {' and '.join(sorted(claims))} switched off by {DISABLE_VARIABLE}"
+                       if claims else "")
+                raise ScriptError(f"unknown {kind} style {name}{off}{hint} "
                                   f"(installed: {', '.join(known) or 'none'})")
-            if len(claims) > 1:
+            if len(enabled) > 1:
                 raise ScriptError(f"{kind} style {name} is provided by more than one distribution: "
-                                  f"{' and '.join(sorted(claims))}; uninstall one of them")
-            (dist, ep), = claims.items()
-            try:
-                cls = ep.load()
-            except Exception as exc:
-                raise ScriptError(f"{kind} style {name} from {dist} failed to import: {exc}") from exc
-        base = BASES[kind]
-        if not (isinstance(cls, type) and issubclass(cls, base)):
-            raise ScriptError(f"{kind} style {name} is not a {base.__name__} subclass")
-        self._loaded[key] = cls
-        return cls
+                                  f"{' and '.join(sorted(enabled))}; uninstall one of them")
+            (ep,) = enabled.values()
+            cls = self._load_entry_point(kind, name, ep)
+        self._loaded[key] = self._checked(kind, name, cls)
+        return self._loaded[key]
 
 
 registry = Registry()

@@ -1,4 +1,5 @@
-"""Shared helpers: run a script in-process or through the `pdps` command."""
+"""Shared helpers: run a script through the `pdps` command (``make_sim`` and ``pdps_cli`` come from
+the test kit, pdps_core.testing)."""
 
 import os
 import subprocess
@@ -7,21 +8,8 @@ import textwrap
 
 import pytest
 
-from pdps_core.api import Simulation
 
 PDPS = [sys.executable, "-m", "pdps_core.cli"]
-
-
-@pytest.fixture
-def make_sim(tmp_path, monkeypatch):
-    """A silent Simulation working in a temporary directory."""
-    monkeypatch.chdir(tmp_path)
-
-    def make(**kwargs):
-        kwargs.setdefault("screen", False)
-        kwargs.setdefault("log", None)
-        return Simulation(**kwargs)
-    return make
 
 
 @pytest.fixture
@@ -32,22 +20,4 @@ def run_pdps(tmp_path):
         path.write_text(textwrap.dedent(script))
         return subprocess.run([*PDPS, "run", name, *extra], cwd=tmp_path, capture_output=True,
                               text=True, env={**os.environ, **(env or {})}, timeout=600)
-    return run
-
-
-@pytest.fixture
-def pdps_cli(tmp_path, monkeypatch, capsys):
-    """`pdps run` in-process (``cli.main``, the code path of the console script) in a temp dir:
-    writes the script, runs it and returns a CompletedProcess (exit code, stdout, stderr).
-    As fast as ``make_sim``; use ``run_pdps`` where the process itself matters."""
-    from pdps_core import cli
-    monkeypatch.chdir(tmp_path)
-
-    def run(script, *extra, name="in.test"):
-        (tmp_path / name).write_text(textwrap.dedent(script))
-        argv = ["run", name, *extra]
-        capsys.readouterr()
-        code = cli.main(argv)
-        out, err = capsys.readouterr()
-        return subprocess.CompletedProcess(argv, code, out, err)
     return run

@@ -80,7 +80,7 @@ def test_styles_lists_every_style_with_its_distribution_without_importing_it():
      "ERROR: in.test:1: region: unknown region style blok; did you mean block? (installed: {region})"),
     (BOX + "fix 1 all nvee",
      "ERROR: in.test:4: fix: unknown fix style nvee; did you mean nve? (installed: {fix})"),
-    ("pair_style lj/cut 2.5", "ERROR: in.test:1: pair_style: unknown pair style lj/cut (installed: {pair})"),
+    ("pair_style morse 2.5", "ERROR: in.test:1: pair_style: unknown pair style morse (installed: {pair})"),
     # wrong argument count
     ("boundary p p", "ERROR: in.test:1: boundary: expected 3 argument(s), got 2; usage: boundary x y z  (each p or f)"),
     (BOX + "fix 1 all nve extra", "ERROR: in.test:4: fix: too many arguments: unexpected 'extra'; usage: fix ID GROUP nve"),

@@ -132,7 +132,7 @@ def _pair_record(pair, states):
                               "is not a class of the pair style, so a restart cannot name it")
         coeffs.append([i, j, model, _dump_args(f"pair_coeff {i} {j}", coeff)])
     return {"style": pair.name, "args": _dump_args(f"pair {pair.name}", pair.args), "coeffs": coeffs,
-            "mix_rule": pair.mix_rule, "state": states.encode(f"pair {pair.name}", pair)}
+            "mix_rule": pair.mix_rule, "shift": pair.shift, "state": states.encode(f"pair {pair.name}", pair)}
 
 
 def _neighbor_record(neighbor, particles, arrays, resumable=True):
@@ -412,6 +412,7 @@ def _pair(sim, record, arrays):
             raise ScriptError(f"pair style {record['style']} has no coefficient class {model_name}")
         pair.coeffs[(int(i), int(j))] = _load_args(model, values, f"pair_coeff {i} {j}")
     pair.mix_rule = record["mix_rule"]
+    pair.shift = bool(record.get("shift", False))
     _restore_state(pair, record["state"], arrays, what)
     return pair
 

@@ -1,0 +1,240 @@
+"""The test kit for style authors: small systems, and the checks every style should pass.
+
+Use it from a plugin's tests (the fixtures come with pdps-core through its pytest plugin, so no
+conftest is needed)::
+
+    from pdps_core.testing import build, energy_gradient, forces_by_tag
+
+    def test_force_is_minus_gradient(tmp_path):
+        sim = build(tmp_path, [[5, 5, 5], [6.1, 5.2, 5.0]], setup="pair_style lj/cut 2.5\\n"
+                    "pair_coeff * * 1.0 1.0")
+        analytic, numeric = energy_gradient(sim)
+        assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-9)
+
+What is here:
+
+- ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
+  the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps.
+- ``forces_by_tag``, ``energy_gradient``: forces in id order; forces against central differences
+  of the total potential energy.
+- ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
+- ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
+  number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text.
+- ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
+  final states are returned for comparison.
+- fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
+  in-process, returning exit code, stdout and stderr).
+"""
+
+import shutil
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from .simulation import Simulation
+
+DEFAULT_SEED = 12345
+
+
+# ---- systems ------------------------------------------------------------------------------------
+def write_data(path, lo, hi, x, *, types=None, tags=None, velocities=None, masses=None):
+    """A LAMMPS data file (atomic style) with the particles ``x`` (n x 3), their types (default 1),
+    ids (default 1..n), velocities and masses per type (default 1.0), to full precision."""
+    x = np.atleast_2d(np.asarray(x, dtype=float))
+    n = len(x)
+    types = np.ones(n, dtype=int) if types is None else np.asarray(types, dtype=int)
+    tags = np.arange(1, n + 1) if tags is None else np.asarray(tags, dtype=int)
+    ntypes = int(types.max()) if n else 1
+    masses = masses or {t: 1.0 for t in range(1, ntypes + 1)}
+    lines = ["written by pdps_core.testing", "", f"{n} atoms", f"{ntypes} atom types", ""]
+    lines += [f"{lo[d]:.17g} {hi[d]:.17g} {a}lo {a}hi" for d, a in enumerate("xyz")]
+    lines += ["", "Masses", ""] + [f"{t} {m:.17g}" for t, m in masses.items()]
+    lines += ["", "Atoms # atomic", ""]
+    lines += [f"{tags[i]} {types[i]} {x[i, 0]:.17g} {x[i, 1]:.17g} {x[i, 2]:.17g}" for i in range(n)]
+    if velocities is not None:
+        velocities = np.asarray(velocities, dtype=float)
+        lines += ["", "Velocities", ""]
+        lines += [f"{tags[i]} {velocities[i, 0]:.17g} {velocities[i, 1]:.17g} {velocities[i, 2]:.17g}"
+                  for i in range(n)]
+    Path(path).write_text("\n".join(lines) + "\n")
+    return path
+
+
+def build(tmp_path, x, *, setup="", types=None, tags=None, v=None, masses=None,
+          lo=(0.0, 0.0, 0.0), hi=(10.0, 10.0, 10.0), boundary="p p p", units="lj", name="data.test"):
+    """A silent Simulation holding the particles ``x`` (read from a data file in ``tmp_path``), with
+    the script lines ``setup`` (pair_style, pair_coeff, fixes...) run after read_data."""
+    path = write_data(Path(tmp_path) / name, lo, hi, x, types=types, tags=tags, velocities=v,
+                      masses=masses)
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"units {units}\nboundary {boundary}\nread_data {path}")
+    if setup:
+        sim.command(textwrap.dedent(setup))
+    return sim
+
+
+def fluid(n, density, *, seed=DEFAULT_SEED, min_distance=0.0, dimension=3):
+    """``n`` random positions in a cube (a square in 2-d) of the given number density, no two closer
+    than ``min_distance`` (periodic distances). Returns (x, L)."""
+    length = (n / density) ** (1.0 / dimension)
+    rng = np.random.default_rng(seed)
+    x = np.zeros((n, 3))
+    placed = 0
+    for _ in range(1000 * n):
+        if placed == n:
+            break
+        trial = rng.uniform(0.0, length, size=3)
+        if dimension == 2:
+            trial[2] = 0.0
+        if min_distance > 0 and placed:
+            delta = x[:placed] - trial
+            delta -= length * np.round(delta / length)
+            if dimension == 2:
+                delta[:, 2] = 0.0
+            if (np.einsum("ij,ij->i", delta, delta) < min_distance ** 2).any():
+                continue
+        x[placed] = trial
+        placed += 1
+    if placed < n:
+        raise ValueError(f"could not place {n} particles {min_distance} apart at density {density}")
+    return x, length
+
+
+# ---- checks -------------------------------------------------------------------------------------
+def by_tag(sim, values):
+    """Rows of an owned per-atom array, in id order."""
+    return np.asarray(values)[np.argsort(sim.tag)]
+
+
+def forces_by_tag(sim):
+    return by_tag(sim, sim.f).copy()
+
+
+def energy_gradient(sim, h=1e-6, particles=None):
+    """(analytic, numeric): the forces of a ``run 0``, and minus the central difference of the total
+    potential energy moving each coordinate by +-h, both (n, 3) in id order (only the ``particles``
+    ids given, by default all). Serial runs only."""
+    sim.command("run 0")
+    analytic = forces_by_tag(sim)
+    tags = np.sort(sim.tag) if particles is None else np.asarray(particles)
+    numeric = np.zeros((len(tags), 3))
+    for row, tag in enumerate(tags):
+        i = sim.particles.index_of_tag(int(tag))
+        for d in range(3):
+            saved = sim.x[i, d]
+            energies = []
+            for sign in (1.0, -1.0):
+                sim.x[i, d] = saved + sign * h
+                sim.command("run 0")
+                energies.append(total_energy(sim))
+                i = sim.particles.index_of_tag(int(tag))
+            sim.x[i, d] = saved
+            numeric[row, d] = -(energies[0] - energies[1]) / (2.0 * h)
+    sim.command("run 0")
+    order = np.searchsorted(np.sort(sim.tag), tags)
+    return analytic[order], numeric
+
+
+def total_energy(sim):
+    """The potential energy of the whole system (pair and fixes that contribute), not per particle."""
+    from .state import observables
+    return observables.potential_energy(sim)
+
+
+def total_force(sim):
+    """Sum of the forces on all particles (zero for pair forces: Newton's third law)."""
+    return np.asarray(sim.comm.sum(sim.f.sum(axis=0)))
+
+
+def total_momentum(sim):
+    from .state import observables
+    m = observables.masses(sim)
+    return np.asarray(sim.comm.sum((m[:, None] * sim.v).sum(axis=0)))
+
+
+# ---- parallel runs and restarts -----------------------------------------------------------------
+def mpiexec():
+    """The mpiexec beside this Python (the mpich wheel installs it into the venv)."""
+    candidate = Path(sys.executable).parent / "mpiexec"
+    return str(candidate) if candidate.exists() else shutil.which("mpiexec")
+
+
+def run_ranks(script, nprocs, cwd, *, name="in.test", timeout=600):
+    """Run ``script`` (text) with ``mpiexec -n nprocs pdps run``; returns the CompletedProcess.
+    Fails the test with the stderr when the run fails."""
+    cwd = Path(cwd)
+    (cwd / name).write_text(textwrap.dedent(script))
+    command = [mpiexec(), "-n", str(nprocs), sys.executable, "-m", "pdps_core.cli", "run", name,
+               "-log", "none", "--no-progress"]
+    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    if done.returncode != 0:
+        pytest.fail(f"mpiexec -n {nprocs} pdps run {name} failed: {done.stderr.strip()}")
+    return done
+
+
+def thermo_rows(text):
+    """Every thermo line of a screen or log text as a list of floats (header lines skipped)."""
+    rows, inside = [], False
+    for line in text.splitlines():
+        words = line.split()
+        if words and words[0] == "Step":
+            inside = True
+            continue
+        if inside:
+            try:
+                rows.append([float(w) for w in words])
+            except ValueError:
+                inside = False
+            if not words:
+                inside = False
+    return rows
+
+
+def restart_round_trip(tmp_path, setup, first, second):
+    """(straight, resumed): a Simulation that ran ``setup`` then ``run first+second``, and one that
+    ran ``setup``, ``run first``, wrote a restart file, and a fresh one that read it and ran
+    ``second``: both should hold the same particles for deterministic styles."""
+    path = Path(tmp_path) / "round_trip.restart"
+    straight = Simulation(screen=False, log=None)
+    straight.command(textwrap.dedent(setup) + f"\nrun {first + second}")
+    before = Simulation(screen=False, log=None)
+    before.command(textwrap.dedent(setup) + f"\nrun {first}\nwrite_restart {path}")
+    resumed = Simulation(screen=False, log=None)
+    resumed.command(f"read_restart {path}\nrun {second}")
+    return straight, resumed
+
+
+# ---- fixtures (registered as a pytest plugin by pdps-core) -------------------------------------
+@pytest.fixture
+def make_sim(tmp_path, monkeypatch):
+    """A silent Simulation working in a temporary folder: ``make_sim()`` or with Simulation's
+    keywords."""
+    monkeypatch.chdir(tmp_path)
+
+    def make(**kwargs):
+        kwargs.setdefault("screen", False)
+        kwargs.setdefault("log", None)
+        return Simulation(**kwargs)
+    return make
+
+
+@pytest.fixture
+def pdps_cli(tmp_path, monkeypatch, capsys):
+    """``pdps run`` in-process in a temporary folder: writes the script, runs it and returns a
+    CompletedProcess (exit code, stdout, stderr)."""
+    from . import cli
+    monkeypatch.chdir(tmp_path)
+
+    def run(script, *extra, name="in.test"):
+        (tmp_path / name).write_text(textwrap.dedent(script))
+        argv = ["run", name, *extra]
+        capsys.readouterr()
+        code = cli.main(argv)
+        out, err = capsys.readouterr()
+        return subprocess.CompletedProcess(argv, code, out, err)
+    return run
+

@@ -1,0 +1,82 @@
+r"""Pair style ``lj/cut``: the 12-6 Lennard-Jones potential cut off at :math:`r_c` (Jones, Proc. R.
+Soc. A 106, 463 (1924); LAMMPS's ``pair_style lj/cut``).
+
+.. math::
+
+    E(r) = 4\varepsilon\left[\left(\frac{\sigma}{r}\right)^{12} - \left(\frac{\sigma}{r}\right)^{6}\right]
+           - E_\mathrm{shift}, \qquad r < r_c
+
+    \mathbf{F}_{ij} = \frac{24\varepsilon}{r^2}\left[2\left(\frac{\sigma}{r}\right)^{12}
+                       - \left(\frac{\sigma}{r}\right)^{6}\right]\mathbf{r}_{ij}
+
+:math:`E_\mathrm{shift} = E(r_c)` with ``pair_modify shift yes``, else 0 (LAMMPS's default). The force is
+not shifted: it jumps to zero at the cutoff.
+
+Parameters:
+
+- ``pair_style lj/cut RC``: ``RC`` global cutoff (> 0, distance).
+- ``pair_coeff I J EPSILON SIGMA [RC]``: ``EPSILON`` well depth (energy), ``SIGMA`` the zero of the
+  potential (> 0, distance), ``RC`` this pair's cutoff (> 0, distance; default the global one).
+
+Unset i != j pairs are mixed from the i i and j j coefficients, geometrically by default as in LAMMPS
+(:math:`\varepsilon_{ij} = \sqrt{\varepsilon_i\varepsilon_j}`, :math:`\sigma_{ij} = \sqrt{\sigma_i\sigma_j}`,
+:math:`r_{c,ij} = \sqrt{r_{c,i} r_{c,j}}`); ``pair_modify mix arithmetic`` takes the arithmetic mean
+of sigma and the cutoff (Lorentz-Berthelot).
+
+Example (LAMMPS's ``in.lj`` melt)::
+
+    pair_style lj/cut 2.5
+    pair_coeff 1 1 1.0 1.0 2.5
+"""
+
+import math
+
+from numba import njit
+from pydantic import Field
+
+from pdps_core.api import PairLaw, StyleArgs
+
+
+@njit(cache=True)
+def lj_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """coeff = (48 eps sigma^12, 24 eps sigma^6, 4 eps sigma^12, 4 eps sigma^6, E_shift)."""
+    r2inv = 1.0 / rsq
+    r6inv = r2inv * r2inv * r2inv
+    fpair = r6inv * (coeff[0] * r6inv - coeff[1]) * r2inv
+    return fpair, r6inv * (coeff[2] * r6inv - coeff[3]) - coeff[4]
+
+
+class PairLJCut(PairLaw):
+    name = "lj/cut"
+    usage = "pair_style lj/cut RC"
+    coeff_usage = "EPSILON SIGMA [RC]"
+    mix_default = "geometric"
+    params = ("lj1", "lj2", "lj3", "lj4", "offset")
+    law = staticmethod(lj_law)
+
+    class Args(StyleArgs):
+        cutoff: float = Field(gt=0)
+
+    class Coeff(StyleArgs):
+        epsilon: float
+        sigma: float = Field(gt=0)
+        cutoff: float | None = Field(default=None, gt=0)
+
+    def mix_coeff(self, ci, cj, rule):
+        mean = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))
+        rc_i = ci.cutoff if ci.cutoff is not None else self.args.cutoff
+        rc_j = cj.cutoff if cj.cutoff is not None else self.args.cutoff
+        return self.Coeff(epsilon=math.sqrt(ci.epsilon * cj.epsilon), sigma=mean(ci.sigma, cj.sigma),
+                          cutoff=mean(rc_i, rc_j))
+
+    def init_one(self, i, j):
+        c = self.resolved[(i, j)]
+        rc = c.cutoff if c.cutoff is not None else self.args.cutoff
+        s6 = c.sigma ** 6
+        s12 = s6 * s6
+        offset = 0.0
+        if self.shift:
+            ratio6 = (c.sigma / rc) ** 6
+            offset = 4.0 * c.epsilon * (ratio6 * ratio6 - ratio6)
+        return rc, (48.0 * c.epsilon * s12, 24.0 * c.epsilon * s6, 4.0 * c.epsilon * s12,
+                    4.0 * c.epsilon * s6, offset)

