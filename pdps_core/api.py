@@ -6,13 +6,13 @@ Plugins import from here only; anything else in pdps_core may change without not
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
-from .random import pair_gaussian, philox4x32
+from .random import pair_gaussian, particle_gaussians, particle_uniforms, philox4x32
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
-from .styles import (Analyze, Compute, Dump, Fix, Pair, PairLaw, Region, StyleArgs, keyword, parse_args,
-                     peratom_column, registry)
+from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, StyleArgs, VariableRef, keyword,
+                     param, parse_args, peratom_column, registry)
 
-__all__ = ["Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region",
-           "ScriptError", "SimulationError", "Simulation", "StyleArgs", "keyword", "observables",
-           "pair_gaussian", "parse_args", "peratom_column", "philox4x32", "registry"]
+__all__ = ["API_VERSION", "Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region",
+           "ScriptError", "SimulationError", "Simulation", "StyleArgs", "VariableRef", "keyword", "observables", "param",
+           "pair_gaussian", "particle_gaussians", "particle_uniforms", "parse_args", "peratom_column", "philox4x32", "registry"]

@@ -1,10 +1,18 @@
 """Counter-based random numbers: Philox4x32-10 (Salmon et al., SC'11, "Parallel random numbers: as
 easy as 1, 2, 3"; the generator of Random123, HOOMD-blue and numpy's Philox family).
 
-A random number is a pure function of (seed, step, tag_i, tag_j), so a pair gets the same noise
-whatever the particle order or the number of ranks. Call from numba code:
+A random number is a pure function of its key, so a particle or a pair gets the same noise whatever
+the particle order or the number of ranks. Call from numba code:
 
-    xi = pair_gaussian(seed, step, tag_i, tag_j)      # N(0, 1), symmetric in i and j
+    xi = pair_gaussian(seed, step, tag_i, tag_j)                    # N(0, 1), symmetric in i and j
+    u0, u1, u2, u3 = particle_uniforms(seed, step, tag, stream)     # four U(0, 1), open interval
+    g0, g1, g2, g3 = particle_gaussians(seed, step, tag, stream)    # four N(0, 1)
+
+Argument roles: ``seed`` the style's seed from the script (up to 2^63, both key words of Philox);
+``step`` the timestep (both counter words of the upper half); ``tag_i``, ``tag_j``, ``tag`` global
+particle ids; ``stream`` a small number a style chooses so that two of its uses of the same particle
+and step (or two styles given the same seed) draw independent numbers. Counters of particles
+(tag, 0) and of pairs (min, max) never coincide, as ids start at 1.
 """
 
 import math
@@ -49,3 +57,32 @@ def pair_gaussian(seed, step, tag_i, tag_j):
     u1 = (float(r0) + 0.5) * INV_2_32
     u2 = (float(r1) + 0.5) * INV_2_32
     return math.sqrt(-2.0 * math.log(u1)) * math.cos(TWO_PI * u2)
+
+
+@njit(cache=True)
+def _particle_block(seed, step, tag, stream):
+    s = np.uint64(step)
+    t = np.uint64(tag)
+    k = np.uint64(seed)
+    mix = (np.uint64(stream) * W0) & MASK32
+    return philox4x32(t & MASK32, t >> SHIFT32, s & MASK32, s >> SHIFT32, k & MASK32,
+                      (k >> SHIFT32) ^ mix)
+
+
+@njit(cache=True)
+def particle_uniforms(seed, step, tag, stream):
+    """Four U(0, 1) numbers (never 0 or 1) for particle ``tag`` at ``step`` in ``stream``."""
+    r0, r1, r2, r3 = _particle_block(seed, step, tag, stream)
+    return ((float(r0) + 0.5) * INV_2_32, (float(r1) + 0.5) * INV_2_32,
+            (float(r2) + 0.5) * INV_2_32, (float(r3) + 0.5) * INV_2_32)
+
+
+@njit(cache=True)
+def particle_gaussians(seed, step, tag, stream):
+    """Four N(0, 1) numbers for particle ``tag`` at ``step`` in ``stream`` (Box-Muller)."""
+    u0, u1, u2, u3 = particle_uniforms(seed, step, tag, stream)
+    a = math.sqrt(-2.0 * math.log(u0))
+    b = math.sqrt(-2.0 * math.log(u2))
+    return (a * math.cos(TWO_PI * u1), a * math.sin(TWO_PI * u1),
+            b * math.cos(TWO_PI * u3), b * math.sin(TWO_PI * u3))
+

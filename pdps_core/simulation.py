@@ -29,6 +29,7 @@ from .script.variables import Variables
 from .state.groups import Groups
 from .state.particles import Particles
 from .state.units import UNITS
+from .styles import VariableRef
 
 
 class Simulation:
@@ -64,8 +65,11 @@ class Simulation:
         self.run_first_step = 0
         self.dt = self.unit_system.dt
         self.time = 0.0
+        self.run_last_step = 0
         self.pe = 0.0
         self.virial = np.zeros(6)
+        self.eflag = False              # energy is computed on the current step (read by fixes)
+        self.vflag = False              # virial is computed on the current step
         self.energy_step = None
         self.virial_step = None
         self.setup_done_step = None
@@ -236,6 +240,24 @@ class Simulation:
     def variable(self, name: str, style: str, *args):
         return self._call("variable", name, style, *args)
 
+    # ---- run information ---------------------------------------------------------------------------
+    def ramp(self, start, stop):
+        """start + (stop - start) * (step - first step) / (last step - first step) of the current run:
+        LAMMPS's ramp(x, y), what a thermostat ramping T_START to T_STOP reads each step."""
+        span = self.run_last_step - self.run_first_step
+        if span <= 0:
+            return start
+        return start + (stop - start) * (self.step - self.run_first_step) / span
+
+    def evaluate(self, value):
+        """A style argument's value now: a number as it is, ``v_NAME`` (a ``VariableRef``) evaluated."""
+        if isinstance(value, VariableRef):
+            name = value.name
+            if name not in self.variables:
+                raise ScriptError(f"variable {name} is not defined (argument v_{name})")
+            return float(self.variables.value(name))
+        return value
+
     # ---- state helpers used by commands and styles -----------------------------------------------
     def info(self, message):
         """A line on screen and in the log (a style's summary or notice)."""
@@ -320,6 +342,7 @@ class Simulation:
         t_start = time.perf_counter()
         self.run_first_step = self.step
         last = self.step + nsteps
+        self.run_last_step = last
         integrator = Verlet(self)
         self._integrator = integrator
         if self.restored_states:

@@ -23,7 +23,7 @@ import numpy as np
 from packaging.specifiers import InvalidSpecifier, SpecifierSet
 from packaging.utils import canonicalize_name
 from packaging.version import Version
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
 
 from .errors import ScriptError
 
@@ -31,6 +31,26 @@ KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
 
 
 # ---- script arguments ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class VariableRef:
+    """A style argument written ``v_NAME``: read it with ``sim.evaluate(arg)`` each time it is used."""
+    name: str
+
+    def __str__(self):
+        return f"v_{self.name}"
+
+
+def _number_or_variable(word):
+    if isinstance(word, str) and word.startswith("v_") and len(word) > 2:
+        return VariableRef(word[2:])
+    return word
+
+
+# A float argument that may also be given as v_NAME (an equal-style variable evaluated when read),
+# as LAMMPS's fix addforce, setforce and the like allow.
+FloatOrVariable = typing.Annotated[float | VariableRef, BeforeValidator(_number_or_variable)]
+
+
 class StyleArgs(BaseModel):
     """Base of every ``Args`` model: no NaN/inf, no unknown fields, immutable."""
     model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True, populate_by_name=True)
@@ -329,11 +349,40 @@ class PairLaw(Pair):
 class Fix(Style):
     """A fix: joins the timestep through hooks. Define any of the methods named in
     ``pdps_core.run.hookspec`` (``initial_integrate(self, sim)``, ``post_force(self, sim)``, ...);
-    only the hooks a fix defines are ever called for it."""
+    only the hooks a fix defines are ever called for it.
+
+    Contributions to thermo (LAMMPS's ``fix_modify energy/virial`` and ``dof``):
+
+    - ``can_energy = True`` and ``energy(sim)``: the fix's potential energy on this rank at the
+      current step (energy units, not per particle); added to thermo ``pe`` (and ``etotal``) after
+      ``fix_modify ID energy yes``.
+    - ``can_virial = True`` and ``virial(sim)``: this rank's six virial components (xx, yy, zz, xy,
+      xz, yz; energy units) of the fix's forces at the current step; added to ``press`` when on:
+      ``virial_default`` (True where LAMMPS's own fix contributes by default), or ``fix_modify ID
+      virial yes``. Walls tally r . f relative to the wall (as LAMMPS's walls), so a confined gas
+      reads the pressure on the walls.
+    - ``dof_removed(sim, group)``: how many degrees of freedom the fix removes from the particles
+      of ``group`` (global count); temperatures and the kinetic pressure use N_dof minus it.
+
+    ``energy`` and ``virial`` are called after ``post_force`` on steps where something reads them
+    (``sim.eflag`` / ``sim.vflag`` are True during that step's force hooks, so a fix can tally only
+    then).
+    """
     kind = "fix"
+    can_energy: ClassVar[bool] = False
+    can_virial: ClassVar[bool] = False
+    virial_default: ClassVar[bool] = False
 
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args
+        self.thermo_energy = False
+        self.thermo_virial = self.virial_default
+
+    def energy(self, sim):
+        return 0.0
+
+    def virial(self, sim):
+        return (0.0,) * 6
 
 
 class Compute(Style):
@@ -445,10 +494,11 @@ IN_PROCESS = "(registered in process)"
 
 class PluginError(ScriptError):
     """A style that cannot be used: its distribution failed to import (``status`` "broken") or
-    supports another style API ("incompatible"). ``reason`` is the message without the style's name."""
+    supports another style API ("incompatible"). ``reason`` says why, without the style's name."""
 
     def __init__(self, label, status, reason):
-        super().__init__(f"{label} {reason}")
+        message = f"failed to import: {reason}" if status == "broken" else reason
+        super().__init__(f"{label} {message}")
         self.status, self.reason = status, reason
 
 
@@ -480,8 +530,10 @@ def check_api(declared, label, where):
     if declared is None:
         raise PluginError(label, "incompatible", f"declares no style API range (PDPS_API in {where}); {tail}")
     try:
+        if not isinstance(declared, str):
+            raise TypeError("a range is a string")
         supported = SpecifierSet(declared)
-    except (InvalidSpecifier, TypeError, AttributeError):
+    except (InvalidSpecifier, TypeError):
         raise PluginError(label, "incompatible", f"declares style API {declared!r}, not a version range "
                                                  f"such as '>=1.0,<2' (PDPS_API in {where}); {tail}") from None
     if not supported.contains(Version(API_VERSION), prereleases=True):
@@ -561,12 +613,12 @@ class Registry:
         try:
             top = importlib.import_module(package)
         except (Exception, SystemExit) as exc:
-            raise PluginError(label, "broken", f"failed to import: {_one_line(exc)}") from exc
+            raise PluginError(label, "broken", _one_line(exc)) from exc
         check_api(getattr(top, "PDPS_API", None), label, f"{package}/__init__.py")
         try:
             return ep.load()
         except (Exception, SystemExit) as exc:
-            raise PluginError(label, "broken", f"failed to import: {_one_line(exc)}") from exc
+            raise PluginError(label, "broken", _one_line(exc)) from exc
 
     def _checked(self, kind, name, cls):
         base = BASES[kind]
@@ -587,7 +639,7 @@ class Registry:
                 known = self.names(kind)
                 close = difflib.get_close_matches(name, known, n=1)
                 hint = f"; did you mean {close[0]}?" if close else ""
-                off = (f"; {' and '.join(sorted(claims))} switched off by {DISABLE_VARIABLE}"
+                off = (f": {' and '.join(sorted(claims))} is switched off by {DISABLE_VARIABLE}"
                        if claims else "")
                 raise ScriptError(f"unknown {kind} style {name}{off}{hint} "
                                   f"(installed: {', '.join(known) or 'none'})")

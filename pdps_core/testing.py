@@ -19,7 +19,8 @@ What is here:
   of the total potential energy.
 - ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
 - ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
-  number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text.
+  number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text,
+  ``thermo_csv`` the full-precision CSV a run writes next to its log.
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
@@ -65,12 +66,14 @@ def write_data(path, lo, hi, x, *, types=None, tags=None, velocities=None, masse
 
 
 def build(tmp_path, x, *, setup="", types=None, tags=None, v=None, masses=None,
-          lo=(0.0, 0.0, 0.0), hi=(10.0, 10.0, 10.0), boundary="p p p", units="lj", name="data.test"):
+          lo=(0.0, 0.0, 0.0), hi=(10.0, 10.0, 10.0), boundary="p p p", units="lj", name="data.test",
+          log=None):
     """A silent Simulation holding the particles ``x`` (read from a data file in ``tmp_path``), with
-    the script lines ``setup`` (pair_style, pair_coeff, fixes...) run after read_data."""
+    the script lines ``setup`` (pair_style, pair_coeff, fixes...) run after read_data. ``log``: a
+    log file path (its thermo CSV is ``LOG.csv``; see ``thermo_csv``)."""
     path = write_data(Path(tmp_path) / name, lo, hi, x, types=types, tags=tags, velocities=v,
                       masses=masses)
-    sim = Simulation(screen=False, log=None)
+    sim = Simulation(screen=False, log=None if log is None else str(log))
     sim.command(f"units {units}\nboundary {boundary}\nread_data {path}")
     if setup:
         sim.command(textwrap.dedent(setup))
@@ -174,6 +177,14 @@ def run_ranks(script, nprocs, cwd, *, name="in.test", timeout=600):
     if done.returncode != 0:
         pytest.fail(f"mpiexec -n {nprocs} pdps run {name} failed: {done.stderr.strip()}")
     return done
+
+
+def thermo_csv(path):
+    """The thermo CSV a run wrote next to its log: {column name: array over thermo lines}."""
+    lines = Path(path).read_text().splitlines()
+    names = lines[0].split(",")
+    values = np.array([[float(v) for v in line.split(",")] for line in lines[1:]])
+    return {name: values[:, k] for k, name in enumerate(names)}
 
 
 def thermo_rows(text):

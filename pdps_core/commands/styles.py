@@ -72,6 +72,25 @@ def fix(sim, args):
     _create(sim, "fix", sim.fixes, args, "fix ID GROUP STYLE args")
 
 
+@command("fix_modify")
+def fix_modify(sim, args):
+    """``fix_modify ID energy yes|no virial yes|no``: whether a fix's energy and virial count in
+    thermo ``pe`` and ``press`` (LAMMPS's keywords)."""
+    usage = "expected: fix_modify ID [energy yes|no] [virial yes|no]"
+    if len(args) < 3 or len(args) % 2 == 0:
+        raise ScriptError(usage)
+    fix = sim.fixes.get(args[0])
+    if fix is None:
+        raise ScriptError(f"fix {args[0]} is not defined")
+    for keyword, value in zip(args[1::2], args[2::2]):
+        if keyword not in ("energy", "virial"):
+            raise ScriptError(f"unknown keyword {keyword}; {usage}")
+        on = choice(value, keyword, ("yes", "no")) == "yes"
+        if on and not (fix.can_energy if keyword == "energy" else fix.can_virial):
+            raise ScriptError(f"fix {fix.id} ({fix.name}) has no {keyword} to contribute")
+        setattr(fix, f"thermo_{keyword}", on)
+
+
 @command("unfix")
 def unfix(sim, args):
     _remove(sim, "fix", sim.fixes, args)

@@ -45,6 +45,7 @@ class Verlet:
         self.forward = ("x",)
         self.reverse = ("f",)
         self.warned_overrun = False
+        self.contributing = []
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
@@ -89,6 +90,7 @@ class Verlet:
             sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff)
         sim.groups.update(sim)
         self._register_hooks()
+        self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
 
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
@@ -100,6 +102,7 @@ class Verlet:
         try:
             self._forces(eflag=True, vflag=True)
             self._call("setup")
+            self._fix_contributions()
         finally:
             sim.in_setup = False
         self._check_finite()
@@ -134,6 +137,7 @@ class Verlet:
 
     def _forces(self, eflag, vflag):
         sim, particles = self.sim, self.sim.particles
+        sim.eflag, sim.vflag = bool(eflag), bool(vflag)
         particles.f[:] = 0.0
         if particles.has("torque"):
             particles.torque[:] = 0.0
@@ -158,6 +162,16 @@ class Verlet:
             sim.energy_step = sim.step
         if vflag:
             sim.virial_step = sim.step
+
+    def _fix_contributions(self):
+        """Fix energies and virials, where switched on, join the pair's (after post_force, when the
+        fixes' forces are known)."""
+        sim = self.sim
+        for fix in self.contributing:
+            if sim.eflag and fix.thermo_energy:
+                sim.pe += float(fix.energy(sim))
+            if sim.vflag and fix.thermo_virial:
+                sim.virial += np.asarray(fix.virial(sim), dtype=np.float64)
 
     def _check_finite(self):
         particles = self.sim.particles
@@ -217,6 +231,7 @@ class Verlet:
                 sim.timers.stage["Comm"] += time.perf_counter() - t0
             self._forces(eflag, vflag)
             self._call("post_force")
+            self._fix_contributions()
             self._check_finite()
             self._call("final_integrate")
             self._call("end_of_step")

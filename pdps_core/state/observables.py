@@ -3,7 +3,8 @@
 Conventions are LAMMPS's ``compute temp`` and ``compute pressure``:
 
     KE = 1/2 sum_i m_i v_i^2                              (times mvv2e)
-    T  = 2 KE / (N_dof k_B),   N_dof = d N - d            (d = dimension; the centre of mass is fixed)
+    T  = 2 KE / (N_dof k_B),   N_dof = d N - d - N_fix    (d = dimension; the centre of mass is fixed;
+                                                          N_fix removed by fixes: Fix.dof_removed)
     P  = (N_dof k_B T + sum_i r_i . f_i) / (d V)          (times nktv2p; V is the area in 2-d)
 
 The PDPS manual writes T = <v^2> / 3 k_B; for unit masses and large N the two agree, and the LAMMPS
@@ -34,8 +35,11 @@ def kinetic_energy(sim, group="all"):
 
 
 def degrees_of_freedom(sim, group="all"):
+    """d N - d, less what fixes remove (constraints, rigid bodies: ``Fix.dof_removed``)."""
     d = sim.dimension
-    return max(d * count(sim, group) - d, 0)
+    removed = sum(int(fix.dof_removed(sim, group)) for fix in sim.fixes.values()
+                  if hasattr(fix, "dof_removed"))
+    return max(d * count(sim, group) - d - removed, 0)
 
 
 def temperature(sim, group="all"):

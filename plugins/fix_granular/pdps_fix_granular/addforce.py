@@ -19,13 +19,17 @@ fluid floats. The manual's example gives :math:`\rho` and :math:`g` as two numbe
 (``buoyancy z 0.789 9.81``); a single number is read as the product :math:`\rho g`.
 
 A constant force :math:`(F_x, F_y, F_z)` is added to each particle of the group with LAMMPS's
-syntax ``addforce FX FY FZ``. Any of the three parts can be combined in one fix; ``region RID``
+syntax ``addforce FX FY FZ``; a component written ``v_NAME`` is an equal-style variable evaluated
+every step (a force that changes in time). Its potential energy, added to thermo ``pe`` after
+``fix_modify ID energy yes`` (LAMMPS), is that of a uniform field,
+:math:`E = -\sum_i \mathbf{F}\cdot\mathbf{x}_i` over the particles it acts on, with unwrapped
+positions (image flags counted), as LAMMPS's fix addforce. Any of the three parts can be combined in one fix; ``region RID``
 (LAMMPS) restricts them to particles inside the region. Applied in ``post_force`` and at setup.
 Drag and buoyancy need per-particle radii (``particle_style sphere``).
 
 Parameters:
 
-- ``FX FY FZ`` (optional): constant force (force units).
+- ``FX FY FZ`` (optional): constant force (force units), each a number or ``v_NAME``.
 - ``drag_stokes MU``: dynamic viscosity of the fluid (force*time/area units), >= 0.
 - ``buoyancy DIM RHO G`` or ``buoyancy DIM RHO_G``: axis (x, y or z; not z in 2-d), fluid density
   (mass/volume) and gravity (force/mass), or their product.
@@ -47,7 +51,7 @@ import math
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
+from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
 from ._common import AXES, Axis, chosen, require_plane, require_spheres
 
@@ -57,12 +61,13 @@ KEYWORDS = ("drag_stokes", "buoyancy", "region")
 class FixAddForce(Fix):
     name = "addforce"
     usage = "fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]"
+    can_energy = True
 
     class Args(StyleArgs):
-        fx: float | None = None
-        fy: float | None = None
-        fz: float | None = None
-        drag_stokes: float | None = keyword(None, ge=0)
+        fx: FloatOrVariable | None = param(None, unit="force")
+        fy: FloatOrVariable | None = param(None, unit="force")
+        fz: FloatOrVariable | None = param(None, unit="force")
+        drag_stokes: float | None = keyword(None, ge=0, unit="dynamic viscosity")
         buoyancy: tuple[Axis, float, float] | None = keyword(None)
         region: str | None = keyword(None)
 
@@ -71,7 +76,7 @@ class FixAddForce(Fix):
             force = [c for c in (self.fx, self.fy, self.fz) if c is not None]
             if 0 < len(force) < 3:
                 raise ValueError("a constant force needs three components FX FY FZ "
-                                 f"(got {' '.join(f'{c:g}' for c in force)})")
+                                 f"(got {' '.join(str(c) if isinstance(c, VariableRef) else f'{c:g}' for c in force)})")
             if not force and self.drag_stokes is None and self.buoyancy is None:
                 raise ValueError("nothing to add: give FX FY FZ, drag_stokes MU or buoyancy DIM RHO G")
             return self
@@ -101,7 +106,13 @@ class FixAddForce(Fix):
             require_plane(sim, args.buoyancy[0], "fix addforce buoyancy")
         if args.region is not None:
             sim.region(args.region)
-        self.force = None if args.fx is None else np.array([args.fx, args.fy, args.fz])
+        self.components = None if args.fx is None else (args.fx, args.fy, args.fz)
+
+    def constant_force(self, sim):
+        """(FX, FY, FZ) now, variables evaluated; None when the fix adds no constant force."""
+        if self.components is None:
+            return None
+        return np.array([sim.evaluate(c) for c in self.components], dtype=np.float64)
 
     def setup(self, sim):
         self.post_force(sim)
@@ -111,8 +122,9 @@ class FixAddForce(Fix):
         n = p.nlocal
         selected = chosen(sim, self.group, self.args.region)
         f = p.f[:n]
-        if self.force is not None:
-            f[selected] += self.force
+        force = self.constant_force(sim)
+        if force is not None:
+            f[selected] += force
         if self.args.drag_stokes is not None:
             radius = p.radius[:n][selected]
             f[selected] -= (6.0 * math.pi * self.args.drag_stokes * radius)[:, None] * p.v[:n][selected]
@@ -121,3 +133,14 @@ class FixAddForce(Fix):
             radius = p.radius[:n][selected]
             volume = math.pi * radius ** 2 if sim.dimension == 2 else 4.0 / 3.0 * math.pi * radius ** 3
             f[selected, AXES[axis]] += rho * g * volume
+
+    def energy(self, sim):
+        """-F . x over the particles the constant force acts on (this rank's)."""
+        force = self.constant_force(sim)
+        if force is None:
+            return 0.0
+        p = sim.particles
+        n = p.nlocal
+        selected = chosen(sim, self.group, self.args.region)
+        unwrapped = p.x[:n][selected] + p.image[:n][selected] * sim.box.length
+        return -float((unwrapped @ force).sum())

@@ -1,0 +1,173 @@
+r"""Fix ``wall/harmonic``: flat walls that push particles back with a harmonic spring (LAMMPS's fix
+wall/harmonic).
+
+For a particle at distance :math:`d` from a wall (measured into the box) closer than the cutoff
+:math:`r_c`:
+
+.. math::
+
+    E = \varepsilon\,(r_c - d)^2, \qquad F = 2\varepsilon\,(r_c - d) \quad\text{(away from the wall)}
+
+``sigma`` is read and unused, as in LAMMPS. A particle on or behind a wall stops the run with an
+error (the force is undefined there), as LAMMPS's "Particle on or inside fix wall surface".
+
+Thermo: the scalar ``f_ID`` is the walls' total energy. ``fix_modify ID energy yes`` adds it to
+``pe``; ``fix_modify ID virial yes`` adds the walls' virial to ``press`` (off by default, as in
+LAMMPS). The virial of a wall is tallied relative to the wall, :math:`d\,F` per particle, so a gas
+held by walls on the box faces reads the pressure it exerts on them: for an ideal gas,
+:math:`N k_B T / V_\mathrm{acc}`, with the accessible volume :math:`V_\mathrm{acc}` smaller than the
+box by the walls' soft range (plugins/fix_wall/tests/test_harmonic.py).
+
+Parameters, for each wall: ``face`` (xlo, xhi, ylo, yhi, zlo, zhi), ``coord`` (distance, or EDGE:
+the box face), ``epsilon`` (energy/distance^2), ``sigma`` (distance, unused), ``cutoff`` (> 0,
+distance). ``units lattice`` (LAMMPS's default) scales numeric coords by the lattice spacing (1 when
+no lattice is defined); ``units box`` takes them as they are.
+
+Syntax::
+
+    fix ID GROUP wall/harmonic face coord epsilon sigma cutoff [face ...] [units box|lattice]
+
+Example::
+
+    fix walls all wall/harmonic zlo EDGE 50.0 1.0 1.0 zhi EDGE 50.0 1.0 1.0
+    fix_modify walls virial yes
+"""
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import Fix, ScriptError, StyleArgs
+
+FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
+
+
+@njit(cache=True)
+def harmonic_walls(x, f, mask, groupbit, nlocal, axes, lower, coords, epsilon, cutoff):
+    """Adds the wall forces; returns (energy, xx, yy, zz virial, index of a particle on or behind
+    a wall or -1)."""
+    energy = 0.0
+    vxx = 0.0
+    vyy = 0.0
+    vzz = 0.0
+    for w in range(len(axes)):
+        a = axes[w]
+        c = coords[w]
+        rc = cutoff[w]
+        for i in range(nlocal):
+            if not mask[i] & groupbit:
+                continue
+            d = x[i, a] - c if lower[w] else c - x[i, a]
+            if d >= rc:
+                continue
+            if d <= 0.0:
+                return energy, vxx, vyy, vzz, i
+            push = 2.0 * epsilon[w] * (rc - d)
+            f[i, a] += push if lower[w] else -push
+            energy += epsilon[w] * (rc - d) * (rc - d)
+            if a == 0:
+                vxx += d * push
+            elif a == 1:
+                vyy += d * push
+            else:
+                vzz += d * push
+    return energy, vxx, vyy, vzz, -1
+
+
+class FixWallHarmonic(Fix):
+    name = "wall/harmonic"
+    usage = "fix ID GROUP wall/harmonic face coord epsilon sigma cutoff [face ...] [units box|lattice]"
+    can_energy = True
+    can_virial = True
+
+    class Args(StyleArgs):
+        words: list[str]
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.words)
+        units = "lattice"
+        walls = {}
+        k = 0
+        while k < len(words):
+            word = words[k]
+            if word == "units":
+                if k + 1 >= len(words) or words[k + 1] not in ("box", "lattice"):
+                    raise ScriptError(f"units must be one of box, lattice (got {' '.join(words[k + 1:k + 2]) or 'nothing'})")
+                units = words[k + 1]
+                k += 2
+                continue
+            if word not in FACES:
+                raise ScriptError(f"unknown keyword {word} (known: {', '.join(FACES)}, units)")
+            if word in walls:
+                raise ScriptError(f"wall {word} is given twice")
+            values = words[k + 1:k + 5]
+            if len(values) < 4:
+                raise ScriptError(f"wall {word} needs coord epsilon sigma cutoff (got {' '.join(values) or 'nothing'})")
+            walls[word] = [values[0]] + [_number(word, name, v) for name, v in
+                                         zip(("epsilon", "sigma", "cutoff"), values[1:])]
+            if walls[word][3] <= 0:
+                raise ScriptError(f"wall {word}: cutoff must be > 0 (got {walls[word][3]:g})")
+            if values[0] != "EDGE":
+                walls[word][0] = _number(word, "coord", values[0])
+            k += 5
+        if not walls:
+            raise ScriptError(f"expected at least one wall; usage: {self.usage}")
+        spacing = sim.lattice[0] if (units == "lattice" and sim.lattice is not None) else np.ones(3)
+        axes, lower, coords, epsilon, cutoff = [], [], [], [], []
+        for face, (coord, eps, _sigma, rc) in walls.items():
+            axis = FACES.index(face) // 2
+            if axis == 2 and sim.dimension == 2:
+                raise ScriptError(f"wall {face} in a 2-d simulation")
+            is_lo = face.endswith("lo")
+            if coord == "EDGE":
+                coord = float((sim.box.lo if is_lo else sim.box.hi)[axis])
+            else:
+                coord *= float(spacing[axis])
+            axes.append(axis)
+            lower.append(is_lo)
+            coords.append(coord)
+            epsilon.append(eps)
+            cutoff.append(rc)
+        self.axes = np.array(axes, dtype=np.int64)
+        self.lower = np.array(lower, dtype=np.bool_)
+        self.coords = np.array(coords)
+        self.epsilon = np.array(epsilon)
+        self.cutoff = np.array(cutoff)
+        self.wall_energy = 0.0
+        self.wall_virial = np.zeros(6)
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        energy, vxx, vyy, vzz, inside = harmonic_walls(
+            p.x, p.f, p.mask, sim.groups.bit(self.group), p.nlocal, self.axes, self.lower,
+            self.coords, self.epsilon, self.cutoff)
+        message = None
+        if inside >= 0:
+            message = (f"fix {self.id} (wall/harmonic): particle {int(p.tag[inside])} is on or behind a "
+                       f"wall at step {sim.step} (position {', '.join(f'{c:.6g}' for c in p.x[inside])})")
+        sim.comm.agree(message)
+        self.wall_energy = energy
+        self.wall_virial[:3] = (vxx, vyy, vzz)
+
+    def energy(self, sim):
+        return self.wall_energy
+
+    def virial(self, sim):
+        return self.wall_virial
+
+    def scalar(self, sim):
+        """The walls' total energy (f_ID), summed over ranks."""
+        return float(sim.comm.sum(self.wall_energy))
+
+
+def _number(face, name, word):
+    try:
+        value = float(word)
+    except ValueError:
+        value = float("nan")
+    if not np.isfinite(value):
+        raise ScriptError(f"wall {face}: {name} must be a finite number (got {word})")
+    return value
