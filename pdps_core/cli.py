@@ -2,9 +2,11 @@
 
     pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--no-progress] [--debug]
     pdps plot LOG [-o PNG] [--columns COLUMN...]   thermo columns against step, one panel each
-    pdps styles                 every installed style, by kind, with the distribution that provides it
-    pdps doc KIND STYLE         a style's documentation (imports only that style)
-    pdps new-plugin NAME        a working, tested plugin skeleton in plugins/fix_NAME
+    pdps styles [-v]            every installed style, by kind, with its distribution and version, marked
+                                broken, incompatible or disabled where it is; -v: hooks, needs, contributions
+    pdps doc KIND STYLE         a style's manual page (imports only that style)
+    pdps new-plugin NAME [--kind pair|fix|compute|region|dump] [--style STYLE]
+                                a working, tested plugin skeleton in plugins/KIND_NAME
 """
 
 import argparse
@@ -30,12 +32,17 @@ def _parser():
     plot.add_argument("-o", dest="output", metavar="PNG", help="the PNG to write (default LOG.png)")
     plot.add_argument("--columns", nargs="+", metavar="COLUMN",
                       help="header names (Temp) or thermo keywords (temp); default: all but Step")
-    sub.add_parser("styles", help="list installed styles without importing them")
+    styles = sub.add_parser("styles", help="list installed styles; each is loaded to check it")
+    styles.add_argument("-v", "--verbose", action="store_true",
+                        help="also each style's hooks, needs and contributions")
     doc = sub.add_parser("doc", help="show a style's documentation")
     doc.add_argument("kind", choices=["pair", "fix", "compute", "analyze", "dump", "region"])
     doc.add_argument("style")
     new = sub.add_parser("new-plugin", help="write a working, tested plugin skeleton")
-    new.add_argument("name")
+    new.add_argument("name", help="the plugin: distribution pdps-KIND-NAME, package pdps_KIND_NAME")
+    new.add_argument("--kind", default="fix", choices=["pair", "fix", "compute", "region", "dump"],
+                     help="the kind of style (default fix)")
+    new.add_argument("--style", help="the style name scripts use (default NAME; may contain /)")
     new.add_argument("--dir", default="plugins", help="where to put it (default plugins/)")
     return parser
 
@@ -43,11 +50,11 @@ def _parser():
 def main(argv=None):
     args = _parser().parse_args(argv)
     if args.action == "styles":
-        return _styles()
+        return _styles(args.verbose)
     if args.action == "doc":
         return _doc(args.kind, args.style)
     if args.action == "new-plugin":
-        return _new_plugin(args.name, args.dir)
+        return _new_plugin(args.name, args.dir, args.kind, args.style)
     if args.action == "plot":
         return _plot(args)
     return _run(args)
@@ -64,40 +71,66 @@ def _plot(args):
     return 0
 
 
-def _new_plugin(name, directory):
+def _new_plugin(name, directory, kind, style):
     from .skeleton import new_plugin
     try:
-        root = new_plugin(name, directory)
+        root, example = new_plugin(name, directory, kind=kind, style=style)
     except ScriptError as exc:
         print(f"ERROR: {exc}", file=sys.stderr)
         return 1
-    print(f"wrote {root}: pip install -e {root}, then 'fix ID GROUP {name} DVX DVY DVZ' in a script")
+    print(f"wrote {root}: pip install -e {root}, then '{example}' in a script")
     return 0
 
 
-def _styles():
-    from .styles import registry
-    rows = registry.listing()
-    if not rows:
+def _styles(verbose):
+    """One row per style: kind, name, distribution and version, and what is wrong with it. Unlike
+    ``registry.listing()``, each style is loaded, so a broken or incompatible one shows here."""
+    from .styledoc import verbose_lines
+    from .styles import DISABLE_VARIABLE, IN_PROCESS, PluginError, registry
+    entries = registry.entries()
+    if not entries:
         print("no styles installed")
         return 0
-    kind_w = max(len(r[0]) for r in rows)
-    name_w = max(len(r[1]) for r in rows)
-    for kind, name, dist, _ in rows:
-        print(f"{kind:<{kind_w}}  {name:<{name_w}}  {dist}")
+    claims = {}
+    for e in entries:
+        if not e.disabled:
+            claims.setdefault((e.kind, e.name), []).append(e.dist)
+    kind_w = max(len(e.kind) for e in entries)
+    name_w = max(len(e.name) for e in entries)
+    origin_w = max(len(f"{e.dist} {e.version}".strip()) for e in entries)
+    for e in entries:
+        origin = f"{e.dist} {e.version}".strip()
+        row, cls = f"{e.kind:<{kind_w}}  {e.name:<{name_w}}  {origin:<{origin_w}}", None
+        others = [d for d in claims.get((e.kind, e.name), []) if d != e.dist]
+        if e.disabled:
+            status = f"disabled ({DISABLE_VARIABLE})"
+        else:
+            try:
+                cls, status = registry.load(e), ""
+            except PluginError as exc:
+                status = f"{exc.status}: {exc.reason}"
+            except ScriptError as exc:
+                status = f"broken: {exc}"
+        if others and e.dist != IN_PROCESS:
+            status = "; ".join(filter(None, [status, f"conflict: also provided by {', '.join(others)}"]))
+        print(f"{row}  {status}".rstrip())
+        if verbose and cls is not None:
+            print("\n".join(verbose_lines(cls)))
     return 0
 
 
 def _doc(kind, style):
-    import inspect
-
-    from .styles import registry
+    from .styledoc import document
+    from .styles import IN_PROCESS, StyleEntry, registry
     try:
         cls = registry.lookup(kind, style)
     except ScriptError as exc:
         print(f"ERROR: {exc}", file=sys.stderr)
         return 1
-    print(inspect.getdoc(sys.modules[cls.__module__]) or inspect.getdoc(cls) or "(no documentation)")
+    found = [e for e in registry.entries() if (e.kind, e.name) == (kind, style) and not e.disabled]
+    local = [e for e in found if e.dist == IN_PROCESS]
+    entry = (local or found or [StyleEntry(kind, style, IN_PROCESS, "", "")])[0]
+    print(document(entry, cls), end="")
     return 0
 
 

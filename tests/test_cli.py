@@ -50,24 +50,102 @@ def test_usage_errors_exit_2(run_pdps):
     assert "usage: pdps run" in result.stderr
 
 
-def test_styles_lists_every_style_with_its_distribution_without_importing_it():
-    code = ("import sys; from pdps_core import cli; cli.main(['styles']); "
-            "print('imported:', sorted(m for m in sys.modules if m.startswith('pdps_') and '.' in m "
-            "and not m.startswith('pdps_core')))")
-    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+def test_styles_lists_every_style_with_its_distribution_and_version():
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "styles"], capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
-    lines = result.stdout.splitlines()
-    assert lines[-1] == "imported: []"               # listing reads metadata only
-    rows = {tuple(line.split()) for line in lines[:-1]}
+    rows = {tuple(line.split()) for line in result.stdout.splitlines()}
     for expected in [("pair", "dpd", "pdps-pair-dpd"), ("fix", "nve", "pdps-fix-nve"),
                      ("compute", "temp", "pdps-compute-thermo"), ("compute", "pressure", "pdps-compute-thermo"),
                      ("compute", "centroid", "pdps-compute-thermo"), ("dump", "atom", "pdps-dump-text"),
                      ("dump", "custom", "pdps-dump-text"), ("region", "block", "pdps-region-shapes"),
                      ("region", "polygon", "pdps-region-shapes")]:
-        assert expected in rows
-    installed = {(kind, name, dist) for kind, name, dist, _ in registry.listing()
-                 if dist != "(registered in process)"}     # other tests may register styles in-process
+        assert (*expected, "0.1.0") in rows          # loaded and usable: nothing after the version
+    installed = {(e.kind, e.name, e.dist, e.version) for e in registry.entries()
+                 if e.dist != "(registered in process)"}     # other tests may register styles in-process
     assert rows == installed
+
+
+def styles_verbose(capsys):
+    """`pdps styles -v` in-process: style (kind, name) -> its three indented lines."""
+    from pdps_core import cli
+    capsys.readouterr()
+    assert cli.main(["styles", "-v"]) == 0
+    blocks, key = {}, None
+    for line in capsys.readouterr().out.splitlines():
+        if line.startswith("    "):
+            blocks[key].append(line.strip())
+        else:
+            key = tuple(line.split()[:2])
+            blocks[key] = [line]
+    return blocks
+
+
+def test_styles_verbose_shows_hooks_needs_and_contributions(capsys, monkeypatch):
+    from pdps_core.styles import Fix
+
+    class FixHolder(Fix):
+        """A test double declaring every contribution a fix can make."""
+        name = "holder"
+        per_atom = (("anchor", 3),)
+        ghost_fields = ("anchor",)
+        neighbor_lists_needed = True
+        can_energy, can_virial, virial_default = True, True, True
+
+        def post_force(self, sim):
+            pass
+
+        def dof_removed(self, sim, group):
+            return 0
+
+    monkeypatch.setattr(registry, "_local", {**registry._local, "fix": {"holder": FixHolder}})
+    blocks = styles_verbose(capsys)
+    assert blocks[("pair", "dpd")][1:] == [
+        "hooks:        force law in the core's pair loop",
+        "needs:        half neighbor list; per-atom v, tag in the force law; ghost velocities",
+        "contributes:  pair forces, energy and virial"]
+    assert blocks[("fix", "wall/reflect")][0].split() == ["fix", "wall/reflect", "pdps-fix-wall", "0.1.0"]
+    assert blocks[("fix", "wall/reflect")][1] == "hooks:        setup; post_integrate; end_of_step"
+    assert blocks[("fix", "wall/dem")][1] == "hooks:        setup; post_force"
+    assert blocks[("pair", "dem/lsd")][2] == (
+        "needs:        per-atom radius, rmass, omega, torque; half neighbor list; ghost velocities; ghost omega")
+    assert blocks[("fix", "holder")][1:] == [
+        "hooks:        post_force",
+        "needs:        per-atom anchor[3]; neighbor lists (requested in init_run); ghost anchor",
+        "contributes:  energy to pe (fix_modify ID energy yes); virial to press (on; fix_modify ID virial no); "
+        "removed degrees of freedom to temperatures"]
+
+
+def test_doc_lays_out_the_manual_sections_with_parameters_bounds_and_units(capsys):
+    from pdps_core import cli
+    capsys.readouterr()
+    assert cli.main(["doc", "pair", "dem/lsd"]) == 0
+    page = capsys.readouterr().out.splitlines()
+    assert page[0] == "pair style dem/lsd  (pdps-pair-dem 0.1.0)"
+    headings = [line for line in page if line in ("Syntax:", "Examples:", "Description:", "Parameters:", "Default:")]
+    assert headings == ["Syntax:", "Examples:", "Description:", "Parameters:", "Default:"]
+    syntax = page.index("Syntax:")
+    assert page[syntax + 2:syntax + 4] == [
+        "    pair_style dem/lsd e cutoff [limit_damping yes|no] [max_contacts N]",
+        "    pair_coeff I J kn cn kt ct mu [cutoff]  or  kn KN [kt KT] [e E] mu MU [ct CT] [cutoff RC]"]
+    examples = page.index("Examples:")
+    assert page[examples + 2:examples + 5] == [
+        "    particle_style sphere", "    pair_style dem/lsd 0.3 1.0", "    pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1"]
+    parameters = page[page.index("Parameters:"):page.index("Default:")]
+    for line in ["- e: number; 0 < e <= 1; unit: dimensionless; required",
+                 "- cutoff: number; cutoff > 0; unit: distance; required",
+                 "- max_contacts (keyword): integer; max_contacts >= 2; unit: dimensionless; default 16",
+                 "- limit_damping (keyword): yes|no; default no",
+                 "- cn: number; cn >= 0; unit: force/velocity; required",
+                 "- kt (keyword): number; kt >= 0; unit: force/distance; optional"]:
+        assert line in parameters
+    assert page[page.index("Default:") + 2] == "limit_damping = no, max_contacts = 16"
+
+
+def test_doc_of_an_unknown_style_is_one_line(capsys):
+    from pdps_core import cli
+    capsys.readouterr()
+    assert cli.main(["doc", "fix", "nvee"]) == 1
+    assert capsys.readouterr().err.startswith("ERROR: unknown fix style nvee; did you mean nve? (installed: ")
 
 
 # ---- the one-line error contract -----------------------------------------------------------------

@@ -10,7 +10,7 @@ step 0), and a step already sampled at the end of one run is not sampled again b
 
 from pydantic import Field, model_validator
 
-from pdps_core.api import ScriptError, StyleArgs
+from pdps_core.api import ScriptError, StyleArgs, param
 
 
 def keyword_pairs(words, known, unknown):
@@ -29,9 +29,9 @@ def keyword_pairs(words, known, unknown):
 
 class ScheduleArgs(StyleArgs):
     """``NEVERY NREPEAT NFREQ`` then the style's own words, which it reads itself."""
-    nevery: int = Field(gt=0)
-    nrepeat: int = Field(gt=0)
-    nfreq: int = Field(gt=0)
+    nevery: int = param(gt=0, unit="timesteps")
+    nrepeat: int = param(gt=0, unit="dimensionless")
+    nfreq: int = param(gt=0, unit="timesteps")
     rest: list[str] = Field(default_factory=list)
 
     @model_validator(mode="after")

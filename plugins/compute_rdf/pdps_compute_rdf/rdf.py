@@ -66,7 +66,7 @@ import numpy as np
 from numba import njit
 from pydantic import Field, model_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, keyword
+from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
 
 
 @njit(cache=True)
@@ -184,9 +184,9 @@ class ComputeRDF(Compute):
     usage = "compute ID GROUP rdf NBIN [I J]... [cutoff R]"
 
     class Args(StyleArgs):
-        nbin: int = Field(gt=0)
+        nbin: int = param(gt=0, unit="dimensionless")
         pairs: list[str] = Field(default_factory=list)
-        cutoff: float | None = keyword(None, gt=0)
+        cutoff: float | None = keyword(None, gt=0, unit="distance")
 
         @model_validator(mode="before")
         @classmethod

@@ -25,15 +25,13 @@ import os
 import tempfile
 
 import numpy as np
-from pydantic import Field
-
-from pdps_core.api import Dump, ScriptError, StyleArgs, keyword
+from pdps_core.api import Dump, ScriptError, StyleArgs, keyword, param
 
 SEPARATORS = "_.-"
 
 
 class MeshDumpArgs(StyleArgs):
-    every: int = Field(ge=1)
+    every: int = param(ge=1, unit="timesteps")
     file: str
     walls: bool = keyword(False)
 

@@ -12,9 +12,7 @@ Example::
     dump 1 all atom 50 dump.atom
 """
 
-from pydantic import Field
-
-from pdps_core.api import StyleArgs
+from pdps_core.api import StyleArgs, param
 
 from .frame import TextDump
 
@@ -25,7 +23,7 @@ class DumpAtom(TextDump):
     columns = ("id", "type", "xs", "ys", "zs")
 
     class Args(StyleArgs):
-        every: int = Field(ge=1)
+        every: int = param(ge=1, unit="timesteps")
         file: str
 
     def column_values(self, sim, chosen):

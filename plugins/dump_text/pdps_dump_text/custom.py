@@ -35,7 +35,7 @@ import re
 import numpy as np
 from pydantic import Field, field_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables, peratom_column
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param, peratom_column
 
 from .frame import TextDump
 
@@ -53,7 +53,7 @@ class DumpCustom(TextDump):
     usage = "dump ID GROUP custom N FILE column..."
 
     class Args(StyleArgs):
-        every: int = Field(ge=1)
+        every: int = param(ge=1, unit="timesteps")
         file: str
         columns: list[str] = Field(min_length=1)
 

@@ -33,7 +33,7 @@ class FixAcc(Fix):
     usage = "fix ID GROUP acc gravity DIM VALUE [region RID]"
 
     class Args(StyleArgs):
-        gravity: tuple[Axis, float] = keyword(...)
+        gravity: tuple[Axis, float] = keyword(..., unit="acceleration")
         region: str | None = keyword(None)
 
     def __init__(self, sim, id, group, args):

@@ -47,9 +47,7 @@ Example::
 import math
 
 import numpy as np
-from pydantic import Field
-
-from pdps_core.api import Fix, SimulationError, StyleArgs, keyword
+from pdps_core.api import Fix, SimulationError, StyleArgs, keyword, param
 
 from ._common import chosen
 
@@ -63,9 +61,9 @@ class FixCheckTimestepGran(Fix):
     usage = "fix ID GROUP check/timestep/gran NEVERY FRACTION_R FRACTION_H [error yes|no]"
 
     class Args(StyleArgs):
-        nevery: int = Field(ge=1)
-        fraction_r: float = Field(gt=0)
-        fraction_h: float = Field(gt=0)
+        nevery: int = param(ge=1, unit="timesteps")
+        fraction_r: float = param(gt=0, unit="dimensionless")
+        fraction_h: float = param(gt=0, unit="dimensionless")
         error: bool = keyword(False)
 
     def __init__(self, sim, id, group, args):

@@ -40,7 +40,7 @@ from typing import Literal
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, observables
+from pdps_core.api import Fix, ScriptError, StyleArgs, observables, param
 
 from ._common import add_weight
 
@@ -74,7 +74,7 @@ class FixGravity(Fix):
     usage = "fix ID GROUP gravity MAGNITUDE vector X Y Z | chute ANGLE | spherical PHI THETA"
 
     class Args(StyleArgs):
-        magnitude: float
+        magnitude: float = param(unit="acceleration")
         style: Literal["vector", "chute", "spherical"]
         values: list[float] = []
 

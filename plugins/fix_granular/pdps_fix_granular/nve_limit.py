@@ -46,9 +46,7 @@ import math
 from typing import Literal
 
 from numba import njit
-from pydantic import Field
-
-from pdps_core.api import Fix, StyleArgs, observables
+from pdps_core.api import Fix, StyleArgs, observables, param
 
 from ._common import require_radii, require_spheres
 from .nve_sphere import inertia_factor
@@ -112,7 +110,7 @@ class FixNVELimit(Fix):
 
     class Args(StyleArgs):
         limitstyle: Literal["absolute", "radius_ratio"] = "absolute"
-        xmax: float = Field(gt=0)
+        xmax: float = param(gt=0, unit="distance")     # or radii, with radius_ratio
         inertia: Literal["disc"] | None = None
 
     @classmethod

@@ -27,7 +27,7 @@ from typing import Annotated
 
 from pydantic import BeforeValidator
 
-from pdps_core.api import Fix, StyleArgs, keyword
+from pdps_core.api import Fix, StyleArgs, keyword, param
 
 from ._common import chosen
 
@@ -52,9 +52,9 @@ class FixSetForce(Fix):
     usage = "fix ID GROUP setforce FX FY FZ [region RID]"
 
     class Args(StyleArgs):
-        fx: Component
-        fy: Component
-        fz: Component
+        fx: Component = param(unit="force")
+        fy: Component = param(unit="force")
+        fz: Component = param(unit="force")
         region: str | None = keyword(None)
 
     def __init__(self, sim, id, group, args):

@@ -25,9 +25,7 @@ Example::
     fix damp all viscous 0.5
 """
 
-from pydantic import Field
-
-from pdps_core.api import Fix, StyleArgs
+from pdps_core.api import Fix, StyleArgs, param
 
 from ._common import chosen
 
@@ -37,7 +35,7 @@ class FixViscous(Fix):
     usage = "fix ID GROUP viscous GAMMA"
 
     class Args(StyleArgs):
-        gamma: float = Field(ge=0)
+        gamma: float = param(ge=0, unit="force/velocity")
 
     def setup(self, sim):
         self.post_force(sim)

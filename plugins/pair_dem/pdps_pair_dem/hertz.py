@@ -68,9 +68,7 @@ Example (glass beads in SI units)::
 import math
 
 import numpy as np
-from pydantic import Field
-
-from pdps_core.api import ScriptError, StyleArgs, keyword, parse_args
+from pdps_core.api import ScriptError, StyleArgs, keyword, param, parse_args
 from pdps_granular_contact import contact_models
 
 from .granular import DEFAULT_CONTACTS, GranularPair
@@ -92,18 +90,18 @@ class PairDEMHertz(GranularPair):
 
     class Args(StyleArgs):
         limit_damping: bool = keyword(False)
-        max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2)
+        max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, unit="dimensionless")
 
     class Coeff(StyleArgs):
-        youngs: float = Field(gt=0)
-        poisson: float = Field(gt=-1, le=0.5)
-        e: float = Field(gt=0, le=1)
-        mu: float = Field(ge=0)
+        youngs: float = param(gt=0, unit="pressure")
+        poisson: float = param(gt=-1, le=0.5, unit="dimensionless")
+        e: float = param(gt=0, le=1, unit="dimensionless")
+        mu: float = param(ge=0, unit="dimensionless")
 
     class CrossCoeff(StyleArgs):
         """``NULL NULL e mu``: Y and nu of each type from its I I line."""
-        e: float = Field(gt=0, le=1)
-        mu: float = Field(ge=0)
+        e: float = param(gt=0, le=1, unit="dimensionless")
+        mu: float = param(ge=0, unit="dimensionless")
 
     def parse_coeff(self, words):
         nulls = [w.upper() == "NULL" for w in words[:2]]

@@ -84,9 +84,7 @@ Example (PDPS manual)::
 import math
 
 import numpy as np
-from pydantic import Field
-
-from pdps_core.api import ScriptError, StyleArgs, keyword, parse_args
+from pdps_core.api import ScriptError, StyleArgs, keyword, param, parse_args
 from pdps_granular_contact import contact_models
 
 from .granular import DEFAULT_CONTACTS, GranularPair
@@ -101,28 +99,28 @@ class PairDEMLsd(GranularPair):
     coeff_usage = "kn cn kt ct mu [cutoff]  or  kn KN [kt KT] [e E] mu MU [ct CT] [cutoff RC]"
 
     class Args(StyleArgs):
-        e: float = Field(gt=0, le=1)
-        cutoff: float = Field(gt=0)
+        e: float = param(gt=0, le=1, unit="dimensionless")
+        cutoff: float = param(gt=0, unit="distance")
         limit_damping: bool = keyword(False)
-        max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2)
+        max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, unit="dimensionless")
 
     class Coeff(StyleArgs):
         """The PDPS form: damping given directly."""
-        kn: float = Field(gt=0)
-        cn: float = Field(ge=0)
-        kt: float = Field(ge=0)
-        ct: float = Field(ge=0)
-        mu: float = Field(ge=0)
-        cutoff: float | None = Field(default=None, gt=0)
+        kn: float = param(gt=0, unit="force/distance")
+        cn: float = param(ge=0, unit="force/velocity")
+        kt: float = param(ge=0, unit="force/distance")
+        ct: float = param(ge=0, unit="force/velocity")
+        mu: float = param(ge=0, unit="dimensionless")
+        cutoff: float | None = param(None, gt=0, unit="distance")
 
     class RestitutionCoeff(StyleArgs):
         """The restitution form: damping derived per contact from e and the two masses."""
-        kn: float = keyword(..., gt=0)
-        kt: float | None = keyword(None, ge=0)
-        e: float | None = keyword(None, gt=0, le=1)
-        mu: float = keyword(..., ge=0)
-        ct: float | None = keyword(None, ge=0)
-        cutoff: float | None = keyword(None, gt=0)
+        kn: float = keyword(..., gt=0, unit="force/distance")
+        kt: float | None = keyword(None, ge=0, unit="force/distance")
+        e: float | None = keyword(None, gt=0, le=1, unit="dimensionless")
+        mu: float = keyword(..., ge=0, unit="dimensionless")
+        ct: float | None = keyword(None, ge=0, unit="force/velocity")
+        cutoff: float | None = keyword(None, gt=0, unit="distance")
 
     def parse_coeff(self, words):
         if words and words[0] in self.RestitutionCoeff.model_fields:

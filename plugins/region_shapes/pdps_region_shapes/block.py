@@ -36,7 +36,7 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Region, ScriptError, StyleArgs
+from pdps_core.api import Region, ScriptError, StyleArgs, param
 
 HUGE = 1e300
 
@@ -93,12 +93,12 @@ class RegionBlock(Region):
     usage = "region ID block xlo xhi ylo yhi zlo zhi"
 
     class Args(StyleArgs):
-        xlo: Bound
-        xhi: Bound
-        ylo: Bound
-        yhi: Bound
-        zlo: Bound
-        zhi: Bound
+        xlo: Bound = param(unit="distance")
+        xhi: Bound = param(unit="distance")
+        ylo: Bound = param(unit="distance")
+        yhi: Bound = param(unit="distance")
+        zlo: Bound = param(unit="distance")
+        zhi: Bound = param(unit="distance")
 
         @model_validator(mode="after")
         def _words(self):
