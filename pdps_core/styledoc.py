@@ -16,7 +16,7 @@ import annotated_types
 from pydantic_core import PydanticUndefined
 
 from .run.hookspec import HOOKS
-from .styles import BASES, IN_PROCESS, Pair, StyleArgs, _is_keyword
+from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword
 
 NONE = "-"
 
@@ -150,8 +150,8 @@ def _type_name(annotation):
         return " ".join(_type_name(m) for m in members)
     if origin is list:
         return f"{_type_name(members[0]) if members else 'word'}..."
-    return {float: "number", int: "integer", bool: "yes|no", str: "word"}.get(annotation, getattr(
-        annotation, "__name__", str(annotation)))
+    return {float: "number", int: "integer", bool: "yes|no", str: "word", VariableRef: "v_NAME"}.get(
+        annotation, getattr(annotation, "__name__", str(annotation)))
 
 
 def _bounds(name, info):

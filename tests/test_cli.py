@@ -139,6 +139,11 @@ def test_doc_lays_out_the_manual_sections_with_parameters_bounds_and_units(capsy
                  "- kt (keyword): number; kt >= 0; unit: force/distance; optional"]:
         assert line in parameters
     assert page[page.index("Default:") + 2] == "limit_damping = no, max_contacts = 16"
+    capsys.readouterr()
+    assert cli.main(["doc", "fix", "addforce"]) == 0
+    page = capsys.readouterr().out.splitlines()
+    assert "- fx: number or v_NAME; unit: force; optional" in page
+    assert "- drag_stokes (keyword): number; drag_stokes >= 0; unit: dynamic viscosity; optional" in page
 
 
 def test_doc_of_an_unknown_style_is_one_line(capsys):
