@@ -4,6 +4,7 @@ Plugins import from here only; anything else in pdps_core may change without not
 """
 
 from .contact import ContactHistory, close_slot, find_slot, open_slot
+from .commands.words import type_range
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
 from .random import pair_gaussian, particle_gaussians, particle_uniforms, philox4x32
@@ -15,4 +16,4 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
 
 __all__ = ["API_VERSION", "Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region",
            "ScriptError", "SimulationError", "Simulation", "StyleArgs", "VariableRef", "keyword", "observables", "param",
-           "pair_gaussian", "particle_gaussians", "particle_uniforms", "parse_args", "peratom_column", "philox4x32", "registry"]
+           "pair_gaussian", "particle_gaussians", "particle_uniforms", "parse_args", "peratom_column", "philox4x32", "registry", "type_range"]

@@ -77,6 +77,7 @@ class Simulation:
         self.line = None
         self.warnings = []
         self.in_setup = False         # True while a run computes its setup forces
+        self.in_init = False          # True while styles' init_run is called (neighbor requests)
         self.error_location = None
         self._integrator = None
         self.restart_output = None     # the `restart N FILE` schedule (state/restart.py)
@@ -239,6 +240,28 @@ class Simulation:
 
     def variable(self, name: str, style: str, *args):
         return self._call("variable", name, style, *args)
+
+    # ---- neighbor lists for any style ------------------------------------------------------------
+    def request_neighbor_list(self, kind="full", cutoff=None, *, occasional=False, group="all"):
+        """A neighbor list for a fix, compute or analyze style, asked for in its ``init_run(sim)``
+        (at the start of every run): ``kind`` "half" or "full"; ``cutoff`` a number or a
+        (ntypes+1)^2 matrix (distance units); ``occasional`` True for a list built only when the
+        style calls ``build_neighbor_list`` (LAMMPS's occasional lists), else it is rebuilt with
+        the pair list; ``group``: only particles of that group have neighbors. Ghosts reach the
+        largest cutoff asked for. Returns the ``NeighborList``."""
+        if not self.in_init:
+            raise ScriptError("neighbor lists are requested in a style's init_run(sim), at the start of a run")
+        if cutoff is None:
+            raise ScriptError("a neighbor list request needs a cutoff")
+        return self.neighbors.request(kind, cutoff, ntypes=self.ntypes, occasional=occasional,
+                                      groupbit=self.groups.bit(group))
+
+    def build_neighbor_list(self, nlist):
+        """Build an occasional list from the current positions (once per step; call it whenever the
+        style needs the list, e.g. when a compute is read)."""
+        if not any(nlist is r for r in self.neighbors.requests):
+            raise ScriptError("this neighbor list belongs to an earlier run: request it again in init_run")
+        return self.neighbors.build_occasional(nlist, self.particles, self.box, self.step)
 
     # ---- run information ---------------------------------------------------------------------------
     def ramp(self, start, stop):

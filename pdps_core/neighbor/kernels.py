@@ -38,13 +38,16 @@ def bin_particles(x, nall, lo, binsize, nbins):
 
 
 @njit(cache=True)
-def build_list(x, type_, nlocal, cutneighsq, cell, start, order, nbins, half, capacity):
-    """Neighbors of each owned particle within cutneighsq[type_i, type_j]; -1 total on overflow."""
+def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order, nbins, half, capacity):
+    """Neighbors of each owned particle of the group (``mask & groupbit``) within
+    cutneighsq[type_i, type_j]; particles outside the group have none. -1 total on overflow."""
     offsets = np.zeros(nlocal + 1, dtype=np.int64)
     neighbors = np.empty(capacity, dtype=np.int64)
     k = 0
     for i in range(nlocal):
         offsets[i] = k
+        if not mask[i] & groupbit:
+            continue
         ci = cell[i]
         cx = ci % nbins[0]
         cy = (ci // nbins[0]) % nbins[1]

@@ -31,11 +31,21 @@ from .kernels import bin_particles, build_list, max_displacement_sq
 
 @dataclass
 class NeighborList:
-    """CSR list: the neighbors of owned particle i are ``neighbors[offsets[i]:offsets[i+1]]``."""
-    kind: str                    # "half" or "full"
-    cutoff: np.ndarray           # interaction cutoff per type pair, (ntypes+1) x (ntypes+1)
+    """CSR list: the neighbors of owned particle i are ``neighbors[offsets[i]:offsets[i+1]]``, row
+    indices into the particle arrays (owned ``< nlocal``, ghosts after).
+
+    ``kind`` "half" holds each pair once (newton on: a pair with a ghost once over all ranks),
+    "full" holds it for both particles. ``cutoff`` is the interaction cutoff per type pair,
+    (ntypes+1) x (ntypes+1); perpetual lists hold every pair within cutoff + skin (so they stay
+    right until the next rebuild), occasional lists the pairs within the cutoff at the moment
+    they were built. ``groupbit``: only owned particles of that group have neighbors."""
+    kind: str
+    cutoff: np.ndarray
+    occasional: bool = False
+    groupbit: int = 0xFFFFFFFF
     offsets: np.ndarray = field(default_factory=lambda: np.zeros(1, dtype=np.int64))
     neighbors: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    built_step: int | None = None
 
     @property
     def half_list(self):
@@ -73,13 +83,23 @@ class Neighbor:
     def clear_requests(self):
         self.requests = []
 
-    def request(self, kind, cutoff):
-        """A style asks for a list; ``cutoff`` is a (ntypes+1)^2 matrix or a number."""
+    def request(self, kind, cutoff, ntypes=None, occasional=False, groupbit=0xFFFFFFFF):
+        """A style asks for a list; ``cutoff`` is a (ntypes+1)^2 matrix or a number (the same for
+        every type pair: ``ntypes`` is then needed)."""
         if kind not in ("half", "full"):
-            raise ValueError(f"neighbor list kind must be half or full (got {kind})")
-        nlist = NeighborList(kind, np.asarray(cutoff, dtype=np.float64))
+            raise ScriptError(f"neighbor list kind must be half or full (got {kind})")
+        cutoff = np.asarray(cutoff, dtype=np.float64)
+        if cutoff.ndim == 0:
+            cutoff = np.full((ntypes + 1, ntypes + 1), float(cutoff))
+        if not (np.isfinite(cutoff).all() and cutoff.max() > 0):
+            raise ScriptError(f"neighbor list cutoff must be a finite number > 0 (got {cutoff.max():g})")
+        nlist = NeighborList(kind, cutoff, occasional=occasional, groupbit=groupbit)
         self.requests.append(nlist)
         return nlist
+
+    @property
+    def perpetual(self):
+        return [r for r in self.requests if not r.occasional]
 
     @property
     def active(self):
@@ -160,7 +180,7 @@ class Neighbor:
 
     # ---- build ----------------------------------------------------------------------------------
     def build(self, particles, box, resume=False):
-        """Build every requested list; with none, only remember positions for the next decision.
+        """Build every perpetual list; with none, only remember positions for the next decision.
         ``resume``: owned positions are ``xhold`` and the lists of the last build are made again;
         the rebuild schedule goes on."""
         p = particles
@@ -169,11 +189,25 @@ class Neighbor:
             self.ago = 0
         self.built_with = (self.skin, [(r.kind, r.cutoff.copy()) for r in self.requests],
                            box.lo.copy(), box.hi.copy(), box.periodic)
-        if not self.requests:
+        lists = self.perpetual
+        if not lists:
             return
-        x, nall, nlocal = p.x, p.nall, p.nlocal
-        ntypes_plus_one = self.requests[0].cutoff.shape[0]
-        cutmax = max(float(r.cutoff.max()) for r in self.requests) + self.skin
+        binned = self._bin(p, box)
+        for nlist in lists:
+            self._fill(nlist, p, binned, self.skin)
+        self.builds += 1
+
+    def build_occasional(self, nlist, particles, box, step):
+        """Build an occasional list now, from the current positions of owned particles and ghosts
+        (pairs within its cutoff, no skin); once per step however often it is asked for."""
+        if nlist.built_step == step:
+            return nlist
+        self._fill(nlist, particles, self._bin(particles, box), 0.0)
+        nlist.built_step = step
+        return nlist
+
+    def _bin(self, p, box):
+        cutmax = self.cutghost()
         if cutmax <= 0:
             raise ScriptError("neighbor list cutoff must be > 0")
         lo = box.lo - cutmax
@@ -183,19 +217,21 @@ class Neighbor:
             nbins[2] = 1
             extent[2] = max(extent[2], 1.0)
         binsize = extent / nbins
-        cell, start, order = bin_particles(x, nall, lo, binsize, nbins)
-        for nlist in self.requests:
-            cutneighsq = (nlist.cutoff + self.skin) ** 2
-            if cutneighsq.shape[0] != ntypes_plus_one:
-                raise ScriptError("neighbor requests disagree on the number of types")
-            capacity = max(self._capacity, 64 * max(nlocal, 1))
-            while True:
-                offsets, neighbors, total = build_list(
-                    x, p.type, nlocal, cutneighsq, cell, start, order, nbins,
-                    nlist.half_list, capacity)
-                if total >= 0:
-                    break
-                capacity *= 2
-            self._capacity = capacity
-            nlist.offsets, nlist.neighbors = offsets, neighbors[:total]
-        self.builds += 1
+        cell, start, order = bin_particles(p.x, p.nall, lo, binsize, nbins)
+        return cell, start, order, nbins
+
+    def _fill(self, nlist, p, binned, skin):
+        cell, start, order, nbins = binned
+        cutneighsq = (nlist.cutoff + skin) ** 2
+        if cutneighsq.shape[0] != self.requests[0].cutoff.shape[0]:
+            raise ScriptError("neighbor requests disagree on the number of types")
+        capacity = max(self._capacity, 64 * max(p.nlocal, 1))
+        while True:
+            offsets, neighbors, total = build_list(
+                p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, cell, start,
+                order, nbins, nlist.half_list, capacity)
+            if total >= 0:
+                break
+            capacity *= 2
+        self._capacity = capacity
+        nlist.offsets, nlist.neighbors = offsets, neighbors[:total]

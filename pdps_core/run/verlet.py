@@ -88,6 +88,14 @@ class Verlet:
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
             sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff)
+        # styles ask for neighbor lists (and prepare per-run state) before ghosts are sized
+        sim.in_init = True
+        try:
+            for style in styles:
+                if style is not sim.pair and callable(getattr(style, "init_run", None)):
+                    style.init_run(sim)
+        finally:
+            sim.in_init = False
         sim.groups.update(sim)
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
