@@ -44,6 +44,8 @@ def half_loop(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state
     energy = 0.0
     for i in range(nlocal):
         ti = type_[i]
+        coeff_i = coeff[ti]
+        cutsq_i = cutsq[ti]
         xi = x[i, 0]
         yi = x[i, 1]
         zi = x[i, 2]
@@ -57,9 +59,9 @@ def half_loop(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state
             dy = yi - x[j, 1]
             dz = zi - x[j, 2]
             rsq = dx * dx + dy * dy + dz * dz
-            if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
+            if rsq >= cutsq_i[tj] or rsq < MIN_RSQ:
                 continue
-            fpair, e = law(rsq, dx, dy, dz, coeff[ti, tj], i, j, atom, state)
+            fpair, e = law(rsq, dx, dy, dz, coeff_i[tj], i, j, atom, state)
             fx += dx * fpair
             fy += dy * fpair
             fz += dz * fpair

@@ -63,7 +63,7 @@ EPSILON = 1.0e-10        # the core's pair loop skips pairs closer than this (co
 STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more than ~5 % (docstring)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
     """The force law (docstring formula); coeff = (a, gamma, sigma, rc), atom = (v, tag),
     state = (seed, step, 1/sqrt(dt), thermostat). With ``thermostat`` False only the conservative
