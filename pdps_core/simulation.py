@@ -263,6 +263,34 @@ class Simulation:
             raise ScriptError("this neighbor list belongs to an earlier run: request it again in init_run")
         return self.neighbors.build_occasional(nlist, self.particles, self.box, self.step)
 
+    # ---- particles inserted and deleted by styles ------------------------------------------------
+    def add_particles(self, x, type, v=None, **per_atom):
+        """Insert owned particles at positions ``x`` (n x 3) of ``type`` (one or n), velocities ``v``
+        and other per-atom values (``radius=...``, ``rmass=...``, ``mask=...``); returns their row
+        indices. Collective under MPI: every rank calls it (with n = 0 where it inserts nothing);
+        ids continue after the largest id on any rank, rank by rank, so they stay globally unique.
+        Call it from ``pre_exchange`` on a step the fix asked a rebuild for (``next_reneighbor``):
+        the particles are then wrapped, migrated to their owners and listed on that very step."""
+        x = np.atleast_2d(np.asarray(x, dtype=np.float64)).reshape(-1, 3)
+        counts = self.comm.allgather_rows(np.array([[len(x)]], dtype=np.int64)).ravel()
+        p = self.particles
+        largest = int(self.comm.max(int(p.tag[: p.nlocal].max()) if p.nlocal else 0))
+        first = largest + 1 + int(counts[: self.comm.rank].sum())
+        tags = np.arange(first, first + len(x), dtype=np.int64)
+        if v is not None:
+            per_atom["v"] = v
+        rows = p.add(x, type, tags=tags, **per_atom)
+        p.next_tag = max(p.next_tag, largest + 1 + int(counts.sum()))
+        return rows
+
+    def delete_particles(self, rows):
+        """Remove the owned particles at ``rows`` (indices or a boolean mask over owned particles),
+        from ``pre_exchange`` on a rebuild step as for insertion. Ids are not reused."""
+        p = self.particles
+        keep = np.ones(p.nlocal, dtype=bool)
+        keep[rows] = False
+        p.keep(np.flatnonzero(keep))
+
     # ---- run information ---------------------------------------------------------------------------
     def ramp(self, start, stop):
         """start + (stop - start) * (step - first step) / (last step - first step) of the current run:

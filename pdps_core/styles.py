@@ -289,7 +289,8 @@ class PairLaw(Pair):
     - ``params``: names of the per-type-pair values the law reads, in order;
     - ``init_one(i, j)`` returning ``(cutoff, values)``, the values in the order of ``params``
       (read the pair's coefficients from ``self.resolved[(i, j)]``);
-    - ``law``, a numba function (a ``@staticmethod`` over ``@njit(cache=True)``)::
+    - ``law``, a numba function (a ``staticmethod`` of one decorated ``@njit(cache=True,
+      inline="always")``: numba then compiles it into the loop, as fast as a hand-written one)::
 
           law(rsq, dx, dy, dz, coeff, i, j, atom, state) -> (fpair, energy)
 
@@ -367,11 +368,17 @@ class Fix(Style):
     ``energy`` and ``virial`` are called after ``post_force`` on steps where something reads them
     (``sim.eflag`` / ``sim.vflag`` are True during that step's force hooks, so a fix can tally only
     then).
+
+    Inserting and deleting particles: set ``self.next_reneighbor`` to the step on which the fix
+    will act (the same on every rank); that step rebuilds neighbor lists, and the fix's
+    ``pre_exchange(sim)`` calls ``sim.add_particles`` / ``sim.delete_particles`` before particles
+    are wrapped, migrated and listed.
     """
     kind = "fix"
     can_energy: ClassVar[bool] = False
     can_virial: ClassVar[bool] = False
     virial_default: ClassVar[bool] = False
+    next_reneighbor: int | None = None
 
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args

@@ -221,7 +221,12 @@ class Verlet:
             eflag, vflag = sim.output.flags(step, last)
             self._call("initial_integrate")
             self._call("post_integrate")
-            if sim.neighbor.decide(particles, sim.comm):
+            rebuild = sim.neighbor.decide(particles, sim.comm)
+            # a fix inserting or deleting particles asks for this step's rebuild (LAMMPS's
+            # force_reneighbor / next_reneighbor); every rank's fixes agree on the step
+            if not rebuild and any(fix.next_reneighbor == step for fix in sim.fixes.values()):
+                rebuild = True
+            if rebuild:
                 self._check_runaway(step)
                 if sim.neighbor.overrun and not self.warned_overrun:
                     self.warned_overrun = True

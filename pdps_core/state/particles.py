@@ -89,8 +89,9 @@ class Particles:
         return self.nlocal + self.nghost
 
     # ---- owned particles ------------------------------------------------------------------------
-    def add(self, x, type_, **values):
-        """Append owned particles at positions x (n x 3) of the given type(s); returns their indices."""
+    def add(self, x, type_, tags=None, **values):
+        """Append owned particles at positions x (n x 3) of the given type(s), with ids ``tags``
+        (default: from ``next_tag`` on); returns their indices."""
         self.clear_ghosts()
         x = np.atleast_2d(np.asarray(x, dtype=np.float64))
         n = len(x)
@@ -99,10 +100,14 @@ class Particles:
             self.arrays[name] = np.concatenate([self.arrays[name], self._empty(prop, n)])
         self.arrays["x"][start:] = x
         self.arrays["type"][start:] = type_
-        self.arrays["tag"][start:] = np.arange(self.next_tag, self.next_tag + n)
+        if tags is None:
+            tags = np.arange(self.next_tag, self.next_tag + n)
+            self.next_tag += n
+        self.arrays["tag"][start:] = tags
         for name, value in values.items():
+            if name not in self.arrays:
+                raise ScriptError(f"per-atom property {name} does not exist (a style must request it)")
             self.arrays[name][start:] = value
-        self.next_tag += n
         self.nlocal += n
         return np.arange(start, start + n)
 

@@ -244,7 +244,7 @@ class PairFormula(PairLaw):
 
     def _source(self, width):
         lines = ["import math", "", "from numba import njit", "", "",
-                 "@njit(cache=True)",
+                 '@njit(cache=True, inline="always")',
                  "def law(rsq, dx, dy, dz, coeff, i, j, atom, state):"]
         for k, key in enumerate(self.order):
             compiled = self.compiled[key]

@@ -37,7 +37,7 @@ from pydantic import Field
 from pdps_core.api import PairLaw, StyleArgs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def lj_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
     """coeff = (48 eps sigma^12, 24 eps sigma^6, 4 eps sigma^12, 4 eps sigma^6, E_shift)."""
     r2inv = 1.0 / rsq
