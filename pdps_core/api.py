@@ -1,19 +1,121 @@
-"""The public API of pdps_core: everything a plugin or a Python user may import.
+"""The style contract: everything a plugin (or a Python user) may import and touch.
 
-Plugins import from here only; anything else in pdps_core may change without notice.
+Plugins import from here only, and of the objects the core hands them (``sim`` and what hangs off
+it) they read only the names in ``CONTRACT`` below; anything else in pdps_core may change without
+notice. tests/test_contract.py holds every plugin under plugins/ to it, and docs/plugin-guide.md
+shows every name with an example. The contract has a version, ``API_VERSION``; a plugin states the
+range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` and is refused,
+by name, outside it.
 """
 
-from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .commands.words import type_range
+from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
 from .random import pair_gaussian, particle_gaussians, particle_uniforms, philox4x32
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
-from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, StyleArgs, VariableRef, keyword,
-                     param, parse_args, peratom_column, registry)
+from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region,
+                     StyleArgs, VariableRef, keyword, param, parse_args, peratom_column, registry)
 
-__all__ = ["API_VERSION", "Analyze", "ContactHistory", "close_slot", "find_slot", "open_slot", "Compute", "Dump", "Fix", "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region",
-           "ScriptError", "SimulationError", "Simulation", "StyleArgs", "VariableRef", "keyword", "observables", "param",
-           "pair_gaussian", "particle_gaussians", "particle_uniforms", "parse_args", "peratom_column", "philox4x32", "registry", "type_range"]
+__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "Dump", "Fix",
+           "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "ScriptError",
+           "Simulation", "SimulationError", "StyleArgs", "VariableRef", "close_slot", "find_slot",
+           "keyword", "observables", "open_slot", "pair_gaussian", "param", "parse_args",
+           "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
+           "type_range"]
+
+# What a style may read of the objects the core hands it: object -> {name: what it is}.
+CONTRACT = {
+    "Simulation": {
+        # particles and the box
+        "particles": "the per-atom arrays (Particles): owned rows 0..nlocal, ghosts after",
+        "nlocal": "number of owned particles on this rank",
+        "x": "positions of owned particles, (nlocal, 3) view (distance)",
+        "v": "velocities of owned particles, (nlocal, 3) view (velocity)",
+        "f": "forces on owned particles, (nlocal, 3) view (force)",
+        "tag": "global ids of owned particles (int64, from 1)",
+        "type": "types of owned particles (int32, from 1)",
+        "mass": "mass per type, index 0 unused (NaN where not set); rmass per particle when present",
+        "ntypes": "number of particle types",
+        "particle_style": "'atomic' or 'sphere' (radius, rmass, omega, torque exist)",
+        "box": "the simulation box (Box)",
+        "dimension": "2 or 3",
+        "lattice": "(spacing (3,), style) of the lattice command, or None",
+        "units": "the unit system (Units): boltz, mvv2e, nktv2p",
+        # the run
+        "step": "the current timestep",
+        "time": "simulated time (time units)",
+        "dt": "the timestep (time units)",
+        "run_first_step": "first step of the current (or last) run",
+        "run_last_step": "last step of the current (or last) run",
+        "ramp": "ramp(start, stop): linear from the run's first to its last step (LAMMPS's ramp)",
+        "eflag": "True while the current step computes energies",
+        "vflag": "True while the current step computes the virial",
+        "in_setup": "True while a run computes its setup forces (styles with history do not advance it)",
+        # the other styles and script objects
+        "pair": "the pair style, or None",
+        "pair_list": "the pair style's neighbor list (NeighborList), once a run set it up",
+        "fixes": "{id: fix} in script order",
+        "computes": "{id: compute}",
+        "analyzes": "{id: analyze style}",
+        "groups": "the groups (Groups): bit(name), select(sim, name)",
+        "region": "region(id): a defined region (Region), or a one-line error",
+        "variables": "the script's variables (Variables): value(name), name in variables",
+        "evaluate": "evaluate(arg): a style argument's value now (v_NAME evaluated)",
+        "compute_value": "compute_value(id, indices): c_ID, c_ID[i], c_ID[i][j]",
+        "fix_value": "fix_value(id, indices): f_ID, f_ID[i], f_ID[i][j]",
+        "compute_needs": "compute_needs(id): {'energy', 'virial'} a compute reads",
+        "require_group": "require_group(name): the name, or a one-line error",
+        "require_box": "require_box(what): a one-line error when no box exists yet",
+        "resolve": "resolve(path): a file named in a script, relative to the script's folder",
+        # services
+        "comm": "communication (Comm): reductions, gathers, agreement on errors",
+        "neighbor": "neighbor settings (Neighbor): skin",
+        "request_neighbor_list": "request_neighbor_list(kind, cutoff, occasional=, group=) in init_run",
+        "build_neighbor_list": "build_neighbor_list(nlist): an occasional list, from current positions",
+        "add_particles": "add_particles(x, type, v=, **per_atom): insert particles (pre_exchange)",
+        "delete_particles": "delete_particles(rows): remove owned particles (pre_exchange)",
+        "info": "info(message): a line on screen and in the log",
+        "warn": "warn(message): a warning on screen and in the log; the run goes on",
+    },
+    "Particles": {
+        "nlocal": "owned particles", "nghost": "ghost particles", "nall": "nlocal + nghost",
+        "x": "(nall, 3)", "v": "(nall, 3)", "f": "(nall, 3)", "tag": "(nall,) int64",
+        "type": "(nall,) int32", "mask": "(nall,) uint32 group bits", "image": "(nall, 3) int32",
+        "radius": "(nall,) when requested", "rmass": "(nall,) when requested",
+        "omega": "(nall, 3) when requested", "torque": "(nall, 3) when requested",
+        "arrays": "{name: array} of every per-atom array, custom ones included",
+        "request": "request(name, width=, dtype=, default=): allocate a per-atom array",
+        "has": "has(name): whether a per-atom array exists",
+        "index_of_tag": "index_of_tag(tag): the owned row of a global id, or -1",
+    },
+    "Box": {
+        "lo": "lower corner (3,)", "hi": "upper corner (3,)", "length": "hi - lo (3,)",
+        "volume": "volume (area in 2-d)", "periodic": "(bool, bool, bool)", "dimension": "2 or 3",
+        "inside": "inside(x): which positions lie in the box",
+        "bounds_label": "the boundary label of a dump header ('pp pp ff')",
+    },
+    "Comm": {
+        "rank": "this rank", "nprocs": "number of ranks", "is_root": "rank 0",
+        "sum": "sum over ranks", "max": "max over ranks", "min": "min over ranks",
+        "agree": "agree(message): the same one-line error on every rank when any rank has one",
+        "gather_rows": "all ranks' rows on rank 0", "allgather_rows": "all ranks' rows everywhere",
+        "bcast": "rank 0's value everywhere",
+        "forward_comm": "forward_comm(particles, names): owners' values onto their ghosts",
+        "reverse_comm": "reverse_comm(particles, names): ghosts' values summed onto their owners",
+        "reverse_rows": "reverse_rows(rows): ghost rows back to their owners, merged by the style",
+        "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
+    },
+    "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},
+    "Units": {"name": "lj or si", "boltz": "k_B", "mvv2e": "m v^2 to energy",
+              "nktv2p": "energy density to pressure"},
+    "Neighbor": {"skin": "the neighbor skin (distance)"},
+    "NeighborList": {"kind": "half or full", "half_list": "kind == 'half'",
+                     "cutoff": "(ntypes+1)^2 cutoffs", "offsets": "CSR offsets (nlocal+1,)",
+                     "neighbors": "CSR neighbor rows", "occasional": "built on demand"},
+    "Variables": {"value": "value(name): v_NAME as a number"},
+    "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
+             "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times"},
+}

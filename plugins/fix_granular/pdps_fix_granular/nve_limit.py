@@ -174,5 +174,5 @@ class FixNVELimit(Fix):
         elif self._episode is not None:
             first, last, total = self._episode
             self._episode = None
-            sim.output.message(f"fix {self.id} (nve/limit): the displacement limit "
-                               f"{self._limit_text()} acted {total} time(s) on steps {first} to {last}")
+            sim.info(f"fix {self.id} (nve/limit): the displacement limit "
+                     f"{self._limit_text()} acted {total} time(s) on steps {first} to {last}")
