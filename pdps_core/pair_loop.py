@@ -44,7 +44,6 @@ def half_loop(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state
     energy = 0.0
     for i in range(nlocal):
         ti = type_[i]
-        coeff_i = coeff[ti]
         cutsq_i = cutsq[ti]
         xi = x[i, 0]
         yi = x[i, 1]
@@ -61,7 +60,7 @@ def half_loop(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state
             rsq = dx * dx + dy * dy + dz * dz
             if rsq >= cutsq_i[tj] or rsq < MIN_RSQ:
                 continue
-            fpair, e = law(rsq, dx, dy, dz, coeff_i[tj], i, j, atom, state)
+            fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
             fx += dx * fpair
             fy += dy * fpair
             fz += dz * fpair
@@ -94,7 +93,7 @@ def full_loop(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state
             rsq = dx * dx + dy * dy + dz * dz
             if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
                 continue
-            fpair, e = law(rsq, dx, dy, dz, coeff[ti, tj], i, j, atom, state)
+            fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
             fx += dx * fpair
             fy += dy * fpair
             fz += dz * fpair
@@ -142,15 +141,18 @@ def law_definition(law):
     return binding, keyed, f"{function.__module__}.{function.__qualname__}"
 
 
-def loops_for(law=None, source=None, name="law"):
+def loops_for(nparams, law=None, source=None, name="law"):
     """(half_loop, full_loop) compiled around ``law`` (an importable numba function), or around
     ``source``: Python source defining a numba function ``law`` (generated laws such as pair
-    formula)."""
+    formula). The law receives its ``nparams`` coefficients as a tuple read from the table: a
+    tuple lives in registers, where a view of the table would cost reference counting per pair."""
     if source is not None:
         binding, keyed, origin = source, source.encode(), name
     else:
         binding, keyed, origin = law_definition(law)
-    text = TEMPLATE.format(origin=origin, law_definition=binding, min_rsq=MIN_DISTANCE ** 2)
+    pair_coeff = "(" + "".join(f"coeff[ti, tj, {k}], " for k in range(max(nparams, 1))) + ")"
+    text = TEMPLATE.format(origin=origin, law_definition=binding, min_rsq=MIN_DISTANCE ** 2,
+                           pair_coeff=pair_coeff)
     digest = hashlib.sha256(keyed + text.encode()).hexdigest()[:16]
     if digest in _loaded:
         return _loaded[digest]

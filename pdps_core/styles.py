@@ -295,7 +295,7 @@ class PairLaw(Pair):
           law(rsq, dx, dy, dz, coeff, i, j, atom, state) -> (fpair, energy)
 
       ``rsq`` = r^2 and (dx, dy, dz) = r_i - r_j (distance units); ``coeff`` the type pair's values
-      (1-d float64, order of ``params``); ``i``, ``j`` rows of the pair in the particle arrays;
+      (a tuple of floats in the order of ``params``: ``coeff[0]``...); ``i``, ``j`` rows of the pair in the particle arrays;
       ``atom`` the tuple of per-atom arrays named in ``law_atom`` (e.g. ``("v", "tag")``);
       ``state`` the tuple ``law_state(sim)`` returns for this step (default ``()``). It returns
       ``fpair`` = F/r, so that the force on i is ``fpair * (dx, dy, dz)`` (force/distance units),
@@ -338,8 +338,9 @@ class PairLaw(Pair):
     def compute(self, sim, nlist, eflag, vflag):
         if self._loops is None:
             from .pair_loop import loops_for
-            self._loops = (loops_for(source=self.law_source, name=self.name.replace("/", "_"))
-                           if self.law_source is not None else loops_for(law=type(self).law))
+            nparams = len(self.params)
+            self._loops = (loops_for(nparams, source=self.law_source, name=self.name.replace("/", "_"))
+                           if self.law_source is not None else loops_for(nparams, law=type(self).law))
         p = sim.particles
         loop = self._loops[0] if nlist.half_list else self._loops[1]
         atom = tuple(p.arrays[name] for name in self.law_atom)
