@@ -37,7 +37,7 @@ def _per_atom_name(item):
 
 def describe(cls):
     """{"hooks": [...], "needs": [...], "contributes": [...]}: a style's declared behaviour."""
-    hooks = [hook for hook in HOOKS if _defines(cls, hook)]
+    hooks = [hook for hook in ("init_run", *HOOKS) if _defines(cls, hook)]
     needs, contributes = [], []
     if cls.per_atom:
         needs.append("per-atom " + ", ".join(_per_atom_name(item) for item in cls.per_atom))

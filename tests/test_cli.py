@@ -108,6 +108,8 @@ def test_styles_verbose_shows_hooks_needs_and_contributions(capsys, monkeypatch)
     assert blocks[("fix", "wall/dem")][1] == "hooks:        setup; post_force"
     assert blocks[("pair", "dem/lsd")][2] == (
         "needs:        per-atom radius, rmass, omega, torque; half neighbor list; ghost velocities; ghost omega")
+    assert blocks[("compute", "coord/atom")][1:3] == [
+        "hooks:        init_run", "needs:        neighbor lists (requested in init_run)"]
     assert blocks[("fix", "holder")][1:] == [
         "hooks:        post_force",
         "needs:        per-atom anchor[3]; neighbor lists (requested in init_run); ghost anchor",
