@@ -4,7 +4,7 @@ VENV := .venv
 PLUGINS := $(sort $(dir $(wildcard plugins/*/pyproject.toml)))
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test clean
+.PHONY: demo test dist clean
 
 $(STAMP): pyproject.toml $(wildcard plugins/*/pyproject.toml)
 	$(PYTHON) -m venv $(VENV)
@@ -17,6 +17,18 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(VENV)/bin/python -m pytest -m "not slow"
+
+# Wheels as users install them: the core, every distribution under plugins/ and the pdps
+# meta-distribution (packaging/pdps). All are built in .venv with one setuptools (an isolated build
+# environment per wheel takes a minute instead of seconds). Old build/ folders go first: setuptools
+# packs whatever a previous build left there, modules since moved or deleted included.
+DIST ?= dist
+DISTRIBUTIONS := ./ $(PLUGINS) packaging/pdps/
+dist: $(STAMP)
+	$(VENV)/bin/pip install -q 'setuptools>=70.1'
+	rm -rf $(addsuffix build,$(DISTRIBUTIONS))
+	rm -f $(DIST)/*.whl
+	$(VENV)/bin/pip wheel -q --no-deps --no-build-isolation --wheel-dir $(DIST) $(DISTRIBUTIONS)
 
 clean:
 	rm -rf $(VENV)

@@ -1,6 +1,7 @@
 """pdps: particle dynamics in Python, driven by PDPS/LAMMPS-style input scripts."""
 
 import os
+import tempfile
 
 __version__ = "0.1.0"
 
@@ -17,3 +18,21 @@ def launched_ranks():
 if launched_ranks() > 1:
     for _variable in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(_variable, "1")
+
+
+def _writable(folder):
+    try:
+        os.makedirs(folder, exist_ok=True)
+        tempfile.TemporaryFile(dir=folder).close()
+        return True
+    except OSError:
+        return False
+
+
+# numba caches compiled kernels beside their module (__pycache__), else in ~/.cache/numba, and stops
+# the import with a traceback when it can write neither (a read-only install and a read-only home, as
+# on some clusters and in containers); the temporary folder takes the cache then.
+if "NUMBA_CACHE_DIR" not in os.environ:
+    _user_cache = os.path.join(os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "numba")
+    if not (_writable(os.path.join(os.path.dirname(__file__), "__pycache__")) or _writable(_user_cache)):
+        os.environ["NUMBA_CACHE_DIR"] = os.path.join(tempfile.gettempdir(), f"pdps-{os.getuid()}", "numba")
