@@ -15,6 +15,14 @@ What is here:
 
 - ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
   the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps.
+- ``make_box``: a silent Simulation with an empty block box, then the script lines given
+  (create_particle, pair_style, fixes...).
+- ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
+  ``unwrapped``: positions with their periodic images undone, in id order.
+- test styles, so a plugin's tests need no other plugin: fix ``test/nve_sphere`` (``SphereVerlet``,
+  velocity Verlet for x, v and the spin of spheres), ``test/force`` (``ConstantForce``) and
+  ``test/record`` (``Record``, the particles' state after every step); ``register_styles`` makes
+  these, or a test's own styles, usable in scripts.
 - ``forces_by_tag``, ``energy_gradient``: forces in id order; forces against central differences
   of the total potential energy.
 - ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
@@ -27,6 +35,7 @@ What is here:
   in-process, returning exit code, stdout and stderr).
 """
 
+import math
 import shutil
 import subprocess
 import sys
@@ -37,6 +46,8 @@ import numpy as np
 import pytest
 
 from .simulation import Simulation
+from .state import observables
+from .styles import Fix, StyleArgs, keyword, registry
 
 DEFAULT_SEED = 12345
 
@@ -80,6 +91,31 @@ def build(tmp_path, x, *, setup="", types=None, tags=None, v=None, masses=None,
     return sim
 
 
+def make_box(setup="", *, box="0 10 0 10 0 10", boundary="p p p", ntypes=1, particle_style=None,
+             dimension=None, units="lj", screen=False):
+    """A Simulation with the block ``box`` (``region box block BOX``, ``create_box NTYPES box``)
+    and no particles, then the script lines ``setup`` run. ``particle_style`` and ``dimension`` are
+    set only when given; ``screen`` as Simulation's (an io.StringIO keeps what the run prints)."""
+    sim = Simulation(screen=screen, log=None)
+    lines = [f"units {units}"]
+    if dimension is not None:
+        lines.append(f"dimension {dimension}")
+    lines.append(f"boundary {boundary}")
+    if particle_style is not None:
+        lines.append(f"particle_style {particle_style}")
+    lines += [f"region box block {box}", f"create_box {ntypes} box"]
+    sim.command("\n".join(lines))
+    if setup:
+        sim.command(textwrap.dedent(setup))
+    return sim
+
+
+def sphere_mass(diameter, density):
+    """The mass of a solid sphere, density * pi d^3 / 6 (create_particle ... diameter D density RHO
+    in 3-d)."""
+    return density * math.pi * diameter ** 3 / 6.0
+
+
 def fluid(n, density, *, seed=DEFAULT_SEED, min_distance=0.0, dimension=3):
     """``n`` random positions in a cube (a square in 2-d) of the given number density, no two closer
     than ``min_distance`` (periodic distances). Returns (x, L)."""
@@ -111,6 +147,11 @@ def fluid(n, density, *, seed=DEFAULT_SEED, min_distance=0.0, dimension=3):
 def by_tag(sim, values):
     """Rows of an owned per-atom array, in id order."""
     return np.asarray(values)[np.argsort(sim.tag)]
+
+
+def unwrapped(sim):
+    """Owned positions with their periodic images undone, x + image * L, in id order."""
+    return by_tag(sim, sim.x + sim.particles.image[: sim.nlocal] * sim.box.length)
 
 
 def forces_by_tag(sim):
@@ -217,6 +258,91 @@ def restart_round_trip(tmp_path, setup, first, second):
     resumed = Simulation(screen=False, log=None)
     resumed.command(f"read_restart {path}\nrun {second}")
     return straight, resumed
+
+
+# ---- test styles --------------------------------------------------------------------------------
+def register_styles(*styles):
+    """Make style classes usable in scripts under their ``name`` in this process: the test styles
+    below, or a test's own (``register_styles(SphereVerlet, MyProbe)``)."""
+    for style in styles:
+        registry.register(style.kind, style.name, style)
+
+
+class SphereVerlet(Fix):
+    """``fix ID GROUP test/nve_sphere [rotate yes|no] [translate yes|no]``: velocity Verlet for x, v
+    and the spin omega of solid spheres, I = 2/5 m r^2 (LAMMPS's fix nve/sphere), for the particles
+    of the group. ``rotate no`` leaves omega alone (and serves point particles), ``translate no``
+    leaves x and v alone. Masses are per particle when present, else per type."""
+    name = "test/nve_sphere"
+
+    class Args(StyleArgs):
+        rotate: bool = keyword(True)
+        translate: bool = keyword(True)
+
+    def initial_integrate(self, sim):
+        self.kick(sim)
+        if self.args.translate:
+            p = sim.particles
+            chosen = sim.groups.select(sim, self.group)
+            p.x[: p.nlocal][chosen] += sim.dt * p.v[: p.nlocal][chosen]
+
+    def final_integrate(self, sim):
+        self.kick(sim)
+
+    def kick(self, sim):
+        p, n = sim.particles, sim.particles.nlocal
+        chosen = sim.groups.select(sim, self.group)
+        half = 0.5 * sim.dt
+        mass = observables.masses(sim, chosen)
+        if self.args.translate:
+            p.v[:n][chosen] += half * p.f[:n][chosen] / mass[:, None]
+        if self.args.rotate:
+            inertia = 0.4 * mass * p.radius[:n][chosen] ** 2
+            p.omega[:n][chosen] += half * p.torque[:n][chosen] / inertia[:, None]
+
+
+class ConstantForce(Fix):
+    """``fix ID GROUP test/force FX FY FZ``: the force (FX, FY, FZ) on every particle of the group,
+    also at setup so the first half-kick sees it (as LAMMPS's fix addforce)."""
+    name = "test/force"
+
+    class Args(StyleArgs):
+        fx: float
+        fy: float
+        fz: float
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        chosen = sim.groups.select(sim, self.group)
+        sim.f[chosen] += [self.args.fx, self.args.fy, self.args.fz]
+
+
+class Record(Fix):
+    """``fix ID GROUP test/record``: after every step (end_of_step), the time in ``t`` and the owned
+    particles' ``x``, ``v``, ``f`` and, where the particles have them, ``omega`` and ``torque``, each
+    a list of arrays in id order; ``series(key, particle)`` is one particle's history (0: the lowest
+    id) as an array."""
+    name = "test/record"
+    KEYS = ("x", "v", "f", "omega", "torque")
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.t = []
+        for key in self.KEYS:
+            setattr(self, key, [])
+
+    def end_of_step(self, sim):
+        p = sim.particles
+        order = np.argsort(p.tag[: p.nlocal])
+        self.t.append(sim.time)
+        for key in self.KEYS:
+            if p.has(key):
+                getattr(self, key).append(p.arrays[key][: p.nlocal][order].copy())
+
+    def series(self, key, particle=0):
+        return np.array([row[particle] for row in getattr(self, key)])
 
 
 # ---- fixtures (registered as a pytest plugin by pdps-core) -------------------------------------

@@ -13,50 +13,24 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import (Fix, ScriptError, Simulation, observables, pair_gaussian, philox4x32,
-                           registry)
+from pdps_core import testing
+from pdps_core.api import Fix, ScriptError, observables, pair_gaussian, philox4x32
+from pdps_core.testing import by_tag, energy_gradient, forces_by_tag, make_box, register_styles
 
 SEED = 4872155
 DT = 0.04
 
 
 # ---- helpers ------------------------------------------------------------------------------------
-def write_data(path, lo, hi, atoms, velocities=None, ntypes=1, masses=None):
-    """A LAMMPS data file; atoms are (tag, type, x, y, z) rows in the order given."""
-    masses = masses or {t: 1.0 for t in range(1, ntypes + 1)}
-    lines = ["pdps pair dpd test", "", f"{len(atoms)} atoms", f"{ntypes} atom types", ""]
-    for d, axis in enumerate("xyz"):
-        lines.append(f"{lo[d]:.17g} {hi[d]:.17g} {axis}lo {axis}hi")
-    lines += ["", "Masses", ""] + [f"{t} {m:.17g}" for t, m in masses.items()]
-    lines += ["", "Atoms # atomic", ""]
-    lines += [f"{int(t)} {int(k)} {x:.17g} {y:.17g} {z:.17g}" for t, k, x, y, z in atoms]
-    if velocities is not None:
-        lines += ["", "Velocities", ""]
-        lines += [f"{int(atoms[i][0])} {u:.17g} {w:.17g} {s:.17g}"
-                  for i, (u, w, s) in enumerate(velocities)]
-    path.write_text("\n".join(lines) + "\n")
-
-
 def build(tmp_path, x, *, v=None, types=None, tags=None, lo=(0.0, 0.0, 0.0), hi=(10.0, 10.0, 10.0),
           boundary="f f f", T=1.0, rc=1.0, coeffs=("* * 25.0 0.0",), dt=DT, units="lj",
           name="data.dpd", skin=None, masses=None):
     """A Simulation holding the given particles with pair style dpd; nothing run yet."""
-    x = np.atleast_2d(np.asarray(x, dtype=float))
-    n = len(x)
-    tags = np.arange(1, n + 1) if tags is None else np.asarray(tags)
-    types = np.ones(n, dtype=int) if types is None else np.asarray(types)
-    ntypes = int(types.max())
-    atoms = [(tags[i], types[i], *x[i]) for i in range(n)]
-    path = tmp_path / name
-    write_data(path, lo, hi, atoms, v, ntypes, masses)
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"units {units}\nboundary {boundary}")
-    if skin is not None:
-        sim.command(f"neighbor {skin}")
-    sim.command(f"read_data {path}\ntimestep {dt!r}\npair_style dpd {T!r} {rc!r} {SEED}")
-    for line in coeffs:
-        sim.command(f"pair_coeff {line}")
-    return sim
+    setup = [] if skin is None else [f"neighbor {skin}"]
+    setup += [f"timestep {dt!r}", f"pair_style dpd {T!r} {rc!r} {SEED}"]
+    setup += [f"pair_coeff {line}" for line in coeffs]
+    return testing.build(tmp_path, x, setup="\n".join(setup), types=types, tags=tags, v=v,
+                         masses=masses, lo=lo, hi=hi, boundary=boundary, units=units, name=name)
 
 
 def reference(x, v, tags, types, coeff, *, T, seed=SEED, step=0, dt=DT, lo=None, length=None,
@@ -90,20 +64,6 @@ def reference(x, v, tags, types, coeff, *, T, seed=SEED, step=0, dt=DT, lo=None,
     return forces, energy, virial
 
 
-def by_tag(sim, array):
-    """Rows of an owned-particle array ordered by tag (storage order changes: spatial sort)."""
-    return np.asarray(array)[np.argsort(sim.tag)]
-
-
-def forces(sim):
-    """Forces on the owned particles, row k for tag k + 1."""
-    return by_tag(sim, sim.f)
-
-
-def index_of(sim, tag):
-    return int(np.flatnonzero(sim.tag == tag)[0])
-
-
 def unit(vector):
     vector = np.asarray(vector, float)
     return vector / np.linalg.norm(vector)
@@ -121,8 +81,8 @@ def test_conservative_force_and_energy_two_particles(tmp_path, r, gamma, T):
     sim.command("run 0")
     w = 1.0 - r / rc
     expected = a * w * direction
-    np.testing.assert_allclose(forces(sim)[0], expected, rtol=1e-12, atol=1e-12)
-    np.testing.assert_allclose(forces(sim)[1], -expected, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim)[0], expected, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim)[1], -expected, rtol=1e-12, atol=1e-12)
     assert sim.pe == pytest.approx(0.5 * a * rc * w * w, rel=1e-12)
     # virial sum_i r_i . f_i = r_ij . F_ij = a w r
     assert sum(sim.virial[:3]) == pytest.approx(a * w * r, rel=1e-10)
@@ -144,7 +104,7 @@ def test_per_pair_cutoff_sets_range_and_weight(tmp_path):
     sim = build(tmp_path, x, rc=1.0, coeffs=("1 1 20.0 0.0 1.5",))
     sim.command("run 0")
     w = 1.0 - 1.2 / 1.5
-    np.testing.assert_allclose(forces(sim)[0], [-20.0 * w, 0, 0], rtol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim)[0], [-20.0 * w, 0, 0], rtol=1e-12)
     assert sim.pe == pytest.approx(0.5 * 20.0 * 1.5 * w * w, rel=1e-12)
 
 
@@ -163,10 +123,10 @@ def test_dissipative_force_with_known_velocities(tmp_path, approach):
     w = 1.0 - r / rc
     radial = float(e @ (v[0] - v[1]))
     expected = -gamma * w * w * radial * e
-    np.testing.assert_allclose(forces(sim)[0], expected, rtol=1e-12, atol=1e-14)
-    np.testing.assert_allclose(forces(sim)[1], -expected, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(forces_by_tag(sim)[0], expected, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(forces_by_tag(sim)[1], -expected, rtol=1e-12, atol=1e-14)
     # friction: the force on i is along -r_hat when i approaches j (radial < 0 -> push apart)
-    assert np.sign(forces(sim)[0] @ e) == np.sign(-radial)
+    assert np.sign(forces_by_tag(sim)[0] @ e) == np.sign(-radial)
     assert sim.pe == 0.0
 
 
@@ -176,7 +136,7 @@ def test_tangential_velocity_alone_gives_no_force(tmp_path):
     v = np.array([[3.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
     sim = build(tmp_path, x, v=v, T=0.0, coeffs=("1 1 0.0 4.5",))
     sim.command("run 0")
-    np.testing.assert_allclose(forces(sim), 0.0, atol=1e-14)
+    np.testing.assert_allclose(forces_by_tag(sim), 0.0, atol=1e-14)
 
 
 @pytest.mark.parametrize("units, T, gamma, dt, rc, step", [
@@ -202,8 +162,8 @@ def test_random_force_is_sigma_w_xi_over_sqrt_dt(tmp_path, units, T, gamma, dt, 
     sigma = math.sqrt(2.0 * boltz * T * gamma)
     w = 1.0 - r / rc
     expected = sigma * w * xi / math.sqrt(dt) * e
-    np.testing.assert_allclose(forces(sim)[0], expected, rtol=1e-10)
-    np.testing.assert_allclose(forces(sim)[1], -expected, rtol=1e-10)
+    np.testing.assert_allclose(forces_by_tag(sim)[0], expected, rtol=1e-10)
+    np.testing.assert_allclose(forces_by_tag(sim)[1], -expected, rtol=1e-10)
     assert sim.pe == 0.0
 
 
@@ -225,7 +185,7 @@ def test_noise_changes_from_step_to_step_and_with_the_seed(tmp_path):
     for step in (0, 1, 2):
         sim = build(tmp_path, x, T=1.0, coeffs=("1 1 0.0 4.5",), name=f"s{step}")
         sim.command(f"reset_timestep {step}\nrun 0")
-        seen.append(forces(sim)[0])
+        seen.append(forces_by_tag(sim)[0])
     assert not np.allclose(seen[0], seen[1]) and not np.allclose(seen[1], seen[2])
     assert pair_gaussian(SEED, 3, 1, 2) != pair_gaussian(SEED + 1, 3, 1, 2)
 
@@ -237,7 +197,7 @@ def test_full_force_two_particles_all_parts_together(tmp_path):
     sim = build(tmp_path, x, v=v, T=T, rc=rc, coeffs=(f"1 1 {a} {gamma}",))
     sim.command("reset_timestep 11\nrun 0")
     f, energy, virial = reference(x, v, [1, 2], [1, 1], {(1, 1): (a, gamma, rc)}, T=T, step=11)
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-12, atol=1e-12)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
     np.testing.assert_allclose(sim.virial[:3], np.diag(virial), rtol=1e-9, atol=1e-9)
 
@@ -249,20 +209,9 @@ def test_conservative_force_is_minus_gradient_of_energy(tmp_path):
     coeffs = ("1 1 25.0 0.0", "2 2 15.0 0.0", "1 2 40.0 0.0 1.3")
     x = np.array([[5.0, 5.0, 5.0], [5.55, 5.2, 4.9], [4.6, 5.7, 5.35]])
     sim = build(tmp_path, x, types=[1, 1, 2], T=1.0, rc=1.0, coeffs=coeffs)
-    sim.command("run 0")
-    analytic = forces(sim)
+    analytic, numeric = energy_gradient(sim, h=1e-6)
     assert np.abs(analytic).max() > 1.0
-    h = 1e-6
-    for k in range(3):
-        for d in range(3):
-            energies = []
-            for sign in (1, -1):
-                sim.x[index_of(sim, k + 1), d] = x[k, d] + sign * h
-                sim.command("run 0")
-                energies.append(sim.pe)
-            sim.x[index_of(sim, k + 1), d] = x[k, d]
-            derivative = (energies[0] - energies[1]) / (2 * h)
-            assert -derivative == pytest.approx(analytic[k, d], rel=1e-6, abs=1e-6), (k, d)
+    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-6)
 
 
 # ---- Newton's third law, periodic images --------------------------------------------------------
@@ -279,8 +228,8 @@ def test_pair_across_periodic_face_matches_minimum_image(tmp_path):
     f, energy, virial = reference(x, v, [1, 2], [1, 1], {(1, 1): (a, gamma, rc)}, T=T,
                                   length=[5, 5, 5], periodic=(True, True, True))
     assert np.abs(f).max() > 1.0
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-12, atol=1e-12)
-    np.testing.assert_allclose(forces(sim).sum(axis=0), 0.0, atol=1e-13)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim).sum(axis=0), 0.0, atol=1e-13)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
     # the virial of a pair is r_ij . F_ij with the minimum-image r_ij, not the raw positions
     np.testing.assert_allclose(sim.virial[:3], np.diag(virial), rtol=1e-9, atol=1e-12)
@@ -300,11 +249,11 @@ def test_ghost_velocities_follow_their_owners_during_a_run(tmp_path):
     assert sim.neighbor.builds == 1
     # forces of the last step were computed with v(t - dt/2) = v(t) - dt/(2m) f(t)
     table = {(1, 1): (25.0, gamma, rc)}
-    v_half = by_tag(sim, sim.v) - 0.5 * DT * forces(sim)
+    v_half = by_tag(sim, sim.v) - 0.5 * DT * forces_by_tag(sim)
     now = by_tag(sim, sim.x)
     f, _, _ = reference(now, v_half, [1, 2], [1, 1], table, T=0.0, length=[5, 5, 5],
                         periodic=(True, True, True))
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-10, atol=1e-12)
     # a ghost still carrying the velocity it had when it was made would give another force
     stale, _, _ = reference(now, np.array([v_half[0], v[1]]), [1, 2], [1, 1], table, T=0.0,
                             length=[5, 5, 5], periodic=(True, True, True))
@@ -318,7 +267,7 @@ def test_pair_across_a_box_corner_counts_once(tmp_path):
     sim.command("run 0")
     f, energy, _ = reference(x, np.zeros((2, 3)), [1, 2], [1, 1], {(1, 1): (25.0, 0.0, 1.0)}, T=0.0,
                              length=[3, 3, 3], periodic=(True, True, True))
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-12)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
 
 
@@ -329,7 +278,7 @@ def test_small_box_two_images_of_one_partner_both_interact(tmp_path):
                 boundary="p p p")
     sim.command("run 0")
     expected_x = -25.0 * (1 - 0.85) + 25.0 * (1 - 0.95)
-    np.testing.assert_allclose(forces(sim)[0], [expected_x, 0, 0], atol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim)[0], [expected_x, 0, 0], atol=1e-12)
     assert sim.pe == pytest.approx(0.5 * 25.0 * (0.15 ** 2 + 0.05 ** 2), rel=1e-12)
 
 
@@ -350,8 +299,8 @@ def test_many_particles_match_reference_and_newtons_third_law(tmp_path):
     f, energy, virial = reference(x, v, np.arange(1, n + 1), types, coeff, T=1.3, step=42,
                                   length=[L, L, L], periodic=(True, True, True))
     scale = np.abs(f).max()
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-10, atol=1e-12 * scale)
-    assert np.abs(forces(sim).sum(axis=0)).max() < 1e-12 * np.abs(forces(sim)).sum()
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-10, atol=1e-12 * scale)
+    assert np.abs(forces_by_tag(sim).sum(axis=0)).max() < 1e-12 * np.abs(forces_by_tag(sim)).sum()
     assert sim.pe == pytest.approx(energy, rel=1e-12)
     np.testing.assert_allclose(sim.virial[:3], np.diag(virial), rtol=1e-9)
 
@@ -368,14 +317,14 @@ def test_per_type_pair_coefficients_and_cutoffs(tmp_path):
     sim.command("run 0")
     table = {(1, 1): (a11, 4.5, 1.0), (2, 2): (a22, 4.5, 1.0), (1, 2): (a12, g12, rc12)}
     f, energy, _ = reference(x, v, [1, 2, 3], [1, 1, 2], table, T=0.0)
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-12, atol=1e-13)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-12, atol=1e-13)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
     # the 1-1 pair (1.2 apart) does not interact: forces on 1 and 2 point away from particle 3 only
     for i in (0, 1):
-        assert abs(np.cross(forces(sim)[i], x[i] - x[2])).max() < 1e-9 * np.abs(forces(sim)[i]).max()
+        assert abs(np.cross(forces_by_tag(sim)[i], x[i] - x[2])).max() < 1e-9 * np.abs(forces_by_tag(sim)[i]).max()
     # shrinking the 1-2 cutoff below both distances switches every interaction off
     sim.command("pair_coeff 1 2 40.0 2.0 0.5\nrun 0")
-    np.testing.assert_allclose(forces(sim), 0.0, atol=0)
+    np.testing.assert_allclose(forces_by_tag(sim), 0.0, atol=0)
     assert sim.pe == 0.0
 
 
@@ -385,7 +334,7 @@ def test_star_coefficients_then_override_one_pair(tmp_path):
     sim.command("run 0")
     table = {(1, 1): (25.0, 0.0, 1.0), (2, 2): (25.0, 0.0, 1.0), (1, 2): (60.0, 0.0, 1.0)}
     f, energy, _ = reference(x, np.zeros((3, 3)), [1, 2, 3], [1, 2, 2], table, T=0.0)
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-12)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-12)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
 
 
@@ -398,7 +347,7 @@ def test_pairs_at_or_beyond_cutoff_give_nothing(tmp_path, r):
     sim = build(tmp_path, x, v=v, T=2.0, rc=1.0, coeffs=("1 1 25.0 4.5",))
     sim.command("run 0")
     assert sim.pair_list.offsets[-1] == 1    # the pair is in the list: the kernel must cut it
-    assert np.all(forces(sim) == 0.0)
+    assert np.all(forces_by_tag(sim) == 0.0)
     assert sim.pe == 0.0
 
 
@@ -409,9 +358,9 @@ def test_coincident_particles_give_no_nan(tmp_path, offset):
     v = np.array([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
     sim = build(tmp_path, x, v=v, T=1.0, coeffs=("1 1 25.0 4.5",))
     sim.command("run 0")
-    assert np.isfinite(forces(sim)).all() and math.isfinite(sim.pe)
+    assert np.isfinite(forces_by_tag(sim)).all() and math.isfinite(sim.pe)
     f, energy, _ = reference(x, v, [1, 2, 3], [1, 1, 1], {(1, 1): (25.0, 4.5, 1.0)}, T=1.0)
-    np.testing.assert_allclose(forces(sim), f, rtol=1e-10, atol=1e-10)
+    np.testing.assert_allclose(forces_by_tag(sim), f, rtol=1e-10, atol=1e-10)
     assert sim.pe == pytest.approx(energy, rel=1e-12)
     sim.command("fix 1 all nve\nrun 5")
     assert np.isfinite(sim.x).all() and np.isfinite(sim.v).all()
@@ -434,13 +383,13 @@ class _Record(Fix):
         self.temperature.append(float(m @ (thermal ** 2).sum(axis=1)) / (3 * len(m) - 3))
 
 
-registry.register("fix", _Record.name, _Record)
+register_styles(_Record)
 
 
-def test_momentum_is_conserved_and_thermostat_is_galilean_invariant():
+def test_momentum_is_conserved_and_thermostat_is_galilean_invariant(make_sim):
     """512 particles, 200 steps: total momentum (with a net drift) stays put to round-off; the
     thermal temperature relaxes to T whatever the drift."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("""
         units lj
         atom_modify sort 10 0.0
@@ -476,13 +425,9 @@ def _shuffled_run(tmp_path, order, name, sort_every):
     x = rng.random((n, 3)) * L
     v = rng.normal(size=(n, 3))
     types = 1 + (np.arange(n) % 2)
-    atoms = [(i + 1, types[i], *x[i]) for i in order]
-    path = tmp_path / name
-    write_data(path, (0, 0, 0), (L, L, L), atoms, v[order], ntypes=2)
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
+    sim = testing.build(tmp_path, x[order], types=types[order], tags=order + 1, v=v[order],
+                        hi=(L, L, L), name=name, setup=f"""
         atom_modify sort {sort_every} 0.0
-        read_data {path}
         pair_style dpd 1.0 1.0 2024
         pair_coeff * * 25.0 4.5
         pair_coeff 1 2 35.0 4.5 1.1
@@ -556,9 +501,7 @@ def test_pair_gaussian_statistics():
 
 # ---- bad input ----------------------------------------------------------------------------------
 def _box():
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 2 box")
-    return sim
+    return make_box(box="0 5 0 5 0 5", ntypes=2)
 
 
 @pytest.mark.parametrize("line, words", [

@@ -12,7 +12,8 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, ScriptError, Simulation, observables, pair_gaussian, registry
+from pdps_core.api import Fix, ScriptError, Simulation, observables, pair_gaussian
+from pdps_core.testing import by_tag, make_box, register_styles
 
 SEED = 7351
 SHARDLOW_KEY = 0x53484152444C4F57      # documented in shardlow.py: noise key = seed ^ this
@@ -35,11 +36,7 @@ class _Record(Fix):
         self.temperature.append(float(m @ (thermal ** 2).sum(axis=1)) / (3 * len(m) - 3))
 
 
-registry.register("fix", _Record.name, _Record)
-
-
-def by_tag(sim, array):
-    return np.asarray(array)[np.argsort(sim.tag)]
+register_styles(_Record)
 
 
 def mean_and_error(values, blocks=20):
@@ -349,15 +346,11 @@ def test_shardlow_temperature_error_is_smaller_than_velocity_verlet_at_large_dt(
 
 # ---- fix shardlow: bad scripts ------------------------------------------------------------------
 def _box(pair="pair_style dpd/fdt 1.0 1.0 5\npair_coeff * * 25.0 4.5"):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        region box block 0 4 0 4 0 4
-        create_box 1 box
+    return make_box(f"""
         mass 1 1.0
         create_particle 1 random 20 3 box
         {pair}
-    """)
-    return sim
+    """, box="0 4 0 4 0 4")
 
 
 @pytest.mark.parametrize("pair, got", [
