@@ -11,7 +11,8 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import Region, ScriptError, StyleArgs, registry
+from pdps_core.api import Region, ScriptError, StyleArgs
+from pdps_core.testing import make_box, register_styles
 from pdps_granular_contact import contact_models
 
 MASS = math.pi / 6.0
@@ -23,9 +24,9 @@ def impact(sim, wall, start, velocity, dt, steps, rotate="yes"):
     sim.command(f"""
         create_particle 1 single {start[0]} {start[1]} {start[2]} diameter 1 density 1
         velocity all set {velocity[0]} {velocity[1]} {velocity[2]}
-        fix 1 all test/wall_nve_sphere {rotate}
+        fix 1 all test/nve_sphere rotate {rotate}
         fix w all {wall}
-        fix r all test/wall_record
+        fix r all test/record
         timestep {dt}
         run {steps}
     """)
@@ -35,7 +36,7 @@ def impact(sim, wall, start, velocity, dt, steps, rotate="yes"):
 def measure_rebound(record, gap_of, speed):
     """Restitution (speed after / speed before) and contact time from the times the gap (distance
     from the centre to the wall minus R) changes sign, by linear interpolation."""
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     x = record.series("x")
     gap = np.array([gap_of(p) for p in x])
     down = np.flatnonzero((gap[:-1] > 0) & (gap[1:] <= 0))[0]
@@ -159,10 +160,10 @@ def test_sliding_sphere_starts_rolling_at_five_sevenths_of_its_speed(scene):
         region floor block INF INF INF INF -2 0
         create_particle 1 single -3 0 {0.5 - delta} diameter 1 density 1
         velocity all set {v0} 0 0
-        fix 1 all test/wall_nve_sphere
+        fix 1 all test/nve_sphere
         fix 2 all test/wall_gravity 0 0 -{g}
         fix w all wall/dem lsd region floor {E} {KN} {mu}
-        fix r all test/wall_record
+        fix r all test/record
         timestep {TC / 50}
     """)
     t_roll = 2 * v0 / (7 * mu * g)
@@ -172,7 +173,7 @@ def test_sliding_sphere_starts_rolling_at_five_sevenths_of_its_speed(scene):
     assert v[0] == pytest.approx(5 / 7 * v0, rel=0.01)
     assert omega[1] * 0.5 == pytest.approx(v[0], rel=0.01)     # rolling: omega x (-R z) = -v
     record = sim.fixes["r"]
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     early = t < 0.5 * t_roll
     slope = np.polyfit(t[early], record.series("v")[early, 0], 1)[0]
     assert slope == pytest.approx(-mu * g, rel=0.01)
@@ -192,18 +193,13 @@ def test_contact_history_is_kept_during_a_contact_and_freed_after(scene):
 
 def test_point_particles_touch_at_the_cutoff():
     """particle_style atomic: the PDPS cutoff is the contact distance (no radius, no rotation)."""
-    from pdps_core.api import Simulation
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        boundary f f f
-        region box block -4 4 -4 4 -4 4
-        create_box 1 box
+    sim = make_box(f"""
         mass 1 2
         region floor block -3 3 -3 3 -3.5 0
         create_particle 1 single 0 0 0.2
         fix w all wall/dem lsd region floor {E} {KN} 0 0 0 0 0.25
         run 0
-    """)
+    """, box="-4 4 -4 4 -4 4", boundary="f f f")
     np.testing.assert_allclose(sim.f[0], [0, 0, KN * 0.05], rtol=1e-12)
 
 
@@ -225,7 +221,7 @@ class Lump(Region):
         return np.zeros(len(x), dtype=bool)
 
 
-registry.register("region", Lump.name, Lump)
+register_styles(Lump)
 
 
 @pytest.mark.parametrize("words, message", [
@@ -249,10 +245,7 @@ def test_bad_arguments(scene, words, message):
 
 
 def test_atomic_particles_without_cutoff_are_an_error():
-    from pdps_core.api import Simulation
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block -4 4 -4 4 -4 4\ncreate_box 1 box\nmass 1 1\n"
-                "create_particle 1 single 0 0 0\nregion floor block -3 3 -3 3 -3.5 0\n"
-                "fix w all wall/dem lsd region floor 0.8 1e4 0.3")
+    sim = make_box("mass 1 1\ncreate_particle 1 single 0 0 0\nregion floor block -3 3 -3 3 -3.5 0\n"
+                   "fix w all wall/dem lsd region floor 0.8 1e4 0.3", box="-4 4 -4 4 -4 4")
     with pytest.raises(ScriptError, match="needs particle radii"):
         sim.command("run 0")

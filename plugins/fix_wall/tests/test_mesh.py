@@ -14,7 +14,8 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.api import Pair, ScriptError, Simulation, StyleArgs, registry
+from pdps_core.api import Pair, ScriptError, Simulation, StyleArgs
+from pdps_core.testing import make_box, register_styles
 from pdps_granular_contact import contact_models
 
 MASS = math.pi / 6.0
@@ -29,10 +30,10 @@ def run_sphere(sim, mesh, start, velocity=(0, 0, 0), dt=TC / 100, steps=0, rotat
     sim.command(f"""
         create_particle 1 single {start[0]} {start[1]} {start[2]} diameter 1 density 1
         velocity all set {velocity[0]} {velocity[1]} {velocity[2]}
-        fix 1 all test/wall_nve_sphere {rotate}
+        fix 1 all test/nve_sphere rotate {rotate}
         {f"fix 2 all test/wall_gravity {gravity[0]} {gravity[1]} {gravity[2]}" if gravity else ""}
         fix w all wall/mesh {mesh}
-        fix r all test/wall_record
+        fix r all test/record
         timestep {dt}
     """)
     if omega is not None:
@@ -43,7 +44,7 @@ def run_sphere(sim, mesh, start, velocity=(0, 0, 0), dt=TC / 100, steps=0, rotat
 
 def rebound(record, gap_of):
     """Speed after the impact and the contact time, from where the gap changes sign."""
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     gap = np.array([gap_of(p) for p in record.series("x")])
     down = np.flatnonzero((gap[:-1] > 0) & (gap[1:] <= 0))[0]
     up = np.flatnonzero((gap[:-1] <= 0) & (gap[1:] > 0))[0]
@@ -112,7 +113,7 @@ def incline(scene, data, degrees, mu, rotate, seconds=0.4):
     record = run_sphere(sim, f"file {data}/square.stl scale 4 rotate axis 0 1 0 angle {degrees} "
                              f"model lsd {E} {KN} {mu}",
                         centre, dt=dt, steps=int(seconds / dt), rotate=rotate, gravity=(0, 0, -g))
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     along = record.series("v") @ downhill
     late = t > 0.25 * seconds          # after the tangential spring has settled
     return np.polyfit(t[late], along[late], 1)[0], record, downhill, normal
@@ -126,7 +127,7 @@ def test_rolling_without_slipping_below_the_limit(scene, data):
     assert a == pytest.approx(5 / 7 * 10.0 * math.sin(math.radians(20.0)), rel=0.01)
     # the contact point stays at rest, also when the contact passes from one triangle to the next
     # (the spring is handed over: without that the slip jumps to 4 % of the speed)
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     v, omega = record.series("v"), record.series("omega")
     slip = np.linalg.norm(v + np.cross(omega, -0.5 * normal), axis=1)
     settled = t > 0.15
@@ -140,7 +141,7 @@ def test_sliding_above_the_rolling_limit(scene, data):
     theta = math.radians(40.0)
     a, record, downhill, normal = incline(scene, data, 40.0, 0.2, "yes")
     assert a == pytest.approx(10.0 * (math.sin(theta) - 0.2 * math.cos(theta)), rel=0.01)
-    t = np.array(record.rows["t"])
+    t = np.array(record.t)
     spin = np.linalg.norm(record.series("omega"), axis=1)
     late = t > 0.1
     assert np.polyfit(t[late], spin[late], 1)[0] == pytest.approx(
@@ -255,7 +256,7 @@ def test_conveyor_drags_a_resting_sphere_to_the_belt_speed(scene, data):
     def final(rotate):
         record = run_sphere(scene(), belt, start, dt=dt, steps=int(seconds / dt), rotate=rotate,
                             gravity=(0, 0, -g))
-        late = np.array(record.rows["t"]) > seconds - 0.2
+        late = np.array(record.t) > seconds - 0.2
         omega = record.series("omega")[late, 1].mean() if rotate == "yes" else 0.0
         return record.series("v")[late, 0].mean(), omega
 
@@ -332,7 +333,7 @@ class NoForce(Pair):
         self.energy = 0.0
 
 
-registry.register("pair", NoForce.name, NoForce)
+register_styles(NoForce)
 
 
 def test_re_sorted_particles_keep_their_walls_and_histories(scene, data):
@@ -347,7 +348,7 @@ def test_re_sorted_particles_keep_their_walls_and_histories(scene, data):
         if sort:
             sim.command(f"pair_style {NoForce.name}\npair_coeff * *\natom_modify sort 5 0.5")
         sim.command(f"""
-            fix 1 all test/wall_nve_sphere
+            fix 1 all test/nve_sphere
             fix 2 all test/wall_gravity 0 0 -10
             fix w all wall/mesh file {data}/hopper.stl model lsd 0.5 {KN} 0.4
             timestep {TC / 30}
@@ -394,8 +395,7 @@ def mesh_error(tmp_path, name, content):
     path = tmp_path / name
     if content is not None:
         path.write_bytes(content)
-    sim = Simulation(screen=False, log=None)
-    sim.command("particle_style sphere\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box")
+    sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
     with pytest.raises(ScriptError) as info:
         sim.command(f"fix w all wall/mesh file {path} model lsd 0.8 1e4 0.3")
     return str(info.value), str(path)
@@ -430,8 +430,7 @@ def test_file_that_is_not_a_mesh(tmp_path):
 
 def test_placement_is_applied_in_the_order_given(data):
     """LIGGGHTS: scale, move and rotate act in the order written."""
-    sim = Simulation(screen=False, log=None)
-    sim.command("particle_style sphere\nregion box block -9 9 -9 9 -9 9\ncreate_box 1 box")
+    sim = make_box(box="-9 9 -9 9 -9 9", particle_style="sphere")
     corner = []
     for words in ("scale 2 move 1 0 0", "move 1 0 0 scale 2",
                   "move 1 0 0 rotate axis 0 0 1 angle 90"):
@@ -470,8 +469,7 @@ def test_relative_file_names_are_read_from_the_script_folder(data, tmp_path):
     ("file {data}/square.stl model jkr 1", "model must be one of lsd, hertz (got jkr)"),
 ])
 def test_bad_arguments(data, words, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("particle_style sphere\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box")
+    sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
     with pytest.raises(ScriptError) as info:
         sim.command("fix w all wall/mesh " + words.format(data=data))
     assert message in str(info.value)
@@ -479,9 +477,7 @@ def test_bad_arguments(data, words, message):
 
 
 def test_point_particles_are_an_error(data):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"region box block -4 4 -4 4 -4 4\ncreate_box 1 box\nmass 1 1\n"
-                f"create_particle 1 single 0 0 1\nfix w all wall/mesh file {data}/square.stl "
-                f"model lsd 0.8 1e4 0.3")
+    sim = make_box(f"mass 1 1\ncreate_particle 1 single 0 0 1\nfix w all wall/mesh file {data}/square.stl "
+                   f"model lsd 0.8 1e4 0.3", box="-4 4 -4 4 -4 4")
     with pytest.raises(ScriptError, match=r"needs particle radii \(particle_style sphere\)"):
         sim.command("run 0")

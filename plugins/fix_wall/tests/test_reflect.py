@@ -10,7 +10,8 @@ previous step's, m g.
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, ScriptError, Simulation, registry
+from pdps_core.api import Fix, ScriptError, Simulation
+from pdps_core.testing import make_box, register_styles
 
 
 class Probe(Fix):
@@ -21,26 +22,21 @@ class Probe(Fix):
             tuple(sim.particles.arrays[k][0].copy() for k in ("x", "v", "f")))
 
 
-registry.register("fix", Probe.name, Probe)
+register_styles(Probe)
 
 
 def crossing(wall, x0=(1, 5, 5), v0=(-4.0625, 2.125, 0.75), box="-2 10 0 10 0 10"):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        units lj
-        boundary f f f
-        region box block {box}
-        create_box 1 box
+    sim = make_box(f"""
         mass 1 1
         create_particle 1 single {x0[0]} {x0[1]} {x0[2]}
         velocity all set {v0[0]} {v0[1]} {v0[2]}
         timestep 0.25
-        fix 1 all test/wall_nve_sphere no
+        fix 1 all test/nve_sphere rotate no
         fix 2 all test/wall_gravity 0.5 -1 2
         fix 3 all {wall}
         fix 4 all test/wall_reflect_probe
         run 1
-    """)
+    """, box=box, boundary="f f f")
     (x, v, f), = sim.probe
     return sim, x, v, f
 
@@ -124,21 +120,17 @@ def test_pdps_form_ignores_the_lattice():
 
 
 def test_only_the_group_is_reflected():
-    sim = Simulation(screen=False, log=None)
-    sim.command("""
-        boundary f f f
-        region box block -5 10 0 10 0 10
-        create_box 2 box
+    sim = make_box("""
         mass * 1
         create_particle 1 single 1 5 5
         create_particle 2 single 1 6 5
         group one type 1
         velocity all set -4 0 0
         timestep 0.25
-        fix 1 all test/wall_nve_sphere no
+        fix 1 all test/nve_sphere rotate no
         fix 3 one wall/reflect specular xlo 0.25
         run 1
-    """)
+    """, box="-5 10 0 10 0 10", boundary="f f f", ntypes=2)
     order = np.argsort(sim.tag)
     np.testing.assert_array_equal(sim.x[order, 0], [0.5, 0.0])
     np.testing.assert_array_equal(sim.v[order, 0], [4.0, -4.0])
@@ -155,8 +147,7 @@ def test_only_the_group_is_reflected():
     ("xlo 1 units metres", "units must be one of box, lattice (got metres)"),
 ])
 def test_bad_arguments(words, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 10 0 10 0 10\ncreate_box 1 box")
+    sim = make_box()
     with pytest.raises(ScriptError) as info:
         sim.command(f"fix 3 all wall/reflect {words}")
     assert message in str(info.value)
@@ -164,7 +155,6 @@ def test_bad_arguments(words, message):
 
 
 def test_z_wall_in_two_dimensions_is_an_error():
-    sim = Simulation(screen=False, log=None)
-    sim.command("dimension 2\nboundary p p p\nregion box block 0 10 0 10 -0.5 0.5\ncreate_box 1 box")
+    sim = make_box(box="0 10 0 10 -0.5 0.5", dimension=2)
     with pytest.raises(ScriptError, match="wall zlo in a 2-d simulation"):
         sim.command("fix 3 all wall/reflect specular zlo 0")

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from pdps_core.testing import sphere_mass
 from pdps_granular_contact import contact_models as cm
 
 V0 = 1.0            # each sphere approaches at V0, so the impact speed is 2 V0
@@ -22,8 +23,8 @@ def collide(dem, pair, coeffs, tc, first, second, ntypes=1):
     gap = 2.0 * V0 * 0.5 * dt
     sim = dem.spheres(pair, coeffs,
                       [(t1, 4.0, 5, 5, d1, rho1), (t2, 4.0 + contact + gap, 5, 5, d2, rho2)], ntypes=ntypes,
-                      extra=f"timestep {dt!r}\nfix rec all test/dem/record\nfix move all test/dem/nve_sphere")
-    m1, m2 = dem.sphere_mass(d1, rho1), dem.sphere_mass(d2, rho2)
+                      extra=f"timestep {dt!r}\nfix rec all test/dem/record\nfix move all test/nve_sphere")
+    m1, m2 = sphere_mass(d1, rho1), sphere_mass(d2, rho2)
     # centre-of-mass frame, so the pair stays in the box
     dem.set_motion(sim, 1, v=(2 * V0 * m2 / (m1 + m2), 0, 0))
     dem.set_motion(sim, 2, v=(-2 * V0 * m1 / (m1 + m2), 0, 0))
@@ -43,7 +44,7 @@ def test_lsd_restitution_and_contact_time(dem, e, second):
     spring-dashpot time pi / sqrt(kn/m* - (Cn/2m*)^2)."""
     kn = 1.0e4
     first = (1, 1.0, 1.0)
-    m1, m2 = dem.sphere_mass(*first[1:]), dem.sphere_mass(*second[1:])
+    m1, m2 = sphere_mass(*first[1:]), sphere_mass(*second[1:])
     m_star = m1 * m2 / (m1 + m2)
     tc = cm.lsd_contact_time(kn, cm.lsd_damping(kn, m_star, e), m_star)
     restitution, duration, dt = collide(dem, "dem/lsd 0.3 1.0", [f"* * kn {kn} e {e} mu 0.5"], tc,
@@ -114,7 +115,7 @@ def test_hertz_restitution_and_contact_time(dem, e, second, coeffs):
     e_star = 1.0 / ((1 - nu1 ** 2) / y1 + (1 - nu2 ** 2) / y2)
     r1, r2 = 0.5 * first[1], 0.5 * second[1]
     r_star = r1 * r2 / (r1 + r2)
-    m1, m2 = dem.sphere_mass(*first[1:]), dem.sphere_mass(*second[1:])
+    m1, m2 = sphere_mass(*first[1:]), sphere_mass(*second[1:])
     m_star = m1 * m2 / (m1 + m2)
     v = 2.0 * V0
     elastic = cm.hertz_contact_time(e_star, r_star, m_star, v)

@@ -4,6 +4,8 @@ spring across periodic faces, neighbor rebuilds and re-sorting; static friction;
 import numpy as np
 import pytest
 
+from pdps_core.testing import sphere_mass, unwrapped
+
 PAIRS = {"lsd": ("dem/lsd 0.3 1.0", ["* * kn 1000 e 0.7 mu 0.3"]),
          "hertz": ("dem/hertz", ["* * 2.0e5 0.3 0.7 0.3"])}
 
@@ -15,7 +17,7 @@ def oblique(dem, style, shift=0.0, steps=1200, extra=""):
     x1, x2 = (4.0 + shift) % 10.0, (4.96 + shift) % 10.0
     sim = dem.spheres(pair, coeffs, [(1, x1, 5.0, 5.02, 1.0, 1.0), (1, x2, 5.45, 4.98, 1.0, 1.0)],
                       extra=("timestep 0.0001\nfix rec all test/dem/record\n"
-                             f"fix move all test/dem/nve_sphere\n{extra}"))
+                             f"fix move all test/nve_sphere\n{extra}"))
     dem.set_motion(sim, 1, v=(1.0, 0.0, -0.5), omega=(0.0, 3.0, 8.0))
     dem.set_motion(sim, 2, v=(-1.0, 0.0, 0.5), omega=(-4.0, 0.0, -2.0))
     sim.command(f"run {steps}")
@@ -55,7 +57,7 @@ def test_oblique_contact_obeys_coulomb_newton_and_conserves_angular_momentum(dem
     assert np.allclose(torques[touching, 0], np.cross(-arm, f), rtol=1e-10, atol=1e-12)
     assert np.allclose(torques[touching, 1], np.cross(arm, -f), rtol=1e-10, atol=1e-12)
     # angular momentum about the origin, orbital plus spin, to round-off; linear momentum too
-    mass, radius = np.full(2, dem.sphere_mass(1.0, 1.0)), np.full(2, 0.5)
+    mass, radius = np.full(2, sphere_mass(1.0, 1.0)), np.full(2, 0.5)
     momenta = np.array([dem.angular_momentum(x, v, w, mass, radius)
                         for x, v, w in zip(record.x, record.v, record.omega)])
     assert np.abs(momenta - momenta[0]).max() < 1e-12 * np.abs(momenta[0]).max()
@@ -88,7 +90,7 @@ def test_spheres_apart_feel_exactly_nothing_and_their_contact_is_forgotten(dem):
     assert (sim.pair.history.partner == -1).all()          # the collision's slots were freed
     sim = dem.spheres("dem/lsd 0.3 1.0", ["* * kn 1000 e 0.7 mu 0.3"],
                       [(1, 4.0, 5.0, 5.0, 1.0, 1.0), (1, 5.0 + 1e-12, 5.0, 5.0, 1.0, 1.0)],
-                      extra="fix rec all test/dem/record\nfix move all test/dem/nve_sphere")
+                      extra="fix rec all test/dem/record\nfix move all test/nve_sphere")
     dem.set_motion(sim, 1, omega=(0.0, 0.0, 5.0))
     sim.command("run 3")
     record = sim.fixes["rec"]
@@ -108,12 +110,12 @@ def resting(dem, load_x, first_steps=1500, second_steps=1500):
                       ntypes=2,
                       extra=("timestep 0.0002\nneigh_modify every 1 delay 0 check no\n"
                              "atom_modify sort 0 0\ngroup top type 2\n"
-                             "fix rec all test/dem/record\nfix move top test/dem/nve_sphere rotate no\n"
-                             f"fix push top test/dem/load {load_x} 0.0 -10.0"))
+                             "fix rec all test/dem/record\nfix move top test/nve_sphere rotate no\n"
+                             f"fix push top test/force {load_x} 0.0 -10.0"))
     builds = sim.neighbors.builds
     sim.command(f"run {first_steps}")
     first_order = list(sim.tag)
-    middle = dem.unwrapped(sim)[0].copy()
+    middle = unwrapped(sim)[0].copy()
     sim.command(f"atom_modify sort 1 0\nrun {second_steps}")
     assert first_order == [1, 2] and list(sim.tag) == [2, 1]
     assert sim.neighbors.builds - builds >= first_steps + second_steps
@@ -123,7 +125,7 @@ def resting(dem, load_x, first_steps=1500, second_steps=1500):
 def test_a_sphere_under_a_tangential_load_below_mu_fn_stays_stuck_across_rebuilds_and_resorts(dem):
     load = 0.5 * 0.5 * 10.0
     sim, middle, kt = resting(dem, load)
-    end = dem.unwrapped(sim)[0]
+    end = unwrapped(sim)[0]
     shift = middle[0] - 5.0
     # held by the tangential spring alone: displaced by load / kt, and still there after the re-sorts
     assert shift == pytest.approx(load / kt, rel=0.01)
@@ -144,9 +146,9 @@ def test_a_sphere_under_a_tangential_load_above_mu_fn_slides_with_the_friction_f
     sim, _, kt = resting(dem, load, first_steps=300, second_steps=300)
     record = sim.fixes["rec"]
     # driven by at least load - mu Fn from the start: far beyond what the spring alone would allow
-    slid = dem.unwrapped(sim)[0][0] - 5.0
+    slid = unwrapped(sim)[0][0] - 5.0
     duration = 600 * 0.0002
-    assert slid > 0.9 * 0.5 * (load - 0.5 * 10.0) / dem.sphere_mass(1.0, 1.0) * duration ** 2
+    assert slid > 0.9 * 0.5 * (load - 0.5 * 10.0) / sphere_mass(1.0, 1.0) * duration ** 2
     assert slid > 20 * 0.5 * 0.5 * 10.0 / kt
     # the contact force on the fixed sphere: sliding friction mu |Fn| once the spring has stretched
     n, _ = normals(record)
@@ -164,13 +166,13 @@ def test_a_sphere_spinning_on_another_is_braked_by_sliding_friction(dem, style, 
     overlap = 1.0e-3
     sim = dem.spheres(style, [coeff], [(1, 5.0, 5.0, 5.0, 1.0, 1.0), (2, 5.0, 5.0, 6.0 - overlap, 1.0, 1.0)],
                       ntypes=2, extra=("timestep 0.0002\ngroup top type 2\nfix rec all test/dem/record\n"
-                                       "fix spin top test/dem/nve_sphere translate no"))
+                                       "fix spin top test/nve_sphere translate no"))
     dem.set_motion(sim, 2, omega=(5.0, 0.0, 0.0))
     sim.command("run 300")
     record = sim.fixes["rec"]
     fn = -np.array(record.forces)[:, 0, 2]                  # the normal force on A, along -z
     assert fn == pytest.approx(fn[0], rel=1e-12) and fn[0] > 0
-    inertia = 0.4 * dem.sphere_mass(1.0, 1.0) * 0.25
+    inertia = 0.4 * sphere_mass(1.0, 1.0) * 0.25
     rate = (0.5 - 0.5 * overlap) * 0.5 * fn[0] / inertia
     spin = np.array(record.omega)[:, 1, 0]
     assert spin == pytest.approx(5.0 - rate * 0.0002 * np.arange(1, 301), rel=1e-9)

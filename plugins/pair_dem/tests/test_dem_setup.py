@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, SimulationError
+from pdps_core.testing import make_box, sphere_mass, unwrapped
 from pdps_granular_contact import contact_models as cm
 
 BOX = "units lj\nparticle_style sphere\nregion box block 0 10 0 10 0 10\ncreate_box 2 box\n"
@@ -72,11 +73,11 @@ def test_point_particles_and_a_box_thinner_than_a_particle_are_refused():
 
 
 def test_a_particle_with_more_contacts_than_slots_stops_the_run():
-    sim = Simulation(screen=False, log=None)
-    sim.command(BOX + "create_particle 1 single 5 5 5\n" + "".join(
+    sim = make_box("create_particle 1 single 5 5 5\n" + "".join(
         f"create_particle 1 single {5 + 0.99 * math.cos(a)} {5 + 0.99 * math.sin(a)} 5\n"
         for a in (0.0, 2.0, 4.0))
-        + "pair_style dem/lsd 0.3 1.0 max_contacts 2\npair_coeff * * kn 1000 mu 0.5")
+        + "pair_style dem/lsd 0.3 1.0 max_contacts 2\npair_coeff * * kn 1000 mu 0.5", ntypes=2,
+                   particle_style="sphere")
     with pytest.raises(SimulationError) as info:
         sim.command("run 1")
     assert str(info.value) == ("<command>:1: run: particle 1 has more than 2 contacts at step 1; "
@@ -84,10 +85,9 @@ def test_a_particle_with_more_contacts_than_slots_stops_the_run():
 
 
 def test_the_neighbor_cutoff_covers_the_largest_contact_whatever_the_given_cutoff():
-    sim = Simulation(screen=False, log=None)
-    sim.command(BOX + "create_particle 1 single 5 5 5 diameter 3\ncreate_particle 2 single 6.9 5 5\n"
-                "pair_style dem/lsd 0.3 0.5\npair_coeff * * kn 1000 mu 0.5\npair_coeff 2 2 kn 1000 mu 0.5 "
-                "cutoff 0.2\nrun 0")
+    sim = make_box("create_particle 1 single 5 5 5 diameter 3\ncreate_particle 2 single 6.9 5 5\n"
+                   "pair_style dem/lsd 0.3 0.5\npair_coeff * * kn 1000 mu 0.5\npair_coeff 2 2 kn 1000 mu 0.5 "
+                   "cutoff 0.2\nrun 0", ntypes=2, particle_style="sphere")
     assert sim.pair_list.cutoff[1, 1] == 3.0 and sim.pair_list.cutoff[1, 2] == 2.0
     assert sim.pair_list.cutoff[2, 2] == 1.0
     assert np.abs(sim.f[0]).max() > 0          # r = 1.9 < 1.5 + 0.5: in contact
@@ -95,25 +95,21 @@ def test_the_neighbor_cutoff_covers_the_largest_contact_whatever_the_given_cutof
 
 
 def two_types(pair, coeffs, v=(0.0, 0.0, 0.0)):
-    sim = Simulation(screen=False, log=None)
-    sim.command(BOX + "create_particle 1 single 2 5 5 diameter 1 density 2\n"
-                "create_particle 1 single 4 5 5 diameter 0.5 density 2\n"
-                "create_particle 2 single 6 5 5 diameter 2 density 3\n"
-                f"pair_style {pair}\n" + "".join(f"pair_coeff {c}\n" for c in coeffs))
+    sim = make_box("create_particle 1 single 2 5 5 diameter 1 density 2\n"
+                   "create_particle 1 single 4 5 5 diameter 0.5 density 2\n"
+                   "create_particle 2 single 6 5 5 diameter 2 density 3\n"
+                   f"pair_style {pair}\n" + "".join(f"pair_coeff {c}\n" for c in coeffs),
+                   ntypes=2, particle_style="sphere")
     sim.v[1] = v
     sim.command("run 0")
     return sim
-
-
-def mass(diameter, density):
-    return density * math.pi / 6.0 * diameter ** 3
 
 
 def test_lsd_timestep_limit_is_the_contact_time_of_the_lightest_pair():
     sim = two_types("dem/lsd 0.3 1.0", ["1 1 kn 1000 e 0.5 mu 0.5", "1 2 kn 4000 e 0.5 mu 0.5",
                                         "2 2 1000 30 285 15 0.5"])
     limits = sim.pair.timestep_limits(sim)
-    small, big = mass(0.5, 2), mass(2, 3)
+    small, big = sphere_mass(0.5, 2), sphere_mass(2, 3)
     candidates = []
     for kn, m_star in ((1000, small / 2), (4000, small * big / (small + big))):
         candidates.append(cm.lsd_contact_time(kn, cm.lsd_damping(kn, m_star, 0.5), m_star))
@@ -123,7 +119,7 @@ def test_lsd_timestep_limit_is_the_contact_time_of_the_lightest_pair():
 
 def test_lsd_timestep_limit_of_an_overdamped_contact_is_its_undamped_time():
     sim = two_types("dem/lsd 0.3 1.0", ["* * 1000 500 285 15 0.5"])
-    m_star = mass(0.5, 2) / 2
+    m_star = sphere_mass(0.5, 2) / 2
     assert sim.pair.timestep_limits(sim)["contact"] == pytest.approx(math.pi * math.sqrt(m_star / 1000))
 
 
@@ -136,9 +132,9 @@ def test_hertz_timestep_limits_are_the_rayleigh_and_hertz_times_of_the_smallest_
                       "contact": pytest.approx(rayleigh, rel=1e-12)}
     moving = two_types("dem/hertz", coeffs, v=(3.0, 4.0, 0.0)).pair
     limits = moving.timestep_limits(moving.sim)
-    hertz = min(cm.hertz_contact_time(1e6 / (2 * (1 - 0.09)), r / 2, mass(2 * r, rho) / 2, 10.0)
+    hertz = min(cm.hertz_contact_time(1e6 / (2 * (1 - 0.09)), r / 2, sphere_mass(2 * r, rho) / 2, 10.0)
                 for r, rho in ((0.5, 2), (0.25, 2)))
-    hertz = min(hertz, cm.hertz_contact_time(1e5 / (2 * (1 - 0.0625)), 0.5, mass(2, 3) / 2, 10.0))
+    hertz = min(hertz, cm.hertz_contact_time(1e5 / (2 * (1 - 0.0625)), 0.5, sphere_mass(2, 3) / 2, 10.0))
     assert limits["hertz"] == pytest.approx(hertz, rel=1e-12)
     assert limits["contact"] == pytest.approx(min(hertz, rayleigh), rel=1e-12)
 
@@ -150,11 +146,11 @@ def test_a_run_split_in_two_follows_the_same_trajectory(dem):
     def collide(runs):
         sim = dem.spheres("dem/lsd 0.3 1.0", ["* * kn 1000 e 1.0 mu 10 ct 0"],
                           [(1, 4.0, 5.0, 5.0, 1.0, 1.0), (1, 4.9, 5.45, 5.0, 1.0, 1.0)],
-                          extra="timestep 0.0001\nfix move all test/dem/nve_sphere")
+                          extra="timestep 0.0001\nfix move all test/nve_sphere")
         dem.set_motion(sim, 1, v=(1.0, 0.0, 0.0), omega=(0.0, 0.0, 8.0))
         for steps in runs:
             sim.command(f"run {steps}")
-        return dem.unwrapped(sim), sim.v[np.argsort(sim.tag)], sim.particles.omega[np.argsort(sim.tag)]
+        return unwrapped(sim), sim.v[np.argsort(sim.tag)], sim.particles.omega[np.argsort(sim.tag)]
     whole, split = collide([600]), collide([350, 250])
     for a, b in zip(whole, split):
         assert np.array_equal(a, b)

@@ -3,24 +3,19 @@ stay visible; docs/accuracy-dem.md gives the restitution error against dt / t_c)
 
 import pytest
 
-from pdps_core.api import Simulation
+from pdps_core.testing import make_box
 from pdps_granular_contact import contact_models
 
 
 def two_spheres(dt):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        particle_style sphere
-        region box block 0 6 0 6 0 6
-        create_box 1 box
+    return make_box(f"""
         create_particle 1 single 2.0 3.0 3.0 diameter 1.0 density 1.9098593
         create_particle 1 single 3.5 3.0 3.0 diameter 1.0 density 1.9098593
         pair_style dem/lsd 0.5 1.0
         pair_coeff * * 200000.0 25.0 57142.857 12.5 0.5
         timestep {dt}
         run 0
-    """)
-    return sim
+    """, box="0 6 0 6 0 6", particle_style="sphere")
 
 
 CONTACT = contact_models.lsd_contact_time(200000.0, 25.0, 0.5)     # two unit spheres: m* = 1/2
