@@ -1,28 +1,13 @@
-"""In-process test styles (forces, torques, a recorder, pair styles with and without time-step
-limits) and a helper that builds a small scene of spheres."""
+"""In-process test styles (a torque, an overlap repulsion, pair styles with and without time-step
+limits; the kit's test/force and test/record) and fixtures that build a small scene."""
 
 import io
 
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, Pair, Simulation, StyleArgs, registry
-
-
-class ConstantForce(Fix):
-    """Adds a constant force to its group, at setup and every step."""
-    name = "test/granular/force"
-
-    class Args(StyleArgs):
-        fx: float
-        fy: float
-        fz: float
-
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def post_force(self, sim):
-        sim.f[sim.groups.select(sim, self.group)] += [self.args.fx, self.args.fy, self.args.fz]
+from pdps_core.api import Fix, Pair, StyleArgs
+from pdps_core.testing import ConstantForce, Record, make_box, register_styles
 
 
 class ConstantTorque(Fix):
@@ -69,22 +54,6 @@ class OverlapRepulsion(Fix):
                     p.f[j] -= force
 
 
-class Recorder(Fix):
-    """Positions, velocities and angular velocities after every step, in tag order."""
-    name = "test/granular/record"
-
-    def __init__(self, sim, id, group, args):
-        super().__init__(sim, id, group, args)
-        self.x, self.v, self.omega = [], [], []
-
-    def end_of_step(self, sim):
-        order = np.argsort(sim.tag)
-        self.x.append(sim.x[order].copy())
-        self.v.append(sim.v[order].copy())
-        if sim.particles.has("omega"):
-            self.omega.append(sim.particles.omega[: sim.nlocal][order].copy())
-
-
 class LimitsPair(Pair):
     """No forces; reports the time-step limits it was given (``pair_style test/granular/limits
     RAYLEIGH HERTZ CONTACT``, 0 meaning none). ``shrink`` makes the Rayleigh time
@@ -126,34 +95,22 @@ class PlainPair(Pair):
         self.energy = 0.0
 
 
-for style in (ConstantForce, ConstantTorque, OverlapRepulsion, Recorder):
-    registry.register("fix", style.name, style)
-for style in (LimitsPair, PlainPair):
-    registry.register("pair", style.name, style)
+register_styles(ConstantForce, ConstantTorque, OverlapRepulsion, Record, LimitsPair, PlainPair)
 
 
 @pytest.fixture
 def spheres(tmp_path, monkeypatch):
-    """``spheres(particles, dimension=3, box=..., boundary=...)``: a silent Simulation with
-    particle_style sphere and one particle type; ``particles`` is script text (create_particle ...).
+    """``spheres(particles, dimension=3, box=..., boundary=...)``: a Simulation with particle_style
+    sphere and one particle type; ``particles`` is script text (create_particle ...).
     ``sim.output.screen.getvalue()`` is what it printed."""
     monkeypatch.chdir(tmp_path)
 
     def make(particles, dimension=3, box="-20 20 -20 20 -20 20", boundary="f f f", ntypes=1):
-        sim = Simulation(screen=io.StringIO(), log=None)
         if dimension == 2:
             box = " ".join(box.split()[:4]) + " -0.5 0.5"
             boundary = " ".join(boundary.split()[:2]) + " p"
-        sim.command(f"""
-            units lj
-            dimension {dimension}
-            particle_style sphere
-            boundary {boundary}
-            region box block {box}
-            create_box {ntypes} box
-        """)
-        sim.command(particles)
-        return sim
+        return make_box(particles, box=box, boundary=boundary, ntypes=ntypes, particle_style="sphere",
+                        dimension=dimension, screen=io.StringIO())
     return make
 
 
@@ -163,15 +120,9 @@ def make_plain(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     def make():
-        sim = Simulation(screen=False, log=None)
-        sim.command("""
-            units lj
-            boundary f f f
-            region box block 0 10 0 10 0 10
-            create_box 1 box
+        return make_box("""
             mass 1 2.0
             create_particle 1 single 2 2 2
             create_particle 1 single 7 7 7
-        """)
-        return sim
+        """, boundary="f f f")
     return make

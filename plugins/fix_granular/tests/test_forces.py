@@ -7,14 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-
-
-def by_tag(sim, array):
-    return np.asarray(array)[np.argsort(sim.tag)]
-
-
-def sphere_mass(diameter, density):
-    return density * math.pi * diameter ** 3 / 6.0
+from pdps_core.testing import by_tag, sphere_mass
 
 
 # ---- viscous ------------------------------------------------------------------------------------

@@ -5,9 +5,7 @@ import math
 
 import numpy as np
 
-
-def by_tag(sim, array):
-    return np.asarray(array)[np.argsort(sim.tag)]
+from pdps_core.testing import by_tag
 
 
 def test_frozen_spheres_stay_put_under_gravity_and_torque(spheres):

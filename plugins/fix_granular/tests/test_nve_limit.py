@@ -8,10 +8,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-
-
-def by_tag(sim, array):
-    return np.asarray(array)[np.argsort(sim.tag)]
+from pdps_core.testing import by_tag
 
 
 def test_hugely_overlapping_spheres_separate_at_xmax_per_step(spheres):
@@ -22,7 +19,7 @@ def test_hugely_overlapping_spheres_separate_at_xmax_per_step(spheres):
         timestep {dt}
         fix 1 all nve/limit {xmax}
         fix 2 all test/granular/overlap {stiffness}
-        fix 3 all test/granular/record
+        fix 3 all test/record
     """)
     mass = math.pi / 6.0
     # without the cap the first step alone would throw each sphere ~900 diameters
@@ -66,7 +63,7 @@ def test_radius_ratio_caps_each_particle_at_a_multiple_of_its_radius(spheres):
         create_particle 1 single 0 5 0 diameter 0.2
         timestep 0.001
         fix 1 all nve/limit radius_ratio 0.1
-        fix 2 all test/granular/force 1e9 0 0
+        fix 2 all test/force 1e9 0 0
     """)
     x0 = by_tag(sim, sim.x)
     sim.command("run 10")
@@ -100,7 +97,7 @@ def test_without_caps_it_is_nve_sphere_to_the_last_bit(spheres):
 
 def test_point_particles_are_capped_without_rotation(make_plain):
     sim = make_plain()
-    sim.command("fix 1 all nve/limit 0.02\nfix 2 all test/granular/force 0 -1e8 0")
+    sim.command("fix 1 all nve/limit 0.02\nfix 2 all test/force 0 -1e8 0")
     x0 = by_tag(sim, sim.x)
     sim.command("run 20")
     np.testing.assert_allclose(by_tag(sim, sim.x) - x0, [[0.0, -0.4, 0.0]] * 2, rtol=1e-12, atol=1e-15)

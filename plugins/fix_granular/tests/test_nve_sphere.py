@@ -7,10 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-
-
-def by_tag(sim, array):
-    return np.asarray(array)[np.argsort(sim.tag)]
+from pdps_core.testing import by_tag
 
 
 def test_free_fall_follows_the_parabola_exactly(spheres):

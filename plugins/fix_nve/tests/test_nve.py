@@ -6,25 +6,8 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, Simulation, StyleArgs, observables, registry
-
-
-class ConstantForce(Fix):
-    """Test fix: adds a constant force (fx fy fz) to every particle of its group, also at setup so
-    the first half-kick sees it (as LAMMPS's fix addforce)."""
-    name = "test_nve_constant_force"
-
-    class Args(StyleArgs):
-        fx: float
-        fy: float
-        fz: float
-
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def post_force(self, sim):
-        chosen = sim.groups.select(sim, self.group)
-        sim.f[chosen] += [self.args.fx, self.args.fy, self.args.fz]
+from pdps_core.api import Fix, observables
+from pdps_core.testing import ConstantForce, by_tag, make_box, register_styles, unwrapped
 
 
 class EnergyRecord(Fix):
@@ -39,25 +22,11 @@ class EnergyRecord(Fix):
         self.energy.append(observables.kinetic_energy(sim) + observables.potential_energy(sim))
 
 
-registry.register("fix", ConstantForce.name, ConstantForce)
-registry.register("fix", EnergyRecord.name, EnergyRecord)
+register_styles(ConstantForce, EnergyRecord)
 
 
 def make(setup, boundary="p p p", box="0 10 0 10 0 10", ntypes=1):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"units lj\nboundary {boundary}\nregion box block {box}\ncreate_box {ntypes} box")
-    sim.command(setup)
-    return sim
-
-
-def by_tag(sim, array):
-    """Rows in tag order: storage order may change (spatial sort), tags do not."""
-    return np.asarray(array)[np.argsort(sim.tag)]
-
-
-def unwrapped(sim):
-    """Unwrapped positions x + image * L, in tag order."""
-    return by_tag(sim, sim.x + sim.particles.image[: sim.nlocal] * sim.box.length)
+    return make_box(setup, box=box, boundary=boundary, ntypes=ntypes)
 
 
 def _ballistic(start, velocity, steps, dt=0.01):
@@ -116,19 +85,14 @@ def test_constant_force_gives_exact_parabola(mass, force, dt, steps):
 
 def test_per_particle_mass_is_used_when_present():
     """particle_style sphere: a = F / rmass with rmass = density * 4/3 pi r^3, not the type mass."""
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        particle_style sphere
-        boundary f f f
-        region box block -50 50 -50 50 -50 50
-        create_box 1 box
+    sim = make_box(f"""
         create_particle 1 single 0 0 0 diameter 2.0 density 3.0
         create_particle 1 single 10 0 0 diameter 1.0 density 1.0
         timestep 0.01
         fix 1 all nve
         fix 2 all {ConstantForce.name} 1.0 0.0 0.0
         run 100
-    """)
+    """, box="-50 50 -50 50 -50 50", boundary="f f f", particle_style="sphere")
     rmass = np.array([3.0 * 4.0 / 3.0 * math.pi, 4.0 / 3.0 * math.pi / 8.0])
     np.testing.assert_allclose(by_tag(sim, sim.v)[:, 0], 1.0 / rmass, rtol=1e-12)
     np.testing.assert_allclose(unwrapped(sim)[:, 0], [0.0, 10.0] + 0.5 / rmass, rtol=1e-12)
@@ -168,17 +132,13 @@ def _energy_error(dt, total_time=1.0):
     """max |E(t) - E(0)| / |E(0)| of a purely conservative DPD system (T=0, gamma=0) over a fixed
     physical time."""
     rng = np.random.default_rng(1)
-    sim = Simulation(screen=False, log=None)
-    sim.command("""
-        units lj
+    sim = make_box("""
         lattice spacing x 0.6 y 0.6 z 0.6
-        region box block 0 3 0 3 0 3
-        create_box 1 box
         mass 1 1.0
         create_particle 1 box
         pair_style dpd 0.0 1.0 1
         pair_coeff 1 1 25.0 0.0
-    """)
+    """, box="0 3 0 3 0 3")
     sim.x[:] += rng.uniform(-0.15, 0.15, size=sim.x.shape)
     sim.v[:] = rng.normal(scale=1.0, size=sim.v.shape)
     steps = int(round(total_time / dt))
