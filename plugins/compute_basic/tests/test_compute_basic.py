@@ -6,27 +6,16 @@ tests from the particle state:
 """
 
 import math
-import pathlib
-import subprocess
-import sys
-import textwrap
 
 import numpy as np
 import pytest
 
 from pdps_core.api import Fix, ScriptError, Simulation, registry
+from pdps_core.testing import make_box, register_styles, run_ranks
 
 
 def make(setup, boundary="p p p", box="0 10 0 10 0 10", ntypes=1, style="atomic"):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"units lj\nboundary {boundary}\nparticle_style {style}\nregion box block {box}\n"
-                f"create_box {ntypes} box")
-    sim.command(setup)
-    return sim
-
-
-def by_tag(sim, values):
-    return np.asarray(values)[np.argsort(sim.tag)]
+    return make_box(setup, box=box, boundary=boundary, ntypes=ntypes, particle_style=style)
 
 
 def _mixed(seed=3):
@@ -105,7 +94,7 @@ def test_msd_origins_follow_their_particles_through_resorting():
         pair_style dpd 0.0 1.0 5
         pair_coeff * * 0.0 0.0
     """)
-    registry.register("fix", "test/orders", Orders)
+    register_styles(Orders)
     sim.command("compute m all msd\nfix o all test/orders\nrun 150")
     assert len(sim.fixes["o"].seen) > 2, "the particles were never re-sorted"
     msd = sim.computes["m"].vector(sim)
@@ -269,7 +258,7 @@ def test_pair_contact_rows_of_two_touching_spheres(x1, x2):
 
 def test_pair_contact_force_from_a_pair_that_reports_it():
     lsd = registry.lookup("pair", "dem/lsd")
-    registry.register("pair", ReportingLsd.name, type("Reporting", (ReportingLsd, lsd), {}))
+    register_styles(type("Reporting", (ReportingLsd, lsd), {}))
     sim = _two_spheres([3.0, 3.0, 3.0], [3.9, 3.3, 3.0], pair=f"{ReportingLsd.name} 0.5 1.0")
     rows = sim.computes["c"].array(sim)
     delta = np.array([-0.9, -0.3, 0.0])
@@ -362,12 +351,8 @@ def test_bad_readings_give_one_line_errors(read, words):
 
 
 # ---- the same numbers on any number of ranks ----------------------------------------------------
-MPIEXEC = pathlib.Path(sys.executable).parent / "mpiexec"
-
-
-@pytest.mark.skipif(not MPIEXEC.exists(), reason="mpiexec is installed by the core's [mpi] extra")
 def test_values_agree_on_1_and_3_ranks(tmp_path):
-    script = textwrap.dedent("""
+    script = """
         particle_style sphere
         region box block 0 6 0 6 0 6
         create_box 1 box
@@ -390,14 +375,10 @@ def test_values_agree_on_1_and_3_ranks(tmp_path):
         thermo_style custom step c_k c_m[3] c_cm[0] c_r[0] c_r[1] c_c v_n
         dump 1 all custom 40 dump.txt id c_k c_p[0] v_n
         run 40
-    """)
-    (tmp_path / "in.test").write_text(script)
+    """
     outputs = {}
     for ranks in (1, 3):
-        result = subprocess.run([str(MPIEXEC), "-n", str(ranks), sys.executable, "-m", "pdps_core.cli", "run",
-                                 "in.test", "-log", "none"], cwd=tmp_path, capture_output=True, text=True,
-                                timeout=600)
-        assert result.returncode == 0, result.stderr
+        result = run_ranks(script, ranks, tmp_path)
         outputs[ranks] = ([line for line in result.stdout.splitlines() if line.strip()[:1].isdigit()],
                           (tmp_path / "dump.txt").read_text())
     lines = outputs[1][0]

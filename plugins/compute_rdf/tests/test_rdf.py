@@ -15,7 +15,8 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
 
 try:
     import freud
@@ -27,15 +28,13 @@ needs_freud = pytest.mark.skipif(freud is None, reason="freud-analysis is not in
 def snapshot(positions, types, length, dimension=3, boundary="p p p", ntypes=None, extra=""):
     """A simulation holding exactly these particles in the box [0, length)^d."""
     ntypes = ntypes or int(max(types))
-    sim = Simulation(screen=False, log=None)
     zhi = length if dimension == 3 else 0.5
     zlo = 0 if dimension == 3 else -0.5
-    lines = ["units lj", f"dimension {dimension}", f"boundary {boundary}",
-             f"region box block 0 {length} 0 {length} {zlo} {zhi}", f"create_box {ntypes} box"]
-    lines += [f"mass {t} 1.0" for t in range(1, ntypes + 1)]
+    lines = [f"mass {t} 1.0" for t in range(1, ntypes + 1)]
     lines += [f"create_particle {t} single {x!r} {y!r} {z!r}"
               for t, (x, y, z) in zip(np.asarray(types).tolist(), np.asarray(positions).tolist())]
-    sim.command("\n".join(lines) + "\n" + extra)
+    sim = make_box("\n".join(lines) + "\n" + extra, box=f"0 {length} 0 {length} {zlo} {zhi}",
+                   boundary=boundary, ntypes=ntypes, dimension=dimension)
     order = np.argsort(sim.tag)
     assert np.array_equal(sim.x[order], positions)
     return sim
@@ -173,9 +172,8 @@ def test_coordination_counts_every_periodic_image_within_the_cutoff(boundary, le
 
 
 def test_simple_cubic_lattice_has_6_then_18_neighbors():
-    sim = Simulation(screen=False, log=None)
-    sim.command("units lj\nregion box block 0 6 0 6 0 6\ncreate_box 1 box\nmass 1 1\n"
-                "lattice spacing x 1 y 1 z 1\ncreate_particle 1 box\ncompute r all rdf 10 1 1 cutoff 1.5")
+    sim = make_box("mass 1 1\nlattice spacing x 1 y 1 z 1\ncreate_particle 1 box\n"
+                   "compute r all rdf 10 1 1 cutoff 1.5", box="0 6 0 6 0 6")
     n = sim.nlocal
     assert n == 216
     ours = sim.computes["r"].array(sim)
@@ -217,10 +215,8 @@ def test_default_cutoff_is_the_pair_cutoff_and_the_keyword_goes_beyond_it():
 
 
 def test_values_are_read_through_references_and_follow_the_configuration():
-    sim = Simulation(screen=False, log=None)
-    sim.command("units lj\nregion box block 0 10 0 10 0 10\ncreate_box 1 box\nmass 1 1\n"
-                "create_particle 1 single 1 1 1\ncreate_particle 1 single 2.5 1 1\n"
-                "compute r all rdf 4 cutoff 2\nvariable n equal c_r[3][2]")
+    sim = make_box("mass 1 1\ncreate_particle 1 single 1 1 1\ncreate_particle 1 single 2.5 1 1\n"
+                   "compute r all rdf 4 cutoff 2\nvariable n equal c_r[3][2]")
     assert sim.variables.value("n") == 1.0                 # one neighbor at 1.5 < 2
     assert sim.compute_value("r", (3, 0)) == 1.75
     sim.x[1, 0] = 3.5                                      # now 2.5 apart: no neighbor
@@ -228,10 +224,7 @@ def test_values_are_read_through_references_and_follow_the_configuration():
 
 
 def _two_type_box():
-    sim = Simulation(screen=False, log=None)
-    sim.command("units lj\nregion box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\n"
-                "create_particle 1 single 1 1 1")
-    return sim
+    return make_box("mass * 1\ncreate_particle 1 single 1 1 1", box="0 5 0 5 0 5", ntypes=2)
 
 
 @pytest.mark.parametrize("command, message", [

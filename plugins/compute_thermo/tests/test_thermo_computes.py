@@ -7,15 +7,12 @@
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
 
 
 def make(setup, boundary="p p p", box="0 10 0 10 0 10", ntypes=1, dimension=3):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"units lj\ndimension {dimension}\nboundary {boundary}\nregion box block {box}\n"
-                f"create_box {ntypes} box")
-    sim.command(setup)
-    return sim
+    return make_box(setup, box=box, boundary=boundary, ntypes=ntypes, dimension=dimension)
 
 
 def masses_of(sim, table):
@@ -171,7 +168,7 @@ def test_centroid_is_unwrapped_across_periodic_faces():
     np.testing.assert_allclose(centroid, start + [1.0, 0.0, 0.0], rtol=1e-12)
 
 
-def test_centroid_uses_image_flags_and_its_group(tmp_path):
+def test_centroid_uses_image_flags_and_its_group(tmp_path, make_sim):
     path = tmp_path / "data.img"
     path.write_text("""image flags
 
@@ -192,7 +189,7 @@ Atoms # atomic
 2 1 3.0 2.0 1.0 1 -1 0
 3 2 2.0 2.0 2.0 0 0 2
 """)
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command(f"read_data {path}\ngroup one type 1\ncompute c all centroid\ncompute c1 one centroid")
     unwrapped = np.array([[1.0, 1.0, 1.0], [7.0, -3.0, 1.0], [2.0, 2.0, 14.0]])
     for ident, rows in (("c", [0, 1, 2]), ("c1", [0, 1])):
