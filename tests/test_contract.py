@@ -5,6 +5,7 @@ plugin guide shows each of them."""
 import ast
 import pathlib
 import re
+import tomllib
 
 import pytest
 
@@ -148,3 +149,33 @@ def test_the_plugin_guide_shows_every_name():
     absent += [f"{kind}.{name}" for kind, names in CONTRACT.items() for name in names
                if not re.search(rf"\.{name}\b", code)]
     assert not absent, f"docs/plugin-guide.md has no example for: {', '.join(absent)}"
+
+
+KIT_FIXTURES = {"make_sim", "pdps_cli"}
+
+
+def uses_the_kit(path):
+    """True when a test module imports from pdps_core.testing or takes one of its fixtures."""
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.module == "pdps_core.testing":
+            return True
+        if isinstance(node, ast.Import) and any(a.name == "pdps_core.testing" for a in node.names):
+            return True
+        if isinstance(node, ast.FunctionDef) and KIT_FIXTURES & {a.arg for a in node.args.args}:
+            return True
+    return False
+
+
+def provides_styles(folder):
+    """A plugin declares styles (pdps.* entry points); a library distribution such as
+    granular_contact declares none, and its tests call its functions without a simulation."""
+    project = tomllib.loads((folder / "pyproject.toml").read_text())["project"]
+    return any(group.startswith("pdps.") for group in project.get("entry-points", {}))
+
+
+def test_every_plugin_uses_the_test_kit():
+    plugins = sorted(p.parent for p in ROOT.glob("plugins/*/tests") if provides_styles(p.parent))
+    assert len(plugins) > 10
+    without = [p.name for p in plugins
+               if not any(uses_the_kit(m) for m in (p / "tests").rglob("*.py"))]
+    assert not without, f"plugins whose tests use nothing of pdps_core.testing: {', '.join(without)}"

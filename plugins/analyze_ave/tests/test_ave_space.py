@@ -4,15 +4,14 @@ the bin volume (area in 2-d), time averages of particles crossing a bin boundary
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError
 
 
 @pytest.fixture
-def planes(tmp_path, monkeypatch):
+def planes(make_sim):
     """A 4 x 4 x 10 box: 3 particles of type 1 on z = 0.5, 5 of type 2 on z = 2.5, 2 of type 1 on
     z = 7.25, all at rest (no pair style, no integrator)."""
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     lines = ["units lj", "region box block 0 4 0 4 0 10", "create_box 2 box", "mass 1 1.0", "mass 2 3.0",
              "group heavy type 2"]
     for count, z, t in ((3, 0.5, 1), (5, 2.5, 2), (2, 7.25, 1)):
@@ -58,10 +57,9 @@ def test_mass_density_weighs_each_type_and_a_group_counts_only_its_own(planes):
     np.testing.assert_allclose(heavy[:, 2], [5 * 3.0 / 80, 0], rtol=1e-15)
 
 
-def test_time_average_of_a_particle_crossing_into_the_next_bin(tmp_path, monkeypatch):
+def test_time_average_of_a_particle_crossing_into_the_next_bin(make_sim):
     """z = 0.5 + 0.25 n: samples at steps 1..4 see it at 0.75 (bin 0), then 1.0, 1.25, 1.5 (bin 1)."""
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("units lj\nregion box block 0 2 0 2 0 4\ncreate_box 1 box\nmass 1 2.0\n"
                 "create_particle 1 single 1 1 0.5\nvelocity all set 0.5 0.0 0.5\ntimestep 0.5\nfix 1 all nve\n"
                 "analyze 1 all ave/space 1 4 4 z lower 1 density/number density/mass vx vz file z.txt\nrun 4")
@@ -75,9 +73,8 @@ def test_time_average_of_a_particle_crossing_into_the_next_bin(tmp_path, monkeyp
                                                "4 4", "  1 0.5 0.25 0.0625 0.125 0.5 0.5"]
 
 
-def test_two_dimensional_bins_divide_by_area(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+def test_two_dimensional_bins_divide_by_area(make_sim):
+    sim = make_sim()
     sim.command("units lj\ndimension 2\nregion box block 0 6 0 3 -0.5 0.5\ncreate_box 1 box\nmass 1 1\n"
                 "create_particle 1 single 0.2 0.5 0\ncreate_particle 1 single 0.4 2.5 0\n"
                 "create_particle 1 single 4.1 1.5 0\n"

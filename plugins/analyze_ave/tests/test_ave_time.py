@@ -6,7 +6,8 @@ and compute rdf arrays averaged element by element."""
 import numpy as np
 import pytest
 
-from pdps_core.api import Compute, ScriptError, Simulation, registry
+from pdps_core.api import Compute, ScriptError
+from pdps_core.testing import register_styles
 
 
 class StepArray(Compute):
@@ -25,15 +26,13 @@ class StepVector(Compute):
         return np.array([float(sim.step), 10.0 - 2.0 * sim.step, 0.25])
 
 
-registry.register("compute", StepArray.name, StepArray)
-registry.register("compute", StepVector.name, StepVector)
+register_styles(StepArray, StepVector)
 
 
 @pytest.fixture
-def sim(tmp_path, monkeypatch):
+def sim(make_sim):
     """Eight free particles (no pair style) with hand-set velocities, integrated by fix nve."""
-    monkeypatch.chdir(tmp_path)
-    s = Simulation(screen=False, log=None)
+    s = make_sim()
     s.command("units lj\nregion box block 0 10 0 10 0 10\ncreate_box 2 box\nmass 1 1.0\nmass 2 3.0\n"
               "lattice spacing x 5 y 5 z 5\ncreate_particle 1 box\ntimestep 0.01\nfix 1 all nve\n"
               "thermo 0\nvariable s equal step")

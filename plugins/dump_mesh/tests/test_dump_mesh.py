@@ -12,33 +12,28 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation, SimulationError
+from pdps_core.api import ScriptError, SimulationError
+from pdps_core.testing import build
 
 LO = np.array([0.0, 0.0, 0.0])
 HI = np.array([4.0, 5.0, 4.5])
 
 
-def write_data(path, n=30, seed=5):
-    """Particles with ids written in shuffled order, not contiguous; returns the ids."""
+def particles(n=30, seed=5):
+    """Positions, types and ids (written in shuffled order, not contiguous)."""
     rng = np.random.default_rng(seed)
     ids = rng.permutation(np.arange(1, n + 1) * 7)
     x = LO + rng.random((n, 3)) * (HI - LO)
-    lines = ["mesh dump test", "", f"{n} atoms", "2 atom types", ""]
-    lines += [f"{LO[d]} {HI[d]} {a}lo {a}hi" for d, a in enumerate("xyz")]
-    lines += ["", "Masses", "", "1 1.0", "2 2.0", "", "Atoms # atomic", ""]
-    lines += [f"{i} {1 + i % 2} {a!r} {b!r} {c!r}" for i, (a, b, c) in zip(ids.tolist(), x.tolist())]
-    path.write_text("\n".join(lines) + "\n")
-    return ids
+    return x, 1 + ids % 2, ids
 
 
 @pytest.fixture
 def fluid(tmp_path, monkeypatch):
     """A small DPD fluid (no radius, no omega) in a temporary folder."""
     monkeypatch.chdir(tmp_path)
-    ids = write_data(tmp_path / "data.in")
-    sim = Simulation(screen=False, log=None)
-    sim.command("""
-        read_data data.in
+    x, types, ids = particles()
+    sim = build(tmp_path, x, types=types, tags=ids, masses={1: 1.0, 2: 2.0}, lo=LO, hi=HI,
+                name="data.in", setup="""
         pair_style dpd 1.0 1.0 77
         pair_coeff * * 25.0 4.5
         velocity all create 1.0 3
@@ -143,9 +138,8 @@ def test_xdmf_frames_and_series_hold_the_particles(fluid, tmp_path):
     check_frame(points, cells, point_data, state(sim))       # full precision survives the text
 
 
-def test_spheres_carry_radius_and_omega(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+def test_spheres_carry_radius_and_omega(tmp_path, make_sim):
+    sim = make_sim()
     sim.command("""
         particle_style sphere
         region box block -3 3 -3 3 -3 3
@@ -173,10 +167,9 @@ TRIANGLES = np.array([[0, 1, 2], [0, 2, 3]])
 
 
 @pytest.mark.parametrize("style, ext", [("vtk", "vtu"), ("xdmf", "xdmf")])
-def test_mesh_walls_moving_per_frame_static_once(tmp_path, monkeypatch, style, ext):
-    monkeypatch.chdir(tmp_path)
+def test_mesh_walls_moving_per_frame_static_once(tmp_path, make_sim, style, ext):
     meshio.write("square.stl", meshio.Mesh(SQUARE, [("triangle", TRIANGLES)]), file_format="stl")
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command(f"""
         particle_style sphere
         boundary f f f
@@ -214,12 +207,11 @@ def test_mesh_walls_moving_per_frame_static_once(tmp_path, monkeypatch, style, e
     np.testing.assert_array_equal(points, sim.fixes["lift"].vertices)
 
 
-def test_a_group_that_empties_gives_empty_frames_paraview_reads(tmp_path, monkeypatch):
+def test_a_group_that_empties_gives_empty_frames_paraview_reads(tmp_path, make_sim):
     """Groups are re-evaluated at each run: the second run's frames hold no particle. An empty
     XDMF data item makes ParaView's reader abort, so such a frame is a grid with a time alone (and
     its series entry includes nothing); meshio cannot read an empty VTU, so it is read as XML."""
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("""
         region box block 0 4 0 4 0 4
         create_box 1 box
@@ -255,9 +247,8 @@ def test_walls_are_not_written_unless_asked(fluid, tmp_path):
 
 
 # ---- what a stopped run leaves ------------------------------------------------------------------
-def test_run_stopped_by_an_error_leaves_complete_frames(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+def test_run_stopped_by_an_error_leaves_complete_frames(tmp_path, make_sim):
+    sim = make_sim()
     sim.command("""
         boundary f f f
         region box block 0 10 0 10 0 10

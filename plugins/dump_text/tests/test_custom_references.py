@@ -9,7 +9,8 @@ a fix whose per-atom value is the number of steps it has seen times the tag.
 import numpy as np
 import pytest
 
-from pdps_core.api import Compute, Fix, ScriptError, Simulation, registry
+from pdps_core.api import Compute, Fix, ScriptError
+from pdps_core.testing import make_box, register_styles
 
 
 class TagColumns(Compute):
@@ -42,9 +43,7 @@ class StepCounter(Fix):
         return self.steps * sim.tag.astype(float)
 
 
-for style in (TagColumns, HalfMV2):
-    registry.register("compute", style.name, style)
-registry.register("fix", StepCounter.name, StepCounter)
+register_styles(TagColumns, HalfMV2, StepCounter)
 
 
 def read_frames(path):
@@ -60,11 +59,7 @@ def read_frames(path):
 
 
 def make(tmp_path, columns, extra=""):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        units lj
-        region box block 0 6 0 6 0 6
-        create_box 2 box
+    sim = make_box(f"""
         mass 1 1.0
         mass 2 2.5
         lattice spacing x 2 y 2 z 2
@@ -75,7 +70,7 @@ def make(tmp_path, columns, extra=""):
         fix count all test/step_counter
         variable twice equal step*2
         {extra}
-    """)
+    """, box="0 6 0 6 0 6", ntypes=2)
     sim.type[::4] = 2
     sim.v[:] = np.random.default_rng(2).normal(size=sim.v.shape)
     sim.command(f"dump d all custom 5 {tmp_path / 'd.txt'} {columns}\nfix 1 all nve\ntimestep 0.001\nrun 10")
@@ -122,11 +117,8 @@ def test_a_dump_with_a_variable_asks_for_energy_on_its_steps(tmp_path):
     ("id q_x", ("unknown dump column q_x",)),
 ])
 def test_bad_reference_columns_give_one_line_errors(tmp_path, columns, words):
-    registry.register("compute", "test/plain", type("Plain", (Compute,), {"name": "test/plain"}))
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        region box block 0 4 0 4 0 4
-        create_box 1 box
+    register_styles(type("Plain", (Compute,), {"name": "test/plain"}))
+    sim = make_box(f"""
         mass 1 1
         create_particle 1 single 1 1 1
         compute tc all test/tag_columns
@@ -134,7 +126,7 @@ def test_bad_reference_columns_give_one_line_errors(tmp_path, columns, words):
         compute plain all test/plain
         variable twice equal 2
         fix 1 all nve
-    """)
+    """, box="0 4 0 4 0 4")
     with pytest.raises(ScriptError) as error:
         sim.command(f"dump d all custom 1 {tmp_path / 'd.txt'} {columns}\nrun 0")
     assert "\n" not in str(error.value)

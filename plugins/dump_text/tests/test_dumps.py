@@ -9,7 +9,8 @@ import re
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation, SimulationError
+from pdps_core.api import ScriptError, SimulationError
+from pdps_core.testing import build
 
 LO = np.array([-2.0, 1.0, 0.0])
 HI = np.array([3.0123456789012345, 5.0, 4.5])
@@ -41,28 +42,20 @@ def read_dump(path):
     return frames
 
 
-def write_data(path, n=40, seed=4):
-    """Particles in the box LO..HI with ids written in shuffled order; returns (ids, x, types)."""
+def particles(n=40, seed=4):
+    """Positions in the box LO..HI, types and ids (not contiguous, not sorted)."""
     rng = np.random.default_rng(seed)
-    ids = rng.permutation(np.arange(1, n + 1) * 3)           # not contiguous, not sorted
+    ids = rng.permutation(np.arange(1, n + 1) * 3)
     x = LO + rng.random((n, 3)) * (HI - LO)
-    types = 1 + (ids % 2)
-    lines = ["dump test", "", f"{n} atoms", "2 atom types", ""]
-    lines += [f"{LO[d]} {HI[d]} {a}lo {a}hi" for d, a in enumerate("xyz")]
-    lines += ["", "Masses", "", "1 1.0", "2 2.0", "", "Atoms # atomic", ""]
-    lines += [f"{ids[k]} {types[k]} {x[k, 0]:.17g} {x[k, 1]:.17g} {x[k, 2]:.17g}" for k in range(n)]
-    path.write_text("\n".join(lines) + "\n")
-    return ids, x, types
+    return x, 1 + (ids % 2), ids
 
 
 def make(tmp_path, monkeypatch, boundary="p p p"):
     monkeypatch.chdir(tmp_path)
-    ids, x, types = write_data(tmp_path / "data.in")
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"""
-        boundary {boundary}
+    x, types, ids = particles()
+    sim = build(tmp_path, x, types=types, tags=ids, masses={1: 1.0, 2: 2.0}, lo=LO, hi=HI,
+                boundary=boundary, name="data.in", setup="""
         atom_modify sort 1 0.0
-        read_data data.in
         pair_style dpd 1.0 1.0 77
         pair_coeff * * 25.0 4.5
         velocity all create 1.0 3
@@ -150,11 +143,10 @@ def test_dump_of_an_empty_group_writes_headers_only(tmp_path, monkeypatch):
     assert [(f["step"], f["n"]) for f in frames] == [(0, 0), (1, 0), (2, 0)]
 
 
-def test_run_stopped_by_an_error_keeps_complete_frames(tmp_path, monkeypatch):
+def test_run_stopped_by_an_error_keeps_complete_frames(tmp_path, make_sim):
     """A particle flies out through a fixed face; the run stops with an error. Every frame written
     before is complete and readable at once (flushed), though the dump was never closed."""
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("""
         boundary f f f
         region box block 0 10 0 10 0 10

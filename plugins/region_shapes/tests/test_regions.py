@@ -3,18 +3,17 @@
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
 
 
 def sim_with_box(box="0 10 0 10 0 10"):
-    sim = Simulation(screen=False, log=None)
-    sim.command(f"region box block {box}\ncreate_box 1 box\nmass 1 1")
-    return sim
+    return make_box("mass 1 1", box=box)
 
 
 # ---- block --------------------------------------------------------------------------------------
-def test_block_inside_outside_and_faces():
-    sim = Simulation(screen=False, log=None)
+def test_block_inside_outside_and_faces(make_sim):
+    sim = make_sim()
     sim.command("region r block -1 2 0.5 3 -4 -2")
     r = sim.region("r")
     points = np.array([
@@ -34,9 +33,9 @@ def test_block_inside_outside_and_faces():
     np.testing.assert_array_equal(hi, [2, 3, -2])
 
 
-def test_block_faces_count_in_a_region_group():
+def test_block_faces_count_in_a_region_group(make_sim):
     """On a unit lattice, the block 2..4 on each axis holds 3 x 3 x 3 sites (faces included)."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("""
         lattice spacing x 1 y 1 z 1
         region box block 0 10 0 10 0 10
@@ -52,8 +51,8 @@ def test_block_faces_count_in_a_region_group():
     assert sim.compute_value("n", (0,)) == pytest.approx(3.0)
 
 
-def test_block_inf_bounds_are_unbounded():
-    sim = Simulation(screen=False, log=None)
+def test_block_inf_bounds_are_unbounded(make_sim):
+    sim = make_sim()
     sim.command("region slab block -INF INF -INF INF 1 2\nregion half block 0 INF -1 1 -1 1")
     slab, half = sim.region("slab"), sim.region("half")
     points = np.array([[1e250, -1e250, 1.5], [-3.0, 7.0, 1.0], [0.0, 0.0, 2.5]])
@@ -76,8 +75,8 @@ def test_block_edge_takes_the_box_faces():
     np.testing.assert_array_equal(inside, [True, True, False, False])
 
 
-def test_block_edge_needs_a_box():
-    sim = Simulation(screen=False, log=None)
+def test_block_edge_needs_a_box(make_sim):
+    sim = make_sim()
     with pytest.raises(ScriptError, match="EDGE needs the simulation box"):
         sim.command("region r block EDGE 1 0 1 0 1")
 
@@ -92,26 +91,26 @@ def test_block_edge_needs_a_box():
     ("inf 1 0 1 0 1", "xlo must be a number, INF, -INF or EDGE (got inf)"),
     ("0 1e999 0 1 0 1", "xhi must be a number, INF, -INF or EDGE (got 1e999)"),
 ])
-def test_block_bad_arguments(args, words):
-    sim = Simulation(screen=False, log=None)
+def test_block_bad_arguments(args, words, make_sim):
+    sim = make_sim()
     with pytest.raises(ScriptError) as info:
         sim.command(f"region r block {args}")
     assert words in str(info.value)
     assert "r" not in sim.regions
 
 
-def test_block_defines_the_box():
-    sim = Simulation(screen=False, log=None)
+def test_block_defines_the_box(make_sim):
+    sim = make_sim()
     sim.command("region box block -2 3 0 4 1 1.5\ncreate_box 2 box")
     np.testing.assert_array_equal(sim.box.lo, [-2, 0, 1])
     np.testing.assert_array_equal(sim.box.hi, [3, 4, 1.5])
 
 
 # ---- polygon ------------------------------------------------------------------------------------
-def test_polygon_normal_from_the_first_three_points():
+def test_polygon_normal_from_the_first_three_points(make_sim):
     """The PDPS manual's wall: p1 (15,0,0) p2 (15,10,0) p3 (10,10,0): n = (p2-p1) x (p3-p1) / |.|
     = +z; listing the points the other way round flips it."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("region w polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0")
     w = sim.region("w")
     np.testing.assert_allclose(w.normal, [0, 0, 1], atol=1e-15)
@@ -121,7 +120,7 @@ def test_polygon_normal_from_the_first_three_points():
     np.testing.assert_allclose(sim.region("back").normal, [0, 0, -1], atol=1e-15)
 
 
-def test_polygon_normal_of_a_tilted_plane():
+def test_polygon_normal_of_a_tilted_plane(make_sim):
     p = np.array([[0.1, 0.2, 0.3], [1.3, 0.7, -0.2], [0.4, 1.9, 0.8]])
     expected = np.cross(p[1] - p[0], p[2] - p[0])
     expected /= np.linalg.norm(expected)
@@ -129,7 +128,7 @@ def test_polygon_normal_of_a_tilted_plane():
     p4 = p[0] + 0.7 * (p[1] - p[0]) + 1.3 * (p[2] - p[0])
     words = " ".join(f"q{k} {float(x)!r} {float(y)!r} {float(z)!r}"
                      for k, (x, y, z) in enumerate([*p, p4]))
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command(f"region t polygon {words}")
     normal = sim.region("t").normal
     np.testing.assert_allclose(normal, expected, rtol=1e-14, atol=1e-15)
@@ -137,8 +136,8 @@ def test_polygon_normal_of_a_tilted_plane():
     assert abs((p4 - p[0]) @ normal) < 1e-12
 
 
-def test_polygon_point_off_the_plane_is_an_error():
-    sim = Simulation(screen=False, log=None)
+def test_polygon_point_off_the_plane_is_an_error(make_sim):
+    sim = make_sim()
     with pytest.raises(ScriptError, match="point p4 is not in the plane of the first three"):
         sim.command("region w polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0.001")
     assert "w" not in sim.regions
@@ -151,15 +150,15 @@ def test_polygon_point_off_the_plane_is_an_error():
     ("p1 0 0 0 p2 1 0 0 p3 2 0 0", "the first three points are on one line"),
     ("p1 0 0 0 p2 1 0 0 p3 0 x 0", "coordinate must be a number (got x)"),
 ])
-def test_polygon_bad_points(words, message):
-    sim = Simulation(screen=False, log=None)
+def test_polygon_bad_points(words, message, make_sim):
+    sim = make_sim()
     with pytest.raises(ScriptError) as info:
         sim.command(f"region w polygon {words}")
     assert message in str(info.value)
 
 
-def test_bad_point_message_is_one_clean_line():
-    sim = Simulation(screen=False, log=None)
+def test_bad_point_message_is_one_clean_line(make_sim):
+    sim = make_sim()
     with pytest.raises(ScriptError) as info:
         sim.command("region w polygon p1 0 0 0 p2 1 0 0 p3 0 x 0")
     assert str(info.value) == "<command>:1: region: point p3: coordinate must be a number (got x)"
@@ -183,10 +182,10 @@ def contacts_by_point(region, x, reach):
     return {i: sorted(r) for i, r in rows.items()}
 
 
-def test_block_surface_from_inside_touches_each_near_face():
+def test_block_surface_from_inside_touches_each_near_face(make_sim):
     """Inside (a container): one contact per face within reach, normal into the block; a point in a
     corner touches three faces; a point in the middle none."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("region r block 0 4 0 6 0 8")
     found = contacts_by_point(sim.region("r"), [[0.25, 3, 4], [3.5, 5.75, 0.5], [2, 3, 4]], 0.6)
     assert found[0] == [(0, 0.25, (1.0, 0.0, 0.0))]
@@ -195,10 +194,10 @@ def test_block_surface_from_inside_touches_each_near_face():
     assert 2 not in found
 
 
-def test_block_surface_from_outside_is_one_contact_at_the_closest_point():
+def test_block_surface_from_outside_is_one_contact_at_the_closest_point(make_sim):
     """Outside (an obstacle): face, edge and corner contacts, each once, element 6, with the normal
     from the block's closest point to the point."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("region r block 0 4 0 6 0 8")
     s = 0.3 / np.sqrt(2.0)
     c = 0.3 / np.sqrt(3.0)
@@ -212,8 +211,8 @@ def test_block_surface_from_outside_is_one_contact_at_the_closest_point():
     np.testing.assert_array_equal(element, [6, 6, 6])
 
 
-def test_block_with_inf_faces_is_a_floor():
-    sim = Simulation(screen=False, log=None)
+def test_block_with_inf_faces_is_a_floor(make_sim):
+    sim = make_sim()
     sim.command("region floor block INF INF INF INF -5 0")
     index, distance, normal, element = sim.region("floor").surface_contacts(
         np.array([[1e6, -3e5, 0.4], [0.0, 0.0, -4.8]]), 0.5)
@@ -223,10 +222,10 @@ def test_block_with_inf_faces_is_a_floor():
     np.testing.assert_array_equal(element, [6, 4])
 
 
-def test_polygon_surface_face_edge_and_corner_from_both_sides():
+def test_polygon_surface_face_edge_and_corner_from_both_sides(make_sim):
     """The PDPS manual's square wall (normal +z): above and below the face, beside an edge, beyond a
     corner; farther than reach gives nothing."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("region w polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0")
     points = [[12, 5, 0.4], [12, 5, -0.3], [15.3, 5, 0.4], [9.7, -0.4, 0.0], [12, 5, 0.6],
               [16, 5, 0]]
@@ -238,10 +237,10 @@ def test_polygon_surface_face_edge_and_corner_from_both_sides():
     np.testing.assert_array_equal(element, [0, 0, 0, 0])
 
 
-def test_polygon_surface_of_a_non_convex_polygon():
+def test_polygon_surface_of_a_non_convex_polygon(make_sim):
     """An L-shaped polygon: the foot in the notch is outside the polygon, so the contact is with the
     nearest edge, not with the plane."""
-    sim = Simulation(screen=False, log=None)
+    sim = make_sim()
     sim.command("region L polygon a 0 0 0 b 2 0 0 c 2 1 0 d 1 1 0 e 1 2 0 f 0 2 0")
     index, distance, normal, _ = sim.region("L").surface_contacts(
         np.array([[0.5, 1.5, 0.2], [1.5, 1.3, 0.4]]), 0.6)
