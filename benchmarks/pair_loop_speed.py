@@ -1,13 +1,15 @@
 """Speed of the core-owned pair loop: force-law styles against hand-written loops.
 
 1. pair dpd as a force law (the core's generated loop) against the hand-written loop it replaced
-   (kept below, verbatim in its physics), on the PDPS water scene (4,000 particles, rho = 4).
+   (kept below verbatim, from the commit before the core owned the loop), on a water-like scene
+   (4,000 particles, rho = 4).
 2. pair formula with the Lennard-Jones formula against pair lj/cut, on LAMMPS's in.lj melt
    (32,000 atoms, rc = 2.5).
 
 Each timing is the pair computation alone (``pair.compute`` on a built neighbor list, forces
 cleared in between), the best of REPEAT rounds of CALLS calls, the styles interleaved so that both
-see the same machine load. Usage: ``python benchmarks/pair_loop_speed.py [--repeat 7]``.
+see the same machine load. Times are this process's CPU time (time.process_time), which a loaded
+machine disturbs far less than wall time. Usage: ``python benchmarks/pair_loop_speed.py [--repeat 7]``.
 """
 
 import argparse
@@ -30,8 +32,8 @@ EPSILON = 1.0e-10
 
 @njit(cache=True)
 def dpd_hand_written(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, sigma, cut,
-                     dt_inv_sqrt, seed, step, eflag):
-    """The dpd loop as it was written by hand before the core owned the loop."""
+                     dt_inv_sqrt, seed, step, eflag, thermostat):
+    """pair dpd's loop as it was written by hand (plugins/pair_dpd, commit 1f0b2fa)."""
     energy = 0.0
     for i in range(nlocal):
         ti = type_[i]
@@ -51,9 +53,11 @@ def dpd_hand_written(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, 
             rinv = 1.0 / r
             w = 1.0 - r / rc
             fpair = a[ti, tj] * w
-            dot = (delx * (v[i, 0] - v[j, 0]) + dely * (v[i, 1] - v[j, 1]) + delz * (v[i, 2] - v[j, 2]))
-            xi = pair_gaussian(seed, step, tag[i], tag[j])
-            fpair += -gamma[ti, tj] * w * w * dot * rinv + sigma[ti, tj] * w * xi * dt_inv_sqrt
+            if thermostat:
+                dot = (delx * (v[i, 0] - v[j, 0]) + dely * (v[i, 1] - v[j, 1])
+                       + delz * (v[i, 2] - v[j, 2]))
+                xi = pair_gaussian(seed, step, tag[i], tag[j])
+                fpair += -gamma[ti, tj] * w * w * dot * rinv + sigma[ti, tj] * w * xi * dt_inv_sqrt
             fpair *= rinv
             f[i, 0] += delx * fpair
             f[i, 1] += dely * fpair
@@ -66,12 +70,12 @@ def dpd_hand_written(x, v, f, type_, tag, offsets, neighbors, nlocal, a, gamma, 
     return energy
 
 
-def best(function, calls, repeat_index, results, name, clear):
+def best(function, calls, results, name, clear):
     clear()
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     for _ in range(calls):
         function()
-    results.setdefault(name, []).append((time.perf_counter() - t0) / calls)
+    results.setdefault(name, []).append((time.process_time() - t0) / calls)
 
 
 def water():
@@ -110,13 +114,15 @@ def main():
     sim = water()
     p, pair, nlist = sim.particles, sim.pair, sim.pair_list
     clear = lambda: p.f.fill(0.0)  # noqa: E731
-    law = lambda: pair.compute(sim, nlist, True, False)  # noqa: E731
-    hand = lambda: dpd_hand_written(p.x, p.v, p.f, p.type, p.tag, nlist.offsets, nlist.neighbors,  # noqa: E731
-                                    p.nlocal, pair.a, pair.gamma, pair.sigma, pair.cut,
-                                    1.0 / math.sqrt(sim.dt), pair.args.seed, sim.step, True)
-    for k in range(args.repeat):
-        best(law, 20, k, results, "dpd force law", clear)
-        best(hand, 20, k, results, "dpd hand-written", clear)
+    for eflag, label in ((False, "force only"), (True, "with energy")):
+        law = lambda: pair.compute(sim, nlist, eflag, False)  # noqa: E731
+        hand = lambda: dpd_hand_written(p.x, p.v, p.f, p.type, p.tag, nlist.offsets,  # noqa: E731
+                                        nlist.neighbors, p.nlocal, pair.a, pair.gamma, pair.sigma,
+                                        pair.cut, 1.0 / math.sqrt(sim.dt), pair.args.seed, sim.step,
+                                        eflag, True)
+        for k in range(args.repeat):
+            best(law, 20, results, f"dpd law, {label}", clear)
+            best(hand, 20, results, f"dpd hand, {label}", clear)
     pairs = len(nlist.neighbors)
 
     with tempfile.TemporaryDirectory() as folder:
@@ -125,16 +131,17 @@ def main():
         for k in range(args.repeat):
             for name, s in (("lj/cut", cut), ("formula (LJ)", formula)):
                 q = s.particles
-                best(lambda: s.pair.compute(s, s.pair_list, True, False), 5, k, results, name,
+                best(lambda: s.pair.compute(s, s.pair_list, True, False), 5, results, name,
                      lambda: q.f.fill(0.0))
         forces = [np.array(s.f) for s in (cut, formula)]
         relative = np.abs(forces[0] - forces[1]).max() / np.abs(forces[0]).max()
 
-    print(f"{'style':<18} {'ms per call':>12}")
+    print(f"{'style':<24} {'ms per call':>12}")
     for name, times in results.items():
-        print(f"{name:<18} {1e3 * min(times):>12.3f}")
-    print(f"dpd: {pairs} listed pairs; force law / hand-written = "
-          f"{min(results['dpd force law']) / min(results['dpd hand-written']):.3f}")
+        print(f"{name:<24} {1e3 * min(times):>12.3f}")
+    for label in ("force only", "with energy"):
+        ratio = min(results[f"dpd law, {label}"]) / min(results[f"dpd hand, {label}"])
+        print(f"dpd ({pairs} listed pairs), {label}: force law / hand-written = {ratio:.3f}")
     print(f"lj: formula / lj/cut = {min(results['formula (LJ)']) / min(results['lj/cut']):.3f}; "
           f"largest force difference {relative:.2e} of the largest force")
 

@@ -335,17 +335,23 @@ class PairLaw(Pair):
         """Per-step scalars the law reads (seed, step, 1/sqrt(dt), ...), as a tuple."""
         return ()
 
+    def force_law(self):
+        """The law to compile for this run (default ``law``); a style with variants (dpd without its
+        thermostat under a splitting integrator) returns the one its settings call for, rather than
+        branching inside the law for every pair."""
+        return type(self).law
+
     def compute(self, sim, nlist, eflag, vflag):
         if self._loops is None:
             from .pair_loop import loops_for
             nparams = len(self.params)
             self._loops = (loops_for(nparams, source=self.law_source, name=self.name.replace("/", "_"))
-                           if self.law_source is not None else loops_for(nparams, law=type(self).law))
+                           if self.law_source is not None else loops_for(nparams, law=self.force_law()))
         p = sim.particles
-        loop = self._loops[0] if nlist.half_list else self._loops[1]
+        loop = self._loops[(nlist.half_list, bool(eflag))]
         atom = tuple(p.arrays[name] for name in self.law_atom)
         self.energy = loop(p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq,
-                           self.coeff_table, atom, self.law_state(sim), bool(eflag))
+                           self.coeff_table, atom, self.law_state(sim))
 
 
 class Fix(Style):

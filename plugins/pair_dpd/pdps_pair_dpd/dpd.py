@@ -66,20 +66,27 @@ STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more
 @njit(cache=True, inline="always")
 def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
     """The force law (docstring formula); coeff = (a, gamma, sigma, rc), atom = (v, tag),
-    state = (seed, step, 1/sqrt(dt), thermostat). With ``thermostat`` False only the conservative
-    part (a splitting integrator takes friction and noise)."""
+    state = (seed, step, 1/sqrt(dt))."""
     a, gamma, sigma, rc = coeff[0], coeff[1], coeff[2], coeff[3]
     v, tag = atom
-    seed, step, dt_inv_sqrt, thermostat = state
+    seed, step, dt_inv_sqrt = state
     r = math.sqrt(rsq)
     rinv = 1.0 / r
     w = 1.0 - r / rc
-    fpair = a * w
-    if thermostat:
-        dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
-        xi = pair_gaussian(seed, step, tag[i], tag[j])
-        fpair += -gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
+    dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
+    xi = pair_gaussian(seed, step, tag[i], tag[j])
+    fpair = a * w - gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
     return fpair * rinv, 0.5 * a * rc * w * w
+
+
+@njit(cache=True, inline="always")
+def dpd_conservative_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """The conservative part alone, for a splitting integrator (fix shardlow) that takes friction
+    and noise."""
+    a, rc = coeff[0], coeff[3]
+    r = math.sqrt(rsq)
+    w = 1.0 - r / rc
+    return a * w / r, 0.5 * a * rc * w * w
 
 
 class PairDPD(PairLaw):
@@ -90,6 +97,7 @@ class PairDPD(PairLaw):
     params = ("a", "gamma", "sigma", "rc")
     law_atom = ("v", "tag")
     law = staticmethod(dpd_law)
+    conservative_law = staticmethod(dpd_conservative_law)
     split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
     class Args(StyleArgs):
@@ -157,5 +165,8 @@ class PairDPD(PairLaw):
             table[i, j] = table[j, i] = value
         return cut, (c.a, c.gamma, sigma, cut)
 
+    def force_law(self):
+        return self.conservative_law if self.split else self.law
+
     def law_state(self, sim):
-        return (self.args.seed, sim.step, 1.0 / math.sqrt(sim.dt), not self.split)
+        return (self.args.seed, sim.step, 1.0 / math.sqrt(sim.dt))
