@@ -32,9 +32,7 @@ Example (LAMMPS's ``in.lj`` melt)::
 import math
 
 from numba import njit
-from pydantic import Field
-
-from pdps_core.api import PairLaw, StyleArgs
+from pdps_core.api import PairLaw, StyleArgs, param
 
 
 @njit(cache=True, inline="always")
@@ -55,12 +53,12 @@ class PairLJCut(PairLaw):
     law = staticmethod(lj_law)
 
     class Args(StyleArgs):
-        cutoff: float = Field(gt=0)
+        cutoff: float = param(gt=0, unit="distance")
 
     class Coeff(StyleArgs):
-        epsilon: float
-        sigma: float = Field(gt=0)
-        cutoff: float | None = Field(default=None, gt=0)
+        epsilon: float = param(unit="energy")
+        sigma: float = param(gt=0, unit="distance")
+        cutoff: float | None = param(None, gt=0, unit="distance")
 
     def mix_coeff(self, ci, cj, rule):
         mean = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))
