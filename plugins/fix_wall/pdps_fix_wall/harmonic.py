@@ -38,7 +38,7 @@ from numba import njit
 
 from pdps_core.api import Fix, ScriptError, StyleArgs
 
-FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
+from .faces import FACES, wall_planes
 
 
 @njit(cache=True)
@@ -112,27 +112,10 @@ class FixWallHarmonic(Fix):
             k += 5
         if not walls:
             raise ScriptError(f"expected at least one wall; usage: {self.usage}")
-        spacing = sim.lattice[0] if (units == "lattice" and sim.lattice is not None) else np.ones(3)
-        axes, lower, coords, epsilon, cutoff = [], [], [], [], []
-        for face, (coord, eps, _sigma, rc) in walls.items():
-            axis = FACES.index(face) // 2
-            if axis == 2 and sim.dimension == 2:
-                raise ScriptError(f"wall {face} in a 2-d simulation")
-            is_lo = face.endswith("lo")
-            if coord == "EDGE":
-                coord = float((sim.box.lo if is_lo else sim.box.hi)[axis])
-            else:
-                coord *= float(spacing[axis])
-            axes.append(axis)
-            lower.append(is_lo)
-            coords.append(coord)
-            epsilon.append(eps)
-            cutoff.append(rc)
-        self.axes = np.array(axes, dtype=np.int64)
-        self.lower = np.array(lower, dtype=np.bool_)
-        self.coords = np.array(coords)
-        self.epsilon = np.array(epsilon)
-        self.cutoff = np.array(cutoff)
+        self.axes, self.lower, self.coords = wall_planes(
+            sim, {face: values[0] for face, values in walls.items()}, units)
+        self.epsilon = np.array([values[1] for values in walls.values()])
+        self.cutoff = np.array([values[3] for values in walls.values()])
         self.wall_energy = 0.0
         self.wall_virial = np.zeros(6)
 

@@ -54,9 +54,10 @@ from numba import njit
 
 from pdps_core.api import Fix, ScriptError, StyleArgs
 
+from .faces import FACES, wall_planes
+
 STYLES = ("specular", "bounce_forward", "bounce_back")
 SPECULAR, BOUNCE_FORWARD, BOUNCE_BACK = range(3)
-FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
 
 
 @njit(cache=True)
@@ -138,20 +139,7 @@ class FixWallReflect(Fix):
             k += 2
         if not walls:
             raise ScriptError(f"expected at least one wall; usage: {self.usage}")
-        spacing = sim.lattice[0] if (units == "lattice" and sim.lattice is not None) else np.ones(3)
-        axes, lower, coords = [], [], []
-        for face, value in walls.items():
-            axis = FACES.index(face) // 2
-            if axis == 2 and sim.dimension == 2:
-                raise ScriptError(f"wall {face} in a 2-d simulation")
-            is_lo = face.endswith("lo")
-            if value == "EDGE":
-                value = float((sim.box.lo if is_lo else sim.box.hi)[axis])
-            else:
-                value *= float(spacing[axis])
-            axes.append(axis)
-            lower.append(is_lo)
-            coords.append(value)
+        axes, lower, coords = wall_planes(sim, walls, units)
         for axis, name in enumerate("xyz"):
             lo, hi = walls.get(f"{name}lo"), walls.get(f"{name}hi")
             if lo is not None and hi is not None:
@@ -159,9 +147,7 @@ class FixWallReflect(Fix):
                 c_hi = coords[list(walls).index(f"{name}hi")]
                 if not c_lo < c_hi:
                     raise ScriptError(f"{name}lo must be below {name}hi (got {c_lo:g} {c_hi:g})")
-        self.axes = np.array(axes, dtype=np.int64)
-        self.lower = np.array(lower, dtype=np.bool_)
-        self.coords = np.array(coords, dtype=np.float64)
+        self.axes, self.lower, self.coords = axes, lower, coords
         self.old_name = f"wall_reflect_{id}_x_old"
         if self.style == BOUNCE_BACK:
             # positions before the step, in a per-atom array so they follow sorting and migration

@@ -1,0 +1,27 @@
+"""Flat walls on box faces, as LAMMPS's fix wall/* give them: ``face coord`` with coord a number or
+EDGE, scaled by the lattice spacing in ``units lattice``."""
+
+import numpy as np
+
+from pdps_core.api import ScriptError
+
+FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
+
+
+def wall_planes(sim, coords, units):
+    """(axes, lower, positions) arrays of the walls ``{face: number or "EDGE"}``, in that order."""
+    spacing = sim.lattice[0] if (units == "lattice" and sim.lattice is not None) else np.ones(3)
+    axes, lower, positions = [], [], []
+    for face, value in coords.items():
+        axis = FACES.index(face) // 2
+        if axis == 2 and sim.dimension == 2:
+            raise ScriptError(f"wall {face} in a 2-d simulation")
+        is_lo = face.endswith("lo")
+        if value == "EDGE":
+            value = float((sim.box.lo if is_lo else sim.box.hi)[axis])
+        else:
+            value *= float(spacing[axis])
+        axes.append(axis)
+        lower.append(is_lo)
+        positions.append(value)
+    return np.array(axes, dtype=np.int64), np.array(lower, dtype=np.bool_), np.array(positions, dtype=np.float64)
