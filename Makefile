@@ -9,7 +9,8 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml $(wildcard plugins/*/pyproject.toml)
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
-	$(VENV)/bin/pip install -q -e '.[mpi,bench]' $(foreach p,$(PLUGINS),-e '$(p)[test]') pytest
+	$(VENV)/bin/pip install -q -e '.[mpi,bench]' $(foreach p,$(PLUGINS),-e '$(p)[test]') pytest \
+		'setuptools>=70.1'
 	touch $(STAMP)
 
 demo: $(STAMP)
@@ -19,13 +20,12 @@ test: $(STAMP)
 	$(VENV)/bin/python -m pytest -m "not slow"
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
-# meta-distribution (packaging/pdps). All are built in .venv with one setuptools (an isolated build
+# meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build
 # environment per wheel takes a minute instead of seconds). Old build/ folders go first: setuptools
 # packs whatever a previous build left there, modules since moved or deleted included.
 DIST ?= dist
 DISTRIBUTIONS := ./ $(PLUGINS) packaging/pdps/
 dist: $(STAMP)
-	$(VENV)/bin/pip install -q 'setuptools>=70.1'
 	rm -rf $(addsuffix build,$(DISTRIBUTIONS))
 	rm -f $(DIST)/*.whl
 	$(VENV)/bin/pip wheel -q --no-deps --no-build-isolation --wheel-dir $(DIST) $(DISTRIBUTIONS)
