@@ -14,7 +14,8 @@ conftest is needed)::
 What is here:
 
 - ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
-  the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps.
+  the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps;
+  ``bench_data``: the benchmark scenes' data files (dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
   (create_particle, pair_style, fixes...).
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
@@ -142,6 +143,64 @@ def fluid(n, density, *, seed=DEFAULT_SEED, min_distance=0.0, dimension=3):
         raise ValueError(f"could not place {n} particles {min_distance} apart at density {density}")
     return x, length
 
+
+
+def bench_data(kind, path):
+    """The data file of a benchmark scene, byte for byte as the benchmark kit's ``make_data.py``
+    writes it for LAMMPS (so both engines read the same particles); returns ``path``.
+
+    - ``dpd_gw``: Groot-Warren fluid, uniform random positions at rho = 3 in a cube of side 22
+      (31,944 particles, seed 7).
+    - ``gran_box``: 4,000 spheres of diameter 1 and mass 1 (sphere style) on a 20 x 20 x 10 lattice of
+      spacing 1.1, jittered by +-0.04 (seed 3), above the floor of a 22.2 x 22.2 x 40 box.
+    - ``lj_fcc``: LAMMPS's in.lj benchmark, fcc at reduced density 0.8442, 20^3 cells (32,000
+      atoms), Gaussian velocities with zero total momentum scaled to T = 1.44 (seed 87287).
+    """
+    if kind == "dpd_gw":
+        rng = np.random.default_rng(7)
+        length = 22.0
+        x = rng.uniform(0, length, size=(int(round(3 * length ** 3)), 3))
+        _bench_atomic(path, [0, 0, 0], [length] * 3, x)
+    elif kind == "gran_box":
+        x = _bench_lattice(20, 20, 10, 1.1) + np.array([0.6, 0.6, 1.0])
+        x += np.random.default_rng(3).uniform(-0.04, 0.04, size=x.shape)
+        _bench_sphere(path, [0, 0, 0], [22.2, 22.2, 40.0], x, diameter=1.0, density=1.9098593)
+    elif kind == "lj_fcc":
+        a = (4 / 0.8442) ** (1 / 3)
+        basis = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+        x = ((_bench_lattice(20, 20, 20, 1.0)[:, None, :] + basis[None]) * a).reshape(-1, 3)
+        v = np.random.default_rng(87287).normal(size=x.shape)
+        v -= v.mean(axis=0)
+        v *= np.sqrt(3 * 1.44 / (v ** 2).sum(axis=1).mean())
+        _bench_atomic(path, [0, 0, 0], [20 * a] * 3, x, velocities=v)
+    else:
+        raise ValueError(f"unknown benchmark scene {kind!r} (dpd_gw, gran_box, lj_fcc)")
+    return path
+
+
+def _bench_lattice(nx, ny, nz, spacing):
+    cells = np.mgrid[0:nx, 0:ny, 0:nz].reshape(3, -1).T.astype(float)
+    return cells * spacing
+
+
+def _bench_header(n, lo, hi):
+    lines = ["generated for benchmarking", "", f"{n} atoms", "1 atom types", ""]
+    return lines + [f"{lo[d]} {hi[d]} {a}lo {a}hi" for d, a in enumerate("xyz")]
+
+
+def _bench_atomic(path, lo, hi, x, velocities=None):
+    lines = _bench_header(len(x), lo, hi) + ["", "Masses", "", "1 1.0", "", "Atoms # atomic", ""]
+    lines += [f"{i} 1 {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(x, 1)]
+    if velocities is not None:
+        lines += ["", "Velocities", ""]
+        lines += [f"{i} {v[0]:.10f} {v[1]:.10f} {v[2]:.10f}" for i, v in enumerate(velocities, 1)]
+    Path(path).write_text("\n".join(lines) + "\n")
+
+
+def _bench_sphere(path, lo, hi, x, *, diameter, density):
+    lines = _bench_header(len(x), lo, hi) + ["", "Atoms # sphere", ""]
+    lines += [f"{i} 1 {diameter} {density} {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(x, 1)]
+    Path(path).write_text("\n".join(lines) + "\n")
 
 # ---- checks -------------------------------------------------------------------------------------
 def by_tag(sim, values):

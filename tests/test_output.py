@@ -7,6 +7,7 @@ import csv
 import io
 import re
 
+import matplotlib.image          # the core's [bench] extra, installed by make
 import pytest
 
 from pdps_core.output import output as output_module
@@ -166,7 +167,6 @@ def test_read_log_finds_the_tables_pdps_writes(make_sim, tmp_path):
 
 
 def test_figure_has_one_panel_per_column_on_a_shared_step_axis(tmp_path):
-    pytest.importorskip("matplotlib")
     (tmp_path / "log.x").write_text(LOG)
     table = read_log(str(tmp_path / "log.x"))
     figure = build_figure(table, ["Temp", "PotEng"])
@@ -180,9 +180,6 @@ def test_figure_has_one_panel_per_column_on_a_shared_step_axis(tmp_path):
 
 
 def test_pdps_plot_writes_a_png_with_a_panel_per_column(pdps_cli, tmp_path, capsys):
-    pytest.importorskip("matplotlib")
-    import matplotlib.image
-
     from pdps_core import cli
     from pdps_core.output import plot
     assert pdps_cli(FLUID + "run 10").returncode == 0

@@ -12,17 +12,13 @@ float32 and float64 could put a pair in neighboring bins.
 import itertools
 import math
 
+import freud                # the [test] extra, installed by make
 import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
 from pdps_core.testing import make_box
 
-try:
-    import freud
-except ImportError:         # a test-only dependency: pip install -e plugins/compute_rdf[test]
-    freud = None
-needs_freud = pytest.mark.skipif(freud is None, reason="freud-analysis is not installed")
 
 
 def snapshot(positions, types, length, dimension=3, boundary="p p p", ntypes=None, extra=""):
@@ -96,7 +92,6 @@ def direct_coordination(x, length, periodic, dimension, cutoff, upper_edges, cen
     return counts / len(centres)
 
 
-@needs_freud
 @pytest.mark.parametrize("dimension, seed, n, length, cutoff, nbin",
                          [(3, 11, 150, 6.0, 2.5, 25), (2, 2, 150, 10.0, 4.0, 20)])
 def test_g_and_coordination_agree_with_freud(dimension, seed, n, length, cutoff, nbin):
@@ -118,7 +113,6 @@ def test_g_and_coordination_agree_with_freud(dimension, seed, n, length, cutoff,
     assert counts.sum() > 1000
 
 
-@needs_freud
 def test_unlike_types_agree_with_freud_and_each_other():
     n, length, cutoff, nbin = 200, 6.0, 2.5, 25
     x, types = random_snapshot(3, n, length, ntypes=2)

