@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Compute, ScriptError
-from pdps_core.testing import register_styles
+from pdps_core.testing import Record, by_tag, register_styles
 
 
 class StepArray(Compute):
@@ -115,16 +115,36 @@ def test_rdf_average_is_the_mean_of_the_snapshots(sim):
     np.testing.assert_allclose(sim.analyzes["1"].array(sim), sum(snapshots) / 3, rtol=1e-14, atol=1e-15)
 
 
-def test_energy_and_virial_are_computed_on_sampled_steps_only(sim):
-    """Pressure needs the virial; thermo 0 asks for it only at a run's ends, the analyze on its
-    sampled steps (the output flags read its needs)."""
-    sim.command("pair_style dpd 0.0 1.0 1\npair_coeff * * 25 0\ncompute p all pressure\n"
-                "analyze 1 all ave/time 1 1 3 c_p\nrun 7")
-    assert sim.analyzes["1"].scalar(sim) != 0.0
+def pressure_at_step(record, types, step, a=25.0, cutoff=1.0):
+    """(sum m v^2 + sum_pairs r F) / 3V from the state ``test/record`` kept after ``step``, with the
+    conservative DPD force F = a (1 - r/rc) written out: particles 1 and 2 (the first two ids) are
+    the only pair closer than the cutoff."""
+    x, v = record.x[step - 1], record.v[step - 1]
+    m = np.where(types == 2, 3.0, 1.0)
+    r = float(np.linalg.norm(x[1] - x[0]))
+    assert r < cutoff and sum(np.linalg.norm(x[i] - x[j]) < 2.0 for i in range(8) for j in range(i)) == 1
+    return ((m * (v ** 2).sum(axis=1)).sum() + a * (1.0 - r / cutoff) * r) / (3.0 * 1000.0)
 
 
-def test_fix_spelling_gets_the_virial_on_its_sampled_steps(sim):
-    sim.command("compute p all pressure\nfix 2 all ave/time 1 1 3 c_p\nrun 7")
+@pytest.mark.parametrize("spelling", ["analyze", "fix"])
+def test_pressure_average_has_the_virial_of_its_sampled_steps(sim, spelling):
+    """Pressure needs the virial; thermo 0 asks for it only at a run's ends, the average on its
+    sampled steps (the output flags read its needs). Sampling every 3rd step of 7 with nrepeat 1
+    leaves the pressure of step 6, kinetic part and the one interacting pair's r F written out."""
+    register_styles(Record)
+    order = np.argsort(sim.tag)
+    sim.x[order[1]] = sim.x[order[0]] + [0.6, 0.0, 0.0]        # one pair inside the cutoff
+    sim.command(f"pair_style dpd 0.0 1.0 1\npair_coeff * * 25 0\ncompute p all pressure\n"
+                f"fix r all test/record\n{spelling} 2 all ave/time 1 1 3 c_p\nrun 7")
+    record, types = sim.fixes["r"], by_tag(sim, sim.type)
+    expected = pressure_at_step(record, types, 6)
+    got = (sim.analyzes if spelling == "analyze" else sim.fixes)["2"].scalar(sim)
+    assert got == pytest.approx(expected, rel=1e-12)
+    # the virial is a quarter of it, and steps 3 and 7 differ by 1 %: a stale or missing virial fails
+    kinetic = (np.where(types == 2, 3.0, 1.0) * (record.v[5] ** 2).sum(axis=1)).sum() / 3000.0
+    assert abs(expected - kinetic) > 0.1 * expected
+    assert abs(pressure_at_step(record, types, 3) - expected) > 1e-6 * expected
+    assert abs(pressure_at_step(record, types, 7) - expected) > 1e-6 * expected
 
 
 def test_outputs_are_zero_before_the_first_average(sim):
