@@ -24,7 +24,7 @@ from .neighbor.neighbor import Neighbor
 from .output.output import Output
 from .output.thermo import keyword_value
 from .run.timers import Timers
-from .script.lexer import logical_lines, split_words, strip_comment, substitute
+from .script.lexer import logical_lines, read_text, split_words, strip_comment, substitute
 from .script.variables import Variables
 from .state.groups import Groups
 from .state.particles import Particles
@@ -114,11 +114,7 @@ class Simulation:
     # ---- scripts ----------------------------------------------------------------------------------
     def file(self, path):
         """Run a whole script file."""
-        try:
-            with open(path) as handle:
-                text = handle.read()
-        except OSError as exc:
-            raise ScriptError(f"cannot read input script {path}: {exc.strerror}") from None
+        text = read_text(path, "input script")
         here = os.path.dirname(os.path.abspath(path))
         self._script(text, os.path.basename(path) if self.source is None else path, here)
         return self

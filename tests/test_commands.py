@@ -387,7 +387,7 @@ class TestReadData:
         ("Atoms\n\n1 1 1 1 1\n", 11, "header says 2 atoms but the Atoms section has 1"),
         ("Atoms\n\n1 1 1 1 1\n1 1 2 2 2\n", 12, "atom id 1 appears twice in Atoms (first on line 11)"),
         ("Atoms\n\n1 1 1 1 1\n2 3 2 2 2\n", 12, "atom type 3 is out of range 1..2"),
-        ("Atoms\n\n1 1 1 1 1\n2 1 nan 2 2\n", 12, "non-finite position: 2 1 nan 2 2"),
+        ("Atoms\n\n1 1 1 1 1\n2 1 nan 2 2\n", 12, "position must be finite and within +-1e+150: 2 1 nan 2 2"),
         ("Masses\n\n1\n\nAtoms\n\n1 1 1 1 1\n2 1 2 2 2\n", 11, "cannot read Masses line: 1"),
         ("Masses\n\n3 1.0\n\nAtoms\n\n1 1 1 1 1\n2 1 2 2 2\n", 11, "Masses: type 3 is out of range 1..2"),
         ("Atoms\n\n1 1 1 1 1\n2 1 2 2 2\n\nVelocities\n\n1 0 0 0\n3 0 0 0\n", 17,
@@ -421,7 +421,7 @@ class TestReadData:
     def test_sphere_diameter_must_be_positive(self, sim, tmp_path):
         (tmp_path / "bad.data").write_text(HEADER + "Atoms # sphere\n\n1 1 1 1 1 1 1\n2 1 0 1 2 2 2\n")
         exc = fails(sim, "particle_style sphere\nread_data bad.data", "read_data")
-        assert exc.message == f"{tmp_path / 'bad.data'}:12: diameter and density must be > 0: 2 1 0 1 2 2 2"
+        assert exc.message == f"{tmp_path / 'bad.data'}:12: diameter and density must be finite numbers > 0: 2 1 0 1 2 2 2"
 
     def test_other_errors(self, sim, tmp_path):
         exc = fails(sim, "read_data missing.data", "read_data")

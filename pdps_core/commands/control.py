@@ -2,6 +2,7 @@
 thermo_style, log."""
 
 from ..errors import ScriptError
+from ..state import limits
 from ..script.lexer import substitute
 from . import command
 from .words import count, integer
@@ -35,13 +36,17 @@ def include(sim, args):
 @command("run")
 def run(sim, args):
     count(args, 1, "run N")
-    sim.run_steps(integer(args[0], "N", low=0))
+    nsteps = integer(args[0], "N", low=0, high=limits.MAX_RUN)
+    if sim.step + nsteps > limits.MAX_STEP:
+        raise ScriptError(f"run {nsteps} from step {sim.step} goes past the last step a 64-bit "
+                          f"counter holds ({limits.MAX_STEP})")
+    sim.run_steps(nsteps)
 
 
 @command("reset_timestep")
 def reset_timestep(sim, args):
     count(args, 1, "reset_timestep N")
-    sim.step = integer(args[0], "timestep", low=0)
+    sim.step = integer(args[0], "timestep", low=0, high=limits.MAX_STEP)
     sim.energy_step = sim.virial_step = None
 
 

@@ -3,6 +3,7 @@
 import numpy as np
 
 from ..errors import ScriptError
+from ..state import limits
 from ..state.box import Box
 from ..styles import registry
 from . import command
@@ -25,23 +26,20 @@ def create_box(sim, args):
     count(args, 2, "create_box NTYPES REGION-ID")
     if sim.box is not None:
         raise ScriptError("the simulation box already exists")
-    ntypes = integer(args[0], "ntypes", low=1)
+    ntypes = integer(args[0], "ntypes", low=1, high=limits.MAX_TYPES)
     lo, hi = sim.region(args[1]).bounds()
     make_box(sim, lo, hi, ntypes)
 
 
 def make_box(sim, lo, hi, ntypes):
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
-        raise ScriptError("box bounds must be finite")
     if sim.dimension == 2:
         if sim.periodicity[2] != "p":
             raise ScriptError("a 2-d simulation needs a periodic z boundary (boundary x y p)")
         if not lo[2] < 0 < hi[2]:
             lo[2], hi[2] = -0.5, 0.5
-    for axis, a, b in zip("xyz", lo, hi):
-        if not a < b:
-            raise ScriptError(f"box {axis} bounds must have lo < hi (got {a:g} {b:g})")
+    lo, hi = limits.check_box(lo, hi)
+    limits.check_ntypes(ntypes)
     sim.box = Box(lo, hi, [p == "p" for p in sim.periodicity], sim.dimension)
     sim.ntypes = ntypes
     sim.type_mass = np.full(ntypes + 1, np.nan)

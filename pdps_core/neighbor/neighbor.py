@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ScriptError
+from ..state import limits
 from .kernels import bin_particles, build_list, max_displacement_sq
 
 
@@ -141,7 +142,7 @@ class Neighbor:
         """Permutation of owned particles that groups them by cell (cells of half the cutoff)."""
         self.last_sort = step
         binsize = max(self.cutghost(), 1e-12) * 0.5
-        nbins = np.maximum(1, np.floor(box.length / binsize)).astype(np.int64)
+        nbins = limits.bin_grid(box.length, binsize)
         if box.dimension == 2:
             nbins[2] = 1
         cell, _, order = bin_particles(particles.x, particles.nlocal, box.lo, box.length / nbins, nbins)
@@ -212,7 +213,7 @@ class Neighbor:
             raise ScriptError("neighbor list cutoff must be > 0")
         lo = box.lo - cutmax
         extent = box.length + 2 * cutmax
-        nbins = np.maximum(1, np.floor(extent / cutmax)).astype(np.int64)
+        nbins = limits.bin_grid(extent, cutmax)
         if box.dimension == 2:
             nbins[2] = 1
             extent[2] = max(extent[2], 1.0)

@@ -11,6 +11,7 @@ import time
 
 from .progress import Progress
 from .thermo import Thermo
+from ..errors import ScriptError
 from .thermo_csv import ThermoCSV
 
 
@@ -32,9 +33,17 @@ class Output:
 
     # ---- screen and log -------------------------------------------------------------------------
     def open_log(self, path):
+        """Switch the log to ``path``; one that cannot be opened is a one-line error and the log
+        written so far stays as it is."""
+        handle = None
+        if self.root:
+            try:
+                handle = open(path, "w")
+            except OSError as exc:
+                raise ScriptError(f"cannot open log file {path}: {exc.strerror}") from None
         self.close_log()
         if self.root:
-            self.log = open(path, "w")
+            self.log = handle
             if self.csv_follows_log:
                 self.csv.use(f"{path}.csv")
 

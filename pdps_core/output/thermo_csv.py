@@ -15,6 +15,8 @@ is overwritten. Nothing is written before the first run. Rows are flushed with t
 import csv
 import os
 
+from ..errors import ScriptError
+
 
 def numbered(path, index):
     """``log.pdps.csv`` -> ``log.pdps.2.csv`` for index 2; index 1 is the path itself."""
@@ -51,7 +53,10 @@ class ThermoCSV:
         if self.index == 1:
             self._remove_stale()
         self.current = numbered(self.path, self.index)
-        self.handle = open(self.current, "w", newline="")
+        try:
+            self.handle = open(self.current, "w", newline="")
+        except OSError as exc:
+            raise ScriptError(f"cannot open thermo CSV file {self.current}: {exc.strerror}") from None
         self.writer = csv.writer(self.handle)
         self.writer.writerow(names)
         self.names = list(names)

@@ -18,6 +18,7 @@ import numpy as np
 import pluggy
 
 from ..errors import SimulationError
+from ..state import limits
 from .hookspec import HOOKS, TimestepSpec
 from .timers import timed_hooks
 
@@ -100,6 +101,7 @@ class Verlet:
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
 
+        limits.check_images(sim.box, sim.neighbor.cutghost())
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:

@@ -124,3 +124,18 @@ def split_words(text):
         if word or quoted:
             words.append("".join(word))
     return words
+
+
+def read_text(path, what):
+    """The text of a file a script names (``what``: "input script", "data file"), as UTF-8; a file
+    that cannot be read or is not text is a one-line error naming it and, for bad bytes, the line."""
+    try:
+        with open(path, "rb") as handle:
+            raw = handle.read()
+    except OSError as exc:
+        raise ScriptError(f"cannot read {what} {path}: {exc.strerror}") from None
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw.count(b"\n", 0, exc.start) + 1
+        raise ScriptError(f"{what} {path} is not UTF-8 text: byte 0x{raw[exc.start]:02x} on line {line}") from None

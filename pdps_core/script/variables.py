@@ -43,6 +43,7 @@ class Variables:
     def __init__(self, reader):
         self._vars = {}
         self._reader = reader
+        self._evaluating = []      # equal-style variables being evaluated, to catch cycles
 
     def __contains__(self, name):
         return name in self._vars
@@ -101,14 +102,21 @@ class Variables:
             return _format(self.evaluate(name[1:-1]))
         var = self._get(name)
         if var.style == "equal":
-            return _format(self.evaluate(var.values[0], name))
+            return _format(self.value(name))
         return var.values[var.index]
 
     def value(self, name):
         """The value as a number, as ``v_name`` reads it."""
         var = self._get(name)
         if var.style == "equal":
-            return self.evaluate(var.values[0], name)
+            if name in self._evaluating:
+                cycle = " -> ".join(self._evaluating[self._evaluating.index(name):] + [name])
+                raise ScriptError(f"variable {name} refers to itself ({cycle})")
+            self._evaluating.append(name)
+            try:
+                return self.evaluate(var.values[0], name)
+            finally:
+                self._evaluating.pop()
         text = var.values[var.index]
         try:
             return float(text)

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import ScriptError
+from . import limits
+from ..script.lexer import read_text
 
 COLUMNS = {"atomic": 5, "sphere": 7}
 SECTIONS = ("Masses", "Atoms", "Velocities")
@@ -33,11 +35,7 @@ class DataFile:
 
 
 def read_data_file(path, particle_style):
-    try:
-        with open(path) as handle:
-            lines = handle.read().splitlines()
-    except OSError as exc:
-        raise ScriptError(f"cannot read data file {path}: {exc.strerror}") from None
+    lines = read_text(path, "data file").splitlines()
     name = path
 
     def fail(number, message):
@@ -55,6 +53,7 @@ def read_data_file(path, particle_style):
         if not text:
             continue
         words = text.split()
+        text = " ".join(words)          # tabs and repeated spaces separate words alike
         head = words[0]
         if head[0].isalpha():
             # only section names start with a letter (LAMMPS's rule); Bonds, Pair Coeffs, ... are not read
@@ -70,8 +69,12 @@ def read_data_file(path, particle_style):
             try:
                 if text.endswith("atoms"):
                     natoms = int(words[0])
+                    if not 0 <= natoms <= limits.MAX_TAG:
+                        fail(number, f"number of atoms must be from 0 to {limits.MAX_TAG} (got {words[0]})")
                 elif text.endswith("atom types"):
                     ntypes = int(words[0])
+                    if not 1 <= ntypes <= limits.MAX_TYPES:
+                        fail(number, f"number of atom types must be from 1 to {limits.MAX_TYPES} (got {words[0]})")
                 elif len(words) == 4 and words[2][1:] == "lo" and words[3][1:] == "hi":
                     d = "xyz".index(words[2][0])
                     lo[d], hi[d] = float(words[0]), float(words[1])
@@ -87,7 +90,10 @@ def read_data_file(path, particle_style):
             continue
         try:
             if section == "Masses":
-                masses[int(words[0])] = (number, float(words[1]))
+                mass = float(words[1])
+                if not (np.isfinite(mass) and mass > 0):
+                    fail(number, f"mass must be a finite number > 0 (got {words[1]})")
+                masses[int(words[0])] = (number, mass)
             elif section == "Atoms":
                 width = COLUMNS[particle_style]
                 if len(words) not in (width, width + 3):
@@ -97,7 +103,13 @@ def read_data_file(path, particle_style):
             elif section == "Velocities":
                 if len(words) < 4:
                     fail(number, f"expected id vx vy vz (got {len(words)} values)")
-                velocities[int(words[0])] = (number, [float(w) for w in words[1:4]])
+                tag = int(words[0])
+                value = [float(w) for w in words[1:4]]
+                if not np.isfinite(value).all():
+                    fail(number, f"non-finite velocity: {text}")
+                if tag in velocities:
+                    fail(number, f"Velocities: atom {tag} appears twice (first on line {velocities[tag][0]})")
+                velocities[tag] = (number, value)
         except (ValueError, IndexError):
             fail(number, f"cannot read {section} line: {text}")
     if natoms is None or ntypes is None:
@@ -118,23 +130,27 @@ def read_data_file(path, particle_style):
     seen = {}
     for k, (number, words) in enumerate(atoms):
         try:
-            tags[k], types[k] = int(words[0]), int(words[1])
+            tag, kind = int(words[0]), int(words[1])
             if particle_style == "sphere":
                 diameter[k], density[k] = float(words[2]), float(words[3])
                 coords = words[4:7]
             else:
                 coords = words[2:5]
             x[k] = [float(w) for w in coords]
-            if len(words) == COLUMNS[particle_style] + 3:
-                images[k] = [int(w) for w in words[-3:]]
+            image = [int(w) for w in words[-3:]] if len(words) == COLUMNS[particle_style] + 3 else [0, 0, 0]
         except ValueError:
             fail(number, f"cannot read Atoms line: {' '.join(words)}")
-        if not np.isfinite(x[k]).all():
-            fail(number, f"non-finite position: {' '.join(words)}")
-        if not 1 <= types[k] <= ntypes:
-            fail(number, f"atom type {types[k]} is out of range 1..{ntypes}")
-        if diameter[k] <= 0 or density[k] <= 0:
-            fail(number, f"diameter and density must be > 0: {' '.join(words)}")
+        if not 1 <= tag <= limits.MAX_TAG:
+            fail(number, f"atom id must be from 1 to {limits.MAX_TAG} (got {words[0]})")
+        if not 1 <= kind <= ntypes:
+            fail(number, f"atom type {words[1]} is out of range 1..{ntypes}")
+        if any(abs(m) > limits.MAX_IMAGE for m in image):
+            fail(number, f"image flags must fit in 32 bits (got {' '.join(words[-3:])})")
+        tags[k], types[k], images[k] = tag, kind, image
+        if not np.isfinite(x[k]).all() or np.abs(x[k]).max() > limits.MAX_COORDINATE:
+            fail(number, f"position must be finite and within +-{limits.MAX_COORDINATE:g}: {' '.join(words)}")
+        if not (np.isfinite(diameter[k]) and np.isfinite(density[k]) and diameter[k] > 0 and density[k] > 0):
+            fail(number, f"diameter and density must be finite numbers > 0: {' '.join(words)}")
         if tags[k] in seen:
             fail(number, f"atom id {tags[k]} appears twice in Atoms (first on line {seen[tags[k]]})")
         seen[tags[k]] = number
@@ -146,4 +162,16 @@ def read_data_file(path, particle_style):
             if tag not in index:
                 fail(number, f"Velocities name atom {tag}, which is not in Atoms")
             v[index[tag]] = value
+    try:
+        limits.check_box(lo, hi, "box")
+    except ScriptError as exc:
+        fail(1, str(exc))
+    length = hi - lo
+    for d, axis in enumerate("xyz"):
+        # positions a periodic box wraps must leave image flags that fit in 32 bits
+        turns = np.floor((x[:, d] - lo[d]) / length[d]) + images[:, d]
+        if n and np.abs(turns).max() > limits.MAX_IMAGE:
+            k = int(np.argmax(np.abs(turns)))
+            fail(atoms[k][0], f"{axis} = {x[k, d]:g} is {abs(turns[k]):.3g} box lengths away: its image "
+                              "flag would not fit in 32 bits")
     return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v)

@@ -1,0 +1,147 @@
+"""Bad input found by fuzzing (issue 10), each with its reproducer: one line naming file, line,
+command and value, exit code 1, never a crash, a hang, a traceback or silent garbage."""
+
+import pytest
+
+from pdps_core.testing import write_data
+
+BOX = "region box block 0 1 0 1 0 1\ncreate_box 1 box\nmass 1 1.0\n"
+
+
+def one_line(done, expected):
+    assert done.returncode == 1, done.stdout + done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert lines == [expected], done.stderr
+
+
+# ---- geometry and counts ----------------------------------------------------------------------
+def test_a_huge_box_with_dem_bins_coarsely_instead_of_crashing(pdps_cli):
+    done = pdps_cli("""
+        particle_style sphere
+        region box block 0 1e26 0 1e26 0 1e26
+        create_box 1 box
+        create_particle 1 single 1 1 1
+        create_particle 1 single 1.5 1 1
+        pair_style dem/lsd 0.3 1.0
+        pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1
+        run 2
+    """)
+    assert done.returncode == 0, done.stderr
+
+
+def test_a_box_far_smaller_than_the_cutoff_is_refused_at_the_run(pdps_cli):
+    done = pdps_cli("""
+        region box block 0 1e-9 0 1e-9 0 1e-9
+        create_box 1 box
+        mass 1 1
+        create_particle 1 single 5e-10 5e-10 5e-10
+        pair_style lj/cut 2.5
+        pair_coeff * * 1 1
+        run 1
+    """)
+    one_line(done, "ERROR: in.test:8: run: the cutoff plus skin 2.8 spans 2.8e+09 periodic images of the "
+                   "box (length 1e-09 along x; at most 64): make the box larger or the cutoff smaller")
+
+
+def test_a_nanometre_box_without_pair_forces_runs(pdps_cli):
+    done = pdps_cli("region box block 0 1e-9 0 1e-9 0 1e-9\ncreate_box 1 box\nmass 1 1\nrun 10\n")
+    assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("bounds, message", [
+    ("0 1e200 0 1 0 1", "box x bounds 0 1e+200 are beyond +-1e+150, where squared distances overflow"),
+    ("1e6 1.0000000000000002e6 0 1 0 1", "box x length 2.32831e-10 is too small to resolve at 1e+06 (at least 1e-12 of it)"),
+])
+def test_boxes_that_cannot_hold_positions(pdps_cli, bounds, message):
+    one_line(pdps_cli(f"region box block {bounds}\ncreate_box 1 box\n"),
+             f"ERROR: in.test:2: create_box: {message}")
+
+
+@pytest.mark.parametrize("line, message", [
+    ("run 99999999999999999999999999", "run: N must be <= 2147483647 (got 99999999999999999999999999)"),
+    ("run 2147483648", "run: N must be <= 2147483647 (got 2147483648)"),
+    ("reset_timestep 9223372036854775808", "reset_timestep: timestep must be <= 9223372036854775807 (got 9223372036854775808)"),
+])
+def test_counts_beyond_their_integer_ranges(pdps_cli, line, message):
+    one_line(pdps_cli(BOX + line + "\n"), f"ERROR: in.test:4: {message}")
+
+
+def test_a_run_that_would_overflow_the_step_counter(pdps_cli):
+    one_line(pdps_cli(BOX + "reset_timestep 9223372036854775000\nrun 1000\n"),
+             "ERROR: in.test:5: run: run 1000 from step 9223372036854775000 goes past the last step a "
+             "64-bit counter holds (9223372036854775807)")
+
+
+@pytest.mark.parametrize("ntypes", ["2147483648", "1001", "99999999999999999999"])
+def test_create_box_with_too_many_types(pdps_cli, ntypes):
+    one_line(pdps_cli(f"region box block 0 1 0 1 0 1\ncreate_box {ntypes} box\n"),
+             f"ERROR: in.test:2: create_box: ntypes must be <= 1000 (got {ntypes})")
+
+
+# ---- files, decoding, recursion ---------------------------------------------------------------
+def test_a_script_that_is_not_utf8(tmp_path, pdps_cli):
+    (tmp_path / "in.bytes").write_bytes(b"region box block 0 1 0 1 0 1\ncreate_box 1 box\nprint \"\xff\xfe\"\n")
+    done = pdps_cli("include in.bytes\n")
+    one_line(done, f"ERROR: in.test:1: include: input script {tmp_path / 'in.bytes'} is not UTF-8 text: "
+                   "byte 0xff on line 3")
+
+
+def test_a_data_file_that_is_not_utf8(tmp_path, pdps_cli):
+    (tmp_path / "bad.data").write_bytes(b"title\n\n1 atoms\n1 atom types\n\xe9\n")
+    one_line(pdps_cli("read_data bad.data\n"),
+             f"ERROR: in.test:1: read_data: data file {tmp_path / 'bad.data'} is not UTF-8 text: byte 0xe9 on line 5")
+
+
+@pytest.mark.parametrize("path, reason", [(".", "Is a directory"),
+                                          ("/nonexistent/x.log", "No such file or directory")])
+def test_a_log_that_cannot_be_opened_keeps_the_log_so_far(pdps_cli, tmp_path, path, reason):
+    done = pdps_cli(f"print hello\nlog {path}\n", "-log", "first.log")
+    one_line(done, f"ERROR: in.test:2: log: cannot open log file {path}: {reason}")
+    assert "hello" in (tmp_path / "first.log").read_text()
+
+
+def test_a_variable_that_refers_to_itself(pdps_cli):
+    one_line(pdps_cli("variable a equal v_a+1\nprint ${a}\n"),
+             "ERROR: in.test:2: print: variable a refers to itself (a -> a)")
+
+
+def test_variables_in_a_cycle(pdps_cli):
+    one_line(pdps_cli("variable a equal v_b*2\nvariable b equal v_c\nvariable c equal v_a\nprint ${a}\n"),
+             "ERROR: in.test:4: print: variable a refers to itself (a -> b -> c -> a)")
+
+
+# ---- data files ------------------------------------------------------------------------------
+def data_text(atoms, header="2 atoms\n1 atom types\n", masses="1 1.0\n", extra=""):
+    return (f"title\n\n{header}\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\nMasses\n\n{masses}\n"
+            f"Atoms # atomic\n\n{atoms}{extra}")
+
+
+@pytest.mark.parametrize("atoms, masses, extra, line, message", [
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 inf\n", "", 12, "mass must be a finite number > 0 (got inf)"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 0\n", "", 12, "mass must be a finite number > 0 (got 0)"),
+    ("0 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16, "atom id must be from 1 to 4611686018427387904 (got 0)"),
+    ("-3 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16, "atom id must be from 1 to 4611686018427387904 (got -3)"),
+    ("99999999999999999999 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "atom id must be from 1 to 4611686018427387904 (got 99999999999999999999)"),
+    ("1 4294967297 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16, "atom type 4294967297 is out of range 1..1"),
+    ("1 1 1 1 1 0 0 9999999999\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "image flags must fit in 32 bits (got 0 0 9999999999)"),
+    ("1 1 1e300 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "position must be finite and within +-1e+150: 1 1 1e300 1 1"),
+    ("1 1 1e100 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "x = 1e+100 is 1e+99 box lengths away: its image flag would not fit in 32 bits"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 0 0 0\n2 0 0 0\n1 1 1 1\n", 23,
+     "Velocities: atom 1 appears twice (first on line 21)"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 nan 0 0\n2 0 0 0\n", 21,
+     "non-finite velocity: 1 nan 0 0"),
+])
+def test_bad_values_in_data_files(tmp_path, pdps_cli, atoms, masses, extra, line, message):
+    (tmp_path / "bad.data").write_text(data_text(atoms, masses=masses, extra=extra))
+    one_line(pdps_cli("read_data bad.data\n"),
+             f"ERROR: in.test:1: read_data: {tmp_path / 'bad.data'}:{line}: {message}")
+
+
+def test_a_header_with_tabs_is_read(tmp_path, pdps_cli):
+    (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 2\n", header="2\tatoms\n1\tatom\ttypes\n"))
+    done = pdps_cli("read_data tabs.data\nrun 0\n")
+    assert done.returncode == 0, done.stderr
