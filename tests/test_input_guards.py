@@ -145,3 +145,93 @@ def test_a_header_with_tabs_is_read(tmp_path, pdps_cli):
     (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 2\n", header="2\tatoms\n1\tatom\ttypes\n"))
     done = pdps_cli("read_data tabs.data\nrun 0\n")
     assert done.returncode == 0, done.stderr
+
+
+# ---- restart files: intact, but holding bad values -------------------------------------------
+import io  # noqa: E402
+import json  # noqa: E402
+import zipfile  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+RESTART_SCRIPT = BOX + """
+create_particle 1 single 0.2 0.2 0.2
+create_particle 1 single 0.7 0.7 0.7
+pair_style lj/cut 0.5
+pair_coeff * * 1.0 0.3
+fix 1 all nve
+run 2
+write_restart good.restart
+"""
+
+
+def edited_restart(folder, header_edit=None, arrays_edit=None, raw_header=None):
+    """good.restart with its header or arrays changed, written as bad.restart."""
+    with zipfile.ZipFile(folder / "good.restart") as archive:
+        members = {name: archive.read(name) for name in archive.namelist()}
+    header = json.loads(members["header.json"])
+    if header_edit:
+        header_edit(header)
+    members["header.json"] = raw_header if raw_header is not None else json.dumps(header).encode()
+    if arrays_edit:
+        for name, values in arrays_edit.items():
+            buffer = io.BytesIO()
+            np.lib.format.write_array(buffer, values(np.lib.format.read_array(io.BytesIO(members[f"{name}.npy"]))))
+            members[f"{name}.npy"] = buffer.getvalue()
+    with zipfile.ZipFile(folder / "bad.restart", "w") as archive:
+        for name, data in members.items():
+            archive.writestr(name, data)
+
+
+def set_field(path, value):
+    def edit(header):
+        record = header
+        for key in path[:-1]:
+            record = record[key]
+        record[path[-1]] = value
+    return edit
+
+
+@pytest.mark.parametrize("edit, message", [
+    (set_field(["dimension"], 0), "field dimension must be 2 or 3 (got 0)"),
+    (set_field(["dimension"], 5), "field dimension must be 2 or 3 (got 5)"),
+    (set_field(["neighbor", "every"], 0), "field every must be an integer >= 1 (got 0)"),
+    (set_field(["neighbor", "skin"], float("nan")), "field skin must be a finite number >= 0 (got nan)"),
+    (set_field(["dt"], -1.0), "field dt must be a finite number > 0 (got -1.0)"),
+    (set_field(["step"], -4), "field step must be from 0 to 9223372036854775807 (got -4)"),
+    (set_field(["particles", "nlocal"], float("inf")), "field nlocal must be a particle count (got inf)"),
+    (set_field(["particle_style"], "ellipsoid"), "field particle_style must be atomic or sphere (got 'ellipsoid')"),
+    (set_field(["ntypes"], 0), "field ntypes must be from 1 to 1000 (got 0)"),
+])
+def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
+    make_sim().command(RESTART_SCRIPT)
+    edited_restart(tmp_path, header_edit=edit)
+    sim = make_sim()
+    with pytest.raises(Exception) as caught:
+        sim.command("read_restart bad.restart")
+    assert str(caught.value) == f"<command>:1: read_restart: restart file bad.restart: {message}"
+
+
+@pytest.mark.parametrize("arrays, message", [
+    ({"particles/type": lambda t: np.full_like(t, 99)}, "particle types must be from 1 to 1 (got 99 to 99)"),
+    ({"particles/type": lambda t: np.zeros_like(t)}, "particle types must be from 1 to 1 (got 0 to 0)"),
+    ({"particles/tag": lambda t: np.ones_like(t)}, "particle ids must be unique (an id appears twice)"),
+    ({"particles/x": lambda x: x[:1]}, "array particles/x has shape (1, 3), not (2, 3)"),
+    ({"mass": lambda m: np.full_like(m, np.inf)}, "masses must be finite numbers > 0 (or unset)"),
+    ({"box/lo": lambda lo: np.full_like(lo, np.nan)}, "array box/lo holds non-finite values"),
+])
+def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
+    make_sim().command(RESTART_SCRIPT)
+    edited_restart(tmp_path, arrays_edit=arrays)
+    with pytest.raises(Exception) as caught:
+        make_sim().command("read_restart bad.restart")
+    assert str(caught.value) == f"<command>:1: read_restart: restart file bad.restart: {message}"
+
+
+def test_a_deeply_nested_restart_header_is_damaged_not_a_crash(tmp_path, make_sim):
+    make_sim().command(RESTART_SCRIPT)
+    edited_restart(tmp_path, raw_header=b"[" * 100000 + b"]" * 100000)
+    with pytest.raises(Exception) as caught:
+        make_sim().command("read_restart bad.restart")
+    assert str(caught.value) == ("<command>:1: read_restart: restart file bad.restart is truncated, "
+                                 "damaged or not a pdps restart file")

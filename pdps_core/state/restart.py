@@ -38,6 +38,7 @@ complete restart or the new one.
 import glob
 import io
 import json
+import math
 import os
 import re
 import zipfile
@@ -50,6 +51,7 @@ from .. import __version__
 from ..errors import ScriptError
 from ..neighbor.neighbor import Neighbor
 from ..styles import StyleArgs, registry
+from . import limits
 from .box import Box
 from .groups import Groups
 from .particles import CORE, Particles, Property
@@ -306,7 +308,7 @@ def read_file(path, shown=None):
                       for name in archive.namelist() if name.endswith(".npy")}
         except ScriptError:
             raise
-        except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile):
+        except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile, RecursionError):
             raise ScriptError(damaged) from None
     return header, arrays
 
@@ -323,14 +325,102 @@ def read_restart(sim, path, shown=None):
         sim.__dict__.clear()
         sim.__dict__.update(before)
         raise ScriptError(f"restart file {shown}: {exc.message}") from None
-    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError, OverflowError) as exc:
         sim.__dict__.clear()
         sim.__dict__.update(before)
         raise ScriptError(f"restart file {shown} is damaged ({type(exc).__name__}: {exc})") from None
 
 
+def _field(record, name, kind, check=None, expected=""):
+    """``record[name]`` of Python type ``kind`` (bool is not an int here) passing ``check``; else
+    one line naming the field and the value."""
+    value = record.get(name) if isinstance(record, dict) else None
+    good = isinstance(value, kind) and not (kind is not bool and isinstance(value, bool))
+    if good and isinstance(value, float):
+        good = math.isfinite(value)
+    if good and check is not None:
+        good = bool(check(value))
+    if not good:
+        raise ScriptError(f"field {name} must be {expected or kind.__name__} (got {value!r:.60})")
+    return value
+
+
+def _array(arrays, name, shape, finite=True):
+    values = arrays.get(name)
+    if values is None:
+        raise ScriptError(f"array {name} is missing")
+    if values.shape != shape:
+        raise ScriptError(f"array {name} has shape {values.shape}, not {shape}")
+    if finite and values.dtype.kind == "f" and not np.isfinite(values).all():
+        raise ScriptError(f"array {name} holds non-finite values")
+    return values
+
+
+def validate(header, arrays):
+    """Every value restore() uses, checked before any is: a damaged or hand-edited file is one line
+    naming the field, never a crash or a run on garbage."""
+    number = (int, float)
+    _field(header, "units", str, lambda u: u in UNITS, f"one of {', '.join(UNITS)}")
+    dimension = _field(header, "dimension", int, lambda d: d in (2, 3), "2 or 3")
+    _field(header, "periodicity", list, lambda p: len(p) == 3 and all(w in ("p", "f") for w in p),
+           "three of p, f")
+    _field(header, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
+           "three booleans")
+    ntypes = _field(header, "ntypes", int, lambda t: 1 <= t <= limits.MAX_TYPES, f"from 1 to {limits.MAX_TYPES}")
+    _field(header, "particle_style", str, lambda s: s in ("atomic", "sphere"), "atomic or sphere")
+    _field(header, "lattice", bool)
+    _field(header, "step", int, lambda n: 0 <= n <= limits.MAX_STEP, f"from 0 to {limits.MAX_STEP}")
+    _field(header, "time", number, None, "a finite number")
+    _field(header, "dt", number, lambda dt: dt > 0, "a finite number > 0")
+    _field(header, "pe", number, None, "a finite number")
+    _field(header, "virial", list, lambda v: len(v) == 6 and all(
+        isinstance(c, number) and math.isfinite(c) for c in v), "six finite numbers")
+    _field(header, "ghost_velocity", bool)
+    for name in ("energy_step", "virial_step"):
+        value = header.get(name)
+        if value is not None and not (isinstance(value, int) and not isinstance(value, bool)):
+            raise ScriptError(f"field {name} must be a step or null (got {value!r:.60})")
+    particles = _field(header, "particles", dict)
+    n = _field(particles, "nlocal", int, lambda k: 0 <= k <= limits.MAX_TAG, "a particle count")
+    _field(particles, "next_tag", int, lambda t: 1 <= t <= limits.MAX_TAG + 1, "an id")
+    _field(particles, "properties", list)
+    neighbor = _field(header, "neighbor", dict)
+    _field(neighbor, "skin", number, lambda s: s >= 0, "a finite number >= 0")
+    _field(neighbor, "every", int, lambda k: k >= 1, "an integer >= 1")
+    _field(neighbor, "delay", int, lambda k: k >= 0, "an integer >= 0")
+    _field(neighbor, "check", bool)
+    _field(neighbor, "sort_every", int, lambda k: k >= 0, "an integer >= 0")
+    _field(neighbor, "ago", int, lambda k: k >= 0, "an integer >= 0")
+    lo = _array(arrays, "box/lo", (3,))
+    hi = _array(arrays, "box/hi", (3,))
+    limits.check_box(lo, hi)
+    if dimension == 2 and header["periodicity"][2] != "p":
+        raise ScriptError("a 2-d box needs a periodic z boundary")
+    mass = _array(arrays, "mass", (ntypes + 1,), finite=False)
+    set_mass = mass[1:][~np.isnan(mass[1:])]
+    if not (np.isfinite(set_mass).all() and (set_mass > 0).all()):
+        raise ScriptError("masses must be finite numbers > 0 (or unset)")
+    for name, shape in (("tag", (n,)), ("type", (n,)), ("x", (n, 3)), ("v", (n, 3)), ("image", (n, 3))):
+        _array(arrays, f"particles/{name}", shape)
+    tags = arrays["particles/tag"]
+    if n and not (tags.min() >= 1 and tags.max() <= limits.MAX_TAG):
+        raise ScriptError(f"particle ids must be from 1 to {limits.MAX_TAG}")
+    if len(np.unique(tags)) != n:
+        raise ScriptError("particle ids must be unique (an id appears twice)")
+    types = arrays["particles/type"]
+    if n and not (types.min() >= 1 and types.max() <= ntypes):
+        raise ScriptError(f"particle types must be from 1 to {ntypes} (got {types.min()} to {types.max()})")
+    if np.abs(arrays["particles/x"]).max(initial=0.0) > limits.MAX_COORDINATE:
+        raise ScriptError(f"positions must be within +-{limits.MAX_COORDINATE:g}")
+    for name in ("rmass", "radius"):
+        values = arrays.get(f"particles/{name}")
+        if values is not None and n and not (np.isfinite(values).all() and (values > 0).all()):
+            raise ScriptError(f"per-atom {name} must be finite numbers > 0")
+
+
 def restore(sim, header, arrays):
     # every object restored into is new, so that read_restart can undo by resetting sim.__dict__
+    validate(header, arrays)
     sim.unit_system = UNITS[header["units"]]
     sim.dimension = int(header["dimension"])
     sim.periodicity = tuple(header["periodicity"])
