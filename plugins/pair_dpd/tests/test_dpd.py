@@ -386,9 +386,19 @@ class _Record(Fix):
 register_styles(_Record)
 
 
+# LAMMPS 22 Jul 2025 on the scene of the test below (the same lattice, every third id of mass 2, the
+# same drift, compute temp/com), 16 pairs of pair and velocity seeds: the thermal temperature averaged
+# over steps 101-600 is 1.0228 over the 16 runs; one run's average scatters about that by 0.0095
+# (standard deviation between seeds), so the 16-run mean carries 0.0024.
+LAMMPS_MIXTURE_T_101_600 = (1.0228, 0.0095, 0.0024)
+
+
 def test_momentum_is_conserved_and_thermostat_is_galilean_invariant(make_sim):
-    """512 particles, 200 steps: total momentum (with a net drift) stays put to round-off; the
-    thermal temperature relaxes to T whatever the drift."""
+    """512 particles, 600 steps: total momentum (with a net drift) stays put to round-off; the
+    thermal temperature relaxes to LAMMPS's (kT = 1 and the dt = 0.04 excess of velocity Verlet)
+    whatever the drift: within three standard deviations of one run's scatter and the calibration's
+    error (0.029), where a thermostat that counted the drift's kinetic energy as heat would leave
+    the thermal temperature 0.13 low."""
     sim = make_sim()
     sim.command("""
         units lj
@@ -406,17 +416,20 @@ def test_momentum_is_conserved_and_thermostat_is_galilean_invariant(make_sim):
         velocity all create 0.3 5 gaussian
     """)
     assert sim.nlocal == 512
-    sim.type[::3] = 2
+    assert np.array_equal(sim.tag, np.arange(1, 513))
+    sim.type[::3] = 2                                       # ids 1, 4, 7, ... as LAMMPS's id 1:512:3
     sim.v[:] += [0.5, -0.2, 0.1]
     m = observables.masses(sim)
     p0 = (m[:, None] * sim.v).sum(axis=0)
     scale = float((m * np.linalg.norm(sim.v, axis=1)).sum())
-    sim.command(f"fix 1 all nve\nfix 2 all {_Record.name}\nrun 200")
+    sim.command(f"fix 1 all nve\nfix 2 all {_Record.name}\nrun 600")
     record = sim.fixes["2"]
     drift = np.abs(np.array(record.momentum) - p0).max()
     assert drift < 1e-10 * scale
     assert np.linalg.norm(p0) > 0.1 * scale
-    assert np.mean(record.temperature[100:]) == pytest.approx(1.0, abs=0.1)
+    reference, scatter, calibration = LAMMPS_MIXTURE_T_101_600
+    temperature = np.mean(record.temperature[100:])
+    assert abs(temperature - reference) < 3 * math.hypot(scatter, calibration), temperature
 
 
 def _shuffled_run(tmp_path, order, name, sort_every):
