@@ -77,6 +77,7 @@ CONTRACT = {
         "build_neighbor_list": "build_neighbor_list(nlist): an occasional list, from current positions",
         "add_particles": "add_particles(x, type, v=, **per_atom): insert particles (pre_exchange)",
         "delete_particles": "delete_particles(rows): remove owned particles (pre_exchange)",
+        "random_key": "random_key(seed): the key random numbers use (new after reset_timestep goes back)",
         "info": "info(message): a line on screen and in the log",
         "warn": "warn(message): a warning on screen and in the log; the run goes on",
     },

@@ -8,9 +8,11 @@ the particle order or the number of ranks. Call from numba code:
     u0, u1, u2, u3 = particle_uniforms(seed, step, tag, stream)     # four U(0, 1), open interval
     g0, g1, g2, g3 = particle_gaussians(seed, step, tag, stream)    # four N(0, 1)
 
-Argument roles: ``seed`` the style's seed from the script (up to 2^63, both key words of Philox);
-``step`` the timestep (both counter words of the upper half); ``tag_i``, ``tag_j``, ``tag`` global
-particle ids; ``stream`` a small number a style chooses so that two of its uses of the same particle
+Argument roles: ``seed`` the style's seed from the script passed through ``sim.random_key(seed)``
+(up to 2^63, both key words of Philox; the key changes when reset_timestep goes back, so a run
+after it does not replay earlier noise); ``step`` the timestep (both counter words of the upper
+half); ``tag_i``, ``tag_j``, ``tag`` global particle ids, all 64 bits of them (ids of 2^32 and more
+hash their upper halves into the key); ``stream`` a small number a style chooses so that two of its uses of the same particle
 and step (or two styles given the same seed) draw independent numbers. Counters of particles
 (tag, 0) and of pairs (min, max) never coincide, as ids start at 1.
 """
@@ -46,14 +48,27 @@ def philox4x32(c0, c1, c2, c3, k0, k1):
 
 
 @njit(cache=True)
+def _wide_key(k, a, b):
+    """The key for ids of 32 bits or more: their upper halves hashed into the seed by one more
+    Philox block, so every bit of both ids counts (ids below 2^32 keep the plain seed)."""
+    high_a = np.uint64(a) >> SHIFT32
+    high_b = np.uint64(b) >> SHIFT32
+    if high_a == 0 and high_b == 0:
+        return k & MASK32, k >> SHIFT32
+    h0, h1, _, _ = philox4x32(high_a, high_b, np.uint64(0x5EED), np.uint64(0x1D5),
+                              k & MASK32, k >> SHIFT32)
+    return h0, h1
+
+
+@njit(cache=True)
 def pair_gaussian(seed, step, tag_i, tag_j):
     """One N(0,1) number for the unordered pair (tag_i, tag_j) at this step (Box-Muller)."""
     a = min(tag_i, tag_j)
     b = max(tag_i, tag_j)
     s = np.uint64(step)
-    k = np.uint64(seed)
+    k0, k1 = _wide_key(np.uint64(seed), a, b)
     r0, r1, r2, r3 = philox4x32(np.uint64(a) & MASK32, np.uint64(b) & MASK32, s & MASK32,
-                                s >> SHIFT32, k & MASK32, k >> SHIFT32)
+                                s >> SHIFT32, k0, k1)
     u1 = (float(r0) + 0.5) * INV_2_32
     u2 = (float(r1) + 0.5) * INV_2_32
     return math.sqrt(-2.0 * math.log(u1)) * math.cos(TWO_PI * u2)

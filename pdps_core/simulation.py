@@ -66,6 +66,8 @@ class Simulation:
         self.dt = self.unit_system.dt
         self.time = 0.0
         self.run_last_step = 0
+        self.random_epoch = 0           # reset_timestep backwards so far (random_key)
+        self.highest_step = 0
         self.pe = 0.0
         self.virial = np.zeros(6)
         self.eflag = False              # energy is computed on the current step (read by fixes)
@@ -286,6 +288,24 @@ class Simulation:
         keep = np.ones(p.nlocal, dtype=bool)
         keep[rows] = False
         p.keep(np.flatnonzero(keep))
+
+    # ---- random numbers ----------------------------------------------------------------------------
+    def random_key(self, seed):
+        """The key a style's random numbers use for its ``seed``: the seed itself until
+        reset_timestep sends the step back to steps already run, then a new key for each such
+        reset, so a production run after ``reset_timestep 0`` does not replay the noise of the
+        equilibration (LAMMPS's generators never rewind either)."""
+        if self.random_epoch == 0:
+            return seed
+        return (seed + self.random_epoch * 0x9E3779B97F4A7C15) % (2 ** 63 - 1) + 1
+
+    def reset_step(self, step):
+        """reset_timestep: a step below one already reached starts a new random epoch."""
+        self.highest_step = max(self.highest_step, self.step)
+        if step < self.highest_step:
+            self.random_epoch += 1
+            self.highest_step = step
+        self.step = step
 
     # ---- run information ---------------------------------------------------------------------------
     def ramp(self, start, stop):

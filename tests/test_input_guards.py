@@ -235,3 +235,55 @@ def test_a_deeply_nested_restart_header_is_damaged_not_a_crash(tmp_path, make_si
         make_sim().command("read_restart bad.restart")
     assert str(caught.value) == ("<command>:1: read_restart: restart file bad.restart is truncated, "
                                  "damaged or not a pdps restart file")
+
+
+# ---- random numbers ---------------------------------------------------------------------------
+from pdps_core.api import pair_gaussian  # noqa: E402
+
+DPD = BOX.replace("0 1 0 1 0 1", "0 4 0 4 0 4") + """
+create_particle 1 random 100 5 box
+pair_style dpd 1.0 1.0 4211
+pair_coeff * * 25.0 4.5
+velocity all create 1.0 77
+timestep 0.01
+fix 1 all nve
+"""
+
+
+def test_a_run_after_reset_timestep_back_draws_new_noise(make_sim):
+    first = make_sim()
+    first.command(DPD + "run 0")
+    noise_at_0 = first.f.copy()
+    first.command("run 20\nreset_timestep 0")
+    x, v = first.x.copy(), first.v.copy()
+    first.command("run 0")
+    replay = make_sim()
+    replay.command(DPD + "run 0")
+    replay.x[:], replay.v[:] = x, v
+    replay.command("run 0")
+    # same positions and velocities at step 0: only the noise (the key) can differ
+    assert not np.allclose(first.f, replay.f)
+    assert first.random_key(4211) != 4211 and replay.random_key(4211) == 4211
+    assert noise_at_0.shape == first.f.shape
+
+
+def test_reset_timestep_forward_keeps_the_key(make_sim):
+    sim = make_sim()
+    sim.command(DPD + "run 5\nreset_timestep 100\nrun 0")
+    assert sim.random_key(4211) == 4211
+
+
+def test_pair_noise_uses_every_bit_of_64_bit_ids():
+    base = pair_gaussian(9, 3, 1, 2)
+    assert pair_gaussian(9, 3, 1, 2 + 2 ** 32) != base
+    assert pair_gaussian(9, 3, 1 + 2 ** 40, 2) != base
+    assert pair_gaussian(9, 3, 1 + 2 ** 40, 2) != pair_gaussian(9, 3, 1 + 2 ** 41, 2)
+    assert pair_gaussian(9, 3, 2, 1 + 2 ** 40) == pair_gaussian(9, 3, 1 + 2 ** 40, 2)
+
+
+def test_velocity_create_with_huge_ids_needs_no_array_of_the_largest_id(tmp_path, make_sim):
+    write_data(tmp_path / "far.data", (0, 0, 0), (5, 5, 5), [[1, 1, 1], [2, 2, 2], [3, 3, 3]],
+               tags=[1, 2 ** 40, 2 ** 61])
+    sim = make_sim()
+    sim.command(f"read_data {tmp_path / 'far.data'}\nvelocity all create 1.5 8 dist gaussian\nrun 0")
+    assert np.isfinite(sim.v).all() and np.abs(sim.v).max() > 0

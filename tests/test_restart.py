@@ -124,18 +124,18 @@ def test_dpd_with_its_thermostat_is_not_the_uninterrupted_run(tmp_path, monkeypa
 @pytest.mark.parametrize("schedule", ["neigh_modify every 1 delay 1 check yes\natom_modify sort 7 0.0",
                                       "neigh_modify every 3 delay 6 check no\natom_modify sort 5 0.0"])
 def test_position_only_forces_continue_the_uninterrupted_run(tmp_path, monkeypatch, schedule):
-    """Soft repulsion only (T = 0, gamma = 0): run 31 + run 69, and a restart read at step 31, both
-    follow run 100 to the last bit, although particles sit outside the periodic box at step 31
+    """Soft repulsion only (T = 0, gamma = 0): run 33 + run 67, and a restart read at step 33, both
+    follow run 100 to the last bit, although particles sit outside the periodic box at step 33
     (a wrap at the second run's start would move them) and sorts happen after it."""
     monkeypatch.chdir(tmp_path)
     options = dict(extra=f"fix 1 all nve\n{schedule}", dt=0.005, T=0.0, gamma=0.0)
     whole, split = water(**options), water(**options)
     whole.command("run 100")
-    split.command("run 31")
+    split.command("run 33")
     assert not split.box.inside(split.x).all()
-    split.command("write_restart soft.restart\nrun 69")
-    again = restarted("soft.restart", "run 69")
-    assert whole.neighbor.last_sort > 31
+    split.command("write_restart soft.restart\nrun 67")
+    again = restarted("soft.restart", "run 67")
+    assert whole.neighbor.last_sort > 33
     assert_same_state(split, whole)
     assert_same_state(again, whole)
 

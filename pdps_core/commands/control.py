@@ -46,7 +46,7 @@ def run(sim, args):
 @command("reset_timestep")
 def reset_timestep(sim, args):
     count(args, 1, "reset_timestep N")
-    sim.step = integer(args[0], "timestep", low=0, high=limits.MAX_STEP)
+    sim.reset_step(integer(args[0], "timestep", low=0, high=limits.MAX_STEP))
     sim.energy_step = sim.virial_step = None
 
 

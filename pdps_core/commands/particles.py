@@ -4,8 +4,10 @@ import itertools
 import math
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
+from ..random import particle_gaussians, particle_uniforms
 from ..state import observables as obs
 from . import command
 from .geometry import make_box
@@ -256,7 +258,7 @@ def velocity(sim, args):
     if len(args) < 4:
         raise ScriptError(f"expected a temperature and a seed; usage: {usage}")
     temp = number(args[2], "temperature", low=0.0)
-    seed = integer(args[3], "seed", low=1)
+    seed = integer(args[3], "seed", low=1, high=2 ** 63 - 1)
     dist, momentum, rest = "uniform", True, args[4:]
     i = 0
     while i < len(rest):
@@ -276,17 +278,35 @@ def velocity(sim, args):
     create_velocities(sim, chosen, name, temp, seed, dist, momentum)
 
 
+VELOCITY_STREAM = 2      # fix langevin draws in stream 1
+
+
+@njit(cache=True)
+def _velocity_draws(tags, seed, gaussian, out):
+    for k in range(len(tags)):
+        if gaussian:
+            g0, g1, g2, _ = particle_gaussians(seed, 0, tags[k], VELOCITY_STREAM)
+            out[k, 0], out[k, 1], out[k, 2] = g0, g1, g2
+        else:
+            u0, u1, u2, _ = particle_uniforms(seed, 0, tags[k], VELOCITY_STREAM)
+            out[k, 0], out[k, 1], out[k, 2] = u0 - 0.5, u1 - 0.5, u2 - 0.5
+
+
+def velocity_draws(tags, seed, gaussian):
+    """Three random numbers per particle id (N(0,1), or U(-1/2, 1/2))."""
+    out = np.empty((len(tags), 3))
+    _velocity_draws(np.ascontiguousarray(tags, dtype=np.int64), seed, gaussian, out)
+    return out
+
+
 def create_velocities(sim, chosen, group, temp, seed, dist, momentum):
     """Random velocities keyed by particle tag (so the same on any number of ranks), then the group's
     net momentum removed and the group scaled to exactly ``temp``, as LAMMPS's ``loop all`` does."""
     p = sim.particles
     n = p.nlocal
-    rng = np.random.default_rng(seed)
-    ntags = int(sim.comm.max(int(p.tag[:n].max()) if n else 0))
-    draw = rng.standard_normal if dist == "gaussian" else (lambda size: rng.random(size) - 0.5)
-    by_tag = draw((ntags + 1, 3))
     v = p.v[:n]
-    v[chosen] = by_tag[p.tag[:n][chosen]]
+    # counter-based draws per id: memory for this rank's particles only, the same on any rank count
+    v[chosen] = velocity_draws(p.tag[:n][chosen], seed, dist == "gaussian")
     if sim.dimension == 2:
         v[chosen, 2] = 0.0
     m = obs.masses(sim, chosen)

@@ -110,6 +110,7 @@ def capture(sim):
         "pair": _pair_record(sim.pair, states),
         "neighbor": _neighbor_record(neighbor, p, arrays, resumable=not parallel),
         "step": sim.step, "time": sim.time, "dt": sim.dt, "ghost_velocity": sim.ghost_velocity,
+        "random_epoch": sim.random_epoch, "highest_step": max(sim.highest_step, sim.step),
         "pe": float(sim.pe), "virial": [float(v) for v in sim.virial],
         # per-rank partial sums: a parallel restart has them recomputed by its first run
         "energy_step": None if parallel else sim.energy_step,
@@ -376,6 +377,9 @@ def validate(header, arrays):
     _field(header, "virial", list, lambda v: len(v) == 6 and all(
         isinstance(c, number) and math.isfinite(c) for c in v), "six finite numbers")
     _field(header, "ghost_velocity", bool)
+    for name in ("random_epoch", "highest_step"):
+        if name in header:
+            _field(header, name, int, lambda k: 0 <= k <= limits.MAX_STEP, "an integer >= 0")
     for name in ("energy_step", "virial_step"):
         value = header.get(name)
         if value is not None and not (isinstance(value, int) and not isinstance(value, bool)):
@@ -459,6 +463,8 @@ def restore(sim, header, arrays):
                 sim.restored_states[(kind, record["id"])] = (record["style"], state, style)
     sim.neighbors = _neighbor(header["neighbor"], arrays, sim.particles)
     sim.step = int(header["step"])
+    sim.random_epoch = int(header.get("random_epoch", 0))
+    sim.highest_step = int(header.get("highest_step", sim.step))
     sim.run_first_step = sim.step
     sim.time = float(header["time"])
     sim.dt = float(header["dt"])

@@ -83,7 +83,7 @@ class FixLangevin(Fix):
         kt = sim.units.boltz * self.target(sim) / sim.units.mvv2e
         noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp))
         langevin_forces(p.v, p.f, p.tag, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                        p.nlocal, self.args.damp, noise_scale, self.args.seed, sim.step)
+                        p.nlocal, self.args.damp, noise_scale, sim.random_key(self.args.seed), sim.step)
 
     def scalar(self, sim):
         """f_ID: the target temperature now."""

@@ -169,4 +169,4 @@ class PairDPD(PairLaw):
         return self.conservative_law if self.split else self.law
 
     def law_state(self, sim):
-        return (self.args.seed, sim.step, 1.0 / math.sqrt(sim.dt))
+        return (sim.random_key(self.args.seed), sim.step, 1.0 / math.sqrt(sim.dt))

@@ -228,7 +228,7 @@ class FixShardlow(Fix):
             sweep_pairs(velocities, np.ascontiguousarray(owned[order, 1]), np.searchsorted(tags, low),
                         np.searchsorted(tags, high), low, high, np.ascontiguousarray(pairs[:, 4:7]),
                         np.ascontiguousarray(pairs[:, 7]), pairs[:, 2:4].astype(np.int64), pair.gamma,
-                        pair.sigma, sim.dt, pair.args.seed ^ SHARDLOW_KEY, sim.step)
+                        pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
             velocities = (tags, velocities)
         tags, updated = comm.bcast(velocities)
         p.v[:n] = updated[np.searchsorted(tags, p.tag[:n])]
