@@ -161,7 +161,10 @@ class Simulation:
             hint = f"; did you mean {close[0]}?" if close else ""
             raise ScriptError(f"unknown command {name}{hint}", command=name)
         try:
-            entry(self, args)
+            # numpy's floating-point warnings never reach the screen raw: the checks that matter
+            # (non-finite positions and forces, lost particles) report in the core's own words
+            with np.errstate(all="ignore"):
+                entry(self, args)
         except ScriptError as exc:
             if exc.command is None:
                 exc.command = name

@@ -287,3 +287,74 @@ def test_velocity_create_with_huge_ids_needs_no_array_of_the_largest_id(tmp_path
     sim = make_sim()
     sim.command(f"read_data {tmp_path / 'far.data'}\nvelocity all create 1.5 8 dist gaussian\nrun 0")
     assert np.isfinite(sim.v).all() and np.abs(sim.v).max() > 0
+
+
+# ---- parallel runs: one line per failure, counts over all ranks ---------------------------------
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+
+from pdps_core.testing import mpiexec  # noqa: E402
+
+
+def on_two_ranks(folder, script):
+    (folder / "in.test").write_text(script)
+    return subprocess.run([mpiexec(), "-n", "2", sys.executable, "-m", "pdps_core.cli", "run", "in.test",
+                           "-log", "none", "--no-progress"], cwd=folder, capture_output=True, text=True,
+                          timeout=300)
+
+
+def test_a_data_file_particle_outside_a_fixed_box_is_one_line_on_two_ranks(tmp_path):
+    write_data(tmp_path / "out.data", (0, 0, 0), (10, 10, 10), [[1, 1, 1], [12, 2, 2]])
+    done = on_two_ranks(tmp_path, "boundary f f f\nread_data out.data\nrun 1\n")
+    one_line(done, "ERROR: in.test:2: read_data: particle 2 lost through the fixed x boundary at step 0: "
+                   "x = 12 outside [0, 10] (1 particle(s) outside)")
+
+
+def test_particles_lost_on_two_ranks_are_counted_together(tmp_path):
+    done = on_two_ranks(tmp_path, """
+boundary p p f
+region box block 0 10 0 10 0 10
+create_box 1 box
+mass 1 1
+processors 2 1 1
+create_particle 1 single 1 1 9.9
+create_particle 1 single 9 9 9.9
+create_particle 1 single 9 1 9.9
+velocity all set 0 0 5
+fix 1 all nve
+run 10
+""")
+    assert done.returncode == 1
+    errors = [line for line in done.stderr.splitlines() if line.strip()]
+    assert len(errors) == 1 and errors[0].endswith("(3 particle(s) outside)"), done.stderr
+
+
+# ---- physics undefined: a warning, not silence ------------------------------------------------
+def test_coincident_dem_spheres_are_named_in_a_warning(pdps_cli):
+    done = pdps_cli("""
+        particle_style sphere
+        region box block 0 5 0 5 0 5
+        create_box 1 box
+        create_particle 1 single 2 2 2
+        create_particle 1 single 2 2 2
+        pair_style dem/lsd 0.3 1.0
+        pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1
+        fix 1 all nve/sphere
+        run 1
+    """)
+    assert done.returncode == 0
+    assert ("WARNING: pair dem/lsd: particles 1 and 2 sit at the same point at step 0: their contact has "
+            "no normal, so they exert no force on each other (separate them, or start with fix "
+            "nve/limit)") in done.stdout
+
+
+def test_numpy_warnings_never_reach_the_screen(pdps_cli):
+    done = pdps_cli("""
+        region box block 0 1 0 1 0 1
+        create_box 1 box
+        mass 1 1.0
+        variable big equal 1e300*1e300
+        print "${big}"
+        run 0
+    """)
+    assert "RuntimeWarning" not in done.stderr + done.stdout

@@ -105,10 +105,16 @@ class MPIComm:
     def distribute(self, particles, box):
         """Keep the owned particles of this sub-domain (creation commands run on every rank)."""
         self.decompose(box)
-        if particles.nlocal:
-            x = particles.x[: particles.nlocal].copy()
-            image = np.zeros((len(x), 3), dtype=np.int32)
+        x = particles.x[: particles.nlocal].copy()
+        image = np.zeros((len(x), 3), dtype=np.int32)
+        try:
             box.wrap(x, image, particles.tag[: particles.nlocal], 0)
+            message = None
+        except SimulationError as exc:
+            message = exc.message
+        # every rank holds every new particle here (no count to sum): agree, so it is printed once
+        self.agree(message)
+        if particles.nlocal:
             particles.keep(self.decomposition.owner(x) == self.rank)
 
     # ---- migration ----------------------------------------------------------------------------
@@ -123,12 +129,13 @@ class MPIComm:
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             message = f"particle {int(p.tag[i])} has a non-finite position {tuple(x[i])} at step {step}"
-        else:
+        count = 0
+        if not bad.any():
             try:
                 box.wrap(x, p.image, p.tag, step)
             except SimulationError as exc:
-                message = exc.message
-        self.agree(message)
+                message, count = exc.template, exc.count
+        self.agree(message, count)
         owner = self.decomposition.owner(p.x[: p.nlocal])
         leaving = np.flatnonzero(owner != self.rank)
         order = leaving[np.argsort(owner[leaving], kind="stable")]
@@ -252,17 +259,20 @@ class MPIComm:
     def allgather_rows(self, rows):
         return np.concatenate(self.world.allgather(rows))
 
-    def agree(self, message):
-        """Raise the same SimulationError on every rank when any rank found one (lowest rank's)."""
+    def agree(self, message, count=0):
+        """Raise the same SimulationError on every rank when any rank found one (lowest rank's).
+        A message with ``{count}`` in it gets ``count`` summed over ranks (particles lost)."""
         # a one-integer reduction on every step; the messages are gathered only when one exists
         flag = np.array([1 if message else 0], dtype=np.int64)
         found = np.empty(1, dtype=np.int64)
         self.world.Allreduce(flag, found, op=self.MPI.MAX)
         if not found[0]:
             return
-        messages = self.world.allgather(message)
-        first = next((m for m in messages if m), None)
+        gathered = self.world.allgather((message, count))
+        first = next((m for m, _ in gathered if m), None)
         if first is not None:
+            if "{count}" in first:
+                first = first.format(count=sum(c for _, c in gathered))
             error = SimulationError(first)
             error.agreed = True
             raise error

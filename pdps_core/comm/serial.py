@@ -116,10 +116,10 @@ class SerialComm:
     def allgather_rows(self, rows):
         return rows
 
-    def agree(self, message):
+    def agree(self, message, count=0):
         """The MPI version agrees across ranks; on one rank a message is simply the error."""
         if message:
-            error = SimulationError(message)
+            error = SimulationError(message.format(count=count) if "{count}" in message else message)
             error.agreed = True
             raise error
 

@@ -48,10 +48,13 @@ class Box:
                 if out.any():
                     i = int(np.flatnonzero(out)[0])
                     axis = "xyz"[d]
-                    raise SimulationError(
-                        f"particle {int(tag[i])} lost through the fixed {axis} boundary at step {step}: "
-                        f"{axis} = {x[i, d]:.6g} outside [{self.lo[d]:g}, {self.hi[d]:g}]"
-                        f" ({int(out.sum())} particle(s) outside)")
+                    template = (f"particle {int(tag[i])} lost through the fixed {axis} boundary at step "
+                                f"{step}: {axis} = {x[i, d]:.6g} outside [{self.lo[d]:g}, {self.hi[d]:g}]"
+                                " ({count} particle(s) outside)")
+                    error = SimulationError(template.format(count=int(out.sum())))
+                    # a parallel run reports the count summed over ranks (Comm.agree)
+                    error.template, error.count = template, int(out.sum())
+                    raise error
 
     def inside(self, x):
         """Mask of positions inside [lo, hi) on every axis."""

@@ -159,6 +159,21 @@ def log_contact(log_pairs, log_force, logged, i, j, force):
 
 
 @njit(cache=True)
+def first_coincident(x, radius, offsets, neighbors, nlocal):
+    """(i, j) of the first listed pair whose centres are closer than 1e-10 of their radii, or (-1, -1)."""
+    for i in range(nlocal):
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            tiny = 1e-10 * (radius[i] + radius[j])
+            dx = x[i, 0] - x[j, 0]
+            dy = x[i, 1] - x[j, 1]
+            dz = x[i, 2] - x[j, 2]
+            if dx * dx + dy * dy + dz * dz <= tiny * tiny:
+                return i, j
+    return -1, -1
+
+
+@njit(cache=True)
 def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
                     nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
                     log_pairs, log_force, logged):
@@ -295,6 +310,8 @@ class GranularPair(Pair):
     # ---- forces -----------------------------------------------------------------------------------
     def compute(self, sim, nlist, eflag, vflag):
         p = sim.particles
+        if sim.in_setup:
+            self.warn_coincident(sim, nlist)
         update = not sim.in_setup      # the setup forces read the springs without advancing them
         history = self.history
         touched = np.zeros((p.nall, history.capacity), dtype=np.bool_)
@@ -309,6 +326,19 @@ class GranularPair(Pair):
         # contact forces are dissipative: no potential energy is reported (the elastic part is not
         # a potential once friction slides), as LAMMPS's granular pair styles
         self.energy = 0.0
+
+    def warn_coincident(self, sim, nlist):
+        """Spheres whose centres coincide have no contact normal, so they exert no force on each
+        other (as in PDPS and LAMMPS): say so at a run's start rather than let them pass silently."""
+        p = sim.particles
+        i, j = first_coincident(p.x, p.radius, nlist.offsets, nlist.neighbors, p.nlocal)
+        found = sim.comm.max(int(p.tag[i]) if i >= 0 else -1)
+        if found >= 0:
+            partner = int(p.tag[j]) if i >= 0 else -1
+            where = f"particles {found} and {partner}" if partner >= 0 else f"particle {found} and another"
+            sim.warn(f"pair {self.name}: {where} sit at the same point at step {sim.step}: their contact "
+                     "has no normal, so they exert no force on each other (separate them, or start "
+                     "with fix nve/limit)")
 
     def collect_mirrors(self, sim, owner, touched):
         """Send springs written into rows of ghosts owned elsewhere back to their owners."""
