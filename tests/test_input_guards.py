@@ -358,3 +358,22 @@ def test_numpy_warnings_never_reach_the_screen(pdps_cli):
         run 0
     """)
     assert "RuntimeWarning" not in done.stderr + done.stdout
+
+
+def test_huge_velocities_stop_with_the_thermo_column_named(pdps_cli, tmp_path):
+    done = pdps_cli("""
+        region box block 0 1 0 1 0 1
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 single 0.5 0.5 0.5
+        velocity all set 1e140 0 0
+        run 0
+    """, "-log", "log.huge")
+    one_line(done, "ERROR: in.test:7: run: thermo KinEng is inf at step 0: the run stops rather than go "
+                   "on with non-finite values (velocities or forces too large?)")
+    assert "inf" in (tmp_path / "log.huge").read_text()       # the line that showed it stays written
+
+
+def test_velocities_beyond_what_squares_hold_are_refused(pdps_cli):
+    one_line(pdps_cli(BOX + "velocity all set 1e200 0 0\n"),
+             "ERROR: in.test:4: velocity: vx must be <= 1e+150 (got 1e200)")

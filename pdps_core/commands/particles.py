@@ -7,6 +7,7 @@ import numpy as np
 from numba import njit
 
 from ..errors import ScriptError
+from ..state import limits
 from ..random import particle_gaussians, particle_uniforms
 from ..state import observables as obs
 from . import command
@@ -249,7 +250,8 @@ def velocity(sim, args):
     if style == "set":
         count(args[2:], 3, usage)
         # every value is read before any is set, so a bad one changes nothing
-        values = [None if word == "NULL" else number(word, "v" + axis)
+        values = [None if word == "NULL" else number(word, "v" + axis, low=-limits.MAX_COORDINATE,
+                                                      high=limits.MAX_COORDINATE)
                   for axis, word in zip("xyz", args[2:5])]
         for d, value in enumerate(values):
             if value is not None:

@@ -7,11 +7,12 @@ loses nothing already written. Progress goes to stderr (see ``progress``).
 """
 
 import sys
+import math
 import time
 
 from .progress import Progress
 from .thermo import Thermo
-from ..errors import ScriptError
+from ..errors import ScriptError, SimulationError
 from .thermo_csv import ThermoCSV
 
 
@@ -121,6 +122,13 @@ class Output:
             self.message(self.thermo.line(values))
             self.csv.row(values, self.thermo.integer())
             wrote = True
+            bad = next((name for name, value in zip(self.thermo.names(), values)
+                        if not math.isfinite(value)), None)
+            if bad is not None:
+                self.flush()
+                raise SimulationError(f"thermo {bad} is {values[self.thermo.names().index(bad)]} at step "
+                                      f"{step}: the run stops rather than go on with non-finite values "
+                                      "(velocities or forces too large?)")
         if wrote:
             self.flush()
         if self.progress is not None:
