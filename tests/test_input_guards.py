@@ -360,16 +360,14 @@ def test_numpy_warnings_never_reach_the_screen(pdps_cli):
     assert "RuntimeWarning" not in done.stderr + done.stdout
 
 
-def test_huge_velocities_stop_with_the_thermo_column_named(pdps_cli, tmp_path):
-    done = pdps_cli("""
-        region box block 0 1 0 1 0 1
-        create_box 1 box
-        mass 1 1.0
+def test_a_non_finite_thermo_value_stops_the_run_naming_its_column(pdps_cli, tmp_path):
+    done = pdps_cli(BOX + """
         create_particle 1 single 0.5 0.5 0.5
-        velocity all set 1e140 0 0
+        variable big equal 1e300*1e300
+        thermo_style custom step temp v_big
         run 0
     """, "-log", "log.huge")
-    one_line(done, "ERROR: in.test:7: run: thermo KinEng is inf at step 0: the run stops rather than go "
+    one_line(done, "ERROR: in.test:8: run: thermo v_big is inf at step 0: the run stops rather than go "
                    "on with non-finite values (velocities or forces too large?)")
     assert "inf" in (tmp_path / "log.huge").read_text()       # the line that showed it stays written
 
