@@ -1,0 +1,52 @@
+"""A fix that misbehaves on purpose, so the fuzz harness can be shown to catch each kind of fault.
+
+``fix ID GROUP fuzz/misbehave MODE`` (registered in a worker only when PDPS_FUZZ_SELFTEST is set):
+at the first step, ``segfault`` kills the process with SIGSEGV, ``abort`` with SIGABRT, ``exit``
+leaves it with os._exit(3), ``spin`` computes in C without releasing the interpreter lock (a hang
+that nothing can interrupt), ``sleep`` waits forever without stepping (a hang the watchdog
+interrupts), ``raise`` raises a ValueError (an internal error), ``nan`` writes a file of numbers
+holding a nan and lets the run end well (non-finite output), ``warn`` prints a raw Python warning and
+then stops with a script error (two lines on stderr).
+"""
+
+import os
+import signal
+import time
+import warnings
+
+
+from pdps_core.errors import ScriptError
+from pdps_core.styles import Fix, StyleArgs, registry
+
+
+class Misbehave(Fix):
+    name = "fuzz/misbehave"
+
+    class Args(StyleArgs):
+        mode: str
+
+    def end_of_step(self, sim):
+        mode = self.args.mode
+        if mode == "segfault":
+            os.kill(os.getpid(), signal.SIGSEGV)
+        elif mode == "abort":
+            os.abort()
+        elif mode == "exit":
+            os._exit(3)
+        elif mode == "spin":
+            sum(range(10**12))
+        elif mode == "sleep":
+            while True:
+                time.sleep(0.05)
+        elif mode == "raise":
+            raise ValueError("misbehaving on purpose")
+        elif mode == "nan":
+            with open("numbers.txt", "w") as handle:
+                handle.write("# step value\n1 2.5\n2 nan\n")
+        elif mode == "warn":
+            warnings.warn("a raw warning", RuntimeWarning)
+            raise ScriptError("stopped after a raw warning")
+
+
+def register():
+    registry.register("fix", Misbehave.name, Misbehave)

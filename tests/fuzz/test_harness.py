@@ -1,0 +1,107 @@
+"""The fuzz harness itself: each class of outcome is recognised (a fuzz suite that cannot see a crash,
+a hang or a nan would pass whatever pdps does). The faults come from selftest.py's fix
+``fuzz/misbehave``, registered in the workers of these tests only."""
+
+import signal
+
+import pytest
+
+from .classify import located, nonfinite_output
+from .runner import Case, run_cases
+
+BOX = """region box block 0 4 0 4 0 4
+create_box 1 box
+mass 1 1
+create_particle 1 single 1 1 1
+create_particle 1 single 2 2 2
+fix 1 all nve
+"""
+
+CASES = {
+    "clean": (BOX + "thermo 1\nrun 5\n", "clean"),
+    "error": (BOX + "pair_style dpd 1.0 1.0 5\npair_coeff * * 25 -4.5\nrun 5\n", "error"),
+    "long": (BOX + "thermo 0\nrun 2000000000\n", "long"),
+    "segfault": (BOX + "fix m all fuzz/misbehave segfault\nrun 5\n", "signal"),
+    "abort": (BOX + "fix m all fuzz/misbehave abort\nrun 5\n", "signal"),
+    "exit": (BOX + "fix m all fuzz/misbehave exit\nrun 5\n", "signal"),
+    "spin": (BOX + "fix m all fuzz/misbehave spin\nrun 5\n", "hang"),
+    "sleep": (BOX + "fix m all fuzz/misbehave sleep\nrun 5\n", "hang"),
+    "raise": (BOX + "fix m all fuzz/misbehave raise\nrun 5\n", "traceback"),
+    "nan": (BOX + "fix m all fuzz/misbehave nan\nrun 5\n", "nonfinite"),
+    "warn": (BOX + "fix m all fuzz/misbehave warn\nrun 5\n", "messy"),
+}
+
+
+@pytest.fixture(scope="module")
+def outcomes(tmp_path_factory):
+    cases = [Case("harness", k, name, [], {"in.fuzz": script.encode()})
+             for k, (name, (script, _)) in enumerate(CASES.items())]
+    results = run_cases(cases, tmp_path_factory.mktemp("harness"), workers=2, limit=5.0, grace=2.0,
+                        env={"PDPS_FUZZ_SELFTEST": "1"})
+    return {r.case.seed: r for r in results}
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_each_outcome_is_classified(outcomes, name):
+    result = outcomes[name]
+    assert result.klass == CASES[name][1], result.reply
+
+
+def test_a_signal_names_itself_and_where_it_struck(outcomes):
+    segfault = outcomes["segfault"].reply
+    assert segfault["detail"] == signal.SIGSEGV.name
+    assert "selftest.py" in segfault["traceback"] and "end_of_step" in segfault["traceback"]
+    assert outcomes["abort"].reply["detail"] == signal.SIGABRT.name
+    assert outcomes["exit"].reply["detail"] == "exit status 3"
+
+
+def test_a_hang_shows_where_it_was(outcomes):
+    """A hang the watchdog interrupts has the script line and the Python stack; one stuck in C
+    holding the interpreter lock has the stack faulthandler dumped before the kill."""
+    asleep = outcomes["sleep"].reply["detail"]
+    assert (asleep["source"], asleep["line"], asleep["step"]) == ("in.fuzz", 8, 1)
+    assert "time.sleep" in asleep["stack"]
+    assert "selftest.py" in outcomes["spin"].reply["traceback"]
+    assert outcomes["spin"].reply["detail"] == "no answer within 7 s"
+
+
+def test_the_internal_error_keeps_its_traceback(outcomes):
+    reply = outcomes["raise"].reply
+    assert reply["stderr"].startswith("ERROR: internal error at in.fuzz:8: ValueError")
+    assert reply["traceback"].rstrip().endswith("ValueError: misbehaving on purpose")
+
+
+@pytest.mark.parametrize("stderr, expected", [
+    ("ERROR: in.fuzz:12: run: particle 2 lost\n", True),
+    ("ERROR: settings.inc:3: pair_coeff: gamma must be >= 0 (got -4.5)\n", True),
+    ("ERROR: in.fuzz:1: read_data: /tmp/x/data.fuzz:7: header says 8 atoms\n", True),
+    ("ERROR: other.in:12: run: lost\n", False),                 # not a file of the case
+    ("ERROR: input script in.fuzz is not UTF-8 text: byte 0xff on line 4\n", False),
+    ("ERROR: in.fuzz: cannot read\n", False),
+    ("RuntimeWarning: divide by zero\nERROR: in.fuzz:3: run: lost\n", False),
+    ("", False),
+])
+def test_a_located_error_is_one_line_naming_a_file_of_the_case_and_a_line(stderr, expected):
+    assert located(stderr, ["in.fuzz", "settings.inc", "data.fuzz"]) is expected
+
+
+def test_nonfinite_numbers_are_found_in_what_a_run_wrote_not_in_its_script(tmp_path):
+    (tmp_path / "in.fuzz").write_text("print nan\n")
+    log = ("region walls block INF INF INF INF 0 1\nprint nan\nnan\n"
+           "Step Temp Press\n0 1.0 2.0\n5 1.5 2.5\nLoop time of 0.1\n")
+    (tmp_path / "log.pdps").write_text(log)
+    (tmp_path / "log.pdps.csv").write_text("Step,Temp,Press\n0,1.0,2.0\n5,1.5,2.5\n")
+    (tmp_path / "dump.atom").write_text("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\n"
+                                        "ITEM: BOX BOUNDS pp pp pp\n0 4\n0 4\n0 4\n"
+                                        "ITEM: ATOMS id type x y z\n1 1 0.5 0.5 0.5\n")
+    assert nonfinite_output(tmp_path, ["in.fuzz"], "print nan\nnan\n") is None
+    (tmp_path / "log.pdps").write_text(log.replace("5 1.5 2.5", "5 nan 2.5"))
+    assert nonfinite_output(tmp_path, ["in.fuzz"], "") == "log.pdps:6: 5 nan 2.5"
+    (tmp_path / "log.pdps").write_text(log)
+    (tmp_path / "log.pdps.csv").write_text("Step,Temp,Press\n0,1.0,2.0\n5,1.5,-inf\n")
+    assert nonfinite_output(tmp_path, ["in.fuzz"], "") == "log.pdps.csv:3: column Press: 5,1.5,-inf"
+    (tmp_path / "log.pdps.csv").write_text("Step,Temp,Press\n0,1.0,2.0\n")
+    (tmp_path / "dump.atom").write_text("ITEM: TIMESTEP\n0\nITEM: ATOMS id type x y z\n1 1 inf 0 0\n")
+    assert nonfinite_output(tmp_path, ["in.fuzz"], "") == "dump.atom:4: 1 1 inf 0 0"
+    (tmp_path / "dump.atom").unlink()
+    assert nonfinite_output(tmp_path, ["in.fuzz"], "Step Temp\n0 nan\n") == "<screen>:2: 0 nan"
