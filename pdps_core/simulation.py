@@ -26,6 +26,7 @@ from .output.thermo import keyword_value
 from .run.timers import Timers
 from .script.lexer import logical_lines, read_text, split_words, strip_comment, substitute
 from .script.variables import Variables
+from .state import limits
 from .state.groups import Groups
 from .state.particles import Particles
 from .state.units import UNITS
@@ -116,9 +117,17 @@ class Simulation:
     # ---- scripts ----------------------------------------------------------------------------------
     def file(self, path):
         """Run a whole script file."""
-        text = read_text(path, "input script")
-        here = os.path.dirname(os.path.abspath(path))
-        self._script(text, os.path.basename(path) if self.source is None else path, here)
+        shown = os.path.basename(path) if self.source is None else path
+        self.include_depth = getattr(self, "include_depth", 0) + 1
+        try:
+            if self.include_depth > limits.MAX_INCLUDE_DEPTH:
+                raise ScriptError(f"scripts include each other more than {limits.MAX_INCLUDE_DEPTH} deep "
+                                  f"({path} includes itself?)")
+            text = read_text(path, "input script", shown)
+            here = os.path.dirname(os.path.abspath(path))
+            self._script(text, shown, here)
+        finally:
+            self.include_depth -= 1
         return self
 
     def command(self, text):

@@ -421,7 +421,7 @@ class TestReadData:
     def test_sphere_diameter_must_be_positive(self, sim, tmp_path):
         (tmp_path / "bad.data").write_text(HEADER + "Atoms # sphere\n\n1 1 1 1 1 1 1\n2 1 0 1 2 2 2\n")
         exc = fails(sim, "particle_style sphere\nread_data bad.data", "read_data")
-        assert exc.message == f"{tmp_path / 'bad.data'}:12: diameter and density must be finite numbers > 0: 2 1 0 1 2 2 2"
+        assert exc.message == f"{tmp_path / 'bad.data'}:12: diameter and density must be from 1e-50 to 1e+50: 2 1 0 1 2 2 2"
 
     def test_other_errors(self, sim, tmp_path):
         exc = fails(sim, "read_data missing.data", "read_data")

@@ -72,24 +72,63 @@ def test_a_run_that_would_overflow_the_step_counter(pdps_cli):
              "64-bit counter holds (9223372036854775807)")
 
 
-@pytest.mark.parametrize("ntypes", ["2147483648", "1001", "99999999999999999999"])
+@pytest.mark.parametrize("ntypes", ["2147483648", "201", "99999999999999999999"])
 def test_create_box_with_too_many_types(pdps_cli, ntypes):
     one_line(pdps_cli(f"region box block 0 1 0 1 0 1\ncreate_box {ntypes} box\n"),
-             f"ERROR: in.test:2: create_box: ntypes must be <= 1000 (got {ntypes})")
+             f"ERROR: in.test:2: create_box: ntypes must be <= 200 (got {ntypes})")
 
 
 # ---- files, decoding, recursion ---------------------------------------------------------------
 def test_a_script_that_is_not_utf8(tmp_path, pdps_cli):
     (tmp_path / "in.bytes").write_bytes(b"region box block 0 1 0 1 0 1\ncreate_box 1 box\nprint \"\xff\xfe\"\n")
     done = pdps_cli("include in.bytes\n")
-    one_line(done, f"ERROR: in.test:1: include: input script {tmp_path / 'in.bytes'} is not UTF-8 text: "
-                   "byte 0xff on line 3")
+    one_line(done, f"ERROR: in.test:1: include: {tmp_path / 'in.bytes'}:3: not UTF-8 text (byte 0xff); "
+                   "input scripts are read as UTF-8")
+
+
+def test_the_top_script_not_utf8_is_located_by_its_line(tmp_path, pdps_cli):
+    (tmp_path / "in.top").write_bytes(b"print hello\nprint \"\xc3(\"\n")
+    from pdps_core import cli
+    assert cli.main(["run", "in.top", "-log", "none"]) == 1
+
+
+def test_a_script_that_includes_itself(tmp_path, pdps_cli):
+    done = pdps_cli("include in.test\n")
+    assert done.returncode == 1
+    assert done.stderr.strip().endswith(f"include: scripts include each other more than 32 deep "
+                                        f"({tmp_path / 'in.test'} includes itself?)"), done.stderr
 
 
 def test_a_data_file_that_is_not_utf8(tmp_path, pdps_cli):
     (tmp_path / "bad.data").write_bytes(b"title\n\n1 atoms\n1 atom types\n\xe9\n")
     one_line(pdps_cli("read_data bad.data\n"),
-             f"ERROR: in.test:1: read_data: data file {tmp_path / 'bad.data'} is not UTF-8 text: byte 0xe9 on line 5")
+             f"ERROR: in.test:1: read_data: {tmp_path / 'bad.data'}:5: not UTF-8 text (byte 0xe9); "
+             "data files are read as UTF-8")
+
+
+def test_a_lattice_too_fine_for_memory_is_refused_before_any_array(pdps_cli):
+    one_line(pdps_cli("region box block 0 3 0 3 0 3\ncreate_box 1 box\nlattice spacing x 1 y 1 z 1e-114\n"
+                      "create_particle 1 box\n"),
+             "ERROR: in.test:4: create_particle: the lattice (spacing 1 1 1e-114) fills the box with about "
+             "7.5e+115 sites, more than 20000000 particles at once")
+
+
+def test_a_cutoff_many_times_the_box_is_refused(pdps_cli):
+    one_line(pdps_cli("""region box block 0 6 0 6 0 6
+create_box 1 box
+mass 1 1
+create_particle 1 random 500 4 box
+pair_style dpd 1.0 99.0 5
+pair_coeff * * 25 4.5
+run 1
+"""), "ERROR: in.test:7: run: the cutoff plus skin 99.3 would copy the 500 particles about 3.97e+04 "
+      "times over as periodic ghosts (at most 1000): make the box larger or the cutoff smaller")
+
+
+def test_tiny_spheres_are_refused(pdps_cli):
+    one_line(pdps_cli("particle_style sphere\nregion box block 0 3 0 3 0 3\ncreate_box 1 box\n"
+                      "create_particle 1 single 1 1 1 diameter 1e-300\n"),
+             "ERROR: in.test:4: create_particle: diameter must be >= 1e-50 (got 1e-300)")
 
 
 @pytest.mark.parametrize("path, reason", [(".", "Is a directory"),
@@ -201,7 +240,7 @@ def set_field(path, value):
     (set_field(["step"], -4), "field step must be from 0 to 9223372036854775807 (got -4)"),
     (set_field(["particles", "nlocal"], float("inf")), "field nlocal must be a particle count (got inf)"),
     (set_field(["particle_style"], "ellipsoid"), "field particle_style must be atomic or sphere (got 'ellipsoid')"),
-    (set_field(["ntypes"], 0), "field ntypes must be from 1 to 1000 (got 0)"),
+    (set_field(["ntypes"], 0), "field ntypes must be from 1 to 200 (got 0)"),
 ])
 def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     make_sim().command(RESTART_SCRIPT)

@@ -40,7 +40,7 @@ def _split_keywords(args, names):
         if args[i] in names:
             if i + 1 >= len(args):
                 raise ScriptError(f"keyword {args[i]} needs a value")
-            values[args[i]] = number(args[i + 1], args[i], low=0.0, strict_low=True)
+            values[args[i]] = number(args[i + 1], args[i], low=limits.MIN_SIZE, high=limits.MAX_SIZE)
             i += 2
         else:
             rest.append(args[i])
@@ -78,14 +78,14 @@ def create_particle(sim, args):
     else:
         if style == "random_no_overlap":
             count(rest, 4, usage)
-            n = integer(rest[0], "N", low=0)
+            n = integer(rest[0], "N", low=0, high=limits.MAX_CREATE)
             region = sim.region(rest[1])
             dmin = number(rest[2], "minimum distance", low=0.0)
             seed = integer(rest[3], "seed", low=1)
         else:  # LAMMPS: random N SEED REGION [overlap D]
             if len(rest) not in (3, 5) or (len(rest) == 5 and rest[3] != "overlap"):
                 raise ScriptError("usage: create_particle TYPE random N SEED REGION [overlap D]")
-            n = integer(rest[0], "N", low=0)
+            n = integer(rest[0], "N", low=0, high=limits.MAX_CREATE)
             seed = integer(rest[1], "seed", low=1)
             region = sim.region(rest[2])
             dmin = number(rest[4], "overlap", low=0.0) if len(rest) == 5 else 0.0
@@ -103,6 +103,12 @@ def _lattice_sites(sim, region):
     box = sim.box
     lo, hi = (box.lo, box.hi) if region is None else region.bounds()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
+    counts = [1 if (sim.dimension == 2 and d == 2) else (hi[d] - lo[d]) / spacing[d] + 2 for d in range(3)]
+    sites = math.prod(counts) * len(basis)
+    if not sites <= limits.MAX_CREATE:
+        raise ScriptError(f"the lattice (spacing {' '.join(f'{a:g}' for a in spacing)}) fills "
+                          f"{'the box' if region is None else 'region ' + region.id} with about {sites:.3g} "
+                          f"sites, more than {limits.MAX_CREATE} particles at once")
     axes = []
     for d in range(3):
         if sim.dimension == 2 and d == 2:

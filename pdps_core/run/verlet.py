@@ -102,6 +102,7 @@ class Verlet:
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
 
         limits.check_images(sim.box, sim.neighbor.cutghost())
+        limits.check_ghosts(sim.box, sim.neighbor.cutghost(), int(sim.comm.sum(particles.nlocal)))
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:

@@ -126,9 +126,10 @@ def split_words(text):
     return words
 
 
-def read_text(path, what):
+def read_text(path, what, shown=None):
     """The text of a file a script names (``what``: "input script", "data file"), as UTF-8; a file
-    that cannot be read or is not text is a one-line error naming it and, for bad bytes, the line."""
+    that cannot be read is a one-line error naming it, bad bytes one located as ``FILE:LINE:``
+    (``shown``: the name to give the file, default its path)."""
     try:
         with open(path, "rb") as handle:
             raw = handle.read()
@@ -138,4 +139,5 @@ def read_text(path, what):
         return raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = raw.count(b"\n", 0, exc.start) + 1
-        raise ScriptError(f"{what} {path} is not UTF-8 text: byte 0x{raw[exc.start]:02x} on line {line}") from None
+        raise ScriptError(f"{shown or path}:{line}: not UTF-8 text (byte 0x{raw[exc.start]:02x}); "
+                          f"{what}s are read as UTF-8") from None

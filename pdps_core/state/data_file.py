@@ -149,8 +149,8 @@ def read_data_file(path, particle_style):
         tags[k], types[k], images[k] = tag, kind, image
         if not np.isfinite(x[k]).all() or np.abs(x[k]).max() > limits.MAX_COORDINATE:
             fail(number, f"position must be finite and within +-{limits.MAX_COORDINATE:g}: {' '.join(words)}")
-        if not (np.isfinite(diameter[k]) and np.isfinite(density[k]) and diameter[k] > 0 and density[k] > 0):
-            fail(number, f"diameter and density must be finite numbers > 0: {' '.join(words)}")
+        if not (limits.MIN_SIZE <= diameter[k] <= limits.MAX_SIZE and limits.MIN_SIZE <= density[k] <= limits.MAX_SIZE):
+            fail(number, f"diameter and density must be from {limits.MIN_SIZE:g} to {limits.MAX_SIZE:g}: {' '.join(words)}")
         if tags[k] in seen:
             fail(number, f"atom id {tags[k]} appears twice in Atoms (first on line {seen[tags[k]]})")
         seen[tags[k]] = number

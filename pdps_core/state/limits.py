@@ -13,8 +13,14 @@ Limits, and why:
 - Neighbor bins: at most ``MAX_BINS_PER_AXIS`` per axis and ``MAX_CELLS`` in all; a larger box gets
   wider bins (correct, only slower) instead of a grid that does not fit in memory.
 - ``run N``: 0 <= N <= 2^31 - 1, as LAMMPS; the step after it must fit in 64 bits.
-- Types: 1 <= ntypes <= ``MAX_TYPES`` (per-type-pair tables grow as ntypes^2).
+- Types: 1 <= ntypes <= ``MAX_TYPES`` (200: per-type-pair tables and their set-up grow as ntypes^2).
 - Ids: 1 <= id <= 2^62 (room for insertion); image flags fit in 32 bits.
+- Particles made by one command: at most ``MAX_CREATE`` (2e7), counted before any array is made.
+- Ghosts: a cutoff that would copy the particles more than ``MAX_GHOST_FACTOR`` (1000) times over
+  (many periodic images) is refused at the run's start.
+- Sphere diameters and densities within [1e-50, 1e50], so masses and moments of inertia
+  (r^5) stay normal numbers.
+- ``include`` nested at most ``MAX_INCLUDE_DEPTH`` (32) deep (a script including itself).
 """
 
 import math
@@ -30,7 +36,11 @@ MAX_BINS_PER_AXIS = 1024
 MAX_CELLS = 2 ** 24
 MAX_RUN = 2 ** 31 - 1
 MAX_STEP = 2 ** 63 - 1
-MAX_TYPES = 1000
+MAX_TYPES = 200
+MAX_CREATE = 20_000_000
+MAX_GHOST_FACTOR = 1000
+MIN_SIZE, MAX_SIZE = 1e-50, 1e50
+MAX_INCLUDE_DEPTH = 32
 MAX_TAG = 2 ** 62
 MAX_IMAGE = 2 ** 31 - 1
 
@@ -63,6 +73,18 @@ def check_images(box, cutghost):
             raise ScriptError(f"the cutoff plus skin {cutghost:g} spans {cutghost / length:.3g} periodic "
                               f"images of the box (length {length:g} along {axis}; at most {MAX_IMAGES}): "
                               "make the box larger or the cutoff smaller")
+
+
+def check_ghosts(box, cutghost, natoms):
+    """At a run's start: how many times over the ghosts would copy the particles."""
+    factor = 1.0
+    for d in range(box.dimension):
+        if box.periodic[d]:
+            factor *= 1.0 + 2.0 * cutghost / float(box.hi[d] - box.lo[d])
+    if natoms and factor > MAX_GHOST_FACTOR:
+        raise ScriptError(f"the cutoff plus skin {cutghost:g} would copy the {natoms} particles about "
+                          f"{factor:.3g} times over as periodic ghosts (at most {MAX_GHOST_FACTOR}): "
+                          "make the box larger or the cutoff smaller")
 
 
 def bin_grid(extent, binsize):

@@ -41,6 +41,7 @@ import json
 import math
 import os
 import re
+import tokenize
 import zipfile
 import zlib
 
@@ -309,7 +310,8 @@ def read_file(path, shown=None):
                       for name in archive.namelist() if name.endswith(".npy")}
         except ScriptError:
             raise
-        except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile, RecursionError):
+        except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile, RecursionError,
+                SyntaxError, tokenize.TokenError):
             raise ScriptError(damaged) from None
     return header, arrays
 
@@ -416,10 +418,12 @@ def validate(header, arrays):
         raise ScriptError(f"particle types must be from 1 to {ntypes} (got {types.min()} to {types.max()})")
     if np.abs(arrays["particles/x"]).max(initial=0.0) > limits.MAX_COORDINATE:
         raise ScriptError(f"positions must be within +-{limits.MAX_COORDINATE:g}")
-    for name in ("rmass", "radius"):
+    for name, low, high in (("rmass", limits.MIN_SIZE ** 3, limits.MAX_SIZE ** 3),
+                            ("radius", limits.MIN_SIZE / 2, limits.MAX_SIZE / 2)):
         values = arrays.get(f"particles/{name}")
-        if values is not None and n and not (np.isfinite(values).all() and (values > 0).all()):
-            raise ScriptError(f"per-atom {name} must be finite numbers > 0")
+        if values is not None and n and not (np.isfinite(values).all() and (values >= low).all()
+                                             and (values <= high).all()):
+            raise ScriptError(f"per-atom {name} must be from {low:g} to {high:g}")
 
 
 def restore(sim, header, arrays):
@@ -447,6 +451,7 @@ def restore(sim, header, arrays):
         region = cls(sim, record["id"], _load_args(cls.Args, record["args"], f"region {record['id']}"))
         sim.regions[record["id"]] = region
         _restore_state(region, record["state"], arrays, f"region {record['id']}")
+    groups.update(sim)          # a damaged group definition fails here, not at the next run
     sim.pair = _pair(sim, header["pair"], arrays)
     sim.pair_list = None
     for kind, table in STYLE_TABLES:
