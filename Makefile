@@ -19,14 +19,15 @@ demo: $(STAMP)
 test: $(STAMP)
 	$(VENV)/bin/python -m pytest -m "not slow"
 
-# The fuzz suite (tests/fuzz) at 100,000 cases instead of make test's 2,800, with progress lines; the
-# counts per class and every distinct failure with its reproducer are appended to FUZZ_REPORT.
+# The fuzz suite (tests/fuzz) at 100,000 cases instead of make test's 2,800 (progress lines on the way),
+# 200 of their errors again on 2 ranks, and 100 kill -9 trials instead of 10; the counts per class
+# and every distinct failure with its reproducer are appended to FUZZ_REPORT.
 FUZZ_CASES ?= 100000
 FUZZ_REPORT ?= build/fuzz-report.md
 fuzz: $(STAMP)
 	mkdir -p $(dir $(FUZZ_REPORT))
-	PDPS_FUZZ_CASES=$(FUZZ_CASES) PDPS_FUZZ_REPORT=$(FUZZ_REPORT) \
-		$(VENV)/bin/python -m pytest tests/fuzz/test_fuzz.py -p no:cacheprovider
+	PDPS_FUZZ_CASES=$(FUZZ_CASES) PDPS_FUZZ_MPI=200 PDPS_FUZZ_KILLS=100 PDPS_FUZZ_REPORT=$(FUZZ_REPORT) \
+		$(VENV)/bin/python -m pytest tests/fuzz/test_fuzz.py tests/fuzz/test_kill.py -p no:cacheprovider
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
 # meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build

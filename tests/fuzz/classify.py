@@ -8,13 +8,14 @@ ends in one of these classes:
                log, the thermo CSV, dumps, analysis files, VTK frames)
     error      exit 1 and stderr is exactly one line ``ERROR: FILE:LINE: ...`` naming one of the
                case's files (the script, an included script, the data or restart file)
-    long       still running at the time limit, advancing step by step toward an end step that a
-               64-bit counter can hold: a long run that was asked for, not a fault (``run 2000000``
-               on a small box is a valid script); reported, not failed
+    long       still running at the time limit, either advancing step by step toward an end step
+               that a 64-bit counter can hold (``run 2000000`` on a small box is a valid script), or
+               holding more than BIG particles (40 times the largest seed: a big system may take
+               longer than the limit to set up); reported, not failed
     traceback  a Python exception other than the script errors reached the user ("internal error"),
                or a traceback was printed
-    hang       over the time limit without advancing (or toward an end step beyond 64 bits:
-               ``run 99999999999999999999`` must be refused, not run)
+    hang       over the time limit with fewer than BIG particles, without advancing (or toward an
+               end step beyond 64 bits: ``run 99999999999999999999`` must be refused, not run)
     signal     the process died (segmentation fault, abort, kill); set by runner.py
     nonfinite  exit 0 with nan or inf in the output
     messy      exit 1, but stderr is not one located ERROR line (several lines, raw warnings, no
@@ -25,6 +26,7 @@ ends in one of these classes:
 
 import contextlib
 import io
+import json
 import math
 import os
 import re
@@ -38,6 +40,8 @@ ACCEPTED = ("clean", "error", "long")
 FAILING = ("traceback", "hang", "signal", "nonfinite", "messy")
 CLASSES = ACCEPTED + FAILING
 LARGEST_STEP = 2**63 - 1
+BIG = 20_000
+STATUS = "watchdog.json"        # what the watchdog saw last, for runner.py when it has to kill
 LOCATED = re.compile(r"ERROR: (?P<file>[^\n]+?):(?P<line>\d+): ")
 
 
@@ -92,10 +96,16 @@ class Watchdog(threading.Thread):
     def run(self):
         start = time.monotonic()
         samples = []
+        seen = None
         while not self.done.wait(0.2):
             now = time.monotonic()
             sim = STATE.sim
             samples.append((now, getattr(sim, "step", None)))
+            status = particle_count(sim)
+            if status != seen:
+                seen = status
+                with open(STATUS, "w") as handle:
+                    json.dump({"particles": status}, handle)
             if now - start < self.limit:
                 continue
             recent = [step for t, step in samples if t >= now - 1.5 and step is not None]
@@ -103,11 +113,13 @@ class Watchdog(threading.Thread):
             stepping = (len(recent) >= 2 and recent[-1] > recent[0] and last is not None
                         and recent[-1] < last)
             representable = last is not None and last <= LARGEST_STEP
-            self.verdict = "long" if stepping and representable else "hang"
+            big = (particle_count(sim) or 0) >= BIG
+            self.verdict = "long" if (stepping and representable) or big else "hang"
             frame = sys._current_frames().get(self.main)
             stack = "".join(traceback.format_stack(frame)) if frame is not None else ""
             self.where = {"source": getattr(sim, "source", None), "line": getattr(sim, "line", None),
                           "step": getattr(sim, "step", None), "last_step": str(last),
+                          "particles": particle_count(sim),
                           "stack": stack[-4000:]}
             with self.lock:
                 if self.running:
@@ -120,6 +132,13 @@ class Watchdog(threading.Thread):
         with self.lock:
             self.running = False
         _pending_interrupt_lands_here()
+
+
+def particle_count(sim):
+    try:
+        return int(sim.particles.nlocal)
+    except Exception:                                    # noqa: BLE001  (no simulation, or half made)
+        return None
 
 
 def run_case(folder, script, inputs, limit):
@@ -271,7 +290,7 @@ def nonfinite_output(folder, inputs, stdout):
         for name in sorted(files):
             path = os.path.join(root, name)
             relative = os.path.relpath(path, folder)
-            if relative in inputs or os.path.getsize(path) > 50_000_000:
+            if relative in inputs or name == STATUS or os.path.getsize(path) > 50_000_000:
                 continue
             if name.endswith(".vtu"):
                 found = _scan_vtu(path, relative)

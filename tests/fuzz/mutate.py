@@ -366,7 +366,7 @@ def _set(value, path, new):
 def mutate_header(draw, members, context):
     try:
         header = json.loads(members["header.json"])
-    except (ValueError, RecursionError):          # an earlier mutation left it unreadable
+    except (KeyError, ValueError, RecursionError):  # an earlier mutation removed or broke it
         return None
     paths = list(_paths(header))
     path = paths[_pick(draw, paths)]

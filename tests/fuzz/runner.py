@@ -19,6 +19,8 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .classify import ACCEPTED, BIG, STATUS
+
 WORKER = Path(__file__).with_name("worker.py")
 
 
@@ -85,15 +87,30 @@ class _Worker:
         self.log.close()
 
 
+def _particles(folder):
+    """How many particles the case held when its watchdog last looked (classify.STATUS)."""
+    try:
+        return json.loads((Path(folder) / STATUS).read_text())["particles"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
 def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, keep=None,
               on_result=None, env=None):
-    """Run every case (each in a folder of its own under ``root``); returns their Results in order.
-    The folders of accepted cases are removed unless ``keep`` says to keep them (kept: failures)."""
-    from .classify import ACCEPTED
+    """Run every case of the iterable ``cases`` (each in a folder of its own under ``root``, taken
+    from the iterable only when a worker is free); returns their Results in the order they ended.
+    The folders of accepted cases are removed unless ``keep`` says to keep them (kept: failures);
+    ``on_result`` sees each Result as it ends."""
     root = Path(root)
     root.mkdir(parents=True, exist_ok=True)
-    results = [None] * len(cases)
-    pending = list(range(len(cases)))[::-1]
+    results = []
+    source = iter(cases)
+    pending = [next(source, None)]            # the next case, drawn ahead; None: no more
+
+    def take():
+        case, pending[0] = pending[0], next(source, None)
+        return case
+
     selector = selectors.DefaultSelector()
     pool = []
     started = 0
@@ -113,7 +130,7 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
     def finish(worker, klass, reply):
         case, folder = worker.case, worker.folder
         result = Result(case, klass, reply, folder, time.monotonic() - worker.started)
-        results[case.index_in_batch] = result
+        results.append(result)
         worker.case = None
         worker.done += 1
         if klass in ACCEPTED and not (keep and keep(result)):
@@ -121,19 +138,17 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
         if on_result is not None:
             on_result(result)
 
-    for k, case in enumerate(cases):
-        case.index_in_batch = k
-    for _ in range(min(workers, len(cases))):
+    for _ in range(workers):
         start()
     try:
-        while pending or any(w.case is not None for w in pool):
+        while pending[0] is not None or any(w.case is not None for w in pool):
             for worker in list(pool):
                 if worker.ready and worker.case is None:
-                    if worker.done >= recycle and pending:
+                    if worker.done >= recycle and pending[0] is not None:
                         retire(worker)
                         start()
-                    elif pending:
-                        case = cases[pending.pop()]
+                    elif pending[0] is not None:
+                        case = take()
                         folder = root / case.name
                         shutil.rmtree(folder, ignore_errors=True)
                         folder.mkdir(parents=True)
@@ -156,7 +171,7 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                         name = signal.Signals(-code).name if code < 0 else f"exit status {code}"
                         finish(worker, "signal", {"code": code, "stderr": "", "stdout": "",
                                                   "traceback": stack, "detail": name})
-                    if pending or any(w.case is not None for w in pool) or not pool:
+                    if pending[0] is not None:
                         start()
                     continue
                 reply = json.loads(line)
@@ -171,10 +186,14 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                     time.sleep(0.3)
                     stack = worker.stack()
                     retire(worker)
-                    finish(worker, "hang", {"code": None, "stderr": "", "stdout": "",
-                                            "traceback": stack,
-                                            "detail": f"no answer within {limit + grace:g} s"})
-                    start()
+                    particles = _particles(worker.folder)
+                    klass = "long" if particles is not None and particles >= BIG else "hang"
+                    finish(worker, klass, {"code": None, "stderr": "", "stdout": "",
+                                           "traceback": stack,
+                                           "detail": f"no answer within {limit + grace:g} s, "
+                                                     f"{particles} particles"})
+                    if pending[0] is not None:
+                        start()
     finally:
         for worker in list(pool):
             retire(worker)

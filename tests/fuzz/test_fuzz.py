@@ -9,6 +9,8 @@ message groups the failures by where they come from and shows one reproducer of 
     PDPS_FUZZ_CASES     total number of cases (default 2,800: 2,000 scripts, 500 data files, 300
                         restart files; other totals keep those proportions); `make fuzz` runs 100,000
     PDPS_FUZZ_WORKERS   worker processes (default: the number of cores)
+    PDPS_FUZZ_MPI       how many of the cases that ended in an error are run again under mpiexec -n 2
+                        (default 8), where they must end in one located error line as well
     PDPS_FUZZ_LIMIT     seconds a case may run before it is interrupted (default 10: a kernel
                         compiled for a new pair formula takes a few)
     PDPS_FUZZ_REPORT    a Markdown file to append the summary and the distinct failures to; the
@@ -33,9 +35,11 @@ from hypothesis import HealthCheck, Phase, given, seed, settings
 from . import corpus, mutate
 from .classify import ACCEPTED, CLASSES
 from .runner import Case, run_cases
+from .test_mpi_errors import one_located_line, run_parallel
 
 DEFAULT_COUNTS = {"scripts": 2000, "data": 500, "restarts": 300}
 HYPOTHESIS_SEED = 20240610
+CHUNK = 2000
 PROJECT = corpus.PROJECT
 SEED_LIMIT = 300.0          # the unmutated seeds run first, compiling what numba has not cached
 
@@ -48,10 +52,15 @@ def counts():
     return {kind: max(1, round(n * scale)) for kind, n in DEFAULT_COUNTS.items()}
 
 
-def draw_cases(kind, strategy, count, start=HYPOTHESIS_SEED):
-    """``count`` distinct cases drawn by hypothesis from ``strategy`` (fixed seed: the same cases
-    on every run of the same corpus)."""
-    cases, seen = [], set()
+def mpi_sample():
+    return int(os.environ.get("PDPS_FUZZ_MPI", "8"))
+
+
+def draw_cases(kind, strategy, count, start, seen, first=0):
+    """``count`` cases drawn by hypothesis from ``strategy`` with the seed ``start`` (fixed: the same
+    cases on every run of the same corpus), none drawn before (``seen``: their hashes); their
+    indices from ``first``."""
+    cases = []
     for attempt in range(10):
         if len(cases) >= count:
             break
@@ -68,11 +77,29 @@ def draw_cases(kind, strategy, count, start=HYPOTHESIS_SEED):
                                           for n, d in sorted(files.items()))).digest()
             if key not in seen:
                 seen.add(key)
-                cases.append(Case(kind, len(cases), origin.name, mutations, files, origin.script))
+                cases.append(Case(kind, first + len(cases), origin.name, mutations, files,
+                                  origin.script))
 
         collect()
     assert len(cases) == count, f"hypothesis drew {len(cases)} distinct {kind} cases of {count}"
     return cases
+
+
+def drawn_cases(plan):
+    """The cases of ``plan`` ([(kind, strategy, count)]), drawn CHUNK at a time as the workers need
+    them, so that 100,000 cases (restart files of 100 kB among them) never sit in memory at once."""
+    seen = set()
+    for kind, strategy, count in plan:
+        for k, first in enumerate(range(0, count, CHUNK)):
+            yield from draw_cases(kind, strategy, min(CHUNK, count - first),
+                                  HYPOTHESIS_SEED + 100 * k, seen, first)
+
+
+def compact(result):
+    """What the summary needs of an accepted case; its files and screen go (failures keep all)."""
+    result.case.files = None
+    stderr = result.reply.get("stderr") or ""
+    result.reply = {"class": result.klass, "stderr": stderr.strip().split("\n")[0][:300]}
 
 
 def _reporter(config):
@@ -105,28 +132,35 @@ def fuzz(tmp_path_factory, request):
     wanted = counts()
     data_seeds = corpus.data_seeds(root / "data-seeds")
     restart_seeds = corpus.restart_seeds(written)
-    cases = (draw_cases("scripts", mutate.script_case(scripts, context), wanted["scripts"])
-             + draw_cases("data", mutate.data_case(data_seeds, context), wanted["data"])
-             + draw_cases("restarts", mutate.restart_case(restart_seeds, context), wanted["restarts"]))
-    drawn = time.monotonic()
+    plan = [("scripts", mutate.script_case(scripts, context), wanted["scripts"]),
+            ("data", mutate.data_case(data_seeds, context), wanted["data"]),
+            ("restarts", mutate.restart_case(restart_seeds, context), wanted["restarts"])]
+    seeded = time.monotonic()
+    total, done = sum(wanted.values()), Counter()
+    # one case in every stride is kept when it ends in an error, for the MPI reruns
+    stride = max(1, total // (4 * mpi_sample()))
 
-    total, done = len(cases), Counter()
+    def sampled(result):
+        return result.klass == "error" and result.case.index % stride == 0
 
     def progress(result):
+        if result.klass in ACCEPTED and not sampled(result):
+            compact(result)
         done[result.klass] += 1
         n = sum(done.values())
         if total >= 5000 and (n % 2000 == 0 or n == total):
-            rate = n / (time.monotonic() - drawn)
+            rate = n / (time.monotonic() - seeded)
             classes = ", ".join(f"{k} {v}" for k, v in sorted(done.items()))
             print(f"fuzz: {n}/{total} cases ({rate:.1f}/s): {classes}", file=sys.__stderr__,
                   flush=True)
 
-    results = run_cases(cases, root / "cases", workers=workers, limit=limit, on_result=progress)
+    results = run_cases(drawn_cases(plan), root / "cases", workers=workers, limit=limit,
+                        on_result=progress, keep=sampled)
     seconds = time.monotonic() - started
     by_kind = defaultdict(list)
-    for result in results:
+    for result in sorted(results, key=lambda r: r.case.index):
         by_kind[result.case.kind].append(result)
-    summary = summarize(by_kind, seconds, drawn - started, workers, limit)
+    summary = summarize(by_kind, seconds, seeded - started, workers, limit)
     reporter = _reporter(request.config)
     if reporter is not None:
         for line in summary.splitlines():
@@ -134,12 +168,14 @@ def fuzz(tmp_path_factory, request):
     report = os.environ.get("PDPS_FUZZ_REPORT")
     if report:
         write_report(Path(report), summary, by_kind)
-    return {"seeds": ran, **by_kind}
+    mpi = [r for r in results if sampled(r)]
+    mpi = [mpi[round(k * len(mpi) / mpi_sample())] for k in range(min(mpi_sample(), len(mpi)))]
+    return {"seeds": ran, "mpi": mpi, **by_kind}
 
 
 def summarize(by_kind, seconds, setup, workers, limit):
     lines = [f"fuzz: {sum(len(r) for r in by_kind.values())} cases in {seconds:.0f} s "
-             f"({setup:.0f} s of seeds and drawing; {workers} workers, {limit:g} s per case)"]
+             f"({setup:.0f} s of running the seeds; {workers} workers, {limit:g} s per case)"]
     for kind, results in by_kind.items():
         count = Counter(r.klass for r in results)
         classes = ", ".join(f"{k} {count[k]}" for k in CLASSES if count[k])
@@ -303,3 +339,27 @@ def test_mutated_inputs_end_in_a_clean_exit_or_one_located_error(fuzz, kind):
     results = fuzz[kind]
     assert len(results) == counts()[kind]
     assert not failures(results), failure_message(kind, results)
+
+
+def test_errors_found_in_serial_are_one_located_line_on_two_ranks(fuzz, tmp_path):
+    """A sample of the cases that ended in an error, run again under ``mpiexec -n 2``: still one
+    located line, exit status 1, whichever rank met the problem."""
+    assert len(fuzz["mpi"]) == mpi_sample()
+    wrong = []
+    for result in fuzz["mpi"]:
+        folder = tmp_path / result.case.name
+        folder.mkdir()
+        for name, data in result.case.files.items():
+            (folder / name).write_bytes(data)
+        done = run_parallel(folder, result.case.script)
+        if not one_located_line(done, list(result.case.files)):
+            wrong.append(f"{result.case.name} ({'; '.join(result.case.mutations)}): serial "
+                         f"{result.reply['stderr'].strip()!r}, on 2 ranks: exit status {done[0]}, "
+                         f"stderr {done[1].strip()[:600]!r}")
+    report = os.environ.get("PDPS_FUZZ_REPORT")
+    if report:
+        with open(report, "a") as handle:
+            handle.write(f"\nMPI: {len(fuzz['mpi'])} cases that ended in an error, run again on 2 ranks: "
+                         f"{len(fuzz['mpi']) - len(wrong)} ended in one located line\n"
+                         + "".join(f"    {w}\n" for w in wrong))
+    assert not wrong, "\n".join(wrong)

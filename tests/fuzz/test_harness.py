@@ -16,6 +16,12 @@ create_particle 1 single 1 1 1
 create_particle 1 single 2 2 2
 fix 1 all nve
 """
+BIG = """region box block 0 9 0 9 0 9
+create_box 1 box
+mass 1 1
+lattice spacing x 0.3 y 0.3 z 0.3
+create_particle 1 region box
+"""
 
 CASES = {
     "clean": (BOX + "thermo 1\nrun 5\n", "clean"),
@@ -26,6 +32,8 @@ CASES = {
     "exit": (BOX + "fix m all fuzz/misbehave exit\nrun 5\n", "signal"),
     "spin": (BOX + "fix m all fuzz/misbehave spin\nrun 5\n", "hang"),
     "sleep": (BOX + "fix m all fuzz/misbehave sleep\nrun 5\n", "hang"),
+    "big sleep": (BIG + "fix m all fuzz/misbehave sleep\nrun 5\n", "long"),
+    "big spin": (BIG + "fix m all fuzz/misbehave spin\nrun 5\n", "long"),
     "raise": (BOX + "fix m all fuzz/misbehave raise\nrun 5\n", "traceback"),
     "nan": (BOX + "fix m all fuzz/misbehave nan\nrun 5\n", "nonfinite"),
     "warn": (BOX + "fix m all fuzz/misbehave warn\nrun 5\n", "messy"),
@@ -55,6 +63,12 @@ def test_a_signal_names_itself_and_where_it_struck(outcomes):
     assert outcomes["exit"].reply["detail"] == "exit status 3"
 
 
+def test_a_big_system_over_the_limit_is_a_long_run_not_a_hang(outcomes):
+    """27,000 particles (more than classify.BIG) may take longer than the limit to set up."""
+    assert outcomes["big sleep"].reply["detail"]["particles"] == 27000
+    assert outcomes["big spin"].reply["detail"] == "no answer within 7 s, 27000 particles"
+
+
 def test_a_hang_shows_where_it_was(outcomes):
     """A hang the watchdog interrupts has the script line and the Python stack; one stuck in C
     holding the interpreter lock has the stack faulthandler dumped before the kill."""
@@ -62,7 +76,7 @@ def test_a_hang_shows_where_it_was(outcomes):
     assert (asleep["source"], asleep["line"], asleep["step"]) == ("in.fuzz", 8, 1)
     assert "time.sleep" in asleep["stack"]
     assert "selftest.py" in outcomes["spin"].reply["traceback"]
-    assert outcomes["spin"].reply["detail"] == "no answer within 7 s"
+    assert outcomes["spin"].reply["detail"] == "no answer within 7 s, 2 particles"
 
 
 def test_the_internal_error_keeps_its_traceback(outcomes):
