@@ -241,6 +241,9 @@ def set_field(path, value):
     (set_field(["particles", "nlocal"], float("inf")), "field nlocal must be a particle count (got inf)"),
     (set_field(["particle_style"], "ellipsoid"), "field particle_style must be atomic or sphere (got 'ellipsoid')"),
     (set_field(["ntypes"], 0), "field ntypes must be from 1 to 200 (got 0)"),
+    (set_field(["fixes", 0, "group"], {"a": 1}), "field group must be a name (got {'a': 1})"),
+    (set_field(["fixes", 0, "group"], "nowhere"), "fixes '1' uses group 'nowhere', which the file does not define"),
+    (set_field(["groups", "bits", "all"], 40), "group 'all' has bit 40, not 0 to 31"),
 ])
 def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     make_sim().command(RESTART_SCRIPT)
@@ -258,6 +261,7 @@ def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     ({"particles/x": lambda x: x[:1]}, "array particles/x has shape (1, 3), not (2, 3)"),
     ({"mass": lambda m: np.full_like(m, np.inf)}, "masses must be finite numbers > 0 (or unset)"),
     ({"box/lo": lambda lo: np.full_like(lo, np.nan)}, "array box/lo holds non-finite values"),
+    ({"box/lo": lambda lo: lo.astype(complex)}, "array box/lo holds complex128 values, not numbers of the saved kind"),
 ])
 def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
     make_sim().command(RESTART_SCRIPT)

@@ -348,12 +348,14 @@ def _field(record, name, kind, check=None, expected=""):
     return value
 
 
-def _array(arrays, name, shape, finite=True):
+def _array(arrays, name, shape, finite=True, kinds="fiu"):
     values = arrays.get(name)
     if values is None:
         raise ScriptError(f"array {name} is missing")
     if values.shape != shape:
         raise ScriptError(f"array {name} has shape {values.shape}, not {shape}")
+    if values.dtype.kind not in kinds:
+        raise ScriptError(f"array {name} holds {values.dtype} values, not numbers of the saved kind")
     if finite and values.dtype.kind == "f" and not np.isfinite(values).all():
         raise ScriptError(f"array {name} holds non-finite values")
     return values
@@ -397,17 +399,32 @@ def validate(header, arrays):
     _field(neighbor, "check", bool)
     _field(neighbor, "sort_every", int, lambda k: k >= 0, "an integer >= 0")
     _field(neighbor, "ago", int, lambda k: k >= 0, "an integer >= 0")
-    lo = _array(arrays, "box/lo", (3,))
-    hi = _array(arrays, "box/hi", (3,))
+    lo = _array(arrays, "box/lo", (3,), kinds="f")
+    hi = _array(arrays, "box/hi", (3,), kinds="f")
     limits.check_box(lo, hi)
     if dimension == 2 and header["periodicity"][2] != "p":
         raise ScriptError("a 2-d box needs a periodic z boundary")
-    mass = _array(arrays, "mass", (ntypes + 1,), finite=False)
+    mass = _array(arrays, "mass", (ntypes + 1,), finite=False, kinds="f")
     set_mass = mass[1:][~np.isnan(mass[1:])]
     if not (np.isfinite(set_mass).all() and (set_mass > 0).all()):
         raise ScriptError("masses must be finite numbers > 0 (or unset)")
-    for name, shape in (("tag", (n,)), ("type", (n,)), ("x", (n, 3)), ("v", (n, 3)), ("image", (n, 3))):
-        _array(arrays, f"particles/{name}", shape)
+    for name, shape, kinds in (("tag", (n,), "iu"), ("type", (n,), "iu"), ("x", (n, 3), "f"),
+                               ("v", (n, 3), "f"), ("image", (n, 3), "iu")):
+        _array(arrays, f"particles/{name}", shape, kinds=kinds)
+    groups = _field(header, "groups", dict)
+    bits = _field(groups, "bits", dict)
+    for name, bit in bits.items():
+        if not (isinstance(bit, int) and not isinstance(bit, bool) and 0 <= bit < 32):
+            raise ScriptError(f"group {name!r:.40} has bit {bit!r:.40}, not 0 to 31")
+    _field(groups, "definitions", dict)
+    for table in ("regions",) + tuple(t for _, t in STYLE_TABLES):
+        records = _field(header, table, list)
+        for record in records:
+            for key in ("id", "style") + (("group",) if table != "regions" else ()):
+                _field(record, key, str, None, "a name")
+            if table != "regions" and record["group"] not in bits:
+                raise ScriptError(f"{table} {record['id']!r:.40} uses group {record['group']!r:.40}, "
+                                  "which the file does not define")
     tags = arrays["particles/tag"]
     if n and not (tags.min() >= 1 and tags.max() <= limits.MAX_TAG):
         raise ScriptError(f"particle ids must be from 1 to {limits.MAX_TAG}")
