@@ -425,6 +425,11 @@ def validate(header, arrays):
             if table != "regions" and record["group"] not in bits:
                 raise ScriptError(f"{table} {record['id']!r:.40} uses group {record['group']!r:.40}, "
                                   "which the file does not define")
+    has_rmass = any(isinstance(e, dict) and e.get("name") == "rmass" for e in particles["properties"])
+    used = np.unique(arrays["particles/type"]) if n else np.zeros(0, dtype=int)
+    unset = [int(t) for t in used if 1 <= t <= ntypes and np.isnan(mass[t])]
+    if unset and not has_rmass:
+        raise ScriptError(f"particles of type {unset[0]} have no mass (NaN in the file)")
     tags = arrays["particles/tag"]
     if n and not (tags.min() >= 1 and tags.max() <= limits.MAX_TAG):
         raise ScriptError(f"particle ids must be from 1 to {limits.MAX_TAG}")
