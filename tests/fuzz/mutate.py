@@ -22,6 +22,7 @@ import math
 import re
 import warnings
 import zipfile
+from collections import Counter
 
 import numpy as np
 from hypothesis import strategies as st
@@ -290,6 +291,19 @@ def mutate_section(draw, data, context):
     return _join(lines), f"section {name!r} (line {s + 1}): {how}"
 
 
+SKIPPED = Counter()        # mutations that could not apply to what earlier ones left, by kind
+
+
+def _apply(operation, draw, data, context):
+    """``operation(draw, data, context)``, or None (counted in SKIPPED) when it cannot apply to
+    what earlier mutations left (a member already removed, an array already unreadable)."""
+    try:
+        return operation(draw, data, context)
+    except Exception as exc:                   # noqa: BLE001  (hypothesis's own stops pass: BaseException)
+        SKIPPED[f"{operation.__name__}: {type(exc).__name__}"] += 1
+        return None
+
+
 MUTATION_COUNTS = [1, 1, 1, 2, 2, 3, 4]        # mostly one: a case close to a valid input goes deeper
 TEXT_MUTATIONS = [mutate_number, mutate_number, mutate_word, mutate_line, mutate_bytes]
 
@@ -299,7 +313,7 @@ def mutated_text(draw, data, context, operations):
     done = []
     for _ in range(draw(st.sampled_from(MUTATION_COUNTS))):
         operation = draw(st.sampled_from(operations))
-        result = operation(draw, data, context)
+        result = _apply(operation, draw, data, context)
         if result is None:
             continue
         data, what = result
@@ -419,6 +433,26 @@ def _npy(array):
     return buffer.getvalue()
 
 
+def _set_value(draw, array):
+    """One element of ``array`` set to an extreme of its kind: (new array, what was done)."""
+    flat = array.reshape(-1).copy()
+    k = draw.pick(flat.size)
+    if flat.dtype.kind == "f":
+        new = draw(st.sampled_from([np.nan, np.inf, -np.inf, 1e308, -1e308, 0.0, -1.0, 1e-300,
+                                    flat[k] * 1e6, -flat[k]]))
+    elif flat.dtype.kind in "iu":
+        info = np.iinfo(flat.dtype)
+        new = draw(st.sampled_from([0, -1, 1, 99, info.max, info.min, int(flat[k]) + 1]))
+        new = min(max(new, info.min), info.max)
+    elif flat.dtype.kind == "b":
+        new = not flat[k]
+    else:
+        return None
+    old = flat[k]
+    flat[k] = new
+    return flat.reshape(array.shape), f"element {k}: {old!r} -> {new!r}"
+
+
 def mutate_array(draw, members, context):
     names = sorted(n for n in members if n.endswith(".npy"))
     if not names:
@@ -426,28 +460,16 @@ def mutate_array(draw, members, context):
     name = draw.choice(names)
     try:
         array = np.lib.format.read_array(io.BytesIO(members[name]), allow_pickle=False)
-    except ValueError:                             # an earlier mutation left it unreadable
+    except Exception:                              # noqa: BLE001  (an earlier mutation broke it)
         return None
     how = draw(st.sampled_from(["value", "value", "rows", "rows", "reshape", "dtype", "empty",
                                 "duplicate", "bytes"]))
     if how == "value" and array.size:
-        flat = array.reshape(-1).copy()
-        k = draw.pick(flat.size)
-        if flat.dtype.kind == "f":
-            new = draw(st.sampled_from([np.nan, np.inf, -np.inf, 1e308, -1e308, 0.0, -1.0, 1e-300,
-                                        flat[k] * 1e6, -flat[k]]))
-        elif flat.dtype.kind in "iu":
-            info = np.iinfo(flat.dtype)
-            new = draw(st.sampled_from([0, -1, 1, 99, info.max, info.min, int(flat[k]) + 1]))
-            new = min(max(new, info.min), info.max)
-        elif flat.dtype.kind == "b":
-            new = not flat[k]
-        else:
+        with np.errstate(all="ignore"):
+            result = _set_value(draw, array)
+        if result is None:
             return None
-        old = flat[k]
-        flat[k] = new
-        array = flat.reshape(array.shape)
-        what = f"element {k}: {old!r} -> {new!r}"
+        array, what = result
     elif how == "rows" and array.ndim:
         count = draw(st.sampled_from([-1, -2, 1, 2, -10**6]))
         if count > 0:
@@ -471,7 +493,8 @@ def mutate_array(draw, members, context):
     elif how == "dtype":
         dtype = draw(st.sampled_from(["float32", "int8", "uint64", "bool", "complex128", "<U3",
                                       ">f8", "float16"]))
-        with np.errstate(all="ignore"):
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")      # numpy's ComplexWarning: the loss is the point
             try:
                 array = array.astype(dtype)
             except (TypeError, ValueError):
@@ -561,7 +584,7 @@ def restart_case(draw, seeds, context):
     operations = [mutate_header, mutate_header, mutate_header, mutate_array, mutate_array,
                   mutate_array, mutate_archive]
     for _ in range(draw(st.integers(1, 3))):
-        result = draw(st.sampled_from(operations))(draw, members, context)
+        result = _apply(draw(st.sampled_from(operations)), draw, members, context)
         if result is None:
             continue
         value, what = result

@@ -24,7 +24,6 @@ import hashlib
 import os
 import re
 import shutil
-import sys
 import time
 from collections import Counter, defaultdict
 from pathlib import Path
@@ -151,9 +150,11 @@ def fuzz(tmp_path_factory, request):
         if total >= 5000 and (n % 2000 == 0 or n == total):
             rate = n / (time.monotonic() - seeded)
             classes = ", ".join(f"{k} {v}" for k, v in sorted(done.items()))
-            print(f"fuzz: {n}/{total} cases ({rate:.1f}/s): {classes}", file=sys.__stderr__,
-                  flush=True)
+            line = f"fuzz: {n}/{total} cases ({rate:.1f}/s): {classes}"
+            if reporter is not None:
+                reporter.write_line(line)
 
+    reporter = _reporter(request.config)
     results = run_cases(drawn_cases(plan), root / "cases", workers=workers, limit=limit,
                         on_result=progress, keep=sampled)
     seconds = time.monotonic() - started
@@ -161,7 +162,6 @@ def fuzz(tmp_path_factory, request):
     for result in sorted(results, key=lambda r: r.case.index):
         by_kind[result.case.kind].append(result)
     summary = summarize(by_kind, seconds, seeded - started, workers, limit)
-    reporter = _reporter(request.config)
     if reporter is not None:
         for line in summary.splitlines():
             reporter.write_line(line)
@@ -180,6 +180,9 @@ def summarize(by_kind, seconds, setup, workers, limit):
         count = Counter(r.klass for r in results)
         classes = ", ".join(f"{k} {count[k]}" for k in CLASSES if count[k])
         lines.append(f"fuzz {kind}: {len(results)} cases: {classes}")
+    if mutate.SKIPPED:
+        lines.append("mutations that could not apply to what earlier ones left (skipped): "
+                     + ", ".join(f"{k} {n}" for k, n in mutate.SKIPPED.most_common()))
     return "\n".join(lines)
 
 
