@@ -76,7 +76,10 @@ def test_a_hang_shows_where_it_was(outcomes):
     assert (asleep["source"], asleep["line"], asleep["step"]) == ("in.fuzz", 8, 1)
     assert "time.sleep" in asleep["stack"]
     assert "selftest.py" in outcomes["spin"].reply["traceback"]
-    assert outcomes["spin"].reply["detail"] == "no answer within 7 s, 2 particles"
+    # the particle count comes from the watchdog's last look, which a case that grabs the
+    # interpreter lock at once may not have allowed: the count is there or unknown, never wrong
+    assert outcomes["spin"].reply["detail"] in ("no answer within 7 s, 2 particles",
+                                                "no answer within 7 s, None particles")
 
 
 def test_the_internal_error_keeps_its_traceback(outcomes):
