@@ -153,6 +153,7 @@ def fuzz(tmp_path_factory, request):
             line = f"fuzz: {n}/{total} cases ({rate:.1f}/s): {classes}"
             if reporter is not None:
                 reporter.write_line(line)
+                reporter.flush()
 
     reporter = _reporter(request.config)
     results = run_cases(drawn_cases(plan), root / "cases", workers=workers, limit=limit,
