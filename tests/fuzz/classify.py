@@ -48,6 +48,7 @@ LOCATED = re.compile(r"ERROR: (?P<file>[^\n]+?):(?P<line>\d+): ")
 class _State:
     sim = None               # the Simulation of the running case
     traceback = None         # the traceback behind an "internal error" line
+    recorded = None          # the particle count last written to STATUS
 
 
 STATE = _State()
@@ -67,6 +68,15 @@ def prepare():
         created(self, *args, **kwargs)
 
     simulation.Simulation.__init__ = tracked
+    execute = simulation.Simulation.execute
+
+    def counted(self, words):
+        try:
+            return execute(self, words)
+        finally:
+            record_particles(self)
+
+    simulation.Simulation.execute = counted
     fail = cli._fail
 
     def recording_fail(sim, message, debug, alone=False):
@@ -96,16 +106,11 @@ class Watchdog(threading.Thread):
     def run(self):
         start = time.monotonic()
         samples = []
-        seen = None
         while not self.done.wait(0.2):
             now = time.monotonic()
             sim = STATE.sim
             samples.append((now, getattr(sim, "step", None)))
-            status = particle_count(sim)
-            if status != seen:
-                seen = status
-                with open(STATUS, "w") as handle:
-                    json.dump({"particles": status}, handle)
+            record_particles(sim)
             if now - start < self.limit:
                 continue
             recent = [step for t, step in samples if t >= now - 1.5 and step is not None]
@@ -141,13 +146,23 @@ def particle_count(sim):
         return None
 
 
+def record_particles(sim):
+    """Write the case's particle count to STATUS when it changed: after every command (so it is
+    there before a run that may never let the watchdog look again) and at each watchdog sample."""
+    count = particle_count(sim)
+    if count is not None and count != STATE.recorded:
+        STATE.recorded = count
+        with open(STATUS, "w") as handle:
+            json.dump({"particles": count}, handle)
+
+
 def run_case(folder, script, inputs, limit):
     """Run ``script`` in ``folder`` (its input files named in ``inputs``) and classify the result:
     a dict with the class, the exit code, the captured screen and stderr (trimmed) and details."""
     from pdps_core import cli
     import numpy as np
     os.chdir(folder)
-    STATE.sim, STATE.traceback = None, None
+    STATE.sim, STATE.traceback, STATE.recorded = None, None, None
     out, err = io.StringIO(), io.StringIO()
     watchdog = Watchdog(limit)
     code, escaped = None, None

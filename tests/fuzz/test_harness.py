@@ -44,8 +44,13 @@ CASES = {
 def outcomes(tmp_path_factory):
     cases = [Case("harness", k, name, [], {"in.fuzz": script.encode()})
              for k, (name, (script, _)) in enumerate(CASES.items())]
-    results = run_cases(cases, tmp_path_factory.mktemp("harness"), workers=2, limit=5.0, grace=2.0,
-                        env={"PDPS_FUZZ_SELFTEST": "1"})
+    # workers started from a background job inherit SIGINT ignored: they must interrupt cases anyway
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        results = run_cases(cases, tmp_path_factory.mktemp("harness"), workers=2, limit=5.0,
+                            grace=2.0, env={"PDPS_FUZZ_SELFTEST": "1"})
+    finally:
+        signal.signal(signal.SIGINT, previous)
     return {r.case.seed: r for r in results}
 
 

@@ -27,6 +27,9 @@ def main():
     replies = os.fdopen(os.dup(1), "w", buffering=1)
     devnull = os.open(os.devnull, os.O_WRONLY)
     os.dup2(devnull, 1)
+    # the watchdog interrupts a case as SIGINT would: a worker started from a background job
+    # inherits SIGINT ignored, and Python then leaves it ignored
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     faulthandler.enable(file=sys.stderr, all_threads=True)
     faulthandler.register(signal.SIGUSR1, file=sys.stderr, all_threads=True)
     gib = float(os.environ.get("PDPS_FUZZ_MEMORY", "4"))
