@@ -224,8 +224,9 @@ def signature(result):
     if klass == "traceback":
         text = reply.get("traceback") or ""
         if text:
-            last = text.strip().splitlines()[-1]
-            exception = last.split(":")[0].strip()
+            # the last "Type: message" line (numba's errors end in notes, not in that line)
+            named = re.findall(r"^([A-Za-z_][\w.]*(?:Error|Exception|Exit))\b", text, re.M)
+            exception = named[-1] if named else text.strip().splitlines()[-1].split(":")[0]
         else:
             found = re.search(r"internal error(?: at \S+)?: (\w+)", reply.get("stderr") or "")
             exception = found[1] if found else _normalize((reply.get("stderr") or "?")[:80])
