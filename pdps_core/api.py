@@ -16,12 +16,13 @@ from .random import pair_gaussian, particle_gaussians, particle_uniforms, philox
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
+from .state.limits import check_bins, check_images
 from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region,
                      StyleArgs, VariableRef, keyword, param, parse_args, peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "ScriptError",
-           "Simulation", "SimulationError", "StyleArgs", "VariableRef", "close_slot", "find_slot",
+           "Simulation", "SimulationError", "StyleArgs", "VariableRef", "check_bins", "check_images", "close_slot", "find_slot",
            "keyword", "observables", "open_slot", "pair_gaussian", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
            "type_range"]

@@ -152,6 +152,11 @@ class Simulation:
                     self.execute(words)
                 except ScriptError as exc:
                     raise exc.locate(source, number, name)
+                except MemoryError as exc:
+                    # a valid scene too large for this machine is the user's to resize, not a bug
+                    message = str(exc).split(" for an array")[0].rstrip(".") or "an allocation failed"
+                    raise ScriptError(f"out of memory ({message}): the scene needs more memory "
+                                      "than this machine gives").locate(source, number, name) from None
                 except Exception:
                     # the innermost place a bug surfaced, for the one-line internal error
                     if self.error_location is None:

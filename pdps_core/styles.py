@@ -13,6 +13,7 @@ styles reads package metadata only: a style's module is imported the first time 
 
 import difflib
 import importlib
+import math
 import os
 import typing
 from dataclasses import dataclass
@@ -23,9 +24,11 @@ import numpy as np
 from packaging.specifiers import InvalidSpecifier, SpecifierSet
 from packaging.utils import canonicalize_name
 from packaging.version import Version
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, field_validator
+from pydantic_core import PydanticCustomError
 
 from .errors import ScriptError
+from .state import limits
 
 KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
 
@@ -52,8 +55,20 @@ FloatOrVariable = typing.Annotated[float | VariableRef, BeforeValidator(_number_
 
 
 class StyleArgs(BaseModel):
-    """Base of every ``Args`` model: no NaN/inf, no unknown fields, immutable."""
+    """Base of every ``Args`` model: no NaN/inf, no unknown fields, immutable; every number 0 or of
+    a magnitude from 1e-50 to 1e50 (``limits.MIN_SIZE``, ``MAX_SIZE``), whatever its unit, so that
+    products and quotients of a few of them stay finite and nonzero."""
     model_config = ConfigDict(allow_inf_nan=False, extra="forbid", frozen=True, populate_by_name=True)
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _representable(cls, value, info):
+        for number in (value if isinstance(value, (list, tuple)) else (value,)):
+            if isinstance(number, float) and number != 0.0 and not (
+                    limits.MIN_SIZE <= abs(number) <= limits.MAX_SIZE):
+                raise PydanticCustomError("magnitude", "must be 0 or of magnitude from {low:g} to {high:g}",
+                                          {"low": limits.MIN_SIZE, "high": limits.MAX_SIZE})
+        return value
 
 
 # the kinds of quantity LAMMPS's ``units`` command names, and counts; a unit of ``param`` is one of
@@ -127,6 +142,8 @@ def explain(error):
                          "less_than": "lt", "less_than_equal": "le"}[kind])
         bound = f"{bound:g}" if isinstance(bound, (int, float)) else bound
         return f"{loc} must be {limits[kind]} {bound} {got}"
+    if kind == "magnitude":
+        return f"{loc} must be 0 or of magnitude from {ctx['low']:g} to {ctx['high']:g} {got}"
     if kind in ("float_parsing", "float_type", "finite_number"):
         return f"{loc} must be a finite number {got}"
     if kind in ("int_parsing", "int_type", "int_from_float"):
@@ -272,13 +289,29 @@ class Pair(Style):
         return cut
 
     def _cutoff_of(self, i, j):
-        return self.init_one(i, j)
+        try:
+            cutoff = self.init_one(i, j)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise ScriptError(f"pair_coeff {i} {j}: the coefficients overflow ({_reason(exc)})") from None
+        return _finite_cutoff(cutoff, i, j)
 
     def init_one(self, i, j):
         raise NotImplementedError
 
     def compute(self, sim, nlist, eflag, vflag):
         raise NotImplementedError
+
+
+def _reason(exc):
+    # math's OverflowError reads "(34, 'Numerical result out of range')"
+    return exc.args[-1] if exc.args and isinstance(exc.args[-1], str) else str(exc)
+
+
+def _finite_cutoff(cutoff, i, j):
+    # squared in the loop: a cutoff whose square overflows is as wrong as an infinite one
+    if not (math.isfinite(cutoff) and cutoff >= 0 and math.isfinite(cutoff * cutoff)):
+        raise ScriptError(f"pair_coeff {i} {j}: cutoff {cutoff:g} is not a finite distance")
+    return cutoff
 
 
 class PairLaw(Pair):
@@ -327,9 +360,17 @@ class PairLaw(Pair):
         return cut
 
     def _cutoff_of(self, i, j):
-        cutoff, values = self.init_one(i, j)
-        self._values[(i, j)] = tuple(float(v) for v in values)
-        return cutoff
+        try:
+            cutoff, values = self.init_one(i, j)
+            values = tuple(float(v) for v in values)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise ScriptError(f"pair_coeff {i} {j}: the coefficients overflow ({_reason(exc)})") from None
+        for name, value in zip(self.params, values):
+            if not math.isfinite(value):
+                raise ScriptError(f"pair_coeff {i} {j}: the coefficients give {name} = {value}, "
+                                  "not a finite number")
+        self._values[(i, j)] = values
+        return _finite_cutoff(cutoff, i, j)
 
     def law_state(self, sim):
         """Per-step scalars the law reads (seed, step, 1/sqrt(dt), ...), as a tuple."""

@@ -131,6 +131,60 @@ def test_tiny_spheres_are_refused(pdps_cli):
              "ERROR: in.test:4: create_particle: diameter must be >= 1e-50 (got 1e-300)")
 
 
+# ---- found by the first 100,000-case make fuzz run ----------------------------------------------
+@pytest.mark.parametrize("lines, message", [
+    ("dimension 2\nregion box block 0 129825674658350 0 3 -0.5 0.5\ncreate_box 1 box\nmass 1 1\n"
+     "analyze 1 all ave/space 1 1 1 x lower 2 density/number\nrun 0",
+     "ERROR: in.test:6: run: ave/space 1: bin width 2 along x over the box (0 to 1.29826e+14) makes "
+     "6.491e+13 bins, more than 1e+07"),
+    (BOX + "analyze 1 all ave/space 1 1 1 x lower 1e-3 y lower 1e-3 z lower 1e-3 density/number\nrun 0",
+     "ERROR: in.test:5: run: ave/space 1: bins of 1000 by 1000 by 1000 makes 1e+09 bins, more than 1e+07"),
+    (BOX + "compute r all rdf 8796093022207\n",
+     "ERROR: in.test:4: compute: compute r (rdf): NBIN makes 8.796e+12 bins, more than 1e+07"),
+    (BOX + "compute r all rdf 20 cutoff 5e202",
+     "ERROR: in.test:4: compute: cutoff must be 0 or of magnitude from 1e-50 to 1e+50 (got 5e202)"),
+    (BOX + "compute r all rdf 20 cutoff 1e40\nthermo_style custom step c_r[1][1]\nrun 0",
+     "ERROR: in.test:6: run: compute r (rdf): cutoff 1e+40 spans 1e+40 periodic images of the box "
+     "(length 1 along x; at most 64): make the box larger or the cutoff smaller"),
+    (BOX + "pair_style lj/cut 1.0\npair_coeff * * 1.0 8.6e39\nrun 0",
+     "ERROR: in.test:6: run: pair_coeff 1 1: the coefficients give lj1 = inf, not a finite number"),
+    (BOX + "timestep 5e-324", "ERROR: in.test:4: timestep: timestep must be >= 1e-50 (got 5e-324)"),
+    (BOX + "fix 1 all langevin 1.0 1.0 1e-320 5",
+     "ERROR: in.test:4: fix: damp must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e-320)"),
+])
+def test_grids_coefficients_and_numbers_beyond_what_the_machine_holds(pdps_cli, lines, message):
+    one_line(pdps_cli(lines + "\n"), message)
+
+
+def test_a_neighbor_list_overflow_is_one_line_not_gigabytes(pdps_cli):
+    one_line(pdps_cli("region box block 0 3 0 3 0 3\ncreate_box 1 box\nmass 1 1\n"
+                      "create_particle 1 random 3000 7 box\nneigh_modify one 100\n"
+                      "pair_style dpd 1.0 1.0 5\npair_coeff * * 25 4.5\nrun 0\n"),
+             "ERROR: in.test:8: run: neighbor list overflow: more than 100 neighbors per particle on "
+             "average within 1.3 of 3000 particles (overlapping particles?); raise neigh_modify one "
+             "if that is meant")
+
+
+def test_a_nul_byte_in_a_script_is_located(tmp_path, pdps_cli):
+    one_line(pdps_cli(BOX + "dump 1 all atom 10 du\0mp.atom\n"),
+             "ERROR: in.test:4: a NUL byte (0x00) in the text; input scripts are plain text")
+
+
+def test_a_scene_too_large_for_memory_is_one_line(tmp_path):
+    import resource
+    import subprocess
+    import sys
+    (tmp_path / "in.big").write_text(BOX.replace("0 1 0 1 0 1", "0 300 0 300 0 300")
+                                     + "create_particle 1 random 19000000 5 box\n")
+    limit = lambda: resource.setrlimit(resource.RLIMIT_AS, (1_500_000_000, 1_500_000_000))  # noqa: E731
+    done = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "in.big"], cwd=tmp_path,
+                          capture_output=True, text=True, preexec_fn=limit, timeout=120)
+    assert done.returncode == 1, done.stderr
+    [line] = done.stderr.strip().splitlines()
+    assert line.startswith("ERROR: in.big:4: create_particle: out of memory (")
+    assert line.endswith("): the scene needs more memory than this machine gives")
+
+
 @pytest.mark.parametrize("path, reason", [(".", "Is a directory"),
                                           ("/nonexistent/x.log", "No such file or directory")])
 def test_a_log_that_cannot_be_opened_keeps_the_log_so_far(pdps_cli, tmp_path, path, reason):
@@ -236,7 +290,8 @@ def set_field(path, value):
     (set_field(["dimension"], 5), "field dimension must be 2 or 3 (got 5)"),
     (set_field(["neighbor", "every"], 0), "field every must be an integer >= 1 (got 0)"),
     (set_field(["neighbor", "skin"], float("nan")), "field skin must be a finite number >= 0 (got nan)"),
-    (set_field(["dt"], -1.0), "field dt must be a finite number > 0 (got -1.0)"),
+    (set_field(["dt"], -1.0), "field dt must be from 1e-50 to 1e+50 (got -1.0)"),
+    (set_field(["neighbor", "last_sort"], [[1]]), "field last_sort must be a step or null (got [[1]])"),
     (set_field(["step"], -4), "field step must be from 0 to 9223372036854775807 (got -4)"),
     (set_field(["particles", "nlocal"], float("inf")), "field nlocal must be a particle count (got inf)"),
     (set_field(["particle_style"], "ellipsoid"), "field particle_style must be atomic or sphere (got 'ellipsoid')"),
@@ -262,7 +317,11 @@ def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     ({"mass": lambda m: np.full_like(m, np.inf)}, "masses must be finite numbers > 0 (or unset)"),
     ({"mass": lambda m: np.full_like(m, np.nan)}, "particles of type 1 have no mass (NaN in the file)"),
     ({"box/lo": lambda lo: np.full_like(lo, np.nan)}, "array box/lo holds non-finite values"),
-    ({"box/lo": lambda lo: lo.astype(complex)}, "array box/lo holds complex128 values, not numbers of the saved kind"),
+    ({"box/lo": lambda lo: lo.astype(complex)}, "array box/lo holds complex128 values, which pdps does not write"),
+    ({"mass": lambda m: m.astype(np.float16)}, "array mass holds float16 values, which pdps does not write"),
+    ({"mass": lambda m: m.astype(np.float32)}, "array mass holds float32 values, not numbers of the saved kind"),
+    ({"neighbor/xhold": lambda x: x.astype("U3")}, "array neighbor/xhold holds <U3 values, which pdps does not write"),
+    ({"neighbor/xhold": lambda x: np.float64(1.0)}, "array neighbor/xhold has shape (), not (2, 3)"),
 ])
 def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
     make_sim().command(RESTART_SCRIPT)
@@ -270,6 +329,32 @@ def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
     with pytest.raises(Exception) as caught:
         make_sim().command("read_restart bad.restart")
     assert str(caught.value) == f"<command>:1: read_restart: restart file bad.restart: {message}"
+
+
+def test_a_restart_array_in_the_other_byte_order_reads_as_written(tmp_path, make_sim):
+    make_sim().command(RESTART_SCRIPT)
+    swapped = {name: (lambda a: a.astype(a.dtype.newbyteorder(">")))
+               for name in ("mass", "particles/x", "particles/v", "neighbor/xhold")}
+    edited_restart(tmp_path, arrays_edit=swapped)
+    runs = []
+    for path in ("good.restart", "bad.restart"):
+        sim = make_sim()
+        sim.command(f"read_restart {path}\nfix 1 all nve\nrun 5")
+        runs.append((sim.x.copy(), sim.v.copy()))
+    assert np.array_equal(runs[0][0], runs[1][0]) and np.array_equal(runs[0][1], runs[1][1])
+
+
+def test_an_unknown_compression_method_is_damage(tmp_path, make_sim):
+    make_sim().command(RESTART_SCRIPT)
+    raw = bytearray((tmp_path / "good.restart").read_bytes())
+    # the compression method of the first central-directory entry set to one zipfile cannot read
+    entry = raw.find(b"PK\x01\x02")
+    raw[entry + 10:entry + 12] = (99).to_bytes(2, "little")
+    (tmp_path / "bad.restart").write_bytes(bytes(raw))
+    with pytest.raises(Exception) as caught:
+        make_sim().command("read_restart bad.restart")
+    assert str(caught.value) == ("<command>:1: read_restart: restart file bad.restart is truncated, "
+                                 "damaged or not a pdps restart file")
 
 
 def test_a_deeply_nested_restart_header_is_damaged_not_a_crash(tmp_path, make_sim):

@@ -4,6 +4,7 @@ particle_style, processors, integrate, comm_modify, newton."""
 import numpy as np
 
 from ..errors import ScriptError
+from ..state import limits
 from ..state.units import UNITS
 from . import command
 from .words import choice, count, integer, number, yes_no
@@ -46,7 +47,8 @@ def boundary(sim, args):
 @command("timestep")
 def timestep(sim, args):
     count(args, 1, "timestep dt")
-    sim.dt = number(args[0], "timestep", low=0.0, strict_low=True)
+    number(args[0], "timestep", low=0.0, strict_low=True)
+    sim.dt = number(args[0], "timestep", low=limits.MIN_SIZE, high=limits.MAX_SIZE)
 
 
 @command("lattice")
@@ -97,14 +99,16 @@ def neighbor(sim, args):
 
 @command("neigh_modify", "neighbor_modify")
 def neigh_modify(sim, args):
-    usage = "neigh_modify [every N] [delay N] [check yes|no]"
+    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N]"
     if not args or len(args) % 2:
         raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
     values = {}
     for key, value in zip(args[::2], args[1::2]):
-        choice(key, "neigh_modify keyword", ("every", "delay", "check"))
+        choice(key, "neigh_modify keyword", ("every", "delay", "check", "one"))
         if key == "check":
             values[key] = yes_no(value, "check")
+        elif key == "one":
+            values[key] = integer(value, key, low=1, high=limits.MAX_NEIGHBORS_ONE)
         else:
             values[key] = integer(value, key, low=1 if key == "every" else 0)
     sim.neighbors.modify(**values)

@@ -7,6 +7,10 @@ last build); with ``check yes`` it happens only if some particle moved more than
 then. A rebuild taken on the first step it was allowed is counted as *dangerous*: an interaction may
 have been missed, and the run reports how many there were.
 
+``neigh_modify one N`` (default 2000, LAMMPS's) bounds the lists: a build needing more than N
+neighbors per particle on average stops with "neighbor list overflow" (LAMMPS applies N to each
+particle; pdps to the mean, so a dense cluster in a dilute gas that LAMMPS refuses still runs).
+
 A style asks for a list with ``Neighbor.request``; a scene with no request builds no list at all.
 
 Owned particles are re-sorted by cell every ``sort_every`` steps at a rebuild (LAMMPS's
@@ -28,6 +32,8 @@ import numpy as np
 from ..errors import ScriptError
 from ..state import limits
 from .kernels import bin_particles, build_list, max_displacement_sq
+
+ONE_DEFAULT = 2000
 
 
 @dataclass
@@ -69,11 +75,14 @@ class Neighbor:
         self.moved = (0.0, -1)      # (largest move since the last build, owned index), at the last decision
         self.sort_every = 1000
         self.last_sort = None
+        self.one = ONE_DEFAULT
         self._capacity = 0
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
 
-    def modify(self, every=None, delay=None, check=None):
+    def modify(self, every=None, delay=None, check=None, one=None):
+        if one is not None:
+            self.one = one
         if every is not None:
             self.every = every
         if delay is not None:
@@ -226,13 +235,21 @@ class Neighbor:
         cutneighsq = (nlist.cutoff + skin) ** 2
         if cutneighsq.shape[0] != self.requests[0].cutoff.shape[0]:
             raise ScriptError("neighbor requests disagree on the number of types")
-        capacity = max(self._capacity, 64 * max(p.nlocal, 1))
+        # LAMMPS's neigh_modify one, taken as a mean: a list that would outgrow it is a mistake
+        # (overlapping particles, a typo in a lattice), not something to allocate gigabytes for
+        most = self.one * max(p.nlocal, 1)
+        capacity = min(max(self._capacity, 64 * max(p.nlocal, 1)), most)
         while True:
             offsets, neighbors, total = build_list(
                 p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, cell, start,
                 order, nbins, nlist.half_list, capacity)
             if total >= 0:
                 break
-            capacity *= 2
+            if capacity >= most:
+                raise ScriptError(f"neighbor list overflow: more than {self.one} neighbors per particle "
+                                  f"on average within {float(np.sqrt(cutneighsq.max())):g} of "
+                                  f"{p.nlocal} particles (overlapping particles?); "
+                                  "raise neigh_modify one if that is meant")
+            capacity = min(2 * capacity, most)
         self._capacity = capacity
         nlist.offsets, nlist.neighbors = offsets, neighbors[:total]

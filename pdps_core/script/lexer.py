@@ -136,8 +136,14 @@ def read_text(path, what, shown=None):
     except OSError as exc:
         raise ScriptError(f"cannot read {what} {path}: {exc.strerror}") from None
     try:
-        return raw.decode("utf-8")
+        text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = raw.count(b"\n", 0, exc.start) + 1
         raise ScriptError(f"{shown or path}:{line}: not UTF-8 text (byte 0x{raw[exc.start]:02x}); "
                           f"{what}s are read as UTF-8") from None
+    # a NUL is damage in any text file, and no file name may hold one
+    nul = raw.find(b"\0")
+    if nul >= 0:
+        line = raw.count(b"\n", 0, nul) + 1
+        raise ScriptError(f"{shown or path}:{line}: a NUL byte (0x00) in the text; {what}s are plain text")
+    return text

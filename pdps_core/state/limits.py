@@ -20,6 +20,8 @@ Limits, and why:
   (many periodic images) is refused at the run's start.
 - Sphere diameters and densities within [1e-50, 1e50], so masses and moments of inertia
   (r^5) stay normal numbers.
+- Bins of an analysis grid (ave/space layers, rdf bins): at most ``MAX_BINS`` (1e7) in all.
+- ``neigh_modify one``: at most ``MAX_NEIGHBORS_ONE`` (1e6) neighbors per particle on average.
 - ``include`` nested at most ``MAX_INCLUDE_DEPTH`` (32) deep (a script including itself).
 """
 
@@ -41,6 +43,8 @@ MAX_CREATE = 20_000_000
 MAX_GHOST_FACTOR = 1000
 MIN_SIZE, MAX_SIZE = 1e-50, 1e50
 MAX_INCLUDE_DEPTH = 32
+MAX_BINS = 10_000_000
+MAX_NEIGHBORS_ONE = 1_000_000
 MAX_TAG = 2 ** 62
 MAX_IMAGE = 2 ** 31 - 1
 
@@ -63,16 +67,25 @@ def check_box(lo, hi, where="box"):
     return lo, hi
 
 
-def check_images(box, cutghost):
-    """At a run's start: the ghost cutoff (largest cutoff + skin) against the periodic lengths."""
+def check_images(box, cutghost, what="the cutoff plus skin", every_axis=False):
+    """The ghost cutoff (largest cutoff + skin) at a run's start, or any distance a style reaches
+    (``what``), against the box's periodic lengths (every length with ``every_axis``)."""
     if not (math.isfinite(cutghost) and cutghost >= 0):
-        raise ScriptError(f"the ghost cutoff (largest cutoff + skin) must be a finite number >= 0 (got {cutghost:g})")
+        raise ScriptError(f"{what} must be a finite number >= 0 (got {cutghost:g})")
     for d, axis in enumerate("xyz"[: box.dimension]):
         length = float(box.hi[d] - box.lo[d])
-        if box.periodic[d] and cutghost > MAX_IMAGES * length:
-            raise ScriptError(f"the cutoff plus skin {cutghost:g} spans {cutghost / length:.3g} periodic "
-                              f"images of the box (length {length:g} along {axis}; at most {MAX_IMAGES}): "
+        if (box.periodic[d] or every_axis) and cutghost > MAX_IMAGES * length:
+            raise ScriptError(f"{what} {cutghost:g} spans {cutghost / length:.3g} "
+                              f"{'periodic images of ' if box.periodic[d] else 'times '}the box "
+                              f"(length {length:g} along {axis}; at most {MAX_IMAGES}): "
                               "make the box larger or the cutoff smaller")
+
+
+def check_bins(count, what):
+    """A grid a style allocates (analysis bins, histograms): a count it can hold."""
+    if not (math.isfinite(count) and count <= MAX_BINS):
+        raise ScriptError(f"{what} makes {count:.4g} bins, more than {MAX_BINS:g}")
+    return int(count)
 
 
 def check_ghosts(box, cutghost, natoms):

@@ -143,7 +143,7 @@ def _neighbor_record(neighbor, particles, arrays, resumable=True):
     record = {"skin": neighbor.skin, "style": neighbor.style, "every": neighbor.every,
               "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
               "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
-              "dangerous": neighbor.dangerous, "built_with": None}
+              "dangerous": neighbor.dangerous, "one": neighbor.one, "built_with": None}
     # the schedule and the lists' recipe go along only while they are current for the particles
     if resumable and neighbor.is_current(particles) and neighbor.built_with is not None:
         skin, lists, lo, hi, periodic = neighbor.built_with
@@ -305,15 +305,29 @@ def read_file(path, shown=None):
                 newer = " (written by a newer pdps)" if isinstance(version, int) and version > VERSION else ""
                 raise ScriptError(f"restart file {shown} has format version {version}{newer}; "
                                   f"pdps {__version__} reads version {VERSION}")
-            arrays = {name[:-4]: np.lib.format.read_array(io.BytesIO(archive.read(name)),
-                                                          allow_pickle=False)
+            arrays = {name[:-4]: _native(name[:-4], np.lib.format.read_array(
+                          io.BytesIO(archive.read(name)), allow_pickle=False), shown)
                       for name in archive.namelist() if name.endswith(".npy")}
         except ScriptError:
             raise
         except (KeyError, ValueError, EOFError, OSError, zlib.error, zipfile.BadZipFile, RecursionError,
-                SyntaxError, tokenize.TokenError):
+                SyntaxError, tokenize.TokenError, NotImplementedError):
             raise ScriptError(damaged) from None
     return header, arrays
+
+
+# what write_restart writes; anything else (complex, strings, float16, ...) reaches no kernel
+WRITTEN_DTYPES = {np.dtype(t) for t in (np.float64, np.float32, np.int64, np.int32, np.int16, np.int8,
+                                        np.uint64, np.uint32, np.uint16, np.uint8, np.bool_)}
+
+
+def _native(name, values, shown):
+    """An array read from a restart file in this machine's byte order, of a dtype pdps writes."""
+    native = values.dtype.newbyteorder("=")
+    if native not in WRITTEN_DTYPES:
+        raise ScriptError(f"restart file {shown}: array {name} holds {values.dtype} values, "
+                          "which pdps does not write")
+    return values.astype(native, copy=False)
 
 
 def read_restart(sim, path, shown=None):
@@ -349,12 +363,13 @@ def _field(record, name, kind, check=None, expected=""):
 
 
 def _array(arrays, name, shape, finite=True, kinds="fiu"):
+    """``arrays[name]`` of ``shape`` and a dtype of ``kinds``; floats are float64, as written."""
     values = arrays.get(name)
     if values is None:
         raise ScriptError(f"array {name} is missing")
     if values.shape != shape:
         raise ScriptError(f"array {name} has shape {values.shape}, not {shape}")
-    if values.dtype.kind not in kinds:
+    if values.dtype.kind not in kinds or (values.dtype.kind == "f" and values.dtype != np.float64):
         raise ScriptError(f"array {name} holds {values.dtype} values, not numbers of the saved kind")
     if finite and values.dtype.kind == "f" and not np.isfinite(values).all():
         raise ScriptError(f"array {name} holds non-finite values")
@@ -376,7 +391,8 @@ def validate(header, arrays):
     _field(header, "lattice", bool)
     _field(header, "step", int, lambda n: 0 <= n <= limits.MAX_STEP, f"from 0 to {limits.MAX_STEP}")
     _field(header, "time", number, None, "a finite number")
-    _field(header, "dt", number, lambda dt: dt > 0, "a finite number > 0")
+    _field(header, "dt", number, lambda dt: limits.MIN_SIZE <= dt <= limits.MAX_SIZE,
+           f"from {limits.MIN_SIZE:g} to {limits.MAX_SIZE:g}")
     _field(header, "pe", number, None, "a finite number")
     _field(header, "virial", list, lambda v: len(v) == 6 and all(
         isinstance(c, number) and math.isfinite(c) for c in v), "six finite numbers")
@@ -399,6 +415,26 @@ def validate(header, arrays):
     _field(neighbor, "check", bool)
     _field(neighbor, "sort_every", int, lambda k: k >= 0, "an integer >= 0")
     _field(neighbor, "ago", int, lambda k: k >= 0, "an integer >= 0")
+    for name in ("builds", "dangerous"):
+        _field(neighbor, name, int, lambda k: k >= 0, "an integer >= 0")
+    if "one" in neighbor:
+        _field(neighbor, "one", int, lambda k: 1 <= k <= limits.MAX_NEIGHBORS_ONE,
+               f"from 1 to {limits.MAX_NEIGHBORS_ONE}")
+    if neighbor.get("last_sort") is not None:
+        _field(neighbor, "last_sort", int, lambda k: 0 <= k <= limits.MAX_STEP, "a step or null")
+    _field(neighbor, "style", str, lambda s: s in ("single", "multi", "bin", "nsq"), "a neighbor style")
+    built = neighbor.get("built_with")
+    if built is not None:
+        _field(neighbor, "built_with", dict)
+        _field(built, "skin", number, lambda s: s >= 0, "a finite number >= 0")
+        kinds = _field(built, "kinds", list, lambda k: all(isinstance(w, str) for w in k), "list names")
+        _field(built, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
+               "three booleans")
+        _array(arrays, "neighbor/xhold", (n, 3), kinds="f")
+        _array(arrays, "neighbor/lo", (3,), kinds="f")
+        _array(arrays, "neighbor/hi", (3,), kinds="f")
+        for k in range(len(kinds)):
+            _array(arrays, f"neighbor/cutoff{k}", (ntypes + 1, ntypes + 1), kinds="f")
     lo = _array(arrays, "box/lo", (3,), kinds="f")
     hi = _array(arrays, "box/hi", (3,), kinds="f")
     limits.check_box(lo, hi)
@@ -548,6 +584,7 @@ def _neighbor(record, arrays, particles):
     neighbor.last_sort = record["last_sort"]
     neighbor.ago = int(record["ago"])
     neighbor.builds, neighbor.dangerous = int(record["builds"]), int(record["dangerous"])
+    neighbor.one = int(record.get("one", neighbor.one))
     built = record["built_with"]
     if built is not None:
         neighbor.xhold = arrays["neighbor/xhold"].copy()

@@ -60,7 +60,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Analyze, Fix, ScriptError, observables
+from pdps_core.api import Analyze, Fix, ScriptError, check_bins, observables
 
 from .schedule import Schedule, ScheduleArgs, keyword_pairs
 
@@ -142,6 +142,8 @@ class AveSpace:
         if origin not in ORIGINS:
             try:
                 origin = float(origin)
+                if not math.isfinite(origin):
+                    raise ValueError
             except ValueError:
                 raise ScriptError("origin must be lower, center, upper or a coordinate "
                                   f"(got {origin})") from None
@@ -173,6 +175,7 @@ class AveSpace:
                 origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
             else:
                 origin *= scale
+            check_bins((hi - lo) / delta, f"{self.name} {self.id}: bin width {delta:g} along {AXES[d]} over the box ({lo:g} to {hi:g})")
             first, layers = bin_layout(lo, hi, origin, delta)
             edges = first + delta * np.arange(layers + 1)
             self.first.append(first)
@@ -180,6 +183,7 @@ class AveSpace:
             self.layers.append(layers)
             centres.append(first + delta * (np.arange(layers) + 0.5))
             extents.append(np.diff(np.clip(edges, lo, hi)))
+        check_bins(math.prod(self.layers), f"{self.name} {self.id}: bins of {' by '.join(map(str, self.layers))}")
         grid = np.meshgrid(*centres, indexing="ij")
         self.coords = np.stack([g.ravel() for g in grid], axis=1)
         volume = np.ones(1)

@@ -66,7 +66,7 @@ import numpy as np
 from numba import njit
 from pydantic import Field, model_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import Compute, ScriptError, StyleArgs, check_bins, check_images, keyword, param
 
 
 @njit(cache=True)
@@ -206,6 +206,7 @@ class ComputeRDF(Compute):
         words = args.pairs or ["*", "*"]
         if len(words) % 2:
             raise ScriptError(f"type pairs come as I J (got {len(words)} words: {' '.join(words)})")
+        check_bins(args.nbin, f"compute {id} (rdf): NBIN")
         ntypes = sim.ntypes
         self.bounds = [(type_bounds(words[k], ntypes), type_bounds(words[k + 1], ntypes))
                        for k in range(0, len(words), 2)]
@@ -235,6 +236,7 @@ class ComputeRDF(Compute):
             x, types, chosen = (sim.comm.allgather_rows(a) for a in (x, types, chosen))
         n = len(x)
         cutoff = self.cutoff(sim)
+        check_images(box, cutoff, f"compute {self.id} (rdf): cutoff", every_axis=True)
         # thermo may read several elements in one step: recompute only when something changed
         key = (sim.step, cutoff, x.tobytes(), types.tobytes(), chosen.tobytes(),
                box.lo.tobytes(), box.hi.tobytes())

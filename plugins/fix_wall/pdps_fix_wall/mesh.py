@@ -542,9 +542,10 @@ class FixWallMesh(Fix):
         box_lo, box_hi = corners.min(axis=1), corners.max(axis=1)
         grid_lo = box_lo.min(axis=0) - farthest
         extent = box_hi.max(axis=0) + farthest - grid_lo
-        size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS)
+        # a flat mesh with skin 0 and no particles has no width at all: one cell of any size
+        size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS) or 1.0
         nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
-        cell = extent / nbins
+        cell = np.maximum(extent / nbins, size)
         start, members = bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, farthest)
         self.offsets, self.candidates = candidate_triangles(
             p.x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, start, members)

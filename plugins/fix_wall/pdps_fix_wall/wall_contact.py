@@ -100,6 +100,9 @@ def read_numbers(words, what):
             raise ScriptError(f"{what} must be a number (got {word})") from None
         if not math.isfinite(value):
             raise ScriptError(f"{what} must be a finite number (got {word})")
+        # the rule StyleArgs holds every declared number to
+        if value != 0.0 and not 1e-50 <= abs(value) <= 1e50:
+            raise ScriptError(f"{what} must be 0 or of magnitude from 1e-50 to 1e+50 (got {word})")
         values.append(value)
     return values
 

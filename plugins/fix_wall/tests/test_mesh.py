@@ -467,6 +467,8 @@ def test_relative_file_names_are_read_from_the_script_folder(data, tmp_path):
     ("file {data}/square.stl model lsd 0.8 1e4", "model lsd takes e kn Cn kt Ct mu, or e kn mu"),
     ("file {data}/square.stl model hertz 1e5 0.7 0.8 0.3", "nu must be in (-1, 0.5) (got 0.7)"),
     ("file {data}/square.stl model jkr 1", "model must be one of lsd, hertz (got jkr)"),
+    ("file {data}/square.stl model lsd 0.8 1e308 0.3",
+     "model lsd parameter must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e308)"),
 ])
 def test_bad_arguments(data, words, message):
     sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
@@ -481,3 +483,11 @@ def test_point_particles_are_an_error(data):
                    f"model lsd 0.8 1e4 0.3", box="-4 4 -4 4 -4 4")
     with pytest.raises(ScriptError, match=r"needs particle radii \(particle_style sphere\)"):
         sim.command("run 0")
+
+
+def test_a_flat_mesh_with_skin_0_and_no_sphere_bins_without_dividing_by_zero(data):
+    # the candidate grid had cells of width 0 across the plate (found by the fuzz suite)
+    sim = make_box(f"neighbor 0 bin\nfix w all wall/mesh file {data}/square.stl model lsd 0.8 1e4 0.3",
+                   box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 3")
+    assert sim.step == 3 and sim.fixes["w"].builds == 1
