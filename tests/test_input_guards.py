@@ -136,11 +136,11 @@ def test_tiny_spheres_are_refused(pdps_cli):
     ("dimension 2\nregion box block 0 129825674658350 0 3 -0.5 0.5\ncreate_box 1 box\nmass 1 1\n"
      "analyze 1 all ave/space 1 1 1 x lower 2 density/number\nrun 0",
      "ERROR: in.test:6: run: ave/space 1: bin width 2 along x over the box (0 to 1.29826e+14) makes "
-     "6.491e+13 bins, more than 1e+07"),
+     "6.491e+13 bins, more than 1e+06"),
     (BOX + "analyze 1 all ave/space 1 1 1 x lower 1e-3 y lower 1e-3 z lower 1e-3 density/number\nrun 0",
-     "ERROR: in.test:5: run: ave/space 1: bins of 1000 by 1000 by 1000 makes 1e+09 bins, more than 1e+07"),
+     "ERROR: in.test:5: run: ave/space 1: bins of 1000 by 1000 by 1000 makes 1e+09 bins, more than 1e+06"),
     (BOX + "compute r all rdf 8796093022207\n",
-     "ERROR: in.test:4: compute: compute r (rdf): NBIN makes 8.796e+12 bins, more than 1e+07"),
+     "ERROR: in.test:4: compute: compute r (rdf): NBIN makes 8.796e+12 bins, more than 1e+06"),
     (BOX + "compute r all rdf 20 cutoff 5e202",
      "ERROR: in.test:4: compute: cutoff must be 0 or of magnitude from 1e-50 to 1e+50 (got 5e202)"),
     (BOX + "compute r all rdf 20 cutoff 1e40\nthermo_style custom step c_r[1][1]\nrun 0",
@@ -154,6 +154,15 @@ def test_tiny_spheres_are_refused(pdps_cli):
 ])
 def test_grids_coefficients_and_numbers_beyond_what_the_machine_holds(pdps_cli, lines, message):
     one_line(pdps_cli(lines + "\n"), message)
+
+
+def test_a_grid_written_as_millions_of_lines_is_refused(pdps_cli):
+    # 2,000,000 bins of text each average: a hang of the 100,000-case fuzz run
+    one_line(pdps_cli("dimension 2\nregion box block 0 6 0 3000000 -0.5 0.5\ncreate_box 1 box\nmass 1 1\n"
+                      "create_particle 1 single 0.2 0.5 0\n"
+                      "analyze 2 all ave/space 1 1 1 x lower 2 y lower 1.5 density/number file xy.txt\nrun 0\n"),
+             "ERROR: in.test:7: run: ave/space 2: bin width 1.5 along y over the box (0 to 3e+06) makes 2e+06 "
+             "bins, more than 1e+06")
 
 
 def test_a_neighbor_list_overflow_is_one_line_not_gigabytes(pdps_cli):

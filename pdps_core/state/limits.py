@@ -20,7 +20,8 @@ Limits, and why:
   (many periodic images) is refused at the run's start.
 - Sphere diameters and densities within [1e-50, 1e50], so masses and moments of inertia
   (r^5) stay normal numbers.
-- Bins of an analysis grid (ave/space layers, rdf bins): at most ``MAX_BINS`` (1e7) in all.
+- Bins of an analysis grid (ave/space layers, rdf bins): at most ``MAX_BINS`` (1e6) in all (each
+  written as a line of text every average).
 - ``neigh_modify one``: at most ``MAX_NEIGHBORS_ONE`` (1e6) neighbors per particle on average.
 - ``include`` nested at most ``MAX_INCLUDE_DEPTH`` (32) deep (a script including itself).
 """
@@ -43,7 +44,7 @@ MAX_CREATE = 20_000_000
 MAX_GHOST_FACTOR = 1000
 MIN_SIZE, MAX_SIZE = 1e-50, 1e50
 MAX_INCLUDE_DEPTH = 32
-MAX_BINS = 10_000_000
+MAX_BINS = 1_000_000
 MAX_NEIGHBORS_ONE = 1_000_000
 MAX_TAG = 2 ** 62
 MAX_IMAGE = 2 ** 31 - 1
