@@ -17,11 +17,11 @@ from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
 from .state.limits import check_bins, check_images
-from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region,
+from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
                      StyleArgs, VariableRef, keyword, param, parse_args, peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "Dump", "Fix",
-           "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "ScriptError",
+           "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "VariableRef", "check_bins", "check_images", "close_slot", "find_slot",
            "keyword", "observables", "open_slot", "pair_gaussian", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
@@ -43,7 +43,7 @@ CONTRACT = {
         "particle_style": "'atomic' or 'sphere' (radius, rmass, omega, torque exist)",
         "box": "the simulation box (Box)",
         "dimension": "2 or 3",
-        "lattice": "(spacing (3,), style) of the lattice command, or None",
+        "lattice": "the lattice command's Lattice (spacing (3,): what units lattice multiplies by; basis, cell, offset, style), or None",
         "units": "the unit system (Units): boltz, mvv2e, nktv2p",
         # the run
         "step": "the current timestep",
@@ -111,8 +111,9 @@ CONTRACT = {
         "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
     },
     "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},
-    "Units": {"name": "lj or si", "boltz": "k_B", "mvv2e": "m v^2 to energy",
-              "nktv2p": "energy density to pressure"},
+    "Units": {"name": "lj, real, metal, si, cgs, micro or nano", "boltz": "k_B", "mvv2e": "m v^2 to energy",
+              "nktv2p": "energy density to pressure", "ftm2v": "f dt / m to velocity (integrators)",
+              "mv2d": "mass/volume to the density thermo reports"},
     "Neighbor": {"skin": "the neighbor skin (distance)"},
     "NeighborList": {"kind": "half or full", "half_list": "kind == 'half'",
                      "cutoff": "(ntypes+1)^2 cutoffs", "offsets": "CSR offsets (nlocal+1,)",

@@ -1,6 +1,9 @@
 """The ``pdps`` command.
 
-    pdps run SCRIPT [-var NAME VALUE]... [-log FILE|none] [--no-progress] [--debug]
+    pdps run [SCRIPT] [-in SCRIPT] [-var NAME VALUE...]... [-log FILE|none] [-screen FILE|none]
+             [-echo none|screen|log|both] [--dialect lammps|pdps] [--no-progress] [--debug]
+                                a script (or standard input, as lmp reads it when no -in is given)
+    pdps -in SCRIPT ...         the same, spelled as LAMMPS's lmp is called
     pdps plot LOG [-o PNG] [--columns COLUMN...]   thermo columns against step, one panel each
     pdps styles [-v]            every installed style, by kind, with its distribution and version, marked
                                 broken, incompatible or disabled where it is; -v: hooks, needs, contributions
@@ -20,10 +23,17 @@ def _parser():
     parser = argparse.ArgumentParser(prog="pdps", description="particle dynamics, PDPS/LAMMPS scripts")
     sub = parser.add_subparsers(dest="action", required=True)
     run = sub.add_parser("run", help="run an input script")
-    run.add_argument("script")
-    run.add_argument("-var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
-                     help="define an index variable, as LAMMPS's -var")
-    run.add_argument("-log", default="log.pdps", help="log file (default log.pdps; none for no log)")
+    run.add_argument("script", nargs="?", help="the input script (or -in SCRIPT; standard input if neither)")
+    run.add_argument("-in", "-i", dest="script_in", metavar="SCRIPT", help="the input script, as LAMMPS's -in")
+    run.add_argument("-var", "-v", nargs="+", action="append", default=[], metavar="NAME VALUE",
+                     help="define an index variable with one or more values, as LAMMPS's -var")
+    run.add_argument("-log", "-l", default="log.pdps", help="log file (default log.pdps; none for no log)")
+    run.add_argument("-screen", "-sc", default=None, metavar="FILE|none",
+                     help="screen output to FILE, or none (default: the terminal)")
+    run.add_argument("-echo", "-e", choices=["none", "screen", "log", "both"], default=None,
+                     help="where commands are echoed as read (default log), as LAMMPS's -echo")
+    run.add_argument("--dialect", choices=["lammps", "pdps"], default=None,
+                     help="read the script as LAMMPS or PDPS (default: as its lines say; docs/lammps.md)")
     run.add_argument("--no-progress", action="store_true",
                      help="no progress line (percent done, steps/s, time left) on stderr")
     run.add_argument("--debug", action="store_true", help="show the traceback of an error")
@@ -47,7 +57,13 @@ def _parser():
     return parser
 
 
+LMP_FLAGS = ("-in", "-i", "-var", "-v", "-log", "-l", "-screen", "-sc", "-echo", "-e")
+
+
 def main(argv=None):
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in LMP_FLAGS:
+        argv = ["run", *argv]       # pdps -in in.melt ...: called as LAMMPS's lmp is
     args = _parser().parse_args(argv)
     if args.action == "styles":
         return _styles(args.verbose)
@@ -137,12 +153,21 @@ def _doc(kind, style):
 def _run(args):
     from .simulation import Simulation
     log = None if args.log == "none" else args.log
-    sim = None
+    sim = screen = None
     try:
-        sim = Simulation(log=log, variables=dict(args.var))
+        script = _script_path(args)
+        variables = {}
+        for words in args.var:
+            if len(words) < 2:
+                raise ScriptError(f"-var {words[0]} needs a value")
+            variables[words[0]] = words[1:]
+        screen = _screen(args.screen)
+        sim = Simulation(log=log, variables=variables, dialect=args.dialect, screen=screen)
         if args.no_progress:
             sim.output.progress = None
-        sim.file(args.script)
+        if args.echo:
+            sim.output.echo_to = args.echo
+        sim.file(script)
         return 0
     except ScriptError as exc:
         _fail(sim, f"ERROR: {exc}", args.debug, alone=_found_alone(sim, exc))
@@ -159,6 +184,30 @@ def _run(args):
     finally:
         if sim is not None:
             sim.close()
+        if screen not in (None, False):
+            screen.close()
+
+
+def _script_path(args):
+    if args.script and args.script_in and args.script != args.script_in:
+        raise ScriptError(f"two scripts given: {args.script} and -in {args.script_in}")
+    script = args.script or args.script_in
+    if script:
+        return script
+    if sys.stdin.isatty():
+        raise ScriptError("no input script: give one (pdps run in.melt, pdps -in in.melt) or pipe it in")
+    return "/dev/stdin"
+
+
+def _screen(where):
+    if where is None:
+        return None
+    if where == "none":
+        return False
+    try:
+        return open(where, "w")
+    except OSError as exc:
+        raise ScriptError(f"cannot open screen file {where}: {exc.strerror}") from None
 
 
 def _found_alone(sim, exc):

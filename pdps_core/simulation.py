@@ -22,8 +22,9 @@ from .commands import COMMANDS
 from .errors import ScriptError
 from .neighbor.neighbor import Neighbor
 from .output.output import Output
-from .output.thermo import keyword_value
 from .run.timers import Timers
+from .script.context import FormulaContext
+from .script.dialect import DIALECTS, detect, dialect_named
 from .script.lexer import logical_lines, read_text, split_words, strip_comment, substitute
 from .script.variables import Variables
 from .state import limits
@@ -33,10 +34,27 @@ from .state.units import UNITS
 from .styles import VariableRef
 
 
+class ScriptFlow:
+    """Where a script is: its lines, the next one, a jump asked for by the line just run, whether
+    anything a loop can end on (next, variable, run) happened since the last jump, and whether the
+    next jump is skipped (an exhausted ``next``, as LAMMPS)."""
+
+    def __init__(self, source, lines):
+        self.source, self.lines, self.at = source, lines, 0
+        self.jump = None
+        self.progress = True
+        self.skip_jump = False
+
+
 class Simulation:
-    def __init__(self, *, screen=None, log="log.pdps", variables=None, comm=None):
+    def __init__(self, *, screen=None, log="log.pdps", variables=None, comm=None, dialect=None):
         """``screen``: a text stream (default stdout) or False for silence; ``log``: a path or None;
-        ``variables``: {name: value} defined as index variables, as ``-var NAME VALUE`` does."""
+        ``variables``: {name: value} defined as index variables, as ``-var NAME VALUE`` does;
+        ``dialect``: "lammps" or "pdps" for every script this simulation reads, or None (the default):
+        the first script file's own lines decide (pdps_core.script.dialect), commands typed from
+        Python are read as PDPS until then."""
+        self.dialect = DIALECTS["pdps"] if dialect is None else dialect_named(dialect, "dialect")
+        self.dialect_fixed = dialect is not None   # given, or settled by the first script
         self.unit_system = UNITS["lj"]
         self.dimension = 3
         self.periodicity = ("p", "p", "p")
@@ -56,9 +74,10 @@ class Simulation:
         self.fixes = {}
         self.computes = {}
         self.analyzes = {}
-        self.variables = Variables(self._read_keyword)
+        self.variables = Variables(lambda per_atom=False, vector=False: FormulaContext(self, per_atom, vector))
         for name, value in (variables or {}).items():
-            self.variables.define([name, "index", str(value)], from_command_line=True)
+            values = [str(v) for v in value] if isinstance(value, (list, tuple)) else [str(value)]
+            self.variables.define([name, "index", *values], from_command_line=True)
         self.output = Output(self, screen=screen, log=log)
         self.timers = Timers()
         self.ghost_velocity = False
@@ -67,9 +86,11 @@ class Simulation:
         self.dt = self.unit_system.dt
         self.time = 0.0
         self.run_last_step = 0
+        self.ramp_bounds = (0, 0)       # the run's first and last step, or run start/stop's
         self.random_epoch = 0           # reset_timestep backwards so far (random_key)
         self.highest_step = 0
         self.pe = 0.0
+        self.evdwl = 0.0                # the pair style's share of pe (thermo evdwl)
         self.virial = np.zeros(6)
         self.eflag = False              # energy is computed on the current step (read by fixes)
         self.vflag = False              # virial is computed on the current step
@@ -125,10 +146,32 @@ class Simulation:
                                   f"({path} includes itself?)")
             text = read_text(path, "input script", shown)
             here = os.path.dirname(os.path.abspath(path))
+            if self.source is None:
+                self._settle_dialect(text, shown)
             self._script(text, shown, here)
         finally:
             self.include_depth -= 1
         return self
+
+    def _settle_dialect(self, text, shown):
+        """The top script's dialect: given, or read off its lines; named on the first output line."""
+        found, reason = detect(text, shown)
+        if self.dialect_fixed:
+            if reason.startswith("dialect on line") and found is not self.dialect:
+                raise ScriptError(f"dialect {found.name} ({reason}) contradicts the dialect given "
+                                  f"({self.dialect.name})", source=shown)
+            reason = "as asked"
+        else:
+            self.dialect, self.dialect_fixed = found, True
+        self.output.message(f"read as {self.dialect.label}: {reason}")
+
+    def dialect_index(self, index, what):
+        """A script's index (c_ID[i], f_ID[i], a per-atom column) as a 0-based one."""
+        base = self.dialect.index_base
+        if index < base:
+            raise ScriptError(f"{what}: indices count from {base} in the {self.dialect.label} dialect "
+                              f"(got {index})")
+        return index - base
 
     def command(self, text):
         """Run one or more lines of script text."""
@@ -136,34 +179,71 @@ class Simulation:
         return self
 
     def _script(self, text, source, directory):
-        outer = self.source, self.line, getattr(self, "directory", None)
+        outer = self.source, self.line, getattr(self, "directory", None), getattr(self, "_flow", None)
         self.source, self.directory = source, directory
+        self._flow = flow = ScriptFlow(source, list(logical_lines(text)))
         try:
-            for number, raw in logical_lines(text):
-                self.line = number
-                first = raw.split(maxsplit=1)
-                name = first[0] if first else None      # known even if the line cannot be read
-                try:
-                    line = substitute(strip_comment(raw), self.variables.text)
-                    words = split_words(line)
-                    if not words:
-                        continue
-                    self.output.echo(line.strip())
-                    self.execute(words)
-                except ScriptError as exc:
-                    raise exc.locate(source, number, name)
-                except MemoryError as exc:
-                    # a valid scene too large for this machine is the user's to resize, not a bug
-                    message = str(exc).split(" for an array")[0].rstrip(".") or "an allocation failed"
-                    raise ScriptError(f"out of memory ({message}): the scene needs more memory "
-                                      "than this machine gives").locate(source, number, name) from None
-                except Exception:
-                    # the innermost place a bug surfaced, for the one-line internal error
-                    if self.error_location is None:
-                        self.error_location = (source, number)
-                    raise
+            while flow.at < len(flow.lines):
+                number, raw = flow.lines[flow.at]
+                flow.at += 1
+                self._line(number, raw, source)
+                if flow.jump is not None:
+                    source, directory = self._take_jump(flow, source, directory)
         finally:
-            self.source, self.line, self.directory = outer
+            self.source, self.line, self.directory, self._flow = outer
+
+    def _line(self, number, raw, source):
+        """Run one logical line of a script (substituted, echoed), located in errors."""
+        self.line = number
+        first = raw.split(maxsplit=1)
+        name = first[0] if first else None      # known even if the line cannot be read
+        try:
+            line = substitute(strip_comment(raw), self.variables.text)
+            words = split_words(line)
+            if not words:
+                return
+            self.output.echo(line.strip())
+            self.execute(words)
+        except ScriptError as exc:
+            raise exc.locate(source, number, name)
+        except MemoryError as exc:
+            # a valid scene too large for this machine is the user's to resize, not a bug
+            message = str(exc).split(" for an array")[0].rstrip(".") or "an allocation failed"
+            raise ScriptError(f"out of memory ({message}): the scene needs more memory "
+                              "than this machine gives").locate(source, number, name) from None
+        except Exception:
+            # the innermost place a bug surfaced, for the one-line internal error
+            if self.error_location is None:
+                self.error_location = (source, number)
+            raise
+
+    def _take_jump(self, flow, source, directory):
+        """Carry out ``jump FILE [LABEL]``: this script from its label, or another file in its place
+        (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop."""
+        target, label = flow.jump
+        flow.jump = None
+        if target != "SELF":
+            path = self.resolve(target)
+            text = read_text(path, "input script", path)
+            source, directory = path, os.path.dirname(os.path.abspath(path))
+            self.source, self.directory = source, directory
+            flow.source, flow.lines, flow.at = source, list(logical_lines(text)), 0
+        if label is None:
+            start = 0
+        else:
+            start = next((k + 1 for k, (_, raw) in enumerate(flow.lines)
+                          if strip_comment(raw).split()[:2] == ["label", label]), None)
+            if start is None:
+                raise ScriptError(f"label {label} is not in {source}", source=source, line=self.line,
+                                  command="jump")
+        backward = target == "SELF" and start <= flow.at
+        if backward and not flow.progress:
+            raise ScriptError(f"jump SELF {label or ''}: an endless loop (nothing a loop can end on "
+                              "changed since the last jump: no next, variable or run)".replace("  ", " "),
+                              source=source, line=self.line, command="jump")
+        flow.progress = False
+        flow.at = start
+        return source, directory
 
     def execute(self, words):
         """Run one command given as words: the single path scripts and typed calls share."""
@@ -324,14 +404,31 @@ class Simulation:
             self.highest_step = step
         self.step = step
 
+    def clear(self):
+        """LAMMPS's clear: a new simulation, keeping the variables, the log, the screen, the dialect
+        and where the script is."""
+        for dump in self.output.dumps.values():
+            close = getattr(dump, "close", None)
+            if callable(close):
+                close()
+        keep = {name: getattr(self, name) for name in ("variables", "output", "comm", "dialect",
+                                                       "dialect_fixed", "source", "line", "directory",
+                                                       "include_depth", "_flow") if hasattr(self, name)}
+        self.__init__(screen=False, log=None, comm=self.comm)
+        self.__dict__.update(keep)
+        from .output.thermo import Thermo
+        self.output.dumps = {}
+        self.output.thermo = Thermo(self)
+
     # ---- run information ---------------------------------------------------------------------------
     def ramp(self, start, stop):
-        """start + (stop - start) * (step - first step) / (last step - first step) of the current run:
-        LAMMPS's ramp(x, y), what a thermostat ramping T_START to T_STOP reads each step."""
-        span = self.run_last_step - self.run_first_step
-        if span <= 0:
+        """start + (stop - start) * (step - first step) / (last step - first step) of the current run
+        (of ``run N start S stop E``'s S and E when given): LAMMPS's ramp(x, y), what a thermostat
+        ramping T_START to T_STOP reads each step."""
+        first, last = self.ramp_bounds
+        if last <= first:
             return start
-        return start + (stop - start) * (self.step - self.run_first_step) / span
+        return start + (stop - start) * (self.step - first) / (last - first)
 
     def evaluate(self, value):
         """A style argument's value now: a number as it is, ``v_NAME`` (a ``VariableRef``) evaluated."""
@@ -369,10 +466,6 @@ class Simulation:
         self.groups.bit(name)
         return name
 
-    def _read_keyword(self, name, indices):
-        """What a variable expression reads: thermo keywords, c_ID[...] and f_ID[...] references."""
-        return keyword_value(self, name, indices)
-
     def compute_value(self, ident, indices=()):
         """``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``: a compute's scalar, vector element or array element."""
         compute = self.computes.get(ident)
@@ -396,11 +489,13 @@ class Simulation:
         if len(indices) == 0:
             return float(method(self))
         values = method(self)
+        shown = f"{prefix}_{ident}{''.join(f'[{i}]' for i in indices)}"
+        position = tuple(self.dialect_index(i, shown) for i in indices)
         try:
-            return float(values[indices])
+            return float(values[position])
         except IndexError:
-            raise ScriptError(f"{prefix}_{ident}{''.join(f'[{i}]' for i in indices)} is out of range "
-                              f"({style.kind} {ident} has shape {np.shape(values)})") from None
+            raise ScriptError(f"{shown} is out of range ({style.kind} {ident} has shape {np.shape(values)}; "
+                              f"indices count from {self.dialect.index_base})") from None
 
     def compute_needs(self, ident):
         compute = self.computes.get(ident)
@@ -419,14 +514,17 @@ class Simulation:
                               "read it on a thermo step, or run 0 first")
 
     # ---- running -----------------------------------------------------------------------------------
-    def run_steps(self, nsteps):
+    def run_steps(self, nsteps, ramp_bounds=None):
         from .run.verlet import Verlet
         self.require_box("run")
         self._check_masses()
+        self.ramp_bounds = (self.step, self.step + nsteps) if ramp_bounds is None else tuple(ramp_bounds)
         t_start = time.perf_counter()
         self.run_first_step = self.step
         last = self.step + nsteps
         self.run_last_step = last
+        self.run_wall_start = None      # thermo's cpu counts from the loop's start, 0 before
+        self.output.thermo.last_clock = None
         integrator = Verlet(self)
         self._integrator = integrator
         if self.restored_states:
@@ -437,6 +535,7 @@ class Simulation:
             self.output.setup(self.step, last)
             self.timers.reset()
             t_loop = time.perf_counter()
+            self.run_wall_start = t_loop
             integrator.run(nsteps)
             loop = time.perf_counter() - t_loop
         finally:

@@ -471,25 +471,28 @@ class Compute(Style):
 
 
 def peratom_column(sim, style, column, what):
-    """Column ``column`` (None: the only one) of a style's ``peratom(sim)`` values, as (nlocal,)
-    floats, for whatever reads per-atom values (reduce, dump custom); ``what`` names the reference
-    (``c_ID[k]``, ``dump column c_ID[k]``) in errors."""
+    """Column ``column`` (None: the only one; else as the script wrote it, counted from the dialect's
+    first index) of a style's ``peratom(sim)`` values, as (nlocal,) floats, for whatever reads per-atom
+    values (reduce, dump custom); ``what`` names the reference (``c_ID[k]``, ``dump column c_ID[k]``)
+    in errors."""
     values = np.asarray(style.peratom(sim), dtype=np.float64)
     n = sim.particles.nlocal
+    base = sim.dialect.index_base
     if values.shape[:1] != (n,) or values.ndim > 2:
         raise ScriptError(f"{what}: {style.kind} {style.id} ({style.name}) returned per-atom values of "
                           f"shape {values.shape}, not ({n},) or ({n}, k)")
     if column is None:
         if values.ndim == 2:
             raise ScriptError(f"{what}: {style.kind} {style.id} has {values.shape[1]} values per particle; "
-                              f"name one with [k], k from 0")
+                              f"name one with [k], k from {base}")
         return values
     if values.ndim == 1:
         raise ScriptError(f"{what}: {style.kind} {style.id} has one value per particle; drop the [k]")
-    if column >= values.shape[1]:
+    k = sim.dialect_index(column, what)
+    if k >= values.shape[1]:
         raise ScriptError(f"{what}: column {column} is out of range ({style.kind} {style.id} has "
-                          f"{values.shape[1]} values per particle, from 0)")
-    return values[:, column]
+                          f"{values.shape[1]} values per particle, from {base})")
+    return values[:, k]
 
 
 class Analyze(Style):
@@ -515,15 +518,34 @@ class Dump(Style):
         pass
 
 
+class RegionArgs(StyleArgs):
+    """Keywords every LAMMPS region style takes after its own arguments: ``side in|out`` (``match``
+    selects the inside or the outside) and ``units box|lattice`` (coordinates in distance units or in
+    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS)."""
+    side: typing.Literal["in", "out"] = keyword("in")
+    units: typing.Literal["box", "lattice"] | None = keyword(None)
+
+
 class Region(Style):
-    """A region: ``region ID STYLE args``; ``inside(x)`` marks positions inside it."""
+    """A region: ``region ID STYLE args``; ``inside(x)`` marks positions inside its shape, ``match(x)``
+    the positions the region selects (its inside, or its outside with ``side out``). A style whose
+    Args derive from ``RegionArgs`` scales its coordinates by ``self.scale`` (x, y, z lattice spacings
+    with ``units lattice``, else 1; radii by the x spacing, as LAMMPS)."""
     kind = "region"
 
     def __init__(self, sim, id, args):
         self.sim, self.id, self.args = sim, id, args
+        units = getattr(args, "units", "box") or sim.dialect.region_units
+        self.scale = np.ones(3)
+        if units == "lattice" and sim.lattice is not None:
+            self.scale = np.asarray(sim.lattice.spacing, dtype=np.float64).copy()
+        self.side_out = getattr(args, "side", "in") == "out"
 
     def inside(self, x):
         raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")
+
+    def match(self, x):
+        return ~self.inside(x) if self.side_out else self.inside(x)
 
     def bounds(self):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""

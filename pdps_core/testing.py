@@ -15,7 +15,7 @@ What is here:
 
 - ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
   the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps;
-  ``bench_data``: the benchmark scenes' data files (dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
+  ``bench_data``: the benchmark scenes' data files (dpd_water, dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
   (create_particle, pair_style, fixes...).
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
@@ -149,6 +149,8 @@ def bench_data(kind, path):
     """The data file of a benchmark scene, byte for byte as the benchmark kit's ``make_data.py``
     writes it for LAMMPS (so both engines read the same particles); returns ``path``.
 
+    - ``dpd_water``: the PDPS manual's water example, 20 x 20 x 10 lattice sites of spacing
+      0.5, 0.5, 1 in a cube of side 10 (4,000 particles).
     - ``dpd_gw``: Groot-Warren fluid, uniform random positions at rho = 3 in a cube of side 22
       (31,944 particles, seed 7).
     - ``gran_box``: 4,000 spheres of diameter 1 and mass 1 (sphere style) on a 20 x 20 x 10 lattice of
@@ -156,7 +158,10 @@ def bench_data(kind, path):
     - ``lj_fcc``: LAMMPS's in.lj benchmark, fcc at reduced density 0.8442, 20^3 cells (32,000
       atoms), Gaussian velocities with zero total momentum scaled to T = 1.44 (seed 87287).
     """
-    if kind == "dpd_gw":
+    if kind == "dpd_water":
+        x = _bench_lattice(20, 20, 10, 1.0) * np.array([0.5, 0.5, 1.0])
+        _bench_atomic(path, [0, 0, 0], [10, 10, 10], x)
+    elif kind == "dpd_gw":
         rng = np.random.default_rng(7)
         length = 22.0
         x = rng.uniform(0, length, size=(int(round(3 * length ** 3)), 3))
@@ -174,7 +179,7 @@ def bench_data(kind, path):
         v *= np.sqrt(3 * 1.44 / (v ** 2).sum(axis=1).mean())
         _bench_atomic(path, [0, 0, 0], [20 * a] * 3, x, velocities=v)
     else:
-        raise ValueError(f"unknown benchmark scene {kind!r} (dpd_gw, gran_box, lj_fcc)")
+        raise ValueError(f"unknown benchmark scene {kind!r} (dpd_water, dpd_gw, gran_box, lj_fcc)")
     return path
 
 

@@ -45,9 +45,32 @@ def test_a_run_that_fails_exits_1_with_one_line_and_no_traceback(run_pdps, tmp_p
 
 
 def test_usage_errors_exit_2(run_pdps):
-    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run"], capture_output=True, text=True)
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "--dialect", "fortran"],
+                            capture_output=True, text=True)
     assert result.returncode == 2
     assert "usage: pdps run" in result.stderr
+
+
+def test_a_script_on_standard_input_runs_as_lmp_reads_it(tmp_path):
+    # lmp < in.script: no script named, the script piped in
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "-log", "none"], cwd=tmp_path,
+                            input="atom_style atomic\nvariable a equal 2^3^2\nprint $a\n",
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == ["read as LAMMPS: atom_style on line 1", "64"]
+
+
+def test_lmp_flags(tmp_path):
+    (tmp_path / "in.flags").write_text("print ${n}-${m}\nvariable z equal 1\n")
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "-in", "in.flags", "-var", "n", "7",
+                             "-v", "m", "a", "b", "-screen", "screen.txt", "-log", "log.txt", "-echo", "both"],
+                            cwd=tmp_path, capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == ""
+    screen = (tmp_path / "screen.txt").read_text().splitlines()
+    assert screen == ["read as PDPS: no command names a dialect (PDPS is the default)", "print 7-a",
+                      "7-a", "variable z equal 1"]
+    assert (tmp_path / "log.txt").read_text().splitlines() == screen
 
 
 def test_styles_lists_every_style_with_its_distribution_and_version():
@@ -170,7 +193,8 @@ def test_doc_of_an_unknown_style_is_one_line(capsys):
     ("boundary p p", "ERROR: in.test:1: boundary: expected 3 argument(s), got 2; usage: boundary x y z  (each p or f)"),
     (BOX + "fix 1 all nve extra", "ERROR: in.test:4: fix: too many arguments: unexpected 'extra'; usage: fix ID GROUP nve"),
     ("region box block 0 1 0 1 0",
-     "ERROR: in.test:1: region: missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi"),
+     "ERROR: in.test:1: region: missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi "
+     "[side in|out] [units box|lattice]"),
     # non-numeric and out-of-range values, quoted as given
     ("timestep fast", "ERROR: in.test:1: timestep: timestep must be a number (got fast)"),
     (BOX + "mass 1 heavy", "ERROR: in.test:4: mass: mass must be a number (got heavy)"),
@@ -208,7 +232,7 @@ def test_bad_input_gives_one_line(pdps_cli, script, expected):
 @pytest.mark.parametrize("script, expected", [
     ("timestep ${dt}", "ERROR: in.test:1: timestep: undefined variable dt"),
     ("print ok\nthermo $n", "ERROR: in.test:2: thermo: undefined variable n"),
-    ("variable a equal 1/0\ntimestep $a", "ERROR: in.test:2: timestep: division by zero in '1/0'"),
+    ("variable a equal 1/0\ntimestep $a", "ERROR: in.test:2: timestep: divide by 0 in formula '1/0'"),
     ('print "open', 'ERROR: in.test:1: print: unbalanced quote " in: print "open'),
 ])
 def test_errors_found_while_substituting_name_the_command(pdps_cli, script, expected):

@@ -7,6 +7,7 @@ import textwrap
 import numpy as np
 import pytest
 
+from pdps_core.state.lattice import USAGE
 from pdps_core.errors import ScriptError
 from pdps_core.state import observables as obs
 from pdps_core.styles import registry
@@ -76,7 +77,7 @@ class TestUnits:
     def test_si_sets_its_time_step_skin_and_boltzmann_constant(self, sim):
         run(sim, "units si")
         assert (sim.units.name, sim.dt, sim.neighbors.skin) == ("si", 1e-8, 0.001)
-        assert sim.units.boltz == 1.380649e-23
+        assert sim.units.boltz == 1.3806504e-23      # LAMMPS's value (its update.cpp)
 
     def test_temperature_in_si(self, sim):
         run(sim, "units si\nlattice sc 1e-9" + box(bounds="0 4e-9 0 4e-9 0 4e-9") +
@@ -85,8 +86,9 @@ class TestUnits:
         assert obs.temperature(sim) == pytest.approx(300, rel=1e-12)
 
     def test_errors(self, sim):
-        fails(sim, "units metal", "units", "units style must be one of lj, si (got metal)")
-        fails(sim, "units", "units", "expected 1 argument(s), got 0; usage: units lj|si")
+        fails(sim, "units electron", "units", "units style must be one of lj, real, metal, si, cgs, micro, nano "
+                                             "(got electron)")
+        fails(sim, "units", "units", "expected 1 argument(s), got 0; usage: units lj|real|metal|si|cgs|micro|nano")
         fails(sim, box() + "units si", "units", "units must come before the simulation box is created")
 
 
@@ -170,16 +172,22 @@ class TestLattice:
         assert sim.nlocal == 4 * 2 ** 3
         assert min_image_distance(sim) == pytest.approx(2.0 / math.sqrt(2))
 
-    def test_2d_sc(self, sim):
-        run(sim, "dimension 2\nlattice sc 1.0" + box(bounds="0 4 0 3 -0.5 0.5") + "create_particle 1 box")
+    def test_2d_sq(self, sim):
+        run(sim, "dimension 2\nlattice sq 1.0" + box(bounds="0 4 0 3 -0.5 0.5") + "create_particle 1 box")
         assert sim.nlocal == 12
         assert np.all(sim.x[:, 2] == 0)
 
     @pytest.mark.parametrize("line, message", [
-        ("lattice", "expected arguments; usage: lattice spacing x DX y DY z DZ | lattice sc|bcc|fcc SCALE"),
-        ("lattice hex 1", "lattice style must be one of spacing, sc, bcc, fcc, none (got hex)"),
-        ("lattice spacing x 0.5 y", "expected pairs of axis and spacing; usage: lattice spacing x DX y DY z DZ "
-                                    "| lattice sc|bcc|fcc SCALE"),
+        ("lattice", "expected arguments; usage: " + USAGE),
+        ("lattice hexagon 1", "lattice style must be one of spacing, none, custom, sc, bcc, fcc, hcp, diamond, "
+                              "sq, sq2, hex (got hexagon)"),
+        ("lattice hex 1", "lattice hex is a 2-d lattice; this is a 3-d simulation (sc, bcc, fcc, hcp, diamond "
+                          "or custom)"),
+        ("lattice spacing x 0.5 y", "expected pairs of axis and spacing; usage: " + USAGE),
+        ("lattice fcc 1 orient x 1 1 0 orient y 1 0 0", "orient x and y must be orthogonal"),
+        ("lattice fcc 1 origin 0.5 1 0", "origin fractions must be >= 0 and < 1 (got 0.5 1 0)"),
+        ("lattice fcc 1 basis 0 0 0", "basis is for lattice custom (got lattice fcc)"),
+        ("lattice custom 1 a1 1 0 0", "lattice custom needs at least one basis atom"),
         ("lattice spacing w 0.5", "lattice axis must be one of x, y, z (got w)"),
         ("lattice spacing x 0", "lattice spacing x must be > 0 (got 0)"),
         ("lattice fcc -1", "lattice scale must be > 0 (got -1)"),
@@ -204,7 +212,8 @@ class TestRegionAndCreateBox:
         assert exc.message == (f"unknown region style blok; did you mean block? "
                                f"(installed: {', '.join(registry.names('region'))})")
         fails(sim, "region r3 block 0 1 0 1 0", "region",
-              "missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi")
+              "missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi [side in|out] "
+              "[units box|lattice]")
 
     def test_create_box_errors(self, sim):
         fails(sim, "create_box 1 nowhere", "create_box", "region nowhere is not defined (defined: none)")
@@ -513,16 +522,35 @@ class TestGroup:
         run(sim, "group g5 delete\ngroup h type 2")    # a deleted group's bit is free again
         assert "h" in sim.groups
 
+    def test_lammps_groups_are_static_and_add_up(self, sim):
+        from pdps_core.script.dialect import DIALECTS
+        sim.dialect = DIALECTS["lammps"]
+        run(sim, self.SETUP + "create_particle 2 single 0.5 0.5 0.5\ngroup g type 1\ngroup g type 2\n"
+                 "group odd id 1:64:2\ngroup big id > 60\ngroup both intersect odd big\n"
+                 "group rest subtract all g\ngroup mid id <> 10 12")
+        assert self.members(sim, "g") == set(range(1, 66))
+        assert self.members(sim, "odd") == set(range(1, 65, 2))
+        assert self.members(sim, "both") == {61, 63}
+        assert self.members(sim, "rest") == set()
+        assert self.members(sim, "mid") == {10, 11, 12}
+        run(sim, "create_particle 1 single 1.5 0.5 0.5")     # joins all only: static groups
+        assert 66 not in self.members(sim, "g")
+
     def test_redefining_a_group_replaces_it(self, sim):
         run(sim, self.SETUP + "create_particle 2 single 0.5 0.5 0.5\ngroup g type 1\ngroup g type 2")
         assert self.members(sim, "g") == {65}
 
     @pytest.mark.parametrize("line, message", [
-        ("group", "expected a group id; usage: group ID [all | region REGION-ID | type T... | delete]"),
-        ("group g", "expected a group style; usage: group ID [all | region REGION-ID | type T... | delete]"),
-        ("group g bogus", "group style must be one of all, region, type, delete (got bogus)"),
+        ("group", "expected a group id; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
+        ("group g", "expected a group style; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
+        ("group g bogus", "group style must be one of all, region, type, id, variable, subtract, union, intersect, "
+                          "empty, clear, delete, molecule, dynamic, static, include (got bogus)"),
+        ("group g dynamic all", "group dynamic is not supported (supported: region, type, id, variable, subtract, "
+                                "union, intersect, empty, clear, delete)"),
+        ("group g id 5:2", "id range 5:2 must have A <= B and a stride >= 1"),
+        ("group g union", "group union needs one or more groups"),
         ("group g region nowhere", "region nowhere is not defined (defined: box)"),
-        ("group g type", "expected at least one type; usage: group ID [all | region REGION-ID | type T... | delete]"),
+        ("group g type", "expected at least one type; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
         ("group g type 4", "type 4 is out of range 1..3"),
         ("group g delete", "group g is not defined"),
         ("group all type 1", "group all is predefined and cannot be redefined"),
@@ -533,7 +561,7 @@ class TestGroup:
 
 class TestVelocity:
     def setup_sim(self, sim, dimension=3):
-        run(sim, f"dimension {dimension}\nlattice sc 1" + box(ntypes=2, bounds="0 6 0 6 0 6") +
+        run(sim, f"dimension {dimension}\nlattice {'sc' if dimension == 3 else 'sq'} 1" + box(ntypes=2, bounds="0 6 0 6 0 6") +
             "mass 1 1\nmass 2 3\ncreate_particle 1 box\nregion half block 0 2.5 0 6 0 6\n"
             "create_particle 2 region half")
         return sim
@@ -925,14 +953,17 @@ class TestThermo:
         ("thermo -1", "thermo", "N must be >= 0 (got -1)"),
         ("thermo often", "thermo", "N must be an integer (got often)"),
         ("thermo_style custom step bogus", "thermo_style",
-         "unknown thermo keyword bogus (known: step, elapsed, dt, time, atoms, temp, press, pe, epair, ke, "
-         "etotal, vol, lx, ly, lz, c_ID, v_NAME)"),
+         "unknown thermo keyword bogus (keywords: step, temp, press, pe, ke, etotal and the rest of LAMMPS's "
+         "thermo_style list; c_ID, f_ID, v_NAME)"),
+        ("thermo_style custom step tempp", "thermo_style",
+         "unknown thermo keyword tempp (did you mean temp? keywords: step, temp, press, pe, ke, etotal and the "
+         "rest of LAMMPS's thermo_style list; c_ID, f_ID, v_NAME)"),
         ("thermo_style custom", "thermo_style", "thermo_style needs at least one keyword"),
         ("thermo_style custom step c_7\nrun 0", "run", "thermo_style: compute 7 is not defined (thermo keyword c_7)"),
         ("thermo_style custom step v_nope\nrun 0", "run",
          "thermo_style: variable nope is not defined (thermo keyword v_nope)"),
         ("compute cen all centroid\nthermo_style custom c_cen[3]\nrun 0", "run",
-         "c_cen[3] is out of range (compute cen has shape (3,))"),
+         "c_cen[3] is out of range (compute cen has shape (3,); indices count from 0)"),
     ])
     def test_errors(self, sim, line, command, message):
         fails(sim, self.SETUP + line, command, message)
@@ -970,7 +1001,8 @@ class TestResetTimestepAndRun:
         ("reset_timestep", "reset_timestep", "expected 1 argument(s), got 0; usage: reset_timestep N"),
         ("run -1", "run", "N must be >= 0 (got -1)"),
         ("run 1.5", "run", "N must be an integer (got 1.5)"),
-        ("run", "run", "expected 1 argument(s), got 0; usage: run N"),
+        ("run", "run", "expected a number of steps; usage: run N [upto] [start S] [stop E] [pre yes|no] "
+                       "[post yes|no] [every M COMMAND...]"),
     ])
     def test_errors(self, sim, line, command, message):
         fails(sim, self.SETUP + line, command, message)

@@ -1,30 +1,176 @@
-"""Script control and output commands: variable, next, print, include, run, reset_timestep, thermo,
-thermo_style, log."""
+"""Script control and output commands: dialect, echo, variable, next, print, if, label, jump, clear,
+include, run, reset_timestep, thermo, thermo_style, thermo_modify, log (LAMMPS's semantics)."""
 
 from ..errors import ScriptError
 from ..state import limits
-from ..script.lexer import substitute
+from ..script.lexer import split_words, substitute
 from . import command
-from .words import count, integer
+from .words import choice, count, integer
+
+
+def _progress(sim):
+    """Something a loop can end on happened (see ScriptFlow)."""
+    flow = getattr(sim, "_flow", None)
+    if flow is not None:
+        flow.progress = True
+
+
+@command("dialect")
+def dialect(sim, args):
+    """``dialect lammps|pdps``: read by the top script before its first command (see
+    pdps_core.script.dialect); run here it only confirms, or, typed from Python before any box
+    exists, chooses."""
+    from ..script.dialect import dialect_named
+    count(args, 1, "dialect lammps|pdps")
+    chosen = dialect_named(args[0])
+    if chosen is sim.dialect:
+        sim.dialect_fixed = True
+        return
+    if sim.dialect_fixed or sim.box is not None:
+        raise ScriptError(f"this script is read as {sim.dialect.label}; the dialect cannot change "
+                          "midway (give it first, or pdps run --dialect)")
+    sim.dialect, sim.dialect_fixed = chosen, True
+    sim.output.message(f"read as {chosen.label}: dialect command")
+
+
+@command("echo")
+def echo(sim, args):
+    count(args, 1, "echo none|screen|log|both")
+    sim.output.echo_to = choice(args[0], "echo", ("none", "screen", "log", "both"))
 
 
 @command("variable")
 def variable(sim, args):
     sim.variables.define(args)
+    _progress(sim)
 
 
 @command("next")
 def next_(sim, args):
+    """Step the variables; when one is exhausted it is deleted and the next jump is skipped (LAMMPS)."""
     if not args:
         raise ScriptError("expected: next NAME...")
+    exhausted = False
     for name in args:
-        sim.variables.next(name)
+        exhausted |= not sim.variables.next(name)
+    _progress(sim)
+    flow = getattr(sim, "_flow", None)
+    if exhausted and flow is not None:
+        flow.skip_jump = True
+
+
+@command("label")
+def label(sim, args):
+    count(args, 1, "label ID")
+
+
+@command("jump")
+def jump(sim, args):
+    """``jump FILE [LABEL]``: go on reading FILE (SELF: this script) from the line after
+    ``label LABEL``, or from its start."""
+    count(args, 1, "jump FILE|SELF [LABEL]", at_most=2)
+    flow = getattr(sim, "_flow", None)
+    if flow is None:
+        raise ScriptError("jump works in a script file, not in commands typed from Python")
+    if flow.skip_jump:
+        flow.skip_jump = False
+        return
+    flow.jump = (args[0], args[1] if len(args) == 2 else None)
+
+
+@command("if")
+def if_(sim, args):
+    """``if BOOLEAN then C1 C2 ... [elif BOOLEAN C...]... [else C...]``: each C a quoted command."""
+    usage = 'if "BOOLEAN" then "COMMAND" ... [elif "BOOLEAN" "COMMAND" ...] [else "COMMAND" ...]'
+    if len(args) < 2 or args[1] != "then":
+        raise ScriptError(f"expected a Boolean and then; usage: {usage}")
+    branches, current = [], None
+    k = 0
+    while k < len(args):
+        word = args[k]
+        if k == 0:
+            current = (args[0], [])
+            k += 2
+            continue
+        if word == "elif":
+            if k + 1 >= len(args):
+                raise ScriptError(f"elif needs a Boolean; usage: {usage}")
+            branches.append(current)
+            current = (args[k + 1], [])
+            k += 2
+            continue
+        if word == "else":
+            branches.append(current)
+            current = (None, [])
+            k += 1
+            continue
+        current[1].append(word)
+        k += 1
+    branches.append(current)
+    for condition, commands in branches:
+        if condition is None or _truth(sim, condition):
+            for text in commands:
+                line = substitute(text, sim.variables.text)
+                words = split_words(line)
+                if words:
+                    sim.output.echo(line.strip())
+                    sim.execute(words)
+            return
+
+
+def _truth(sim, condition):
+    """LAMMPS's Boolean of if: numbers compared as numbers, other words as strings (== and !=)."""
+    text = substitute(condition, sim.variables.text).strip()
+    for op in ("==", "!="):
+        left, found, right = text.partition(op)
+        if found and not _numeric(left) and left.strip() and right.strip() and "(" not in text:
+            same = left.strip() == right.strip()
+            return same if op == "==" else not same
+    return sim.variables.evaluate(text) != 0.0
+
+
+def _numeric(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
 
 
 @command("print")
 def print_(sim, args):
-    """Quoted text is substituted here too, as LAMMPS's print does."""
-    sim.output.message(substitute(" ".join(args), sim.variables.text))
+    """``print "TEXT" [file F | append F] [screen yes|no]``: quoted text is substituted here, as in
+    LAMMPS."""
+    words, target, mode, screen = list(args), None, None, True
+    while len(words) >= 3 and words[-2] in ("file", "append", "screen", "universe"):
+        key, value = words[-2], words[-1]
+        if key == "screen":
+            screen = value == "yes" if value in ("yes", "no") else _bad(f"screen must be yes or no (got {value})")
+        elif key in ("file", "append"):
+            target, mode = sim.resolve(value), "w" if key == "file" else "a"
+        words = words[:-2]
+    text = substitute(" ".join(words), sim.variables.text)
+    if screen:
+        sim.output.message(text)
+    elif sim.output.log is not None:
+        print(text, file=sim.output.log)
+    if target is not None and sim.comm.is_root:
+        try:
+            with open(target, mode) as handle:
+                handle.write(text + "\n")
+        except OSError as exc:
+            raise ScriptError(f"cannot write {target}: {exc.strerror}") from None
+
+
+def _bad(message):
+    raise ScriptError(message)
+
+
+@command("clear")
+def clear(sim, args):
+    """Everything but variables, the log and the dialect back to how a new simulation starts."""
+    count(args, 0, "clear")
+    sim.clear()
 
 
 @command("include")
@@ -35,12 +181,60 @@ def include(sim, args):
 
 @command("run")
 def run(sim, args):
-    count(args, 1, "run N")
-    nsteps = integer(args[0], "N", low=0, high=limits.MAX_RUN)
+    """``run N [upto] [start S] [stop E] [pre yes|no] [post yes|no] [every M COMMAND...]`` (LAMMPS)."""
+    usage = "run N [upto] [start S] [stop E] [pre yes|no] [post yes|no] [every M COMMAND...]"
+    if not args:
+        raise ScriptError(f"expected a number of steps; usage: {usage}")
+    upto = "upto" in args[1:]
+    nsteps = integer(args[0], "N", low=0, high=limits.MAX_STEP if upto else limits.MAX_RUN)
+    start, stop, every, commands = None, None, 0, []
+    k = 1
+    while k < len(args):
+        word = args[k]
+        if word == "upto":
+            k += 1
+        elif word in ("start", "stop", "pre", "post") and k + 1 < len(args):
+            if word in ("start", "stop"):
+                value = integer(args[k + 1], word, low=0, high=limits.MAX_STEP)
+                start, stop = (value, stop) if word == "start" else (start, value)
+            else:
+                choice(args[k + 1], word, ("yes", "no"))
+            k += 2
+        elif word == "every" and k + 1 < len(args):
+            every = integer(args[k + 1], "every", low=1, high=limits.MAX_RUN)
+            commands = [] if args[k + 2:] == ["NULL"] else list(args[k + 2:])
+            k = len(args)
+        else:
+            raise ScriptError(f"unexpected {word}; usage: {usage}")
+    if upto:
+        if nsteps < sim.step:
+            raise ScriptError(f"run {nsteps} upto: the step is already {sim.step}")
+        nsteps -= sim.step
+    if nsteps > limits.MAX_RUN:
+        raise ScriptError(f"N must be <= {limits.MAX_RUN} (got {nsteps})")
     if sim.step + nsteps > limits.MAX_STEP:
         raise ScriptError(f"run {nsteps} from step {sim.step} goes past the last step a 64-bit "
                           f"counter holds ({limits.MAX_STEP})")
-    sim.run_steps(nsteps)
+    last = sim.step + nsteps
+    if start is not None and start > sim.step:
+        raise ScriptError(f"start {start} is after this run's first step {sim.step}")
+    if stop is not None and stop < last:
+        raise ScriptError(f"stop {stop} is before this run's last step {last}")
+    _progress(sim)
+    bounds = (sim.step if start is None else start, last if stop is None else stop)
+    if not every:
+        sim.run_steps(nsteps, ramp_bounds=bounds)
+        return
+    done = 0
+    while done < nsteps:
+        chunk = min(every, nsteps - done)
+        sim.run_steps(chunk, ramp_bounds=bounds)
+        done += chunk
+        for text in commands:
+            line = substitute(text, sim.variables.text)
+            words = split_words(line)
+            if words:
+                sim.execute(words)
 
 
 @command("reset_timestep")
@@ -61,10 +255,17 @@ def thermo_style(sim, args):
     sim.output.thermo.set_style(args)
 
 
+@command("thermo_modify")
+def thermo_modify(sim, args):
+    sim.output.thermo.modify(args)
+
+
 @command("log")
 def log(sim, args):
-    count(args, 1, "log FILE|none")
+    count(args, 1, "log FILE|none [append]", at_most=2)
+    if len(args) == 2 and args[1] != "append":
+        raise ScriptError(f"expected append after the file (got {args[1]})")
     if args[0] == "none":
         sim.output.close_log()
     else:
-        sim.output.open_log(args[0])
+        sim.output.open_log(args[0], append=len(args) == 2)

@@ -27,7 +27,10 @@ def create_box(sim, args):
     if sim.box is not None:
         raise ScriptError("the simulation box already exists")
     ntypes = integer(args[0], "ntypes", low=1, high=limits.MAX_TYPES)
-    lo, hi = sim.region(args[1]).bounds()
+    region = sim.region(args[1])
+    if region.side_out:
+        raise ScriptError(f"region {args[1]} has side out: it has no extent to make a box from")
+    lo, hi = region.bounds()
     make_box(sim, lo, hi, ntypes)
 
 

@@ -1,4 +1,5 @@
-"""Particle commands: create_particle, read_data, mass, group, velocity."""
+"""Particle commands: create_particle (PDPS; LAMMPS's create_atoms is in create_atoms.py), read_data,
+mass, group, velocity."""
 
 import itertools
 import math
@@ -48,7 +49,7 @@ def _split_keywords(args, names):
     return rest, values
 
 
-@command("create_particle", "create_atoms")
+@command("create_particle")
 def create_particle(sim, args):
     usage = ("create_particle TYPE single X Y Z | spacing REGION | region REGION | box | "
              "random_no_overlap N REGION MIN_DISTANCE SEED  [diameter D] [density RHO]")
@@ -99,9 +100,9 @@ def create_particle(sim, args):
 def _lattice_sites(sim, region):
     if sim.lattice is None:
         raise ScriptError("creating particles on a lattice needs a lattice command first")
-    spacing, basis = sim.lattice
+    spacing, basis = sim.lattice.spacing, sim.lattice.basis
     box = sim.box
-    lo, hi = (box.lo, box.hi) if region is None else region.bounds()
+    lo, hi = (box.lo, box.hi) if region is None or region.side_out else region.bounds()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
     counts = [1 if (sim.dimension == 2 and d == 2) else (hi[d] - lo[d]) / spacing[d] + 2 for d in range(3)]
     sites = math.prod(counts) * len(basis)
@@ -122,7 +123,7 @@ def _lattice_sites(sim, region):
     keep = np.all((sites >= lo - tolerance) & (sites < hi - tolerance), axis=1)
     sites = sites[keep]
     if region is not None:
-        sites = sites[region.inside(sites)]
+        sites = sites[region.match(sites)]
     return sites[box.inside(sites)]
 
 
@@ -134,7 +135,7 @@ def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
     rejected candidates in a row the region counts as too full: an error, never a hang."""
     rng = np.random.default_rng(seed)
     box = sim.box
-    lo, hi = region.bounds()
+    lo, hi = (box.lo, box.hi) if getattr(region, "side_out", False) else region.bounds()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
     dims = sim.dimension
     periodic = box.periodic[:dims]
@@ -191,7 +192,7 @@ def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
         candidates = lo + rng.random((batch, 3)) * (hi - lo)
         if dims == 2:
             candidates[:, 2] = 0.0
-        usable = region.inside(candidates) & box.inside(candidates)
+        usable = region.match(candidates) & box.inside(candidates)
         for p, ok in zip(candidates.tolist(), usable.tolist()):
             if ok and (dmin <= 0 or free(p)):
                 placed.append(p)
@@ -218,7 +219,10 @@ def mass(sim, args):
 
 @command("group")
 def group(sim, args):
-    usage = "group ID [all | region REGION-ID | type T... | delete]"
+    """PDPS's group (region and type definitions re-evaluated before each run) and LAMMPS's (static;
+    pdps_core/state/groups.py)."""
+    usage = ("group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., "
+             "union G..., intersect G..., empty, clear, delete)")
     if not args:
         raise ScriptError(f"expected a group id; usage: {usage}")
     name, rest = args[0], args[1:]
@@ -226,20 +230,103 @@ def group(sim, args):
         return
     if not rest:
         raise ScriptError(f"expected a group style; usage: {usage}")
-    style = choice(rest[0], "group style", ("all", "region", "type", "delete"))
+    style = choice(rest[0], "group style", ("all", "region", "type", "id", "variable", "subtract", "union",
+                                            "intersect", "empty", "clear", "delete", "molecule", "dynamic",
+                                            "static", "include"))
+    if style in ("molecule", "dynamic", "include"):
+        raise ScriptError(f"group {style} is not supported (supported: region, type, id, variable, subtract, "
+                          "union, intersect, empty, clear, delete)")
+    if style == "static":
+        count(rest[1:], 0, usage)
+        return
+    if style == "delete":
+        count(rest[1:], 0, usage)
+        sim.groups.define(sim, name, ("delete",))
+        return
+    lammps = sim.dialect.name == "lammps"
+    if not lammps and style in ("all", "region", "type"):
+        sim.groups.define(sim, name, _pdps_definition(sim, style, rest[1:], usage))
+        return
+    sim.require_box(f"group {style}")
+    n = sim.particles.nlocal
+    if style == "clear":
+        count(rest[1:], 0, usage)
+        sim.groups.assign(sim, name, np.zeros(n, dtype=bool), replace=True)
+        return
+    sim.groups.assign(sim, name, _members(sim, style, rest[1:], usage))
+
+
+def _pdps_definition(sim, style, words, usage):
     if style == "region":
-        count(rest[1:], 1, usage)
-        sim.region(rest[1])
-        definition = ("region", rest[1])
-    elif style == "type":
-        if len(rest) < 2:
+        count(words, 1, usage)
+        sim.region(words[0])
+        return ("region", words[0])
+    if style == "type":
+        if not words:
             raise ScriptError(f"expected at least one type; usage: {usage}")
         sim.require_box("group type")
-        definition = ("type", *[type_range(w.replace(":", "*"), sim.ntypes) for w in rest[1:]])
-    else:
-        count(rest[1:], 0, usage)
-        definition = (style,)
-    sim.groups.define(sim, name, definition)
+        return ("type", *[type_range(w.replace(":", "*"), sim.ntypes) for w in words])
+    count(words, 0, usage)
+    return (style,)
+
+
+def _members(sim, style, words, usage):
+    """Owned particles a static group style selects now."""
+    p = sim.particles
+    n = p.nlocal
+    if style in ("all", "empty"):
+        count(words, 0, usage)
+        return np.full(n, style == "all")
+    if style == "region":
+        count(words, 1, usage)
+        return sim.region(words[0]).match(p.x[:n])
+    if style in ("type", "id"):
+        values = p.type[:n] if style == "type" else p.tag[:n]
+        return _selected(values, words, style, usage)
+    if style == "variable":
+        count(words, 1, usage)
+        if words[0] not in sim.variables or sim.variables.style(words[0]) != "atom":
+            raise ScriptError(f"group variable needs an atom-style variable (got {words[0]})")
+        return sim.variables.atom_values(words[0]) != 0.0
+    groups = [sim.require_group(g) for g in words]
+    if not groups or (style == "subtract" and len(groups) < 2) or (style == "intersect" and len(groups) < 2):
+        raise ScriptError(f"group {style} needs {'two or more' if style != 'union' else 'one or more'} groups")
+    masks = [sim.groups.select(sim, g) for g in groups]
+    if style == "union":
+        return np.logical_or.reduce(masks)
+    if style == "intersect":
+        return np.logical_and.reduce(masks)
+    return masks[0] & ~np.logical_or.reduce(masks[1:])
+
+
+LOGICAL = {"<": np.less, "<=": np.less_equal, ">": np.greater, ">=": np.greater_equal, "==": np.equal,
+           "!=": np.not_equal}
+
+
+def _selected(values, words, style, usage):
+    if not words:
+        raise ScriptError(f"group {style} needs values; usage: {usage}")
+    if words[0] in LOGICAL:
+        count(words, 2, usage)
+        return LOGICAL[words[0]](values, integer(words[1], style))
+    if words[0] == "<>":
+        count(words, 3, usage)
+        return (values >= integer(words[1], style)) & (values <= integer(words[2], style))
+    member = np.zeros(len(values), dtype=bool)
+    for word in words:
+        parts = word.split(":")
+        if len(parts) > 3:
+            raise ScriptError(f"{style} range must be A, A:B or A:B:STRIDE (got {word})")
+        numbers = [integer(part, style) for part in parts]
+        if len(numbers) == 1:
+            member |= values == numbers[0]
+            continue
+        first, last = numbers[0], numbers[1]
+        stride = numbers[2] if len(numbers) == 3 else 1
+        if stride < 1 or last < first:
+            raise ScriptError(f"{style} range {word} must have A <= B and a stride >= 1")
+        member |= (values >= first) & (values <= last) & ((values - first) % stride == 0)
+    return member
 
 
 @command("velocity")

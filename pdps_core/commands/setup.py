@@ -10,7 +10,6 @@ from . import command
 from .words import choice, count, integer, number, yes_no
 
 # LAMMPS's default skins: 0.3 sigma in lj units, 1 mm in SI.
-DEFAULT_SKIN = {"lj": 0.3, "si": 0.001}
 
 
 def _before_box(sim, name):
@@ -20,12 +19,12 @@ def _before_box(sim, name):
 
 @command("units")
 def units(sim, args):
-    count(args, 1, "units lj|si")
+    count(args, 1, f"units {'|'.join(UNITS)}")
     _before_box(sim, "units")
     style = choice(args[0], "units style", tuple(UNITS))
     sim.unit_system = UNITS[style]
     sim.dt = sim.unit_system.dt
-    sim.neighbors.skin = DEFAULT_SKIN[style]
+    sim.neighbors.skin = sim.unit_system.skin
 
 
 @command("dimension")
@@ -53,39 +52,9 @@ def timestep(sim, args):
 
 @command("lattice")
 def lattice(sim, args):
-    """``lattice spacing x DX y DY z DZ`` (PDPS) or ``lattice sc|bcc|fcc SCALE`` (LAMMPS: in lj units
-    SCALE is the reduced density, otherwise the lattice constant)."""
-    usage = "lattice spacing x DX y DY z DZ | lattice sc|bcc|fcc SCALE"
-    if not args:
-        raise ScriptError(f"expected arguments; usage: {usage}")
-    style = choice(args[0], "lattice style", ("spacing", "sc", "bcc", "fcc", "none"))
-    if style == "none":
-        sim.lattice = None
-        return
-    if style == "spacing":
-        spacing = np.ones(3)
-        words = args[1:]
-        if not words or len(words) % 2:
-            raise ScriptError(f"expected pairs of axis and spacing; usage: {usage}")
-        for axis, value in zip(words[::2], words[1::2]):
-            choice(axis, "lattice axis", ("x", "y", "z"))
-            spacing["xyz".index(axis)] = number(value, f"lattice spacing {axis}", low=0.0, strict_low=True)
-        sim.lattice = (spacing, np.zeros((1, 3)))
-        return
-    count(args, 2, usage)
-    scale = number(args[1], "lattice scale", low=0.0, strict_low=True)
-    basis = {"sc": [[0, 0, 0]],
-             "bcc": [[0, 0, 0], [0.5, 0.5, 0.5]],
-             "fcc": [[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]]}[style]
-    basis = np.array(basis, dtype=float)
-    if sim.dimension == 2:
-        basis = np.unique(basis * [1, 1, 0], axis=0)
-    if sim.unit_system.name == "lj":
-        constant = (len(basis) / scale) ** (1.0 / sim.dimension)
-    else:
-        constant = scale
-    spacing = np.full(3, constant)
-    sim.lattice = (spacing, basis)
+    """``lattice spacing x DX y DY z DZ`` (PDPS) or LAMMPS's lattices (pdps_core/state/lattice.py)."""
+    from ..state.lattice import parse_lattice
+    sim.lattice = parse_lattice(args, sim.unit_system.name, sim.dimension)
 
 
 @command("neighbor")

@@ -29,17 +29,18 @@ class Output:
         # a silent simulation (and every rank but 0) shows no progress
         self.progress = None if self.screen is False else Progress()
         self.dumps = {}
+        self.echo_to = "log"            # LAMMPS's echo: none, screen, log or both
         if log:
             self.open_log(log)
 
     # ---- screen and log -------------------------------------------------------------------------
-    def open_log(self, path):
-        """Switch the log to ``path``; one that cannot be opened is a one-line error and the log
-        written so far stays as it is."""
+    def open_log(self, path, append=False):
+        """Switch the log to ``path`` (appended to with ``append``); one that cannot be opened is a
+        one-line error and the log written so far stays as it is."""
         handle = None
         if self.root:
             try:
-                handle = open(path, "w")
+                handle = open(path, "a" if append else "w")
             except OSError as exc:
                 raise ScriptError(f"cannot open log file {path}: {exc.strerror}") from None
         self.close_log()
@@ -69,8 +70,12 @@ class Output:
             print(text, file=self.log)
 
     def echo(self, text):
-        """A command as read: to the log only (LAMMPS's default echo)."""
-        if self.log is not None:
+        """A command as read: where ``echo`` sends it (the log only by default, as LAMMPS)."""
+        if self.echo_to in ("screen", "both") and self.screen is not False:
+            if self.progress is not None:
+                self.progress.clear()
+            print(text, file=self.screen)
+        if self.echo_to in ("log", "both") and self.log is not None:
             print(text, file=self.log)
 
     def flush(self):
@@ -120,6 +125,8 @@ class Output:
         if self.thermo.due(step, self.sim.run_first_step, last):
             values = self.thermo.values()
             self.message(self.thermo.line(values))
+            if self.thermo.flush_each:
+                self.flush()
             self.csv.row(values, self.thermo.integer())
             wrote = True
             bad = next((name for name, value in zip(self.thermo.names(), values)

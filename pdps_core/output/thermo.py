@@ -1,21 +1,44 @@
-"""Thermo output: ``thermo N`` and ``thermo_style [custom] keyword...``.
+"""Thermo output: ``thermo N``, ``thermo_style [custom|one] keyword...`` and ``thermo_modify``.
 
-Keywords: step, elapsed, dt, time, atoms, temp, press, pe (also epair), ke, etotal, vol, lx, ly, lz,
-``c_ID``, ``c_ID[i]``, ``c_ID[i][j]`` and ``v_NAME``. A line is written at the start of a run, every N
-steps, and at the last step (``thermo 0``: first and last only), as the PDPS manual describes.
+Keywords, as LAMMPS's thermo_style names them: step, elapsed, elaplong, dt, time, cpu, tpcpu, spcpu,
+cpuremain, atoms, temp, press, pe, ke, etotal, enthalpy, evdwl, ecoul, epair, ebond, eangle, edihed,
+eimp, emol, elong, etail, ecouple, econserve, vol, density, lx, ly, lz, xlo, xhi, ylo, yhi, zlo, zhi,
+xy, xz, yz, fmax, fnorm, nbuild, ndanger, ``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``, ``f_ID...``,
+``v_NAME`` and ``v_NAME[i]`` (indices from 0 in the PDPS dialect, from 1 in LAMMPS's). Energies are
+per particle in lj units (``thermo_modify norm yes``, LAMMPS's default there) and totals otherwise.
+Energies of interactions pdps has no style for (Coulomb, bonds, k-space) read 0, as in LAMMPS
+without them. A line is written at the start of a run, every N steps, and at the last step
+(``thermo 0``: first and last only), as the PDPS manual describes.
+
+``thermo_modify norm yes|no``, ``format line|int|float FORMAT``, ``format N FORMAT`` (C formats,
+``format none`` resets), ``flush yes|no``, ``temp ID``, ``press ID`` and ``lost error|warn|ignore``
+(only ``error`` is supported: a lost particle stops the run, as the PDPS manual says).
 """
 
 import re
+import time
+
+import numpy as np
 
 from ..errors import ScriptError
 from ..state import observables as obs
 
-HEADERS = {"step": "Step", "elapsed": "Elapsed", "dt": "Dt", "time": "Time", "atoms": "Atoms",
-           "temp": "Temp", "press": "Press", "pe": "PotEng", "epair": "E_pair", "ke": "KinEng",
-           "etotal": "TotEng", "vol": "Volume", "lx": "Lx", "ly": "Ly", "lz": "Lz"}
-INTEGER = {"step", "elapsed", "atoms"}
-NEEDS = {"press": {"virial"}, "pe": {"energy"}, "epair": {"energy"}, "etotal": {"energy"}}
+HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "Dt", "time": "Time",
+           "cpu": "CPU", "tpcpu": "T/CPU", "spcpu": "S/CPU", "cpuremain": "CPULeft", "atoms": "Atoms",
+           "temp": "Temp", "press": "Press", "pe": "PotEng", "ke": "KinEng", "etotal": "TotEng",
+           "enthalpy": "Enthalpy", "evdwl": "E_vdwl", "ecoul": "E_coul", "epair": "E_pair",
+           "ebond": "E_bond", "eangle": "E_angle", "edihed": "E_dihed", "eimp": "E_impro",
+           "emol": "E_mol", "elong": "E_long", "etail": "E_tail", "ecouple": "Ecouple",
+           "econserve": "Econserve", "vol": "Volume", "density": "Density", "lx": "Lx", "ly": "Ly",
+           "lz": "Lz", "xlo": "Xlo", "xhi": "Xhi", "ylo": "Ylo", "yhi": "Yhi", "zlo": "Zlo", "zhi": "Zhi",
+           "xy": "Xy", "xz": "Xz", "yz": "Yz", "fmax": "Fmax", "fnorm": "Fnorm", "nbuild": "Nbuild",
+           "ndanger": "Ndanger"}
+INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger"}
+ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve"}
+NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"}}
+ABSENT = {"ecoul", "ebond", "eangle", "edihed", "eimp", "emol", "elong", "etail", "ecouple", "xy", "xz", "yz"}
 REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((\[\d+\])*)$")
+BOUNDS = {"xlo": (0, 0), "xhi": (1, 0), "ylo": (0, 1), "yhi": (1, 1), "zlo": (0, 2), "zhi": (1, 2)}
 
 
 def keyword_value(sim, name, indices=()):
@@ -24,29 +47,54 @@ def keyword_value(sim, name, indices=()):
         return sim.step
     if name == "elapsed":
         return sim.step - sim.run_first_step
+    if name == "elaplong":
+        return sim.step - sim.ramp_bounds[0]
     if name == "dt":
         return sim.dt
     if name == "time":
         return sim.time
+    if name in ("cpu", "tpcpu", "spcpu", "cpuremain"):
+        return sim.output.thermo.clock(name)
+    if name in ABSENT:
+        return 0.0
     if name in HEADERS:
         # the rest describe particles in a box; a variable may read them before one exists
         sim.require_box(f"thermo keyword {name}")
     if name == "atoms":
         return obs.count(sim)
     if name == "temp":
-        return obs.temperature(sim)
+        return sim.output.thermo.temperature()
     if name == "press":
-        return obs.pressure(sim)
-    if name in ("pe", "epair"):
-        return obs.potential_energy(sim) / _normalise(sim)
-    if name == "ke":
-        return obs.kinetic_energy(sim) / _normalise(sim)
-    if name == "etotal":
-        return (obs.potential_energy(sim) + obs.kinetic_energy(sim)) / _normalise(sim)
+        return sim.output.thermo.pressure()
+    if name in ("pe", "epair", "econserve", "etotal", "enthalpy", "ke"):
+        total = 0.0
+        if name != "ke":
+            total += obs.potential_energy(sim)
+        if name in ("ke", "etotal", "econserve", "enthalpy"):
+            total += obs.kinetic_energy(sim)
+        if name == "enthalpy":
+            total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
+        return total / _normalise(sim)
+    if name == "evdwl":
+        sim.require_energy()
+        return float(sim.comm.sum(sim.evdwl)) / _normalise(sim)
     if name == "vol":
         return sim.box.volume
+    if name == "density":
+        total_mass = sim.comm.sum(float(obs.masses(sim, np.ones(sim.nlocal, dtype=bool)).sum()))
+        return total_mass / sim.box.volume * sim.units.mv2d
     if name in ("lx", "ly", "lz"):
         return float(sim.box.length["xyz".index(name[1])])
+    if name in BOUNDS:
+        side, d = BOUNDS[name]
+        return float((sim.box.lo, sim.box.hi)[side][d])
+    if name in ("fmax", "fnorm"):
+        f = sim.f
+        if name == "fmax":
+            return float(sim.comm.max(float(np.abs(f).max()) if len(f) else 0.0))
+        return float(np.sqrt(sim.comm.sum(float((f * f).sum()))))
+    if name in ("nbuild", "ndanger"):
+        return sim.neighbors.builds if name == "nbuild" else sim.neighbors.dangerous
     if name.startswith("c_"):
         return sim.compute_value(name[2:], indices)
     if name.startswith("f_"):
@@ -55,10 +103,11 @@ def keyword_value(sim, name, indices=()):
 
 
 def _normalise(sim):
-    """LAMMPS lj units report energies per particle (thermo_modify norm yes)."""
-    if sim.units.name == "lj":
-        return max(obs.count(sim), 1)
-    return 1
+    """Energies per particle (thermo_modify norm yes; LAMMPS's default in lj units only)."""
+    norm = sim.output.thermo.norm
+    if norm is None:
+        norm = sim.units.name == "lj"
+    return max(obs.count(sim), 1) if norm else 1
 
 
 class Thermo:
@@ -66,6 +115,110 @@ class Thermo:
         self.sim = sim
         self.every = 0
         self.columns = ["step", "temp", "pe", "ke", "etotal", "press"]
+        self.norm = None                # thermo_modify norm; None: LAMMPS's default for the units
+        self.formats = {"line": None, "int": None, "float": None, "columns": {}}
+        self.flush_each = False
+        self.temp_id = self.press_id = None
+        self.last_clock = None          # (wall time, step, time) of the last line, for tpcpu/spcpu
+
+    # ---- thermo_modify --------------------------------------------------------------------------
+    def modify(self, words):
+        usage = ("thermo_modify norm yes|no | format line|int|float|N FORMAT | format none | "
+                 "flush yes|no | temp ID | press ID | lost error|warn|ignore")
+        if not words:
+            raise ScriptError(f"expected keywords; usage: {usage}")
+        i = 0
+        while i < len(words):
+            key = words[i]
+            value = words[i + 1] if i + 1 < len(words) else None
+            if value is None:
+                raise ScriptError(f"keyword {key} needs a value; usage: {usage}")
+            if key in ("norm", "flush"):
+                if value not in ("yes", "no"):
+                    raise ScriptError(f"{key} must be yes or no (got {value})")
+                if key == "norm":
+                    self.norm = value == "yes"
+                else:
+                    self.flush_each = value == "yes"
+            elif key == "format":
+                if value == "none":
+                    self.formats = {"line": None, "int": None, "float": None, "columns": {}}
+                    i += 2
+                    continue
+                if i + 2 >= len(words):
+                    raise ScriptError(f"format {value} needs a format string; usage: {usage}")
+                self._set_format(value, words[i + 2])
+                i += 3
+                continue
+            elif key in ("temp", "press"):
+                if value not in self.sim.computes:
+                    raise ScriptError(f"compute {value} is not defined (thermo_modify {key})")
+                setattr(self, f"{key}_id", value)
+            elif key == "lost":
+                if value not in ("error", "warn", "ignore"):
+                    raise ScriptError(f"lost must be error, warn or ignore (got {value})")
+                if value != "error":
+                    raise ScriptError(f"lost {value} is not supported: a particle lost through a fixed "
+                                      "boundary stops the run (lost error)")
+            elif key in ("lost/bond", "line", "every", "triclinic/general"):
+                raise ScriptError(f"thermo_modify {key} is not supported (supported: norm, format, "
+                                  "flush, temp, press, lost)")
+            else:
+                raise ScriptError(f"unknown thermo_modify keyword {key}; usage: {usage}")
+            i += 2
+
+    def _set_format(self, which, fmt):
+        fmt = fmt.strip('"\'')
+        try:
+            fmt % (1,)
+        except (TypeError, ValueError):
+            raise ScriptError(f"format {which}: {fmt} is not a C format for one number") from None
+        if which in ("line",):
+            self.formats["line"] = fmt.split()
+        elif which in ("int", "float"):
+            self.formats[which] = fmt
+        else:
+            try:
+                column = int(which)
+            except ValueError:
+                raise ScriptError(f"format must be line, int, float, none or a column number (got {which})") from None
+            if not 1 <= column <= len(self.columns):
+                raise ScriptError(f"format {column}: thermo has columns 1 to {len(self.columns)}")
+            self.formats["columns"][column] = fmt
+
+    # ---- what thermo computes with ----------------------------------------------------------------
+    def temperature(self):
+        if self.temp_id is not None:
+            return float(self.sim.compute_value(self.temp_id))
+        return obs.temperature(self.sim)
+
+    def pressure(self):
+        if self.press_id is not None:
+            return float(self.sim.compute_value(self.press_id))
+        if self.temp_id is not None:
+            return obs.pressure(self.sim, temp=self.temperature())
+        return obs.pressure(self.sim)
+
+    def clock(self, name):
+        """cpu (wall seconds of this run), tpcpu and spcpu (simulated time and steps per wall second
+        since the last line), cpuremain (an estimate of the seconds left), as LAMMPS's."""
+        sim = self.sim
+        now = time.perf_counter()
+        started = getattr(sim, "run_wall_start", None)
+        if started is None:
+            return 0.0
+        if name == "cpu":
+            return now - started
+        if name == "cpuremain":
+            done = sim.step - sim.run_first_step
+            left = sim.run_last_step - sim.step
+            return (now - started) * left / done if done > 0 else 0.0
+        if self.last_clock is None:
+            return 0.0
+        wall, step, at = self.last_clock
+        if now <= wall:
+            return 0.0
+        return ((sim.time - at) if name == "tpcpu" else (sim.step - step)) / (now - wall)
 
     def set_style(self, words):
         if words and words[0] == "custom":
@@ -83,7 +236,11 @@ class Thermo:
             return word, ()
         match = REFERENCE.match(word)
         if not match:
-            raise ScriptError(f"unknown thermo keyword {word} (known: {', '.join(HEADERS)}, c_ID, v_NAME)")
+            import difflib
+            close = difflib.get_close_matches(word, HEADERS, n=1)
+            hint = f"did you mean {close[0]}? " if close else ""
+            raise ScriptError(f"unknown thermo keyword {word} ({hint}keywords: step, temp, press, pe, ke, "
+                              "etotal and the rest of LAMMPS's thermo_style list; c_ID, f_ID, v_NAME)")
         indices = tuple(int(i) for i in re.findall(r"\[(\d+)\]", match.group(3)))
         return word, indices
 
@@ -141,10 +298,16 @@ class Thermo:
         return " ".join(cells)
 
     def values(self):
+        out = self._values()
+        self.last_clock = (time.perf_counter(), self.sim.step, self.sim.time)
+        return out
+
+    def _values(self):
         out = []
         for word in self.columns:
             if word.startswith("v_"):
-                out.append(self.sim.variables.value(self._reference(word)[0]))
+                ident, indices = self._reference(word)
+                out.append(self.sim.variables.read(ident, indices, index_base=self.sim.dialect.index_base))
             elif word.startswith("c_") or word.startswith("f_"):
                 ident, indices = self._reference(word)
                 read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
@@ -157,6 +320,15 @@ class Thermo:
         """The thermo line for ``values`` (read now when not given)."""
         values = self.values() if values is None else values
         cells = []
-        for word, value in zip(self.columns, values):
-            cells.append(f"{int(value):>10d}" if word in INTEGER else f"{value:>14.8g}")
+        line = self.formats["line"]
+        for k, (word, value) in enumerate(zip(self.columns, values)):
+            fmt = self.formats["columns"].get(k + 1)
+            if fmt is None and line is not None and k < len(line):
+                fmt = line[k]
+            if fmt is None:
+                fmt = self.formats["int" if word in INTEGER else "float"]
+            if fmt is not None:
+                cells.append(fmt % (int(value) if word in INTEGER and "d" in fmt else value))
+            else:
+                cells.append(f"{int(value):>10d}" if word in INTEGER else f"{value:>14.8g}")
         return " ".join(cells)

@@ -169,7 +169,7 @@ class Verlet:
         elif vflag:
             sim.virial[:] = 0.0
         if eflag:
-            sim.pe = sim.pair.energy if sim.pair is not None else 0.0
+            sim.pe = sim.evdwl = sim.pair.energy if sim.pair is not None else 0.0
             sim.energy_step = sim.step
         if vflag:
             sim.virial_step = sim.step

@@ -1,49 +1,52 @@
-"""Script variables: ``variable NAME equal EXPR``, ``index V1 V2 ...``, ``string TEXT``.
+"""Script variables, as LAMMPS's ``variable`` command defines them.
 
-Semantics follow LAMMPS: an ``equal`` variable is evaluated each time it is read, so it can follow a
-run (``variable t equal temp``); an ``index`` variable set with ``-var`` on the command line is not
-redefined by the script; ``next NAME`` steps an index variable to its next value.
+Styles:
 
-Expressions use numbers, ``+ - * / ^ %``, parentheses, comparisons, ``&& || !``, the functions in
-``FUNCTIONS``, thermo keywords (``step``, ``temp``, ...), ``v_NAME``, ``c_ID``, ``c_ID[i]`` and
-``c_ID[i][j]``.
-They are parsed with Python's ``ast`` and walked node by node; nothing is ``eval``-ed.
+- ``index V1 V2 ...``, ``loop N [pad]``, ``loop N1 N2 [pad]``, ``universe V1 V2 ...``, ``uloop N [pad]``:
+  a list of strings stepped by ``next``; once defined (by ``-var`` on the command line, or earlier in
+  the script) a later definition of the same name is ignored, as in LAMMPS.
+- ``world V``: one value per partition (pdps runs one partition).
+- ``string TEXT``, ``getenv NAME``, ``format VAR FORMAT``, ``internal VALUE``, ``file FILE`` (one value per
+  non-comment line, stepped by ``next``).
+- ``equal FORMULA`` (a number, evaluated each time it is read), ``atom FORMULA`` (one number per
+  particle), ``vector FORMULA`` or ``vector [1,2,3]`` (a global vector).
+- ``delete``.
+
+Formulas follow LAMMPS's grammar (pdps_core.script.expression) and are parsed once, when defined.
+``${NAME}`` substitutes an equal-style value with 15 significant digits, ``$(FORMULA)`` with 20
+(``$(FORMULA:%.3f)`` with the format given), as LAMMPS does. Redefining a variable as another style
+is an error unless it is deleted first.
 """
 
-import ast
 import math
-import operator
+import os
 import re
 
-from ..errors import ScriptError
+import numpy as np
 
-FUNCTIONS = {
-    "sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs,
-    "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin, "acos": math.acos,
-    "atan": math.atan, "atan2": math.atan2, "floor": math.floor, "ceil": math.ceil,
-    "round": lambda x: math.floor(x + 0.5),    # 2.5 -> 3 as in LAMMPS (Python's round gives 2)
-    "min": min, "max": max,
-}
-CONSTANTS = {"PI": math.pi}
-BINARY = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-          ast.Div: operator.truediv, ast.Pow: operator.pow, ast.Mod: operator.mod}
-COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt, ast.GtE: operator.ge,
-           ast.Eq: operator.eq, ast.NotEq: operator.ne}
+from ..errors import ScriptError
+from .expression import Expression, FormulaError
+
 NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+LISTS = ("index", "loop", "universe", "uloop", "world", "file")
+REDEFINABLE = ("string", "getenv", "format", "internal", "file", "equal", "atom", "vector")
+STYLES = LISTS + ("string", "getenv", "format", "internal", "equal", "atom", "vector", "delete")
+C_FORMAT = re.compile(r"^%[-+ #0]*\d*(?:\.\d+)?[eEfgG]$")
 
 
 class Variable:
-    def __init__(self, name, style, values):
-        self.name, self.style, self.values, self.index = name, style, values, 0
+    def __init__(self, name, style, values, formula=None):
+        self.name, self.style, self.values, self.formula, self.index = name, style, values, formula, 0
 
 
 class Variables:
-    """The variables of one simulation; ``reader(name)`` resolves thermo keywords and compute refs."""
+    """The variables of one simulation. ``context(per_atom=False)`` gives what formulas read (a
+    pdps_core.script.context.FormulaContext of the simulation)."""
 
-    def __init__(self, reader):
+    def __init__(self, context):
         self._vars = {}
-        self._reader = reader
-        self._evaluating = []      # equal-style variables being evaluated, to catch cycles
+        self._context = context
+        self._evaluating = []      # variables being evaluated, to catch cycles
 
     def __contains__(self, name):
         return name in self._vars
@@ -51,45 +54,92 @@ class Variables:
     def names(self):
         return list(self._vars)
 
+    def style(self, name):
+        return self._get(name).style
+
+    # ---- definition --------------------------------------------------------------------------------
     def define(self, words, from_command_line=False):
         if len(words) < 2:
             raise ScriptError("expected: variable NAME STYLE ARGS")
-        name, style, args = words[0], words[1], words[2:]
+        name, style, args = words[0], words[1], list(words[2:])
         if not NAME.match(name):
             raise ScriptError(f"variable name must be letters, digits and _ (got {name})")
+        if style not in STYLES:
+            raise ScriptError(f"unknown variable style {style} (known: {', '.join(STYLES)})")
         if style == "delete":
+            if args:
+                raise ScriptError("variable NAME delete takes no more arguments")
             self._vars.pop(name, None)
             return
-        if style not in ("equal", "index", "string"):
-            raise ScriptError(f"unknown variable style {style} (known: equal, index, string, delete)")
         if not args:
             raise ScriptError(f"variable {name} {style} needs a value")
         existing = self._vars.get(name)
-        if existing is not None and style == "index":
+        if existing is not None and style in ("index", "loop", "universe", "uloop", "world"):
             return  # LAMMPS: a variable, once set (e.g. by -var), keeps its value
-        if existing is not None and existing.style != style:
+        if existing is not None and (existing.style != style or style not in REDEFINABLE):
             # LAMMPS refuses too: silently replacing it would lose a -var value
             raise ScriptError(f"variable {name} is already defined as {existing.style}; it cannot become "
                               f"{style} (use variable {name} delete first)")
-        if style == "index":
-            values = args
-        else:
-            values = [" ".join(args)]
-        if style == "equal":
-            self._parse(values[0], name)
-        self._vars[name] = Variable(name, style, values)
+        self._vars[name] = self._make(name, style, args)
+
+    def _make(self, name, style, args):
+        if style in ("index", "universe"):
+            return Variable(name, style, args)
+        if style in ("loop", "uloop"):
+            return Variable(name, style, _loop_values(name, args))
+        if style == "world":
+            if len(args) != 1:
+                raise ScriptError(f"variable {name} world: {len(args)} values for 1 partition")
+            return Variable(name, style, args)
+        if style == "getenv":
+            _one(name, style, args)
+            return Variable(name, style, [os.environ.get(args[0], "")])
+        if style == "string":
+            return Variable(name, style, [" ".join(args)])
+        if style == "internal":
+            _one(name, style, args)
+            return Variable(name, style, [_number(args[0], f"variable {name} internal")])
+        if style == "format":
+            if len(args) != 2:
+                raise ScriptError(f"variable {name} format takes an equal-style variable and a format "
+                                  f"(got {' '.join(args)})")
+            if not C_FORMAT.match(args[1]):
+                raise ScriptError(f"variable {name} format: {args[1]} is not a floating-point format "
+                                  "such as %.6g, %10.4f or %e")
+            return Variable(name, style, args)
+        if style == "file":
+            return Variable(name, style, _file_values(name, args))
+        formula_text = " ".join(args)
+        if style == "vector" and formula_text.startswith("["):
+            return Variable(name, style, [_vector_literal(name, formula_text)])
+        try:
+            formula = Expression(formula_text)
+        except FormulaError as exc:
+            raise ScriptError(f"variable {name}: {exc.message}") from None
+        if formula.atom_vectors and style == "equal":
+            raise ScriptError(f"variable {name}: an equal-style formula cannot read atom vectors "
+                              f"(atom-style: variable {name} atom ...) in {formula_text!r}")
+        return Variable(name, style, [formula_text], formula)
 
     def next(self, name):
-        """Step an index variable; return False when it is exhausted (and then deleted)."""
+        """Step a list variable; False when it is exhausted (and then deleted), as LAMMPS's next."""
         var = self._get(name)
-        if var.style != "index":
-            raise ScriptError(f"next works only on index variables ({name} is {var.style})")
+        if var.style not in LISTS:
+            raise ScriptError(f"next works only on index, loop, universe, uloop, world and file variables "
+                              f"({name} is {var.style})")
         var.index += 1
         if var.index >= len(var.values):
             del self._vars[name]
             return False
         return True
 
+    def set_internal(self, name, value):
+        var = self._get(name)
+        if var.style != "internal":
+            raise ScriptError(f"variable {name} is {var.style}, not internal")
+        var.values[0] = float(value)
+
+    # ---- reading -----------------------------------------------------------------------------------
     def _get(self, name):
         try:
             return self._vars[name]
@@ -97,26 +147,35 @@ class Variables:
             raise ScriptError(f"undefined variable {name}") from None
 
     def text(self, name):
-        """The value as text, as ``${name}`` substitutes it; ``(expr)`` is an immediate expression."""
+        """The value as text, as ``${name}`` substitutes it; ``(formula)`` and ``(formula:format)``
+        are immediate formulas (``$(...)``)."""
         if name.startswith("("):
-            return _format(self.evaluate(name[1:-1]))
+            body = name[1:-1]
+            formula, _, fmt = body.rpartition(":") if _has_format(body) else (body, "", "")
+            value = self.evaluate(formula)
+            return _c_format(fmt, value) if fmt else f"{value:.20g}"
         var = self._get(name)
         if var.style == "equal":
-            return _format(self.value(name))
-        return var.values[var.index]
+            return f"{self.value(name):.15g}"
+        if var.style == "internal":
+            return f"{var.values[0]:.15g}"
+        if var.style == "format":
+            return _c_format(var.values[1], self.value(var.values[0]))
+        if var.style in ("atom", "vector"):
+            raise ScriptError(f"${{{name}}}: variable {name} is {var.style}-style, not a single value")
+        return str(var.values[var.index])
 
     def value(self, name):
-        """The value as a number, as ``v_name`` reads it."""
+        """The value as a number, as ``v_name`` reads it in an equal-style formula."""
         var = self._get(name)
         if var.style == "equal":
-            if name in self._evaluating:
-                cycle = " -> ".join(self._evaluating[self._evaluating.index(name):] + [name])
-                raise ScriptError(f"variable {name} refers to itself ({cycle})")
-            self._evaluating.append(name)
-            try:
-                return self.evaluate(var.values[0], name)
-            finally:
-                self._evaluating.pop()
+            return float(self._evaluate_var(var, per_atom=False))
+        if var.style == "internal":
+            return float(var.values[0])
+        if var.style == "format":
+            return self.value(var.values[0])
+        if var.style in ("atom", "vector"):
+            raise ScriptError(f"v_{name} is {var.style}-style: name one element, v_{name}[i]")
         text = var.values[var.index]
         try:
             return float(text)
@@ -124,67 +183,147 @@ class Variables:
             # LAMMPS reads an index or string variable in a formula as a number, never as a formula
             raise ScriptError(f"variable {name} is not a number (got {text})") from None
 
-    def _parse(self, expression, name=None):
-        source = expression.replace("^", "**").replace("&&", " and ").replace("||", " or ")
-        source = re.sub(r"!(?!=)", " not ", source)
+    def read(self, name, indices=(), per_atom=False, index_base=1):
+        """``v_NAME`` or ``v_NAME[i]`` as a formula reads it: a number, or per particle in an
+        atom-style formula. ``i`` counts from ``index_base`` (the dialect's)."""
+        var = self._get(name)
+        if not indices:
+            if var.style == "atom":
+                if not per_atom:
+                    raise ScriptError(f"v_{name} is atom-style: an equal-style formula reads one "
+                                      f"particle's value as v_{name}[ID]")
+                return self.atom_values(name)
+            if var.style == "vector":
+                raise ScriptError(f"v_{name} is vector-style: name one element, v_{name}[i]")
+            return self.value(name)
+        if len(indices) != 1:
+            raise ScriptError(f"v_{name}{''.join(f'[{i}]' for i in indices)}: a variable takes one index")
+        (i,) = indices
+        if var.style == "vector":
+            values = self.vector(name)
+            k = i - index_base
+            if not 0 <= k < len(values):
+                raise ScriptError(f"v_{name}[{i}] is out of range (vector {name} has {len(values)} "
+                                  f"values, from {index_base})")
+            return float(values[k])
+        if var.style == "atom":
+            context = self._context(per_atom=False)
+            values = self.atom_values(name)
+            sim = context.sim
+            rows = np.flatnonzero(sim.particles.tag[:sim.particles.nlocal] == i)
+            found = sim.comm.sum(len(rows))
+            if found != 1:
+                raise ScriptError(f"v_{name}[{i}]: there is no particle with id {i}")
+            return float(sim.comm.sum(float(values[rows[0]]) if len(rows) else 0.0))
+        raise ScriptError(f"v_{name}[{i}]: variable {name} is {var.style}-style, which has no elements")
+
+    def atom_values(self, name):
+        """An atom-style variable: one number per owned particle."""
+        var = self._get(name)
+        if var.style != "atom":
+            value = self.value(name)
+            context = self._context(per_atom=True)
+            return np.full(context.sim.particles.nlocal, value)
+        values = self._evaluate_var(var, per_atom=True)
+        n = self._context(per_atom=True).sim.particles.nlocal
+        return np.broadcast_to(np.asarray(values, dtype=np.float64), (n,)).copy()
+
+    def vector(self, name):
+        var = self._get(name)
+        if var.style != "vector":
+            raise ScriptError(f"variable {name} is {var.style}-style, not a vector")
+        if var.formula is None:
+            return var.values[0]
+        values = self._evaluate_var(var, per_atom=False, vector=True)
+        return np.atleast_1d(np.asarray(values, dtype=np.float64))
+
+    def evaluate(self, formula_text, name=None):
+        """An immediate formula (``$(...)``, ``print``): parsed and read now."""
         try:
-            return ast.parse(source.strip(), mode="eval").body
-        except SyntaxError:
+            formula = Expression(formula_text)
+        except FormulaError as exc:
             label = f"variable {name}: " if name else ""
-            raise ScriptError(f"{label}cannot parse expression {expression!r}") from None
+            raise ScriptError(f"{label}{exc.message}") from None
+        return float(self._finite(formula.evaluate(self._context(per_atom=False)), formula_text))
 
-    def evaluate(self, expression, name=None):
-        return float(self._eval(self._parse(expression, name), expression))
+    def _evaluate_var(self, var, per_atom, vector=False):
+        if var.name in self._evaluating:
+            cycle = " -> ".join(self._evaluating[self._evaluating.index(var.name):] + [var.name])
+            raise ScriptError(f"variable {var.name} refers to itself ({cycle})")
+        self._evaluating.append(var.name)
+        try:
+            context = self._context(per_atom=per_atom, vector=vector)
+            return self._finite(var.formula.evaluate(context), var.values[0], var.name)
+        finally:
+            self._evaluating.pop()
 
-    def _eval(self, node, expression):
-        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
-            try:
-                return float(node.value)
-            except OverflowError:
-                raise ScriptError(f"number too large in {expression!r}") from None
-        if isinstance(node, ast.BinOp) and type(node.op) in BINARY:
-            # doubles, as in LAMMPS: Python integers would make 10^10^10 a hang instead of an overflow
-            left = float(self._eval(node.left, expression))
-            right = float(self._eval(node.right, expression))
-            try:
-                return BINARY[type(node.op)](left, right)
-            except ZeroDivisionError:
-                raise ScriptError(f"division by zero in {expression!r}") from None
-            except OverflowError:
-                raise ScriptError(f"overflow in {expression!r}") from None
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd, ast.Not)):
-            value = self._eval(node.operand, expression)
-            return -value if isinstance(node.op, ast.USub) else (value if isinstance(node.op, ast.UAdd) else float(not value))
-        if isinstance(node, ast.Compare) and len(node.ops) == 1 and type(node.ops[0]) in COMPARE:
-            return float(COMPARE[type(node.ops[0])](self._eval(node.left, expression),
-                                                    self._eval(node.comparators[0], expression)))
-        if isinstance(node, ast.BoolOp):
-            values = [bool(self._eval(v, expression)) for v in node.values]
-            return float(all(values) if isinstance(node.op, ast.And) else any(values))
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in FUNCTIONS:
-            args = [self._eval(a, expression) for a in node.args]
-            try:
-                return FUNCTIONS[node.func.id](*args)
-            except (ValueError, TypeError, OverflowError) as exc:
-                raise ScriptError(f"{node.func.id}() in {expression!r}: {exc}") from None
-        if isinstance(node, ast.Name):
-            if node.id in CONSTANTS:
-                return CONSTANTS[node.id]
-            if node.id.startswith("v_"):
-                return self.value(node.id[2:])
-            return self._reader(node.id, ())
-        if isinstance(node, ast.Subscript):
-            indices = []
-            while isinstance(node, ast.Subscript):
-                indices.insert(0, int(self._eval(node.slice, expression)))
-                node = node.value
-            if isinstance(node, ast.Name):
-                return self._reader(node.id, tuple(indices))
-        raise ScriptError(f"unsupported expression {expression!r}")
+    @staticmethod
+    def _finite(value, formula_text, name=None):
+        if not np.all(np.isfinite(value)):
+            label = f"variable {name}: " if name else ""
+            raise ScriptError(f"{label}formula {formula_text!r} gives a non-finite value")
+        return value
 
 
-def _format(value):
-    """As LAMMPS substitutes a number: an integer when it is one, else 15 significant digits."""
-    if float(value).is_integer() and abs(value) < 1e15:
-        return str(int(value))
-    return f"{float(value):.15g}"
+def _one(name, style, args):
+    if len(args) != 1:
+        raise ScriptError(f"variable {name} {style} takes one value (got {' '.join(args)})")
+
+
+def _number(word, what):
+    try:
+        value = float(word)
+    except ValueError:
+        raise ScriptError(f"{what} must be a number (got {word})") from None
+    if not math.isfinite(value):
+        raise ScriptError(f"{what} must be finite (got {word})")
+    return value
+
+
+def _loop_values(name, args):
+    pad = bool(args) and args[-1] == "pad"
+    numbers = args[:-1] if pad else args
+    if len(numbers) not in (1, 2):
+        raise ScriptError(f"variable {name} loop takes N or N1 N2, then optionally pad (got {' '.join(args)})")
+    try:
+        bounds = [int(w) for w in numbers]
+    except ValueError:
+        raise ScriptError(f"variable {name} loop: bounds must be integers (got {' '.join(numbers)})") from None
+    first, last = (1, bounds[0]) if len(bounds) == 1 else bounds
+    if first < 0 or last < first or last - first >= 10_000_000:
+        raise ScriptError(f"variable {name} loop: needs 0 <= N1 <= N2, at most 10^7 values "
+                          f"(got {' '.join(numbers)})")
+    width = len(str(last)) if pad else 0
+    return [str(k).zfill(width) for k in range(first, last + 1)]
+
+
+def _file_values(name, args):
+    from .lexer import read_text
+    if len(args) != 1:
+        raise ScriptError(f"variable {name} file takes one file name")
+    lines = [line.split("#", 1)[0].strip() for line in read_text(args[0], "variable file").splitlines()]
+    values = [line for line in lines if line]
+    if not values:
+        raise ScriptError(f"variable {name} file: {args[0]} holds no values")
+    return values
+
+
+def _vector_literal(name, text):
+    if not text.endswith("]"):
+        raise ScriptError(f"variable {name} vector: expected [v1,v2,...] (got {text})")
+    body = text[1:-1].strip()
+    words = [w.strip() for w in body.split(",")] if body else []
+    return np.array([_number(w, f"variable {name} vector element") for w in words])
+
+
+def _has_format(body):
+    # $(formula:%fmt): a colon followed by a C format at the end
+    head, sep, tail = body.rpartition(":")
+    return bool(sep) and C_FORMAT.match(tail.strip()) is not None
+
+
+def _c_format(fmt, value):
+    fmt = fmt.strip()
+    if not C_FORMAT.match(fmt):
+        raise ScriptError(f"{fmt} is not a floating-point format such as %.6g")
+    return fmt % value

@@ -95,7 +95,8 @@ def capture(sim):
         properties.append({"name": name, "width": prop.width, "dtype": np.dtype(prop.dtype).name,
                            "default": _plain(prop.default)})
     if sim.lattice is not None:
-        arrays["lattice/spacing"], arrays["lattice/basis"] = sim.lattice
+        arrays["lattice/spacing"], arrays["lattice/basis"] = sim.lattice.spacing, sim.lattice.basis
+        arrays["lattice/cell"], arrays["lattice/offset"] = sim.lattice.cell, sim.lattice.offset
     states = _StateArrays(arrays)
     header = {
         "format": FORMAT, "version": VERSION, "written_by": f"pdps {__version__}",
@@ -103,6 +104,7 @@ def capture(sim):
         "periodicity": list(sim.periodicity), "periodic": list(sim.box.periodic),
         "ntypes": sim.ntypes, "particle_style": sim.particle_style,
         "lattice": sim.lattice is not None,
+        "lattice_style": sim.lattice.style if sim.lattice is not None else None,
         "particles": {"nlocal": n, "next_tag": int(p.next_tag), "properties": properties},
         "groups": {"bits": dict(sim.groups.bits),
                    "definitions": {name: _plain(d) for name, d in sim.groups.definitions.items()}},
@@ -440,6 +442,15 @@ def validate(header, arrays):
     limits.check_box(lo, hi)
     if dimension == 2 and header["periodicity"][2] != "p":
         raise ScriptError("a 2-d box needs a periodic z boundary")
+    if header["lattice"]:
+        _array(arrays, "lattice/spacing", (3,), kinds="f")
+        basis = arrays.get("lattice/basis")
+        if basis is None or basis.ndim != 2 or basis.shape[1:] != (3,):
+            raise ScriptError("array lattice/basis is missing or not n x 3")
+        _array(arrays, "lattice/basis", basis.shape, kinds="f")
+        for name, shape in (("lattice/cell", (3, 3)), ("lattice/offset", (3,))):
+            if name in arrays:
+                _array(arrays, name, shape, kinds="f")
     mass = _array(arrays, "mass", (ntypes + 1,), finite=False, kinds="f")
     set_mass = mass[1:][~np.isnan(mass[1:])]
     if not (np.isfinite(set_mass).all() and (set_mass > 0).all()):
@@ -494,8 +505,7 @@ def restore(sim, header, arrays):
     sim.ntypes = int(header["ntypes"])
     sim.type_mass = arrays["mass"].copy()
     sim.particle_style = header["particle_style"]
-    sim.lattice = ((arrays["lattice/spacing"].copy(), arrays["lattice/basis"].copy())
-                   if header["lattice"] else None)
+    sim.lattice = _lattice(header, arrays)
     sim.particles = _particles(header["particles"], arrays)
     groups = Groups()
     groups.bits = {name: int(bit) for name, bit in header["groups"]["bits"].items()}
@@ -535,6 +545,16 @@ def restore(sim, header, arrays):
     sim.pe = float(header["pe"])
     sim.virial = np.array(header["virial"], dtype=np.float64)
     sim.energy_step, sim.virial_step = header["energy_step"], header["virial_step"]
+
+
+def _lattice(header, arrays):
+    from .lattice import Lattice
+    if not header["lattice"]:
+        return None
+    spacing = arrays["lattice/spacing"].copy()
+    cell = arrays["lattice/cell"].copy() if "lattice/cell" in arrays else np.diag(spacing)
+    offset = arrays["lattice/offset"].copy() if "lattice/offset" in arrays else np.zeros(3)
+    return Lattice(spacing, arrays["lattice/basis"].copy(), cell, offset, str(header.get("lattice_style", "")))
 
 
 def _particles(record, arrays):

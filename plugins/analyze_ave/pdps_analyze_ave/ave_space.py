@@ -161,7 +161,7 @@ class AveSpace:
     def _scale(self, sim, d):
         if self.units == "box" or sim.lattice is None:
             return 1.0
-        return float(sim.lattice[0][d])
+        return float(sim.lattice.spacing[d])
 
     def _setup_bins(self, sim):
         """Bin boundaries, centres and volumes for the current box (called at each window start)."""

@@ -44,8 +44,9 @@ energy compute, any variable). The fix spelling cannot ask for them yet (the cor
 styles only): there, such values work on thermo steps only; use the analyze spelling.
 
 The last average is the style's output: ``scalar(sim)`` (one number), ``vector(sim)`` (one row or
-one column) and ``array(sim)`` (rows x columns); before the first average, 0 and empty arrays
-(LAMMPS gives 0). Scripts cannot read them yet: the core has no ``f_ID`` reference.
+one column) and ``array(sim)`` (rows x columns), read in scripts as ``f_ID``, ``f_ID[i]``,
+``f_ID[i][j]``; before the first average they read 0, as in LAMMPS (a vector of single values has
+its length from the start).
 
 Syntax::
 
@@ -177,9 +178,11 @@ class AveTime:
 
         def column(s):
             table = whole(s, "array")
-            if numbers[0] >= table.shape[1]:
-                raise ScriptError(f"{word} is out of range (compute {ident} has {table.shape[1]} columns)")
-            return table[:, numbers[0]:numbers[0] + 1]
+            k = s.dialect_index(numbers[0], word)
+            if k >= table.shape[1]:
+                raise ScriptError(f"{word} is out of range (compute {ident} has {table.shape[1]} columns, "
+                                  f"from {s.dialect.index_base})")
+            return table[:, k:k + 1]
 
         def value(read, many_rows, indexed=False):
             return Value(word, read, many_rows, indexed, lambda s: s.compute_needs(ident))
@@ -274,7 +277,9 @@ class AveTime:
 
     def vector(self, sim):
         if self.average is None:
-            return np.zeros(0)
+            # LAMMPS reads 0 before the first average; the length is known when every value is one number
+            single = all(not v.many_rows and not v.indexed_names for v in self.values)
+            return np.zeros(len(self.values) if single else 0)
         if self.average.shape[0] == 1:
             return self.average[0].copy()
         if self.average.shape[1] == 1:

@@ -38,7 +38,7 @@ def test_ke_is_the_unnormalised_sum_of_half_m_v_squared_and_per_atom_too():
     assert sim.compute_value("k") == pytest.approx(per_atom.sum(), rel=1e-13)
     assert sim.compute_value("kh") == pytest.approx(per_atom[heavy].sum(), rel=1e-13)
     # the thermo keyword ke is per particle in lj units: the compute is not
-    assert sim.compute_value("k") == pytest.approx(len(m) * sim._read_keyword("ke", ()), rel=1e-13)
+    assert sim.compute_value("k") == pytest.approx(len(m) * sim.variables.evaluate("ke"), rel=1e-13)
     np.testing.assert_allclose(sim.computes["k"].peratom(sim), per_atom, rtol=1e-14)
     np.testing.assert_allclose(sim.computes["kh"].peratom(sim), np.where(heavy, per_atom, 0.0), rtol=1e-14)
 

@@ -17,7 +17,7 @@ def chosen(sim, group, region=None):
     selected = sim.groups.select(sim, group)
     if region is not None:
         p = sim.particles
-        selected &= np.asarray(sim.region(region).inside(p.x[: p.nlocal]), dtype=bool)
+        selected &= np.asarray(sim.region(region).match(p.x[: p.nlocal]), dtype=bool)
     return selected
 
 

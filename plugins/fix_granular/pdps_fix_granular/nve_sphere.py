@@ -45,8 +45,8 @@ DISC_INERTIA = 0.5       # I = 1/2 m R^2
 
 
 @njit(cache=True)
-def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia):
-    half = 0.5 * dt
+def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -58,8 +58,8 @@ def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal,
 
 
 @njit(cache=True)
-def sphere_final(v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia):
-    half = 0.5 * dt
+def sphere_final(v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -95,9 +95,9 @@ class FixNVESphere(Fix):
     def initial_integrate(self, sim):
         p = sim.particles
         sphere_initial(p.x, p.v, p.f, p.omega, p.torque, p.radius, observables.masses(sim), p.mask,
-                       sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia)
+                       sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)
 
     def final_integrate(self, sim):
         p = sim.particles
         sphere_final(p.v, p.f, p.omega, p.torque, p.radius, observables.masses(sim), p.mask,
-                     sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia)
+                     sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)

@@ -25,8 +25,8 @@ from pdps_core.api import Fix, observables
 
 
 @njit(cache=True)
-def nve_initial(x, v, f, mass, mask, groupbit, nlocal, dt):
-    half = 0.5 * dt
+def nve_initial(x, v, f, mass, mask, groupbit, nlocal, dt, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -36,8 +36,8 @@ def nve_initial(x, v, f, mass, mask, groupbit, nlocal, dt):
 
 
 @njit(cache=True)
-def nve_final(v, f, mass, mask, groupbit, nlocal, dt):
-    half = 0.5 * dt
+def nve_final(v, f, mass, mask, groupbit, nlocal, dt, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -52,9 +52,9 @@ class FixNVE(Fix):
     def initial_integrate(self, sim):
         p = sim.particles
         nve_initial(p.x, p.v, p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                    p.nlocal, sim.dt)
+                    p.nlocal, sim.dt, sim.units.ftm2v)
 
     def final_integrate(self, sim):
         p = sim.particles
         nve_final(p.v, p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                  p.nlocal, sim.dt)
+                  p.nlocal, sim.dt, sim.units.ftm2v)

@@ -10,7 +10,7 @@ FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
 
 def wall_planes(sim, coords, units):
     """(axes, lower, positions) arrays of the walls ``{face: number or "EDGE"}``, in that order."""
-    spacing = sim.lattice[0] if (units == "lattice" and sim.lattice is not None) else np.ones(3)
+    spacing = sim.lattice.spacing if (units == "lattice" and sim.lattice is not None) else np.ones(3)
     axes, lower, positions = [], [], []
     for face, value in coords.items():
         axis = FACES.index(face) // 2

@@ -147,7 +147,7 @@ def test_tangential_velocity_alone_gives_no_force(tmp_path):
 def test_random_force_is_sigma_w_xi_over_sqrt_dt(tmp_path, units, T, gamma, dt, rc, step):
     """a=0, gamma>0, v=0: F_i = sigma w xi / sqrt(dt) r_hat with sigma^2 = 2 k_B T gamma and
     xi = pair_gaussian(seed, step, tag_i, tag_j), the same for (i, j) and (j, i)."""
-    boltz = {"lj": 1.0, "si": 1.380649e-23}[units]
+    boltz = {"lj": 1.0, "si": 1.3806504e-23}[units]
     r = 0.35 * rc
     e = unit([-0.2, 0.9, 0.4])
     centre = np.full(3, 5.0 * rc)

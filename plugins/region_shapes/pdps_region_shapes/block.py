@@ -2,9 +2,10 @@ r"""Region ``block``: an axis-aligned box, :math:`x_{lo} \le x \le x_{hi}` (and 
 
 Syntax::
 
-    region ID block xlo xhi ylo yhi zlo zhi
+    region ID block xlo xhi ylo yhi zlo zhi [side in|out] [units box|lattice]
 
-Each bound is a number (distance units), ``INF`` or ``-INF`` (unbounded on that side, whichever
+Each bound is a number (distance units, or lattice spacings with ``units lattice``: the LAMMPS
+dialect's default), ``INF`` or ``-INF`` (unbounded on that side, whichever
 sign is written, as in LAMMPS) or ``EDGE`` (the simulation box's
 face, which must exist then), as in LAMMPS. Points on the faces are inside.
 
@@ -36,7 +37,7 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Region, ScriptError, StyleArgs, param
+from pdps_core.api import Region, RegionArgs, ScriptError, param
 
 HUGE = 1e300
 
@@ -90,9 +91,9 @@ def block_contacts(x, lo, hi, reach):
 
 class RegionBlock(Region):
     name = "block"
-    usage = "region ID block xlo xhi ylo yhi zlo zhi"
+    usage = "region ID block xlo xhi ylo yhi zlo zhi [side in|out] [units box|lattice]"
 
-    class Args(StyleArgs):
+    class Args(RegionArgs):
         xlo: Bound = param(unit="distance")
         xhi: Bound = param(unit="distance")
         ylo: Bound = param(unit="distance")
@@ -126,6 +127,8 @@ class RegionBlock(Region):
                 if sim.box is None:
                     raise ScriptError(f"{name} EDGE needs the simulation box to exist")
                 value = (sim.box.lo if is_lo else sim.box.hi)[k // 2]
+            else:
+                value = float(value) * self.scale[k // 2]
             bounds.append(float(value))
         self.lo = np.array(bounds[0::2])
         self.hi = np.array(bounds[1::2])

@@ -1,0 +1,123 @@
+"""Dialects (docs/lammps.md): which one a script is read in and why, and the points where PDPS and
+LAMMPS differ: index bases, region units, the formula grammar (against LAMMPS's own answers,
+recorded by benchmarks/lammps_references/expressions.py into tests/data/lammps/)."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+
+DATA = Path(__file__).parent / "data" / "lammps"
+
+
+def first_line(pdps_cli, script, *extra):
+    done = pdps_cli(script, *extra, "-log", "none")
+    return done, done.stdout.splitlines()[0] if done.stdout else ""
+
+
+# ---- which dialect ----------------------------------------------------------------------------------
+@pytest.mark.parametrize("script, line", [
+    ("units lj\natom_style atomic\n", "read as LAMMPS: atom_style on line 2"),
+    ("# water\nunits lj\nparticle_style atomic\n", "read as PDPS: particle_style on line 3"),
+    ("units lj\nlattice fcc 0.8442\n", "read as LAMMPS: lattice fcc on line 2"),
+    ("units lj\nlattice spacing x 1 y 1 z 1\n", "read as PDPS: lattice spacing on line 2"),
+    ("units lj\nneigh_modify every 1\nregion box block 0 1 0 1 0 1\ncreate_box 1 box\n"
+     "create_particle 1 single 0.5 0.5 0.5\n", "read as PDPS: create_particle on line 5"),
+    ("# comment\n\ndialect lammps\nunits lj\n", "read as LAMMPS: dialect on line 3"),
+    ("units lj\n", "read as PDPS: no command names a dialect (PDPS is the default)"),
+])
+def test_the_first_line_names_the_dialect_and_why(pdps_cli, script, line):
+    done, first = first_line(pdps_cli, script)
+    assert done.returncode == 0, done.stderr
+    assert first == line
+
+
+def test_the_command_line_decides_over_the_lines(pdps_cli):
+    done, first = first_line(pdps_cli, "units lj\nparticle_style atomic\n", "--dialect", "lammps")
+    assert (done.returncode, first) == (0, "read as LAMMPS: as asked")
+
+
+@pytest.mark.parametrize("script, extra, message", [
+    ("units lj\ndialect lammps\n", (),
+     "ERROR: in.test:2: dialect: dialect must come before any other command (line 1 has units)"),
+    ("dialect fortran\n", (), "ERROR: in.test:1: dialect: dialect must be lammps or pdps (got fortran)"),
+    ("dialect pdps\nunits lj\n", ("--dialect", "lammps"),
+     "ERROR: in.test: dialect pdps (dialect on line 1) contradicts the dialect given (lammps)"),
+])
+def test_dialect_errors(pdps_cli, script, extra, message):
+    done = pdps_cli(script, *extra, "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [message]
+
+
+def test_python_commands_are_pdps_until_told(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None)
+    assert sim.dialect.name == "pdps"
+    sim.command("dialect lammps")
+    assert sim.dialect.name == "lammps"
+    sim.command("region box block 0 1 0 1 0 1\ncreate_box 1 box")
+    with pytest.raises(ScriptError, match="the dialect cannot change midway"):
+        sim.command("dialect pdps")
+    assert Simulation(screen=False, log=None, dialect="lammps").dialect.index_base == 1
+
+
+# ---- index bases --------------------------------------------------------------------------------------
+CENTROID = """region box block 0 4 0 4 0 4 units box
+create_box 1 box
+mass 1 1
+create_atoms 1 single 1 2 3 units box
+compute cen all centroid
+"""
+
+
+@pytest.mark.parametrize("dialect, index, value", [("lammps", 1, 1.0), ("lammps", 3, 3.0),
+                                                    ("pdps", 0, 1.0), ("pdps", 2, 3.0)])
+def test_vector_indices_count_from_the_dialects_base(make_sim, dialect, index, value):
+    sim = Simulation(screen=False, log=None, dialect=dialect)
+    sim.command(CENTROID + f"variable c equal c_cen[{index}]\nrun 0")
+    assert sim.variables.value("c") == value
+
+
+def test_index_0_is_an_error_in_lammps(make_sim):
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(CENTROID + "run 0")
+    with pytest.raises(ScriptError) as caught:
+        sim.compute_value("cen", (0,))
+    assert caught.value.message == "c_cen[0]: indices count from 1 in the LAMMPS dialect (got 0)"
+
+
+# ---- region units ------------------------------------------------------------------------------------
+LATTICES = [line.split("\t") for line in (DATA / "lattices.txt").read_text().splitlines()]
+
+
+@pytest.mark.parametrize("scene, atoms, lx, ly, lz", LATTICES, ids=[row[0] for row in LATTICES])
+def test_lattices_through_regions_as_lammps_fills_them(scene, atoms, lx, ly, lz):
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("units lj\n" + scene.replace("|", "\n") + "\ncreate_box 1 box\ncreate_atoms 1 box\nmass 1 1")
+    count = sim.variables.evaluate("atoms")
+    if "region inner" in scene:
+        sim.command("group inner region inner")
+        count = sim.variables.evaluate("count(inner)")
+    assert count == int(atoms)
+    np.testing.assert_allclose(sim.box.length, [float(lx), float(ly), float(lz)], rtol=1e-15)
+
+
+def test_pdps_regions_default_to_box_units(make_sim):
+    sim = Simulation(screen=False, log=None, dialect="pdps")
+    sim.command("lattice spacing x 0.5 y 0.5 z 1\nregion box block 0 10 0 10 0 10\ncreate_box 1 box\n"
+                "create_particle 1 region box")
+    assert sim.nlocal == 4000 and np.allclose(sim.box.length, 10.0)
+
+
+# ---- formulas ------------------------------------------------------------------------------------------
+FORMULAS = [line.split("\t") for line in (DATA / "expressions.txt").read_text().splitlines()]
+
+
+@pytest.mark.parametrize("formula, value", FORMULAS, ids=[row[0] for row in FORMULAS])
+@pytest.mark.parametrize("dialect", ["lammps", "pdps"])
+def test_formulas_give_what_lammps_prints(formula, value, dialect):
+    sim = Simulation(screen=False, log=None, dialect=dialect)
+    assert sim.variables.evaluate(formula) == float(value)
