@@ -22,6 +22,7 @@ from .commands import COMMANDS
 from .errors import ScriptError
 from .neighbor.neighbor import Neighbor
 from .output.output import Output
+from .run.minimize import MinSettings
 from .run.timers import Timers
 from .script.context import FormulaContext
 from .script.dialect import DIALECTS, detect, dialect_named
@@ -105,6 +106,8 @@ class Simulation:
         self.error_location = None
         self._integrator = None
         self.restart_output = None     # the `restart N FILE` schedule (state/restart.py)
+        self.min_settings = MinSettings()
+        self.minimize_result = None
         self.restored_states = {}      # (kind, id) -> (style, state, instance) from read_restart
 
     # ---- names a style reads ----------------------------------------------------------------------
@@ -250,6 +253,10 @@ class Simulation:
         name, args = words[0], list(words[1:])
         entry = COMMANDS.get(name)
         if entry is None:
+            from .script.unsupported import unsupported
+            refused = unsupported(name)
+            if refused is not None:
+                raise ScriptError(refused, command=name)
             import difflib
             close = difflib.get_close_matches(name, COMMANDS, n=1)
             hint = f"; did you mean {close[0]}?" if close else ""
@@ -542,6 +549,24 @@ class Simulation:
             self.output.flush()
         self._report(nsteps, loop, time.perf_counter() - t_start)
         self.output.flush()
+
+    def minimize(self, etol, ftol, maxiter, maxeval):
+        """LAMMPS's minimize (pdps_core/run/minimize.py); the result is kept in ``minimize_result``."""
+        from .run.minimize import Minimizer
+        self.require_box("minimize")
+        self._check_masses()
+        self.run_first_step, self.run_last_step = self.step, self.step + maxiter
+        self.ramp_bounds = (self.step, self.step + maxiter)
+        self.run_wall_start = None
+        self.output.thermo.last_clock = None
+        minimizer = Minimizer(self, self.min_settings)
+        self._integrator = minimizer
+        try:
+            self.minimize_result = minimizer.minimize(etol, ftol, maxiter, maxeval)
+        finally:
+            self.output.flush()
+        self.run_last_step = self.step
+        return self.minimize_result
 
     def _check_masses(self):
         p = self.particles

@@ -121,3 +121,16 @@ FORMULAS = [line.split("\t") for line in (DATA / "expressions.txt").read_text().
 def test_formulas_give_what_lammps_prints(formula, value, dialect):
     sim = Simulation(screen=False, log=None, dialect=dialect)
     assert sim.variables.evaluate(formula) == float(value)
+
+
+# ---- what pdps does not run -------------------------------------------------------------------------
+@pytest.mark.parametrize("line, message", [
+    ("kspace_style pppm 1e-4", "kspace_style is a LAMMPS command pdps does not support; instead: pdps has no "
+                               "long-range electrostatics (docs/lammps.md)"),
+    ("write_dump all atom x.dump", "write_dump is a LAMMPS command pdps does not support; instead: dump with "
+                                   "run 0 (docs/lammps.md)"),
+])
+def test_lammps_commands_pdps_does_not_run_name_an_alternative(pdps_cli, line, message):
+    done = pdps_cli(f"units lj\natom_style atomic\n{line}\n", "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [f"ERROR: in.test:3: {line.split()[0]}: {message}"]

@@ -7,7 +7,7 @@ from ..errors import ScriptError
 from ..state import limits
 from ..state.units import UNITS
 from . import command
-from .words import choice, count, integer, number, yes_no
+from .words import choice, count, integer, number, type_range, yes_no
 
 # LAMMPS's default skins: 0.3 sigma in lj units, 1 mm in SI.
 
@@ -68,12 +68,17 @@ def neighbor(sim, args):
 
 @command("neigh_modify", "neighbor_modify")
 def neigh_modify(sim, args):
-    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N]"
-    if not args or len(args) % 2:
+    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | none]"
+    if not args:
+        raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
+    args = _exclusions(sim, list(args), usage)
+    if not args:
+        return
+    if len(args) % 2:
         raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
     values = {}
     for key, value in zip(args[::2], args[1::2]):
-        choice(key, "neigh_modify keyword", ("every", "delay", "check", "one"))
+        choice(key, "neigh_modify keyword", ("every", "delay", "check", "one", "exclude"))
         if key == "check":
             values[key] = yes_no(value, "check")
         elif key == "one":
@@ -81,6 +86,38 @@ def neigh_modify(sim, args):
         else:
             values[key] = integer(value, key, low=1 if key == "every" else 0)
     sim.neighbors.modify(**values)
+
+
+def _exclusions(sim, args, usage):
+    """Take ``exclude ...`` clauses out of neigh_modify's words (LAMMPS's pair exclusions)."""
+    rest, k = [], 0
+    neighbors = sim.neighbors
+    while k < len(args):
+        if args[k] != "exclude":
+            rest.append(args[k])
+            k += 1
+            continue
+        kind = args[k + 1] if k + 1 < len(args) else None
+        if kind == "none":
+            neighbors.excluded_type_pairs, neighbors.excluded_group_pairs = [], []
+            k += 2
+        elif kind == "type":
+            if len(args) < k + 4:
+                raise ScriptError(f"exclude type needs I J; usage: {usage}")
+            sim.require_box("neigh_modify exclude type")
+            neighbors.excluded_type_pairs.append((type_range(args[k + 2], sim.ntypes),
+                                                  type_range(args[k + 3], sim.ntypes)))
+            k += 4
+        elif kind == "group":
+            if len(args) < k + 4:
+                raise ScriptError(f"exclude group needs G1 G2; usage: {usage}")
+            neighbors.excluded_group_pairs.append((sim.require_group(args[k + 2]), sim.require_group(args[k + 3])))
+            k += 4
+        elif kind in ("molecule/intra", "molecule/inter"):
+            raise ScriptError(f"exclude {kind} needs molecule ids, which pdps does not read yet")
+        else:
+            raise ScriptError(f"exclude takes type I J, group G1 G2 or none (got {kind}); usage: {usage}")
+    return rest
 
 
 @command("particle_style", "atom_style")
@@ -120,17 +157,30 @@ def integrate(sim, args):
 
 @command("comm_modify")
 def comm_modify(sim, args):
-    """LAMMPS's ``comm_modify vel yes``: ghosts carry velocities even if no style asks for them."""
-    if len(args) != 2 or args[0] != "vel":
-        raise ScriptError("only 'comm_modify vel yes|no' is supported")
-    sim.ghost_velocity = yes_no(args[1], "vel")
+    """LAMMPS's ``comm_modify [mode single] [cutoff D] [vel yes|no]``: ghosts carry velocities even if
+    no style asks for them (vel yes); ghosts reach at least D beyond the box (cutoff D)."""
+    usage = "comm_modify [mode single] [cutoff D] [vel yes|no]"
+    if not args or len(args) % 2:
+        raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
+    for key, value in zip(args[::2], args[1::2]):
+        choice(key, "comm_modify keyword", ("mode", "cutoff", "vel", "cutoff/multi", "group"))
+        if key == "mode":
+            choice(value, "mode", ("single",))
+        elif key == "cutoff":
+            sim.neighbors.comm_cutoff = number(value, "cutoff", low=0.0, high=limits.MAX_COORDINATE)
+        elif key == "vel":
+            sim.ghost_velocity = yes_no(value, "vel")
+        else:
+            raise ScriptError(f"comm_modify {key} is not supported (supported: mode single, cutoff, vel)")
 
 
 @command("newton")
 def newton(sim, args):
-    count(args, 1, "newton on", at_most=2)
-    if any(word != "on" for word in args):
-        raise ScriptError("only newton on is supported (pairs with ghosts are summed back)")
+    """Accepted: pdps computes each pair with ghosts once and sums ghost forces back (LAMMPS's newton
+    on); with off LAMMPS computes such pairs on both ranks instead, and the results are the same."""
+    count(args, 1, "newton on|off [on|off]", at_most=2)
+    for word in args:
+        choice(word, "newton", ("on", "off"))
 
 
 @command("atom_modify")

@@ -38,9 +38,13 @@ def bin_particles(x, nall, lo, binsize, nbins):
 
 
 @njit(cache=True)
-def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order, nbins, half, capacity):
+def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order, nbins, half, capacity,
+               excluded_types, excluded_groups):
     """Neighbors of each owned particle of the group (``mask & groupbit``) within
-    cutneighsq[type_i, type_j]; particles outside the group have none. -1 total on overflow."""
+    cutneighsq[type_i, type_j]; particles outside the group have none. Pairs of excluded types
+    (``excluded_types[ti, tj]``) or of excluded groups (rows of two mask bits, either order) are left
+    out (neigh_modify exclude). -1 total on overflow."""
+    screen = excluded_groups.shape[0] > 0
     offsets = np.zeros(nlocal + 1, dtype=np.int64)
     neighbors = np.empty(capacity, dtype=np.int64)
     k = 0
@@ -86,6 +90,17 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order,
                         dely = yi - x[j, 1]
                         delz = zi - x[j, 2]
                         if delx * delx + dely * dely + delz * delz < cutneighsq[ti, type_[j]]:
+                            if excluded_types[ti, type_[j]]:
+                                continue
+                            if screen:
+                                left_out = False
+                                for g in range(excluded_groups.shape[0]):
+                                    a, b = excluded_groups[g, 0], excluded_groups[g, 1]
+                                    if ((mask[i] & a) and (mask[j] & b)) or ((mask[i] & b) and (mask[j] & a)):
+                                        left_out = True
+                                        break
+                                if left_out:
+                                    continue
                             if k >= capacity:
                                 return offsets, neighbors, -1
                             neighbors[k] = j

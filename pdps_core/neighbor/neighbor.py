@@ -76,6 +76,9 @@ class Neighbor:
         self.sort_every = 1000
         self.last_sort = None
         self.one = ONE_DEFAULT
+        self.comm_cutoff = 0.0          # comm_modify cutoff
+        self.excluded_type_pairs = []   # neigh_modify exclude type I J
+        self.excluded_group_pairs = []  # neigh_modify exclude group G1 G2 (group names)
         self._capacity = 0
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
@@ -116,10 +119,16 @@ class Neighbor:
         return bool(self.requests)
 
     def cutghost(self):
-        """How far beyond the box ghosts are needed: the largest cutoff plus the skin."""
+        """The largest list cutoff plus the skin (0 without lists)."""
         if not self.requests:
             return 0.0
         return max(float(r.cutoff.max()) for r in self.requests) + self.skin
+
+    def ghost_cutoff(self):
+        """How far beyond the box ghosts are made: cutghost, or LAMMPS's ``comm_modify cutoff`` when
+        that is larger (and there are lists to use them)."""
+        reach = self.cutghost()
+        return max(reach, self.comm_cutoff) if reach > 0 else 0.0
 
     # ---- rebuild decision ---------------------------------------------------------------------
     def decide(self, particles, comm):
@@ -220,8 +229,9 @@ class Neighbor:
         cutmax = self.cutghost()
         if cutmax <= 0:
             raise ScriptError("neighbor list cutoff must be > 0")
-        lo = box.lo - cutmax
-        extent = box.length + 2 * cutmax
+        reach = self.ghost_cutoff()
+        lo = box.lo - reach
+        extent = box.length + 2 * reach
         nbins = limits.bin_grid(extent, cutmax)
         if box.dimension == 2:
             nbins[2] = 1
@@ -230,8 +240,21 @@ class Neighbor:
         cell, start, order = bin_particles(p.x, p.nall, lo, binsize, nbins)
         return cell, start, order, nbins
 
+    def exclusions(self, ntypes, groups):
+        """The tables build_list reads, from neigh_modify exclude (called at a run's start)."""
+        table = np.zeros((ntypes + 1, ntypes + 1), dtype=np.bool_)
+        for (ilo, ihi), (jlo, jhi) in self.excluded_type_pairs:
+            table[ilo:ihi + 1, jlo:jhi + 1] = True
+            table[jlo:jhi + 1, ilo:ihi + 1] = True
+        self._excluded_types = table
+        self._excluded_groups = np.array([[groups.bit(a), groups.bit(b)] for a, b in self.excluded_group_pairs],
+                                         dtype=np.uint32).reshape(-1, 2)
+
     def _fill(self, nlist, p, binned, skin):
         cell, start, order, nbins = binned
+        if getattr(self, "_excluded_types", None) is None or self._excluded_types.shape[0] != nlist.cutoff.shape[0]:
+            self._excluded_types = np.zeros(nlist.cutoff.shape, dtype=np.bool_)
+            self._excluded_groups = np.zeros((0, 2), dtype=np.uint32)
         cutneighsq = (nlist.cutoff + skin) ** 2
         if cutneighsq.shape[0] != self.requests[0].cutoff.shape[0]:
             raise ScriptError("neighbor requests disagree on the number of types")
@@ -242,7 +265,7 @@ class Neighbor:
         while True:
             offsets, neighbors, total = build_list(
                 p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, cell, start,
-                order, nbins, nlist.half_list, capacity)
+                order, nbins, nlist.half_list, capacity, self._excluded_types, self._excluded_groups)
             if total >= 0:
                 break
             if capacity >= most:

@@ -84,6 +84,7 @@ class Verlet:
         self.forward = tuple(forward)
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
+        sim.neighbor.exclusions(sim.ntypes, sim.groups)
         sim.neighbor.overrun = 0.0
         sim.pair_list = None
         if sim.pair is not None:
@@ -101,8 +102,8 @@ class Verlet:
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
 
-        limits.check_images(sim.box, sim.neighbor.cutghost())
-        limits.check_ghosts(sim.box, sim.neighbor.cutghost(), int(sim.comm.sum(particles.nlocal)))
+        limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
+        limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:
@@ -123,7 +124,7 @@ class Verlet:
         t0 = time.perf_counter()
         if sim.neighbors.sort_due(sim.step):
             particles.keep(sim.neighbors.spatial_order(particles, sim.box, sim.step))
-        sim.comm.borders(particles, sim.box, sim.neighbor.cutghost())
+        sim.comm.borders(particles, sim.box, sim.neighbor.ghost_cutoff())
         sim.timers.stage["Comm"] += time.perf_counter() - t0
         self._call("pre_neighbor")
         t1 = time.perf_counter()
@@ -139,7 +140,7 @@ class Verlet:
         t0 = time.perf_counter()
         current = particles.x[:n].copy()
         particles.x[:n] = sim.neighbor.xhold
-        sim.comm.borders(particles, sim.box, sim.neighbor.cutghost())
+        sim.comm.borders(particles, sim.box, sim.neighbor.ghost_cutoff())
         sim.neighbor.build(particles, sim.box, resume=True)
         particles.x[:n] = current
         sim.comm.forward_comm(particles, self.forward)

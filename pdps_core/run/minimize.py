@@ -1,0 +1,272 @@
+"""Energy minimisation: LAMMPS's ``minimize etol ftol maxiter maxeval`` with ``min_style cg|sd|fire``
+and ``min_modify dmax D line quadratic|backtrack``.
+
+cg (the default) is LAMMPS's Polak-Ribiere conjugate gradient: each iteration a line search along
+h, then h = f + beta h with beta = max(0, (f.f - f.g) / g.g) (restarted when not downhill and every
+3N iterations); sd searches along the force itself. The line search is LAMMPS's: the step alpha
+starts at min(1, dmax / max|h|) (no coordinate moves more than dmax), is halved until the energy
+drops by at least 0.4 alpha f.h (backtrack), and with ``line quadratic`` (the default) the minimum of
+the quadratic through the last two points is taken once the energy is within 10 % of quadratic.
+Energies (and f.h) are per particle when thermo normalises (lj units), as in LAMMPS.
+
+fire is FIRE 2.0 (Guenole et al., Comput. Mater. Sci. 175, 109584 (2020)) with LAMMPS's defaults:
+implicit Euler steps from the timestep, dt grown by 1.1 (to 10 dt) after 20 downhill steps and halved
+(to 0.02 dt) with a half step back and zeroed velocities when uphill, mixing alpha from 0.25 shrinking
+by 0.99, and no atom moving more than dmax in a step.
+
+Stopping: |E_k - E_k-1| < etol (|E_k| + |E_k-1| + 1e-8) / 2, |f| < ftol (two-norm over all degrees
+of freedom), maxiter iterations, maxeval force evaluations, or the line search finding no lower
+energy. Each iteration is a timestep (the step counter advances); fixes act only through their
+energy-free forces: integrators and thermostats are not called, as LAMMPS calls only fixes with
+a min_post_force.
+"""
+
+import math
+import time
+
+import numpy as np
+
+from ..errors import ScriptError
+from .verlet import Verlet
+
+ALPHA_MAX = 1.0
+ALPHA_REDUCE = 0.5
+BACKTRACK_SLOPE = 0.4
+QUADRATIC_TOL = 0.1
+EMACH = 1.0e-8
+EPS_QUAD = 1.0e-28
+EPS_ENERGY = 1.0e-8
+
+STOPPED = {"etol": "energy tolerance", "ftol": "force tolerance", "maxiter": "max iterations",
+           "maxeval": "max force evaluations", "downhill": "search direction is not downhill",
+           "zeroalpha": "linesearch alpha is zero", "zeroforce": "forces are zero",
+           "zeroquad": "quadratic factors are zero"}
+
+
+class MinSettings:
+    """min_style and min_modify: what ``minimize`` uses."""
+
+    def __init__(self):
+        self.style = "cg"
+        self.dmax = 0.1
+        self.line = "quadratic"
+
+
+class Minimizer(Verlet):
+    def __init__(self, sim, settings):
+        super().__init__(sim)
+        self.settings = settings
+        self.neval = 0
+
+    # ---- energy and forces ----------------------------------------------------------------------
+    def _norm(self):
+        sim = self.sim
+        norm = sim.output.thermo.norm
+        if norm is None:
+            norm = sim.units.name == "lj"
+        return float(max(sim.comm.sum(sim.particles.nlocal), 1)) if norm else 1.0
+
+    def energy_force(self):
+        """Forces and the energy (per particle where thermo normalises) at the current positions."""
+        sim, particles = self.sim, self.sim.particles
+        if sim.neighbor.decide(particles, sim.comm):
+            sim.comm.exchange(particles, sim.box, sim.step)
+            self._reneighbor()
+        else:
+            sim.comm.forward_comm(particles, self.forward)
+        self._forces(eflag=True, vflag=True)
+        self._fix_contributions()
+        self._check_finite()
+        self.neval += 1
+        return float(sim.comm.sum(sim.pe)) / self._norm()
+
+    def _dot(self, a, b):
+        return float(self.sim.comm.sum(float(np.einsum("ij,ij->", a, b))))
+
+    # ---- the line search ---------------------------------------------------------------------------
+    def _step(self, alpha):
+        p = self.sim.particles
+        n = p.nlocal
+        p.x[:n] = p.arrays["minimize_x0"][:n] + alpha * p.arrays["minimize_h"][:n]
+        return self.energy_force()
+
+    def linemin(self, eoriginal):
+        """(energy, status): LAMMPS's linemin_quadratic or linemin_backtrack along h."""
+        sim = self.sim
+        p = sim.particles
+        norm = self._norm()
+        # particles' arrays are new after every rebuild of the ghosts: read them after each step
+        fdothall = self._dot(p.f[:p.nlocal], self._vector("minimize_h")) / norm
+        if fdothall <= 0.0:
+            return eoriginal, "downhill"
+        h = self._vector("minimize_h")
+        hmaxall = float(sim.comm.max(float(np.abs(h).max()) if len(h) else 0.0))
+        if hmaxall == 0.0:
+            return eoriginal, "zeroforce"
+        alphamax = min(ALPHA_MAX, self.settings.dmax / hmaxall)
+        self._vector("minimize_x0")[:] = p.x[:p.nlocal]
+        alpha, alphaprev, engprev, fhprev = alphamax, 0.0, eoriginal, fdothall
+        while True:
+            ecurrent = self._step(alpha)
+            if self.settings.line == "quadratic":
+                fh = self._dot(p.f[:p.nlocal], self._vector("minimize_h")) / norm
+                delfh = fh - fhprev
+                if abs(fh) < EPS_QUAD or abs(delfh) < EPS_QUAD:
+                    return self._step(0.0), "zeroquad"
+                relerr = abs(1.0 - (0.5 * (alpha - alphaprev) * (fh + fhprev) + ecurrent) / engprev)
+                alpha0 = alpha - (alpha - alphaprev) * fh / delfh
+                if relerr <= QUADRATIC_TOL and 0.0 < alpha0 < alphamax:
+                    ecurrent = self._step(alpha0)
+                    if ecurrent - eoriginal < EMACH:
+                        return ecurrent, None
+                fhprev, engprev = fh, ecurrent
+            de_ideal = -BACKTRACK_SLOPE * alpha * fdothall
+            if ecurrent - eoriginal <= de_ideal:
+                return ecurrent, None
+            alphaprev = alpha
+            alpha *= ALPHA_REDUCE
+            if alpha <= 0.0 or de_ideal >= -EMACH:
+                return self._step(0.0), "zeroalpha"
+
+    # ---- the iterations ------------------------------------------------------------------------------
+    def minimize(self, etol, ftol, maxiter, maxeval):
+        sim = self.sim
+        for name in ("minimize_g", "minimize_h", "minimize_x0", "minimize_v"):
+            sim.particles.request(name, 3)
+        self.setup()
+        n = sim.particles.nlocal
+        ecurrent = float(sim.comm.sum(sim.pe)) / self._norm()
+        self.neval = 0
+        sim.output.setup(sim.step, sim.step + maxiter)
+        initial = previous = ecurrent
+        self.energies = [ecurrent]
+        t0 = time.perf_counter()
+        if self.settings.style == "fire":
+            stop, iterations, ecurrent, previous = self._fire(etol, ftol, maxiter, maxeval, ecurrent)
+        else:
+            stop, iterations, ecurrent, previous = self._cg(etol, ftol, maxiter, maxeval, ecurrent)
+        loop = time.perf_counter() - t0
+        sim.energy_step = sim.step
+        sim.output.write(sim.step, sim.step)
+        sim.neighbor.mark_current(sim.particles)
+        fnorm = math.sqrt(self._dot(sim.particles.f[:sim.particles.nlocal], sim.particles.f[:sim.particles.nlocal]))
+        fmax = float(sim.comm.max(float(np.abs(sim.particles.f[:sim.particles.nlocal]).max()) if n else 0.0))
+        sim.output.message(f"Loop time of {loop:g} on {sim.comm.nprocs} procs for {iterations} steps with "
+                           f"{int(sim.comm.sum(sim.particles.nlocal))} particles")
+        sim.output.message("Minimization stats:")
+        sim.output.message(f"  Stopping criterion = {STOPPED[stop]}")
+        sim.output.message(f"  Energy initial, next-to-last, final = \n    {initial:18.15g} {previous:18.15g} "
+                           f"{ecurrent:18.15g}")
+        sim.output.message(f"  Iterations, force evaluations = {iterations} {self.neval}")
+        sim.output.message(f"  Force two-norm, max component = {fnorm:g} {fmax:g}")
+        self.result = {"stop": stop, "initial": initial, "final": ecurrent, "iterations": iterations,
+                       "evaluations": self.neval, "fnorm": fnorm, "energies": self.energies}
+        return self.result
+
+    def _converged(self, ecurrent, eprevious, etol):
+        return abs(ecurrent - eprevious) < etol * 0.5 * (abs(ecurrent) + abs(eprevious) + EPS_ENERGY)
+
+    def _vector(self, name):
+        """A per-atom vector of the search (g, h, x0): it travels with its particles when they
+        migrate or are re-sorted during a line search, as LAMMPS's fix minimize keeps them."""
+        p = self.sim.particles
+        return p.arrays[name][:p.nlocal]
+
+    def _cg(self, etol, ftol, maxiter, maxeval, ecurrent):
+        sim = self.sim
+        p = sim.particles
+        nlimit = max(1, 3 * int(sim.comm.sum(p.nlocal)))
+        self._vector("minimize_g")[:] = p.f[:p.nlocal]
+        self._vector("minimize_h")[:] = p.f[:p.nlocal]
+        gg = self._dot(self._vector("minimize_g"), self._vector("minimize_g"))
+        eprevious = ecurrent
+        for iteration in range(1, maxiter + 1):
+            sim.step += 1
+            eprevious = ecurrent
+            ecurrent, fail = self.linemin(ecurrent)
+            self.energies.append(ecurrent)
+            if fail is not None:
+                return fail, iteration, ecurrent, eprevious
+            if self.neval >= maxeval:
+                return "maxeval", iteration, ecurrent, eprevious
+            if self._converged(ecurrent, eprevious, etol):
+                return "etol", iteration, ecurrent, eprevious
+            f, g, h = p.f[:p.nlocal], self._vector("minimize_g"), self._vector("minimize_h")
+            ff, fg = self._dot(f, f), self._dot(f, g)
+            if ff < ftol * ftol:
+                return "ftol", iteration, ecurrent, eprevious
+            beta = 0.0 if self.settings.style == "sd" else max(0.0, (ff - fg) / gg)
+            if (iteration + 1) % nlimit == 0:
+                beta = 0.0
+            gg = ff
+            g[:] = f
+            h[:] = g + beta * h
+            if self._dot(g, h) <= 0.0:
+                h[:] = g
+            self._thermo()
+        return "maxiter", maxiter, ecurrent, eprevious
+
+    def _thermo(self):
+        sim = self.sim
+        every = sim.output.thermo.every
+        if every and sim.step % every == 0:
+            sim.output.write(sim.step, sim.run_last_step)
+
+    def _fire(self, etol, ftol, maxiter, maxeval, ecurrent):
+        sim = self.sim
+        p = sim.particles
+        dt0 = sim.dt
+        dt, dtmax, dtmin = dt0, 10.0 * dt0, 0.02 * dt0
+        alpha, alpha0 = 0.25, 0.25
+        delaystep, last_negative = 20, sim.step
+        start = sim.step
+        self._vector("minimize_v")[:] = 0.0
+        eprevious = ecurrent
+        from ..state import observables
+        for iteration in range(1, maxiter + 1):
+            sim.step += 1
+            n = p.nlocal
+            v = self._vector("minimize_v")
+            f = p.f[:n]
+            vdotf = self._dot(v, f)
+            if vdotf > 0.0:
+                vdotv, fdotf = self._dot(v, v), self._dot(f, f)
+                scale1 = 1.0 - alpha
+                scale2 = alpha * math.sqrt(vdotv / fdotf) if fdotf > 1e-20 else 0.0
+                if sim.step - last_negative > delaystep:
+                    dt = min(dt * 1.1, dtmax)
+                    alpha *= 0.99
+            else:
+                last_negative = sim.step
+                if sim.step - start >= delaystep:
+                    alpha = alpha0
+                    if dt * 0.5 >= dtmin:
+                        dt *= 0.5
+                p.x[:n] -= 0.5 * dt * v
+                v[:] = 0.0
+            vmax = float(sim.comm.max(float(np.abs(v).max()) if n else 0.0))
+            dtv = min(dt, self.settings.dmax / vmax) if vmax > 0 else dt
+            mass = observables.masses(sim, np.ones(n, dtype=bool))
+            v += (dtv * sim.units.ftm2v / mass)[:, None] * f
+            if vdotf > 0.0:
+                v[:] = scale1 * v + scale2 * f
+            p.x[:n] += dtv * v
+            eprevious = ecurrent
+            ecurrent = self.energy_force()
+            self.energies.append(ecurrent)
+            if self.neval >= maxeval:
+                return "maxeval", iteration, ecurrent, eprevious
+            if etol > 0.0 and sim.step - last_negative > delaystep and self._converged(ecurrent, eprevious, etol):
+                return "etol", iteration, ecurrent, eprevious
+            f = p.f[:p.nlocal]
+            if ftol > 0.0 and self._dot(f, f) < ftol * ftol:
+                return "ftol", iteration, ecurrent, eprevious
+            self._thermo()
+        return "maxiter", maxiter, ecurrent, eprevious
+
+
+def check_tolerances(etol, ftol, maxiter, maxeval):
+    if etol < 0 or ftol < 0:
+        raise ScriptError("etol and ftol must be >= 0")
+    if maxiter < 1 or maxeval < 1:
+        raise ScriptError("maxiter and maxeval must be >= 1")

@@ -1,0 +1,37 @@
+"""LAMMPS commands pdps does not run, each with what to use instead: a LAMMPS script that reaches
+one stops there with one line saying so, rather than "unknown command"."""
+
+ALTERNATIVES = {
+    "angle_coeff": "pdps has no angle styles", "angle_style": "pdps has no angle styles",
+    "balance": "the processor grid is chosen at the start (processors)",
+    "bond_coeff": "pdps has no bond styles", "bond_style": "pdps has no bond styles",
+    "box": "nothing: the command is obsolete in LAMMPS too",
+    "change_box": "define the box you need with region and create_box, or read_data",
+    "comm_style": "comm_modify cutoff", "compute_modify": "the compute's own keywords",
+    "create_bonds": "pdps has no bonds", "delete_bonds": "pdps has no bonds",
+    "dielectric": "pdps has no charges", "dihedral_coeff": "pdps has no dihedral styles",
+    "dihedral_style": "pdps has no dihedral styles", "dynamical_matrix": "none in pdps",
+    "fitpod": "none in pdps", "group2ndx": "dump custom with id and the group",
+    "improper_coeff": "pdps has no improper styles", "improper_style": "pdps has no improper styles",
+    "info": "pdps styles -v (installed styles), the log (settings)", "kim": "none in pdps",
+    "kspace_modify": "pdps has no long-range electrostatics", "kspace_style": "pdps has no long-range electrostatics",
+    "labelmap": "numeric types", "mdi": "none in pdps", "molecule": "read_data with molecule ids",
+    "neb": "none in pdps", "package": "nothing: pdps compiles its kernels itself (numba)",
+    "pair_write": "pdps doc pair STYLE (the formula) or a compute on two particles",
+    "partition": "one partition per run", "plugin": "pdps plugins are Python distributions (docs/plugin-guide.md)",
+    "prd": "none in pdps", "python": "drive pdps from Python: pdps_core.api.Simulation",
+    "quit": "end the script (or jump to a label past the rest)", "read_dump": "read_data or read_restart",
+    "rerun": "none in pdps", "replicate": "create a larger box and fill it (create_atoms)",
+    "reset_atoms": "none in pdps", "reset_atom_ids": "none in pdps", "shell": "none in pdps",
+    "special_bonds": "pdps has no bonds", "suffix": "nothing: pdps has one build of each style",
+    "tad": "none in pdps", "temper": "none in pdps", "timer": "the timing table printed after each run",
+    "write_coeff": "none in pdps", "write_dump": "dump with run 0",
+}
+
+
+def unsupported(name):
+    """The one line for a LAMMPS command pdps does not run, or None."""
+    alternative = ALTERNATIVES.get(name)
+    if alternative is None:
+        return None
+    return f"{name} is a LAMMPS command pdps does not support; instead: {alternative} (docs/lammps.md)"

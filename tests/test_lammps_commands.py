@@ -1,0 +1,199 @@
+"""LAMMPS commands in pdps (docs/lammps.md): neighbor exclusions, the ghost cutoff, newton, control flow,
+thermo keywords and thermo_modify, units, lattices, create_atoms."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import forces_by_tag, make_box
+
+LJ_PAIR = """mass * 1
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+"""
+
+
+def lj(r):
+    return 4.0 * (r ** -12 - r ** -6)
+
+
+def three_particles(extra=""):
+    sim = make_box(LJ_PAIR, ntypes=2)
+    sim.command("create_particle 1 single 2 2 2\ncreate_particle 2 single 3.1 2 2\ncreate_particle 1 single 2 3.2 2\n"
+                f"{extra}\nthermo_style custom step pe evdwl\nthermo_modify norm no\nrun 0")
+    return sim
+
+
+# ---- neigh_modify exclude -------------------------------------------------------------------------
+def test_excluded_type_pairs_feel_nothing():
+    sim = three_particles("neigh_modify exclude type 1 2")
+    f = forces_by_tag(sim)
+    np.testing.assert_allclose(f[1], [0, 0, 0], atol=0)                      # type 2: only 1-2 pairs
+    assert sim.variables.evaluate("pe") == pytest.approx(lj(1.2), rel=1e-12)    # 1-3 only
+
+
+def test_excluded_groups_and_none():
+    sim = three_particles("group a id 1\ngroup b id 3\nneigh_modify exclude group a b")
+    expected = lj(1.1) + lj(math.hypot(1.1, 1.2))
+    assert sim.variables.evaluate("pe") == pytest.approx(expected, rel=1e-12)
+    sim.command("neigh_modify exclude none\nrun 0")
+    assert sim.variables.evaluate("pe") == pytest.approx(expected + lj(1.2), rel=1e-12)
+
+
+def test_exclude_errors():
+    sim = make_box(ntypes=2)
+    with pytest.raises(ScriptError, match=r"exclude takes type I J, group G1 G2 or none \(got bond\)"):
+        sim.command("neigh_modify exclude bond 1 2")
+    with pytest.raises(ScriptError, match="exclude molecule/intra needs molecule ids"):
+        sim.command("neigh_modify exclude molecule/intra all")
+
+
+# ---- comm_modify cutoff, newton --------------------------------------------------------------------
+def test_a_larger_ghost_cutoff_changes_ghosts_not_forces():
+    plain = three_particles()
+    wide = three_particles("comm_modify cutoff 4.5 vel yes\nnewton off")
+    assert wide.particles.nghost > plain.particles.nghost
+    np.testing.assert_allclose(forces_by_tag(wide), forces_by_tag(plain), rtol=1e-14, atol=1e-14)
+
+
+# ---- thermo -----------------------------------------------------------------------------------------
+def test_thermo_keywords_as_lammps_defines_them():
+    sim = three_particles("velocity all set 0.5 0 0")
+    values = {k: sim.variables.evaluate(k) for k in ("pe", "evdwl", "ke", "etotal", "enthalpy", "density", "xlo",
+                                                     "zhi", "fmax", "fnorm", "ecoul", "nbuild", "atoms")}
+    assert values["pe"] == values["evdwl"]
+    assert values["etotal"] == pytest.approx(values["pe"] + values["ke"])
+    press = sim.variables.evaluate("press")
+    assert values["enthalpy"] == pytest.approx(values["etotal"] + press * 1000.0)
+    assert values["density"] == pytest.approx(3.0 / 1000.0)
+    assert (values["xlo"], values["zhi"], values["ecoul"], values["atoms"]) == (0.0, 10.0, 0.0, 3)
+    f = sim.f
+    assert values["fmax"] == pytest.approx(np.abs(f).max())
+    assert values["fnorm"] == pytest.approx(np.sqrt((f * f).sum()))
+
+
+def test_thermo_modify_format_and_norm():
+    import io
+    screen = io.StringIO()
+    sim = Simulation(screen=screen, log=None)
+    sim.command("region box block 0 10 0 10 0 10\ncreate_box 1 box\n" + LJ_PAIR +
+                "create_particle 1 single 2 2 2\ncreate_particle 1 single 3.1 2 2\n"
+                "thermo_style custom step pe\nthermo_modify norm yes format float %.3f format 1 %5d\nrun 0")
+    line = [row for row in screen.getvalue().splitlines() if row.strip().startswith("0 ")][0]
+    assert line == f"    0 {lj(1.1) / 2:.3f}"
+
+
+# ---- units --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("style, boltz, dt, skin", [("real", 0.0019872067, 1.0, 2.0), ("metal", 8.617343e-5, 0.001, 2.0),
+                                                    ("cgs", 1.3806504e-16, 1e-8, 0.1), ("nano", 0.013806504, 0.00045, 0.1),
+                                                    ("micro", 1.3806504e-8, 2.0, 0.1)])
+def test_units_set_lammps_constants_and_defaults(style, boltz, dt, skin):
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"units {style}")
+    assert (sim.units.boltz, sim.dt, sim.neighbors.skin) == (boltz, dt, skin)
+
+
+def test_metal_units_kick_with_ftm2v():
+    # F = 1 eV/A on m = 2 g/mol for 10 steps of 1 fs: v = n dt F / m * ftm2v, in A/ps
+    sim = Simulation(screen=False, log=None)
+    sim.command("units metal\nregion box block 0 10 0 10 0 10\ncreate_box 1 box\nmass 1 2.0\n"
+                "create_particle 1 single 5 5 5\nfix 1 all nve\nfix push all addforce 1.0 0 0\nrun 10")
+    assert sim.v[0, 0] == pytest.approx(10 * 0.001 * 1.0 / 2.0 / 1.0364269e-4, rel=1e-13)
+
+
+# ---- lattices ---------------------------------------------------------------------------------------
+def lammps_sim(lines):
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(lines)
+    return sim
+
+
+def nearest(sim):
+    x = sim.x
+    d = x[:, None, :] - x[None, :, :]
+    d -= sim.box.length * np.round(d / sim.box.length)
+    r = np.sqrt((d * d).sum(-1))
+    np.fill_diagonal(r, np.inf)
+    return r.min()
+
+
+@pytest.mark.parametrize("style, cells, per_cell, neighbour", [
+    ("hcp", "0 3 0 2 0 2", 4, 1.0), ("diamond", "0 2 0 2 0 2", 8, math.sqrt(3) / 4), ("bcc", "0 3 0 3 0 3", 2,
+                                                                                        math.sqrt(3) / 2)])
+def test_3d_lattices_fill_cells_with_their_basis(style, cells, per_cell, neighbour):
+    sim = lammps_sim(f"units metal\nlattice {style} 1.0\nregion box block {cells}\ncreate_box 1 box\n"
+                     "create_atoms 1 box\nmass 1 1")
+    ncell = np.prod([int(w) for w in cells.split()[1::2]])
+    assert sim.nlocal == ncell * per_cell
+    assert nearest(sim) == pytest.approx(neighbour, rel=1e-12)
+
+
+def test_lj_scaling_gives_the_reduced_density():
+    sim = lammps_sim("lattice hcp 0.9\nregion box block 0 4 0 2 0 2\ncreate_box 1 box\ncreate_atoms 1 box\nmass 1 1")
+    assert sim.nlocal / sim.box.volume == pytest.approx(0.9, rel=1e-12)
+
+
+def test_2d_lattices():
+    sim = lammps_sim("dimension 2\nlattice hex 0.8\nregion box block 0 3 0 2 -0.5 0.5\ncreate_box 1 box\n"
+                     "create_atoms 1 box\nmass 1 1")
+    assert sim.nlocal == 3 * 2 * 2
+    assert sim.nlocal / (sim.box.length[0] * sim.box.length[1]) == pytest.approx(0.8, rel=1e-12)
+
+
+def test_orient_rotates_the_lattice_and_spacing_follows():
+    sim = lammps_sim("units metal\nlattice fcc 4.0 orient x 1 1 0 orient y -1 1 0 orient z 0 0 1\n"
+                     "region box block 0 2 0 2 0 2\ncreate_box 1 box\ncreate_atoms 1 box\nmass 1 1")
+    np.testing.assert_allclose(sim.lattice.spacing, [4.0 * math.sqrt(2), 4.0 * math.sqrt(2), 4.0], rtol=1e-12)
+    assert sim.nlocal / sim.box.volume == pytest.approx(4 / 64.0, rel=1e-12)
+    assert nearest(sim) == pytest.approx(4.0 / math.sqrt(2), rel=1e-12)
+
+
+def test_custom_lattice_and_origin_and_basis_types():
+    sim = lammps_sim("units metal\nlattice custom 2.0 a1 1 0 0 a2 0 1 0 a3 0 0 1 basis 0 0 0 basis 0.5 0.5 0.5 "
+                     "origin 0.25 0.25 0.25\nregion box block 0 2 0 2 0 2\ncreate_box 2 box\n"
+                     "create_atoms 1 box basis 2 2\nmass * 1")
+    assert sim.nlocal == 16
+    assert np.isclose(sim.x.min(), 0.5)
+    assert sorted(np.bincount(sim.type)[1:].tolist()) == [8, 8]
+
+
+def test_create_atoms_single_in_lattice_units_and_remap():
+    sim = lammps_sim("units metal\nlattice sc 2.0\nregion box block 0 3 0 3 0 3\ncreate_box 1 box\n"
+                     "create_atoms 1 single 1 1 1\ncreate_atoms 1 single 7 1 1 units box remap yes\nmass 1 1")
+    np.testing.assert_allclose(sorted(sim.x[:, 0].tolist()), [1.0, 2.0])
+
+
+# ---- control flow ---------------------------------------------------------------------------------
+def test_loops_and_conditions(pdps_cli):
+    done = pdps_cli("""
+        variable i loop 3
+        variable total equal 0
+        label top
+        variable total equal ${total}+${i}
+        if "${i} == 2" then "print two" elif "${i} > 2" "print three" else "print one"
+        next i
+        jump SELF top
+        print "total ${total}"
+    """, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[1:] == ["one", "two", "three", "total 6"]
+
+
+def test_an_endless_loop_is_an_error(pdps_cli):
+    done = pdps_cli("label a\nprint x\njump SELF a\n", "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        "ERROR: in.test:3: jump: jump SELF a: an endless loop (nothing a loop can end on changed since the "
+        "last jump: no next, variable or run)"]
+
+
+def test_run_upto_and_ramp_over_start_stop():
+    sim = make_box("mass 1 1\ncreate_particle 1 single 1 1 1\nfix 1 all nve\nvariable r equal ramp(0,100)")
+    sim.command("run 10 upto")
+    assert sim.step == 10
+    sim.command("run 10 start 0 stop 40")
+    assert sim.variables.value("r") == pytest.approx(50.0)
+    with pytest.raises(ScriptError, match="run 5 upto: the step is already 20"):
+        sim.command("run 5 upto")
