@@ -176,8 +176,10 @@ def parse_args(model, words, usage=""):
             continue
         arity = _arity(info.annotation)
         if arity is None:
-            values[name] = list(words[i:])
-            i = len(words)
+            # a list takes the words up to the first keyword of the model
+            end = next((k for k in range(i, len(words)) if words[k] in keywords), len(words))
+            values[name] = list(words[i:end])
+            i = end
         elif arity == 1:
             values[name] = words[i]
             i += 1

@@ -227,7 +227,7 @@ def _two_type_box():
     ("compute r all rdf 10 1 0*2", "type 0*2 is out of range: the box has types 1 to 2"),
     ("compute r all rdf 0 cutoff 2", "nbin must be > 0 (got 0)"),
     ("compute r all rdf 10 1 1 cutoff -1", "cutoff must be > 0 (got -1)"),
-    ("compute r all rdf 10 1 1 cutoff 2 1 1", "keyword cutoff takes one value and comes last (got cutoff 2 1 1)"),
+    ("compute r all rdf 10 1 1 cutoff 2 1 1", "unknown keyword 1 (known: cutoff)"),
 ])
 def test_bad_arguments_are_one_line(command, message):
     with pytest.raises(ScriptError) as error:

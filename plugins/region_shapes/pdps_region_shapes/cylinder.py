@@ -1,0 +1,93 @@
+r"""Region ``cylinder``: a right circular cylinder along x, y or z (LAMMPS's region cylinder).
+
+Syntax::
+
+    region ID cylinder DIM C1 C2 RADIUS LO HI [side in|out] [units box|lattice]
+
+DIM the axis (x, y or z); C1 C2 the axis's position in the other two coordinates in order (y z for
+x, x z for y, x y for z); RADIUS; LO HI the extent along the axis (a number, ``INF``/``-INF`` for
+unbounded, or ``EDGE`` for the box's face). With ``units lattice`` (the LAMMPS dialect's default) C1
+C2 LO HI are in lattice spacings along their axes and the radius in the spacing of C1's axis, as
+LAMMPS scales them. Points on the surface are inside. Example::
+
+    region pipe cylinder z 5 5 2.0 INF INF units box
+"""
+
+import math
+
+import numpy as np
+from pydantic import model_validator
+
+from pdps_core.api import Region, RegionArgs, ScriptError, param
+
+HUGE = 1e300
+OTHER = {"x": (1, 2), "y": (0, 2), "z": (0, 1)}
+
+
+def bound(value, name):
+    if value in ("INF", "-INF", "EDGE"):
+        return value
+    try:
+        number = float(value)
+    except ValueError:
+        raise ValueError(f"{name} must be a number, INF, -INF or EDGE (got {value})") from None
+    if not math.isfinite(number):
+        raise ValueError(f"{name} must be a number, INF, -INF or EDGE (got {value})")
+    return value
+
+
+class RegionCylinder(Region):
+    name = "cylinder"
+    usage = "region ID cylinder x|y|z C1 C2 RADIUS LO HI [side in|out] [units box|lattice]"
+
+    class Args(RegionArgs):
+        dim: str = param()
+        c1: float = param(unit="distance")
+        c2: float = param(unit="distance")
+        radius: float = param(ge=0, unit="distance")
+        lo: str = param(unit="distance")
+        hi: str = param(unit="distance")
+
+        @model_validator(mode="after")
+        def _words(self):
+            if self.dim not in OTHER:
+                raise ValueError(f"dim must be x, y or z (got {self.dim})")
+            bound(self.lo, "lo")
+            bound(self.hi, "hi")
+            return self
+
+    def __init__(self, sim, id, args):
+        super().__init__(sim, id, args)
+        self.axis = "xyz".index(args.dim)
+        self.across = OTHER[args.dim]
+        self.c = np.array([args.c1 * self.scale[self.across[0]], args.c2 * self.scale[self.across[1]]])
+        self.radius = args.radius * self.scale[self.across[0]]
+        self.lo = self._end(sim, args.lo, True)
+        self.hi = self._end(sim, args.hi, False)
+        if not self.lo <= self.hi:
+            raise ScriptError(f"lo must be <= hi (got {self.lo:g} {self.hi:g})")
+
+    def _end(self, sim, value, is_lo):
+        if value in ("INF", "-INF"):
+            return -HUGE if is_lo else HUGE
+        if value == "EDGE":
+            if sim.box is None:
+                raise ScriptError(f"{'lo' if is_lo else 'hi'} EDGE needs the simulation box to exist")
+            return float((sim.box.lo if is_lo else sim.box.hi)[self.axis])
+        return float(value) * self.scale[self.axis]
+
+    def inside(self, x):
+        x = np.asarray(x, dtype=np.float64)
+        a, b = self.across
+        d1, d2 = x[:, a] - self.c[0], x[:, b] - self.c[1]
+        along = x[:, self.axis]
+        return (np.sqrt(d1 * d1 + d2 * d2) <= self.radius) & (along >= self.lo) & (along <= self.hi)
+
+    def bounds(self):
+        if abs(self.lo) >= HUGE or abs(self.hi) >= HUGE:
+            raise ScriptError(f"region {self.id} is unbounded (INF) and cannot define a box")
+        lo, hi = np.empty(3), np.empty(3)
+        for k, d in enumerate(self.across):
+            lo[d], hi[d] = self.c[k] - self.radius, self.c[k] + self.radius
+        lo[self.axis], hi[self.axis] = self.lo, self.hi
+        return lo, hi
