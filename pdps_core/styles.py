@@ -512,12 +512,35 @@ class Dump(Style):
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args
         self.every = int(getattr(args, "every", 1))
+        self.first = False              # dump_modify first yes: a frame at the next run's start
 
     def write(self, sim):
         raise NotImplementedError
 
+    def modify(self, sim, keyword, values):
+        """One ``dump_modify`` keyword with its values (words); ``every`` and ``first`` here, a style
+        adds its own (a text dump: sort, format, append)."""
+        if keyword == "every":
+            self.every = _positive_int(values[0], "every")
+        elif keyword == "first":
+            if values[0] not in ("yes", "no"):
+                raise ScriptError(f"first must be yes or no (got {values[0]})")
+            self.first = values[0] == "yes"
+        else:
+            raise ScriptError(f"dump {self.id} ({self.name}) has no dump_modify keyword {keyword}")
+
     def close(self):
         pass
+
+
+def _positive_int(word, name):
+    try:
+        value = int(word)
+    except ValueError:
+        raise ScriptError(f"{name} must be an integer (got {word})") from None
+    if value < 1:
+        raise ScriptError(f"{name} must be >= 1 (got {word})")
+    return value
 
 
 class RegionArgs(StyleArgs):

@@ -197,3 +197,26 @@ def test_run_upto_and_ramp_over_start_stop():
     assert sim.variables.value("r") == pytest.approx(50.0)
     with pytest.raises(ScriptError, match="run 5 upto: the step is already 20"):
         sim.command("run 5 upto")
+
+
+# ---- dump_modify ----------------------------------------------------------------------------------
+def test_dump_modify_sort_format_every_first_append(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "d.custom").write_text("earlier\n")
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 3 0 3 0 3\ncreate_box 1 box\nmass 1 1\nlattice sc 1\n"
+                "create_particle 1 box\nfix 1 all nve\n"
+                "dump d all atom 4 d.atom\ndump_modify d sort -4 format float %.2f every 5 first yes\n"
+                "dump c all custom 10 d.custom id x\ndump_modify c format line \"%3d %.1f\" append yes\n"
+                "run 3")
+    frames = (tmp_path / "d.atom").read_text().split("ITEM: TIMESTEP\n")[1:]
+    assert [int(f.split()[0]) for f in frames] == [0]             # first yes: a frame at the start
+    rows = [line.split() for line in frames[0].splitlines()[8:]]
+    ys = [float(r[3]) for r in rows]
+    assert ys == sorted(ys, reverse=True) and rows[0][3] == "0.67"  # sorted by column 4 (ys), descending
+    custom = (tmp_path / "d.custom").read_text().splitlines()
+    assert custom[0] == "earlier" and custom[10] == "  1 0.0"
+    with pytest.raises(ScriptError, match="dump_modify thresh is not supported"):
+        sim.command("dump_modify d thresh x > 1")
+    with pytest.raises(ScriptError, match="append must be set before the dump writes its first frame"):
+        sim.command("dump_modify c append yes")

@@ -155,7 +155,9 @@ def lattice_sites(sim, region=None):
                           f"{sites:.3g} sites in {'the box' if region is None else 'region ' + region.id}, more "
                           f"than {limits.MAX_CREATE} particles at once")
     axes = [np.arange(first[d], last[d] + 1) for d in range(3)]
-    cells = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+    # LAMMPS's loop order (z outermost, then y, x, basis innermost), so ids follow LAMMPS's
+    k, j, i = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
+    cells = np.column_stack([i.ravel(), j.ravel(), k.ravel()])
     x = lattice.sites(cells)
     which = np.tile(np.arange(len(lattice.basis)), len(cells))
     dims = sim.dimension

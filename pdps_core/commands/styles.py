@@ -128,6 +128,46 @@ def dump(sim, args):
     _create(sim, "dump", sim.output.dumps, resolved, usage)
 
 
+# dump_modify keywords and how many words each takes (format: a kind and a format string)
+DUMP_MODIFY = {"every": 1, "first": 1, "append": 1, "sort": 1, "format": 2, "flush": 1, "pad": 1,
+               "units": 1, "time": 1, "thresh": 3, "element": None, "region": 1, "colname": 2,
+               "scale": 1, "image": 1, "precision": 1, "delay": 1, "skip": 1, "maxfiles": 1, "nfile": 1,
+               "fileper": 1, "header": 1, "buffer": 1, "refresh": 1, "label": 1}
+
+
+@command("dump_modify")
+def dump_modify(sim, args):
+    """LAMMPS's ``dump_modify ID keyword value ...``: every and first for any dump; sort, format,
+    append (and flush, accepted) for the text dumps."""
+    usage = "dump_modify ID [every N] [first yes|no] [sort id|off|N|-N] [format line|int|float|N FMT] [append yes|no]"
+    if len(args) < 3:
+        raise ScriptError(f"expected a dump ID and keywords; usage: {usage}")
+    dump = sim.output.dumps.get(args[0])
+    if dump is None:
+        raise ScriptError(f"dump {args[0]} is not defined")
+    k, words = 1, args
+    while k < len(words):
+        keyword = words[k]
+        arity = DUMP_MODIFY.get(keyword, 0)
+        if keyword not in DUMP_MODIFY:
+            raise ScriptError(f"unknown dump_modify keyword {keyword}; usage: {usage}")
+        if arity is None or keyword in ("thresh", "element", "region", "colname", "scale", "image", "precision",
+                                        "delay", "skip", "maxfiles", "nfile", "fileper", "header", "buffer",
+                                        "refresh", "label", "units", "time", "pad"):
+            raise ScriptError(f"dump_modify {keyword} is not supported (supported: every, first, sort, format, "
+                              "append, flush)")
+        if keyword == "format" and k + 1 < len(words) and words[k + 1] == "none":
+            arity = 1
+        values = words[k + 1:k + 1 + arity]
+        if len(values) < arity:
+            raise ScriptError(f"dump_modify {keyword} needs {arity} value(s); usage: {usage}")
+        if keyword == "flush":
+            choice(values[0], "flush", ("yes", "no"))   # pdps flushes every frame whole
+        else:
+            dump.modify(sim, keyword, values)
+        k += 1 + arity
+
+
 @command("undump")
 def undump(sim, args):
     _remove(sim, "dump", sim.output.dumps, args).close()

@@ -118,7 +118,8 @@ class Output:
         wrote = False
         for dump in self.dumps.values():
             # a run starting where the last one ended has written this frame already (LAMMPS)
-            if step % dump.every == 0 and getattr(dump, "last_step", None) != step:
+            due = step % dump.every == 0 or (dump.first and step == self.sim.run_first_step)
+            if due and getattr(dump, "last_step", None) != step:
                 dump.write(self.sim)
                 dump.last_step = step
                 wrote = True

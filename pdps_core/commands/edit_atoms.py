@@ -1,0 +1,395 @@
+"""LAMMPS's commands that change particles already made: ``set``, ``delete_atoms``, ``displace_atoms``,
+and ``write_data`` that writes them.
+
+    set atom|type|group|region ID keyword value ...
+        type T | type/fraction T FRACTION SEED | x|y|z|vx|vy|vz VALUE | mass M | diameter D |
+        density RHO | image NX NY NZ | omega WX WY WZ     (a value may be v_NAME, an atom-style variable)
+    delete_atoms group G | region R | overlap CUTOFF G1 G2  [compress yes|no]
+    displace_atoms G move DX DY DZ | ramp DDIM DLO DHI DIM CLO CHI | random DX DY DZ SEED |
+        rotate PX PY PZ RX RY RZ THETA  [units box|lattice]
+    write_data FILE [nocoeff] [nofix] [nolabelmap] [pair ii|ij]
+
+As in LAMMPS: ``set`` IDs of style atom and type take ranges (``1*10``); ``mass`` sets per-particle
+masses (spheres) and ``diameter``/``density`` a sphere's radius and mass (density times its
+volume); ``type/fraction`` decides each particle from LAMMPS's Park-Miller generator seeded from
+its coordinates, so the same particles change on any number of ranks. ``delete_atoms ... compress
+yes`` (the default) renumbers the ids 1..N in storage order after LAMMPS's way of deleting (the last
+particle moves into each deleted one's slot), so a serial script gets LAMMPS's ids; ``overlap`` takes the particles in id
+order and deletes a G1 particle when a G2 particle closer than CUTOFF has not been deleted already
+(LAMMPS's rule, which for a serial LAMMPS run goes through its particles in the order they were
+made). ``displace_atoms`` distances are in lattice
+spacings by default; particles are wrapped back into a periodic box; ``random`` uses pdps's own
+random numbers, not LAMMPS's. ``write_data`` writes what read_data reads back (Masses, Atoms with
+image flags, Velocities; ``atom_style sphere``'s diameter and density), not the pair coefficients.
+"""
+
+import math
+
+import numpy as np
+
+from ..errors import ScriptError
+from ..random import particle_uniforms
+from ..state import limits
+from . import command
+from .words import choice, count, integer, number, type_range, yes_no
+
+
+# ---- set ---------------------------------------------------------------------------------------------
+SET_ARITY = {"type": 1, "type/fraction": 3, "x": 1, "y": 1, "z": 1, "vx": 1, "vy": 1, "vz": 1, "mass": 1,
+             "diameter": 1, "density": 1, "image": 3, "omega": 3, "charge": 1, "mol": 1}
+
+
+def _selection(sim, style, ident):
+    p = sim.particles
+    n = p.nlocal
+    if style == "atom":
+        lo, hi = _id_range(ident)
+        tags = p.tag[:n]
+        return (tags >= lo) & (tags <= hi)
+    if style == "type":
+        lo, hi = type_range(ident, sim.ntypes)
+        return (p.type[:n] >= lo) & (p.type[:n] <= hi)
+    if style == "group":
+        return sim.groups.select(sim, sim.require_group(ident))
+    if style == "region":
+        return sim.region(ident).match(p.x[:n])
+    raise ScriptError(f"set style must be atom, type, group or region (got {style})")
+
+
+def _id_range(word):
+    if word == "*":
+        return 1, limits.MAX_TAG
+    if "*" in word:
+        left, _, right = word.partition("*")
+        lo = integer(left, "id") if left else 1
+        hi = integer(right, "id") if right else limits.MAX_TAG
+        return lo, hi
+    value = integer(word, "id", low=1)
+    return value, value
+
+
+def _values(sim, word, what, selected):
+    """A number, or per particle from v_NAME (an atom-style variable), for the selected particles."""
+    if word.startswith("v_"):
+        name = word[2:]
+        if name not in sim.variables:
+            raise ScriptError(f"variable {name} is not defined ({what} {word})")
+        return sim.variables.atom_values(name)[selected]
+    return number(word, what)
+
+
+@command("set")
+def set_(sim, args):
+    usage = "set atom|type|group|region ID keyword value ..."
+    sim.require_box("set")
+    if len(args) < 4:
+        raise ScriptError(f"expected a style, an ID and keyword values; usage: {usage}")
+    style = choice(args[0], "set style", ("atom", "type", "group", "region", "mol"))
+    if style == "mol":
+        raise ScriptError("set mol needs molecule ids, which pdps does not read yet")
+    selected = _selection(sim, style, args[1])
+    k = 2
+    while k < len(args):
+        key = args[k]
+        if key not in SET_ARITY:
+            raise ScriptError(f"unknown set keyword {key} (supported: {', '.join(SET_ARITY)})")
+        values = args[k + 1:k + 1 + SET_ARITY[key]]
+        if len(values) < SET_ARITY[key]:
+            raise ScriptError(f"set {key} needs {SET_ARITY[key]} value(s)")
+        changed = int(sim.comm.sum(int(_set_one(sim, key, values, selected))))
+        sim.output.message(f"Setting atom values ...\n  {changed} settings made for {key}")
+        k += 1 + SET_ARITY[key]
+    sim.groups.update(sim)
+
+
+def _set_one(sim, key, values, selected):
+    p = sim.particles
+    n = p.nlocal
+    rows = np.flatnonzero(selected)
+    if key == "type":
+        p.type[rows] = integer(values[0], "type", low=1, high=sim.ntypes)
+        return len(rows)
+    if key == "type/fraction":
+        new_type = integer(values[0], "type", low=1, high=sim.ntypes)
+        fraction = number(values[1], "fraction", low=0.0, high=1.0)
+        seed = integer(values[2], "seed", low=1, high=2 ** 31 - 1)
+        chosen = rows[_fraction(np.ascontiguousarray(p.x[rows]), seed, fraction)]
+        p.type[chosen] = new_type
+        return len(chosen)
+    if key in ("x", "y", "z", "vx", "vy", "vz"):
+        array = p.x if len(key) == 1 else p.v
+        d = "xyz".index(key[-1])
+        array[rows, d] = _values(sim, values[0], key, selected)
+        return len(rows)
+    if key in ("image", "omega"):
+        if key == "omega" and not p.has("omega"):
+            raise ScriptError("set omega needs atom_style sphere")
+        for d, word in enumerate(values):
+            if word == "NULL":
+                continue
+            if key == "image":
+                p.image[rows, d] = integer(word, "image", low=-limits.MAX_IMAGE, high=limits.MAX_IMAGE)
+            else:
+                p.omega[rows, d] = _values(sim, word, "omega", selected)
+        return len(rows)
+    if key in ("mass", "diameter", "density"):
+        if not p.has("rmass"):
+            raise ScriptError(f"set {key} needs per-particle masses (atom_style sphere)")
+        value = _values(sim, values[0], key, selected)
+        if np.any(np.asarray(value) <= 0) and key != "diameter":
+            raise ScriptError(f"{key} must be > 0 (got {values[0]})")
+        if key == "mass":
+            p.rmass[rows] = value
+        elif key == "diameter":
+            if np.any(np.asarray(value) < limits.MIN_SIZE):
+                raise ScriptError(f"diameter must be >= {limits.MIN_SIZE:g} (got {values[0]})")
+            density = p.rmass[rows] / _volume(sim, p.radius[rows])
+            p.radius[rows] = 0.5 * np.asarray(value)
+            p.rmass[rows] = density * _volume(sim, p.radius[rows])
+        else:
+            p.rmass[rows] = np.asarray(value) * _volume(sim, p.radius[rows])
+        return len(rows)
+    if key == "charge":
+        raise ScriptError("set charge: pdps has no charges (atom_style charge is not supported)")
+    raise ScriptError(f"set mol needs molecule ids, which pdps does not read yet")
+
+
+def _fraction(x, seed, fraction):
+    """Which particles LAMMPS's set type/fraction picks: a Park-Miller stream seeded from the seed and
+    each particle's position, its first uniform below the fraction."""
+    from ..random_park import park_reset_coord, park_state, park_uniform
+    state = park_state(seed)
+    picked = np.zeros(len(x), dtype=bool)
+    for k in range(len(x)):
+        park_reset_coord(state, seed, x[k])
+        picked[k] = park_uniform(state) < fraction
+    return picked
+
+
+def _volume(sim, radius):
+    # LAMMPS: a sphere's volume, also in 2-d (its density keyword of set; density/disc for discs)
+    return 4.0 / 3.0 * math.pi * np.asarray(radius) ** 3
+
+
+# ---- delete_atoms --------------------------------------------------------------------------------------
+@command("delete_atoms")
+def delete_atoms(sim, args):
+    usage = "delete_atoms group G | region R | overlap CUTOFF G1 G2 [compress yes|no]"
+    sim.require_box("delete_atoms")
+    if len(args) < 2:
+        raise ScriptError(f"expected a style; usage: {usage}")
+    style = choice(args[0], "delete_atoms style", ("group", "region", "overlap", "porosity", "variable",
+                                                   "random"))
+    p = sim.particles
+    n = p.nlocal
+    if style == "group":
+        doomed, rest = sim.groups.select(sim, sim.require_group(args[1])), args[2:]
+    elif style == "region":
+        doomed, rest = sim.region(args[1]).match(p.x[:n]), args[2:]
+    elif style == "overlap":
+        if len(args) < 4:
+            raise ScriptError(f"overlap needs CUTOFF G1 G2; usage: {usage}")
+        cutoff = number(args[1], "cutoff", low=0.0, strict_low=True, high=limits.MAX_COORDINATE)
+        doomed, rest = _overlapping(sim, cutoff, args[2], args[3]), args[4:]
+    else:
+        raise ScriptError(f"delete_atoms {style} is not supported (supported: group, region, overlap)")
+    compress = True
+    for key, value in zip(rest[::2], rest[1::2]):
+        if key == "compress":
+            compress = yes_no(value, "compress")
+        elif key in ("bond", "mol"):
+            raise ScriptError(f"delete_atoms {key} needs molecules, which pdps does not read yet")
+        else:
+            raise ScriptError(f"unknown delete_atoms keyword {key}; usage: {usage}")
+    if len(rest) % 2:
+        raise ScriptError(f"expected keyword/value pairs after the style; usage: {usage}")
+    deleted = int(sim.comm.sum(int(doomed.sum())))
+    p.keep(_lammps_deletion_order(doomed))
+    sim.groups.update(sim)
+    if compress:
+        _compress_ids(sim)
+    sim.output.message(f"Deleted {deleted} atoms, new total = {int(sim.comm.sum(sim.particles.nlocal))}")
+
+
+def _overlapping(sim, cutoff, group1, group2):
+    """Owned particles to delete, as LAMMPS's delete_atoms overlap decides: particles taken in id
+    order, a G1 particle goes when a G2 particle closer than cutoff (periodic images counted) has
+    not gone already. Every rank looks at every particle, so all agree."""
+    p = sim.particles
+    n = p.nlocal
+    in1, in2 = sim.groups.select(sim, sim.require_group(group1)), sim.groups.select(sim, sim.require_group(group2))
+    x_all = sim.comm.allgather_rows(np.ascontiguousarray(p.x[:n]))
+    tag_all = sim.comm.allgather_rows(p.tag[:n].copy())
+    in1_all, in2_all = sim.comm.allgather_rows(in1), sim.comm.allgather_rows(in2)
+    order = np.argsort(tag_all)
+    x_all, tag_all, in1_all, in2_all = x_all[order], tag_all[order], in1_all[order], in2_all[order]
+    box = sim.box
+    gone = np.zeros(len(tag_all), dtype=bool)
+    cutsq = cutoff * cutoff
+    for i in np.flatnonzero(in1_all):
+        d = x_all - x_all[i]
+        for dim in range(3):
+            if box.periodic[dim]:
+                d[:, dim] -= box.length[dim] * np.round(d[:, dim] / box.length[dim])
+        partner = in2_all & (np.einsum("ij,ij->i", d, d) < cutsq) & ~gone
+        partner[i] = False
+        gone[i] = bool(partner.any())
+    doomed_tags = set(tag_all[gone].tolist())
+    return np.array([t in doomed_tags for t in p.tag[:n].tolist()], dtype=bool)
+
+
+def _lammps_deletion_order(doomed):
+    """The rows kept, in the order LAMMPS leaves them: each deleted particle's slot is taken by the
+    last one (its AtomVec::copy), so ids given afterwards (compress) follow LAMMPS's."""
+    rows = list(range(len(doomed)))
+    gone = [bool(d) for d in doomed]
+    i = 0
+    while i < len(rows):
+        if gone[i]:
+            rows[i], gone[i] = rows[-1], gone[-1]
+            rows.pop()
+            gone.pop()
+        else:
+            i += 1
+    return np.array(rows, dtype=np.int64)
+
+
+def _compress_ids(sim):
+    """Ids 1..N as LAMMPS's compress gives them for atomic systems (Atom::tag_extend): rank by rank,
+    each rank's particles in their storage order."""
+    p = sim.particles
+    n = p.nlocal
+    counts = sim.comm.allgather_rows(np.array([n], dtype=np.int64))
+    first = int(np.sum(counts[:sim.comm.rank])) + 1
+    p.tag[:n] = np.arange(first, first + n, dtype=p.tag.dtype)
+    p.next_tag = int(np.sum(counts)) + 1
+
+
+# ---- displace_atoms ------------------------------------------------------------------------------------
+@command("displace_atoms")
+def displace_atoms(sim, args):
+    usage = ("displace_atoms G move DX DY DZ | ramp DDIM DLO DHI DIM CLO CHI | random DX DY DZ SEED | "
+             "rotate PX PY PZ RX RY RZ THETA [units box|lattice]")
+    sim.require_box("displace_atoms")
+    if len(args) < 2:
+        raise ScriptError(f"expected a group and a style; usage: {usage}")
+    chosen = sim.groups.select(sim, sim.require_group(args[0]))
+    style = choice(args[1], "displace_atoms style", ("move", "ramp", "random", "rotate"))
+    need = {"move": 3, "ramp": 6, "random": 4, "rotate": 7}[style]
+    words, rest = args[2:2 + need], args[2 + need:]
+    if len(words) < need:
+        raise ScriptError(f"displace_atoms {style} needs {need} values; usage: {usage}")
+    units = "lattice"
+    for key, value in zip(rest[::2], rest[1::2]):
+        if key != "units":
+            raise ScriptError(f"unknown displace_atoms keyword {key}; usage: {usage}")
+        units = choice(value, "units", ("box", "lattice"))
+    if len(rest) % 2:
+        raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
+    scale = sim.lattice.spacing if (units == "lattice" and sim.lattice is not None) else np.ones(3)
+    p = sim.particles
+    n = p.nlocal
+    x = p.x[:n]
+    rows = np.flatnonzero(chosen)
+    if style == "move":
+        shift = np.array([_values(sim, w, f"d{a}", chosen) if w.startswith("v_") else number(w, f"d{a}")
+                          for a, w in zip("xyz", words)], dtype=object)
+        for d in range(3):
+            x[rows, d] += np.asarray(shift[d], dtype=np.float64) * scale[d]
+    elif style == "ramp":
+        ddim = "xyz".index(choice(words[0], "ramp dimension", ("x", "y", "z")))
+        dlo, dhi = number(words[1], "dlo") * scale[ddim], number(words[2], "dhi") * scale[ddim]
+        cdim = "xyz".index(choice(words[3], "coordinate dimension", ("x", "y", "z")))
+        clo, chi = number(words[4], "clo") * scale[cdim], number(words[5], "chi") * scale[cdim]
+        if not chi > clo:
+            raise ScriptError(f"chi must be > clo (got {clo:g} {chi:g})")
+        fraction = np.clip((x[rows, cdim] - clo) / (chi - clo), 0.0, 1.0)
+        x[rows, ddim] += dlo + fraction * (dhi - dlo)
+    elif style == "random":
+        amplitude = np.array([number(w, f"d{a}", low=0.0) for a, w in zip("xyz", words[:3])]) * scale
+        seed = integer(words[3], "seed", low=1)
+        for k in rows:
+            u0, u1, u2, _ = particle_uniforms(seed, sim.step, int(p.tag[k]), 3)
+            x[k] += amplitude * (2.0 * np.array([u0, u1, u2]) - 1.0)
+    else:
+        point = np.array([number(w, "P") for w in words[:3]]) * scale
+        axis = np.array([number(w, "R") for w in words[3:6]])
+        length = float(np.linalg.norm(axis))
+        if length == 0.0:
+            raise ScriptError("the rotation axis must not be zero")
+        axis /= length
+        theta = math.radians(number(words[6], "theta"))
+        x[rows] = _rotate(x[rows] + p.image[rows] * sim.box.length, point, axis, theta)
+        p.image[rows] = 0
+    if sim.dimension == 2:
+        x[:, 2] = 0.0
+    if not np.isfinite(x).all():
+        raise ScriptError("displace_atoms gives non-finite positions")
+    box = sim.box
+    for d in range(3):
+        if box.periodic[d]:
+            wrap = np.floor((x[:, d] - box.lo[d]) / box.length[d]).astype(np.int64)
+            x[:, d] -= wrap * box.length[d]
+            p.image[:n, d] += wrap.astype(p.image.dtype)
+    if not box.inside(x).all():
+        raise ScriptError("displace_atoms moves particles outside a non-periodic box")
+    sim.comm.distribute(p, box)
+    sim.groups.update(sim)
+
+
+def _rotate(x, point, axis, theta):
+    """Rodrigues' rotation of points about the axis through point."""
+    d = x - point
+    c, s = math.cos(theta), math.sin(theta)
+    return point + d * c + np.cross(axis, d) * s + np.outer(d @ axis, axis) * (1.0 - c)
+
+
+# ---- write_data --------------------------------------------------------------------------------------
+@command("write_data")
+def write_data(sim, args):
+    count(args, 1, "write_data FILE [nocoeff] [nofix] [nolabelmap] [pair ii|ij]", at_most=6)
+    sim.require_box("write_data")
+    k = 1
+    while k < len(args):
+        if args[k] in ("nocoeff", "nofix", "nolabelmap", "nolattice"):
+            k += 1
+        elif args[k] == "pair" and k + 1 < len(args):
+            choice(args[k + 1], "pair", ("ii", "ij"))
+            k += 2
+        else:
+            raise ScriptError(f"unknown write_data keyword {args[k]}")
+    p = sim.particles
+    n = p.nlocal
+    sphere = sim.particle_style == "sphere"
+    columns = [p.tag[:n].astype(np.float64), p.type[:n].astype(np.float64)]
+    if sphere:
+        volume = _volume(sim, p.radius[:n])
+        columns += [2.0 * p.radius[:n], np.where(volume > 0, p.rmass[:n] / np.where(volume > 0, volume, 1.0),
+                                                  p.rmass[:n])]
+    columns += [p.x[:n, 0], p.x[:n, 1], p.x[:n, 2], *(p.image[:n].T.astype(np.float64))]
+    atoms = sim.comm.gather_rows(np.column_stack(columns))
+    velocities = sim.comm.gather_rows(np.column_stack([p.tag[:n].astype(np.float64), p.v[:n]]))
+    if not sim.comm.is_root:
+        return
+    atoms = atoms[np.argsort(atoms[:, 0])]
+    velocities = velocities[np.argsort(velocities[:, 0])]
+    box = sim.box
+    lines = [f"LAMMPS data file via pdps write_data, timestep = {sim.step}, units = {sim.units.name}", "",
+             f"{len(atoms)} atoms", f"{sim.ntypes} atom types", ""]
+    lines += [f"{lo!r} {hi!r} {a}lo {a}hi" for lo, hi, a in zip(box.lo.tolist(), box.hi.tolist(), "xyz")]
+    if not sphere:
+        lines += ["", "Masses", ""]
+        lines += [f"{t} {sim.type_mass[t]!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.type_mass[t])]
+    lines += ["", f"Atoms # {'sphere' if sphere else 'atomic'}", ""]
+    for row in atoms.tolist():
+        numbers = [f"{int(row[0])}", f"{int(row[1])}"] + [repr(v) for v in row[2:-3]] + [f"{int(v)}" for v in row[-3:]]
+        lines.append(" ".join(numbers))
+    lines += ["", "Velocities", ""]
+    lines += [f"{int(row[0])} {row[1]!r} {row[2]!r} {row[3]!r}" for row in velocities.tolist()]
+    path = sim.resolve(args[0])
+    try:
+        with open(path, "w") as handle:
+            handle.write("\n".join(lines) + "\n")
+    except OSError as exc:
+        raise ScriptError(f"cannot write data file {args[0]}: {exc.strerror}") from None
+
