@@ -175,16 +175,16 @@ def undump(sim, args):
 
 @command("pair_modify")
 def pair_modify(sim, args):
-    """``pair_modify mix geometric|arithmetic shift yes|no``: how unset i != j coefficients are derived
+    """``pair_modify mix geometric|arithmetic|sixthpower shift yes|no``: how unset i != j coefficients are derived
     and whether energies are shifted to zero at the cutoff (LAMMPS's keywords)."""
-    usage = "expected: pair_modify [mix geometric|arithmetic] [shift yes|no]"
+    usage = "expected: pair_modify [mix geometric|arithmetic|sixthpower] [shift yes|no]"
     if sim.pair is None:
         raise ScriptError("pair_modify before pair_style")
     if not args or len(args) % 2:
         raise ScriptError(usage)
     for keyword, value in zip(args[::2], args[1::2]):
         if keyword == "mix":
-            sim.pair.mix_rule = choice(value, "mix rule", ("geometric", "arithmetic"))
+            sim.pair.mix_rule = choice(value, "mix rule", ("geometric", "arithmetic", "sixthpower"))
         elif keyword == "shift":
             sim.pair.shift = choice(value, "shift", ("yes", "no")) == "yes"
         else:

@@ -21,7 +21,9 @@ Parameters:
 Unset i != j pairs are mixed from the i i and j j coefficients, geometrically by default as in LAMMPS
 (:math:`\varepsilon_{ij} = \sqrt{\varepsilon_i\varepsilon_j}`, :math:`\sigma_{ij} = \sqrt{\sigma_i\sigma_j}`,
 :math:`r_{c,ij} = \sqrt{r_{c,i} r_{c,j}}`); ``pair_modify mix arithmetic`` takes the arithmetic mean
-of sigma and the cutoff (Lorentz-Berthelot).
+of sigma and the cutoff (Lorentz-Berthelot); ``pair_modify mix sixthpower`` LAMMPS's sixth-power rule
+(:math:`\varepsilon_{ij} = 2\sqrt{\varepsilon_i\varepsilon_j}\sigma_i^3\sigma_j^3/(\sigma_i^6+\sigma_j^6)`,
+:math:`\sigma_{ij} = ((\sigma_i^6+\sigma_j^6)/2)^{1/6}`, the cutoff alike).
 
 Example (LAMMPS's ``in.lj`` melt)::
 
@@ -61,9 +63,14 @@ class PairLJCut(PairLaw):
         cutoff: float | None = param(None, gt=0, unit="distance")
 
     def mix_coeff(self, ci, cj, rule):
-        mean = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))
         rc_i = ci.cutoff if ci.cutoff is not None else self.args.cutoff
         rc_j = cj.cutoff if cj.cutoff is not None else self.args.cutoff
+        if rule == "sixthpower":
+            s6_i, s6_j = ci.sigma ** 6, cj.sigma ** 6
+            epsilon = 2.0 * math.sqrt(ci.epsilon * cj.epsilon) * ci.sigma ** 3 * cj.sigma ** 3 / (s6_i + s6_j)
+            sixth = (lambda p, q: (0.5 * (p ** 6 + q ** 6)) ** (1.0 / 6.0))
+            return self.Coeff(epsilon=epsilon, sigma=sixth(ci.sigma, cj.sigma), cutoff=sixth(rc_i, rc_j))
+        mean = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))
         return self.Coeff(epsilon=math.sqrt(ci.epsilon * cj.epsilon), sigma=mean(ci.sigma, cj.sigma),
                           cutoff=mean(rc_i, rc_j))
 

@@ -1,0 +1,67 @@
+"""Pair styles soft, morse, yukawa, zero and lj/cut's mixing rules give LAMMPS's thermo, step for step,
+on a 200-particle two-type fluid (data/pair_styles.txt, recorded with LAMMPS by
+benchmarks/lammps_references/pair_styles.py), and their forces are minus the gradient of their energy."""
+
+import math
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import build, energy_gradient, forces_by_tag
+
+DATA = Path(__file__).parent / "data"
+ROWS = [line.split("\t") for line in (DATA / "pair_styles.txt").read_text().splitlines()]
+CASES = {
+    "soft": "pair_style soft 1.5\npair_coeff 1 1 3.0\npair_coeff 2 2 5.0 1.3",
+    "morse": "pair_style morse 2.5\npair_coeff 1 1 1.0 4.0 1.1\npair_coeff 2 2 0.7 3.5 1.2\n"
+             "pair_coeff 1 2 0.85 3.8 1.15 2.2\npair_modify shift yes",
+    "yukawa": "pair_style yukawa 1.5 2.8\npair_coeff 1 1 10.0\npair_coeff 2 2 6.0 2.5\npair_modify shift yes",
+    "zero": "pair_style zero 2.5\npair_coeff * *",
+    "lj_sixthpower": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2 2.0\n"
+                     "pair_modify mix sixthpower",
+    "lj_arithmetic_shift": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
+                           "pair_modify mix arithmetic shift yes",
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.case", dialect="lammps")
+    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
+                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press\nrun 100")
+    sim.close()
+    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
+    reference = [row[1:] for row in ROWS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
+                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+
+
+@pytest.mark.parametrize("case", ["soft", "morse", "yukawa"])
+def test_forces_are_minus_the_gradient(tmp_path, case):
+    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
+    sim = build(tmp_path, x, types=[1, 1, 2, 2], setup=CASES[case].replace("pair_modify shift yes", ""))
+    analytic, numeric = energy_gradient(sim, h=1e-6)
+    assert np.abs(analytic).max() > 0.1
+    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-7)
+
+
+def test_soft_pushes_coincident_particles_apart_without_blowing_up(tmp_path):
+    sim = build(tmp_path, [[5.0, 5.0, 5.0], [5.2, 5.0, 5.0]], setup="pair_style soft 1.0\npair_coeff * * 2.0\nrun 0")
+    f = forces_by_tag(sim)
+    assert f[1, 0] == pytest.approx(2.0 * math.pi * math.sin(0.2 * math.pi) / 1.0, rel=1e-13)
+    assert sim.pe == pytest.approx(2.0 * (1 + math.cos(0.2 * math.pi)), rel=1e-13)
+
+
+def test_morse_does_not_mix():
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
+                "pair_style morse 2.5\npair_coeff 1 1 1 4 1.1\npair_coeff 2 2 1 4 1.1")
+    with pytest.raises(ScriptError, match="pair coefficients are not set for types 1 2"):
+        sim.command("run 0")
