@@ -1,0 +1,326 @@
+r"""What LAMMPS's classic granular pair styles share (gran/hooke, gran/hooke/history,
+gran/hertz/history): the script arguments, the pair loop over a half list, the contact history and
+the cutoffs. The law itself is ``pdps_granular_contact.lammps_classic.classic_contact``.
+
+Geometry, as LAMMPS's pair_gran_*.cpp: spheres i and j (radii :math:`R_i, R_j`, masses
+:math:`m_i, m_j` per particle) at distance :math:`r < R_i + R_j` overlap by :math:`\delta = R_i + R_j
+- r`, with normal :math:`\mathbf{n} = (\mathbf{x}_i - \mathbf{x}_j)/r`, effective radius
+:math:`R^* = R_iR_j/(R_i + R_j)` and effective mass :math:`m^* = m_im_j/(m_i + m_j)`, or the other
+particle's mass when one of them is in the group of a ``fix freeze`` (the first one defined, as
+LAMMPS). The contact points slide at
+
+.. math::
+
+    \mathbf{v}_{tr} = \mathbf{v}_t - (R_i\boldsymbol\omega_i + R_j\boldsymbol\omega_j)\times\mathbf{n}
+
+(lever arms are the radii, not the distances to the contact point), and the tangential force
+:math:`\mathbf{F}_t` of the law gives both spheres the torque
+:math:`\boldsymbol\tau_{i,j} = -R_{i,j}\,\mathbf{n}\times\mathbf{F}_t`. So a contact conserves the
+total angular momentum only up to :math:`\delta\,\mathbf{n}\times\mathbf{F}_t` per step, as in
+LAMMPS (pair dem/lsd and dem/hertz use the contact point and conserve it exactly).
+
+History (gran/hooke/history, gran/hertz/history): the spring :math:`\boldsymbol\xi` of a contact is
+kept on both spheres in a ``pdps_core.api.ContactHistory`` keyed by the partner's tag, i holding
+:math:`\boldsymbol\xi` and j :math:`-\boldsymbol\xi` (LAMMPS's history transfer between partners);
+a ghost partner's copy goes to its owner, on another rank through its ghost row sent back after the
+pair loop. A contact no force computation saw in a step (the spheres apart) is forgotten at the end
+of that step, as LAMMPS zeroes the spring of a pair that stopped touching. The setup force
+computation of a run reads the springs without growing them (LAMMPS's ``shearupdate = 0``).
+
+The neighbor cutoff of types I, J is, as LAMMPS's, the largest sum of the radii of a moving
+particle of one type and any particle of the other present at the start of the run (two frozen
+particles never need to meet). No potential energy is reported (pe stays 0, as LAMMPS); the virial
+is the core's :math:`\sum \mathbf{r}\cdot\mathbf{f}`.
+"""
+
+import math
+from typing import Literal
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
+from pdps_granular_contact import contact_models, lammps_classic
+
+HISTORY_NAME = "gran_shear"
+DEFAULT_CONTACTS = 16
+
+
+class GranArgs(lammps_classic.ClassicLaw):
+    """``Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]``, as LAMMPS's pair_gran page, and pdps's
+    ``max_contacts N``."""
+    limit_damping: Literal["limit_damping"] | None = None
+    max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, le=1000, unit="dimensionless")
+
+
+@njit(cache=True)
+def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
+    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
+    When ``update`` the slots are made if new and marked as seen this step (a negative slot: no free
+    slot); in setup only an existing slot is read (-1 when there is none)."""
+    jo = owner[j] if owner[j] >= 0 else j
+    if not update:
+        slot = find_slot(partner, i, tag[j])
+        for d in range(3):
+            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
+        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
+    slot_i = open_slot(partner, history, i, tag[j], 3)
+    slot_j = open_slot(partner, history, jo, tag[i], 3)
+    if slot_i < 0 or slot_j < 0:
+        return slot_i, slot_j
+    touched[i, slot_i] = True
+    touched[jo, slot_j] = True
+    for d in range(3):
+        shear[d] = history[i, 3 * slot_i + d]
+    return slot_i, slot_j
+
+
+@njit(cache=True)
+def store_spring(history, owner, i, j, slot_i, slot_j, shear):
+    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
+    jo = owner[j] if owner[j] >= 0 else j
+    for d in range(3):
+        history[i, 3 * slot_i + d] = shear[d]
+        if slot_j >= 0:
+            history[jo, 3 * slot_j + d] = -shear[d]
+
+
+@njit(cache=True)
+def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offsets, neighbors, nlocal,
+                 model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
+                 partner, history, touched):
+    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
+    contact slots are full."""
+    with_history = model != lammps_classic.HOOKE
+    n = np.empty(3)
+    vtr = np.empty(3)
+    shear = np.zeros(3)
+    tangential = np.empty(3)
+    for i in range(nlocal):
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            delx = x[i, 0] - x[j, 0]
+            dely = x[i, 1] - x[j, 1]
+            delz = x[i, 2] - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            radsum = radius[i] + radius[j]
+            if rsq >= radsum * radsum or rsq == 0.0:
+                # coincident centres have no normal (LAMMPS divides by zero): no force
+                continue
+            r = math.sqrt(rsq)
+            n[0] = delx / r
+            n[1] = dely / r
+            n[2] = delz / r
+            vr0 = v[i, 0] - v[j, 0]
+            vr1 = v[i, 1] - v[j, 1]
+            vr2 = v[i, 2] - v[j, 2]
+            v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
+            w0 = radius[i] * omega[i, 0] + radius[j] * omega[j, 0]
+            w1 = radius[i] * omega[i, 1] + radius[j] * omega[j, 1]
+            w2 = radius[i] * omega[i, 2] + radius[j] * omega[j, 2]
+            vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+            vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+            vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+            m_eff = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
+            if mask[i] & freeze_bit:
+                m_eff = rmass[j]
+            if mask[j] & freeze_bit:
+                m_eff = rmass[i]
+            slot_i, slot_j = -1, -1
+            if with_history:
+                slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
+                if update and (slot_i < 0 or slot_j < 0):
+                    return tag[i] if slot_i < 0 else tag[j]
+            r_eff = radius[i] * radius[j] / radsum
+            fn = lammps_classic.classic_contact(model, False, radsum - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
+                                                gamma_n, gamma_t, xmu, limit_damping, update, dt,
+                                                shear, tangential)
+            if with_history and slot_i >= 0:
+                store_spring(history, owner, i, j, slot_i, slot_j, shear)
+            cx = n[1] * tangential[2] - n[2] * tangential[1]
+            cy = n[2] * tangential[0] - n[0] * tangential[2]
+            cz = n[0] * tangential[1] - n[1] * tangential[0]
+            for d in range(3):
+                force = fn * n[d] + tangential[d]
+                f[i, d] += force
+                f[j, d] -= force
+            torque[i, 0] -= radius[i] * cx
+            torque[i, 1] -= radius[i] * cy
+            torque[i, 2] -= radius[i] * cz
+            torque[j, 0] -= radius[j] * cx
+            torque[j, 1] -= radius[j] * cy
+            torque[j, 2] -= radius[j] * cz
+    return -1
+
+
+@njit(cache=True)
+def merge_mirrors(partner, history, touched, index, rows, capacity):
+    """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
+    is (touched flags, partner tags, values) of one ghost. Returns a row with no free slot, or -1."""
+    for r in range(len(index)):
+        i = index[r]
+        for k in range(capacity):
+            if rows[r, k] > 0.5:
+                key = np.int64(rows[r, capacity + k])
+                slot = open_slot(partner, history, i, key, 3)
+                if slot < 0:
+                    return i
+                touched[i, slot] = True
+                for d in range(3):
+                    history[i, 3 * slot + d] = rows[r, 2 * capacity + 3 * k + d]
+    return -1
+
+
+@njit(cache=True)
+def free_stale(partner, touched, nlocal):
+    """Forget the contacts no pair computation touched this step (spheres apart)."""
+    for i in range(nlocal):
+        for s in range(partner.shape[1]):
+            if partner[i, s] >= 0 and not touched[i, s]:
+                partner[i, s] = -1
+
+
+class PairGran(Pair):
+    """Base of the classic granular styles: spheres with radius, per-particle mass and rotation,
+    ghosts carrying v and omega; ``model`` is the law (lammps_classic.HOOKE, ...)."""
+    Args = GranArgs
+    per_atom = ("radius", "rmass", "omega", "torque")
+    ghost_velocity = True
+    ghost_fields = ("omega",)
+    model = lammps_classic.HOOKE
+
+    def __init__(self, sim, args):
+        super().__init__(sim, args)
+        self.history = None
+        self._touched = None
+        self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
+
+    def init(self, ntypes):
+        sim = self.sim
+        if sim.particle_style != "sphere":
+            raise ScriptError(f"pair {self.name} needs atom_style sphere (per-particle radius, mass "
+                              "and rotation)")
+        if self.model != lammps_classic.HOOKE:
+            self.open_history()
+        self.freeze_bit = self.frozen_group_bit(sim)
+        self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
+        self.check_box()
+        cutoffs = super().init(ntypes)
+        self.warn_coarse_timestep(sim)
+        return cutoffs
+
+    def frozen_group_bit(self, sim):
+        """The group bit of the first fix freeze (its particles give a contact the partner's mass)."""
+        for fix in sim.fixes.values():
+            if fix.name == "freeze":
+                return int(sim.groups.bit(fix.group))
+        return 0
+
+    def open_history(self):
+        if self.history is not None:
+            return
+        capacity = self.args.max_contacts
+        particles = self.sim.particles
+        name = f"{HISTORY_NAME}_partner"
+        if particles.has(name) and particles.arrays[name].shape[1] != capacity:
+            raise ScriptError(f"max_contacts cannot change once contacts are stored "
+                              f"(stored: {particles.arrays[name].shape[1]}, asked: {capacity})")
+        self.history = ContactHistory(self.sim, HISTORY_NAME, width=3, capacity=capacity)
+
+    def largest_radii(self, ntypes):
+        """Largest radius of each type among the moving and among the frozen particles present."""
+        sim, p = self.sim, self.sim.particles
+        n = p.nlocal
+        frozen = (p.mask[:n] & np.uint32(self.freeze_bit)) != 0
+        moving_max, frozen_max = np.zeros(ntypes + 1), np.zeros(ntypes + 1)
+        for t in range(1, ntypes + 1):
+            of_type = p.type[:n] == t
+            for table, chosen in ((moving_max, of_type & ~frozen), (frozen_max, of_type & frozen)):
+                table[t] = sim.comm.max(float(p.radius[:n][chosen].max()) if chosen.any() else 0.0)
+        return moving_max, frozen_max
+
+    def check_box(self):
+        largest = 2.0 * float(max(self.radius_moving.max(), self.radius_frozen.max()))
+        for d, axis in enumerate("xyz"[: self.sim.dimension]):
+            length = float(self.sim.box.length[d])
+            if self.sim.box.periodic[d] and length <= largest:
+                raise ScriptError(f"pair {self.name}: the periodic box is thinner along {axis} ({length:g}) "
+                                  f"than the largest particle (diameter {largest:g}): a particle would "
+                                  "touch its own image")
+
+    def init_one(self, i, j):
+        moving, frozen = self.radius_moving, self.radius_frozen
+        return float(max(moving[i] + moving[j], frozen[i] + moving[j], moving[i] + frozen[j]))
+
+    # ---- time-step advice -------------------------------------------------------------------------
+    def timestep_limits(self, sim):
+        """{"rayleigh": None, "hertz": None, "contact": t_c}: the Hooke contact time of the two
+        lightest particles (lammps_classic.contact_time); for gran/hertz/history the elastic Hertz
+        time of the lightest, smallest particle hitting its copy at twice the largest speed (inf
+        when nothing moves)."""
+        p = sim.particles
+        n = p.nlocal
+        lightest = sim.comm.min(float(p.rmass[:n].min()) if n else math.inf)
+        if not math.isfinite(lightest):
+            return {"rayleigh": None, "hertz": None, "contact": math.inf}
+        m_eff = 0.5 * lightest
+        if self.model != lammps_classic.HERTZ_HISTORY:
+            return {"rayleigh": None, "hertz": None,
+                    "contact": lammps_classic.contact_time(self.kn, self.gamma_n, m_eff)}
+        speed = sim.comm.max(float(np.sqrt((p.v[:n] ** 2).sum(axis=1)).max()) if n else 0.0)
+        smallest = sim.comm.min(float(p.radius[:n].min()))
+        if speed == 0.0 or self.kn == 0.0:
+            return {"rayleigh": None, "hertz": None, "contact": math.inf}
+        # LAMMPS's Kn sqrt(R* delta) delta is Hertz's 4/3 E* sqrt(R*) delta^3/2 with E* = 3 Kn / 4
+        hertz = contact_models.hertz_contact_time(0.75 * self.kn, 0.5 * smallest, m_eff, 2.0 * speed)
+        return {"rayleigh": None, "hertz": None, "contact": hertz}
+
+    def warn_coarse_timestep(self, sim):
+        contact = self.timestep_limits(sim)["contact"]
+        if math.isfinite(contact) and sim.dt > contact / 10.0:
+            sim.warn(f"pair {self.name}: timestep {sim.dt:g} is more than the shortest contact "
+                     f"({contact:.3g}) / 10: collisions lose restitution; use timestep <= {contact / 10.0:.3g}")
+
+    # ---- forces -----------------------------------------------------------------------------------
+    def compute(self, sim, nlist, eflag, vflag):
+        p = sim.particles
+        update = not sim.in_setup
+        owner = sim.comm.owners(p)
+        if self.history is not None:
+            partner, values = self.history.partner, self.history.values
+            capacity = self.history.capacity
+        else:
+            partner, values, capacity = np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2
+        touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
+        bad = gran_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.mask, p.f, p.torque, p.tag, owner,
+                           nlist.offsets, nlist.neighbors, p.nlocal, self.model, self.kn, self.kt,
+                           self.gamma_n, self.gamma_t, self.args.xmu, self.args.limit_damping is not None,
+                           np.uint32(self.freeze_bit), sim.dt, update, partner, values, touched)
+        if self.history is not None and bad < 0 and update:
+            bad = self.collect_mirrors(sim, owner, touched)
+            free_stale(partner, touched, p.nlocal)
+        if bad >= 0:
+            raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "
+                                  f"raise max_contacts of pair_style {self.name}")
+        self.energy = 0.0
+
+    def touched_flags(self, rows, capacity):
+        """Which slots a contact touched this step, zeroed; reused between steps."""
+        if self._touched is None or self._touched.shape[0] < rows or self._touched.shape[1] != capacity:
+            self._touched = np.zeros((max(rows, 1), capacity), dtype=np.bool_)
+        else:
+            self._touched[:rows] = False
+        return self._touched
+
+    def collect_mirrors(self, sim, owner, touched):
+        """Send springs written into rows of ghosts owned elsewhere back to their owners."""
+        if sim.comm.nprocs == 1:
+            return -1
+        p, history = sim.particles, self.history
+        ghosts = slice(p.nlocal, p.nall)
+        remote = (owner[ghosts] < 0)[:, None]
+        rows = np.hstack([touched[ghosts] & remote, history.partner[ghosts],
+                          history.values[ghosts]]).astype(np.float64)
+        index, back = sim.comm.reverse_rows(rows)
+        bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
+        return -1 if bad < 0 else int(p.tag[bad])

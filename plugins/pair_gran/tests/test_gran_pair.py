@@ -1,0 +1,183 @@
+"""pair gran/hooke, gran/hooke/history and gran/hertz/history: LAMMPS's recorded trajectories of
+two- and three-sphere scenes, and the force law against its formulas."""
+
+import math
+
+import numpy as np
+import pytest
+
+M1 = 1.9098593171027440      # density of a sphere of diameter 1 and mass 1
+HOOKE = "200000.0 NULL 50.0 NULL 0.5 1"
+
+CASES = ["hooke_history_head_on", "hooke_history_oblique", "hooke_oblique", "hooke_history_dampflag0",
+         "hertz_history_limit_damping", "hooke_history_stick_on_frozen", "hertz_history_slide_on_frozen",
+         "hooke_history_three_spheres"]
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_trajectories_equal_lammps(lammps_case, name):
+    """x, v, omega of every particle at every dumped step equal LAMMPS's to 1e-12 of their scale
+    (data/NAME.ref), and a contact changed the motion."""
+    record, table = lammps_case(name)
+    assert not np.allclose(record.v[max(table) - 1], record.v[0])
+
+
+def test_head_on_collision_rebounds_with_the_restitution_of_the_linear_law(scene):
+    """e = exp(-gamma_n t_c / 2), t_c = pi / sqrt(kn/m* - gamma_n^2/4), m* = 1/2: the discrete
+    collision converges to it at first order in the time step (LAMMPS's own run of
+    hooke_history_head_on, 50 steps per contact, rebounds 0.35 % faster)."""
+    kn, gamma_n, m_eff = 200000.0, 50.0, 0.5
+    t_c = math.pi / math.sqrt(kn / m_eff - gamma_n ** 2 / 4)
+    exact = math.exp(-gamma_n * t_c / 2)
+    errors = []
+    for steps in (250, 1000):
+        sim = scene(f"gran/hooke/history {HOOKE}", [(1, 1.0, M1, (4.5, 5.0, 5.0), (1.0, 0.0, 0.0), (0, 0, 0)),
+                                                    (1, 1.0, M1, (5.5, 5.0, 5.0), (-1.0, 0.0, 0.0), (0, 0, 0))],
+                    extra=f"timestep {t_c / steps!r}\nfix 1 all nve/sphere\n")
+        sim.command(f"run {int(1.1 * steps)}")
+        v = sim.v[np.argsort(sim.tag)]
+        assert v[1, 0] == pytest.approx(-v[0, 0], rel=1e-12)
+        errors.append(abs(-v[0, 0] - exact) / exact)
+    assert errors[1] < 3e-4
+    assert errors[0] > 3.0 * errors[1]
+
+
+def pair_forces(sim):
+    """Forces and torques (id order) of a run 0: the setup forces, the spring not advanced."""
+    sim.command("run 0")
+    order = np.argsort(sim.tag)
+    return sim.f[order].copy(), sim.particles.torque[: sim.nlocal][order].copy()
+
+
+def contact(xi, xj, vi, vj, wi, wj, ri, rj):
+    """(overlap, n, v_n, v_tr) of a contact as LAMMPS's pair gran styles define them."""
+    d = np.subtract(xi, xj)
+    r = np.linalg.norm(d)
+    n = d / r
+    vr = np.subtract(vi, vj)
+    v_n = vr @ n
+    vtr = vr - v_n * n - np.cross(ri * np.asarray(wi) + rj * np.asarray(wj), n)
+    return ri + rj - r, n, v_n, vtr
+
+
+# sphere 1 (d 1, density 2) and sphere 2 (d 1.4, density 1) overlapping, moving and spinning
+TWO = [(1, 1.0, 2.0, (4.5, 5.0, 5.0), (1.0, 0.3, 0.0), (0.0, 0.0, 5.0)),
+       (1, 1.4, 1.0, (5.68, 5.1, 5.05), (-0.5, 0.0, 0.2), (1.0, -2.0, 0.0))]
+
+
+def two_sphere_contact():
+    (_, di, rhoi, xi, vi, wi), (_, dj, rhoj, xj, vj, wj) = TWO
+    mi, mj = (rho * math.pi * d ** 3 / 6 for rho, d in ((rhoi, di), (rhoj, dj)))
+    return contact(xi, xj, vi, vj, wi, wj, di / 2, dj / 2), mi, mj
+
+
+@pytest.mark.parametrize("style", ["gran/hooke", "gran/hooke/history"])
+def test_setup_forces_follow_lammps_formulas(scene, style):
+    """F_n = kn delta - m* gamma_n v_n; F_t = -m* gamma_t v_tr (the spring is zero at setup, and
+    under the Coulomb limit), gran/hooke: min(mu |F_n|, m* gamma_t |v_tr|); torques -R n x F_t."""
+    sim = scene(f"{style} 200000.0 NULL 50.0 NULL 0.5 1", TWO)
+    f, torque = pair_forces(sim)
+    (overlap, n, v_n, vtr), mi, mj = two_sphere_contact()
+    m_eff = mi * mj / (mi + mj)
+    fn = 200000.0 * overlap - m_eff * 50.0 * v_n
+    ft = -m_eff * 25.0 * vtr
+    if style == "gran/hooke":
+        ft *= min(1.0, 0.5 * abs(fn) / np.linalg.norm(ft))
+    assert f[0] == pytest.approx(fn * n + ft, rel=1e-12)
+    assert f[1] == pytest.approx(-(fn * n + ft), rel=1e-12)
+    assert torque[0] == pytest.approx(-0.5 * np.cross(n, ft), rel=1e-12)
+    assert torque[1] == pytest.approx(-0.7 * np.cross(n, ft), rel=1e-12)
+
+
+@pytest.mark.parametrize("units, nktv2p", [("lj", 1.0), ("real", 68568.415)])
+def test_hertz_scales_every_term_by_polyhertz_and_stiffness_by_nktv2p(scene, units, nktv2p):
+    """F_n = sqrt(delta R*) (kn/nktv2p delta - m* gamma_n v_n), F_t = -sqrt(delta R*) m* gamma_t v_tr
+    at setup; in real units the weak spring lets F_t exceed mu |F_n|."""
+    sim = scene("gran/hertz/history 2000000.0 NULL 400.0 NULL 0.5 1", TWO, setup=f"units {units}")
+    f, _ = pair_forces(sim)
+    (overlap, n, v_n, vtr), mi, mj = two_sphere_contact()
+    m_eff = mi * mj / (mi + mj)
+    polyhertz = math.sqrt(overlap * 0.5 * 0.7 / 1.2)
+    fn = polyhertz * (2.0e6 / nktv2p * overlap - m_eff * 400.0 * v_n)
+    ft = -polyhertz * m_eff * 200.0 * vtr
+    if np.linalg.norm(ft) > 0.5 * abs(fn):
+        # over the Coulomb limit with a spring of zero length (a new contact): LAMMPS drops F_t
+        ft = np.zeros(3)
+    assert (units == "real") == (not ft.any())
+    assert f[0] == pytest.approx(fn * n + ft, rel=1e-12)
+
+
+def test_null_gives_lammps_defaults_and_dampflag_0_switches_tangential_damping_off(scene):
+    sim = scene(f"gran/hooke/history {HOOKE}", TWO)
+    assert (sim.pair.kt, sim.pair.gamma_t) == (pytest.approx(2 / 7 * 200000.0), 25.0)
+    off = scene("gran/hooke/history 200000.0 NULL 50.0 30.0 0.5 0", TWO)
+    f, torque = pair_forces(off)
+    (overlap, n, v_n, _), mi, mj = two_sphere_contact()
+    assert off.pair.gamma_t == 0.0
+    assert f[0] == pytest.approx((200000.0 * overlap - mi * mj / (mi + mj) * 50.0 * v_n) * n, rel=1e-12)
+    assert torque == pytest.approx(np.zeros((2, 3)), abs=1e-12)
+
+
+def test_limit_damping_keeps_a_separating_contact_from_pulling(scene):
+    """Overlap 0.001 separating at 20: kn delta - m* gamma_n v_n = 200 - 500 < 0 pulls, unless
+    limit_damping."""
+    apart = [(1, 1.0, M1, (5.0, 5.0, 5.0), (-10.0, 0.0, 0.0), (0, 0, 0)),
+             (1, 1.0, M1, (5.999, 5.0, 5.0), (10.0, 0.0, 0.0), (0, 0, 0))]
+    pulled, _ = pair_forces(scene(f"gran/hooke {HOOKE}", apart))
+    assert pulled[0] == pytest.approx([300.0, 0.0, 0.0], rel=1e-9)     # the left one pulled right
+    limited, _ = pair_forces(scene(f"gran/hooke {HOOKE} limit_damping", apart))
+    assert limited == pytest.approx(np.zeros((2, 3)), abs=1e-12)
+
+
+def test_a_frozen_partner_gives_the_contact_the_other_particles_mass(scene):
+    """m* = m_i when j is in the group of fix freeze (LAMMPS's rule)."""
+    particles = [(1, 1.0, M1, (5.0, 5.0, 5.0), (0.0, 0.0, 0.0), (0, 0, 0)),
+                 (1, 1.0, 3 * M1, (5.0, 5.0, 5.99), (0.0, 0.0, -1.0), (0, 0, 0))]
+    sim = scene(f"gran/hooke {HOOKE}", particles,
+                extra="group base id 1\nfix 1 base freeze\n")
+    f, _ = pair_forces(sim)
+    # the base is frozen: its force is zeroed, the top's damping uses its own mass 3
+    assert f[1] == pytest.approx([0.0, 0.0, 200000.0 * 0.01 - 3.0 * 50.0 * (-1.0)], rel=1e-12)
+    assert f[0] == pytest.approx(np.zeros(3), abs=1e-12)
+
+
+def test_a_contact_across_the_periodic_boundary_and_rebuilt_lists_keeps_its_spring(scene):
+    """A sphere pressed onto a frozen one and pulled sideways below the Coulomb limit (it rolls on
+    its spring): the same motion in the middle of the box with lists kept, and straddling the
+    periodic corner (its partner a ghost) with lists rebuilt and particles re-sorted every step."""
+    def pressed(offset, lists):
+        base, top = np.add((5.0, 5.0, 5.0), offset), np.add((5.0, 5.0, 5.99999), offset)
+        spheres = [(1, 1.0, M1, tuple(map(float, base)), (0, 0, 0), (0, 0, 0)),
+                   (1, 1.0, M1, tuple(map(float, top % 10.0)), (0, 0, 0), (0, 0, 0))]
+        sim = scene(f"gran/hooke/history {HOOKE}", spheres, extra=lists + """
+            group base id 1
+            group top id 2
+            fix 1 all nve/sphere
+            fix 2 top addforce 0.2 0.0 -1.0
+            fix 3 base freeze
+            """)
+        sim.command("run 3000")
+        order = np.argsort(sim.tag)
+        x = sim.x[order] + sim.particles.image[: sim.nlocal][order] * sim.box.length
+        apart = (x[1] - x[0] + 5.0) % 10.0 - 5.0        # the nearest image
+        return apart, sim.v[order][1], sim.particles.omega[: sim.nlocal][order][1]
+    middle = pressed((0.0, 0.0, 0.0), "")
+    corner = pressed((4.7, 0.0, 4.7), "neigh_modify delay 0 every 1 check no\natom_modify sort 1 1.0\n")
+    for a, b in zip(middle, corner):
+        assert b == pytest.approx(a, abs=1e-10)
+    # the top sphere rolled on the base without losing it: it moved sideways and still touches
+    assert 0.001 < middle[0][0] and np.linalg.norm(middle[0]) < 1.0
+
+
+def test_coarse_timestep_is_warned(scene):
+    """The lightest sphere (density 2, d 1: m = pi/3) meets its copy in t_c = pi / sqrt(kn/m* -
+    gamma_n^2/4) = 0.00508: timestep 0.001 resolves that with 5 steps."""
+    sim = scene(f"gran/hooke/history {HOOKE}", TWO, extra="timestep 0.001\n")
+    warnings = []
+    sim.warn = warnings.append
+    sim.command("run 0")
+    m_eff = math.pi / 6
+    t_c = math.pi / math.sqrt(200000.0 / m_eff - 625.0)
+    assert sim.pair.timestep_limits(sim)["contact"] == pytest.approx(t_c, rel=1e-12)
+    assert warnings == [f"pair gran/hooke/history: timestep 0.001 is more than the shortest contact "
+                        f"({t_c:.3g}) / 10: collisions lose restitution; use timestep <= {t_c / 10:.3g}"]

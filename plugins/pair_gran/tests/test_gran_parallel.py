@@ -1,0 +1,55 @@
+"""A settling bed of frictional spheres (gran/hooke/history on a wall/gran floor) gives the same
+kinetic energies on 1 and 2 ranks: springs of contacts across the rank boundary are kept by both
+sides and merged back on their owners (as LAMMPS's reverse communication of history)."""
+
+import numpy as np
+import pytest
+
+from pdps_core.testing import run_ranks, thermo_rows
+
+
+def bed(path, n_side=(12, 6, 4), seed=11):
+    """Polydisperse spheres (d 0.8-1.2) on a loose lattice over a floor, with random velocities."""
+    rng = np.random.default_rng(seed)
+    cells = np.mgrid[0:n_side[0], 0:n_side[1], 0:n_side[2]].reshape(3, -1).T
+    x = cells * 1.3 + np.array([0.7, 0.7, 0.7]) + rng.uniform(-0.05, 0.05, size=(len(cells), 3))
+    d = rng.uniform(0.8, 1.2, size=len(x))
+    v = rng.normal(scale=0.5, size=x.shape)
+    lines = ["bed", "", f"{len(x)} atoms", "1 atom types", "", "0 15.6 xlo xhi", "0 7.8 ylo yhi",
+             "0 12 zlo zhi", "", "Atoms # sphere", ""]
+    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
+              for k, p in enumerate(x, 1)]
+    lines += ["", "Velocities", ""]
+    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def kinetic_energies(tmp_path, ranks):
+    bed(tmp_path / "bed.data")
+    done = run_ranks("""\
+        units lj
+        atom_style sphere
+        boundary p p f
+        comm_modify vel yes
+        read_data bed.data
+        pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 1
+        pair_coeff * *
+        timestep 0.0001
+        fix 1 all nve/sphere
+        fix 2 all gravity 10.0 vector 0 0 -1
+        fix 3 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 NULL
+        thermo_style custom step ke
+        thermo_modify format float %.15g
+        thermo 500
+        run 4000
+        """, ranks, tmp_path)
+    return np.array(thermo_rows(done.stdout))
+
+
+def test_same_settling_on_1_and_2_ranks(tmp_path):
+    one = kinetic_energies(tmp_path, 1)
+    two = kinetic_energies(tmp_path, 2)
+    assert one[:, 0].tolist() == list(range(0, 4001, 500))
+    # free fall would add (g t)^2 / 2 = 8 per sphere by t = 0.4: the floor and the contacts took some
+    assert one[-1, 1] < one[0, 1] + 0.6 * 8.0
+    assert two == pytest.approx(one, rel=1e-9)
