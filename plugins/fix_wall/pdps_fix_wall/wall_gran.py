@@ -1,0 +1,270 @@
+r"""Fix ``wall/gran``: LAMMPS's frictional granular walls (flat planes and a cylinder about the z
+axis) with the classic laws of pair gran/hooke, gran/hooke/history and gran/hertz/history (LAMMPS's
+fix wall/gran, older positional syntax).
+
+A wall is body j of infinite mass and no spin. Particle i (radius :math:`R_i`, mass :math:`m_i`) at
+distance :math:`d < R_i` from it overlaps it by :math:`\delta = R_i - d`, with normal
+:math:`\mathbf{n}` from the wall to the centre of i, :math:`m^* = m_i` and
+:math:`R^* = R_i` (planes) or :math:`R^* = R_iR_w/(R_i + R_w)` with :math:`R_w = -2R_c` inside and
+:math:`+2R_c` outside a cylinder of radius :math:`R_c` (as LAMMPS). With the wall's velocity
+:math:`\mathbf{v}_w`, :math:`v_n = (\mathbf{v}_i - \mathbf{v}_w)\cdot\mathbf{n}`, the tangential part
+:math:`\mathbf{v}_t` and :math:`\mathbf{v}_{tr} = \mathbf{v}_t - R_i\boldsymbol\omega_i\times
+\mathbf{n}`, the force on i is that of ``pdps_granular_contact.lammps_classic``:
+
+.. math::
+
+    F_n = s\,(k_n\delta - m_i\gamma_n v_n), \qquad
+    \mathbf{F}_t = -(k_t\sqrt{\delta R^*}\,\boldsymbol\xi + s\,m_i\gamma_t\mathbf{v}_{tr}) \ \
+    (|\mathbf{F}_t| \le \mu|F_n|), \qquad \boldsymbol\tau_i = -R_i\,\mathbf{n}\times\mathbf{F}_t
+
+(:math:`s = 1`, or :math:`\sqrt{\delta R^*}` for hertz/history; hooke has no spring,
+:math:`\mathbf{F}_t = -\min(\mu|F_n|, m_i\gamma_t|\mathbf{v}_{tr}|)\,\hat{\mathbf{v}}_{tr}`). Each
+particle keeps one spring :math:`\boldsymbol\xi` for its wall contact (history styles), grown by
+:math:`\mathbf{v}_{tr}\Delta t`, projected onto the wall's tangent plane, cut back at the Coulomb
+limit to :math:`-(\mathbf{F}_t + s\,m_i\gamma_t\mathbf{v}_{tr})/k_t`, and zeroed when the particle
+leaves the wall; the setup force computation of a run does not advance it. The spring's stiffness
+:math:`k_t\sqrt{\delta R^*}` also for hooke/history, and the cut back by :math:`k_t` alone, are how
+LAMMPS's fix wall/gran (22 Jul 2025, through its granular sub-models) differs from pair
+gran/hooke/history and gran/hertz/history; pdps follows it (measured: trajectories equal to 1e-15).
+
+Wall styles:
+
+- ``xplane LO HI``, ``yplane LO HI``, ``zplane LO HI``: planes at coordinate LO and HI (NULL: no
+  such plane). A particle is pushed by the nearer of the two only: by LO along + when
+  :math:`x - LO < HI - x`, else by HI along -, whenever its distance to that plane is below its
+  radius (also from the far side, as LAMMPS).
+- ``zcylinder RADIUS``: the cylinder :math:`x^2 + y^2 = R_c^2` about the z axis, touched from
+  inside or outside.
+
+Keywords:
+
+- ``wiggle dim amplitude period``: the wall oscillates along dim (x, y or z; z only for zcylinder):
+  a plane along dim moves to :math:`LO + A(1 - \cos\omega t)` (and so HI), :math:`\omega = 2\pi/T`,
+  and every wall has the velocity :math:`A\omega\sin\omega t` along dim, t counted from the step the
+  fix was defined (LAMMPS).
+- ``shear dim vshear``: the wall slides with velocity vshear along dim (not its own normal), which
+  only the friction feels. For zcylinder, ``shear z`` slides it along its axis and ``shear x`` or
+  ``shear y`` turns it about the axis with surface speed vshear: :math:`\mathbf{v}_w = v_s\,(y, -x,
+  0)/\sqrt{x^2+y^2}` at the particle.
+
+Parameters (units as the pair styles): ``Kn``, ``Kt`` (force/distance; pressure for hertz/history,
+divided by nktv2p; Kt NULL: 2/7 Kn), ``gamma_n``, ``gamma_t`` (1/time; gamma_t NULL: gamma_n / 2),
+``xmu`` (0 to 10000), ``dampflag`` (0: gamma_t = 0), ``limit_damping`` (optional word: the normal
+force is never attractive).
+
+Syntax::
+
+    fix ID GROUP wall/gran STYLE Kn Kt gamma_n gamma_t xmu dampflag [limit_damping] WALLSTYLE args
+        [wiggle dim amplitude period] [shear dim vshear]
+
+    STYLE = hooke | hooke/history | hertz/history
+    WALLSTYLE args = xplane|yplane|zplane LO HI  |  zcylinder RADIUS
+
+Differences from LAMMPS: a rotating cylinder (``zcylinder ... shear x|y``) has the wall velocity of
+each particle's own contact point (LAMMPS adds every contacting particle's into one running sum);
+with gamma_n = 0 the tangential damping is m_i gamma_t (LAMMPS's fix computes gamma_t/gamma_n and
+gives NaN); a particle whose centre lies exactly on the wall feels no force (no normal). The
+``region`` wall style and ``contacts``/``temperature`` keywords of LAMMPS are not supported.
+
+Example (the benchmark kit's in.gran_box)::
+
+    fix w all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 40.0
+"""
+
+import math
+from typing import Literal
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args
+from pdps_granular_contact import lammps_classic
+from pdps_granular_contact.lammps_classic import NullableFloat
+
+FAR = 1.0e20                    # a NULL plane, as LAMMPS's BIG
+XPLANE, YPLANE, ZPLANE, ZCYLINDER = 0, 1, 2, 3
+WALL_STYLES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "zcylinder": ZCYLINDER}
+AXES = {"x": 0, "y": 1, "z": 2}
+Axis = Literal["x", "y", "z"]
+
+
+class LawStyle(StyleArgs):
+    style: Literal["hooke", "hooke/history", "hertz/history"]
+
+
+class WallStyle(StyleArgs):
+    wallstyle: Literal["xplane", "yplane", "zplane", "zcylinder"]
+
+
+class Motion(StyleArgs):
+    wiggle: tuple[Axis, float, float] | None = keyword(None, unit="distance")
+    shear: tuple[Axis, float] | None = keyword(None, unit="velocity")
+
+
+class PlaneWall(Motion):
+    lo: NullableFloat = param(unit="distance")
+    hi: NullableFloat = param(unit="distance")
+
+
+class CylinderWall(Motion):
+    radius: float = param(gt=0, unit="distance")
+
+
+@njit(cache=True)
+def wall_gran_forces(x, v, omega, radius, rmass, f, torque, mask, groupbit, nlocal, wallstyle, lo,
+                     hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
+                     limit_damping, dt, update, history):
+    """Wall forces and torques on the group's particles. ``spin``: surface speed of a cylinder
+    turning about z (0 otherwise); ``history`` (nlocal, 3) springs, or one scratch row for hooke."""
+    with_history = model != lammps_classic.HOOKE
+    d = np.empty(3)
+    n = np.empty(3)
+    vw = np.empty(3)
+    vtr = np.empty(3)
+    tangential = np.empty(3)
+    for i in range(nlocal):
+        if not (mask[i] & groupbit):
+            continue
+        d[:] = 0.0
+        r_wall = 0.0
+        for k in range(3):
+            vw[k] = wall_velocity[k]
+        touching = True
+        if wallstyle == ZCYLINDER:
+            across = math.sqrt(x[i, 0] * x[i, 0] + x[i, 1] * x[i, 1])
+            gap = cylinder - across
+            if gap > radius[i] or across == 0.0:
+                touching = False
+            else:
+                d[0] = -gap / across * x[i, 0]
+                d[1] = -gap / across * x[i, 1]
+                r_wall = -2.0 * cylinder if across < cylinder else 2.0 * cylinder
+                vw[0] += spin * x[i, 1] / across
+                vw[1] -= spin * x[i, 0] / across
+        else:
+            below = x[i, wallstyle] - lo
+            above = hi - x[i, wallstyle]
+            d[wallstyle] = below if below < above else -above
+        rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+        if not touching or rsq >= radius[i] * radius[i] or rsq == 0.0:
+            if with_history:
+                history[i, :] = 0.0
+            continue
+        r = math.sqrt(rsq)
+        for k in range(3):
+            n[k] = d[k] / r
+        r_eff = radius[i] if r_wall == 0.0 else radius[i] * r_wall / (radius[i] + r_wall)
+        vr0 = v[i, 0] - vw[0]
+        vr1 = v[i, 1] - vw[1]
+        vr2 = v[i, 2] - vw[2]
+        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
+        w0 = radius[i] * omega[i, 0]
+        w1 = radius[i] * omega[i, 1]
+        w2 = radius[i] * omega[i, 2]
+        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+        shear = history[i] if with_history else history[0]
+        fn = lammps_classic.classic_contact(model, True, radius[i] - r, r_eff, n, v_n, vtr, rmass[i], kn, kt,
+                                            gamma_n, gamma_t, xmu, limit_damping, update, dt, shear,
+                                            tangential)
+        for k in range(3):
+            f[i, k] += fn * n[k] + tangential[k]
+        torque[i, 0] -= radius[i] * (n[1] * tangential[2] - n[2] * tangential[1])
+        torque[i, 1] -= radius[i] * (n[2] * tangential[0] - n[0] * tangential[2])
+        torque[i, 2] -= radius[i] * (n[0] * tangential[1] - n[1] * tangential[0])
+
+
+class FixWallGran(Fix):
+    name = "wall/gran"
+    usage = ("fix ID GROUP wall/gran hooke|hooke/history|hertz/history Kn Kt gamma_n gamma_t xmu dampflag "
+             "[limit_damping] xplane|yplane|zplane LO HI | zcylinder RADIUS [wiggle dim A T] [shear dim V]")
+
+    class Args(StyleArgs):
+        words: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        if sim.particle_style != "sphere":
+            raise ScriptError("fix wall/gran needs atom_style sphere (per-particle radius, mass and "
+                              "rotation)")
+        words = list(args.words)
+        self.model = lammps_classic.MODELS[parse_args(LawStyle, words[:1], self.usage).style]
+        law = parse_args(lammps_classic.ClassicLaw, words[1:7], self.usage)
+        self.kn, self.kt, self.gamma_n, self.gamma_t = law.constants(self.model, sim.units.nktv2p)
+        self.xmu = law.xmu
+        rest = words[7:]
+        self.limit_damping = rest[:1] == ["limit_damping"]
+        rest = rest[1:] if self.limit_damping else rest
+        wallstyle = parse_args(WallStyle, rest[:1], self.usage).wallstyle
+        self.wallstyle = WALL_STYLES[wallstyle]
+        if self.wallstyle == ZCYLINDER:
+            wall = parse_args(CylinderWall, rest[1:], self.usage)
+            self.lo, self.hi, self.cylinder = 0.0, 0.0, wall.radius
+        else:
+            wall = parse_args(PlaneWall, rest[1:], self.usage)
+            self.lo = -FAR if wall.lo is None else wall.lo
+            self.hi = FAR if wall.hi is None else wall.hi
+            self.cylinder = 0.0
+        self.check_motion(sim, wallstyle, wall)
+        self.wiggle, self.shear = wall.wiggle, wall.shear
+        self.time_origin = sim.step
+        self.spring = None
+        if self.model != lammps_classic.HOOKE:
+            name = f"wall_gran_{id}"
+            sim.particles.request(name, width=3)
+            self.spring = name
+
+    def check_motion(self, sim, wallstyle, wall):
+        periodic = sim.box.periodic
+        if self.wallstyle == ZCYLINDER and (periodic[0] or periodic[1]):
+            raise ScriptError("zcylinder needs a box not periodic in x and y (boundary f or s there)")
+        if self.wallstyle != ZCYLINDER and periodic[self.wallstyle]:
+            raise ScriptError(f"{wallstyle} needs a box not periodic in {'xyz'[self.wallstyle]} "
+                              "(boundary f or s there)")
+        if wall.wiggle and wall.shear:
+            raise ScriptError("a wall can wiggle or shear, not both")
+        if wall.wiggle:
+            dim, _, period = wall.wiggle
+            if not period > 0.0:
+                raise ScriptError(f"wiggle period must be > 0 (got {period:g})")
+            if self.wallstyle == ZCYLINDER and dim != "z":
+                raise ScriptError(f"a zcylinder wiggles along z only (got wiggle {dim})")
+        if wall.shear and self.wallstyle != ZCYLINDER and AXES[wall.shear[0]] == self.wallstyle:
+            raise ScriptError(f"shear {wall.shear[0]} would move a {wallstyle} wall along its own normal; "
+                              "shear along a direction in the plane")
+
+    def wall_state(self, sim):
+        """(lo, hi, wall velocity, cylinder surface speed) at the current step."""
+        lo, hi, velocity, spin = self.lo, self.hi, np.zeros(3), 0.0
+        if self.wiggle:
+            dim, amplitude, period = self.wiggle
+            axis = AXES[dim]
+            frequency = 2.0 * math.pi / period
+            phase = frequency * (sim.step - self.time_origin) * sim.dt
+            if self.wallstyle == axis:
+                lo = lo + amplitude - amplitude * math.cos(phase)
+                hi = hi + amplitude - amplitude * math.cos(phase)
+            velocity[axis] = amplitude * frequency * math.sin(phase)
+        elif self.shear:
+            dim, speed = self.shear
+            if self.wallstyle == ZCYLINDER and dim != "z":
+                spin = speed
+            else:
+                velocity[AXES[dim]] = speed
+        return lo, hi, velocity, spin
+
+    def setup(self, sim):
+        self.forces(sim, update=False)
+
+    def post_force(self, sim):
+        self.forces(sim, update=True)
+
+    def forces(self, sim, update):
+        p = sim.particles
+        lo, hi, velocity, spin = self.wall_state(sim)
+        history = p.arrays[self.spring] if self.spring else np.zeros((1, 3))
+        wall_gran_forces(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.mask,
+                         np.uint32(sim.groups.bit(self.group)), p.nlocal, self.wallstyle, lo, hi,
+                         self.cylinder, velocity, spin, self.model, self.kn, self.kt, self.gamma_n,
+                         self.gamma_t, self.xmu, self.limit_damping, sim.dt, update, history)
