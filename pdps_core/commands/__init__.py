@@ -12,4 +12,4 @@ def command(*names):
     return register
 
 
-from . import control, create_atoms, edit_atoms, geometry, minimize, particles, restart, setup, styles  # noqa: E402,F401  (they register)
+from . import control, create_atoms, edit_atoms, geometry, minimize, particles, restart, setup, styles, velocity  # noqa: E402,F401  (they register)

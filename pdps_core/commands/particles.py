@@ -1,19 +1,16 @@
 """Particle commands: create_particle (PDPS; LAMMPS's create_atoms is in create_atoms.py), read_data,
-mass, group, velocity."""
+mass, group (velocity is in velocity.py)."""
 
 import itertools
 import math
 
 import numpy as np
-from numba import njit
 
 from ..errors import ScriptError
 from ..state import limits
-from ..random import particle_gaussians, particle_uniforms
-from ..state import observables as obs
 from . import command
 from .geometry import make_box
-from .words import choice, count, integer, number, type_range, yes_no
+from .words import choice, count, integer, number, type_range
 
 SPHERE_KEYWORDS = ("diameter", "density")
 
@@ -327,92 +324,6 @@ def _selected(values, words, style, usage):
             raise ScriptError(f"{style} range {word} must have A <= B and a stride >= 1")
         member |= (values >= first) & (values <= last) & ((values - first) % stride == 0)
     return member
-
-
-@command("velocity")
-def velocity(sim, args):
-    usage = ("velocity GROUP create T SEED [uniform|gaussian] [dist uniform|gaussian] [mom yes|no] "
-             "| velocity GROUP set VX VY VZ (NULL keeps a component)")
-    if len(args) < 2:
-        raise ScriptError(f"expected a group and a style; usage: {usage}")
-    sim.require_box("velocity")
-    name = sim.require_group(args[0])
-    style = choice(args[1], "velocity style", ("create", "set"))
-    chosen = sim.groups.select(sim, name)
-    v = sim.particles.v[: sim.particles.nlocal]
-    if style == "set":
-        count(args[2:], 3, usage)
-        # every value is read before any is set, so a bad one changes nothing
-        values = [None if word == "NULL" else number(word, "v" + axis, low=-limits.MAX_COORDINATE,
-                                                      high=limits.MAX_COORDINATE)
-                  for axis, word in zip("xyz", args[2:5])]
-        for d, value in enumerate(values):
-            if value is not None:
-                v[chosen, d] = value
-        return
-    if len(args) < 4:
-        raise ScriptError(f"expected a temperature and a seed; usage: {usage}")
-    temp = number(args[2], "temperature", low=0.0)
-    seed = integer(args[3], "seed", low=1, high=2 ** 63 - 1)
-    dist, momentum, rest = "uniform", True, args[4:]
-    i = 0
-    while i < len(rest):
-        word = rest[i]
-        if word in ("uniform", "gaussian"):
-            dist, i = word, i + 1
-        elif word in ("dist", "mom", "loop") and i + 1 < len(rest):
-            if word == "dist":
-                dist = choice(rest[i + 1], "dist", ("uniform", "gaussian"))
-            elif word == "mom":
-                momentum = yes_no(rest[i + 1], "mom")
-            else:
-                choice(rest[i + 1], "loop", ("all", "local", "geom"))
-            i += 2
-        else:
-            raise ScriptError(f"unknown velocity keyword {word}; usage: {usage}")
-    create_velocities(sim, chosen, name, temp, seed, dist, momentum)
-
-
-VELOCITY_STREAM = 2      # fix langevin draws in stream 1
-
-
-@njit(cache=True)
-def _velocity_draws(tags, seed, gaussian, out):
-    for k in range(len(tags)):
-        if gaussian:
-            g0, g1, g2, _ = particle_gaussians(seed, 0, tags[k], VELOCITY_STREAM)
-            out[k, 0], out[k, 1], out[k, 2] = g0, g1, g2
-        else:
-            u0, u1, u2, _ = particle_uniforms(seed, 0, tags[k], VELOCITY_STREAM)
-            out[k, 0], out[k, 1], out[k, 2] = u0 - 0.5, u1 - 0.5, u2 - 0.5
-
-
-def velocity_draws(tags, seed, gaussian):
-    """Three random numbers per particle id (N(0,1), or U(-1/2, 1/2))."""
-    out = np.empty((len(tags), 3))
-    _velocity_draws(np.ascontiguousarray(tags, dtype=np.int64), seed, gaussian, out)
-    return out
-
-
-def create_velocities(sim, chosen, group, temp, seed, dist, momentum):
-    """Random velocities keyed by particle tag (so the same on any number of ranks), then the group's
-    net momentum removed and the group scaled to exactly ``temp``, as LAMMPS's ``loop all`` does."""
-    p = sim.particles
-    n = p.nlocal
-    v = p.v[:n]
-    # counter-based draws per id: memory for this rank's particles only, the same on any rank count
-    v[chosen] = velocity_draws(p.tag[:n][chosen], seed, dist == "gaussian")
-    if sim.dimension == 2:
-        v[chosen, 2] = 0.0
-    m = obs.masses(sim, chosen)
-    if momentum:
-        total_mass = sim.comm.sum(float(m.sum()))
-        if total_mass > 0:
-            vcm = sim.comm.sum((m[:, None] * v[chosen]).sum(axis=0)) / total_mass
-            v[chosen] -= vcm
-    current = obs.temperature(sim, group)
-    if current > 0:
-        v[chosen] *= math.sqrt(temp / current)
 
 
 @command("read_data")
