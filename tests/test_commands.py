@@ -559,6 +559,11 @@ class TestGroup:
         fails(sim, self.SETUP + line, "group", message)
 
 
+VELOCITY_USAGE = ("velocity GROUP create T SEED | set VX VY VZ | scale T | ramp vx|vy|vz VLO VHI x|y|z CLO CHI | "
+                  "zero linear|angular, then [dist uniform|gaussian] [sum yes|no] [mom yes|no] [rot yes|no] "
+                  "[temp COMPUTE-ID] [loop all|local|geom] [units box|lattice]")
+
+
 class TestVelocity:
     def setup_sim(self, sim, dimension=3):
         run(sim, f"dimension {dimension}\nlattice {'sc' if dimension == 3 else 'sq'} 1" + box(ntypes=2, bounds="0 6 0 6 0 6") +
@@ -634,18 +639,12 @@ class TestVelocity:
         ("velocity all create 1 0", "seed must be >= 1 (got 0)"),
         ("velocity all create 1 2.5", "seed must be an integer (got 2.5)"),
         ("velocity all create warm 1", "temperature must be a number (got warm)"),
-        ("velocity all create 1 1 poisson", "unknown velocity keyword poisson; usage: velocity GROUP create T SEED "
-                                            "[uniform|gaussian] [dist uniform|gaussian] [mom yes|no] | velocity "
-                                            "GROUP set VX VY VZ (NULL keeps a component)"),
+        ("velocity all create 1 1 poisson", f"unknown velocity keyword poisson; usage: {VELOCITY_USAGE}"),
         ("velocity all create 1 1 mom maybe", "mom must be one of yes, no (got maybe)"),
-        ("velocity all create 1", "expected a temperature and a seed; usage: velocity GROUP create T SEED "
-                                  "[uniform|gaussian] [dist uniform|gaussian] [mom yes|no] | velocity GROUP set "
-                                  "VX VY VZ (NULL keeps a component)"),
-        ("velocity all set 1 2", "expected 3 argument(s), got 2; usage: velocity GROUP create T SEED "
-                                 "[uniform|gaussian] [dist uniform|gaussian] [mom yes|no] | velocity GROUP set "
-                                 "VX VY VZ (NULL keeps a component)"),
+        ("velocity all create 1", f"expected a temperature and a seed; usage: {VELOCITY_USAGE}"),
+        ("velocity all set 1 2", f"expected VX VY VZ; usage: {VELOCITY_USAGE}"),
         ("velocity all set 1 2 fast", "vz must be a number (got fast)"),
-        ("velocity all spin 1", "velocity style must be one of create, set (got spin)"),
+        ("velocity all spin 1", "velocity style must be one of create, set, scale, ramp, zero (got spin)"),
     ])
     def test_errors(self, sim, line, message):
         self.setup_sim(sim)
