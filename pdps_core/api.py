@@ -59,6 +59,7 @@ CONTRACT = {
         "pair": "the pair style, or None",
         "pair_list": "the pair style's neighbor list (NeighborList), once a run set it up",
         "fixes": "{id: fix} in script order",
+        "substitute": "substitute(text): $x, ${name} and $(formula) replaced now (fix print)",
         "computes": "{id: compute}",
         "analyzes": "{id: analyze style}",
         "groups": "the groups (Groups): bit(name), select(sim, name)",

@@ -447,6 +447,10 @@ class Simulation:
         return value
 
     # ---- state helpers used by commands and styles -----------------------------------------------
+    def substitute(self, text):
+        """``text`` with ``$x``, ``${name}`` and ``$(formula)`` replaced now, as a script line is."""
+        return substitute(text, self.variables.text)
+
     def info(self, message):
         """A line on screen and in the log (a style's summary or notice)."""
         self.output.message(message)

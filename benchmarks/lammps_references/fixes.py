@@ -1,0 +1,57 @@
+"""Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple, the reference
+plugins/fix_simple/tests/test_lammps_fixes.py compares pdps with.
+
+    python benchmarks/lammps_references/fixes.py [LMP]
+
+The scene is plugins/fix_simple/tests/data/fluid.data (a copy of pair_simple's: 200 particles of two
+types with Gaussian velocities and a net momentum), lj/cut 2.5, fix nve, dt 0.002, 100 steps with
+each case's fix; thermo (step temp pe press, 15 digits) every 25 steps, and fix print's lines, go to
+plugins/fix_simple/tests/data/fixes.txt.
+"""
+
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "fix_simple" / "tests" / "data"
+CASES = {
+    "rescale": "fix 2 all temp/rescale 10 1.0 2.0 0.05 0.5",
+    "berendsen": "fix 2 all temp/berendsen 1.5 1.0 0.1",
+    "momentum": "fix 2 all momentum 20 linear 1 1 0 angular rescale",
+    "momentum_linear": "group heavy type 2\nfix 2 heavy momentum 10 linear 1 1 1",
+    "print": 'fix 2 all print 25 "PRINTED $(step) $(temp:%.12f) $(pe:%.12f)"',
+}
+SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
+         "pair_coeff 2 2 0.5 1.2", "fix 1 all nve", "timestep 0.002"]
+
+
+def main(lmp):
+    rows = []
+    for case, lines in CASES.items():
+        script = "\n".join(SETUP + [lines, "thermo 25", "thermo_style custom step temp pe press",
+                                    "thermo_modify format float %.15g", "run 100", ""])
+        with tempfile.TemporaryDirectory() as folder:
+            (Path(folder) / "fluid.data").write_bytes((DATA / "fluid.data").read_bytes())
+            (Path(folder) / "in.case").write_text(script)
+            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines_ = log.splitlines()
+        start = next(k for k, line in enumerate(lines_) if line.split()[:1] == ["Step"])
+        for line in lines_[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            if line.startswith("PRINTED"):
+                rows.append(f"{case}\tprint\t" + "\t".join(line.split()[1:]))
+            else:
+                rows.append(f"{case}\t" + "\t".join(line.split()))
+    (DATA / "fixes.txt").write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))

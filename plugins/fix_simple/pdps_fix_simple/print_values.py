@@ -1,0 +1,68 @@
+r"""Fix ``print``: every N steps, a line of text with its variables substituted then (LAMMPS's fix
+print), on the screen and in the log, or to a file.
+
+Syntax::
+
+    fix ID GROUP print N "TEXT" [file FILE | append FILE] [screen yes|no] [title TEXT]
+
+N the interval (steps); TEXT in quotes, with ``$x``, ``${name}`` and ``$(formula)`` replaced on each
+printing step (so ``$(temp)`` is the temperature then). ``file`` starts FILE afresh (with the title
+line, default ``# Fix print output for fix ID``), ``append`` adds to it. Example::
+
+    fix p all print 100 "step $(step) T $(temp:%.4f)" file temp.txt screen no
+"""
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, param
+
+
+class FixPrint(Fix):
+    name = "print"
+    usage = 'fix ID GROUP print N "TEXT" [file FILE | append FILE] [screen yes|no] [title TEXT]'
+
+    class Args(StyleArgs):
+        every: int = param(ge=1, unit="timesteps")
+        words: list[str]
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.words)
+        if not words:
+            raise ScriptError(f"fix print needs the text to print; usage: {self.usage}")
+        self.text, rest = words[0], words[1:]
+        self.path, mode, self.screen, title = None, "w", True, f"# Fix print output for fix {id}"
+        if len(rest) % 2:
+            raise ScriptError(f"expected keyword/value pairs after the text; usage: {self.usage}")
+        for key, value in zip(rest[::2], rest[1::2]):
+            if key in ("file", "append"):
+                self.path, mode = sim.resolve(value), "w" if key == "file" else "a"
+            elif key == "screen":
+                if value not in ("yes", "no"):
+                    raise ScriptError(f"screen must be yes or no (got {value})")
+                self.screen = value == "yes"
+            elif key == "title":
+                title = value
+            else:
+                raise ScriptError(f"unknown keyword {key} (known: file, append, screen, title)")
+        self.handle = None
+        if self.path is not None and sim.comm.is_root:
+            try:
+                self.handle = open(self.path, mode)
+            except OSError as exc:
+                raise ScriptError(f"cannot open fix print file {self.path}: {exc.strerror}") from None
+            if mode == "w":
+                self.handle.write(title + "\n")
+                self.handle.flush()
+
+    def end_of_step(self, sim):
+        if sim.step % self.args.every:
+            return
+        line = sim.substitute(self.text)
+        if self.screen:
+            sim.info(line)
+        if self.handle is not None:
+            self.handle.write(line + "\n")
+            self.handle.flush()
+
+    def post_run(self, sim):
+        if self.handle is not None:
+            self.handle.flush()
