@@ -206,6 +206,14 @@ def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
     return np.array(placed, dtype=np.float64).reshape(-1, 3)
 
 
+def _data_mass(sim, radius, density):
+    """A data file's sphere mass from its radius and density, in LAMMPS's order of operations
+    (4 pi / 3 r r r rho), so masses agree with LAMMPS's to the last bit."""
+    if sim.dimension == 2:
+        return math.pi * radius * radius * density
+    return 4.0 * math.pi / 3.0 * radius * radius * radius * density
+
+
 @command("mass")
 def mass(sim, args):
     count(args, 2, "mass TYPE VALUE")
@@ -340,8 +348,7 @@ def read_data(sim, args):
     extra = {}
     if sim.particle_style == "sphere":
         extra = {"radius": 0.5 * data.diameter,
-                 "rmass": data.density * (math.pi * (0.5 * data.diameter) ** 2 if sim.dimension == 2
-                                          else 4.0 / 3.0 * math.pi * (0.5 * data.diameter) ** 3)}
+                 "rmass": _data_mass(sim, 0.5 * data.diameter, data.density)}
     start = p.nlocal
     p.add(data.x, data.types, **extra)
     p.tag[start:] = data.tags
