@@ -444,7 +444,7 @@ class Fix(Style):
 
 class Compute(Style):
     """A compute: a global value read as ``c_ID`` (scalar), ``c_ID[i]`` (vector) or ``c_ID[i][j]``
-    (array). Indices are 0-based as in the PDPS manual. ``needs_energy``/``needs_virial`` tell the
+    (array). Indices count from 0 in the PDPS dialect, from 1 in LAMMPS's. ``needs_energy``/``needs_virial`` tell the
     core to compute them on the steps this compute is read.
 
     A per-atom compute also (or only) defines ``peratom(sim)``: one value per owned particle, a
@@ -455,6 +455,9 @@ class Compute(Style):
     kind = "compute"
     needs_energy: ClassVar[bool] = False
     needs_virial: ClassVar[bool] = False
+    # a total over particles (LAMMPS's extscalar): thermo divides it by the particle count when it
+    # normalises energies (lj units), as LAMMPS does; variables read it as it is
+    extensive: ClassVar[bool] = False
 
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args

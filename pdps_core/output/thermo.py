@@ -71,7 +71,8 @@ def keyword_value(sim, name, indices=()):
         if name != "ke":
             total += obs.potential_energy(sim)
         if name in ("ke", "etotal", "econserve", "enthalpy"):
-            total += obs.kinetic_energy(sim)
+            # LAMMPS's thermo ke: from the temperature, 1/2 dof k_B T (0 with no degrees of freedom)
+            total += 0.5 * obs.degrees_of_freedom(sim) * sim.units.boltz * sim.output.thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         return total / _normalise(sim)
@@ -311,7 +312,11 @@ class Thermo:
             elif word.startswith("c_") or word.startswith("f_"):
                 ident, indices = self._reference(word)
                 read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
-                out.append(read(ident, indices))
+                value = read(ident, indices)
+                style = (self.sim.computes if word[0] == "c" else self.sim.fixes).get(ident)
+                if getattr(style, "extensive", False):
+                    value /= _normalise(self.sim)
+                out.append(value)
             else:
                 out.append(keyword_value(self.sim, word))
         return out

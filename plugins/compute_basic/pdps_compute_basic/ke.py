@@ -5,8 +5,8 @@ r"""Compute ``ke``: the kinetic energy of a group, a scalar ``c_ID``, and per pa
     KE = \sum_{i \in G} \tfrac12 m_i v_i^2, \qquad ke_i = \tfrac12 m_i v_i^2
 
 in energy units (times ``mvv2e`` of the unit system), as LAMMPS's compute ke and ke/atom: the total,
-not divided by the number of particles (unlike thermo's ``ke`` in lj units), and with the centre-of-
-mass motion included. The per-atom value (``dump custom ... c_ID``, ``compute reduce ... c_ID``) is 0
+with the centre-of-mass motion included. Like LAMMPS, thermo prints it divided by the number of
+particles when it normalises energies (lj units); a variable reads the total. The per-atom value (``dump custom ... c_ID``, ``compute reduce ... c_ID``) is 0
 for particles outside the group.
 
 Syntax::
@@ -28,6 +28,7 @@ from pdps_core.api import Compute, observables
 class ComputeKE(Compute):
     name = "ke"
     usage = "compute ID GROUP ke"
+    extensive = True
 
     def scalar(self, sim):
         return observables.kinetic_energy(sim, self.group)

@@ -54,6 +54,7 @@ class ComputeReduce(Compute):
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
+        self.extensive = args.mode == "sum"     # LAMMPS: a sum is extensive, thermo normalises it
         what = f"compute {id} reduce"
         for word in args.inputs:
             if REFERENCE.match(word):
