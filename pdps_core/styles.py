@@ -746,6 +746,11 @@ class Registry:
                 hint = f"; did you mean {close[0]}?" if close else ""
                 off = (f": {' and '.join(sorted(claims))} is switched off by {DISABLE_VARIABLE}"
                        if claims else "")
+                from .script.unsupported import unsupported_style
+                instead = unsupported_style(kind, name)
+                if instead is not None and not claims:
+                    raise ScriptError(f"{kind} style {name} is a LAMMPS style pdps does not have; instead: "
+                                      f"{instead} (docs/lammps.md)")
                 raise ScriptError(f"unknown {kind} style {name}{off}{hint} "
                                   f"(installed: {', '.join(known) or 'none'})")
             if len(enabled) > 1:

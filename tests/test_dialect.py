@@ -134,3 +134,11 @@ def test_lammps_commands_pdps_does_not_run_name_an_alternative(pdps_cli, line, m
     done = pdps_cli(f"units lj\natom_style atomic\n{line}\n", "-log", "none")
     assert done.returncode == 1
     assert done.stderr.strip().splitlines() == [f"ERROR: in.test:3: {line.split()[0]}: {message}"]
+
+
+def test_lammps_styles_pdps_has_not_name_an_alternative(pdps_cli):
+    done = pdps_cli("units lj\natom_style atomic\npair_style lj/cut/coul/long 2.5\n", "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        "ERROR: in.test:3: pair_style: pair style lj/cut/coul/long is a LAMMPS style pdps does not have; "
+        "instead: pdps has no charges: lj/cut for the Lennard-Jones part (docs/lammps.md)"]

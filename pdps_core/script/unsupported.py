@@ -35,3 +35,38 @@ def unsupported(name):
     if alternative is None:
         return None
     return f"{name} is a LAMMPS command pdps does not support; instead: {alternative} (docs/lammps.md)"
+
+
+# LAMMPS styles pdps has no plugin for, with the closest one it has
+STYLE_ALTERNATIVES = {
+    ("pair", "lj/cut/coul/cut"): "pdps has no charges: lj/cut for the Lennard-Jones part",
+    ("pair", "lj/cut/coul/long"): "pdps has no charges: lj/cut for the Lennard-Jones part",
+    ("pair", "lj/cut/coul/debye"): "pdps has no charges: lj/cut plus yukawa for screened charges",
+    ("pair", "lj/smooth/linear"): "lj/cut with pair_modify shift yes, or pair_style formula",
+    ("pair", "lj96/cut"): "pair_style formula with the 9-6 law",
+    ("pair", "buck"): "pair_style formula with the Buckingham law",
+    ("pair", "born"): "pair_style formula with the Born-Mayer-Huggins law",
+    ("pair", "gauss"): "pair_style formula with the Gaussian law",
+    ("pair", "eam"): "pdps has no many-body potentials",
+    ("pair", "eam/alloy"): "pdps has no many-body potentials",
+    ("pair", "tersoff"): "pdps has no many-body potentials",
+    ("pair", "sw"): "pdps has no many-body potentials",
+    ("pair", "granular"): "gran/hooke, gran/hooke/history, gran/hertz/history, dem/lsd or dem/hertz",
+    ("pair", "dpd/tstat"): "dpd (its dissipative and random parts with a = 0)",
+    ("fix", "shake"): "pdps has no constraints",
+    ("fix", "rattle"): "pdps has no constraints",
+    ("fix", "spring"): "fix addforce with v_ variables",
+    ("fix", "wall/region"): "fix wall/dem or wall/harmonic",
+    ("fix", "deposit"): "create_atoms random between runs",
+    ("fix", "pour"): "create_atoms random between runs",
+    ("compute", "temp/com"): "compute temp (pdps removes no centre-of-mass bias)",
+    ("compute", "rdf/atom"): "compute rdf",
+    ("dump", "xyz"): "dump custom with id type x y z",
+    ("dump", "dcd"): "dump custom or dump xdmf",
+    ("dump", "netcdf"): "dump xdmf",
+}
+
+
+def unsupported_style(kind, name):
+    """What to use instead of a LAMMPS style pdps has no plugin for, or None."""
+    return STYLE_ALTERNATIVES.get((kind, name))
