@@ -68,7 +68,7 @@ from pdps_core.api import Analyze, Compute, Fix, ScriptError
 
 from .schedule import Schedule, ScheduleArgs, keyword_pairs
 
-REFERENCE = re.compile(r"^(c|v)_([A-Za-z0-9_]+)((?:\[(?:\d+|\*)\])*)$")
+REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((?:\[(?:\d+|\*)\])*)$")
 KEYWORDS = ("file", "mode")
 
 
@@ -104,7 +104,7 @@ class AveTime:
         first_option = next((k for k, w in enumerate(words) if w[:2] not in ("c_", "v_", "f_")), len(words))
         value_words, options = words[:first_option], words[first_option:]
         if not value_words and options and options[0] not in KEYWORDS:
-            raise ScriptError("value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME "
+            raise ScriptError("value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME "
                               f"(got {options[0]})")
         self.path, self.mode = None, "scalar"
         for word, value in keyword_pairs(options, KEYWORDS,
@@ -140,11 +140,9 @@ class AveTime:
 
     # ---- what the values are ----------------------------------------------------------------------
     def _value(self, sim, word):
-        if word.startswith("f_"):
-            raise ScriptError(f"a fix's or analyze's output cannot be read yet (got {word})")
         match = REFERENCE.match(word)
         if not match:
-            raise ScriptError(f"value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME (got {word})")
+            raise ScriptError(f"value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got {word})")
         prefix, ident, brackets = match.groups()
         indices = re.findall(r"\[(\d+|\*)\]", brackets)
         if prefix == "v":
@@ -156,7 +154,28 @@ class AveTime:
             # a variable may read anything, as thermo assumes
             return Value(word, lambda s: np.array([[s.variables.value(ident)]]), False, False,
                          lambda s: {"energy", "virial"})
+        if prefix == "f":
+            return self._fix_value(sim, word, ident, indices)
         return self._compute_value(sim, word, ident, indices)
+
+    def _fix_value(self, sim, word, ident, indices):
+        """f_ID (a scalar), f_ID[i] (an element) or f_ID[*] (the whole vector) of a fix or analyze."""
+        style = sim.fixes.get(ident) or sim.analyzes.get(ident)
+        if style is None:
+            raise ScriptError(f"fix {ident} is not defined (value {word})")
+        if style is self:
+            raise ScriptError(f"{word}: {self.kind} {ident} cannot average its own output")
+        if self.mode == "vector":
+            raise ScriptError(f"mode vector averages computes' columns; {word} is a fix value")
+        if indices == ["*"]:
+            def whole(s):
+                found = s.fixes.get(ident) or s.analyzes.get(ident)
+                return np.asarray(found.vector(s), dtype=float)[None, :]
+            return Value(word, whole, False, True, lambda s: set())
+        if "*" in indices:
+            raise ScriptError(f"only f_ID[*] takes a wildcard (got {word})")
+        numbers = tuple(int(i) for i in indices)
+        return Value(word, lambda s: np.array([[s.fix_value(ident, numbers)]]), False, False, lambda s: set())
 
     def _compute_value(self, sim, word, ident, indices):
         compute = sim.computes.get(ident)

@@ -166,10 +166,10 @@ def test_outputs_are_zero_before_the_first_average(sim):
      "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"),
     ("analyze 1 all ave/time 1 1 10 c_nope", "analyze: compute nope is not defined (value c_nope)"),
     ("analyze 1 all ave/time 1 1 10 v_nope", "analyze: variable nope is not defined (value v_nope)"),
-    ("analyze 1 all ave/time 1 1 10 temp", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME (got temp)"),
+    ("analyze 1 all ave/time 1 1 10 temp", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got temp)"),
     ("analyze 1 all ave/time 1 1 10 v_s every 2", "analyze: unknown keyword every (known: file, mode)"),
-    ("analyze 1 all ave/time 1 1 10 c_t[1 file x", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*] or v_NAME (got c_t[1)"),
-    ("analyze 1 all ave/time 1 1 10 f_1", "analyze: a fix's or analyze's output cannot be read yet (got f_1)"),
+    ("analyze 1 all ave/time 1 1 10 c_t[1 file x", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got c_t[1)"),
+    ("analyze 1 all ave/time 1 1 10 f_nope", "analyze: fix nope is not defined (value f_nope)"),
     ("analyze 1 all ave/time 1 1 10 v_s mode matrix", "analyze: mode must be scalar or vector (got matrix)"),
     ("analyze 1 all ave/time 1 1 10 v_s file", "analyze: keyword file needs a value"),
     ("analyze 1 all ave/time 1 1 10 c_a v_s",
@@ -180,3 +180,14 @@ def test_bad_input_is_one_line(sim, command, message):
     with pytest.raises(ScriptError) as error:
         sim.command(command)
     assert str(error.value) == f"<command>:1: {message}"
+
+
+def test_fix_values_are_averaged_as_lammps_allows():
+    from pdps_core.api import Simulation
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\ncreate_atoms 1 single 1 1 1\n"
+                "create_atoms 1 single 2 1 1\nvelocity all set 1 0 0\nfix 1 all nve\nvariable s equal step\n"
+                "fix a all ave/time 1 5 5 v_s\nfix b all ave/time 5 2 10 f_a f_a[*]\nrun 10")
+    # f_a: the mean step of 1..5 (3) and of 6..10 (8); f_b averages them at steps 5 and 10
+    assert sim.fix_value("a", ()) == 8.0
+    assert sim.fix_value("b", (1,)) == sim.fix_value("b", (2,)) == 5.5
