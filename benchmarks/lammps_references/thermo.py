@@ -1,0 +1,61 @@
+"""Record LAMMPS's thermo keywords on a short Lennard-Jones run, the reference tests/test_thermo_lammps.py
+compares pdps's with.
+
+    python benchmarks/lammps_references/thermo.py [LMP]
+
+The scene is plugins/pair_simple/tests/data/fluid.data (200 particles, two types, masses 1 and 1.5),
+lj/cut 2.5, fix nve, dt 0.002; KEYWORDS printed with 15 digits at steps 0, 20, 40 in lj units (energies
+per particle) and again with thermo_modify norm no, then in metal units (epsilons in eV, the same
+lengths in Angstrom). Rows go to
+tests/data/lammps/thermo.txt as ``case<TAB>values...``.
+"""
+
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
+OUT = ROOT / "tests" / "data" / "lammps" / "thermo.txt"
+KEYWORDS = ("step elapsed elaplong dt time atoms temp press pe ke etotal enthalpy evdwl ecoul epair ebond "
+            "elong vol density lx ly lz xlo xhi ylo yhi zlo zhi fmax fnorm")
+CASES = {"lj": "", "lj_norm_no": "thermo_modify norm no", "metal": None}
+
+
+def script(case):
+    units = "metal" if case == "metal" else "lj"
+    epsilon = (0.0103, 0.005) if case == "metal" else (1.0, 0.5)
+    lines = [f"units {units}", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5",
+             f"pair_coeff 1 1 {epsilon[0]} 1.0", f"pair_coeff 2 2 {epsilon[1]} 1.2"]
+    lines += ["fix 1 all nve", "timestep 0.002" if case != "metal" else "timestep 0.001",
+              "thermo 20", f"thermo_style custom {KEYWORDS}", "thermo_modify format float %.15g"]
+    if CASES.get(case):
+        lines.append(CASES[case])
+    lines.append("run 40")
+    return "\n".join(lines) + "\n"
+
+
+def main(lmp):
+    rows = []
+    for case in CASES:
+        with tempfile.TemporaryDirectory() as folder:
+            (Path(folder) / "fluid.data").write_bytes(DATA.read_bytes())
+            (Path(folder) / "in.thermo").write_text(script(case))
+            done = subprocess.run([lmp, "-in", "in.thermo", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines = log.splitlines()
+        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+        for line in lines[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            rows.append(f"{case}\t" + "\t".join(line.split()))
+    OUT.write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))
