@@ -220,3 +220,27 @@ def test_dump_modify_sort_format_every_first_append(tmp_path, monkeypatch):
         sim.command("dump_modify d thresh x > 1")
     with pytest.raises(ScriptError, match="append must be set before the dump writes its first frame"):
         sim.command("dump_modify c append yes")
+
+
+def test_run_every_runs_commands_between_chunks(pdps_cli):
+    done = pdps_cli("""
+        region box block 0 5 0 5 0 5
+        create_box 1 box
+        mass 1 1
+        create_particle 1 single 1 1 1
+        fix 1 all nve
+        thermo 0
+        run 30 every 10 "print 'at $(step)'"
+        print "done"
+    """, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert [line for line in done.stdout.splitlines() if line.startswith(("at ", "done"))] == [
+        "at 10", "at 20", "at 30", "done"]
+
+
+def test_clear_keeps_variables_and_starts_afresh():
+    sim = make_box("mass 1 1\ncreate_particle 1 single 1 1 1\nvariable keep equal 7")
+    sim.command("clear")
+    assert sim.box is None and sim.nlocal == 0 and sim.variables.value("keep") == 7.0
+    sim.command("region box block 0 2 0 2 0 2\ncreate_box 1 box")
+    assert sim.box is not None
