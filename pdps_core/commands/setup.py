@@ -185,9 +185,29 @@ def newton(sim, args):
 
 @command("atom_modify")
 def atom_modify(sim, args):
-    """LAMMPS's ``atom_modify sort N BINSIZE``: re-sort owned particles by cell every N steps (0: never).
-    The bin size is accepted; pdps sorts on cells of half the neighbor cutoff."""
-    if len(args) != 3 or args[0] != "sort":
-        raise ScriptError("only 'atom_modify sort N BINSIZE' is supported")
-    sim.neighbors.sort_every = integer(args[1], "sort interval", low=0)
-    number(args[2], "bin size", low=0.0)
+    """LAMMPS's ``atom_modify [sort N BINSIZE] [map array|hash|yes] [id yes] [first GROUP]``: re-sort
+    owned particles by cell every N steps (0: never; the bin size is accepted, pdps sorts on cells of
+    half the neighbor cutoff). ``map`` and ``id yes`` are accepted (pdps always has ids and finds
+    particles by id its own way); ``id no`` and ``first`` are refused."""
+    usage = "atom_modify [sort N BINSIZE] [map array|hash|yes] [id yes]"
+    if not args:
+        raise ScriptError(f"expected keywords; usage: {usage}")
+    k = 0
+    while k < len(args):
+        key = args[k]
+        if key == "sort":
+            if k + 2 >= len(args):
+                raise ScriptError(f"sort needs N and BINSIZE; usage: {usage}")
+            sim.neighbors.sort_every = integer(args[k + 1], "sort interval", low=0)
+            number(args[k + 2], "bin size", low=0.0)
+            k += 3
+        elif key in ("map", "id") and k + 1 < len(args):
+            if key == "map":
+                choice(args[k + 1], "map", ("array", "hash", "yes"))
+            elif choice(args[k + 1], "id", ("yes", "no")) == "no":
+                raise ScriptError("atom_modify id no is not supported: pdps particles always have ids")
+            k += 2
+        elif key == "first":
+            raise ScriptError("atom_modify first is not supported (pdps orders particles by cell)")
+        else:
+            raise ScriptError(f"unknown atom_modify keyword {key}; usage: {usage}")
