@@ -81,9 +81,11 @@ class FixLangevin(Fix):
     def post_force(self, sim):
         p = sim.particles
         kt = sim.units.boltz * self.target(sim) / sim.units.mvv2e
-        noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp))
+        # forces in force units: m v / damp and the noise are divided by ftm2v (1 in lj and si), as LAMMPS
+        ftm2v = sim.units.ftm2v
+        noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp)) / ftm2v
         langevin_forces(p.v, p.f, p.tag, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                        p.nlocal, self.args.damp, noise_scale, sim.random_key(self.args.seed), sim.step)
+                        p.nlocal, self.args.damp * ftm2v, noise_scale, sim.random_key(self.args.seed), sim.step)
 
     def scalar(self, sim):
         """f_ID: the target temperature now."""

@@ -82,3 +82,19 @@ def test_lj_liquid_stays_on_a_temperature_ramp(tmp_path):
     slope_error = residual.std(ddof=2) / np.sqrt(((expected - expected.mean()) ** 2).sum())
     assert abs(slope - 1.0) < 2.0 * slope_error, (slope, slope_error)
     assert measured[-1] > measured[0] + 0.4        # it did heat up
+
+
+def test_metal_units_thermostat_to_the_target():
+    """In metal units (ftm2v != 1) the friction and noise are in force units: an ideal gas reaches T."""
+    import numpy as np
+    from pdps_core.api import Simulation
+    sim = Simulation(screen=False, log=None)
+    sim.command("units metal\nregion box block 0 30 0 30 0 30\ncreate_box 1 box\nmass 1 40.0\n"
+                "create_particle 1 random 400 5 box\nfix 1 all nve\nfix 2 all langevin 300 300 0.1 77\n"
+                "timestep 0.002\nrun 500")
+    temps = []
+    for _ in range(20):
+        sim.command("run 50")
+        temps.append(sim.variables.evaluate("temp"))
+    mean, error = np.mean(temps), np.std(temps) / np.sqrt(len(temps))
+    assert abs(mean - 300.0) < max(3 * error, 6.0), (mean, error)
