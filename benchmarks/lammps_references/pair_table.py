@@ -1,0 +1,110 @@
+"""Record LAMMPS's thermo for short NVE runs with pair_style table, the reference
+plugins/pair_table/tests/test_lammps_table.py compares pdps with.
+
+    python benchmarks/lammps_references/pair_table.py [LMP]
+
+The scene is pair_styles.py's: 200 particles of two types (masses 1 and 1.5) at number density 0.6,
+no two closer than 0.95, Gaussian velocities (seed 11), written to plugins/pair_table/tests/data/fluid.data.
+The tables (plugins/pair_table/tests/data/pots.table) tabulate Lennard-Jones and Morse potentials in
+every form a table file takes: R spacing, RSQ spacing, r given line by line with FPRIME end slopes. Each case
+of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe press, 15 digits) every
+25 steps goes to plugins/pair_table/tests/data/pair_table.txt.
+"""
+
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from pdps_core.testing import fluid, write_data
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "pair_table" / "tests" / "data"
+CASES = {
+    "linear_r": "pair_style table linear 1000\npair_coeff * * pots.table LJ_R",
+    "spline_r": "pair_style table spline 400\npair_coeff * * pots.table LJ_R",
+    "lookup_r": "pair_style table lookup 2000\npair_coeff * * pots.table LJ_R",
+    "linear_rsq_match": "pair_style table linear 1200\npair_coeff * * pots.table LJ_RSQ",
+    "spline_rsq": "pair_style table spline 1200\npair_coeff * * pots.table LJ_RSQ",
+    "two_types_spline": "pair_style table spline 600\npair_coeff 1 1 pots.table LJ_R 2.2\n"
+                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table LJ_RSQ 2.4",
+    "two_types_linear": "pair_style table linear 700\npair_coeff 1 1 pots.table LJ_R 2.2\n"
+                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table MORSE_FP 2.0",
+}
+
+
+def lj(r):
+    s6 = r ** -6
+    return 4.0 * (s6 * s6 - s6), 24.0 * (2.0 * s6 * s6 - s6) / r
+
+
+def morse(r, d0=0.8, alpha=3.0, r0=1.1):
+    x = math.exp(-alpha * (r - r0))
+    return d0 * (x * x - 2.0 * x), 2.0 * alpha * d0 * (x * x - x)
+
+
+def section(keyword, params, rs, law):
+    lines = [f"{keyword}", params, ""]
+    for k, r in enumerate(rs, 1):
+        e, f = law(r)
+        lines.append(f"{k} {r!r} {e!r} {f!r}")
+    return "\n".join(lines) + "\n\n"
+
+
+def tables():
+    n = 500
+    r_lin = [0.7 + (2.5 - 0.7) * i / (n - 1) for i in range(n)]
+    m = 1200
+    r_sq = [math.sqrt(0.7 ** 2 + (2.5 ** 2 - 0.7 ** 2) * i / (m - 1)) for i in range(m)]
+    r_free = [float(r) for r in np.round(np.concatenate([np.linspace(0.6, 1.4, 300), np.linspace(1.41, 2.6, 150)]), 6)]
+    text = "# pdps pair_table reference tables: Lennard-Jones (eps 1, sigma 1) and Morse (0.8, 3, 1.1)\n\n"
+    text += section("LJ_R", f"N {n} R 0.7 2.5", r_lin, lj)
+    text += section("LJ_RSQ", f"N {m} RSQ 0.7 2.5", r_sq, lj)
+    text += section("MORSE_FP", f"N {len(r_free)} FPRIME -150.0 0.0", r_free, morse)
+    (DATA / "pots.table").write_text(text)
+
+
+def scene():
+    x, length = fluid(200, 0.6, seed=11, min_distance=0.95)
+    types = np.where(np.arange(200) % 3 == 0, 2, 1)
+    v = np.random.default_rng(11).normal(size=(200, 3))
+    write_data(DATA / "fluid.data", (0, 0, 0), (length,) * 3, x, types=types, velocities=v,
+               masses={1: 1.0, 2: 1.5})
+
+
+def script(case):
+    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
+                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
+                      "thermo_modify format float %.15g", "run 100", ""])
+
+
+def main(lmp):
+    DATA.mkdir(parents=True, exist_ok=True)
+    scene()
+    tables()
+    rows = []
+    for case in CASES:
+        with tempfile.TemporaryDirectory() as folder:
+            for name in ("fluid.data", "pots.table"):
+                (Path(folder) / name).write_bytes((DATA / name).read_bytes())
+            (Path(folder) / "in.case").write_text(script(case))
+            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines = log.splitlines()
+        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+        for line in lines[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            rows.append(f"{case}\t" + "\t".join(line.split()))
+    (DATA / "pair_table.txt").write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))
