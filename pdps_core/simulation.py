@@ -36,14 +36,15 @@ from .styles import VariableRef
 
 
 class ScriptFlow:
-    """Where a script is: its lines, the next one, a jump asked for by the line just run, whether
-    anything a loop can end on (next, variable, run) happened since the last jump, and whether the
-    next jump is skipped (an exhausted ``next``, as LAMMPS)."""
+    """Where a script is: its lines, the next one, a jump asked for by the line just run, the state
+    (variables, step, particle count) each backward jump last left from (a loop that comes back to
+    the same state can never end), and whether the next jump is skipped (an exhausted ``next``, as
+    LAMMPS)."""
 
     def __init__(self, source, lines):
         self.source, self.lines, self.at = source, lines, 0
         self.jump = None
-        self.progress = True
+        self.seen = {}
         self.skip_jump = False
 
 
@@ -109,6 +110,7 @@ class Simulation:
         self.min_settings = MinSettings()
         self.minimize_result = None
         self.restored_states = {}      # (kind, id) -> (style, state, instance) from read_restart
+        self.box_changed = False       # change_box since the last neighbor decision (Verlet rebuilds)
 
     # ---- names a style reads ----------------------------------------------------------------------
     @property
@@ -240,11 +242,13 @@ class Simulation:
                 raise ScriptError(f"label {label} is not in {source}", source=source, line=self.line,
                                   command="jump")
         backward = target == "SELF" and start <= flow.at
-        if backward and not flow.progress:
-            raise ScriptError(f"jump SELF {label or ''}: an endless loop (nothing a loop can end on "
-                              "changed since the last jump: no next, variable or run)".replace("  ", " "),
-                              source=source, line=self.line, command="jump")
-        flow.progress = False
+        if backward:
+            state = (self.variables.signature(), self.step, self.particles.nlocal)
+            if flow.seen.get(start) == state:
+                raise ScriptError(f"jump SELF {label or ''}: an endless loop (variables, step and particles "
+                                  "are as they were at the last jump back)".replace("  ", " "),
+                                  source=source, line=self.line, command="jump")
+            flow.seen[start] = state
         flow.at = start
         return source, directory
 
@@ -364,6 +368,25 @@ class Simulation:
         if not any(nlist is r for r in self.neighbors.requests):
             raise ScriptError("this neighbor list belongs to an earlier run: request it again in init_run")
         return self.neighbors.build_occasional(nlist, self.particles, self.box, self.step)
+
+    # ---- a box that changes during a run -----------------------------------------------------------
+    def change_box(self, lo, hi, remap=None):
+        """Give the box new bounds ``lo``, ``hi`` (3 each) now, as LAMMPS's ``set_global_box``.
+        ``remap``: a group name whose owned particles keep their fractional position in the box
+        (LAMMPS's x2lamda / lamda2x: x' = lo' + (hi' - lo') (x - lo) / (hi - lo)); None moves none.
+        The next neighbor decision rebuilds the lists (wrap, migrate, ghosts with the new image
+        shifts), so every step the box changes is a rebuild step. Collective under MPI: every rank
+        passes the same bounds."""
+        box = self.box
+        if remap is None:
+            box.set_bounds(lo, hi)
+        else:
+            chosen = self.groups.select(self, remap)
+            x = self.particles.x[: self.particles.nlocal]
+            lamda = (x[chosen] - box.lo) * (1.0 / box.length)
+            box.set_bounds(lo, hi)
+            x[chosen] = box.length * lamda + box.lo
+        self.box_changed = True
 
     # ---- particles inserted and deleted by styles ------------------------------------------------
     def add_particles(self, x, type, v=None, **per_atom):

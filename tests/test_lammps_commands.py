@@ -181,12 +181,23 @@ def test_loops_and_conditions(pdps_cli):
     assert done.stdout.splitlines()[1:] == ["one", "two", "three", "total 6"]
 
 
-def test_an_endless_loop_is_an_error(pdps_cli):
-    done = pdps_cli("label a\nprint x\njump SELF a\n", "-log", "none")
+@pytest.mark.parametrize("script, line", [
+    ("label a\nprint x\njump SELF a\n", 3),
+    ("variable z equal 1\nlabel a\nvariable z equal 1\njump SELF a\n", 4),      # redefined, unchanged
+])
+def test_an_endless_loop_is_an_error(pdps_cli, script, line):
+    done = pdps_cli(script, "-log", "none")
     assert done.returncode == 1
     assert done.stderr.strip().splitlines() == [
-        "ERROR: in.test:3: jump: jump SELF a: an endless loop (nothing a loop can end on changed since the "
-        "last jump: no next, variable or run)"]
+        f"ERROR: in.test:{line}: jump: jump SELF a: an endless loop (variables, step and particles are as "
+        "they were at the last jump back)"]
+
+
+def test_a_loop_whose_variable_changes_runs_to_its_end(pdps_cli):
+    done = pdps_cli('variable n equal 0\nlabel top\nvariable n equal ${n}+1\n'
+                    'if "${n} < 5" then "jump SELF top"\nprint "n=${n}"\n', "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "n=5"
 
 
 def test_run_upto_and_ramp_over_start_stop():

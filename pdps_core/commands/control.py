@@ -8,13 +8,6 @@ from . import command
 from .words import choice, count, integer
 
 
-def _progress(sim):
-    """Something a loop can end on happened (see ScriptFlow)."""
-    flow = getattr(sim, "_flow", None)
-    if flow is not None:
-        flow.progress = True
-
-
 @command("dialect")
 def dialect(sim, args):
     """``dialect lammps|pdps``: read by the top script before its first command (see
@@ -42,7 +35,6 @@ def echo(sim, args):
 @command("variable")
 def variable(sim, args):
     sim.variables.define(args)
-    _progress(sim)
 
 
 @command("next")
@@ -53,7 +45,6 @@ def next_(sim, args):
     exhausted = False
     for name in args:
         exhausted |= not sim.variables.next(name)
-    _progress(sim)
     flow = getattr(sim, "_flow", None)
     if exhausted and flow is not None:
         flow.skip_jump = True
@@ -220,7 +211,6 @@ def run(sim, args):
         raise ScriptError(f"start {start} is after this run's first step {sim.step}")
     if stop is not None and stop < last:
         raise ScriptError(f"stop {stop} is before this run's last step {last}")
-    _progress(sim)
     bounds = (sim.step if start is None else start, last if stop is None else stop)
     if not every:
         sim.run_steps(nsteps, ramp_bounds=bounds)

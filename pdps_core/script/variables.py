@@ -57,6 +57,10 @@ class Variables:
     def style(self, name):
         return self._get(name).style
 
+    def signature(self):
+        """Every variable's definition and position, to tell one state of a script loop from another."""
+        return tuple(sorted((name, var.style, var.index, str(var.values)) for name, var in self._vars.items()))
+
     # ---- definition --------------------------------------------------------------------------------
     def define(self, words, from_command_line=False):
         if len(words) < 2:
