@@ -256,6 +256,15 @@ class Pair(Style):
     mix_rule: str | None = None     # set by pair_modify mix
     mix_default: ClassVar[str | None] = None    # the style's own rule (LAMMPS lj/cut: geometric)
     shift: bool = False             # pair_modify shift yes: energies shifted to 0 at the cutoff
+    tail: bool = False              # pair_modify tail yes: long-range corrections (styles with tail_ij)
+    etail = ptail = 0.0             # their totals over type pairs, set by init; divided by the volume
+
+    def tail_ij(self, i, j, count_i, count_j):
+        """LAMMPS's long-range corrections of one type pair with the global counts of its types, from
+        ``self.resolved[(i, j)]``: (etail_ij, ptail_ij), energy*volume units. Thermo ``pe`` gains
+        sum etail_ij / V and each diagonal virial component sum ptail_ij / V (i != j counted twice,
+        as LAMMPS). None (the default): the style has no tail correction."""
+        return None
 
     def mix(self, i, j):
         """Coefficients for an unset i != j pair: an error unless ``pair_modify mix`` or the style's
@@ -288,6 +297,18 @@ class Pair(Style):
                 else:
                     self.resolved[(i, j)] = self.mix(i, j)
                 cut[i, j] = cut[j, i] = self._cutoff_of(i, j)
+        self.etail = self.ptail = 0.0
+        if self.tail and self.shift:
+            # a shifted potential with a correction for the unshifted tail is neither (LAMMPS refuses it)
+            raise ScriptError("pair_modify shift yes and tail yes cannot both be set")
+        if self.tail:
+            p = self.sim.particles
+            counts = self.sim.comm.sum(np.bincount(p.type[: p.nlocal], minlength=ntypes + 1))
+            for (i, j) in self.resolved:
+                etail, ptail = self.tail_ij(i, j, float(counts[i]), float(counts[j]))
+                weight = 1.0 if i == j else 2.0
+                self.etail += weight * etail
+                self.ptail += weight * ptail
         return cut
 
     def _cutoff_of(self, i, j):

@@ -2,7 +2,7 @@
 and their removal (unfix, uncompute, unanalyze, undump)."""
 
 from ..errors import ScriptError
-from ..styles import registry
+from ..styles import Pair, registry
 from . import command
 from .words import choice, count, integer, type_range
 
@@ -175,9 +175,10 @@ def undump(sim, args):
 
 @command("pair_modify")
 def pair_modify(sim, args):
-    """``pair_modify mix geometric|arithmetic|sixthpower shift yes|no``: how unset i != j coefficients are derived
-    and whether energies are shifted to zero at the cutoff (LAMMPS's keywords)."""
-    usage = "expected: pair_modify [mix geometric|arithmetic|sixthpower] [shift yes|no]"
+    """``pair_modify mix geometric|arithmetic|sixthpower shift yes|no tail yes|no``: how unset i != j
+    coefficients are derived, whether energies are shifted to zero at the cutoff, whether the long-range
+    tail corrections join pe and press (LAMMPS's keywords)."""
+    usage = "expected: pair_modify [mix geometric|arithmetic|sixthpower] [shift yes|no] [tail yes|no]"
     if sim.pair is None:
         raise ScriptError("pair_modify before pair_style")
     if not args or len(args) % 2:
@@ -187,5 +188,9 @@ def pair_modify(sim, args):
             sim.pair.mix_rule = choice(value, "mix rule", ("geometric", "arithmetic", "sixthpower"))
         elif keyword == "shift":
             sim.pair.shift = choice(value, "shift", ("yes", "no")) == "yes"
+        elif keyword == "tail":
+            sim.pair.tail = choice(value, "tail", ("yes", "no")) == "yes"
+            if sim.pair.tail and type(sim.pair).tail_ij is Pair.tail_ij:
+                raise ScriptError(f"pair style {sim.pair.name} has no tail correction")
         else:
             raise ScriptError(f"unknown keyword {keyword}; {usage}")

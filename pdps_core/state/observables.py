@@ -49,10 +49,19 @@ def temperature(sim, group="all"):
     return 2.0 * kinetic_energy(sim, group) / (dof * sim.units.boltz)
 
 
+def tail_corrections(sim):
+    """The pair style's long-range corrections (``pair_modify tail yes``) at the current volume:
+    energy, and what each diagonal virial component gains (LAMMPS's etail / V, ptail / V)."""
+    pair = sim.pair
+    if pair is None or not pair.tail:
+        return 0.0, 0.0
+    return pair.etail / sim.box.volume, pair.ptail / sim.box.volume
+
+
 def virial_trace(sim):
-    """sum_i r_i . f_i over the box's dimensions (x, y and, in 3-d, z)."""
+    """sum_i r_i . f_i over the box's dimensions (x, y and, in 3-d, z), with the tail correction."""
     sim.require_virial()
-    return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension]))))
+    return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension])))) + sim.dimension * tail_corrections(sim)[1]
 
 
 def pressure(sim, temp=None, temp_group="all"):
@@ -68,4 +77,4 @@ def pressure(sim, temp=None, temp_group="all"):
 
 def potential_energy(sim):
     sim.require_energy()
-    return float(sim.comm.sum(sim.pe))
+    return float(sim.comm.sum(sim.pe)) + tail_corrections(sim)[0]

@@ -10,7 +10,11 @@ Soc. A 106, 463 (1924); LAMMPS's ``pair_style lj/cut``).
                        - \left(\frac{\sigma}{r}\right)^{6}\right]\mathbf{r}_{ij}
 
 :math:`E_\mathrm{shift} = E(r_c)` with ``pair_modify shift yes``, else 0 (LAMMPS's default). The force is
-not shifted: it jumps to zero at the cutoff.
+not shifted: it jumps to zero at the cutoff. ``pair_modify tail yes`` adds LAMMPS's long-range
+corrections for g(r) = 1 beyond the cutoff to pe and press:
+:math:`E_\mathrm{tail} = \sum_{ij} \frac{8\pi N_i N_j \varepsilon\sigma^6(\sigma^6 - 3r_c^6)}{9 r_c^9 V}`,
+each diagonal virial component gaining
+:math:`\sum_{ij} \frac{16\pi N_i N_j \varepsilon\sigma^6(2\sigma^6 - 3r_c^6)}{9 r_c^9 V}` (Allen & Tildesley).
 
 Parameters:
 
@@ -85,3 +89,16 @@ class PairLJCut(PairLaw):
             offset = 4.0 * c.epsilon * (ratio6 * ratio6 - ratio6)
         return rc, (48.0 * c.epsilon * s12, 24.0 * c.epsilon * s6, 4.0 * c.epsilon * s12,
                     4.0 * c.epsilon * s6, offset)
+
+    def tail_ij(self, i, j, count_i, count_j):
+        """LAMMPS's lj/cut tail: etail = 8 pi N_i N_j eps sig^6 (sig^6 - 3 rc^6) / (9 rc^9),
+        ptail = 16 pi N_i N_j eps sig^6 (2 sig^6 - 3 rc^6) / (9 rc^9), in LAMMPS's order of operations."""
+        c = self.resolved[(i, j)]
+        rc = c.cutoff if c.cutoff is not None else self.args.cutoff
+        sig2 = c.sigma * c.sigma
+        sig6 = sig2 * sig2 * sig2
+        rc3 = rc * rc * rc
+        rc6 = rc3 * rc3
+        rc9 = rc3 * rc6
+        prefactor = 8.0 * math.pi * count_i * count_j * c.epsilon * sig6 / (9.0 * rc9)
+        return prefactor * (sig6 - 3.0 * rc6), 2.0 * prefactor * (2.0 * sig6 - 3.0 * rc6)

@@ -1,0 +1,56 @@
+"""Record LAMMPS's thermo for short NVE runs of lj/cut with ``pair_modify tail yes``, the reference
+plugins/pair_lj/tests/test_lammps_tail.py compares pdps with.
+
+    python benchmarks/lammps_references/pair_tail.py [LMP]
+
+The scene is pair_styles.py's 200-particle two-type fluid (copied to plugins/pair_lj/tests/data/);
+each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe press evdwl,
+15 digits) every 25 steps goes to plugins/pair_lj/tests/data/tail.txt.
+"""
+
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
+DATA = ROOT / "plugins" / "pair_lj" / "tests" / "data"
+CASES = {
+    "tail": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2 2.0\npair_modify tail yes",
+    "tail_arithmetic": "pair_style lj/cut 2.2\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
+                             "pair_coeff 1 2 0.8 1.05 2.6\npair_modify mix arithmetic tail yes",
+}
+
+
+def script(case):
+    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
+                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
+                      "thermo_modify format float %.15g", "run 100", ""])
+
+
+def main(lmp):
+    DATA.mkdir(parents=True, exist_ok=True)
+    (DATA / "fluid.data").write_bytes(SOURCE.read_bytes())
+    rows = []
+    for case in CASES:
+        with tempfile.TemporaryDirectory() as folder:
+            (Path(folder) / "fluid.data").write_bytes(SOURCE.read_bytes())
+            (Path(folder) / "in.case").write_text(script(case))
+            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines = log.splitlines()
+        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+        for line in lines[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            rows.append(f"{case}\t" + "\t".join(line.split()))
+    (DATA / "tail.txt").write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))

@@ -1,0 +1,63 @@
+"""lj/cut with ``pair_modify tail yes`` gives LAMMPS's thermo (pe and press with the long-range
+corrections) step for step on a 200-particle two-type fluid (data/tail.txt, recorded with LAMMPS by
+benchmarks/lammps_references/pair_tail.py); the corrections are the formula's."""
+
+import math
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.state import observables
+from pdps_core.testing import build
+
+DATA = Path(__file__).parent / "data"
+ROWS = [line.split("\t") for line in (DATA / "tail.txt").read_text().splitlines()]
+CASES = {
+    "tail": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2 2.0\npair_modify tail yes",
+    "tail_arithmetic": "pair_style lj/cut 2.2\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
+                       "pair_coeff 1 2 0.8 1.05 2.6\npair_modify mix arithmetic tail yes",
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.case", dialect="lammps")
+    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
+                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press\nrun 100")
+    sim.close()
+    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
+    reference = [row[1:] for row in ROWS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
+                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+
+
+def test_the_corrections_are_the_formula(tmp_path):
+    """Two particles 4.5 apart in a periodic 10^3 box, cutoff 2.5: no pair inside, so pe and the virial are the
+    tail terms alone, 8 pi N^2 eps sig^6 (sig^6 - 3 rc^6) / (9 rc^9 V) and 3 times 16 pi N^2 ..."""
+    sim = build(tmp_path, [[1.0, 1.0, 1.0], [5.5, 1.0, 1.0]],
+                setup="pair_style lj/cut 2.5\npair_coeff * * 1.5 1.1\npair_modify tail yes\nrun 0")
+    eps, sig, rc, n, volume = 1.5, 1.1, 2.5, 2.0, 1000.0
+    etail = 8 * math.pi * n * n * eps * sig ** 6 * (sig ** 6 - 3 * rc ** 6) / (9 * rc ** 9) / volume
+    ptail = 16 * math.pi * n * n * eps * sig ** 6 * (2 * sig ** 6 - 3 * rc ** 6) / (9 * rc ** 9) / volume
+    assert observables.potential_energy(sim) == pytest.approx(etail, rel=1e-13)
+    assert observables.virial_trace(sim) == pytest.approx(3 * ptail, rel=1e-13)
+
+
+def test_shift_and_tail_together_are_refused(tmp_path):
+    with pytest.raises(ScriptError, match="pair_modify shift yes and tail yes cannot both be set"):
+        build(tmp_path, [[1.0, 1.0, 1.0]], setup="pair_style lj/cut 2.5\npair_coeff * * 1 1\n"
+                                                   "pair_modify shift yes tail yes\nrun 0")
+
+
+def test_a_style_without_a_tail_correction_refuses_it():
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\npair_style dpd 1.0 1.0 1")
+    with pytest.raises(ScriptError, match="pair style dpd has no tail correction"):
+        sim.command("pair_modify tail yes")
