@@ -13,6 +13,7 @@
 """
 
 import argparse
+import os
 import sys
 import traceback
 
@@ -65,10 +66,13 @@ def main(argv=None):
     if argv and argv[0] in LMP_FLAGS:
         argv = ["run", *argv]       # pdps -in in.melt ...: called as LAMMPS's lmp is
     args = _parser().parse_args(argv)
-    if args.action == "styles":
-        return _styles(args.verbose)
-    if args.action == "doc":
-        return _doc(args.kind, args.style)
+    if args.action in ("styles", "doc"):
+        try:
+            return _styles(args.verbose) if args.action == "styles" else _doc(args.kind, args.style)
+        except BrokenPipeError:
+            # the reader stopped early (pdps styles | head): not an error of ours, and no traceback
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            return 0
     if args.action == "new-plugin":
         return _new_plugin(args.name, args.dir, args.kind, args.style)
     if args.action == "plot":

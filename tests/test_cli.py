@@ -374,3 +374,9 @@ def test_bad_var_name(pdps_cli):
     result = pdps_cli("print ok\n", "-log", "none", "-var", "bad-name", "1")
     assert result.returncode == 1
     assert result.stderr == "ERROR: variable name must be letters, digits and _ (got bad-name)\n"
+
+
+def test_styles_into_a_pipe_closed_early_prints_no_traceback():
+    result = subprocess.run(f"{sys.executable} -m pdps_core.cli styles | head -1", shell=True,
+                            capture_output=True, text=True)
+    assert result.stdout.count("\n") == 1 and "Traceback" not in result.stderr and "Error" not in result.stderr
