@@ -25,10 +25,14 @@ Parameters:
 - ``DAMP``: the damping time :math:`\tau` (> 0, time units): the friction relaxes velocities over
   :math:`\tau`, kinetic energy over :math:`\tau/2`.
 - ``SEED``: integer >= 1.
+- ``scale TYPE RATIO`` (repeatable): particles of TYPE are damped over DAMP / RATIO (LAMMPS's scale).
+- ``zero yes``: the random forces of the group are shifted to sum to zero every step, so the
+  thermostat adds no net momentum (LAMMPS's zero).
+- ``angmom``, ``omega``, ``tally`` and ``gjf`` are LAMMPS keywords pdps refuses in one line.
 
 Syntax::
 
-    fix ID GROUP langevin T_START T_STOP DAMP SEED
+    fix ID GROUP langevin T_START T_STOP DAMP SEED [scale TYPE RATIO]... [zero yes|no]
 
 Example::
 
@@ -38,27 +42,36 @@ Example::
 
 import math
 
+import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, StyleArgs, observables, param, particle_uniforms
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, observables, param, particle_uniforms
 
 STREAM = 1      # the generator stream of this fix's draws
 
 
 @njit(cache=True)
-def langevin_forces(v, f, tag, mass, mask, groupbit, nlocal, damp, noise_scale, seed, step):
-    """Friction -m v/damp and noise sqrt(24 kT m/(dt damp)) (u - 1/2); ``noise_scale`` is
-    sqrt(24 kT / (dt damp)) in the run's units."""
+def langevin_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_scale, ratio, seed, step,
+                    noise_sum):
+    """Friction -m v/damp and noise sqrt(24 kT m/(dt damp)) (u - 1/2) with damp divided by
+    ``ratio[type]``; ``noise_scale`` is sqrt(24 kT / (dt damp)) in the run's units. The noise added
+    is summed into ``noise_sum`` (3,), for ``zero yes``."""
+    noise_sum[:] = 0.0
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
         m = mass[i]
+        scale = ratio[type_[i]]
         u0, u1, u2, _ = particle_uniforms(seed, step, tag[i], STREAM)
-        amplitude = noise_scale * math.sqrt(m)
-        friction = m / damp
-        f[i, 0] += -friction * v[i, 0] + amplitude * (u0 - 0.5)
-        f[i, 1] += -friction * v[i, 1] + amplitude * (u1 - 0.5)
-        f[i, 2] += -friction * v[i, 2] + amplitude * (u2 - 0.5)
+        amplitude = noise_scale * math.sqrt(m * scale)
+        friction = m * scale / damp
+        n0, n1, n2 = amplitude * (u0 - 0.5), amplitude * (u1 - 0.5), amplitude * (u2 - 0.5)
+        f[i, 0] += -friction * v[i, 0] + n0
+        f[i, 1] += -friction * v[i, 1] + n1
+        f[i, 2] += -friction * v[i, 2] + n2
+        noise_sum[0] += n0
+        noise_sum[1] += n1
+        noise_sum[2] += n2
 
 
 class FixLangevin(Fix):
@@ -70,6 +83,26 @@ class FixLangevin(Fix):
         t_stop: float = param(ge=0, unit="temperature")
         damp: float = param(gt=0, unit="time")
         seed: int = param(ge=1, lt=2 ** 63, unit="dimensionless")
+        scale: list[tuple[int, float]] = keyword(default_factory=list, unit="dimensionless")
+        zero: bool = keyword(False)
+        angmom: str | None = keyword(None)
+        omega: str | None = keyword(None)
+        tally: str | None = keyword(None)
+        gjf: str | None = keyword(None)
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        for name in ("angmom", "omega", "tally", "gjf"):
+            if getattr(args, name) is not None:
+                raise ScriptError(f"fix langevin keyword {name} is not supported (supported: scale, zero)")
+        self.ratio = np.ones(sim.ntypes + 1)
+        for ptype, ratio in args.scale:
+            if not 1 <= ptype <= sim.ntypes:
+                raise ScriptError(f"scale: type {ptype} is out of range 1..{sim.ntypes}")
+            if not ratio > 0:
+                raise ScriptError(f"scale: ratio must be > 0 (got {ratio:g})")
+            self.ratio[ptype] = ratio
+        self.noise_sum = np.zeros(3)
 
     def target(self, sim):
         """The temperature the thermostat holds at this step (the ramp)."""
@@ -84,8 +117,16 @@ class FixLangevin(Fix):
         # forces in force units: m v / damp and the noise are divided by ftm2v (1 in lj and si), as LAMMPS
         ftm2v = sim.units.ftm2v
         noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp)) / ftm2v
-        langevin_forces(p.v, p.f, p.tag, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                        p.nlocal, self.args.damp * ftm2v, noise_scale, sim.random_key(self.args.seed), sim.step)
+        langevin_forces(p.v, p.f, p.tag, p.type, observables.masses(sim), p.mask, sim.groups.bit(self.group),
+                        p.nlocal, self.args.damp * ftm2v, noise_scale, self.ratio, sim.random_key(self.args.seed),
+                        sim.step, self.noise_sum)
+        if self.args.zero:
+            # LAMMPS's zero yes: the mean random force of the group taken off each of its particles
+            count = observables.count(sim, self.group)
+            if count:
+                mean = np.asarray(sim.comm.sum(self.noise_sum), dtype=np.float64) / count
+                chosen = sim.groups.select(sim, self.group)
+                p.f[:p.nlocal][chosen] -= mean
 
     def scalar(self, sim):
         """f_ID: the target temperature now."""
