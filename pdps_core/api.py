@@ -42,6 +42,7 @@ CONTRACT = {
         "ntypes": "number of particle types",
         "particle_style": "'atomic' or 'sphere' (radius, rmass, omega, torque exist)",
         "box": "the simulation box (Box)",
+        "change_box": "change_box(lo, hi, remap=GROUP or None): new box bounds now, a group's particles carried (barostats, deform)",
         "dimension": "2 or 3",
         "lattice": "the lattice command's Lattice (spacing (3,): what units lattice multiplies by; basis, cell, offset, style), or None",
         "units": "the unit system (Units): boltz, mvv2e, nktv2p",
@@ -54,6 +55,7 @@ CONTRACT = {
         "ramp": "ramp(start, stop): linear from the run's first to its last step (LAMMPS's ramp)",
         "eflag": "True while the current step computes energies",
         "vflag": "True while the current step computes the virial",
+        "virial": "this rank's virial (xx, yy, zz, xy, xz, yz; energy) of the step's forces, where vflag was set",
         "in_setup": "True while a run computes its setup forces (styles with history do not advance it)",
         # the other styles and script objects
         "pair": "the pair style, or None",

@@ -102,6 +102,7 @@ class Verlet:
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
 
+        sim.box_changed = False
         limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
         limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
@@ -226,6 +227,11 @@ class Verlet:
             self._call("initial_integrate")
             self._call("post_integrate")
             rebuild = sim.neighbor.decide(particles, sim.comm)
+            # a box changed since the last decision (barostat, deform) shifts every periodic image:
+            # wrap and make the ghosts again with the new lengths (sim.change_box)
+            if sim.box_changed:
+                rebuild, sim.box_changed = True, False
+                limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a fix inserting or deleting particles asks for this step's rebuild (LAMMPS's
             # force_reneighbor / next_reneighbor); every rank's fixes agree on the step
             if not rebuild and any(fix.next_reneighbor == step for fix in sim.fixes.values()):

@@ -2,6 +2,9 @@
 
 A particle leaving through an ``f`` face is lost, and the run stops (PDPS manual, ``boundary``).
 Positions of particles that cross a periodic face are wrapped and their image counters updated.
+
+The bounds may change during a run (``Simulation.change_box``: barostats, fix deform); they change in
+place (``set_bounds``), so every holder of the box sees the new ones.
 """
 
 import numpy as np
@@ -15,6 +18,17 @@ class Box:
         self.hi = np.asarray(hi, dtype=np.float64)
         self.periodic = tuple(bool(p) for p in periodic)
         self.dimension = dimension
+
+    def set_bounds(self, lo, hi):
+        """New bounds, in place; lo < hi on every axis, finite (else a one-line SimulationError)."""
+        lo = np.asarray(lo, dtype=np.float64)
+        hi = np.asarray(hi, dtype=np.float64)
+        if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (hi > lo).all()):
+            raise SimulationError(f"the box cannot become [{', '.join(f'{v:.6g}' for v in lo)}] to "
+                                  f"[{', '.join(f'{v:.6g}' for v in hi)}]: every side must stay finite "
+                                  "and longer than 0 (the barostat or deformation ran away)")
+        self.lo[:] = lo
+        self.hi[:] = hi
 
     @property
     def length(self):
