@@ -68,10 +68,10 @@ def _cap(vector, i, limit):
 
 
 @njit(cache=True)
-def limited_kick(x, v, f, mass, radius, mask, groupbit, nlocal, dt, xmax, per_radius, drift):
+def limited_kick(x, v, f, mass, radius, mask, groupbit, nlocal, dt, xmax, per_radius, drift, ftm2v):
     """Half-kick, cap |v| at xmax/dt (xmax * radius with ``per_radius``), then drift when asked.
     Returns how many velocities were capped."""
-    half = 0.5 * dt
+    half = 0.5 * dt * ftm2v
     capped = 0
     for i in range(nlocal):
         if mask[i] & groupbit:
@@ -88,10 +88,10 @@ def limited_kick(x, v, f, mass, radius, mask, groupbit, nlocal, dt, xmax, per_ra
 
 
 @njit(cache=True)
-def limited_spin(omega, torque, mass, radius, mask, groupbit, nlocal, dt, xmax, per_radius, inertia):
+def limited_spin(omega, torque, mass, radius, mask, groupbit, nlocal, dt, xmax, per_radius, inertia, ftm2v):
     """Half-kick of omega by the torque, then cap the surface speed |omega| R at xmax/dt.
     Returns how many spins were capped."""
-    half = 0.5 * dt
+    half = 0.5 * dt * ftm2v
     capped = 0
     for i in range(nlocal):
         if mask[i] & groupbit:
@@ -149,10 +149,10 @@ class FixNVELimit(Fix):
         radius = p.radius if p.has("radius") else mass     # read only with radius_ratio
         groupbit = sim.groups.bit(self.group)
         capped = limited_kick(p.x, p.v, p.f, mass, radius, p.mask, groupbit, p.nlocal, sim.dt,
-                              self.args.xmax, self.per_radius, drift)
+                              self.args.xmax, self.per_radius, drift, sim.units.ftm2v)
         if self.rotate:
             capped += limited_spin(p.omega, p.torque, mass, p.radius, p.mask, groupbit, p.nlocal,
-                                   sim.dt, self.args.xmax, self.per_radius, self.inertia)
+                                   sim.dt, self.args.xmax, self.per_radius, self.inertia, sim.units.ftm2v)
         return capped
 
     def initial_integrate(self, sim):
