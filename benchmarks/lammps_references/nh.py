@@ -1,0 +1,70 @@
+"""Record LAMMPS's thermo for short runs with fix nvt, npt, nph, deform and the LJ walls, the reference
+plugins/fix_nh/tests/test_lammps_nh.py and plugins/fix_wall/tests/test_wall_lj.py compare pdps with.
+
+    python benchmarks/lammps_references/nh.py [LMP]
+
+The scene is plugins/fix_nh/tests/data/fluid.data (200 particles of two types with Gaussian
+velocities and a net momentum, a copy of pair_simple's), lj/cut 2.5, dt 0.002, 100 steps with each
+case's integrator; thermo (step temp pe press vol lx ly lz, 15 digits) every 25 steps goes to
+plugins/fix_nh/tests/data/nh.txt. The runs are deterministic (no random numbers), so pdps must give
+these digits to round-off grown by the fluid's chaos over 100 steps.
+"""
+
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "fix_nh" / "tests" / "data"
+THERMO = "step temp pe press vol lx ly lz"
+CASES = {
+    "nvt": "fix 1 all nvt temp 1.0 1.0 0.1",
+    "nvt_ramp": "fix 1 all nvt temp 1.0 2.0 0.05 tchain 5 tloop 3 drag 0.5",
+    "nvt_group": "group light type 1\nfix 1 light nvt temp 1.5 1.5 0.1\nfix 2 all nve\nunfix 2\n"
+                 "group heavy type 2\nfix 3 heavy nve",
+    "npt_iso": "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 0.5",
+    "npt_aniso": "fix 1 all npt temp 1.0 1.0 0.1 aniso 0.5 0.5 0.5",
+    "npt_xyz": "fix 1 all npt temp 1.0 1.0 0.1 x 0.5 0.5 0.5 y 0.3 0.3 0.7 z 0.8 0.2 1.0 nreset 20",
+    "npt_couple": "fix 1 all npt temp 1.2 0.8 0.2 aniso 0.5 1.0 0.5 couple xy tchain 4 pchain 2 tloop 2 ploop 3 drag 0.2",
+    "nph_iso": "fix 1 all nph iso 0.5 0.5 0.5",
+    "nph_aniso": "fix 1 all nph aniso 0.5 0.5 0.5 mtk no pchain 0",
+    # LAMMPS's neighbor check misses pairs when only part of the system dilates (its skin test sees
+    # the box corners move, not the undilated particles' images): with its default schedule it
+    # departs from its own every-step-rebuild run at step 50; pdps rebuilds on every box change
+    "nph_dilate": "group light type 1\nneigh_modify every 1 delay 0 check no\n"
+                  "fix 1 all nph iso 8.0 8.0 2.0 dilate light fixedpoint 1 2 3",
+}
+SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
+         "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]
+
+
+def script(case):
+    return "\n".join(SETUP + [CASES[case], "thermo 25", f"thermo_style custom {THERMO}", "run 100"])
+
+
+def main(lmp):
+    rows = []
+    for case in CASES:
+        text = script(case) + "\n"
+        text = text.replace("run 100", "thermo_modify format float %.15g\nrun 100")
+        with tempfile.TemporaryDirectory() as folder:
+            (Path(folder) / "fluid.data").write_bytes((DATA / "fluid.data").read_bytes())
+            (Path(folder) / "in.case").write_text(text)
+            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines = log.splitlines()
+        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+        for line in lines[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            rows.append(f"{case}\t" + "\t".join(line.split()))
+    (DATA / "nh.txt").write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))

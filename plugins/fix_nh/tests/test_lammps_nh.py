@@ -1,0 +1,133 @@
+"""Fixes nvt, npt and nph give LAMMPS's thermo (temp, pe, press, volume, box lengths) over 100 steps of
+a 200-particle Lennard-Jones fluid (data/nh.txt, recorded with LAMMPS by
+benchmarks/lammps_references/nh.py): thermostat chains, iso/aniso/x-y-z barostats, couple, drag,
+sub-cycles, ramps, dilate and fixedpoint as LAMMPS integrates them."""
+
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation, observables
+from pdps_core.testing import run_ranks, thermo_rows, total_energy
+
+DATA = Path(__file__).parent / "data"
+ROWS = [line.split("\t") for line in (DATA / "nh.txt").read_text().splitlines()]
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from nh import CASES, script  # noqa: E402
+
+
+def run_case(tmp_path, monkeypatch, case):
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.case", dialect="lammps")
+    sim.command(script(case))
+    sim.close()
+    rows = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
+    return sim, rows
+
+
+@pytest.mark.parametrize("case", [c for c in CASES if c.startswith(("nvt", "npt", "nph"))])
+def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
+    sim, mine = run_case(tmp_path, monkeypatch, case)
+    reference = [row[1:] for row in ROWS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
+                                   atol=1e-10, err_msg=f"{case} step {got[0]}")
+
+
+def test_two_ranks_give_the_serial_thermo(tmp_path):
+    """npt aniso (box lengths changing every step, particles migrating between sub-domains) on 2
+    ranks prints the thermo LAMMPS prints on one, to round-off."""
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    done = run_ranks(script("npt_aniso").replace(
+        "run 100", "processors 2 1 1\nthermo_modify format float %.15g\nrun 100"), 2, tmp_path)
+    mine = thermo_rows(done.stdout)
+    reference = [[float(v) for v in row[1:]] for row in ROWS if row[0] == "npt_aniso"]
+    assert [int(r[0]) for r in mine] == [0, 25, 50, 75, 100]
+    np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)
+
+
+CONSERVE = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5",
+            "pair_coeff 1 1 1.0 1.0", "pair_coeff 2 2 0.5 1.2", "pair_modify shift yes", "timestep 0.001",
+            "thermo 0"]
+
+
+@pytest.mark.parametrize("fix", ["fix 1 all nvt temp 1.0 1.0 0.1",
+                                 "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 1.0",
+                                 "fix 1 all nph aniso 0.5 0.5 1.0"])
+def test_the_extended_energy_is_conserved(tmp_path, monkeypatch, fix):
+    """pe + ke + ecouple (LAMMPS's econserve; ecouple is the fix's scalar) over 2,000 steps of
+    dt 0.001 with a shifted LJ potential: it stays within 0.1 (5e-4 per particle, the integrator's
+    O(dt^2) fluctuation) while pe + ke alone moves by more than 50 as the reservoir exchanges
+    energy with the fluid."""
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("\n".join(CONSERVE + [fix, "run 0"]))
+    conserved, total = [], []
+    for _ in range(20):
+        sim.command("run 100")
+        energy = total_energy(sim) + observables.kinetic_energy(sim)
+        total.append(energy)
+        conserved.append(energy + sim.fixes["1"].ecouple(sim))
+    assert np.ptp(total) > 50
+    assert np.ptp(conserved) < 0.1
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("fix, target_t, target_p", [
+    ("fix 1 all nvt temp 1.0 1.0 0.5", 1.0, None),
+    ("fix 1 all npt temp 1.0 1.0 0.5 iso 0.5 0.5 5.0", 1.0, 0.5),
+    ("fix 1 all npt temp 0.9 0.9 0.5 aniso 0.3 0.3 5.0", 0.9, 0.3),
+])
+def test_long_runs_reach_the_targets(tmp_path, monkeypatch, fix, target_t, target_p):
+    """After 2,000 steps of equilibration, 30 blocks of 2,000 steps (10 tau, longer than the
+    barostat's period) average to the target temperature and pressure within three standard errors
+    of the block means."""
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("\n".join(SETUP_LONG + [fix, "variable t equal temp", "variable p equal press",
+                                        "fix av all ave/time 10 200 2000 v_t v_p", "run 2000"]))
+    blocks = []
+    for _ in range(30):
+        sim.command("run 2000")
+        blocks.append([sim.fix_value("av", (1,)), sim.fix_value("av", (2,))])
+    blocks = np.array(blocks)
+    mean, error = blocks.mean(axis=0), blocks.std(axis=0, ddof=1) / np.sqrt(len(blocks))
+    assert abs(mean[0] - target_t) < 3 * error[0], (mean, error)
+    if target_p is not None:
+        assert abs(mean[1] - target_p) < 3 * error[1], (mean, error)
+
+
+SETUP_LONG = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5",
+              "pair_coeff 1 1 1.0 1.0", "pair_coeff 2 2 0.5 1.2", "timestep 0.005", "thermo 0"]
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix 1 all nvt temp 1 1 0.1 iso 1 1 1", "fix nvt controls no pressure (use fix npt for temp and pressure)"),
+    ("fix 1 all nvt tchain 3", "fix nvt needs temp TSTART TSTOP TDAMP"),
+    ("fix 1 all npt temp 1 1 0.1", "fix npt needs a pressure: iso, aniso, x, y or z PSTART PSTOP PDAMP"),
+    ("fix 1 all nph temp 1 1 0.1 iso 1 1 1", "fix nph controls no temperature (use fix npt for temp and pressure)"),
+    ("fix 1 all nvt temp 0 1 0.1", "temp: target temperatures must be > 0 (got 0 1)"),
+    ("fix 1 all nvt temp 1 1 0", "temp: damping must be > 0 (got 0)"),
+    ("fix 1 all nph aniso 1 1 -2", "x: pressure damping must be > 0 (got -2)"),
+    ("fix 1 all nph tri 1 1 1", "tri: pdps boxes are orthogonal (no tilt), so only iso, aniso, x, y and z can be barostatted"),
+    ("fix 1 all nph x 1 1 1 xy 0 0 1", "xy: pdps boxes are orthogonal (no tilt), so only iso, aniso, x, y and z can be barostatted"),
+    ("fix 1 all nph x 1 1 1 couple xy", "couple xy: every coupled axis needs a pressure (iso, aniso or x/y/z)"),
+    ("fix 1 all nph x 1 1 1 y 2 2 1 couple xy", "couple xy: coupled axes need the same PSTART PSTOP PDAMP"),
+    ("fix 1 all nph x 1 1 1 dilate nobody", "group nobody is not defined (defined: all)"),
+    ("fix 1 all nvt temp 1 1 0.1 tchain 0", "tchain must be >= 1 (got 0)"),
+    ("fix 1 all nph z 1 1 1", "z is not periodic: a barostat needs periodic axes it changes"),
+    ("fix 1 all nvt temp 1 1 0.1 mtk maybe", "mtk must be one of 'yes' or 'no' (got maybe)"),
+])
+def test_bad_nh_fixes(line, message):
+    sim = Simulation(screen=False, log=None)
+    sim.command("boundary p p f\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
+    with pytest.raises(ScriptError) as caught:
+        sim.command(line)
+    assert caught.value.message == message
