@@ -68,6 +68,67 @@ NEWTON = """            f[j, 0] -= dx * fpair
             f[j, 2] -= dz * fpair
 """
 
+# The per-particle tally (LAMMPS's eflag_atom/vflag_atom, for computes pe/atom and stress/atom): each
+# pair's energy and virial r_a f_b split half to each particle; ghosts' halves are summed back to
+# their owners by the core. tally[:, 0] energy, tally[:, 1:7] virial xx yy zz xy xz yz.
+TALLY_LOOP = '''
+
+@njit(cache=True)
+def {name}(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state, tally):
+    """{doc}"""
+    energy = 0.0
+    for i in range(nlocal):
+        ti = type_[i]
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            tj = type_[j]
+            dx = x[i, 0] - x[j, 0]
+            dy = x[i, 1] - x[j, 1]
+            dz = x[i, 2] - x[j, 2]
+            rsq = dx * dx + dy * dy + dz * dz
+            if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
+                continue
+            fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
+            f[i, 0] += dx * fpair
+            f[i, 1] += dy * fpair
+            f[i, 2] += dz * fpair
+            half_e = 0.5 * e
+            vxx = 0.5 * dx * dx * fpair
+            vyy = 0.5 * dy * dy * fpair
+            vzz = 0.5 * dz * dz * fpair
+            vxy = 0.5 * dx * dy * fpair
+            vxz = 0.5 * dx * dz * fpair
+            vyz = 0.5 * dy * dz * fpair
+            tally[i, 0] += half_e
+            tally[i, 1] += vxx
+            tally[i, 2] += vyy
+            tally[i, 3] += vzz
+            tally[i, 4] += vxy
+            tally[i, 5] += vxz
+            tally[i, 6] += vyz
+{newton}    return energy
+'''
+
+TALLY_NEWTON = """            f[j, 0] -= dx * fpair
+            f[j, 1] -= dy * fpair
+            f[j, 2] -= dz * fpair
+            tally[j, 0] += half_e
+            tally[j, 1] += vxx
+            tally[j, 2] += vyy
+            tally[j, 3] += vzz
+            tally[j, 4] += vxy
+            tally[j, 5] += vxz
+            tally[j, 6] += vyz
+            energy += e
+"""
+
+TALLY_VARIANTS = {
+    (True, "tally"): ("half_loop_tally", "Half list: the energy, and each pair's energy and virial half "
+                                         "to each particle (ghosts included)."),
+    (False, "tally"): ("full_loop_tally", "Full list: the energy, and half of each pair's energy and virial "
+                                          "to i (j's half comes with the pair's other entry)."),
+}
+
 VARIANTS = {
     # (half list, energy): name, what it does
     (True, True): ("half_loop_energy", "Half list, newton on: each pair once, force on both particles "
@@ -87,6 +148,9 @@ def _source(origin, binding, pair_coeff):
             tally = "            energy += e\n" if half else "            energy += 0.5 * e\n"
         text += LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
                             newton=NEWTON if half else "", tally=tally)
+    for (half, _), (name, doc) in TALLY_VARIANTS.items():
+        text += TALLY_LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
+                                  newton=TALLY_NEWTON if half else "            energy += half_e\n")
     return text
 
 
@@ -127,7 +191,8 @@ def law_definition(law):
 
 
 def loops_for(nparams, law=None, source=None, name="law"):
-    """{(half list, energy): loop} compiled around ``law`` (an importable numba function), or around
+    """{(half list, energy): loop} (and {(half list, "tally"): loop} taking the per-particle tally
+    array last) compiled around ``law`` (an importable numba function), or around
     ``source``: Python source defining a numba function ``law`` (generated laws such as pair
     formula). The law receives its ``nparams`` coefficients as a tuple read from the table: a
     tuple lives in registers, where a view of the table would cost reference counting per pair."""
@@ -153,6 +218,6 @@ def loops_for(nparams, law=None, source=None, name="law"):
     module = importlib.util.module_from_spec(spec)
     sys.modules[module_name] = module
     spec.loader.exec_module(module)
-    _loaded[digest] = {key: getattr(module, name) for key, (name, _) in VARIANTS.items()}
+    _loaded[digest] = {key: getattr(module, name) for key, (name, _) in {**VARIANTS, **TALLY_VARIANTS}.items()}
     return _loaded[digest]
 

@@ -31,6 +31,7 @@ from .errors import ScriptError
 from .state import limits
 
 KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
+TALLY = "pair_tally"    # the per-particle (energy, 6 virial components) array of Compute.peratom_tally
 
 
 # ---- script arguments ---------------------------------------------------------------------------
@@ -240,6 +241,8 @@ class Pair(Style):
     Coeff: ClassVar[type[StyleArgs]] = StyleArgs
     coeff_usage: ClassVar[str] = ""
     neighbor_list: ClassVar[str] = "half"
+    # fills the per-particle tally (energy, virial) on the steps ``sim.tally_atom`` asks for it
+    peratom_tally: ClassVar[bool] = False
 
     def __init__(self, sim, args):
         self.sim = sim
@@ -363,6 +366,7 @@ class PairLaw(Pair):
     steps that read it; the virial comes from sum(r . f) as for every pair style. The tables are
     ``self.coeff_table`` ((ntypes+1, ntypes+1, len(params)), symmetric) and ``self.cutsq``.
     """
+    peratom_tally = True
     params: ClassVar[tuple] = ()
     law_atom: ClassVar[tuple] = ()
     law: ClassVar = None            # the force law (a static numba function)
@@ -412,10 +416,13 @@ class PairLaw(Pair):
             self._loops = (loops_for(nparams, source=self.law_source, name=self.name.replace("/", "_"))
                            if self.law_source is not None else loops_for(nparams, law=self.force_law()))
         p = sim.particles
-        loop = self._loops[(nlist.half_list, bool(eflag))]
         atom = tuple(p.arrays[name] for name in self.law_atom)
-        self.energy = loop(p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq,
-                           self.coeff_table, atom, self.law_state(sim))
+        args = (p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq, self.coeff_table, atom,
+                self.law_state(sim))
+        if getattr(sim, "tally_atom", False):
+            self.energy = self._loops[(nlist.half_list, "tally")](*args, p.arrays[TALLY])
+        else:
+            self.energy = self._loops[(nlist.half_list, bool(eflag))](*args)
 
 
 class Fix(Style):
@@ -476,6 +483,9 @@ class Compute(Style):
     kind = "compute"
     needs_energy: ClassVar[bool] = False
     needs_virial: ClassVar[bool] = False
+    # reads the pair style's per-particle tally (``pair_tally``) on the steps it is read: pe/atom,
+    # stress/atom (the core then allocates it and has the pair style fill it on those steps)
+    peratom_tally: ClassVar[bool] = False
     # a total over particles (LAMMPS's extscalar): thermo divides it by the particle count when it
     # normalises energies (lj units), as LAMMPS does; variables read it as it is
     extensive: ClassVar[bool] = False
@@ -494,6 +504,14 @@ class Compute(Style):
 
     def peratom(self, sim):
         raise ScriptError(f"compute {self.id} ({self.name}) has no per-atom values")
+
+    def pair_tally(self, sim):
+        """This step's per-particle pair tally of the owned particles (``peratom_tally = True``), a
+        (nlocal, 7) view: energy, then virial xx yy zz xy xz yz, each pair's half (energy units)."""
+        if getattr(sim, "tally_step", None) != sim.step:
+            raise ScriptError(f"compute {self.id} ({self.name}): per-particle energies and virials were not "
+                              f"computed on step {sim.step}: read them on a thermo or dump step, or run 0 first")
+        return sim.particles.arrays[TALLY][: sim.particles.nlocal]
 
 
 def peratom_column(sim, style, column, what):

@@ -17,8 +17,9 @@ import time
 import numpy as np
 import pluggy
 
-from ..errors import SimulationError
+from ..errors import ScriptError, SimulationError
 from ..state import limits
+from ..styles import TALLY
 from .hookspec import HOOKS, TimestepSpec
 from .timers import timed_hooks
 
@@ -47,6 +48,7 @@ class Verlet:
         self.reverse = ("f",)
         self.warned_overrun = False
         self.contributing = []
+        self.tally_atom = []
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
@@ -101,6 +103,13 @@ class Verlet:
         sim.groups.update(sim)
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
+        self.tally_atom = [c for c in sim.computes.values() if c.peratom_tally]
+        if self.tally_atom:
+            particles.request(TALLY, 7)
+        if self.tally_atom and sim.pair is not None and not sim.pair.peratom_tally:
+            c = self.tally_atom[0]
+            raise ScriptError(f"compute {c.id} ({c.name}) needs per-particle energies and virials, which pair "
+                              f"style {sim.pair.name} does not tally")
 
         sim.box_changed = False
         limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
@@ -151,6 +160,10 @@ class Verlet:
     def _forces(self, eflag, vflag):
         sim, particles = self.sim, self.sim.particles
         sim.eflag, sim.vflag = bool(eflag), bool(vflag)
+        # per-particle energies and virials only on steps that read energies or virials
+        sim.tally_atom = bool(self.tally_atom) and (sim.eflag or sim.vflag)
+        if sim.tally_atom:
+            particles.arrays[TALLY][:] = 0.0
         particles.f[:] = 0.0
         if particles.has("torque"):
             particles.torque[:] = 0.0
@@ -166,7 +179,7 @@ class Verlet:
                                     float(x[:, 1] @ f[:, 2])])
             sim.timers.stage["Pair"] += time.perf_counter() - t0
             t0 = time.perf_counter()
-            sim.comm.reverse_comm(particles, self.reverse)
+            sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if sim.tally_atom else ()))
             sim.timers.stage["Comm"] += time.perf_counter() - t0
         elif vflag:
             sim.virial[:] = 0.0
@@ -175,6 +188,8 @@ class Verlet:
             sim.energy_step = sim.step
         if vflag:
             sim.virial_step = sim.step
+        if sim.tally_atom:
+            sim.tally_step = sim.step
 
     def _fix_contributions(self):
         """Fix energies and virials, where switched on, join the pair's (after post_force, when the

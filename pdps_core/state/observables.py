@@ -78,3 +78,9 @@ def pressure(sim, temp=None, temp_group="all"):
 def potential_energy(sim):
     sim.require_energy()
     return float(sim.comm.sum(sim.pe)) + tail_corrections(sim)[0]
+
+
+def pair_energy(sim):
+    """The pair style's energy (LAMMPS's evdwl, with the tail correction), without fixes'."""
+    sim.require_energy()
+    return float(sim.comm.sum(sim.evdwl)) + tail_corrections(sim)[0]
