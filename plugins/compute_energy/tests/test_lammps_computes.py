@@ -1,0 +1,133 @@
+"""Computes pe, pe/atom, stress/atom, ke/atom and vacf give LAMMPS's numbers on a 200-particle
+two-type Lennard-Jones fluid: thermo every 25 steps of a 100-step NVE run to 1e-9, per-particle
+values at steps 0 and 100 to 1e-12 (data/, recorded with LAMMPS by
+benchmarks/lammps_references/computes.py); the per-particle values add up to the global ones."""
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.state import observables
+from pdps_core.testing import build, by_tag
+
+DATA = Path(__file__).parent / "data"
+SETUP = """units lj
+atom_style atomic
+read_data fluid.data
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0
+pair_coeff 2 2 0.5 1.2 2.0
+group heavy type 2
+compute pe all pe
+compute pep all pe pair
+compute pea all pe/atom
+compute peh heavy pe/atom pair
+compute s all stress/atom NULL
+compute sv all stress/atom NULL virial
+compute sk heavy stress/atom NULL ke
+compute ka all ke/atom
+compute vacf all vacf
+compute vh heavy vacf
+compute sums all reduce sum c_pea c_s[1] c_s[2] c_s[3] c_sv[1] c_sv[2] c_sv[3] c_ka
+fix 1 all nve
+timestep 0.002
+thermo 25
+"""
+THERMO = ("thermo_style custom step temp pe press c_pe c_pep c_vacf[1] c_vacf[2] c_vacf[3] c_vacf[4] c_vh[4] "
+          "c_sums[1] c_sums[2] c_sums[3] c_sums[4] c_sums[5] c_sums[6] c_sums[7] c_sums[8]")
+COLUMNS = "id c_pea c_peh c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6] c_sv[1] c_sv[4] c_sk[1] c_sk[6] c_ka"
+
+
+def lammps_dump(step):
+    lines = (DATA / f"computes_step{step}.dump").read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    return np.array([[float(v) for v in line.split()] for line in lines[start + 1:]])
+
+
+def mine(sim):
+    """The dump's columns, computed by pdps now, in id order."""
+    rows = [np.sort(sim.tag).astype(float)]
+    for word in COLUMNS.split()[1:]:
+        ident, _, index = word[2:].partition("[")
+        values = np.asarray(sim.computes[ident].peratom(sim))
+        if index:
+            values = values[:, int(index.rstrip("]")) - 1]
+        rows.append(by_tag(sim, values))
+    return np.column_stack(rows)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("computes")
+    shutil.copy(DATA / "fluid.data", folder / "fluid.data")
+    sim = Simulation(screen=False, log=str(folder / "log.case"), dialect="lammps")
+    with pytest.MonkeyPatch.context() as patch:
+        patch.chdir(folder)
+        sim.command(SETUP + THERMO + "\nrun 0")
+        first = mine(sim)
+        sim.command("run 100")
+        last = mine(sim)
+        sim.close()
+    rows = [line.split(",") for line in (folder / "log.case.csv").read_text().splitlines()[1:]]
+    return first, last, rows
+
+
+def test_thermo_as_lammps_prints_it(run):
+    _, _, rows = run
+    reference = [line.split("\t") for line in (DATA / "computes_thermo.txt").read_text().splitlines()]
+    # run 0, then run 100 (which prints step 0 again): LAMMPS's one run 100
+    rows = rows[1:]
+    assert [int(r[0]) for r in rows] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(rows, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
+                                   atol=1e-12, err_msg=f"step {got[0]}")
+
+
+@pytest.mark.parametrize("step", [0, 100])
+def test_per_particle_values_equal_lammps_dump(run, step):
+    got = run[0] if step == 0 else run[1]
+    want = lammps_dump(step)
+    assert got.shape == want.shape == (200, 14)
+    np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12 * np.abs(want).max())
+
+
+def test_per_particle_energies_and_virials_add_up(tmp_path):
+    """Sum of pe/atom = pe, sum of the stress/atom traces = -3 P V (with all 3N degrees of freedom in
+    the kinetic part, as stress/atom's ke term), on a small box where ghosts carry half the pairs."""
+    rng = np.random.default_rng(5)
+    x = np.array([[i, j, k] for i in range(3) for j in range(3) for k in range(3)], dtype=float) * 1.5 + 0.4
+    x += rng.uniform(-0.1, 0.1, size=x.shape)
+    sim = build(tmp_path, x, v=rng.normal(size=x.shape), hi=(4.5, 4.5, 4.5),
+                setup="pair_style lj/cut 1.8\npair_coeff * * 1 1\ncompute e all pe/atom\n"
+                      "compute s all stress/atom NULL\nrun 0")
+    energy = np.sum(sim.computes["e"].peratom(sim))
+    stress = sim.computes["s"].peratom(sim)
+    assert energy == pytest.approx(observables.potential_energy(sim), rel=1e-12)
+    n, volume = len(x), 4.5 ** 3
+    ke = observables.kinetic_energy(sim)
+    pressure_3n = (2.0 * ke + observables.virial_trace(sim)) / (3.0 * volume)
+    assert np.sum(stress[:, :3]) == pytest.approx(-3.0 * pressure_3n * volume, rel=1e-12)
+    assert abs(observables.virial_trace(sim)) > 1.0 and n == 27
+
+
+def test_a_pair_style_without_a_tally_is_named():
+    sim = Simulation(screen=False, log=None)
+    sim.command("particle_style sphere\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
+                "create_particle 1 single 1 1 1\npair_style dem/lsd 0.3 1.0\n"
+                "pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1\ncompute e all pe/atom")
+    with pytest.raises(ScriptError, match=r"compute e \(pe/atom\) needs per-particle energies and virials, "
+                                          r"which pair style dem/lsd does not tally"):
+        sim.command("run 0")
+
+
+def test_stress_atom_takes_only_a_null_temperature(tmp_path):
+    with pytest.raises(ScriptError, match="compute stress/atom: temperature t: only NULL"):
+        build(tmp_path, [[1.0, 1.0, 1.0]], setup="compute t all temp\ncompute s all stress/atom t")
+
+
+def test_pe_must_use_group_all(tmp_path):
+    with pytest.raises(ScriptError, match="compute pe must use group all"):
+        build(tmp_path, [[1.0, 1.0, 1.0]], setup="group one id 1\ncompute p one pe")
