@@ -285,13 +285,17 @@ class Pair(Style):
     def mix_coeff(self, ci, cj, rule):
         raise ScriptError(f"pair style {self.name} has no mixing rule; give pair_coeff {rule} pairs")
 
-    def init(self, ntypes):
-        """Called at the start of every run; returns the (ntypes+1)^2 cutoff matrix."""
+    def init(self, ntypes, pairs=None):
+        """Called at the start of every run; returns the (ntypes+1)^2 cutoff matrix. ``pairs``: the
+        (i, j), i <= j, this style acts on (a sub-style of pair hybrid), all by default; the others
+        get cutoff 0, so that the loop skips them."""
         cut = np.zeros((ntypes + 1, ntypes + 1))
         # explicit coefficients, and mixed ones derived afresh each run (LAMMPS re-mixes at init)
         self.resolved = {}
         for i in range(1, ntypes + 1):
             for j in range(i, ntypes + 1):
+                if pairs is not None and (i, j) not in pairs:
+                    continue
                 if (i, j) in self.coeffs:
                     self.resolved[(i, j)] = self.coeffs[(i, j)]
                 elif i == j:
@@ -372,11 +376,11 @@ class PairLaw(Pair):
     law: ClassVar = None            # the force law (a static numba function)
     law_source: str | None = None   # or Python source defining ``law`` (generated laws)
 
-    def init(self, ntypes):
+    def init(self, ntypes, pairs=None):
         size = ntypes + 1
         self.coeff_table = np.zeros((size, size, max(len(self.params), 1)))
         self._values = {}
-        cut = super().init(ntypes)
+        cut = super().init(ntypes, pairs)
         for (i, j), values in self._values.items():
             if len(values) != len(self.params):
                 raise ScriptError(f"pair style {self.name}: init_one gave {len(values)} values for "

@@ -351,9 +351,9 @@ class PairTable(PairLaw):
         self._table(coeff)      # as LAMMPS, the file is read (and its faults reported) at pair_coeff
         return coeff
 
-    def init(self, ntypes):
+    def init(self, ntypes, pairs=None):
         self._rows = []
-        cut = super().init(ntypes)
+        cut = super().init(ntypes, pairs)
         n = self.args.length
         arrays = [np.zeros((max(len(self._rows), 1), n)) for _ in range(7)]
         for row, table in enumerate(self._rows):
