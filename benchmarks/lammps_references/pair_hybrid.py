@@ -1,0 +1,68 @@
+"""Record LAMMPS's thermo for short NVE runs with pair_style hybrid and hybrid/overlay, the reference
+plugins/pair_hybrid/tests/test_lammps_hybrid.py compares pdps with.
+
+    python benchmarks/lammps_references/pair_hybrid.py [LMP]
+
+The scene is pair_styles.py's 200-particle two-type fluid and pair_table.py's tables (both copied to
+plugins/pair_hybrid/tests/data/); each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo
+(step temp pe press, 15 digits) every 25 steps goes to plugins/pair_hybrid/tests/data/hybrid.txt.
+"""
+
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+SOURCES = [ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data",
+           ROOT / "plugins" / "pair_table" / "tests" / "data" / "pots.table"]
+DATA = ROOT / "plugins" / "pair_hybrid" / "tests" / "data"
+CASES = {
+    "hybrid": "pair_style hybrid lj/cut 2.5 soft 1.5\npair_coeff 1 1 lj/cut 1.0 1.0\npair_coeff 2 2 soft 5.0\n"
+              "pair_coeff 1 2 lj/cut 0.8 1.1 2.2",
+    "hybrid_none_table": "pair_style hybrid lj/cut 2.5 table spline 600\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                         "pair_coeff 2 2 table pots.table MORSE_FP\npair_coeff 1 2 none",
+    "hybrid_mixed": "pair_style hybrid lj/cut 2.5\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                    "pair_coeff 2 2 lj/cut 0.5 1.2 2.0\npair_modify mix arithmetic shift yes",
+    "overlay": "pair_style hybrid/overlay lj/cut 2.5 yukawa 1.5 2.0\npair_coeff * * lj/cut 1.0 1.0\n"
+               "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 1 yukawa 2.0\npair_coeff 2 2 yukawa 3.0 1.8",
+    "overlay_tail": "pair_style hybrid/overlay lj/cut 2.5 soft 1.2\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                    "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 2 lj/cut 0.7 1.1\npair_coeff 1 1 soft 2.0\n"
+                    "pair_coeff 2 2 soft 3.0\npair_coeff 1 2 soft 2.5\npair_modify tail yes",
+}
+
+
+def script(case):
+    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
+                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
+                      "thermo_modify format float %.15g", "run 100", ""])
+
+
+def main(lmp):
+    DATA.mkdir(parents=True, exist_ok=True)
+    for source in SOURCES:
+        shutil.copy(source, DATA / source.name)
+    rows = []
+    for case in CASES:
+        with tempfile.TemporaryDirectory() as folder:
+            for source in SOURCES:
+                shutil.copy(source, Path(folder) / source.name)
+            (Path(folder) / "in.case").write_text(script(case))
+            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                                  capture_output=True, text=True)
+            log = (Path(folder) / "log.lammps").read_text()
+        if done.returncode != 0:
+            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
+        lines = log.splitlines()
+        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+        for line in lines[start + 1:]:
+            if line.startswith("Loop time"):
+                break
+            rows.append(f"{case}\t" + "\t".join(line.split()))
+    (DATA / "hybrid.txt").write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp"))

@@ -1,0 +1,180 @@
+r"""Pair styles ``hybrid`` and ``hybrid/overlay``: several pair styles in one run, each acting on the
+type pairs assigned to it (LAMMPS's pair_style hybrid and hybrid/overlay).
+
+.. math::
+
+    E = \sum_{i<j} \sum_{s \in S(t_i, t_j)} E_s(r_{ij})
+
+where S(t_i, t_j) is the set of sub-styles assigned to the pair of types: one (``hybrid``) or any
+number (``hybrid/overlay``, whose energies and forces add), or none. Units are the sub-styles'.
+
+Syntax::
+
+    pair_style hybrid STYLE1 ARGS1 STYLE2 ARGS2 ...
+    pair_style hybrid/overlay STYLE1 ARGS1 STYLE2 ARGS2 ...
+    pair_coeff I J STYLE COEFFS...        (COEFFS as the sub-style's own pair_coeff)
+    pair_coeff I J none                   (no interaction between types I and J)
+
+A word of the pair_style line that names an installed pair style starts the next sub-style. With
+``hybrid`` a later pair_coeff moves the type pair to its style; with ``hybrid/overlay`` it adds the
+style to the pair's (``none`` clears them). An i != j pair given no pair_coeff is mixed by the
+sub-style of its i i and j j pairs when each has just that one (with the sub-style's mixing rule or
+``pair_modify mix``), as LAMMPS; otherwise it must be given. A sub-style no pair uses is refused. ``pair_modify`` applies to every
+sub-style; the tail correction of a pair sums those of its sub-styles that have one.
+
+The core builds one half neighbor list with, for each type pair, the largest cutoff among its
+sub-styles; each sub-style's loop sees only its own pairs (the others' cutoffs are 0). Sub-styles are
+force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, ...); a style with
+its own loop is refused by name. A style may appear once. Example::
+
+    pair_style hybrid lj/cut 2.5 soft 1.12
+    pair_coeff 1 1 lj/cut 1.0 1.0
+    pair_coeff 2 2 soft 10.0
+    pair_coeff 1 2 none
+"""
+
+import inspect
+
+import numpy as np
+
+from pdps_core.api import Pair, PairLaw, ScriptError, registry
+
+
+class SubStyles:
+    """The parsed pair_style line: [(style name, its words)]."""
+
+    def __init__(self, entries):
+        self.entries = entries
+
+
+class PairHybrid(Pair):
+    name = "hybrid"
+    usage = "pair_style hybrid STYLE1 ARGS1 [STYLE2 ARGS2 ...]"
+    coeff_usage = "STYLE COEFFS... | none"
+    overlay = False
+    peratom_tally = True        # every sub-style is a force law, which tallies
+
+    @classmethod
+    def parse(cls, words):
+        known = set(registry.names("pair")) - {"hybrid", "hybrid/overlay"}
+        if not words or words[0] not in known:
+            got = words[0] if words else "nothing"
+            raise ScriptError(f"expected a pair style after {cls.name} (got {got}); usage: {cls.usage}")
+        entries = []
+        for word in words:
+            if word in known:
+                if any(name == word for name, _ in entries):
+                    raise ScriptError(f"pair style {word} appears twice in pair_style {cls.name}; "
+                                      "pdps takes each sub-style once")
+                entries.append((word, []))
+            elif word in ("hybrid", "hybrid/overlay"):
+                raise ScriptError(f"pair style {word} cannot be a sub-style of {cls.name}")
+            else:
+                entries[-1][1].append(word)
+        return SubStyles(entries)
+
+    def __init__(self, sim, args):
+        super().__init__(sim, args)
+        self.styles = {}
+        for name, words in args.entries:
+            cls = registry.lookup("pair", name)
+            if not issubclass(cls, PairLaw) or cls.neighbor_list != "half" \
+                    or "pairs" not in inspect.signature(cls.init).parameters:
+                raise ScriptError(f"pair style {name} cannot be a sub-style of {self.name}: it is not a force law "
+                                  "over a half list")
+            self.styles[name] = cls(sim, cls.parse(words))
+        subs = list(self.styles.values())
+        self.per_atom = tuple(dict.fromkeys(entry for s in subs for entry in s.per_atom))
+        self.ghost_velocity = any(s.ghost_velocity for s in subs)
+        self.ghost_fields = tuple(dict.fromkeys(f for s in subs for f in s.ghost_fields))
+        self.assigned = {}      # (i, j), i <= j -> [style names]
+
+    def parse_coeff(self, words):
+        if not words:
+            raise ScriptError(f"expected a sub-style or none; usage: pair_coeff I J {self.coeff_usage}")
+        name = words[0]
+        if name == "none":
+            if len(words) > 1:
+                raise ScriptError(f"pair_coeff I J none takes nothing more (got {' '.join(words[1:])})")
+            return (name, None)
+        if name not in self.styles:
+            raise ScriptError(f"{name} is not a sub-style of this pair_style {self.name} "
+                              f"(it has: {', '.join(self.styles)})")
+        return (name, self.styles[name].parse_coeff(words[1:]))
+
+    def coeff(self, i, j, coeff):
+        super().coeff(i, j, coeff)
+        key = (min(i, j), max(i, j))
+        name, values = coeff
+        if name == "none":
+            self.assigned[key] = []
+            return
+        self.styles[name].coeff(i, j, values)
+        if self.overlay:
+            self.assigned[key] = [*(s for s in self.assigned.get(key, []) if s != name), name]
+        else:
+            self.assigned[key] = [name]
+
+    def _assignment(self, ntypes):
+        """Type pair -> sub-styles, the unset i != j pairs taking their i i and j j pairs' common ones."""
+        assigned = {}
+        for i in range(1, ntypes + 1):
+            for j in range(i, ntypes + 1):
+                if (i, j) in self.assigned:
+                    assigned[(i, j)] = self.assigned[(i, j)]
+                elif i == j:
+                    raise ScriptError(f"pair coefficients are not set for types {i} {j} (give pair_coeff {i} {j} "
+                                      "STYLE ... or none)")
+                elif len(self.assigned[(i, i)]) == 1 and self.assigned[(i, i)] == self.assigned.get((j, j)):
+                    assigned[(i, j)] = list(self.assigned[(i, i)])
+                else:
+                    raise ScriptError(f"pair coefficients are not set for types {i} {j}: only a pair whose types "
+                                      "each have the same one sub-style is mixed (give pair_coeff "
+                                      f"{i} {j} STYLE ... or none)")
+        return assigned
+
+    def init(self, ntypes):
+        assigned = self._assignment(ntypes)
+        self.resolved = assigned
+        cut = np.zeros((ntypes + 1, ntypes + 1))
+        self.active = []
+        for name, style in self.styles.items():
+            pairs = {key for key, names in assigned.items() if name in names}
+            style.mix_rule, style.shift = self.mix_rule, self.shift
+            style.tail = False
+            if not pairs:
+                raise ScriptError(f"pair {self.name} sub-style {name} is not used (no pair_coeff assigns a type "
+                                  "pair to it)")
+            cut = np.maximum(cut, style.init(ntypes, pairs))
+            self.active.append(style)
+        self.etail = self.ptail = 0.0
+        if self.tail and self.shift:
+            raise ScriptError("pair_modify shift yes and tail yes cannot both be set")
+        if self.tail:
+            p = self.sim.particles
+            counts = self.sim.comm.sum(np.bincount(p.type[: p.nlocal], minlength=ntypes + 1))
+            for (i, j), names in assigned.items():
+                weight = 1.0 if i == j else 2.0
+                for name in names:
+                    terms = self.styles[name].tail_ij(i, j, float(counts[i]), float(counts[j]))
+                    if terms is not None:
+                        self.etail += weight * terms[0]
+                        self.ptail += weight * terms[1]
+        return cut
+
+    def tail_ij(self, i, j, count_i, count_j):
+        """Summed over the pair's sub-styles in ``init`` (those without a tail correction add 0)."""
+        raise NotImplementedError
+
+    def compute(self, sim, nlist, eflag, vflag):
+        energy = 0.0
+        for style in self.active:
+            style.compute(sim, nlist, eflag, vflag)
+            energy += style.energy
+        self.energy = energy
+
+
+class PairHybridOverlay(PairHybrid):
+    name = "hybrid/overlay"
+    usage = "pair_style hybrid/overlay STYLE1 ARGS1 [STYLE2 ARGS2 ...]"
+    overlay = True

@@ -1,0 +1,112 @@
+"""pair_style hybrid and hybrid/overlay give LAMMPS's thermo, step for step, on a 200-particle
+two-type fluid (data/hybrid.txt, recorded with LAMMPS by benchmarks/lammps_references/pair_hybrid.py);
+a hybrid of one style is that style; overlaid styles add; bad assignments get one line."""
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.state import observables
+from pdps_core.testing import build, forces_by_tag
+
+DATA = Path(__file__).parent / "data"
+ROWS = [line.split("\t") for line in (DATA / "hybrid.txt").read_text().splitlines()]
+CASES = {
+    "hybrid": "pair_style hybrid lj/cut 2.5 soft 1.5\npair_coeff 1 1 lj/cut 1.0 1.0\npair_coeff 2 2 soft 5.0\n"
+              "pair_coeff 1 2 lj/cut 0.8 1.1 2.2",
+    "hybrid_none_table": "pair_style hybrid lj/cut 2.5 table spline 600\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                         "pair_coeff 2 2 table pots.table MORSE_FP\npair_coeff 1 2 none",
+    "hybrid_mixed": "pair_style hybrid lj/cut 2.5\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                    "pair_coeff 2 2 lj/cut 0.5 1.2 2.0\npair_modify mix arithmetic shift yes",
+    "overlay": "pair_style hybrid/overlay lj/cut 2.5 yukawa 1.5 2.0\npair_coeff * * lj/cut 1.0 1.0\n"
+               "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 1 yukawa 2.0\npair_coeff 2 2 yukawa 3.0 1.8",
+    "overlay_tail": "pair_style hybrid/overlay lj/cut 2.5 soft 1.2\npair_coeff 1 1 lj/cut 1.0 1.0\n"
+                    "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 2 lj/cut 0.7 1.1\npair_coeff 1 1 soft 2.0\n"
+                    "pair_coeff 2 2 soft 3.0\npair_coeff 1 2 soft 2.5\npair_modify tail yes",
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
+    for name in ("fluid.data", "pots.table"):
+        shutil.copy(DATA / name, tmp_path / name)
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.case", dialect="lammps")
+    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
+                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press\nrun 100")
+    sim.close()
+    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
+    reference = [row[1:] for row in ROWS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
+                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+
+
+X = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
+
+
+def _state(tmp_path, setup):
+    sim = build(tmp_path, X, types=[1, 1, 2, 2], setup=setup + "\nrun 0")
+    return forces_by_tag(sim), observables.potential_energy(sim), observables.virial_trace(sim)
+
+
+def test_overlay_adds_the_sub_styles(tmp_path):
+    both = _state(tmp_path, "pair_style hybrid/overlay lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\n"
+                            "pair_coeff * * soft 3.0")
+    lj = _state(tmp_path, "pair_style lj/cut 2.5\npair_coeff * * 1 1")
+    soft = _state(tmp_path, "pair_style soft 1.5\npair_coeff * * 3.0")
+    for total, a, b in zip(both, lj, soft):
+        np.testing.assert_allclose(total, np.asarray(a) + np.asarray(b), rtol=1e-13, atol=1e-13)
+
+
+def test_hybrid_moves_a_pair_to_its_last_style(tmp_path):
+    moved = _state(tmp_path, "pair_style hybrid lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\n"
+                             "pair_coeff * * soft 3.0\npair_coeff 1 1 lj/cut 1 1")
+    lj = _state(tmp_path, "pair_style lj/cut 2.5\npair_coeff 1 1 1 1\npair_coeff 1 2 0 1\npair_coeff 2 2 0 1")
+    soft = _state(tmp_path, "pair_style soft 1.5\npair_coeff 1 1 0.0\npair_coeff 1 2 3.0\npair_coeff 2 2 3.0")
+    for total, a, b in zip(moved, lj, soft):
+        np.testing.assert_allclose(total, np.asarray(a) + np.asarray(b), rtol=1e-13, atol=1e-13)
+
+
+def test_none_removes_a_pair(tmp_path):
+    forces, energy, _ = _state(tmp_path, "pair_style hybrid lj/cut 2.5\npair_coeff * * lj/cut 1 1\n"
+                                         "pair_coeff 1 2 none\npair_coeff 2 2 none")
+    only_11 = _state(tmp_path, "pair_style lj/cut 2.5\npair_coeff 1 1 1 1\npair_coeff 1 2 0 1\npair_coeff 2 2 0 1")
+    np.testing.assert_allclose(forces, only_11[0], rtol=1e-13, atol=1e-13)
+    assert energy == pytest.approx(only_11[1], rel=1e-13)
+
+
+BAD = {
+    "not a sub-style": ("pair_style hybrid lj/cut 2.5\npair_coeff * * soft 3.0",
+                        "soft is not a sub-style of this pair_style hybrid (it has: lj/cut)"),
+    "unused": ("pair_style hybrid lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\nrun 0",
+               "pair hybrid sub-style soft is not used (no pair_coeff assigns a type pair to it)"),
+    "unmixable": ("pair_style hybrid/overlay lj/cut 2.5 soft 1.5\npair_coeff 1 1 lj/cut 1 1\npair_coeff 1 1 soft 1\n"
+                  "pair_coeff 2 2 lj/cut 1 1\npair_coeff 2 2 soft 1\nrun 0",
+                  "pair coefficients are not set for types 1 2: only a pair whose types each have the same one "
+                  "sub-style is mixed (give pair_coeff 1 2 STYLE ... or none)"),
+    "no style": ("pair_style hybrid 2.5", "expected a pair style after hybrid (got 2.5)"),
+    "twice": ("pair_style hybrid lj/cut 2.5 lj/cut 3.0", "pair style lj/cut appears twice in pair_style hybrid"),
+    "own loop": ("pair_style hybrid gran/hooke 200000 NULL 50 NULL 0.5 0",
+                 "pair style gran/hooke cannot be a sub-style of hybrid: it is not a force law over a half list"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_bad_hybrids_get_one_line(tmp_path, case):
+    script, message = BAD[case]
+    with pytest.raises(ScriptError) as caught:
+        build(tmp_path, X, types=[1, 1, 2, 2], setup=script)
+    assert message in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_per_particle_energies_of_the_sub_styles_add_up(tmp_path):
+    sim = build(tmp_path, X, types=[1, 1, 2, 2],
+                setup="pair_style hybrid/overlay lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\n"
+                      "pair_coeff 1 2 soft 3.0\ncompute e all pe/atom\ncompute s all stress/atom NULL virial\nrun 0")
+    assert np.sum(sim.computes["e"].peratom(sim)) == pytest.approx(observables.potential_energy(sim), rel=1e-13)
+    assert np.sum(sim.computes["s"].peratom(sim)[:, :3]) == pytest.approx(-observables.virial_trace(sim), rel=1e-13)
