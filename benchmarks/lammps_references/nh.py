@@ -29,11 +29,22 @@ CASES = {
     "npt_couple": "fix 1 all npt temp 1.2 0.8 0.2 aniso 0.5 1.0 0.5 couple xy tchain 4 pchain 2 tloop 2 ploop 3 drag 0.2",
     "nph_iso": "fix 1 all nph iso 0.5 0.5 0.5",
     "nph_aniso": "fix 1 all nph aniso 0.5 0.5 0.5 mtk no pchain 0",
-    # LAMMPS's neighbor check misses pairs when only part of the system dilates (its skin test sees
-    # the box corners move, not the undilated particles' images): with its default schedule it
-    # departs from its own every-step-rebuild run at step 50; pdps rebuilds on every box change
+    # a particle the box change does not carry (dilate GROUP, deform remap none) sits in whichever
+    # periodic image it was last wrapped into, and x + L_old is not x + L_new: the trajectory depends
+    # on when particles are wrapped (at LAMMPS's neighbor builds; at pdps's, which include every step
+    # the box changed). Both wrap every step here, so both integrate the same scene
     "nph_dilate": "group light type 1\nneigh_modify every 1 delay 0 check no\n"
                   "fix 1 all nph iso 8.0 8.0 2.0 dilate light fixedpoint 1 2 3",
+    "deform_erate": "fix 1 all nve\nfix 2 all deform 1 x erate 0.5 remap x units box",
+    "deform_final": "neigh_modify every 1 delay 0 check no\nfix 1 all nve\n"
+                    "fix 2 all deform 5 y final -0.5 7.5 z scale 0.95 remap none",
+    "deform_delta": "fix 1 all nve\nfix 2 all deform 2 x delta -0.3 0.2 y trate -0.2",
+    # LAMMPS changes a velocity when it wraps the particle, at its own neighbor list builds: every
+    # step here, as pdps wraps on every step the box changes
+    "deform_vremap": "neigh_modify every 1 delay 0 check no\nfix 1 all nve\n"
+                     "fix 2 all deform 1 x vel 1.0 z trate 0.3 remap v",
+    "deform_npt": "fix 1 all npt temp 1.0 1.0 0.1 x 0.5 0.5 0.5 y 0.5 0.5 0.5 couple xy\n"
+                  "fix 2 all deform 1 z erate -0.3 units box",
 }
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]

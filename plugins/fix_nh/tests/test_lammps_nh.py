@@ -1,7 +1,8 @@
-"""Fixes nvt, npt and nph give LAMMPS's thermo (temp, pe, press, volume, box lengths) over 100 steps of
+"""Fixes nvt, npt, nph and deform give LAMMPS's thermo (temp, pe, press, volume, box lengths) over 100 steps of
 a 200-particle Lennard-Jones fluid (data/nh.txt, recorded with LAMMPS by
 benchmarks/lammps_references/nh.py): thermostat chains, iso/aniso/x-y-z barostats, couple, drag,
-sub-cycles, ramps, dilate and fixedpoint as LAMMPS integrates them."""
+sub-cycles, ramps, dilate and fixedpoint as LAMMPS integrates them; deform's six styles with remap
+x, v and none, and deform beside a barostat."""
 
 import shutil
 import sys
@@ -29,7 +30,7 @@ def run_case(tmp_path, monkeypatch, case):
     return sim, rows
 
 
-@pytest.mark.parametrize("case", [c for c in CASES if c.startswith(("nvt", "npt", "nph"))])
+@pytest.mark.parametrize("case", [c for c in CASES if c.startswith(("nvt", "npt", "nph", "deform"))])
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
     sim, mine = run_case(tmp_path, monkeypatch, case)
     reference = [row[1:] for row in ROWS if row[0] == case]
@@ -130,4 +131,37 @@ def test_bad_nh_fixes(line, message):
     sim.command("boundary p p f\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
     with pytest.raises(ScriptError) as caught:
         sim.command(line)
+    assert caught.value.message == message
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix 2 all deform 1", "fix deform needs at least one of x, y, z with a style"),
+    ("fix 2 all deform 0 x erate 0.1", "every must be >= 1 (got 0)"),
+    ("fix 2 all deform 1 x volume", "x volume: styles are final, delta, scale, vel, erate and trate (volume, "
+                                    "wiggle and variable are not supported)"),
+    ("fix 2 all deform 1 x final 0", "x final takes 2 number(s) (got 0)"),
+    ("fix 2 all deform 1 y scale big", "y scale takes 1 number(s) (got big)"),
+    ("fix 2 all deform 1 xy erate 0.1", "xy: pdps boxes are orthogonal (no tilt), so only x, y and z can deform"),
+    ("fix 2 all deform 1 x erate 0.1 remap y", "remap must be one of x, v, none (got y)"),
+    ("fix 2 all deform 1 x erate 0.1 shape no", "unknown keyword shape (known: x, y, z, remap, flip, units)"),
+])
+def test_bad_deform(line, message):
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
+    with pytest.raises(ScriptError) as caught:
+        sim.command(line)
+    assert caught.value.message == message
+
+
+@pytest.mark.parametrize("fixes, message", [
+    ("fix 2 all deform 1 x final 3 2 units box", "fix 2 deform: the box's x length would reach -1 by the run's end "
+                                                   "(it must stay > 0)"),
+    ("fix 1 all nph iso 1 1 1\nfix 2 all deform 1 y erate 0.1", "fix 1 nph and fix 2 deform change the same box "
+                                                                  "length"),
+])
+def test_deform_refused_at_the_run(fixes, message):
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\ncreate_particle 1 single 1 1 1\n" + fixes)
+    with pytest.raises(ScriptError) as caught:
+        sim.command("run 10")
     assert caught.value.message == message
