@@ -182,6 +182,9 @@ class TableFile:
         elif self.rflag == "RSQ":
             r = [math.sqrt(self.rlo * self.rlo + (self.rhi * self.rhi - self.rlo * self.rlo) * i / (self.n - 1))
                  for i in range(self.n)]
+        if not (0.0 < r[0] and math.isfinite(r[-1] * r[-1])):
+            raise ScriptError(f"table file {path}: section {keyword}: r must lie in (0, 1e154) "
+                              f"(got {r[0]:g} to {r[-1]:g})")
         for k in range(1, self.n):
             if not r[k] > r[k - 1]:
                 raise ScriptError(f"table file {path}: section {keyword}: r must increase (r = {r[k]:g} after "
@@ -246,6 +249,16 @@ class Table:
     docstring): arrays of length N (e, f, e2, f2, rsq; de, df of length N-1)."""
 
     def __init__(self, source, style, length, cutoff):
+        try:
+            self._build(source, style, length, cutoff)
+            finite = all(np.isfinite(a).all() for a in (self.rsq, self.e, self.f, self.de, self.df, self.e2, self.f2))
+        except (ZeroDivisionError, OverflowError):
+            finite = False
+        if not finite:
+            raise ScriptError(f"table {source.keyword} ({source.path}): interpolating it with {length} points "
+                              "gives non-finite values (r values too close together, or values too large)")
+
+    def _build(self, source, style, length, cutoff):
         self.source, self.style, self.length = source, style, length
         if cutoff is None:
             cutoff = source.rhi if source.rflag else source.r[-1]

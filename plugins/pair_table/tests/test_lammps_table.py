@@ -158,3 +158,21 @@ def test_table_does_not_mix(tmp_path, monkeypatch):
     with pytest.raises(ScriptError, match=r"pair coefficients are not set for types 1 2 \(pair style table does "
                                           r"not mix; give pair_coeff for every type pair\)$"):
         sim.command("run 0")
+
+
+@pytest.mark.parametrize("text, message", [
+    ("T\nN 2\n\n1 1 1 1\n2 1.0000000000000002 1 1\n",
+     "table T (bad.table): interpolating it with 100 points gives non-finite values (r values too close "
+     "together, or values too large)"),
+    ("T\nN 2\n\n1 0 1 1\n2 1 1 1\n", "table file bad.table: section T: r must lie in (0, 1e154) (got 0 to 1)"),
+    ("T\nN 2\n\n1 1e300 1 1\n2 1.7e308 1 1\n",
+     "table file bad.table: section T: r must lie in (0, 1e154) (got 1e+300 to 1.7e+308)"),
+])
+def test_tables_that_cannot_be_interpolated_are_refused(tmp_path, monkeypatch, text, message):
+    (tmp_path / "bad.table").write_text(text)
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass * 1\npair_style table spline 100")
+    with pytest.raises(ScriptError) as caught:
+        sim.command("pair_coeff * * bad.table T")
+    assert str(caught.value).endswith(message)
