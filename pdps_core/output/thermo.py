@@ -77,8 +77,8 @@ def keyword_value(sim, name, indices=()):
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         return total / _normalise(sim)
     if name == "evdwl":
-        sim.require_energy()
-        return float(sim.comm.sum(sim.evdwl)) / _normalise(sim)
+        # with the pair style's tail correction, as LAMMPS's thermo evdwl
+        return obs.pair_energy(sim) / _normalise(sim)
     if name == "vol":
         return sim.box.volume
     if name == "density":
