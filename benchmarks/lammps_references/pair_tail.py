@@ -25,7 +25,7 @@ CASES = {
 
 def script(case):
     return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
-                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
+                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press evdwl",
                       "thermo_modify format float %.15g", "run 100", ""])
 
 
