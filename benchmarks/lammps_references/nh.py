@@ -7,7 +7,9 @@ The scene is plugins/fix_nh/tests/data/fluid.data (200 particles of two types wi
 velocities and a net momentum, a copy of pair_simple's), lj/cut 2.5, dt 0.002, 100 steps with each
 case's integrator; thermo (step temp pe press vol lx ly lz, 15 digits) every 25 steps goes to
 plugins/fix_nh/tests/data/nh.txt. The runs are deterministic (no random numbers), so pdps must give
-these digits to round-off grown by the fluid's chaos over 100 steps.
+these digits to round-off grown by the fluid's chaos over 100 steps. The walls' scenes (WALL_CASES,
+thermo step temp pe press f_2 f_2[1] f_2[2]) use walls.data, written here from fluid.data, and go to
+plugins/fix_wall/tests/data/wall_lj.txt.
 """
 
 import subprocess
@@ -17,6 +19,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_nh" / "tests" / "data"
+WALL_DATA = ROOT / "plugins" / "fix_wall" / "tests" / "data"
 THERMO = "step temp pe press vol lx ly lz"
 CASES = {
     "nvt": "fix 1 all nvt temp 1.0 1.0 0.1",
@@ -46,6 +49,16 @@ CASES = {
     "deform_npt": "fix 1 all npt temp 1.0 1.0 0.1 x 0.5 0.5 0.5 y 0.5 0.5 0.5 couple xy\n"
                   "fix 2 all deform 1 z erate -0.3 units box",
 }
+# walls on the z faces: the fluid with z fixed, particles within 0.8 of a z face left out (walls.data)
+WALL_CASES = {
+    "lj93": "fix 1 all nve\nfix 2 all wall/lj93 zlo EDGE 1.0 1.0 2.5 zhi EDGE 1.5 0.8 2.0 units box\n"
+            "fix_modify 2 energy yes virial yes",
+    "lj126": "variable top equal 6.9-0.5*step*dt\nfix 1 all nve\n"
+             "fix 2 all wall/lj126 zlo 0.1 1.0 1.0 2.5 zhi v_top 0.7 1.1 1.2345\nfix_modify 2 energy yes",
+    "lj93_pbc": "fix 1 all nve\nfix 2 all wall/lj93 xhi 7.5 0.1 1.0 1.0 zhi EDGE 2.0 1.0 1.0 pbc yes units box\n"
+                "fix_modify 2 virial yes",
+}
+WALL_THERMO = "step temp pe press f_2 f_2[1] f_2[2]"
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]
 
@@ -54,27 +67,59 @@ def script(case):
     return "\n".join(SETUP + [CASES[case], "thermo 25", f"thermo_style custom {THERMO}", "run 100"])
 
 
+def wall_script(case):
+    return "\n".join(["units lj", "atom_style atomic", "boundary p p f", "read_data walls.data",
+                      "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0", "pair_coeff 2 2 0.5 1.2",
+                      "timestep 0.002", WALL_CASES[case], "thermo 25", f"thermo_style custom {WALL_THERMO}",
+                      "run 100"])
+
+
+def wall_data():
+    """fluid.data with the particles within 0.8 of a z face left out (their ids kept)."""
+    lines = (DATA / "fluid.data").read_text().splitlines()
+    lz = float(next(line for line in lines if line.endswith("zlo zhi")).split()[1])
+    kept, section, out = set(), None, []
+    for line in lines:
+        words = line.split()
+        if words[:1] in (["Atoms"], ["Velocities"], ["Masses"]):
+            section = words[0]
+        elif section == "Atoms" and len(words) >= 5:
+            if not 0.8 <= float(words[4]) <= lz - 0.8:
+                continue
+            kept.add(words[0])
+        elif section == "Velocities" and len(words) >= 4 and words[0] not in kept:
+            continue
+        out.append(line)
+    text = "\n".join(out) + "\n"
+    return text.replace("200 atoms", f"{len(kept)} atoms")
+
+
+def thermo_lines(lmp, text, files):
+    text = text.replace("run 100", "thermo_modify format float %.15g\nrun 100") + "\n"
+    with tempfile.TemporaryDirectory() as folder:
+        for name, content in files.items():
+            (Path(folder) / name).write_text(content)
+        (Path(folder) / "in.case").write_text(text)
+        done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                              capture_output=True, text=True)
+        log = (Path(folder) / "log.lammps").read_text()
+    if done.returncode != 0:
+        sys.exit(f"LAMMPS failed:\n{text}\n{log[-2000:]}")
+    lines = log.splitlines()
+    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+    return ["\t".join(line.split()) for line in lines[start + 1:start + 6]]
+
+
 def main(lmp):
-    rows = []
-    for case in CASES:
-        text = script(case) + "\n"
-        text = text.replace("run 100", "thermo_modify format float %.15g\nrun 100")
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "fluid.data").write_bytes((DATA / "fluid.data").read_bytes())
-            (Path(folder) / "in.case").write_text(text)
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
+    fluid = (DATA / "fluid.data").read_text()
+    rows = [f"{case}\t{line}" for case in CASES for line in thermo_lines(lmp, script(case), {"fluid.data": fluid})]
     (DATA / "nh.txt").write_text("\n".join(rows) + "\n")
-    print("\n".join(rows))
+    walls = wall_data()
+    (WALL_DATA / "walls.data").write_text(walls)
+    wall_rows = [f"{case}\t{line}" for case in WALL_CASES
+                 for line in thermo_lines(lmp, wall_script(case), {"walls.data": walls})]
+    (WALL_DATA / "wall_lj.txt").write_text("\n".join(wall_rows) + "\n")
+    print("\n".join(rows + wall_rows))
 
 
 if __name__ == "__main__":
