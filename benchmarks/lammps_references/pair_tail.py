@@ -4,7 +4,7 @@ plugins/pair_lj/tests/test_lammps_tail.py compares pdps with.
     python benchmarks/lammps_references/pair_tail.py [LMP]
 
 The scene is pair_styles.py's 200-particle two-type fluid (copied to plugins/pair_lj/tests/data/);
-each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe press evdwl,
+each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe press evdwl etail,
 15 digits) every 25 steps goes to plugins/pair_lj/tests/data/tail.txt.
 """
 
@@ -25,7 +25,7 @@ CASES = {
 
 def script(case):
     return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
-                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press evdwl",
+                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press evdwl etail",
                       "thermo_modify format float %.15g", "run 100", ""])
 
 

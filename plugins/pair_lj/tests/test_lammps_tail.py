@@ -28,7 +28,7 @@ def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
     monkeypatch.chdir(tmp_path)
     sim = Simulation(screen=False, log="log.case", dialect="lammps")
     sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
-                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press evdwl\nrun 100")
+                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press evdwl etail\nrun 100")
     sim.close()
     mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
     reference = [row[1:] for row in ROWS if row[0] == case]
