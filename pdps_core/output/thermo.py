@@ -36,7 +36,7 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
 INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger"}
 ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve"}
 NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"}}
-ABSENT = {"ecoul", "ebond", "eangle", "edihed", "eimp", "emol", "elong", "ecouple", "xy", "xz", "yz"}
+ABSENT = {"ecoul", "ebond", "eangle", "edihed", "eimp", "emol", "elong", "xy", "xz", "yz"}
 REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((\[\d+\])*)$")
 BOUNDS = {"xlo": (0, 0), "xhi": (1, 0), "ylo": (0, 1), "yhi": (1, 1), "zlo": (0, 2), "zhi": (1, 2)}
 
@@ -60,6 +60,8 @@ def keyword_value(sim, name, indices=()):
     if name == "etail":
         sim.require_box("thermo keyword etail")
         return obs.tail_corrections(sim)[0] / _normalise(sim)
+    if name == "ecouple":
+        return _ecouple(sim) / _normalise(sim)
     if name in HEADERS:
         # the rest describe particles in a box; a variable may read them before one exists
         sim.require_box(f"thermo keyword {name}")
@@ -78,6 +80,8 @@ def keyword_value(sim, name, indices=()):
             total += 0.5 * obs.degrees_of_freedom(sim) * sim.units.boltz * sim.output.thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
+        if name == "econserve":
+            total += _ecouple(sim)
         return total / _normalise(sim)
     if name == "evdwl":
         # with the pair style's tail correction, as LAMMPS's thermo evdwl
@@ -104,6 +108,12 @@ def keyword_value(sim, name, indices=()):
     if name.startswith("f_"):
         return sim.fix_value(name[2:], indices)
     raise ScriptError(f"unknown thermo keyword {name}")
+
+
+def _ecouple(sim):
+    """Energy thermostats and barostats exchanged with their reservoirs (LAMMPS's ecouple): the sum
+    of ``ecouple(sim)`` of the fixes that define it (fix nvt, npt, nph)."""
+    return float(sum(fix.ecouple(sim) for fix in sim.fixes.values() if callable(getattr(fix, "ecouple", None))))
 
 
 def _normalise(sim):
