@@ -6,7 +6,8 @@ plugins/fix_nh/tests/test_lammps_nh.py and plugins/fix_wall/tests/test_wall_lj.p
 The scene is plugins/fix_nh/tests/data/fluid.data (200 particles of two types with Gaussian
 velocities and a net momentum, a copy of pair_simple's), lj/cut 2.5, dt 0.002, 100 steps with each
 case's integrator; thermo (step temp pe press vol lx ly lz, 15 digits) every 25 steps goes to
-plugins/fix_nh/tests/data/nh.txt. The runs are deterministic (no random numbers), so pdps must give
+plugins/fix_nh/tests/data/nh.txt; thermo step etotal ecouple econserve f_1 of four of them to
+data/ecouple.txt. The runs are deterministic (no random numbers), so pdps must give
 these digits to round-off grown by the fluid's chaos over 100 steps. The walls' scenes (WALL_CASES,
 thermo step temp pe press f_2 f_2[1] f_2[2]) use walls.data, written here from fluid.data, and go to
 plugins/fix_wall/tests/data/wall_lj.txt.
@@ -63,8 +64,13 @@ SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj
          "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]
 
 
-def script(case):
-    return "\n".join(SETUP + [CASES[case], "thermo 25", f"thermo_style custom {THERMO}", "run 100"])
+# the reservoirs' energy: thermo ecouple, econserve and the fix's scalar, for these cases
+ECOUPLE_CASES = ("nvt_ramp", "npt_aniso", "npt_xyz", "nph_iso")
+ECOUPLE_THERMO = "step etotal ecouple econserve f_1"
+
+
+def script(case, thermo=THERMO):
+    return "\n".join(SETUP + [CASES[case], "thermo 25", f"thermo_style custom {thermo}", "run 100"])
 
 
 def wall_script(case):
@@ -114,6 +120,10 @@ def main(lmp):
     fluid = (DATA / "fluid.data").read_text()
     rows = [f"{case}\t{line}" for case in CASES for line in thermo_lines(lmp, script(case), {"fluid.data": fluid})]
     (DATA / "nh.txt").write_text("\n".join(rows) + "\n")
+    coupled = [f"{case}\t{line}" for case in ECOUPLE_CASES
+               for line in thermo_lines(lmp, script(case, ECOUPLE_THERMO), {"fluid.data": fluid})]
+    (DATA / "ecouple.txt").write_text("\n".join(coupled) + "\n")
+    rows += coupled
     walls = wall_data()
     (WALL_DATA / "walls.data").write_text(walls)
     wall_rows = [f"{case}\t{line}" for case in WALL_CASES

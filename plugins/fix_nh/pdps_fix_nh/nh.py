@@ -341,6 +341,20 @@ class FixNH(Fix):
         if self.pstat and self.mpchain:
             self._nhc_press_integrate()
 
+    # ---- restart files: the chains, the barostat and the reference cell go on ---------------------
+    def state(self):
+        return {name: getattr(self, name).copy() for name in self.SAVED_ARRAYS} | {
+            "vol0": self.vol0, "t0": self.t0}
+
+    def restore(self, state):
+        for name in self.SAVED_ARRAYS:
+            saved = np.asarray(state[name], dtype=np.float64)
+            if saved.shape == getattr(self, name).shape:
+                getattr(self, name)[:] = saved
+        self.vol0, self.t0 = float(state["vol0"]), float(state["t0"])
+
+    SAVED_ARRAYS = ("eta", "eta_dot", "omega", "omega_dot", "etap", "etap_dot", "h0_inv", "fixedpoint")
+
     # ---- thermo ---------------------------------------------------------------------------------
     def ecouple(self, sim):
         """The energy the fix exchanged with the reservoir (LAMMPS's ecouple; thermo econserve =
@@ -363,8 +377,8 @@ class FixNH(Fix):
                     energy += (0.5 * self.omega_dot[d] * self.omega_dot[d] * self.omega_mass[d]
                                + self.p_hydro * (volume - self.vol0) / (self.pdim * self.nktv2p))
             if self.mpchain:
-                lkt_press = kt if self.iso else self.pdim * kt
-                energy += lkt_press * self.etap[0] + 0.5 * self.etap_mass[0] * self.etap_dot[0] * self.etap_dot[0]
+                # LAMMPS's compute_scalar: d_p k_B T for the first barostat chain element, iso too
+                energy += self.pdim * kt * self.etap[0] + 0.5 * self.etap_mass[0] * self.etap_dot[0] * self.etap_dot[0]
                 for ich in range(1, self.mpchain):
                     energy += kt * self.etap[ich] + 0.5 * self.etap_mass[ich] * self.etap_dot[ich] * self.etap_dot[ich]
             if self.deviatoric:
