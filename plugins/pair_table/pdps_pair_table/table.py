@@ -145,13 +145,16 @@ class TableFile:
     """One section of a LAMMPS table file, read and checked: r, E, F as given (r replaced when the
     section says R or RSQ), the R/RSQ range and the FP end slopes."""
 
-    def __init__(self, path, keyword):
-        self.path, self.keyword = path, keyword
+    def __init__(self, path, keyword, name=None):
+        """``path`` to open; ``name`` the file as the script wrote it, for messages."""
+        self.keyword = keyword
+        self.path = name or path
         try:
             with open(path, encoding="utf-8", errors="replace") as handle:
                 lines = handle.read().splitlines()
         except OSError as exc:
-            raise ScriptError(f"cannot open table file {path} ({exc.strerror or exc})") from None
+            raise ScriptError(f"cannot open table file {self.path} ({exc.strerror or exc})") from None
+        path = self.path
         content = [(number, line.split()) for number, line in enumerate(lines, 1)
                    if line.strip() and not line.lstrip().startswith("#")]
         start = next((k for k, (_, words) in enumerate(content) if words[0] == keyword), None)
@@ -355,8 +358,8 @@ class PairTable(PairLaw):
     def _table(self, coeff):
         key = (coeff.file, coeff.keyword, coeff.cutoff)
         if key not in self.tables:
-            self.tables[key] = Table(TableFile(coeff.file, coeff.keyword), self.args.style, self.args.length,
-                                     coeff.cutoff)
+            source = TableFile(self.sim.resolve(coeff.file), coeff.keyword, name=coeff.file)
+            self.tables[key] = Table(source, self.args.style, self.args.length, coeff.cutoff)
         return self.tables[key]
 
     def parse_coeff(self, words):

@@ -176,3 +176,15 @@ def test_tables_that_cannot_be_interpolated_are_refused(tmp_path, monkeypatch, t
     with pytest.raises(ScriptError) as caught:
         sim.command("pair_coeff * * bad.table T")
     assert str(caught.value).endswith(message)
+
+
+def test_a_table_file_is_found_beside_its_script_and_named_as_written(pdps_cli, tmp_path):
+    (tmp_path / "sub").mkdir()
+    shutil.copy(DATA / "pots.table", tmp_path / "sub" / "pots.table")
+    setup = ("units lj\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
+             "pair_style table linear 100\n")
+    done = pdps_cli(setup + "pair_coeff * * pots.table LJ_R\nrun 0\n", name="sub/in.table")
+    assert done.returncode == 0, done.stderr
+    done = pdps_cli(setup + "pair_coeff * * pots.table NOPE\n", name="sub/in.table")
+    assert (done.returncode, done.stderr) == (1, "ERROR: in.table:7: pair_coeff: table file pots.table has no "
+                                                 "section NOPE\n")
