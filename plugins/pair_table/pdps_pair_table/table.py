@@ -6,6 +6,7 @@ Syntax::
     pair_style table STYLE N            STYLE = lookup | linear | spline, N = table length (>= 2)
     pair_coeff I J FILE KEYWORD [CUTOFF]
 
+``FILE`` is looked for beside the script, then in the working folder (LAMMPS: the working folder).
 The file holds sections; a section starts with a line whose first word is its ``KEYWORD``, then a
 parameter line ``N n [R rlo rhi | RSQ rlo rhi] [FPRIME fplo fphi]``, then ``n`` lines
 ``index r E(r) F(r)`` (distance, energy, force = -dE/dr). Blank lines and lines starting with ``#``
