@@ -38,3 +38,21 @@ def test_vacf_starts_at_the_mean_square_velocity_and_follows_the_velocities(tmp_
     np.testing.assert_allclose(sim.computes["c2"].vector(sim), expected, rtol=1e-12)
     ke = sim.computes["k"].peratom(sim)
     np.testing.assert_allclose(np.sort(ke), np.sort(0.5 * 2.0 * np.sum((2 * v) ** 2, axis=1)), rtol=1e-12)
+
+
+def test_pe_keywords_split_pair_and_fix_energies(tmp_path):
+    """A wall fix with fix_modify energy yes: compute pe is pair + wall, pe pair the pair's, pe fix the
+    wall's, and the LAMMPS terms pdps does not have add 0."""
+    x = [[0.3, 5.0, 5.0], [1.4, 5.0, 5.0], [5.0, 5.0, 5.0]]
+    sim = build(tmp_path, x, boundary="f f f",
+                setup="pair_style lj/cut 2.5\npair_coeff * * 1 1\n"
+                      "fix w all wall/harmonic xlo EDGE 50.0 1.0 1.0 units box\nfix_modify w energy yes\n"
+                      "compute all all pe\ncompute pair all pe pair\ncompute fix all pe fix\n"
+                      "compute none all pe bond angle dihedral improper kspace\nrun 0")
+    wall = 50.0 * 0.7 ** 2
+    pair = 4.0 * (1.1 ** -12 - 1.1 ** -6)
+    value = {name: sim.computes[name].scalar(sim) for name in ("all", "pair", "fix", "none")}
+    assert value["fix"] == pytest.approx(wall, rel=1e-14)
+    assert value["pair"] == pytest.approx(pair, rel=1e-13)
+    assert value["all"] == pytest.approx(wall + pair, rel=1e-14)
+    assert value["none"] == 0.0
