@@ -27,6 +27,7 @@ import time
 import numpy as np
 
 from ..errors import ScriptError
+from ..state import observables
 from .verlet import Verlet
 
 ALPHA_MAX = 1.0
@@ -78,7 +79,7 @@ class Minimizer(Verlet):
         self._fix_contributions()
         self._check_finite()
         self.neval += 1
-        return float(sim.comm.sum(sim.pe)) / self._norm()
+        return observables.potential_energy(sim) / self._norm()
 
     def _dot(self, a, b):
         return float(self.sim.comm.sum(float(np.einsum("ij,ij->", a, b))))
@@ -135,7 +136,7 @@ class Minimizer(Verlet):
             sim.particles.request(name, 3)
         self.setup()
         n = sim.particles.nlocal
-        ecurrent = float(sim.comm.sum(sim.pe)) / self._norm()
+        ecurrent = observables.potential_energy(sim) / self._norm()
         self.neval = 0
         sim.output.setup(sim.step, sim.step + maxiter)
         initial = previous = ecurrent
@@ -222,7 +223,6 @@ class Minimizer(Verlet):
         start = sim.step
         self._vector("minimize_v")[:] = 0.0
         eprevious = ecurrent
-        from ..state import observables
         for iteration in range(1, maxiter + 1):
             sim.step += 1
             n = p.nlocal
