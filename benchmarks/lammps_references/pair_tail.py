@@ -5,7 +5,8 @@ plugins/pair_lj/tests/test_lammps_tail.py compares pdps with.
 
 The scene is pair_styles.py's 200-particle two-type fluid (copied to plugins/pair_lj/tests/data/);
 each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe press evdwl etail,
-15 digits) every 25 steps goes to plugins/pair_lj/tests/data/tail.txt.
+15 digits) every 25 steps goes to plugins/pair_lj/tests/data/tail.txt; the energies a 60-iteration
+minimize of the "tail" case reports (initial, next-to-last, final) to tail_minimize.txt.
 """
 
 import subprocess
@@ -21,6 +22,10 @@ CASES = {
     "tail_arithmetic": "pair_style lj/cut 2.2\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
                              "pair_coeff 1 2 0.8 1.05 2.6\npair_modify mix arithmetic tail yes",
 }
+
+# minimize reads pe with the tail (LAMMPS's compute pe): its summary energies and etol test include it
+MINIMIZE = ("units lj\natom_style atomic\nread_data fluid.data\n" + CASES["tail"] + "\nthermo 10\n"
+            "minimize 1e-6 1e-8 60 1000\n")
 
 
 def script(case):
@@ -49,6 +54,15 @@ def main(lmp):
                 break
             rows.append(f"{case}\t" + "\t".join(line.split()))
     (DATA / "tail.txt").write_text("\n".join(rows) + "\n")
+    with tempfile.TemporaryDirectory() as folder:
+        (Path(folder) / "fluid.data").write_bytes(SOURCE.read_bytes())
+        (Path(folder) / "in.min").write_text(MINIMIZE)
+        subprocess.run([lmp, "-in", "in.min", "-log", "log.lammps", "-screen", "none"], cwd=folder, check=True,
+                       capture_output=True)
+        lines = (Path(folder) / "log.lammps").read_text().splitlines()
+    energies = lines[next(k for k, line in enumerate(lines) if "Energy initial" in line) + 1]
+    (DATA / "tail_minimize.txt").write_text(" ".join(energies.split()) + "\n")
+    print(energies)
     print("\n".join(rows))
 
 

@@ -61,3 +61,16 @@ def test_a_style_without_a_tail_correction_refuses_it():
     sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\npair_style dpd 1.0 1.0 1")
     with pytest.raises(ScriptError, match="pair style dpd has no tail correction"):
         sim.command("pair_modify tail yes")
+
+
+def test_minimize_reports_lammps_energies_with_the_tail(tmp_path, monkeypatch):
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.min", dialect="lammps")
+    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES['tail']}\nthermo 10\n"
+                "minimize 1e-6 1e-8 60 1000")
+    sim.close()
+    lines = (tmp_path / "log.min").read_text().splitlines()
+    mine = lines[next(k for k, line in enumerate(lines) if "Energy initial" in line) + 1].split()
+    want = (DATA / "tail_minimize.txt").read_text().split()
+    np.testing.assert_allclose([float(v) for v in mine], [float(v) for v in want], rtol=1e-10)
