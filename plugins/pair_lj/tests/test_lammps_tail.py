@@ -9,8 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
-from pdps_core.state import observables
+from pdps_core.api import ScriptError, Simulation, observables
 from pdps_core.testing import build
 
 DATA = Path(__file__).parent / "data"

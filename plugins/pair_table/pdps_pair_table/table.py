@@ -42,8 +42,6 @@ import numpy as np
 from numba import njit
 from pdps_core.api import PairLaw, ScriptError, StyleArgs, param
 
-STYLES = ("lookup", "linear", "spline")
-
 
 @njit(cache=True, inline="always")
 def _bin(rsq, coeff, state):
