@@ -256,7 +256,7 @@ def test_disabled_distributions_are_unknown_to_scripts_and_shown_as_disabled(tmp
     result = pdps(tmp_path, script=BOX + "fix 1 all nve\n", env=env)
     assert result.returncode == 1
     assert result.stderr.startswith("ERROR: in.test:4: fix: unknown fix style nve: pdps-fix-nve is switched "
-                                    "off by PDPS_DISABLE_PLUGINS (installed: ")
+                                    "off by PDPS_DISABLE_PLUGINS; did you mean nvt? (installed: ")
     assert " nve," not in result.stderr and "nve/limit" in result.stderr
     other = pdps(tmp_path, script=BOX + "create_particle 1 single 1 1 1\nfix 1 all nve/limit 0.1\nrun 2\n",
                  env=env)

@@ -58,6 +58,7 @@ class Minimizer(Verlet):
         super().__init__(sim)
         self.settings = settings
         self.neval = 0
+        self.last_thermo = None
 
     # ---- energy and forces ----------------------------------------------------------------------
     def _norm(self):
@@ -148,7 +149,8 @@ class Minimizer(Verlet):
             stop, iterations, ecurrent, previous = self._cg(etol, ftol, maxiter, maxeval, ecurrent)
         loop = time.perf_counter() - t0
         sim.energy_step = sim.step
-        sim.output.write(sim.step, sim.step)
+        if self.last_thermo != sim.step:        # the last iteration may have written it already
+            sim.output.write(sim.step, sim.step)
         sim.neighbor.mark_current(sim.particles)
         fnorm = math.sqrt(self._dot(sim.particles.f[:sim.particles.nlocal], sim.particles.f[:sim.particles.nlocal]))
         fmax = float(sim.comm.max(float(np.abs(sim.particles.f[:sim.particles.nlocal]).max()) if n else 0.0))
@@ -212,6 +214,7 @@ class Minimizer(Verlet):
         every = sim.output.thermo.every
         if every and sim.step % every == 0:
             sim.output.write(sim.step, sim.run_last_step)
+            self.last_thermo = sim.step
 
     def _fire(self, etol, ftol, maxiter, maxeval, ecurrent):
         sim = self.sim
