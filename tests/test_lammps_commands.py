@@ -255,3 +255,24 @@ def test_clear_keeps_variables_and_starts_afresh():
     assert sim.box is None and sim.nlocal == 0 and sim.variables.value("keep") == 7.0
     sim.command("region box block 0 2 0 2 0 2\ncreate_box 1 box")
     assert sim.box is not None
+
+
+@pytest.mark.parametrize("mode", ["warn", "ignore"])
+def test_thermo_modify_lost_deletes_particles_leaving_fixed_faces(mode):
+    import io
+    screen = io.StringIO()
+    sim = Simulation(screen=screen, log=None)
+    sim.command("boundary f p p\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\n"
+                "create_particle 1 single 4.9 1 1\ncreate_particle 1 single 2 2 2\nvelocity all set 1 0 0\n"
+                f"fix 1 all nve\nthermo 50\nthermo_modify lost {mode}\nrun 100")
+    assert sim.nlocal == 1 and sim.variables.evaluate("atoms") == 1
+    warnings = [line for line in screen.getvalue().splitlines() if line.startswith("WARNING")]
+    assert warnings == (["WARNING: Lost atoms: original 2 current 1"] if mode == "warn" else [])
+
+
+def test_lost_error_is_still_the_default():
+    sim = Simulation(screen=False, log=None)
+    sim.command("boundary f p p\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\n"
+                "create_particle 1 single 4.9 1 1\nvelocity all set 1 0 0\nfix 1 all nve")
+    with pytest.raises(ScriptError, match="particle 1 lost through the fixed x boundary"):
+        sim.command("run 100")

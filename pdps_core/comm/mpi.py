@@ -132,7 +132,9 @@ class MPIComm:
         count = 0
         if not bad.any():
             try:
-                box.wrap(x, p.image, p.tag, step)
+                gone = box.wrap(x, p.image, p.tag, step, box.lost)
+                if gone.any():
+                    p.keep(np.flatnonzero(~gone))
             except SimulationError as exc:
                 message, count = exc.template, exc.count
         self.agree(message, count)

@@ -41,7 +41,9 @@ class SerialComm:
             i = int(np.flatnonzero(bad)[0])
             raise SimulationError(
                 f"particle {int(p.tag[i])} has a non-finite position {tuple(x[i])} at step {step}")
-        box.wrap(x, p.image, p.tag, step)
+        gone = box.wrap(x, p.image, p.tag, step, box.lost)
+        if gone.any():
+            p.keep(np.flatnonzero(~gone))
 
     def borders(self, particles, box, cutghost):
         p = particles

@@ -12,7 +12,8 @@ without them. A line is written at the start of a run, every N steps, and at the
 
 ``thermo_modify norm yes|no``, ``format line|int|float FORMAT``, ``format N FORMAT`` (C formats,
 ``format none`` resets), ``flush yes|no``, ``temp ID``, ``press ID`` and ``lost error|warn|ignore``
-(only ``error`` is supported: a lost particle stops the run, as the PDPS manual says).
+(error, the default: a particle leaving through a fixed face stops the run, as the PDPS manual and
+LAMMPS say; warn and ignore delete it, warn saying so at the next thermo line, as LAMMPS).
 """
 
 import re
@@ -133,6 +134,8 @@ class Thermo:
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.flush_each = False
         self.temp_id = self.press_id = None
+        self.lost = "error"             # thermo_modify lost: particles leaving fixed faces
+        self.counted = None             # the particle count at the last line (lost warn)
         self.last_clock = None          # (wall time, step, time) of the last line, for tpcpu/spcpu
 
     # ---- thermo_modify --------------------------------------------------------------------------
@@ -171,9 +174,7 @@ class Thermo:
             elif key == "lost":
                 if value not in ("error", "warn", "ignore"):
                     raise ScriptError(f"lost must be error, warn or ignore (got {value})")
-                if value != "error":
-                    raise ScriptError(f"lost {value} is not supported: a particle lost through a fixed "
-                                      "boundary stops the run (lost error)")
+                self.lost = value
             elif key in ("lost/bond", "line", "every", "triclinic/general"):
                 raise ScriptError(f"thermo_modify {key} is not supported (supported: norm, format, "
                                   "flush, temp, press, lost)")
@@ -312,6 +313,11 @@ class Thermo:
         return " ".join(cells)
 
     def values(self):
+        if self.lost == "warn":
+            count = obs.count(self.sim)
+            if self.counted is not None and count < self.counted:
+                self.sim.warn(f"Lost atoms: original {self.counted} current {count}")
+            self.counted = count
         out = self._values()
         self.last_clock = (time.perf_counter(), self.sim.step, self.sim.time)
         return out

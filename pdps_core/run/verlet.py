@@ -87,6 +87,7 @@ class Verlet:
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
         sim.neighbor.exclusions(sim.ntypes, sim.groups)
+        sim.box.lost = sim.output.thermo.lost
         sim.neighbor.overrun = 0.0
         sim.pair_list = None
         if sim.pair is not None:

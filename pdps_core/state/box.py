@@ -17,6 +17,7 @@ class Box:
         self.lo = np.asarray(lo, dtype=np.float64)
         self.hi = np.asarray(hi, dtype=np.float64)
         self.periodic = tuple(bool(p) for p in periodic)
+        self.lost = "error"             # LAMMPS's thermo_modify lost: error, warn or ignore
         self.dimension = dimension
 
     def set_bounds(self, lo, hi):
@@ -43,8 +44,12 @@ class Box:
     def bounds_label(self):
         return " ".join("pp" if p else "ff" for p in self.periodic)
 
-    def wrap(self, x, image, tag, step):
-        """Bring owned particles back into the box; raise when one has left through a fixed face."""
+    def wrap(self, x, image, tag, step, lost="error"):
+        """Bring owned particles back into the box. One that has left through a fixed face raises
+        (``lost="error"``, the default and the PDPS manual's rule) or, with LAMMPS's
+        ``thermo_modify lost warn|ignore``, is returned in the mask of lost rows for the caller to
+        delete."""
+        gone = np.zeros(len(x), dtype=bool)
         for d in range(3):
             if self.periodic[d]:
                 length = self.hi[d] - self.lo[d]
@@ -59,6 +64,9 @@ class Box:
                     image[at_hi, d] += 1
             else:
                 out = (x[:, d] < self.lo[d]) | (x[:, d] > self.hi[d]) | ~np.isfinite(x[:, d])
+                if out.any() and lost != "error":
+                    gone |= out
+                    continue
                 if out.any():
                     i = int(np.flatnonzero(out)[0])
                     axis = "xyz"[d]
@@ -69,6 +77,7 @@ class Box:
                     # a parallel run reports the count summed over ranks (Comm.agree)
                     error.template, error.count = template, int(out.sum())
                     raise error
+        return gone
 
     def inside(self, x):
         """Mask of positions inside [lo, hi) on every axis."""
