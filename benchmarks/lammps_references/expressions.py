@@ -24,6 +24,14 @@ LATTICES = [
     "lattice bcc 1.2|region box block 0 2 0 3 0 4",
     "lattice sc 0.7|region box block 0 4 0 4 0 4 units lattice",
     "lattice fcc 0.8442|region box block 0 3 0 3 0 3 units lattice|region inner block 1 2 1 2 1 2",
+    "lattice hcp 0.9|region box block 0 3 0 2 0 2",
+    "lattice diamond 0.7|region box block 0 2 0 2 0 2",
+    "lattice bcc 1.1 origin 0.25 0.25 0.25|region box block 0 3 0 3 0 3",
+    "lattice fcc 0.8 orient x 1 1 0 orient y -1 1 0 orient z 0 0 1|region box block 0 2 0 2 0 3",
+    "lattice custom 0.5 a1 1 0 0 a2 0 2 0 a3 0 0 1 basis 0 0 0 basis 0.5 0.25 0.5|region box block 0 3 0 2 0 3",
+    "dimension 2|lattice hex 0.8|region box block 0 4 0 3 -0.5 0.5",
+    "dimension 2|lattice sq2 0.6|region box block 0 4 0 4 -0.5 0.5",
+    "dimension 2|lattice sq 0.5|region box block 0 5 0 4 -0.5 0.5",
 ]
 
 FORMULAS = [
