@@ -129,7 +129,7 @@ class FixDeform(Fix):
                 shift = 0.5 * self.duration * values[0] * (hi - lo)
                 self.lo_stop[d], self.hi_stop[d] = lo - shift, hi + shift
             else:
-                shift = 0.5 * (hi - lo) * math.exp(values[0] * self.duration)
+                shift = 0.5 * (hi - lo) * _exp(values[0] * self.duration)
                 self.lo_stop[d], self.hi_stop[d] = 0.5 * (lo + hi) - shift, 0.5 * (lo + hi) + shift
             if self.hi_stop[d] <= self.lo_stop[d]:
                 raise ScriptError(f"fix {self.id} deform: the box's {'xyz'[d]} length would reach "
@@ -157,7 +157,7 @@ class FixDeform(Fix):
             if style == "trate":
                 elapsed = (sim.step - sim.run_first_step) * sim.dt
                 mid = 0.5 * (self.lo_start[d] + self.hi_start[d])
-                shift = 0.5 * (self.hi_start[d] - self.lo_start[d]) * math.exp(values[0] * elapsed)
+                shift = 0.5 * (self.hi_start[d] - self.lo_start[d]) * _exp(values[0] * elapsed)
                 # LAMMPS's rate: of the length before this step's change (0 until the first change)
                 self.h_rate[d] = values[0] * (hi[d] - lo[d])
                 lo[d], hi[d] = mid - shift, mid + shift
@@ -165,3 +165,8 @@ class FixDeform(Fix):
                 lo[d] = self.lo_start[d] + delta * (self.lo_stop[d] - self.lo_start[d])
                 hi[d] = self.hi_start[d] + delta * (self.hi_stop[d] - self.hi_start[d])
         sim.change_box(lo, hi, remap=self.group if self.remap == "x" else None)
+
+
+def _exp(x):
+    """exp, inf past the float range (a run that far gone is stopped by the box or finiteness checks)."""
+    return math.exp(x) if x < 709.0 else math.inf

@@ -136,11 +136,11 @@ class FixNH(Fix):
         xz: Triple = keyword(None, unit="pressure")
         yz: Triple = keyword(None, unit="pressure")
         couple: Literal["xyz", "xy", "yz", "xz", "none"] | None = keyword(None)
-        tchain: int = keyword(3, ge=1)
-        pchain: int = keyword(3, ge=0)
+        tchain: int = keyword(3, ge=1, le=100)
+        pchain: int = keyword(3, ge=0, le=100)
         mtk: Literal["yes", "no"] = keyword("yes")
-        tloop: int = keyword(1, ge=1)
-        ploop: int = keyword(1, ge=1)
+        tloop: int = keyword(1, ge=1, le=1000)
+        ploop: int = keyword(1, ge=1, le=1000)
         nreset: int = keyword(0, ge=0)
         drag: float = keyword(0.0, ge=0)
         dilate: str = keyword("all")
@@ -273,6 +273,8 @@ class FixNH(Fix):
     def setup(self, sim):
         self.tdof = observables.degrees_of_freedom(sim, self.temp_group)
         self.natoms = observables.count(sim, "all")
+        if self.pstat and self.natoms == 0:
+            raise ScriptError(f"fix {self.id} {self.name}: no particles, so no pressure to control")
         self._read_virial(sim)
         if self.tstat:
             self._temp_target(sim)
@@ -482,7 +484,7 @@ class FixNH(Fix):
             self.mtk_term2 /= self.pdim * self.natoms
 
     def _press_velocities(self, sim):
-        factor = [math.exp(-self.dt4 * (self.omega_dot[d] + self.mtk_term2)) for d in range(3)]
+        factor = [_exp(-self.dt4 * (self.omega_dot[d] + self.mtk_term2)) for d in range(3)]
         p = sim.particles
         press_scale_velocities(p.v, p.mask, sim.groups.bit(self.group), p.nlocal, *factor)
 
@@ -493,7 +495,7 @@ class FixNH(Fix):
         fixed = self.fixedpoint
         for d in range(3):
             if self.p_flag[d]:
-                expfac = math.exp(self.dto * self.omega_dot[d])
+                expfac = _exp(self.dto * self.omega_dot[d])
                 lo[d] = (lo[d] - fixed[d]) * expfac + fixed[d]
                 hi[d] = (hi[d] - fixed[d]) * expfac + fixed[d]
         sim.change_box(lo, hi, remap=self.dilate)
@@ -510,17 +512,17 @@ class FixNH(Fix):
         p = sim.particles
         for _ in range(self.args.tloop):
             for ich in range(self.mtchain - 1, 0, -1):
-                expfac = math.exp(-ncfac * dt8 * eta_dot[ich + 1])
+                expfac = _exp(-ncfac * dt8 * eta_dot[ich + 1])
                 eta_dot[ich] *= expfac
                 eta_dot[ich] += eta_dotdot[ich] * ncfac * dt4
                 eta_dot[ich] *= drag
                 eta_dot[ich] *= expfac
-            expfac = math.exp(-ncfac * dt8 * eta_dot[1])
+            expfac = _exp(-ncfac * dt8 * eta_dot[1])
             eta_dot[0] *= expfac
             eta_dot[0] += eta_dotdot[0] * ncfac * dt4
             eta_dot[0] *= drag
             eta_dot[0] *= expfac
-            factor_eta = math.exp(-ncfac * dthalf * eta_dot[0])
+            factor_eta = _exp(-ncfac * dthalf * eta_dot[0])
             scale_velocities(p.v, p.mask, sim.groups.bit(self.group), p.nlocal, factor_eta, factor_eta, factor_eta)
             self.t_current *= factor_eta * factor_eta
             kecurrent = self.tdof * boltz * self.t_current
@@ -531,7 +533,7 @@ class FixNH(Fix):
             eta_dot[0] += eta_dotdot[0] * ncfac * dt4
             eta_dot[0] *= expfac
             for ich in range(1, self.mtchain):
-                expfac = math.exp(-ncfac * dt8 * eta_dot[ich + 1])
+                expfac = _exp(-ncfac * dt8 * eta_dot[ich + 1])
                 eta_dot[ich] *= expfac
                 eta_dotdot[ich] = (eta_mass[ich - 1] * eta_dot[ich - 1] * eta_dot[ich - 1] - boltz * t_target) / eta_mass[ich]
                 eta_dot[ich] += eta_dotdot[ich] * ncfac * dt4
@@ -552,19 +554,19 @@ class FixNH(Fix):
         dt4, dt8, dthalf, drag = self.dt4, self.dt8, self.dthalf, self.pdrag_factor
         for _ in range(self.args.ploop):
             for ich in range(self.mpchain - 1, 0, -1):
-                expfac = math.exp(-ncfac * dt8 * etap_dot[ich + 1])
+                expfac = _exp(-ncfac * dt8 * etap_dot[ich + 1])
                 etap_dot[ich] *= expfac
                 etap_dot[ich] += etap_dotdot[ich] * ncfac * dt4
                 etap_dot[ich] *= drag
                 etap_dot[ich] *= expfac
-            expfac = math.exp(-ncfac * dt8 * etap_dot[1])
+            expfac = _exp(-ncfac * dt8 * etap_dot[1])
             etap_dot[0] *= expfac
             etap_dot[0] += etap_dotdot[0] * ncfac * dt4
             etap_dot[0] *= drag
             etap_dot[0] *= expfac
             for ich in range(self.mpchain):
                 etap[ich] += ncfac * dthalf * etap_dot[ich]
-            factor_etap = math.exp(-ncfac * dthalf * etap_dot[0])
+            factor_etap = _exp(-ncfac * dthalf * etap_dot[0])
             for d in range(3):
                 if flags[d]:
                     omega_dot[d] *= factor_etap
@@ -573,7 +575,7 @@ class FixNH(Fix):
             etap_dot[0] += etap_dotdot[0] * ncfac * dt4
             etap_dot[0] *= expfac
             for ich in range(1, self.mpchain):
-                expfac = math.exp(-ncfac * dt8 * etap_dot[ich + 1])
+                expfac = _exp(-ncfac * dt8 * etap_dot[ich + 1])
                 etap_dot[ich] *= expfac
                 etap_dotdot[ich] = (etap_mass[ich - 1] * etap_dot[ich - 1] * etap_dot[ich - 1] - kt) / etap_mass[ich]
                 etap_dot[ich] += etap_dotdot[ich] * ncfac * dt4
@@ -599,3 +601,8 @@ class FixNPH(FixNH):
     usage = ("fix ID GROUP nph iso|aniso|x|y|z PSTART PSTOP PDAMP [couple C] [pchain M] [mtk yes|no] "
              "[ploop N] [nreset N] [drag D] [dilate all|GROUP] [fixedpoint X Y Z]")
     needs_temp, needs_press = False, True
+
+
+def _exp(x):
+    """exp, inf past the float range (a run that far gone is stopped by the box or finiteness checks)."""
+    return math.exp(x) if x < 709.0 else math.inf
