@@ -502,12 +502,13 @@ def test_numpy_warnings_never_reach_the_screen(pdps_cli):
 def test_a_non_finite_thermo_value_stops_the_run_naming_its_column(pdps_cli, tmp_path):
     done = pdps_cli(BOX + """
         create_particle 1 single 0.5 0.5 0.5
+        create_particle 1 single 0.2 0.5 0.5
         mass 1 1e300
         velocity all set 1e100 0 0
         thermo_style custom step ke
         run 0
     """, "-log", "log.huge")
-    one_line(done, "ERROR: in.test:9: run: thermo KinEng is inf at step 0: the run stops rather than go "
+    one_line(done, "ERROR: in.test:10: run: thermo KinEng is inf at step 0: the run stops rather than go "
                    "on with non-finite values (velocities or forces too large?)")
     assert "inf" in (tmp_path / "log.huge").read_text()       # the line that showed it stays written
 
