@@ -574,6 +574,8 @@ class Simulation:
             loop = time.perf_counter() - t_loop
         finally:
             self.output.flush()
+        # between runs ramp() reads its start value, as LAMMPS's (its run's first and last steps collapse)
+        self.ramp_bounds = (self.step, self.step)
         self._report(nsteps, loop, time.perf_counter() - t_start)
         self.output.flush()
 

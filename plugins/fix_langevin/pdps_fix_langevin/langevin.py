@@ -103,6 +103,7 @@ class FixLangevin(Fix):
                 raise ScriptError(f"scale: ratio must be > 0 (got {ratio:g})")
             self.ratio[ptype] = ratio
         self.noise_sum = np.zeros(3)
+        self.last_target = None
 
     def target(self, sim):
         """The temperature the thermostat holds at this step (the ramp)."""
@@ -113,7 +114,8 @@ class FixLangevin(Fix):
 
     def post_force(self, sim):
         p = sim.particles
-        kt = sim.units.boltz * self.target(sim) / sim.units.mvv2e
+        self.last_target = self.target(sim)
+        kt = sim.units.boltz * self.last_target / sim.units.mvv2e
         # forces in force units: m v / damp and the noise are divided by ftm2v (1 in lj and si), as LAMMPS
         ftm2v = sim.units.ftm2v
         noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp)) / ftm2v
@@ -129,5 +131,6 @@ class FixLangevin(Fix):
                 p.f[:p.nlocal][chosen] -= mean
 
     def scalar(self, sim):
-        """f_ID: the target temperature now."""
-        return self.target(sim)
+        """f_ID: the target temperature of the last step the thermostat acted on (between runs, the
+        one the last run ended at)."""
+        return self.last_target if self.last_target is not None else self.target(sim)
