@@ -133,7 +133,8 @@ def parse_lattice(words, units, dimension):
     if abs(np.linalg.det(vectors)) < 1e-12:
         raise ScriptError("a1, a2 and a3 must not lie in one plane")
     if units == "lj":
-        size = abs(np.linalg.det(vectors)) if dimension == 3 else abs(np.cross(vectors[:2, 0], vectors[:2, 1]))
+        area = vectors[0, 0] * vectors[1, 1] - vectors[1, 0] * vectors[0, 1]
+        size = abs(np.linalg.det(vectors)) if dimension == 3 else abs(area)
         constant = (len(basis) / (size * scale)) ** (1.0 / dimension)
     else:
         constant = scale
