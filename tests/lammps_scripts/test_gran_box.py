@@ -1,4 +1,4 @@
-"""The benchmark kit's in.gran_box (gran_box/in.gran_box, a copy of ../shared/bench/lammps/in.gran_box,
+"""The benchmark kit's in.gran_box (gran_box/in.gran_box, a copy of the benchmark kit's bench/lammps/in.gran_box,
 unmodified: 4,000 frictional spheres between two walls under gravity, pair gran/hooke/history and fix
 wall/gran) run with ``pdps run`` and shortened to NSTEPS, against LAMMPS's numbers recorded by
 benchmarks/lammps_references/gran.py into gran_box/reference.txt.

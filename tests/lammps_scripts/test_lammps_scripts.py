@@ -1,4 +1,4 @@
-"""The benchmark kit's LAMMPS scripts (copies of ../shared/bench/lammps/in.*, unmodified) run with
+"""The benchmark kit's LAMMPS scripts (copies of the kit's bench/lammps/in.*, unmodified) run with
 ``pdps run`` and give LAMMPS's answers, recorded with LAMMPS itself by
 benchmarks/lammps_references/lammps_scripts.py into reference/:
 
