@@ -223,6 +223,13 @@ class Simulation:
             raise
 
     def _take_jump(self, flow, source, directory):
+        line = self.line
+        try:
+            return self._jump_to(flow, source, directory)
+        except ScriptError as exc:
+            raise exc.locate(source, line, "jump") from None
+
+    def _jump_to(self, flow, source, directory):
         """Carry out ``jump FILE [LABEL]``: this script from its label, or another file in its place
         (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop."""
         target, label = flow.jump
@@ -237,7 +244,7 @@ class Simulation:
             start = 0
         else:
             start = next((k + 1 for k, (_, raw) in enumerate(flow.lines)
-                          if strip_comment(raw).split()[:2] == ["label", label]), None)
+                          if raw.split()[:2] == ["label", label]), None)
             if start is None:
                 raise ScriptError(f"label {label} is not in {source}", source=source, line=self.line,
                                   command="jump")

@@ -280,7 +280,11 @@ class Pair(Style):
         for k in (i, j):
             if (k, k) not in self.coeffs:
                 raise ScriptError(f"pair coefficients for types {k} {k} are needed to mix {i} {j}")
-        return self.mix_coeff(self.coeffs[(i, i)], self.coeffs[(j, j)], rule)
+        try:
+            return self.mix_coeff(self.coeffs[(i, i)], self.coeffs[(j, j)], rule)
+        except (ValueError, OverflowError, ZeroDivisionError) as exc:
+            raise ScriptError(f"pair coefficients for types {i} {j} cannot be mixed ({_reason(exc)}) from "
+                              f"{i} {i} and {j} {j}: give pair_coeff {i} {j}") from None
 
     def mix_coeff(self, ci, cj, rule):
         raise ScriptError(f"pair style {self.name} has no mixing rule; give pair_coeff {rule} pairs")

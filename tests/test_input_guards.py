@@ -516,3 +516,25 @@ def test_a_non_finite_thermo_value_stops_the_run_naming_its_column(pdps_cli, tmp
 def test_velocities_beyond_what_squares_hold_are_refused(pdps_cli):
     one_line(pdps_cli(BOX + "velocity all set 1e200 0 0\n"),
              "ERROR: in.test:4: velocity: vx must be <= 1e+150 (got 1e200)")
+
+
+# ---- found by the 100,000-case make fuzz run on the LAMMPS-dialect code ---------------------------
+@pytest.mark.parametrize("lines, message", [
+    (BOX.replace("create_box 1", "create_box 2") + "mass 2 1\npair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\n"
+     "pair_coeff 2 2 -258 1.0\nrun 0",
+     "ERROR: in.test:8: run: pair coefficients for types 1 2 cannot be mixed (math domain error) from 1 1 and "
+     "2 2: give pair_coeff 1 2"),
+    (BOX + "pair_style lj/cut 1e-38\npair_coeff * * 1.0 1.0\npair_modify tail yes\nrun 0",
+     "ERROR: in.test:7: run: pair_coeff 1 1: cutoff 1e-38 too small or large for the tail correction (rc^9 is "
+     "not a positive finite number)"),
+    ("label a\njump nowhere.in a\n", None),
+])
+def test_lammps_dialect_code_found_by_the_fuzz_run(pdps_cli, lines, message):
+    done = pdps_cli(lines + "\n")
+    if message is None:
+        assert done.returncode == 1
+        [line] = done.stderr.strip().splitlines()
+        assert line.startswith("ERROR: in.test:2: jump: cannot read input script ") and line.endswith(
+            "nowhere.in: No such file or directory")
+    else:
+        one_line(done, message)

@@ -293,7 +293,7 @@ def read_file(path, shown=None):
         archive = zipfile.ZipFile(path)
     except FileNotFoundError:
         raise ScriptError(f"restart file {shown} does not exist") from None
-    except zipfile.BadZipFile:
+    except (zipfile.BadZipFile, NotImplementedError, ValueError, EOFError):
         raise ScriptError(damaged) from None
     except OSError as exc:
         raise ScriptError(f"cannot read restart file {shown}: {exc.strerror or exc}") from None

@@ -37,7 +37,11 @@ class FixTempBerendsen(Fix):
             raise ScriptError(f"fix {self.id} temp/berendsen: the group's temperature is 0, so velocities "
                               "cannot be scaled to the target")
         target = sim.ramp(self.args.t_start, self.args.t_stop)
-        factor = math.sqrt(1.0 + sim.dt / self.args.damp * (target / t - 1.0))
+        square = 1.0 + sim.dt / self.args.damp * (target / t - 1.0)
+        if square < 0.0:
+            raise ScriptError(f"fix {self.id} temp/berendsen: the scaling factor is not real at step {sim.step} "
+                              f"(1 + dt/damp (T_target/T - 1) = {square:.4g}): make damp larger than the timestep")
+        factor = math.sqrt(square)
         p = sim.particles
         chosen = sim.groups.select(sim, self.group)
         p.v[:p.nlocal][chosen] *= factor

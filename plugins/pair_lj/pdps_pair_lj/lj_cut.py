@@ -38,7 +38,7 @@ Example (LAMMPS's ``in.lj`` melt)::
 import math
 
 from numba import njit
-from pdps_core.api import PairLaw, StyleArgs, param
+from pdps_core.api import PairLaw, ScriptError, StyleArgs, param
 
 
 @njit(cache=True, inline="always")
@@ -100,5 +100,8 @@ class PairLJCut(PairLaw):
         rc3 = rc * rc * rc
         rc6 = rc3 * rc3
         rc9 = rc3 * rc6
+        if not (rc9 > 0.0 and math.isfinite(rc9)):
+            raise ScriptError(f"pair_coeff {i} {j}: cutoff {rc:g} too small or large for the tail correction "
+                              "(rc^9 is not a positive finite number)")
         prefactor = 8.0 * math.pi * count_i * count_j * c.epsilon * sig6 / (9.0 * rc9)
         return prefactor * (sig6 - 3.0 * rc6), 2.0 * prefactor * (2.0 * sig6 - 3.0 * rc6)
