@@ -9,10 +9,10 @@ plugins/pair_hybrid/tests/data/); each case of CASES runs 100 steps of fix nve a
 """
 
 import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCES = [ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data",
@@ -45,21 +45,8 @@ def main(lmp):
         shutil.copy(source, DATA / source.name)
     rows = []
     for case in CASES:
-        with tempfile.TemporaryDirectory() as folder:
-            for source in SOURCES:
-                shutil.copy(source, Path(folder) / source.name)
-            (Path(folder) / "in.case").write_text(script(case))
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
+        log = run_lammps(lmp, script(case), SOURCES, case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
     (DATA / "hybrid.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

@@ -10,14 +10,14 @@ programs; LAMMPS's thermo lines (step temp pe press, 15 digits) every 25 steps g
 plugins/pair_simple/tests/data/pair_styles.txt.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from pdps_core.testing import fluid, write_data
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data"
@@ -53,20 +53,8 @@ def main(lmp):
     scene()
     rows = []
     for case in CASES:
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "fluid.data").write_bytes((DATA / "fluid.data").read_bytes())
-            (Path(folder) / "in.case").write_text(script(case))
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
+        log = run_lammps(lmp, script(case), [DATA / "fluid.data"], case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
     (DATA / "pair_styles.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

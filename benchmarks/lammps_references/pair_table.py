@@ -12,14 +12,14 @@ of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step temp pe pr
 """
 
 import math
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from pdps_core.testing import fluid, write_data
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_table" / "tests" / "data"
@@ -87,21 +87,8 @@ def main(lmp):
     tables()
     rows = []
     for case in CASES:
-        with tempfile.TemporaryDirectory() as folder:
-            for name in ("fluid.data", "pots.table"):
-                (Path(folder) / name).write_bytes((DATA / name).read_bytes())
-            (Path(folder) / "in.case").write_text(script(case))
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
+        log = run_lammps(lmp, script(case), [DATA / "fluid.data", DATA / "pots.table"], case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
     (DATA / "pair_table.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

@@ -1,0 +1,35 @@
+"""What the reference recorders share: run LAMMPS on a script in a temporary folder, and read the thermo
+table of its log."""
+
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+
+def run_lammps(lmp, script, files=(), label=""):
+    """The log LAMMPS writes for ``script``, run with copies of ``files`` beside it; stops the recorder
+    with the log's end when LAMMPS fails."""
+    with tempfile.TemporaryDirectory() as folder:
+        for path in files:
+            shutil.copy(path, Path(folder) / Path(path).name)
+        (Path(folder) / "in.case").write_text(script)
+        done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
+                              capture_output=True, text=True)
+        log = (Path(folder) / "log.lammps").read_text()
+    if done.returncode != 0:
+        sys.exit(f"LAMMPS failed ({label}):\n{log[-2000:]}")
+    return log
+
+
+def thermo_lines(log):
+    """The lines of the log's first thermo table after its header, split into words."""
+    lines = log.splitlines()
+    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+    rows = []
+    for line in lines[start + 1:]:
+        if line.startswith("Loop time"):
+            break
+        rows.append(line.split())
+    return rows
