@@ -9,10 +9,10 @@ each case's fix; thermo (step temp pe press, 15 digits) every 25 steps, and fix 
 plugins/fix_simple/tests/data/fixes.txt.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_simple" / "tests" / "data"
@@ -32,23 +32,12 @@ def main(lmp):
     for case, lines in CASES.items():
         script = "\n".join(SETUP + [lines, "thermo 25", "thermo_style custom step temp pe press",
                                     "thermo_modify format float %.15g", "run 100", ""])
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "fluid.data").write_bytes((DATA / "fluid.data").read_bytes())
-            (Path(folder) / "in.case").write_text(script)
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines_ = log.splitlines()
-        start = next(k for k, line in enumerate(lines_) if line.split()[:1] == ["Step"])
-        for line in lines_[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            if line.startswith("PRINTED"):
-                rows.append(f"{case}\tprint\t" + "\t".join(line.split()[1:]))
+        log = run_lammps(lmp, script, [DATA / "fluid.data"], case)
+        for words in thermo_lines(log):
+            if words[0] == "PRINTED":
+                rows.append(f"{case}\tprint\t" + "\t".join(words[1:]))
             else:
-                rows.append(f"{case}\t" + "\t".join(line.split()))
+                rows.append(f"{case}\t" + "\t".join(words))
     (DATA / "fixes.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

@@ -10,10 +10,10 @@ lengths in Angstrom). Rows go to
 tests/data/lammps/thermo.txt as ``case<TAB>values...``.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
@@ -39,20 +39,8 @@ def script(case):
 def main(lmp):
     rows = []
     for case in CASES:
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "fluid.data").write_bytes(DATA.read_bytes())
-            (Path(folder) / "in.thermo").write_text(script(case))
-            done = subprocess.run([lmp, "-in", "in.thermo", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
+        log = run_lammps(lmp, script(case), [DATA], case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
     OUT.write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 
