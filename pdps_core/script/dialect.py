@@ -31,14 +31,13 @@ class Dialect:
     region_units: str          # default of region's units keyword: PDPS box, LAMMPS lattice
     velocity_units: str        # default of velocity's units keyword (set, ramp): PDPS box, LAMMPS lattice
     velocity_numbers: str      # velocity create's generator: "counter" (pdps) or "park" (LAMMPS's)
-    average_before_first: str  # a time average read before its first window ends: "error" or "zero"
 
 
 DIALECTS = {
     "pdps": Dialect("pdps", "PDPS", index_base=0, region_units="box", velocity_units="box",
-                    velocity_numbers="counter", average_before_first="error"),
+                    velocity_numbers="counter"),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
-                      velocity_numbers="park", average_before_first="zero"),
+                      velocity_numbers="park"),
 }
 
 # commands one language has and the other has not: the first one met names the dialect
