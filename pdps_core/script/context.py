@@ -46,7 +46,7 @@ class FormulaContext:
             if method is None:
                 raise ScriptError(f"{prefix}_{ident}: {style.kind} {ident} ({style.name}) has no global vector")
             return np.asarray(method(sim), dtype=np.float64).ravel()
-        if self.per_atom and not indices or self.per_atom and len(indices) == 1 and self._has_peratom(prefix, ident):
+        if self.per_atom and (not indices or len(indices) == 1 and self._has_peratom(prefix, ident)):
             return self._peratom(prefix, ident, indices)
         if prefix == "c":
             return float(sim.compute_value(ident, indices))
