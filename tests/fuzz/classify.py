@@ -9,7 +9,8 @@ ends in one of these classes:
     error      exit 1 and stderr is exactly one line ``ERROR: FILE:LINE: ...`` naming one of the
                case's files (the script, an included script, the data or restart file)
     long       still running at the time limit, either advancing step by step toward an end step
-               that a 64-bit counter can hold (``run 2000000`` on a small box is a valid script), or
+               that a 64-bit counter can hold (``run 2000000`` on a small box is a valid script, and
+               so is a loop of a hundred thousand short runs), or
                holding more than BIG particles (40 times the largest seed: a big system may take
                longer than the limit to set up); reported, not failed
     traceback  a Python exception other than the script errors reached the user ("internal error"),
@@ -115,8 +116,8 @@ class Watchdog(threading.Thread):
                 continue
             recent = [step for t, step in samples if t >= now - 1.5 and step is not None]
             last = getattr(sim, "run_last_step", None)
-            stepping = (len(recent) >= 2 and recent[-1] > recent[0] and last is not None
-                        and recent[-1] < last)
+            # across runs too: a loop of short runs (``variable i loop 100000`` ... ``jump``) advances
+            stepping = len(recent) >= 2 and recent[-1] > recent[0]
             representable = last is not None and last <= LARGEST_STEP
             big = (particle_count(sim) or 0) >= BIG
             self.verdict = "long" if (stepping and representable) or big else "hang"

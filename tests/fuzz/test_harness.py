@@ -27,6 +27,11 @@ CASES = {
     "clean": (BOX + "thermo 1\nrun 5\n", "clean"),
     "error": (BOX + "pair_style dpd 1.0 1.0 5\npair_coeff * * 25 -4.5\nrun 5\n", "error"),
     "long": (BOX + "thermo 0\nrun 2000000000\n", "long"),
+    "loop of runs": (BOX + "thermo 0\nvariable i loop 1000000\nlabel again\nrun 3\nnext i\n"
+                     "jump SELF again\n", "long"),
+    "endless jump": (BOX + "label again\njump SELF again\n", "error"),
+    "sleep in a loop": (BOX + "fix m all fuzz/misbehave sleep\nvariable i loop 1000\nlabel again\n"
+                        "run 3\nnext i\njump SELF again\n", "hang"),
     "segfault": (BOX + "fix m all fuzz/misbehave segfault\nrun 5\n", "signal"),
     "abort": (BOX + "fix m all fuzz/misbehave abort\nrun 5\n", "signal"),
     "exit": (BOX + "fix m all fuzz/misbehave exit\nrun 5\n", "signal"),

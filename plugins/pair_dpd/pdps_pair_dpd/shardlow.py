@@ -58,7 +58,8 @@ step in one global order, sorted by the pair's two particle ids; each update rea
 previous ones left (a sequential sweep). Each rank collects the pairs of its half list, rank 0 sweeps
 them all over the velocities of all particles and sends the result back, so the trajectory is the
 same on any number of ranks and does not depend on how particles are stored. The sweep itself is
-serial: it costs a sort of the pairs and a gather per step. (LAMMPS sweeps its SSA sub-boxes in
+serial: it costs a counting sort of the pairs per step (by the lower tag, then each particle's
+partners by the higher), and on several ranks a gather. (LAMMPS sweeps its SSA sub-boxes in
 parallel instead; its result depends on the decomposition.) A particle paired with its own periodic
 image (boxes shorter than the cutoff) is skipped: its relative velocity and net impulse are zero.
 Ghost velocities are left stale: with this fix the pair style reads none.
@@ -109,15 +110,14 @@ def radial_relative_velocity(v, i, j, ex, ey, ez):
 
 
 @njit(cache=True)
-def collect_pairs(x, type_, tag, mask, groupbit, offsets, neighbors, nlocal, cut):
-    """The pairs this rank's half list holds within the cutoff, both particles in the group, as
-    (lower tag, higher tag, unit vector from the lower-tag particle to the other..., weight, types)."""
+def collect_pairs(x, type_, tag, number, mask, groupbit, offsets, neighbors, nlocal, cut):
+    """The pairs this rank's half list holds within the cutoff, both particles in the group, as the
+    ``number`` (any per-particle label, owned and ghost) of the lower-tag particle, that of the other,
+    and the separation vector from the other to the lower-tag particle."""
     total = offsets[nlocal]
-    low = np.empty(total, dtype=np.int64)
-    high = np.empty(total, dtype=np.int64)
-    e = np.empty((total, 3))
-    w = np.empty(total)
-    types = np.empty((total, 2), dtype=np.int64)
+    a = np.empty(total, dtype=np.int64)
+    b = np.empty(total, dtype=np.int64)
+    d = np.empty((total, 3))
     m = 0
     for i in range(nlocal):
         if not mask[i] & groupbit:
@@ -128,39 +128,64 @@ def collect_pairs(x, type_, tag, mask, groupbit, offsets, neighbors, nlocal, cut
             # a particle's own periodic image is not a partner
             if tag[j] == tag[i] or not mask[j] & groupbit:
                 continue
-            tj = type_[j]
             delx = x[i, 0] - x[j, 0]
             dely = x[i, 1] - x[j, 1]
             delz = x[i, 2] - x[j, 2]
             rsq = delx * delx + dely * dely + delz * delz
-            rc = cut[ti, tj]
+            rc = cut[ti, type_[j]]
             if rsq >= rc * rc or rsq < EPSILON * EPSILON:
                 continue
-            r = math.sqrt(rsq)
             sign = 1.0 if tag[i] < tag[j] else -1.0
-            low[m] = min(tag[i], tag[j])
-            high[m] = max(tag[i], tag[j])
-            e[m, 0] = sign * delx / r
-            e[m, 1] = sign * dely / r
-            e[m, 2] = sign * delz / r
-            w[m] = 1.0 - r / rc
-            types[m, 0] = ti
-            types[m, 1] = tj
+            a[m] = number[i] if tag[i] < tag[j] else number[j]
+            b[m] = number[j] if tag[i] < tag[j] else number[i]
+            d[m, 0] = sign * delx
+            d[m, 1] = sign * dely
+            d[m, 2] = sign * delz
             m += 1
-    return low[:m], high[:m], e[:m], w[:m], types[:m]
+    return a[:m], b[:m], d[:m]
 
 
 @njit(cache=True)
-def sweep_pairs(v, inv_mass, a, b, low, high, e, w, types, gamma, sigma, dt, key, step):
-    """Shardlow's S1 update pair after pair, in the order given; v and inv_mass are indexed by the
-    dense particle numbers a and b of each pair (a = the lower tag)."""
+def sort_pairs(a, b, d, count):
+    """The pairs sorted by (a, b), numbers below ``count``: a counting sort by a, then each
+    particle's few partners by b. Copies, so that the sweep reads memory in order."""
+    start = np.zeros(count + 1, dtype=np.int64)
+    for m in range(len(a)):
+        start[a[m] + 1] += 1
+    for k in range(count):
+        start[k + 1] += start[k]
+    fill = start[:-1].copy()
+    sorted_a, sorted_b, sorted_d = np.empty_like(a), np.empty_like(b), np.empty_like(d)
+    for m in range(len(a)):
+        slot = fill[a[m]]
+        fill[a[m]] += 1
+        sorted_a[slot] = a[m]
+        sorted_b[slot] = b[m]
+        sorted_d[slot, 0] = d[m, 0]
+        sorted_d[slot, 1] = d[m, 1]
+        sorted_d[slot, 2] = d[m, 2]
+    for k in range(count):
+        lo, hi = start[k], start[k + 1]
+        if hi - lo > 1:
+            by_b = np.argsort(sorted_b[lo:hi], kind="mergesort") + lo
+            sorted_b[lo:hi] = sorted_b[by_b]
+            sorted_d[lo:hi] = sorted_d[by_b]
+    return sorted_a, sorted_b, sorted_d
+
+
+@njit(cache=True)
+def sweep_pairs(v, inv_mass, type_, tags, a, b, d, cut, gamma, sigma, dt, key, step):
+    """Shardlow's S1 update pair after pair, in the order given; v, inv_mass, type_ and tags are
+    indexed by the numbers a and b of each pair's particles (a the lower tag, d from b to a)."""
     sqrt_dt = math.sqrt(dt)
     for m in range(len(a)):
         i, j = a[m], b[m]
-        ti, tj = types[m, 0], types[m, 1]
-        ex, ey, ez = e[m, 0], e[m, 1], e[m, 2]
-        s = 0.5 * sigma[ti, tj] * w[m] * sqrt_dt * pair_gaussian(key, step, low[m], high[m])
-        g = 0.5 * gamma[ti, tj] * w[m] * w[m] * dt
+        ti, tj = type_[i], type_[j]
+        r = math.sqrt(d[m, 0] * d[m, 0] + d[m, 1] * d[m, 1] + d[m, 2] * d[m, 2])
+        ex, ey, ez = d[m, 0] / r, d[m, 1] / r, d[m, 2] / r
+        w = 1.0 - r / cut[ti, tj]
+        s = 0.5 * sigma[ti, tj] * w * sqrt_dt * pair_gaussian(key, step, tags[i], tags[j])
+        g = 0.5 * gamma[ti, tj] * w * w * dt
         inv_mi, inv_mj = inv_mass[i], inv_mass[j]
         implicit = 1.0 / (1.0 + (inv_mi + inv_mj) * g)
         explicit_half = s - g * radial_relative_velocity(v, i, j, ex, ey, ez)
@@ -212,23 +237,42 @@ class FixShardlow(Fix):
         instead sweeps sub-box by sub-box in parallel, and its result depends on the decomposition)."""
         p, pair, comm = sim.particles, sim.pair, sim.comm
         nlist = sim.pair_list
-        low, high, e, w, types = collect_pairs(p.x, p.type, p.tag, p.mask, sim.groups.bit(self.group),
-                                               nlist.offsets, nlist.neighbors, p.nlocal, pair.cut)
-        n = p.nlocal
-        owned = np.column_stack([p.tag[:n].astype(np.float64), 1.0 / observables.masses(sim), p.v[:n]])
-        pairs = np.column_stack([low, high, types, e, w]).astype(np.float64)
+        n, everyone = p.nlocal, p.nlocal + p.nghost
+        key = sim.random_key(pair.args.seed) ^ SHARDLOW_KEY
+        groupbit = sim.groups.bit(self.group)
+        if comm.nprocs == 1:
+            # one rank owns every tag: number the particles (ghosts too) by their tag's rank
+            by_tag = np.argsort(p.tag[:n], kind="stable")
+            tags = p.tag[by_tag]
+            a, b, d = collect_pairs(p.x, p.type, p.tag, np.searchsorted(tags, p.tag[:everyone]), p.mask,
+                                    groupbit, nlist.offsets, nlist.neighbors, n, pair.cut)
+            velocities = p.v[by_tag]
+            self._sweep(sim, tags, observables.masses(sim)[by_tag], p.type[by_tag], velocities, a, b, d,
+                        key)
+            p.v[by_tag] = velocities
+            return
+        a, b, d = collect_pairs(p.x, p.type, p.tag, p.tag, p.mask, groupbit, nlist.offsets,
+                                nlist.neighbors, n, pair.cut)
+        owned = np.column_stack([p.tag[:n], observables.masses(sim), p.type[:n], p.v[:n]])
+        pairs = np.column_stack([a, b, d])
         owned, pairs = comm.gather_rows(owned), comm.gather_rows(pairs)
         velocities = None
         if comm.is_root:
-            order = np.argsort(owned[:, 0], kind="stable")
-            tags = owned[order, 0].astype(np.int64)
-            velocities = np.ascontiguousarray(owned[order, 2:5])
-            pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
-            low, high = pairs[:, 0].astype(np.int64), pairs[:, 1].astype(np.int64)
-            sweep_pairs(velocities, np.ascontiguousarray(owned[order, 1]), np.searchsorted(tags, low),
-                        np.searchsorted(tags, high), low, high, np.ascontiguousarray(pairs[:, 4:7]),
-                        np.ascontiguousarray(pairs[:, 7]), pairs[:, 2:4].astype(np.int64), pair.gamma,
-                        pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
+            by_tag = np.argsort(owned[:, 0], kind="stable")
+            tags = owned[by_tag, 0].astype(np.int64)
+            velocities = np.ascontiguousarray(owned[by_tag, 3:6])
+            self._sweep(sim, tags, owned[by_tag, 1], owned[by_tag, 2].astype(np.int64), velocities,
+                        np.searchsorted(tags, pairs[:, 0].astype(np.int64)),
+                        np.searchsorted(tags, pairs[:, 1].astype(np.int64)),
+                        np.ascontiguousarray(pairs[:, 2:5]), key)
             velocities = (tags, velocities)
         tags, updated = comm.bcast(velocities)
         p.v[:n] = updated[np.searchsorted(tags, p.tag[:n])]
+
+    @staticmethod
+    def _sweep(sim, tags, masses, types, velocities, a, b, d, key):
+        """Sweep every pair in the order of its (lower, higher) tags over ``velocities``: the
+        particles' rows in the order of the sorted ``tags``, which a and b number."""
+        a, b, d = sort_pairs(a, b, d, len(tags))
+        sweep_pairs(velocities, 1.0 / masses, types, tags, a, b, d, sim.pair.cut, sim.pair.gamma,
+                    sim.pair.sigma, sim.dt, key, sim.step)
