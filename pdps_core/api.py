@@ -40,7 +40,7 @@ CONTRACT = {
         "type": "types of owned particles (int32, from 1)",
         "mass": "mass per type, index 0 unused (NaN where not set); rmass per particle when present",
         "ntypes": "number of particle types",
-        "particle_style": "'atomic' or 'sphere' (radius, rmass, omega, torque exist)",
+        "particle_style": "'atomic', 'sphere' (radius, rmass, omega, torque exist), 'charge' (q), 'molecular', 'bond', 'angle' (molecule) or 'full' (molecule, q)",
         "box": "the simulation box (Box)",
         "change_box": "change_box(lo, hi, remap=GROUP or None): new box bounds now, a group's particles carried (barostats, deform)",
         "dimension": "2 or 3",

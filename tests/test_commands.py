@@ -403,7 +403,7 @@ class TestReadData:
          "Velocities name atom 3, which is not in Atoms"),
         ("Atoms\n\n1 1 1 1 1\n2 1 2 2 2\n\nVelocities\n\n1 0 0\n", 16, "expected id vx vy vz (got 3 values)"),
         ("Atoms\n\n1 1 1 1 1\n2 1 2 2 2\n\nBonds\n\n1 1 1 2\n", 14,
-         "unsupported section Bonds (sections read: Masses, Atoms, Velocities)"),
+         "section Bonds needs a particle_style with molecule ids (molecular, bond, angle or full), not atomic"),
         ("Atoms # sphere\n\n1 1 1 1 1 1 1\n2 1 1 1 2 2 2\n", 9,
          "Atoms are 'sphere' but particle_style is atomic (set particle_style sphere before read_data)"),
     ])
@@ -417,7 +417,7 @@ class TestReadData:
 
     @pytest.mark.parametrize("text, line, message", [
         ("title\n\nfoo atoms\n", 3, "unsupported section foo atoms (sections read: Masses, Atoms, Velocities)"),
-        ("title\n\n2 atoms\n1 atom types\n0 1 xlo xhi\n3 bonds\n", 6, "molecular data is not supported: 3 bonds"),
+        ("title\n\n2 atoms\n1 atom types\n0 1 xlo xhi\n3 bonds\n", 6, "3 bonds need a particle_style with molecule ids (molecular, bond, angle or full), not atomic"),
         ("title\n\n2 atoms\n1 atom types\n0 1 0 0 0 xy xz yz\n", 5, "unrecognised header line: 0 1 0 0 0 xy xz yz"),
         ("title\n\n2 atoms\n", 1, "header must give the number of atoms and of atom types"),
         ("title\n\n2 atoms\n1 atom types\n0 1 0 xy xz yz\n", 5, "triclinic boxes are not supported"),
@@ -541,16 +541,16 @@ class TestGroup:
         assert self.members(sim, "g") == {65}
 
     @pytest.mark.parametrize("line, message", [
-        ("group", "expected a group id; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
-        ("group g", "expected a group style; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
+        ("group", "expected a group id; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., molecule M..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
+        ("group g", "expected a group style; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., molecule M..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
         ("group g bogus", "group style must be one of all, region, type, id, variable, subtract, union, intersect, "
                           "empty, clear, delete, molecule, dynamic, static, include (got bogus)"),
-        ("group g dynamic all", "group dynamic is not supported (supported: region, type, id, variable, subtract, "
-                                "union, intersect, empty, clear, delete)"),
+        ("group g dynamic all", "group dynamic is not supported (supported: region, type, id, molecule, variable, "
+                                "subtract, union, intersect, empty, clear, delete)"),
         ("group g id 5:2", "id range 5:2 must have A <= B and a stride >= 1"),
         ("group g union", "group union needs one or more groups"),
         ("group g region nowhere", "region nowhere is not defined (defined: box)"),
-        ("group g type", "expected at least one type; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
+        ("group g type", "expected at least one type; usage: group ID STYLE ARGS (all, region RID, type T..., id I..., molecule M..., variable NAME, subtract G..., union G..., intersect G..., empty, clear, delete)"),
         ("group g type 4", "type 4 is out of range 1..3"),
         ("group g delete", "group g is not defined"),
         ("group all type 1", "group all is predefined and cannot be redefined"),
@@ -675,7 +675,7 @@ class TestParticleStyle:
 
     def test_errors(self, sim):
         fails(sim, "particle_style ellipsoid", "particle_style",
-              "particle style must be one of atomic, sphere (got ellipsoid)")
+              "particle style must be one of atomic, sphere, charge, molecular, bond, angle, full (got ellipsoid)")
         fails(sim, box() + "particle_style sphere", "particle_style",
               "particle_style must come before the simulation box is created")
 
@@ -703,7 +703,8 @@ class TestNeighbor:
         ("neigh_modify every 0", "neigh_modify", "every must be >= 1 (got 0)"),
         ("neigh_modify delay -1", "neigh_modify", "delay must be >= 0 (got -1)"),
         ("neigh_modify every", "neigh_modify",
-         "expected keyword/value pairs; usage: neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | none]"),
+         "expected keyword/value pairs; usage: neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | "
+                                        "molecule/intra G | molecule/inter G | none]"),
         ("neighbor_modify check maybe", "neighbor_modify", "check must be one of yes, no (got maybe)"),
         ("neigh_modify often 2", "neigh_modify", "neigh_modify keyword must be one of every, delay, check, one, exclude (got often)"),
     ])

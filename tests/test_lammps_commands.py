@@ -44,7 +44,7 @@ def test_excluded_groups_and_none():
 
 def test_exclude_errors():
     sim = make_box(ntypes=2)
-    with pytest.raises(ScriptError, match=r"exclude takes type I J, group G1 G2 or none \(got bond\)"):
+    with pytest.raises(ScriptError, match=r"exclude takes type I J, group G1 G2, molecule/intra G, molecule/inter G or none \(got bond\)"):
         sim.command("neigh_modify exclude bond 1 2")
     with pytest.raises(ScriptError, match="exclude molecule/intra needs molecule ids"):
         sim.command("neigh_modify exclude molecule/intra all")

@@ -30,6 +30,7 @@ import numpy as np
 from ..errors import ScriptError
 from ..random import particle_uniforms
 from ..state import limits
+from ..state.particles import PARTICLE_STYLES
 from . import command
 from .words import choice, count, integer, number, type_range, yes_no
 
@@ -53,7 +54,20 @@ def _selection(sim, style, ident):
         return sim.groups.select(sim, sim.require_group(ident))
     if style == "region":
         return sim.region(ident).match(p.x[:n])
-    raise ScriptError(f"set style must be atom, type, group or region (got {style})")
+    if style == "mol":
+        lo, hi = _id_range(ident)
+        molecule = _molecules(sim, "set mol")
+        return (molecule >= lo) & (molecule <= hi)
+    raise ScriptError(f"set style must be atom, type, mol, group or region (got {style})")
+
+
+def _molecules(sim, what):
+    """The owned particles' molecule ids, or an error naming the particle styles that have them."""
+    p = sim.particles
+    if not p.has("molecule"):
+        raise ScriptError(f"{what} needs molecule ids (particle_style molecular, bond, angle or full; "
+                          f"this is {sim.particle_style})")
+    return p.molecule[:p.nlocal]
 
 
 def _id_range(word):
@@ -85,8 +99,6 @@ def set_(sim, args):
     if len(args) < 4:
         raise ScriptError(f"expected a style, an ID and keyword values; usage: {usage}")
     style = choice(args[0], "set style", ("atom", "type", "group", "region", "mol"))
-    if style == "mol":
-        raise ScriptError("set mol needs molecule ids, which pdps does not read yet")
     selected = _selection(sim, style, args[1])
     k = 2
     while k < len(args):
@@ -150,8 +162,20 @@ def _set_one(sim, key, values, selected):
             p.rmass[rows] = np.asarray(value) * _volume(sim, p.radius[rows])
         return len(rows)
     if key == "charge":
-        raise ScriptError("set charge: pdps has no charges (atom_style charge is not supported)")
-    raise ScriptError(f"set mol needs molecule ids, which pdps does not read yet")
+        if not p.has("q"):
+            raise ScriptError(f"set charge needs charges (particle_style charge or full; this is "
+                              f"{sim.particle_style})")
+        p.q[rows] = _values(sim, values[0], key, selected)
+        return len(rows)
+    _molecules(sim, "set mol")
+    if values[0].startswith("v_"):
+        ids = np.asarray(_values(sim, values[0], key, selected))
+        if not (np.isfinite(ids).all() and (ids >= 0).all() and (ids <= limits.MAX_TAG).all()):
+            raise ScriptError(f"set mol: {values[0]} gives molecule ids outside 0..{limits.MAX_TAG}")
+        p.molecule[rows] = ids.astype(np.int64)        # LAMMPS truncates a variable's value too
+    else:
+        p.molecule[rows] = integer(values[0], "molecule id", low=0, high=limits.MAX_TAG)
+    return len(rows)
 
 
 def _fraction(x, seed, fraction):
@@ -193,22 +217,35 @@ def delete_atoms(sim, args):
         doomed, rest = _overlapping(sim, cutoff, args[2], args[3]), args[4:]
     else:
         raise ScriptError(f"delete_atoms {style} is not supported (supported: group, region, overlap)")
-    compress = True
+    compress, whole_molecules = True, False
     for key, value in zip(rest[::2], rest[1::2]):
         if key == "compress":
             compress = yes_no(value, "compress")
-        elif key in ("bond", "mol"):
-            raise ScriptError(f"delete_atoms {key} needs molecules, which pdps does not read yet")
+        elif key == "bond":
+            yes_no(value, "bond")          # pdps keeps no bonds: there are none to delete
+        elif key == "mol":
+            whole_molecules = yes_no(value, "mol")
         else:
             raise ScriptError(f"unknown delete_atoms keyword {key}; usage: {usage}")
     if len(rest) % 2:
         raise ScriptError(f"expected keyword/value pairs after the style; usage: {usage}")
+    if whole_molecules:
+        doomed = _whole_molecules(sim, doomed)
     deleted = int(sim.comm.sum(int(doomed.sum())))
     p.keep(_lammps_deletion_order(doomed))
     sim.groups.update(sim)
     if compress:
         _compress_ids(sim)
     sim.output.message(f"Deleted {deleted} atoms, new total = {int(sim.comm.sum(sim.particles.nlocal))}")
+
+
+def _whole_molecules(sim, doomed):
+    """LAMMPS's ``mol yes``: the other particles of every molecule a deleted particle belongs to go
+    too, on every rank; molecule id 0 is no molecule."""
+    molecule = _molecules(sim, "delete_atoms mol yes")
+    hit = np.unique(molecule[doomed & (molecule > 0)]).astype(np.float64).reshape(-1, 1)
+    everywhere = sim.comm.allgather_rows(hit)[:, 0].astype(np.int64)
+    return doomed | np.isin(molecule, everywhere)
 
 
 def _overlapping(sim, cutoff, group1, group2):
@@ -361,13 +398,18 @@ def write_data(sim, args):
     p = sim.particles
     n = p.nlocal
     sphere = sim.particle_style == "sphere"
-    columns = [p.tag[:n].astype(np.float64), p.type[:n].astype(np.float64)]
+    values = {"id": p.tag[:n], "type": p.type[:n], "x": p.x[:n, 0], "y": p.x[:n, 1], "z": p.x[:n, 2]}
     if sphere:
         volume = _volume(sim, p.radius[:n])
-        columns += [2.0 * p.radius[:n], np.where(volume > 0, p.rmass[:n] / np.where(volume > 0, volume, 1.0),
-                                                  p.rmass[:n])]
-    columns += [p.x[:n, 0], p.x[:n, 1], p.x[:n, 2], *(p.image[:n].T.astype(np.float64))]
-    atoms = sim.comm.gather_rows(np.column_stack(columns))
+        values["diameter"] = 2.0 * p.radius[:n]
+        values["density"] = np.where(volume > 0, p.rmass[:n] / np.where(volume > 0, volume, 1.0), p.rmass[:n])
+    for name in ("molecule", "q"):
+        if p.has(name):
+            values[name] = p.arrays[name][:n]
+    names = PARTICLE_STYLES[sim.particle_style][1]
+    whole = {"id", "type", "molecule"}
+    columns = [values[name].astype(np.float64) for name in names]
+    atoms = sim.comm.gather_rows(np.column_stack(columns + list(p.image[:n].T.astype(np.float64))))
     velocities = sim.comm.gather_rows(np.column_stack([p.tag[:n].astype(np.float64), p.v[:n]]))
     if not sim.comm.is_root:
         return
@@ -379,11 +421,11 @@ def write_data(sim, args):
     lines += [f"{lo!r} {hi!r} {a}lo {a}hi" for lo, hi, a in zip(box.lo.tolist(), box.hi.tolist(), "xyz")]
     if not sphere:
         lines += ["", "Masses", ""]
-        lines += [f"{t} {sim.type_mass[t]!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.type_mass[t])]
-    lines += ["", f"Atoms # {'sphere' if sphere else 'atomic'}", ""]
+        lines += [f"{t} {float(sim.type_mass[t])!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.type_mass[t])]
+    lines += ["", f"Atoms # {sim.particle_style}", ""]
     for row in atoms.tolist():
-        numbers = [f"{int(row[0])}", f"{int(row[1])}"] + [repr(v) for v in row[2:-3]] + [f"{int(v)}" for v in row[-3:]]
-        lines.append(" ".join(numbers))
+        numbers = [f"{int(v)}" if name in whole else repr(v) for name, v in zip(names, row)]
+        lines.append(" ".join(numbers + [f"{int(v)}" for v in row[-3:]]))
     lines += ["", "Velocities", ""]
     lines += [f"{int(row[0])} {row[1]!r} {row[2]!r} {row[3]!r}" for row in velocities.tolist()]
     path = sim.resolve(args[0])

@@ -226,7 +226,7 @@ def mass(sim, args):
 def group(sim, args):
     """PDPS's group (region and type definitions re-evaluated before each run) and LAMMPS's (static;
     pdps_core/state/groups.py)."""
-    usage = ("group ID STYLE ARGS (all, region RID, type T..., id I..., variable NAME, subtract G..., "
+    usage = ("group ID STYLE ARGS (all, region RID, type T..., id I..., molecule M..., variable NAME, subtract G..., "
              "union G..., intersect G..., empty, clear, delete)")
     if not args:
         raise ScriptError(f"expected a group id; usage: {usage}")
@@ -238,9 +238,9 @@ def group(sim, args):
     style = choice(rest[0], "group style", ("all", "region", "type", "id", "variable", "subtract", "union",
                                             "intersect", "empty", "clear", "delete", "molecule", "dynamic",
                                             "static", "include"))
-    if style in ("molecule", "dynamic", "include"):
-        raise ScriptError(f"group {style} is not supported (supported: region, type, id, variable, subtract, "
-                          "union, intersect, empty, clear, delete)")
+    if style in ("dynamic", "include"):
+        raise ScriptError(f"group {style} is not supported (supported: region, type, id, molecule, variable, "
+                          "subtract, union, intersect, empty, clear, delete)")
     if style == "static":
         count(rest[1:], 0, usage)
         return
@@ -285,8 +285,11 @@ def _members(sim, style, words, usage):
     if style == "region":
         count(words, 1, usage)
         return sim.region(words[0]).match(p.x[:n])
-    if style in ("type", "id"):
-        values = p.type[:n] if style == "type" else p.tag[:n]
+    if style in ("type", "id", "molecule"):
+        if style == "molecule" and not p.has("molecule"):
+            raise ScriptError(f"group molecule needs molecule ids (particle_style molecular, bond, angle or "
+                              f"full; this is {sim.particle_style})")
+        values = {"type": p.type, "id": p.tag, "molecule": p.arrays.get("molecule")}[style][:n]
         return _selected(values, words, style, usage)
     if style == "variable":
         count(words, 1, usage)
@@ -345,7 +348,7 @@ def read_data(sim, args):
     for t, value in data.masses.items():
         sim.type_mass[t] = value
     p = sim.particles
-    extra = {}
+    extra = dict(data.per_atom)
     if sim.particle_style == "sphere":
         extra = {"radius": 0.5 * data.diameter,
                  "rmass": _data_mass(sim, 0.5 * data.diameter, data.density)}
@@ -359,3 +362,7 @@ def read_data(sim, args):
     sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Read {len(data.tags)} particles from {args[0]}")
+    if data.skipped:
+        listed = ", ".join(f"{amount} {kind}" for kind, amount in data.skipped.items())
+        sim.warn(f"read_data {args[0]}: {listed} read past: pdps has no bond styles, so only "
+                           "the molecule ids take effect")

@@ -5,6 +5,7 @@ import numpy as np
 
 from ..errors import ScriptError
 from ..state import limits
+from ..state.particles import PARTICLE_STYLES
 from ..state.units import UNITS
 from . import command
 from .words import choice, count, integer, number, type_range, yes_no
@@ -68,7 +69,7 @@ def neighbor(sim, args):
 
 @command("neigh_modify", "neighbor_modify")
 def neigh_modify(sim, args):
-    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | none]"
+    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | molecule/intra G | molecule/inter G | none]"
     if not args:
         raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
     args = _exclusions(sim, list(args), usage)
@@ -100,6 +101,7 @@ def _exclusions(sim, args, usage):
         kind = args[k + 1] if k + 1 < len(args) else None
         if kind == "none":
             neighbors.excluded_type_pairs, neighbors.excluded_group_pairs = [], []
+            neighbors.excluded_molecules = []
             k += 2
         elif kind == "type":
             if len(args) < k + 4:
@@ -114,21 +116,26 @@ def _exclusions(sim, args, usage):
             neighbors.excluded_group_pairs.append((sim.require_group(args[k + 2]), sim.require_group(args[k + 3])))
             k += 4
         elif kind in ("molecule/intra", "molecule/inter"):
-            raise ScriptError(f"exclude {kind} needs molecule ids, which pdps does not read yet")
+            if len(args) < k + 3:
+                raise ScriptError(f"exclude {kind} needs a group; usage: {usage}")
+            if not sim.particles.has("molecule"):
+                raise ScriptError(f"exclude {kind} needs molecule ids (particle_style molecular, bond, "
+                                  f"angle or full; this is {sim.particle_style})")
+            neighbors.excluded_molecules.append((sim.require_group(args[k + 2]), kind.split("/")[1]))
+            k += 3
         else:
-            raise ScriptError(f"exclude takes type I J, group G1 G2 or none (got {kind}); usage: {usage}")
+            raise ScriptError(f"exclude takes type I J, group G1 G2, molecule/intra G, molecule/inter G or "
+                              f"none (got {kind}); usage: {usage}")
     return rest
 
 
 @command("particle_style", "atom_style")
 def particle_style(sim, args):
-    count(args, 1, "particle_style atomic|sphere")
+    count(args, 1, "particle_style " + "|".join(PARTICLE_STYLES))
     _before_box(sim, "particle_style")
-    style = choice(args[0], "particle style", ("atomic", "sphere"))
+    style = choice(args[0], "particle style", tuple(PARTICLE_STYLES))
     sim.particle_style = style
-    if style == "sphere":
-        for name in ("radius", "rmass", "omega", "torque"):
-            sim.particles.request(name)
+    sim.particles.request_all(PARTICLE_STYLES[style][0])
 
 
 @command("processors")

@@ -39,12 +39,15 @@ def bin_particles(x, nall, lo, binsize, nbins):
 
 @njit(cache=True)
 def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order, nbins, half, capacity,
-               excluded_types, excluded_groups):
+               excluded_types, excluded_groups, molecule, excluded_molecules):
     """Neighbors of each owned particle of the group (``mask & groupbit``) within
     cutneighsq[type_i, type_j]; particles outside the group have none. Pairs of excluded types
-    (``excluded_types[ti, tj]``) or of excluded groups (rows of two mask bits, either order) are left
-    out (neigh_modify exclude). -1 total on overflow."""
+    (``excluded_types[ti, tj]``), of excluded groups (rows of two mask bits, either order) or, for
+    rows (group bit, 1 for intra or 0 for inter) of ``excluded_molecules``, pairs of the group in the
+    same molecule (intra) or in different ones (inter) are left out (neigh_modify exclude).
+    -1 total on overflow."""
     screen = excluded_groups.shape[0] > 0
+    screen_molecules = excluded_molecules.shape[0] > 0
     offsets = np.zeros(nlocal + 1, dtype=np.int64)
     neighbors = np.empty(capacity, dtype=np.int64)
     k = 0
@@ -97,6 +100,16 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order,
                                 for g in range(excluded_groups.shape[0]):
                                     a, b = excluded_groups[g, 0], excluded_groups[g, 1]
                                     if ((mask[i] & a) and (mask[j] & b)) or ((mask[i] & b) and (mask[j] & a)):
+                                        left_out = True
+                                        break
+                                if left_out:
+                                    continue
+                            if screen_molecules:
+                                left_out = False
+                                for g in range(excluded_molecules.shape[0]):
+                                    bit = excluded_molecules[g, 0]
+                                    if (mask[i] & bit) and (mask[j] & bit) and \
+                                            (molecule[i] == molecule[j]) == (excluded_molecules[g, 1] == 1):
                                         left_out = True
                                         break
                                 if left_out:

@@ -34,6 +34,7 @@ from ..state import limits
 from .kernels import bin_particles, build_list, max_displacement_sq
 
 ONE_DEFAULT = 2000
+NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
 
 
 @dataclass
@@ -79,6 +80,7 @@ class Neighbor:
         self.comm_cutoff = 0.0          # comm_modify cutoff
         self.excluded_type_pairs = []   # neigh_modify exclude type I J
         self.excluded_group_pairs = []  # neigh_modify exclude group G1 G2 (group names)
+        self.excluded_molecules = []    # neigh_modify exclude molecule/intra|inter G: (group, "intra"|"inter")
         self._capacity = 0
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
@@ -249,12 +251,16 @@ class Neighbor:
         self._excluded_types = table
         self._excluded_groups = np.array([[groups.bit(a), groups.bit(b)] for a, b in self.excluded_group_pairs],
                                          dtype=np.uint32).reshape(-1, 2)
+        self._excluded_molecules = np.array([[groups.bit(g), kind == "intra"] for g, kind in self.excluded_molecules],
+                                            dtype=np.uint32).reshape(-1, 2)
 
     def _fill(self, nlist, p, binned, skin):
         cell, start, order, nbins = binned
         if getattr(self, "_excluded_types", None) is None or self._excluded_types.shape[0] != nlist.cutoff.shape[0]:
             self._excluded_types = np.zeros(nlist.cutoff.shape, dtype=np.bool_)
             self._excluded_groups = np.zeros((0, 2), dtype=np.uint32)
+            self._excluded_molecules = np.zeros((0, 2), dtype=np.uint32)
+        molecule = p.molecule if p.has("molecule") else NO_MOLECULES
         cutneighsq = (nlist.cutoff + skin) ** 2
         if cutneighsq.shape[0] != self.requests[0].cutoff.shape[0]:
             raise ScriptError("neighbor requests disagree on the number of types")
@@ -265,7 +271,8 @@ class Neighbor:
         while True:
             offsets, neighbors, total = build_list(
                 p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, cell, start,
-                order, nbins, nlist.half_list, capacity, self._excluded_types, self._excluded_groups)
+                order, nbins, nlist.half_list, capacity, self._excluded_types, self._excluded_groups,
+                molecule, self._excluded_molecules)
             if total >= 0:
                 break
             if capacity >= most:

@@ -94,11 +94,11 @@ class FormulaContext:
             if "radius" not in p.arrays:
                 raise ScriptError("radius needs particle radii (atom_style sphere)")
             return p.arrays["radius"][:n].astype(np.float64)
-        for optional in ("mol", "q"):
+        for optional, array in (("mol", "molecule"), ("q", "q")):
             if name == optional:
-                if optional not in p.arrays:
+                if array not in p.arrays:
                     raise ScriptError(f"{name}: the particles have no {'molecule ids' if name == 'mol' else 'charges'}")
-                return p.arrays[optional][:n].astype(np.float64)
+                return p.arrays[array][:n].astype(np.float64)
         raise ScriptError(f"unknown atom vector {name}")
 
     def atom_value(self, name, tag):

@@ -1,22 +1,33 @@
-"""Reading LAMMPS data files: the header, Masses, Atoms (atomic or sphere) and Velocities.
+"""Reading LAMMPS data files: the header, Masses, Atoms and Velocities.
 
-    Atoms # atomic:   id type x y z [ix iy iz]
-    Atoms # sphere:   id type diameter density x y z [ix iy iz]
-    Velocities:       id vx vy vz  (sphere: id vx vy vz wx wy wz; the angular part is ignored here)
+    Atoms # atomic:     id type x y z [ix iy iz]
+    Atoms # sphere:     id type diameter density x y z [ix iy iz]
+    Atoms # charge:     id type q x y z [ix iy iz]
+    Atoms # molecular:  id molecule type x y z [ix iy iz]   (bond and angle alike)
+    Atoms # full:       id molecule type q x y z [ix iy iz]
+    Velocities:         id vx vy vz  (sphere: id vx vy vz wx wy wz; the angular part is ignored here)
+
+For the styles with molecule ids, the header's bond, angle, dihedral and improper counts and types and
+the sections that list them (Bonds, Bond Coeffs, ...) are read past: pdps has no bond styles.
+``DataFile.skipped`` says how many of each were, so that read_data can warn.
 """
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..errors import ScriptError
 from . import limits
+from .particles import PARTICLE_STYLES
 from ..script.lexer import read_text
 
-COLUMNS = {"atomic": 5, "sphere": 7}
+COLUMNS = {style: columns for style, (_, columns) in PARTICLE_STYLES.items()}
 SECTIONS = ("Masses", "Atoms", "Velocities")
-IGNORED_COUNTS = ("bonds", "angles", "dihedrals", "impropers")
+TOPOLOGY = ("bonds", "angles", "dihedrals", "impropers")
+# sections of the topology pdps reads past (with a molecular style)
+SKIPPED_SECTIONS = ("Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
+                    "Dihedral Coeffs", "Improper Coeffs")
 
 
 @dataclass
@@ -32,6 +43,8 @@ class DataFile:
     diameter: np.ndarray
     density: np.ndarray
     velocities: np.ndarray | None
+    per_atom: dict = field(default_factory=dict)       # molecule, q: what the style's columns add
+    skipped: dict = field(default_factory=dict)        # "bonds": 12, ...: topology read past
 
 
 def read_data_file(path, particle_style):
@@ -43,7 +56,9 @@ def read_data_file(path, particle_style):
 
     natoms, ntypes = None, None
     lo, hi = np.zeros(3), np.ones(3)
-    masses, atoms, velocities = {}, [], {}
+    masses, atoms, velocities, skipped = {}, [], {}, {}
+    columns = COLUMNS[particle_style]
+    molecular = "molecule" in columns
     section, i = None, 1          # line 1 is a title
     while i < len(lines):
         number = i + 1
@@ -56,7 +71,14 @@ def read_data_file(path, particle_style):
         text = " ".join(words)          # tabs and repeated spaces separate words alike
         head = words[0]
         if head[0].isalpha():
-            # only section names start with a letter (LAMMPS's rule); Bonds, Pair Coeffs, ... are not read
+            # only section names start with a letter (LAMMPS's rule); Pair Coeffs, ... are not read
+            two = " ".join(words[:2])
+            if head in SKIPPED_SECTIONS or two in SKIPPED_SECTIONS:
+                if not molecular:
+                    fail(number, f"section {text} needs a particle_style with molecule ids (molecular, bond, "
+                                 f"angle or full), not {particle_style}")
+                section = "skipped"
+                continue
             if head not in SECTIONS:
                 fail(number, f"unsupported section {text} (sections read: {', '.join(SECTIONS)})")
             section = head
@@ -64,6 +86,8 @@ def read_data_file(path, particle_style):
             if head == "Atoms" and hint and hint.group(1) != particle_style:
                 fail(number, f"Atoms are '{hint.group(1)}' but particle_style is {particle_style}"
                              f" (set particle_style {hint.group(1)} before read_data)")
+            continue
+        if section == "skipped":
             continue
         if section is None:
             try:
@@ -78,9 +102,17 @@ def read_data_file(path, particle_style):
                 elif len(words) == 4 and words[2][1:] == "lo" and words[3][1:] == "hi":
                     d = "xyz".index(words[2][0])
                     lo[d], hi[d] = float(words[0]), float(words[1])
-                elif any(text.endswith(k) for k in IGNORED_COUNTS) or text.endswith("types"):
-                    if int(words[0]) != 0 and not text.endswith("atom types"):
-                        fail(number, f"molecular data is not supported: {text}")
+                elif molecular and words[1] == "extra" and text.endswith("per atom"):
+                    int(words[0])          # room LAMMPS reserves for bonds made later: nothing to do
+                elif any(text.endswith(k) for k in TOPOLOGY) or text.endswith("types"):
+                    amount = int(words[0])
+                    if amount != 0 and not molecular:
+                        fail(number, f"{text} need a particle_style with molecule ids (molecular, bond, "
+                                     f"angle or full), not {particle_style}")
+                    if amount < 0:
+                        fail(number, f"a count must be >= 0: {text}")
+                    if text.endswith(TOPOLOGY) and amount:
+                        skipped[words[-1]] = amount
                 elif len(words) == 6 and words[3:] == ["xy", "xz", "yz"]:
                     fail(number, "triclinic boxes are not supported")
                 else:
@@ -95,7 +127,7 @@ def read_data_file(path, particle_style):
                     fail(number, f"mass must be a finite number > 0 (got {words[1]})")
                 masses[int(words[0])] = (number, mass)
             elif section == "Atoms":
-                width = COLUMNS[particle_style]
+                width = len(columns)
                 if len(words) not in (width, width + 3):
                     fail(number, f"expected {width} or {width + 3} values per {particle_style} atom "
                                  f"(got {len(words)})")
@@ -127,23 +159,31 @@ def read_data_file(path, particle_style):
     images = np.zeros((n, 3), dtype=np.int32)
     diameter = np.ones(n)
     density = np.ones(n)
+    molecule = np.zeros(n, dtype=np.int64)
+    charge = np.zeros(n)
     seen = {}
+    at = {name: k for k, name in enumerate(columns)}
     for k, (number, words) in enumerate(atoms):
         try:
-            tag, kind = int(words[0]), int(words[1])
-            if particle_style == "sphere":
-                diameter[k], density[k] = float(words[2]), float(words[3])
-                coords = words[4:7]
-            else:
-                coords = words[2:5]
-            x[k] = [float(w) for w in coords]
-            image = [int(w) for w in words[-3:]] if len(words) == COLUMNS[particle_style] + 3 else [0, 0, 0]
+            tag, kind = int(words[at["id"]]), int(words[at["type"]])
+            if "diameter" in at:
+                diameter[k], density[k] = float(words[at["diameter"]]), float(words[at["density"]])
+            if "molecule" in at:
+                molecule[k] = int(words[at["molecule"]])
+            if "q" in at:
+                charge[k] = float(words[at["q"]])
+            x[k] = [float(words[at[axis]]) for axis in "xyz"]
+            image = [int(w) for w in words[-3:]] if len(words) == len(columns) + 3 else [0, 0, 0]
         except ValueError:
             fail(number, f"cannot read Atoms line: {' '.join(words)}")
+        if not 0 <= molecule[k] <= limits.MAX_TAG:
+            fail(number, f"molecule id must be from 0 to {limits.MAX_TAG} (got {words[at['molecule']]})")
+        if not np.isfinite(charge[k]):
+            fail(number, f"charge must be finite (got {words[at['q']]})")
         if not 1 <= tag <= limits.MAX_TAG:
             fail(number, f"atom id must be from 1 to {limits.MAX_TAG} (got {words[0]})")
         if not 1 <= kind <= ntypes:
-            fail(number, f"atom type {words[1]} is out of range 1..{ntypes}")
+            fail(number, f"atom type {words[at['type']]} is out of range 1..{ntypes}")
         if any(abs(m) > limits.MAX_IMAGE for m in image):
             fail(number, f"image flags must fit in 32 bits (got {' '.join(words[-3:])})")
         tags[k], types[k], images[k] = tag, kind, image
@@ -174,4 +214,5 @@ def read_data_file(path, particle_style):
             k = int(np.argmax(np.abs(turns)))
             fail(atoms[k][0], f"{axis} = {x[k, d]:g} is {abs(turns[k]):.3g} box lengths away: its image "
                               "flag would not fit in 32 bits")
-    return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v)
+    per_atom = {name: values for name, values in (("molecule", molecule), ("q", charge)) if name in at}
+    return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped)

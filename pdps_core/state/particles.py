@@ -2,7 +2,8 @@
 
 Every particle has ``x, v, f`` (float64, n x 3), ``tag`` (int64 global id, from 1), ``type`` (int32,
 from 1), ``mask`` (uint32 group bits) and ``image`` (int32, n x 3). Any other per-atom array, such as
-``radius``, ``rmass``, ``omega`` or ``torque``, exists only after a style has asked for it with
+``radius``, ``rmass``, ``omega``, ``torque``, ``molecule`` (int64 molecule id, 0 for none) or ``q``
+(charge), exists only after a style has asked for it with
 ``request``: a scene that needs no rotation never allocates ``omega``.
 """
 
@@ -37,6 +38,21 @@ KNOWN = {
     "rmass": Property("rmass", 1, np.float64, 1.0),
     "omega": Property("omega", 3, np.float64),
     "torque": Property("torque", 3, np.float64),
+    "molecule": Property("molecule", 1, np.int64),
+    "q": Property("q", 1, np.float64),
+}
+
+# The particle styles (LAMMPS's atom styles) pdps reads: the per-atom arrays each one adds to the core
+# ones, and the columns of its lines in a data file's Atoms section (image flags may follow). The bond,
+# angle and full styles read molecule ids; their bonds and angles are skipped, as pdps has no bond styles.
+PARTICLE_STYLES = {
+    "atomic": ((), ("id", "type", "x", "y", "z")),
+    "sphere": (("radius", "rmass", "omega", "torque"), ("id", "type", "diameter", "density", "x", "y", "z")),
+    "charge": (("q",), ("id", "type", "q", "x", "y", "z")),
+    "molecular": (("molecule",), ("id", "molecule", "type", "x", "y", "z")),
+    "bond": (("molecule",), ("id", "molecule", "type", "x", "y", "z")),
+    "angle": (("molecule",), ("id", "molecule", "type", "x", "y", "z")),
+    "full": (("molecule", "q"), ("id", "molecule", "type", "q", "x", "y", "z")),
 }
 
 

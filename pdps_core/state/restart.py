@@ -55,7 +55,7 @@ from ..styles import StyleArgs, registry
 from . import limits
 from .box import Box
 from .groups import Groups
-from .particles import CORE, Particles, Property
+from .particles import CORE, PARTICLE_STYLES, Particles, Property
 from .units import UNITS
 
 FORMAT = "pdps-restart"
@@ -389,7 +389,7 @@ def validate(header, arrays):
     _field(header, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
            "three booleans")
     ntypes = _field(header, "ntypes", int, lambda t: 1 <= t <= limits.MAX_TYPES, f"from 1 to {limits.MAX_TYPES}")
-    _field(header, "particle_style", str, lambda s: s in ("atomic", "sphere"), "atomic or sphere")
+    _field(header, "particle_style", str, lambda s: s in PARTICLE_STYLES, f"one of {', '.join(PARTICLE_STYLES)}")
     _field(header, "lattice", bool)
     _field(header, "step", int, lambda n: 0 <= n <= limits.MAX_STEP, f"from 0 to {limits.MAX_STEP}")
     _field(header, "time", number, None, "a finite number")
@@ -507,6 +507,9 @@ def restore(sim, header, arrays):
     sim.particle_style = header["particle_style"]
     sim.lattice = _lattice(header, arrays)
     sim.particles = _particles(header["particles"], arrays)
+    missing = [name for name in PARTICLE_STYLES[sim.particle_style][0] if not sim.particles.has(name)]
+    if missing:
+        raise ValueError(f"particle_style {sim.particle_style} needs the per-atom arrays {', '.join(missing)}")
     groups = Groups()
     groups.bits = {name: int(bit) for name, bit in header["groups"]["bits"].items()}
     groups.definitions = {name: tuple(tuple(w) if isinstance(w, list) else w for w in definition)

@@ -94,7 +94,58 @@ DATA_SCRIPTS = {
               "fix g all gravity 1.0 vector 0 0 -1\nfix 1 all nve/sphere\ntimestep 0.001\n"
               "thermo 5\nthermo_style custom step atoms ke press\n"
               "dump 1 all custom 5 dump.fuzz id type x y z radius\nrun 10\n",
+    "full": "atom_style full\nread_data data.fuzz\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
+            "group first molecule 1\nneigh_modify exclude molecule/intra all exclude molecule/inter first\n"
+            "fix 1 all nve\ntimestep 0.002\nthermo 5\nthermo_style custom step atoms pe ke press\n"
+            "dump 1 all custom 5 dump.fuzz id mol type q x y z\nrun 10\n",
 }
+MOLECULES = """three molecules, bonds and charges (atom_style full)
+
+6 atoms
+2 atom types
+4 bonds
+1 bond types
+1 angles
+1 angle types
+
+0 5 xlo xhi
+0 5 ylo yhi
+0 5 zlo zhi
+
+Masses
+
+1 1.0
+2 2.0
+
+Atoms # full
+
+1 1 1 0.5 1.0 1.0 1.0 0 0 0
+2 1 2 -0.5 2.1 1.0 1.0 0 0 0
+3 2 1 0.25 1.0 2.2 1.0 0 0 0
+4 2 2 -0.25 2.1 2.2 1.0 0 0 0
+5 3 1 0.0 3.2 3.3 4.4 0 0 -1
+6 3 1 0.0 4.3 3.3 4.4 0 0 -1
+
+Velocities
+
+1 0.1 0.0 0.0
+5 0.0 -0.2 0.3
+
+Bond Coeffs
+
+1 100.0 1.1
+
+Bonds
+
+1 1 1 2
+2 1 3 4
+3 1 5 6
+4 1 1 3
+
+Angles
+
+1 1 2 1 3
+"""
 SPHERES = """spheres in a box with a fixed floor
 
 6 atoms
@@ -147,6 +198,8 @@ def data_seeds(folder):
         seeds.append(Seed(name, {SCRIPT: DATA_SCRIPTS[style].encode(), DATA: path.read_bytes()},
                           target=DATA))
     seeds.append(Seed("spheres", {SCRIPT: DATA_SCRIPTS["sphere"].encode(), DATA: SPHERES.encode()},
+                      target=DATA))
+    seeds.append(Seed("molecules", {SCRIPT: DATA_SCRIPTS["full"].encode(), DATA: MOLECULES.encode()},
                       target=DATA))
     lammps = (SEEDS / "particles.data").read_bytes()           # image flags, comments, two types
     seeds.append(Seed("particles", {SCRIPT: DATA_SCRIPTS["lj"].encode(), DATA: lammps}, target=DATA))

@@ -4,8 +4,9 @@ Syntax::
 
     dump ID GROUP custom N FILE column...
 
-Columns: ``id type mass x y z xs ys zs xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
-omegax omegay omegaz tqx tqy tqz`` and ``step`` (the PDPS manual's: the timestep, on every row).
+Columns: ``id type mol q mass x y z xs ys zs xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
+omegax omegay omegaz tqx tqy tqz`` and ``step`` (``mol`` with the particle styles that have molecule
+ids, ``q`` with charge and full) (the PDPS manual's: the timestep, on every row).
 ``x y z`` are wrapped into the box, ``xs ys zs`` scaled to 0..1, ``xu yu zu`` unwrapped through
 periodic images.
 
@@ -43,8 +44,11 @@ VECTOR = {"x": ("x", 0), "y": ("x", 1), "z": ("x", 2), "vx": ("v", 0), "vy": ("v
           "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2), "ix": ("image", 0), "iy": ("image", 1),
           "iz": ("image", 2), "omegax": ("omega", 0), "omegay": ("omega", 1), "omegaz": ("omega", 2),
           "tqx": ("torque", 0), "tqy": ("torque", 1), "tqz": ("torque", 2)}
-SPECIAL = ("id", "type", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "radius", "diameter", "step")
-INTEGER = {"id", "type", "ix", "iy", "iz", "step"}
+SPECIAL = ("id", "type", "mol", "q", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "radius", "diameter", "step")
+INTEGER = {"id", "type", "mol", "ix", "iy", "iz", "step"}
+# columns that read a per-particle array only some particle styles have
+NEEDED = {"radius": ("radius", "sphere"), "diameter": ("radius", "sphere"),
+          "mol": ("molecule", "molecular, bond, angle or full"), "q": ("q", "charge or full")}
 REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 
 
@@ -71,10 +75,10 @@ class DumpCustom(TextDump):
     def __init__(self, sim, id, group, args):
         self.columns = tuple(args.columns)
         for column in self.columns:
-            needed = VECTOR.get(column, (None,))[0] or ("radius" if column in ("radius", "diameter") else None)
+            needed, styles = NEEDED.get(column, (VECTOR.get(column, (None,))[0], "sphere"))
             if needed and not sim.particles.has(needed):
                 raise ScriptError(f"dump column {column} needs per-particle {needed} "
-                                  "(particle_style sphere)")
+                                  f"(particle_style {styles})")
             if REFERENCE.match(column):
                 _reference(sim, column)
         super().__init__(sim, id, group, args)
@@ -101,6 +105,10 @@ class DumpCustom(TextDump):
                 value = p.tag[chosen]
             elif column == "type":
                 value = p.type[chosen]
+            elif column == "mol":
+                value = p.molecule[chosen]
+            elif column == "q":
+                value = p.q[chosen]
             elif column == "step":
                 value = np.full(len(chosen), sim.step)
             elif column == "mass":
