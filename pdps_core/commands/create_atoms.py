@@ -13,19 +13,34 @@ on a periodic box's upper face is the image of the one on its lower face, and is
 LAMMPS shifts both faces down by 1e-6 of the box length) and, for ``region``, inside the region (its
 ``side`` counted).
 
-``random`` draws uniform positions in the box (inside the region when one is given) from pdps's own
-generator: not LAMMPS's numbers (docs/lammps.md).
+``random N SEED REGION`` in the LAMMPS dialect places the particles LAMMPS (22 Jul 2025) places, on
+any number of ranks: its Park-Miller generator seeded with SEED and warmed up by 30 uniforms draws
+x, y, z (three uniforms per try, z then set to the box's middle in 2-d) in the box, narrowed to the
+region's extent when the region is an inside one; a try counts when the region matches it and, with
+``overlap D``, no particle (the existing ones, of every rank, and the ones placed so far) is closer
+than D (minimum image across periodic faces; D in lattice spacings with ``units lattice``, the
+default); each particle gets at most ``maxtry`` tries (default 1000), after which it is skipped and
+LAMMPS's ``WARNING: Only inserted M particles out of N`` follows. Every rank draws the same stream
+and all keep the same particles, so ids and positions do not depend on the rank count. (No EPSILON
+shift of the faces here: LAMMPS applies it to lattice sites only.) In the PDPS dialect ``random``
+keeps pdps's own generator (N particles, ``maxtry`` misses in a row per particle before an error).
 """
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
+from ..random_park import MAX_SEED, park_state, park_uniform
 from ..state import limits
 from . import command
 from .particles import _random_no_overlap, _sphere_values
 from .words import choice, integer, number, yes_no
 
 EPSILON = 1e-6      # LAMMPS's create_atoms: faces shifted by this fraction of the box length
+WARMUP_RANDOM = 30  # LAMMPS's create_atoms random: uniforms discarded after seeding
+MAXTRY = {"lammps": 1000, "pdps": 100}
+MAX_DRAWS = 20_000_000      # tries in all before create_atoms random stops instead of running on
+MAX_GRID_CELLS = 2 ** 21
 
 
 @command("create_atoms")
@@ -66,10 +81,16 @@ def create_atoms(sim, args):
         types = np.full(1, ptype, dtype=np.int64)
     else:
         n = integer(rest[0], "N", low=0, high=limits.MAX_CREATE)
-        seed = integer(rest[1], "seed", low=1)
         region = None if rest[2] == "NULL" else sim.region(rest[2])
-        x = _random_no_overlap(sim, n, region if region is not None else _WholeBox(sim), options["overlap"], seed,
-                               max_misses=options["maxtry"] * max(n, 1))
+        maxtry = options["maxtry"] or MAXTRY[sim.dialect.name]
+        if sim.dialect.name == "lammps":
+            seed = integer(rest[1], "seed", low=1, high=MAX_SEED)
+            overlap = options["overlap"] * (_lattice_scale(sim)[0] if options["units"] == "lattice" else 1.0)
+            x = lammps_random(sim, n, seed, region, overlap, maxtry)
+        else:
+            seed = integer(rest[1], "seed", low=1)
+            x = _random_no_overlap(sim, n, region if region is not None else _WholeBox(sim), options["overlap"],
+                                   seed, max_misses=maxtry * max(n, 1))
         types = np.full(len(x), ptype, dtype=np.int64)
     _add(sim, x, types)
 
@@ -88,7 +109,7 @@ class _WholeBox:
 
 
 def _options(words, usage, ntypes):
-    options = {"units": "lattice", "remap": False, "overlap": 0.0, "maxtry": 100, "basis": {}}
+    options = {"units": "lattice", "remap": False, "overlap": 0.0, "maxtry": None, "basis": {}}
     k = 0
     while k < len(words):
         key = words[k]
@@ -117,6 +138,179 @@ def _options(words, usage, ntypes):
             raise ScriptError(f"unknown create_atoms keyword {key}; usage: {usage}")
         k += 2
     return options
+
+
+def lammps_random(sim, n, seed, region, overlap, maxtry):
+    """The positions LAMMPS's create_atoms random creates (module docstring), in creation order."""
+    box = sim.box
+    lo, hi = box.lo.copy(), box.hi.copy()
+    zmid = lo[2] + 0.5 * (hi[2] - lo[2])
+    if region is not None and not region.side_out:
+        try:
+            rlo, rhi = region.bounds()
+            lo, hi = np.maximum(lo, rlo), np.minimum(hi, rhi)
+        except ScriptError:
+            pass        # an unbounded region: the box's extent, each try tested
+    if np.any(lo > hi):
+        raise ScriptError(f"region {region.id} does not overlap the box (LAMMPS: no overlap of box and region)")
+    state = park_state(seed)
+    for _ in range(WARMUP_RANDOM):
+        park_uniform(state)
+    flat = sim.dimension == 2
+    owned = np.ascontiguousarray(sim.particles.x[:sim.particles.nlocal])
+    existing = np.ascontiguousarray(sim.comm.allgather_rows(owned), dtype=np.float64).reshape(-1, 3)
+    check = overlap > 0.0
+    ncell = _grid_shape(box.length, overlap if check else 0.0, flat)
+    points = np.empty((len(existing) + n, 3))
+    link = np.full(len(existing) + n, -1, dtype=np.int64)
+    head = np.full(int(np.prod(ncell)), -1, dtype=np.int64)
+    periodic = np.asarray(box.periodic, dtype=np.bool_)
+    length = np.asarray(box.length, dtype=np.float64)
+    inserted = np.empty((n, 3))
+    created = np.zeros(n, dtype=np.bool_)
+    # atom being placed, its tries so far, particles inserted, points in the grid, draws in all
+    progress = np.zeros(5, dtype=np.int64)
+    for point in existing:
+        _grid_add(point, progress, points, link, head, box.lo, length, ncell)
+    span = hi - lo
+    batch = int(min(max(2 * n, 64), 1 << 16))
+    while progress[0] < n:
+        if progress[4] >= MAX_DRAWS:
+            raise ScriptError(f"random: {progress[2]} of {n} particles placed after {MAX_DRAWS} tries (maxtry "
+                              f"{maxtry} each); ask for fewer particles, a smaller overlap or a smaller maxtry")
+        candidates = _draw(state, batch, lo, span, zmid, flat)
+        usable = (np.ones(batch, dtype=np.bool_) if region is None
+                  else np.asarray(region.match(candidates), dtype=np.bool_))
+        _place(candidates, usable, progress, n, maxtry, overlap * overlap, check, box.lo, box.hi, periodic, length,
+               ncell, head, link, points, inserted, created)
+        batch = min(2 * batch, 1 << 16)
+    if progress[2] < n:
+        sim.warn(f"Only inserted {progress[2]} particles out of {n}")
+    return inserted[:progress[2]][created[:progress[2]]]
+
+
+def _grid_shape(length, reach, flat):
+    """Cells per axis for the overlap test: at least ``reach`` wide, so a particle closer than reach
+    to a try is in the try's cell or a neighbouring one."""
+    if reach <= 0.0:
+        return np.ones(3, dtype=np.int64)
+    ncell = np.array([max(1, int(min(L / reach, MAX_GRID_CELLS))) for L in length], dtype=np.int64)
+    if flat:
+        ncell[2] = 1
+    while np.prod(ncell) > MAX_GRID_CELLS:
+        ncell[np.argmax(ncell)] //= 2
+    return ncell
+
+
+@njit(cache=True)
+def _draw(state, count, lo, span, zmid, flat):
+    out = np.empty((count, 3))
+    for k in range(count):
+        for d in range(3):
+            out[k, d] = lo[d] + park_uniform(state) * span[d]
+        if flat:
+            out[k, 2] = zmid
+    return out
+
+
+@njit(cache=True)
+def _cell(point, box_lo, length, ncell):
+    index = 0
+    for d in range(3):
+        c = int(np.floor((point[d] - box_lo[d]) / length[d] * ncell[d]))
+        c = min(max(c, 0), ncell[d] - 1)
+        index = index * ncell[d] + c
+    return index
+
+
+@njit(cache=True)
+def _grid_add(point, progress, points, link, head, box_lo, length, ncell):
+    k = progress[3]
+    points[k] = point
+    cell = _cell(point, box_lo, length, ncell)
+    link[k] = head[cell]
+    head[cell] = k
+    progress[3] = k + 1
+
+
+@njit(cache=True)
+def _minimum_image(delta, periodic, length):
+    # LAMMPS's Domain::minimum_image for an orthogonal box
+    if periodic:
+        while abs(delta) > 0.5 * length:
+            if delta < 0.0:
+                delta += length
+            else:
+                delta -= length
+    return delta
+
+
+@njit(cache=True)
+def _cell_range(x, box_lo, periodic, length, ncell):
+    """The first and last cell (unwrapped) around x along one axis, each cell once: a periodic axis of
+    one or two cells wraps onto itself."""
+    home = min(max(int(np.floor((x - box_lo) / length * ncell)), 0), ncell - 1)
+    if periodic:
+        if ncell == 1:
+            return home, home
+        if ncell == 2:
+            return home - 1, home
+        return home - 1, home + 1
+    return max(home - 1, 0), min(home + 1, ncell - 1)
+
+
+@njit(cache=True)
+def _wrap(c, n):
+    if c < 0:
+        return c + n
+    if c >= n:
+        return c - n
+    return c
+
+
+@njit(cache=True)
+def _place(candidates, usable, progress, n, maxtry, odist_sq, check, box_lo, box_hi, periodic, length, ncell, head,
+           link, points, inserted, created):
+    """Walk the tries in the order drawn, as LAMMPS's add_random: each particle takes tries until one
+    passes (region, overlap) or maxtry have failed; an inserted particle outside [lo, hi) (a try
+    rounded onto the upper face) is counted but created on no rank."""
+    for k in range(len(candidates)):
+        if progress[0] >= n:
+            return
+        progress[1] += 1
+        progress[4] += 1
+        ok = usable[k]
+        if ok and check:
+            # LAMMPS's overlap test: a point at a minimum-image distance below the overlap distance
+            px, py, pz = candidates[k, 0], candidates[k, 1], candidates[k, 2]
+            x0, x1 = _cell_range(px, box_lo[0], periodic[0], length[0], ncell[0])
+            y0, y1 = _cell_range(py, box_lo[1], periodic[1], length[1], ncell[1])
+            z0, z1 = _cell_range(pz, box_lo[2], periodic[2], length[2], ncell[2])
+            for cx in range(x0, x1 + 1):
+                for cy in range(y0, y1 + 1):
+                    for cz in range(z0, z1 + 1):
+                        cell = (_wrap(cx, ncell[0]) * ncell[1] + _wrap(cy, ncell[1])) * ncell[2] + _wrap(cz, ncell[2])
+                        j = head[cell]
+                        while ok and j >= 0:
+                            dx = _minimum_image(px - points[j, 0], periodic[0], length[0])
+                            dy = _minimum_image(py - points[j, 1], periodic[1], length[1])
+                            dz = _minimum_image(pz - points[j, 2], periodic[2], length[2])
+                            ok = dx * dx + dy * dy + dz * dz >= odist_sq
+                            j = link[j]
+        if ok:
+            m = progress[2]
+            inside = True
+            for d in range(3):
+                inserted[m, d] = candidates[k, d]
+                if candidates[k, d] < box_lo[d] or candidates[k, d] >= box_hi[d]:
+                    inside = False
+            created[m] = inside
+            if inside:
+                _grid_add(inserted[m], progress, points, link, head, box_lo, length, ncell)
+            progress[2] = m + 1
+        if ok or progress[1] >= maxtry:
+            progress[0] += 1
+            progress[1] = 0
 
 
 def _lattice_scale(sim):

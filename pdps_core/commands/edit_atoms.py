@@ -18,17 +18,21 @@ particle moves into each deleted one's slot), so a serial script gets LAMMPS's i
 order and deletes a G1 particle when a G2 particle closer than CUTOFF has not been deleted already
 (LAMMPS's rule, which for a serial LAMMPS run goes through its particles in the order they were
 made). ``displace_atoms`` distances are in lattice
-spacings by default; particles are wrapped back into a periodic box; ``random`` uses pdps's own
-random numbers, not LAMMPS's. ``write_data`` writes what read_data reads back (Masses, Atoms with
+spacings by default; particles are wrapped back into a periodic box as LAMMPS's Domain::remap
+wraps them; ``random`` draws, in the LAMMPS dialect, LAMMPS's numbers (a Park-Miller stream seeded
+from SEED and each particle's position: the same particles move by the same amounts), in the PDPS
+dialect pdps's counter-based ones. ``write_data`` writes what read_data reads back (Masses, Atoms with
 image flags, Velocities; ``atom_style sphere``'s diameter and density), not the pair coefficients.
 """
 
 import math
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
 from ..random import particle_uniforms
+from ..random_park import park_reset_coord, park_uniform
 from ..state import limits
 from ..state.particles import PARTICLE_STYLES
 from . import command
@@ -303,6 +307,9 @@ def _compress_ids(sim):
 
 
 # ---- displace_atoms ------------------------------------------------------------------------------------
+MAX_PERIODS = 1000      # remap: box lengths walked one at a time, as LAMMPS, before jumping instead
+
+
 @command("displace_atoms")
 def displace_atoms(sim, args):
     usage = ("displace_atoms G move DX DY DZ | ramp DDIM DLO DHI DIM CLO CHI | random DX DY DZ SEED | "
@@ -326,7 +333,8 @@ def displace_atoms(sim, args):
     scale = sim.lattice.spacing if (units == "lattice" and sim.lattice is not None) else np.ones(3)
     p = sim.particles
     n = p.nlocal
-    x = p.x[:n]
+    x = p.x[:n].copy()
+    image = p.image[:n].astype(np.int64)
     rows = np.flatnonzero(chosen)
     if style == "move":
         shift = np.array([_values(sim, w, f"d{a}", chosen) if w.startswith("v_") else number(w, f"d{a}")
@@ -344,10 +352,14 @@ def displace_atoms(sim, args):
         x[rows, ddim] += dlo + fraction * (dhi - dlo)
     elif style == "random":
         amplitude = np.array([number(w, f"d{a}", low=0.0) for a, w in zip("xyz", words[:3])]) * scale
-        seed = integer(words[3], "seed", low=1)
-        for k in rows:
-            u0, u1, u2, _ = particle_uniforms(seed, sim.step, int(p.tag[k]), 3)
-            x[k] += amplitude * (2.0 * np.array([u0, u1, u2]) - 1.0)
+        if sim.dialect.name == "lammps":
+            seed = integer(words[3], "seed", low=1, high=2 ** 31 - 1)
+            _park_displace(x, rows, amplitude, seed)
+        else:
+            seed = integer(words[3], "seed", low=1)
+            for k in rows:
+                u0, u1, u2, _ = particle_uniforms(seed, sim.step, int(p.tag[k]), 3)
+                x[k] += amplitude * (2.0 * np.array([u0, u1, u2]) - 1.0)
     else:
         point = np.array([number(w, "P") for w in words[:3]]) * scale
         axis = np.array([number(w, "R") for w in words[3:6]])
@@ -356,22 +368,64 @@ def displace_atoms(sim, args):
             raise ScriptError("the rotation axis must not be zero")
         axis /= length
         theta = math.radians(number(words[6], "theta"))
-        x[rows] = _rotate(x[rows] + p.image[rows] * sim.box.length, point, axis, theta)
-        p.image[rows] = 0
+        x[rows] = _rotate(x[rows] + image[rows] * sim.box.length, point, axis, theta)
+        image[rows] = 0
     if sim.dimension == 2:
         x[:, 2] = 0.0
-    if not np.isfinite(x).all():
+    # every rank agrees before anything changes: an error leaves the particles where they were
+    if sim.comm.sum(int(not np.isfinite(x).all())):
         raise ScriptError("displace_atoms gives non-finite positions")
     box = sim.box
-    for d in range(3):
-        if box.periodic[d]:
-            wrap = np.floor((x[:, d] - box.lo[d]) / box.length[d]).astype(np.int64)
-            x[:, d] -= wrap * box.length[d]
-            p.image[:n, d] += wrap.astype(p.image.dtype)
-    if not box.inside(x).all():
+    shifts = np.zeros((n, 3), dtype=np.int64)
+    _remap(x, shifts, box.lo, box.hi, np.asarray(box.periodic, dtype=np.bool_))
+    image += shifts
+    if sim.comm.sum(int(np.abs(image).max(initial=0) > limits.MAX_IMAGE)):
+        raise ScriptError(f"displace_atoms moves particles more than {limits.MAX_IMAGE} box lengths")
+    if sim.comm.sum(int(not box.inside(x).all())):
         raise ScriptError("displace_atoms moves particles outside a non-periodic box")
-    sim.comm.distribute(p, box)
+    p.x[:n] = x
+    p.image[:n] = image
+    sim.comm.exchange(p, box, sim.step)      # particles that crossed into another rank's sub-domain move
     sim.groups.update(sim)
+
+
+@njit(cache=True)
+def _park_displace(x, rows, amplitude, seed):
+    """LAMMPS's displace_atoms random: a Park-Miller stream seeded from the seed and the particle's
+    position, three uniforms u, each coordinate moved by d 2 (u - 1/2) (so the same particles move
+    by the same amounts on any number of ranks)."""
+    state = np.zeros(3)
+    coord = np.empty(3)
+    for k in rows:
+        for d in range(3):
+            coord[d] = x[k, d]
+        park_reset_coord(state, seed, coord)
+        for d in range(3):
+            x[k, d] += amplitude[d] * 2.0 * (park_uniform(state) - 0.5)
+
+
+@njit(cache=True)
+def _remap(x, shifts, lo, hi, periodic):
+    """LAMMPS's Domain::remap: across each periodic axis add or subtract the box length until
+    lo <= x < hi, counting image shifts, then no lower than lo (x - length can round below it).
+    A position more than MAX_PERIODS lengths away jumps most of the way first instead of looping."""
+    for i in range(len(x)):
+        for d in range(3):
+            if not periodic[d]:
+                continue
+            length = hi[d] - lo[d]
+            c = x[i, d]
+            if abs(c - lo[d]) > MAX_PERIODS * length:
+                jump = min(max(np.floor((c - lo[d]) / length), -2.0 ** 62), 2.0 ** 62)
+                c = lo[d] + np.mod(c - lo[d], length)
+                shifts[i, d] += np.int64(jump)
+            while c < lo[d]:
+                c += length
+                shifts[i, d] -= 1
+            while c >= hi[d]:
+                c -= length
+                shifts[i, d] += 1
+            x[i, d] = max(c, lo[d])
 
 
 def _rotate(x, point, axis, theta):
