@@ -117,9 +117,11 @@ class Output:
         t0 = time.perf_counter()
         wrote = False
         for dump in self.dumps.values():
-            # a run starting where the last one ended has written this frame already (LAMMPS)
-            due = step % dump.every == 0 or (dump.first and step == self.sim.run_first_step)
-            if due and getattr(dump, "last_step", None) != step:
+            # a run starting where the last one ended has written this frame already; first yes
+            # adds only the first step after the dump command, when the dump has written nothing (LAMMPS)
+            last_step = getattr(dump, "last_step", None)
+            due = step % dump.every == 0 or (dump.first and step == self.sim.run_first_step and last_step is None)
+            if due and last_step != step:
                 dump.write(self.sim)
                 dump.last_step = step
                 wrote = True
