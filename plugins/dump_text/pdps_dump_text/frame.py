@@ -128,8 +128,8 @@ class TextDump(Dump):
         formats = self._formats(formats)
         header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ATOMS\n{len(table)}\n",
                   f"ITEM: BOX BOUNDS {box.bounds_label()}\n"]
-        # shortest repr that reads back to the same double (LAMMPS prints 17 digits, %-1.16e)
-        header += [f"{lo!r} {hi!r}\n" for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
+        # LAMMPS's 17 digits: the same text, and the same double read back
+        header += ["%-1.16e %-1.16e\n" % (lo, hi) for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
         header.append(f"ITEM: ATOMS {' '.join(self.columns)}\n")
         rows = ""
         if len(table):
