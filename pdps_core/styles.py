@@ -626,6 +626,11 @@ class Region(Style):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""
         raise ScriptError(f"region {self.id} ({self.name}) has no extent to make a box from")
 
+    def extent(self):
+        """(lo, hi) like ``bounds``, but an unbounded side (INF) is a huge number instead of an error:
+        LAMMPS's extent, to which create_atoms random narrows its tries."""
+        return self.bounds()
+
     def surface_contacts(self, x, reach):
         """Where the region's surface is within ``reach`` of the points ``x`` (n x 3), for walls:
         (indices of the points, their distances to the surface, unit normals pointing from the

@@ -142,6 +142,9 @@ class RegionBlock(Region):
     def bounds(self):
         if np.any(np.abs(self.lo) >= HUGE) or np.any(np.abs(self.hi) >= HUGE):
             raise ScriptError(f"region {self.id} is unbounded (INF) and cannot define a box")
+        return self.extent()
+
+    def extent(self):
         return self.lo.copy(), self.hi.copy()
 
     def surface_contacts(self, x, reach):

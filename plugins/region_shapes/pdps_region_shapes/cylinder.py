@@ -86,6 +86,9 @@ class RegionCylinder(Region):
     def bounds(self):
         if abs(self.lo) >= HUGE or abs(self.hi) >= HUGE:
             raise ScriptError(f"region {self.id} is unbounded (INF) and cannot define a box")
+        return self.extent()
+
+    def extent(self):
         lo, hi = np.empty(3), np.empty(3)
         for k, d in enumerate(self.across):
             lo[d], hi[d] = self.c[k] - self.radius, self.c[k] + self.radius

@@ -36,12 +36,19 @@ class _Combined(Region):
         self.parts = [sim.region(name) for name in args.regions]
 
     def bounds(self):
+        return self._combined("bounds")
+
+    def extent(self):
+        return self._combined("extent")
+
+    def _combined(self, method):
+        # LAMMPS's rule: a union has an extent when all its regions have one, an intersection when any has
         boxes = []
         for part in self.parts:
             if part.side_out:
                 continue
             try:
-                boxes.append(part.bounds())
+                boxes.append(getattr(part, method)())
             except ScriptError:
                 continue
         if not boxes or (self.name == "union" and len(boxes) < len(self.parts)):
