@@ -9,6 +9,8 @@ scenes: three seeds in a sphere region and one in the whole box (region NULL); a
 the whole box with ``overlap`` (the second command's particles kept off the first's); more
 particles than fit, so that ``maxtry`` runs out and LAMMPS warns ``Only inserted M particles out of
 N``; a 2-d disk cut by a fixed face, then the whole box, with an overlap across the periodic one;
+regions with INF sides (a block, a cylinder, their union and intersection: tries narrowed to their
+finite sides) and an outside one (tried in the whole box);
 and displace_atoms random on an fcc lattice, in lattice units and in box units, far enough to cross
 periodic faces.
 For each NAME, LAMMPS's data file goes to tests/data/lammps/random_atoms/NAME.data and its
@@ -69,6 +71,22 @@ create_box 1 box
 region disk cylinder z 3 8 4 -0.5 0.5
 create_atoms 1 random 120 2024 disk overlap 0.8
 create_atoms 1 random 40 77 NULL overlap 0.8
+mass * 1.0
+write_data out.data
+""",
+    "unbounded": """units lj
+atom_style atomic
+region box block 0 10 0 8 0 6 units box
+create_box 2 box
+region slab block INF INF 2 5 INF INF units box
+create_atoms 1 random 100 1111 slab
+region rod cylinder z 5 4 1.5 INF INF units box
+region both union 2 slab rod
+create_atoms 2 random 100 2222 both overlap 0.4 units box
+region corner intersect 2 slab rod
+create_atoms 1 random 30 3333 corner
+region hole sphere 5 4 3 3 side out units box
+create_atoms 2 random 30 4444 hole
 mass * 1.0
 write_data out.data
 """,

@@ -147,10 +147,10 @@ def lammps_random(sim, n, seed, region, overlap, maxtry):
     zmid = lo[2] + 0.5 * (hi[2] - lo[2])
     if region is not None and not region.side_out:
         try:
-            rlo, rhi = region.bounds()
+            rlo, rhi = region.extent()
             lo, hi = np.maximum(lo, rlo), np.minimum(hi, rhi)
         except ScriptError:
-            pass        # an unbounded region: the box's extent, each try tested
+            pass        # a region with no extent (a plane, a union with an outside part): the whole box
     if np.any(lo > hi):
         raise ScriptError(f"region {region.id} does not overlap the box (LAMMPS: no overlap of box and region)")
     state = park_state(seed)
