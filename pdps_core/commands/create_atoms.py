@@ -22,7 +22,10 @@ than D (minimum image across periodic faces; D in lattice spacings with ``units 
 default); each particle gets at most ``maxtry`` tries (default 1000), after which it is skipped and
 LAMMPS's ``WARNING: Only inserted M particles out of N`` follows. Every rank draws the same stream
 and all keep the same particles, so ids and positions do not depend on the rank count. (No EPSILON
-shift of the faces here: LAMMPS applies it to lattice sites only.) In the PDPS dialect ``random``
+shift of the faces here: LAMMPS applies it to lattice sites only.) The overlap test looks only at
+the cells (at least D wide) around a try, which finds every particle LAMMPS's loop over all would.
+After ``MAX_DRAWS`` tries in all pdps stops with an error where LAMMPS would run on (a region too
+full for N particles and a huge maxtry). In the PDPS dialect ``random``
 keeps pdps's own generator (N particles, ``maxtry`` misses in a row per particle before an error).
 """
 
@@ -40,7 +43,7 @@ EPSILON = 1e-6      # LAMMPS's create_atoms: faces shifted by this fraction of t
 WARMUP_RANDOM = 30  # LAMMPS's create_atoms random: uniforms discarded after seeding
 MAXTRY = {"lammps": 1000, "pdps": 100}
 MAX_DRAWS = 20_000_000      # tries in all before create_atoms random stops instead of running on
-MAX_GRID_CELLS = 2 ** 21
+MAX_GRID_CELLS = 2 ** 21    # overlap test: wider cells beyond this many (still correct, only slower)
 
 
 @command("create_atoms")
