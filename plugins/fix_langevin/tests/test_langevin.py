@@ -100,8 +100,9 @@ def test_metal_units_thermostat_to_the_target():
     assert abs(mean - 300.0) < max(3 * error, 6.0), (mean, error)
 
 
-def test_scale_divides_the_damping_time_per_type():
-    """At T = 0 the thermostat is pure friction: F = -m v / (damp / ratio)."""
+def test_scale_multiplies_the_damping_time_per_type():
+    """At T = 0 the thermostat is pure friction: F = -m v / (damp * ratio) (LAMMPS's scale: a ratio of
+    4 makes the relaxation four times slower)."""
     import numpy as np
     from pdps_core.api import Simulation
     sim = Simulation(screen=False, log=None)
@@ -109,7 +110,7 @@ def test_scale_divides_the_damping_time_per_type():
                 "create_particle 1 single 2 2 2\ncreate_particle 2 single 6 6 6\nvelocity all set 0.5 0 0\n"
                 "fix 1 all langevin 0 0 0.4 9 scale 2 4.0\nrun 0")
     order = np.argsort(sim.tag)
-    np.testing.assert_allclose(sim.f[order, 0], [-1.0 * 0.5 / 0.4, -2.0 * 0.5 / (0.4 / 4.0)], rtol=1e-14)
+    np.testing.assert_allclose(sim.f[order, 0], [-1.0 * 0.5 / 0.4, -2.0 * 0.5 / (0.4 * 4.0)], rtol=1e-14)
 
 
 def test_zero_yes_adds_no_net_momentum():
@@ -129,5 +130,6 @@ def test_langevin_keywords_pdps_refuses():
     from pdps_core.api import ScriptError, Simulation
     sim = Simulation(screen=False, log=None)
     sim.command("region box block 0 10 0 10 0 10\ncreate_box 1 box\nmass 1 1.0")
-    with _pytest.raises(ScriptError, match="fix langevin keyword tally is not supported"):
-        sim.command("fix 1 all langevin 1 1 1 5 tally yes")
+    with _pytest.raises(ScriptError, match="angmom thermostats the angular momentum of aspherical"):
+        sim.command("fix 1 all langevin 1 1 1 5 angmom 3.333")
+    sim.command("fix 1 all langevin 1 1 1 5 angmom no")
