@@ -135,3 +135,22 @@ def test_bad_random_input_is_one_line(line, message):
     with pytest.raises(ScriptError) as error:
         sim.command(line)
     assert str(error.value).endswith(message)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("displace_atoms all random 0.3 0.3 0.3 555", "a 2-d system's particles cannot be displaced in z (dz = 0.3)"),
+    ("displace_atoms all ramp z 0 1 x 0 4", "a 2-d system's particles cannot be displaced in z (ramp z)"),
+])
+def test_a_2d_system_is_not_displaced_in_z(line, message):
+    # LAMMPS: "Must not displace atoms in z-direction with 2d system"; with dz 0 it moves them (as in the
+    # disk_2d scene)
+    sim = Simulation(dialect="lammps", screen=False, log=None)
+    sim.command("units lj\ndimension 2\natom_style atomic\nlattice sq 0.8\nregion box block 0 4 0 4 -0.5 0.5\n"
+                "create_box 1 box\ncreate_atoms 1 box\nmass 1 1.0")
+    before = sim.x.copy()
+    with pytest.raises(ScriptError) as error:
+        sim.command(line)
+    assert str(error.value).endswith(message)
+    assert np.array_equal(sim.x, before)
+    sim.command("displace_atoms all random 0.3 0.3 0 555")
+    assert np.all(sim.x[:, 2] == 0.0) and not np.array_equal(sim.x, before)

@@ -8,7 +8,8 @@ Each script of SCRIPTS, run as it is by both programs, ends with ``write_data ou
 scenes: three seeds in a sphere region and one in the whole box (region NULL); a block region and
 the whole box with ``overlap`` (the second command's particles kept off the first's); more
 particles than fit, so that ``maxtry`` runs out and LAMMPS warns ``Only inserted M particles out of
-N``; a 2-d disk cut by a fixed face, then the whole box, with an overlap across the periodic one;
+N``; a 2-d disk cut by a fixed face, then the whole box, with an overlap across the periodic one, then
+displaced at random along x (across the periodic face; y is fixed);
 regions with INF sides (a block, a cylinder, their union and intersection: tries narrowed to their
 finite sides) and an outside one (tried in the whole box);
 and displace_atoms random on an fcc lattice, in lattice units and in box units, far enough to cross
@@ -72,6 +73,7 @@ region disk cylinder z 3 8 4 -0.5 0.5
 create_atoms 1 random 120 2024 disk overlap 0.8
 create_atoms 1 random 40 77 NULL overlap 0.8
 mass * 1.0
+displace_atoms all random 0.3 0 0 555
 write_data out.data
 """,
     "unbounded": """units lj

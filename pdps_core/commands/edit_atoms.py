@@ -343,6 +343,8 @@ def displace_atoms(sim, args):
             x[rows, d] += np.asarray(shift[d], dtype=np.float64) * scale[d]
     elif style == "ramp":
         ddim = "xyz".index(choice(words[0], "ramp dimension", ("x", "y", "z")))
+        if ddim == 2 and sim.dimension == 2:
+            raise ScriptError("a 2-d system's particles cannot be displaced in z (ramp z)")
         dlo, dhi = number(words[1], "dlo") * scale[ddim], number(words[2], "dhi") * scale[ddim]
         cdim = "xyz".index(choice(words[3], "coordinate dimension", ("x", "y", "z")))
         clo, chi = number(words[4], "clo") * scale[cdim], number(words[5], "chi") * scale[cdim]
@@ -352,6 +354,8 @@ def displace_atoms(sim, args):
         x[rows, ddim] += dlo + fraction * (dhi - dlo)
     elif style == "random":
         amplitude = np.array([number(w, f"d{a}", low=0.0) for a, w in zip("xyz", words[:3])]) * scale
+        if amplitude[2] != 0.0 and sim.dimension == 2:
+            raise ScriptError(f"a 2-d system's particles cannot be displaced in z (dz = {words[2]})")
         if sim.dialect.name == "lammps":
             seed = integer(words[3], "seed", low=1, high=2 ** 31 - 1)
             _park_displace(x, rows, amplitude, seed)
