@@ -61,6 +61,28 @@ thermo_modify format float %.15g
 run 0
 """
 
+# At T = 0 the thermostat is deterministic (friction, GJF's scaling, the tally): thermo to 15 digits
+EXACT = """units lj
+atom_style atomic
+lattice fcc 0.8
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.5 4928 dist gaussian
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0
+timestep 0.005
+fix t all langevin 0.0 0.0 0.5 5 OPTIONS
+fix 1 all nve
+thermo_style custom step temp pe etotal f_t
+thermo_modify format float %.15g norm no
+thermo 25
+run 100
+"""
+EXACT_CASES = {"exact_tally": "tally yes", "exact_vhalf": "gjf vhalf tally yes",
+               "exact_vfull": "gjf vfull tally yes", "exact_vhalf_zero": "gjf vhalf zero yes"}
+
 
 def script(name, seed, options="", steps=20000, tstart=1.0):
     text = (DATA / name).read_text()
@@ -93,6 +115,9 @@ def main(lmp):
     lines = []
     log = run_lammps(lmp, FRICTION, label="friction")
     lines.append("friction\tvalues\t" + "\t".join(f"{float(w):.15g}" for w in thermo_lines(log)[0][1:]))
+    for case, options in EXACT_CASES.items():
+        for words in thermo_lines(run_lammps(lmp, EXACT.replace("OPTIONS", options), label=case)):
+            lines.append(f"{case}\tthermo\t" + "\t".join(words))
     for case, options in (("gjf_no", ""), ("gjf_vhalf", "gjf vhalf"), ("gjf_vfull", "gjf vfull")):
         rows = production(run_lammps(lmp, script("in.harmonic", 5807, options), label=case))
         rows = rows[1:]                          # the run's first line repeats the equilibration's last

@@ -15,12 +15,15 @@ from pdps_core.testing import thermo_csv
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from langevin_options import FRICTION, block_mean, script  # noqa: E402
+from langevin_options import EXACT, EXACT_CASES, FRICTION, block_mean, script  # noqa: E402
 
-REFERENCE = {}
+REFERENCE, THERMO = {}, {}
 for _line in (DATA / "langevin_options.txt").read_text().splitlines():
     _case, _quantity, *_values = _line.split("\t")
-    REFERENCE[(_case, _quantity)] = [float(v) for v in _values]
+    if _quantity == "thermo":
+        THERMO.setdefault(_case, []).append([float(v) for v in _values])
+    else:
+        REFERENCE[(_case, _quantity)] = [float(v) for v in _values]
 
 
 def lammps(text, log=None):
@@ -77,6 +80,19 @@ def test_spheres_rotate_and_move_at_the_target_as_in_lammps(tmp_path):
     agree(rotational, (1.2, 0.0), "rotational temperature vs the target")
     agree(translational, REFERENCE[("omega", "temp")], "translational temperature vs LAMMPS")
     agree(rotational, REFERENCE[("omega", "rotational_temp")], "rotational temperature vs LAMMPS")
+
+
+@pytest.mark.parametrize("case", list(EXACT_CASES))
+def test_friction_alone_gives_lammps_thermo(tmp_path, case):
+    """At T = 0 nothing is random: a 256-atom LJ crystal melting while friction (damp 0.5) drains it,
+    with tally yes, gjf vhalf|vfull with tally (GJF's scaled forces, its velocities, LAMMPS's tally of
+    them, which starts a gjf run at dt P_0 rather than 0) and gjf with zero yes: temp, pe, etotal and
+    f_t every 25 of 100 steps as LAMMPS prints them, to 1e-9."""
+    log = tmp_path / "log.exact"
+    lammps(EXACT.replace("OPTIONS", EXACT_CASES[case]), log=log).close()
+    columns = thermo_csv(f"{log}.csv")
+    mine = np.column_stack([columns[name] for name in ("Step", "Temp", "PotEng", "TotEng", "f_t")])
+    np.testing.assert_allclose(mine, np.array(THERMO[case]), rtol=1e-9, atol=1e-9)
 
 
 def test_omega_needs_finite_size_particles():
