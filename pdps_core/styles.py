@@ -562,7 +562,7 @@ class Dump(Style):
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args
         self.every = int(getattr(args, "every", 1))
-        self.first = False              # dump_modify first yes: a frame at the next run's start
+        self.first = False              # dump_modify first yes: a frame at the first step after the dump command
 
     def write(self, sim):
         raise NotImplementedError
