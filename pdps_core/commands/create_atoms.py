@@ -29,6 +29,8 @@ full for N particles and a huge maxtry). In the PDPS dialect ``random``
 keeps pdps's own generator (N particles, ``maxtry`` misses in a row per particle before an error).
 """
 
+import math
+
 import numpy as np
 from numba import njit
 
@@ -197,12 +199,13 @@ def _grid_shape(length, reach, flat):
     to a try is in the try's cell or a neighbouring one."""
     if reach <= 0.0:
         return np.ones(3, dtype=np.int64)
-    ncell = np.array([max(1, int(min(L / reach, MAX_GRID_CELLS))) for L in length], dtype=np.int64)
+    ncell = [max(1, int(min(L / reach, MAX_GRID_CELLS))) for L in length]
     if flat:
         ncell[2] = 1
-    while np.prod(ncell) > MAX_GRID_CELLS:
-        ncell[np.argmax(ncell)] //= 2
-    return ncell
+    while math.prod(ncell) > MAX_GRID_CELLS:
+        widest = ncell.index(max(ncell))
+        ncell[widest] //= 2
+    return np.array(ncell, dtype=np.int64)
 
 
 @njit(cache=True)
