@@ -154,3 +154,15 @@ def test_a_2d_system_is_not_displaced_in_z(line, message):
     assert np.array_equal(sim.x, before)
     sim.command("displace_atoms all random 0.3 0.3 0 555")
     assert np.all(sim.x[:, 2] == 0.0) and not np.array_equal(sim.x, before)
+
+
+def test_overlap_extremes():
+    # a vanishing overlap rejects nothing: the tries of no overlap; an overlap wider than the box keeps the
+    # first particle only, and says so as LAMMPS does
+    plain, tiny, huge = lammps_sim(), lammps_sim(), lammps_sim()
+    plain.command("create_atoms 1 random 50 7 NULL")
+    tiny.command("create_atoms 1 random 50 7 NULL overlap 1e-300")
+    huge.command("create_atoms 1 random 50 7 NULL overlap 1e300 maxtry 20")
+    np.testing.assert_array_equal(tiny.x, plain.x)
+    np.testing.assert_array_equal(huge.x, plain.x[:1])
+    assert huge.warnings == ["Only inserted 1 particles out of 50"]
