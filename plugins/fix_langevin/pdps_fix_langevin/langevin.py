@@ -45,7 +45,10 @@ scalar ``f_ID`` is :math:`-W`, the energy the bath took from the particles since
 run (energy units, extensive: divided by N with ``thermo_modify norm yes``), and it is the fix's
 ``ecouple``: thermo ``econserve`` = pe + ke + ecouple stays flat over an NVE run with this
 thermostat. Without ``tally``, ``f_ID`` is the target temperature of the last step the thermostat
-acted on (pdps's; LAMMPS's reads 0) and ``ecouple`` gets nothing from the fix.
+acted on (pdps's; LAMMPS's reads 0) and ``ecouple`` gets nothing from the fix. ``fix_modify ID energy
+yes`` is refused, as LAMMPS 22 Jul 2025 refuses it: ecouple carries the tally. With ``gjf`` the tally
+counts the force GJF's velocities feel, :math:`(\mathbf{F}^\mathrm{drag} + \beta^{n-1})\sqrt b`, against
+the half-step velocity, and a run starts from :math:`\Delta t\,P_0` rather than 0 (LAMMPS's sign).
 
 **Gronbech-Jensen-Farago** (``gjf vfull|vhalf``; Gronbech-Jensen & Farago, Mol. Phys. 111, 983
 (2013)): a discretisation of the Langevin equation that samples positions from the Boltzmann
@@ -70,7 +73,8 @@ stable step for a linear system (``vhalf``), or GJF's on-site velocity, whose te
 short of T by :math:`O(\Delta t^2)` (``vfull``). The velocities a run reports (thermo ``temp``,
 dumps) are these. With ``scale``, a and b use DAMP, not DAMP times the ratio (LAMMPS's). The fix
 must be defined before fix nve (its ``initial_integrate`` has to run first), and DAMP must not be
-dt/2 (a = 0).
+dt/2 (a = 0); pdps also refuses gjf without an nve fix (LAMMPS runs it, nothing moving). LAMMPS 22 Jul
+2025 warns that its gjf keyword is deprecated; it still runs it as above.
 
 Parameters:
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import thermo_csv
+from pdps_core.testing import run_ranks, thermo_csv, thermo_rows
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -93,6 +93,14 @@ def test_friction_alone_gives_lammps_thermo(tmp_path, case):
     columns = thermo_csv(f"{log}.csv")
     mine = np.column_stack([columns[name] for name in ("Step", "Temp", "PotEng", "TotEng", "f_t")])
     np.testing.assert_allclose(mine, np.array(THERMO[case]), rtol=1e-9, atol=1e-9)
+
+
+def test_gjf_on_two_ranks_gives_lammps_thermo(tmp_path):
+    """The same with gjf vfull and tally on 2 ranks (particles that cross between the sub-domains
+    take GJF's velocities and noises with them): LAMMPS's serial thermo."""
+    text = EXACT.replace("OPTIONS", EXACT_CASES["exact_vfull"]).replace("run 100", "processors 2 1 1\nrun 100")
+    done = run_ranks(text, 2, tmp_path)
+    np.testing.assert_allclose(thermo_rows(done.stdout), np.array(THERMO["exact_vfull"]), rtol=1e-9, atol=1e-9)
 
 
 def test_omega_needs_finite_size_particles():
