@@ -91,6 +91,8 @@ CONTRACT = {
         "type": "(nall,) int32", "mask": "(nall,) uint32 group bits", "image": "(nall, 3) int32",
         "radius": "(nall,) when requested", "rmass": "(nall,) when requested",
         "omega": "(nall, 3) when requested", "torque": "(nall, 3) when requested",
+        "molecule": "(nall,) int64 molecule ids (0: none), with particle_style molecular, bond, angle, full",
+        "q": "(nall,) charges, with particle_style charge, full",
         "arrays": "{name: array} of every per-atom array, custom ones included",
         "request": "request(name, width=, dtype=, default=): allocate a per-atom array",
         "has": "has(name): whether a per-atom array exists",
