@@ -119,10 +119,10 @@ class PairDPD(PairLaw):
         return self.Coeff(a=combine(ci.a, cj.a), gamma=combine(ci.gamma, cj.gamma),
                           cutoff=combine(rc_i, rc_j))
 
-    def init(self, ntypes):
+    def init(self, ntypes, pairs=None):
         shape = (ntypes + 1, ntypes + 1)
         self.a, self.gamma, self.sigma, self.cut = (np.zeros(shape) for _ in range(4))
-        cutoffs = super().init(ntypes)
+        cutoffs = super().init(ntypes, pairs)
         self.check_stability(ntypes)
         return cutoffs
 
@@ -139,6 +139,8 @@ class PairDPD(PairLaw):
         for i in range(1, ntypes + 1):
             for j in range(i, ntypes + 1):
                 rc = self.cut[i, j]
+                if rc == 0.0:           # a type pair another sub-style of pair hybrid takes
+                    continue
                 neighbors = density * (math.pi * rc ** 2 if two_d else 4.0 / 3.0 * math.pi * rc ** 3)
                 mean_w2 = 1.0 / 6.0 if two_d else 0.1
                 stiffness = dt * math.sqrt(max(self.a[i, j], 0.0) * neighbors / (rc * mass))

@@ -55,6 +55,6 @@ class PairDPDfdt(PairDPD):
         # read by the core before init(): the conservative force alone needs no ghost velocity
         return not shardlow_defined(self.sim)
 
-    def init(self, ntypes):
+    def init(self, ntypes, pairs=None):
         self.split = shardlow_defined(self.sim)
-        return super().init(ntypes)
+        return super().init(ntypes, pairs)

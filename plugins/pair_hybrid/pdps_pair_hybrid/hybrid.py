@@ -24,8 +24,8 @@ sub-style; the tail correction of a pair sums those of its sub-styles that have 
 
 The core builds one half neighbor list with, for each type pair, the largest cutoff among its
 sub-styles; each sub-style's loop sees only its own pairs (the others' cutoffs are 0). Sub-styles are
-force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, ...); a style with
-its own loop is refused by name. A style may appear once. Example::
+force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, dpd, dpd/fdt, ...);
+a style with its own loop (the granular ones) is refused by name. A style may appear once. Example::
 
     pair_style hybrid lj/cut 2.5 soft 1.12
     pair_coeff 1 1 lj/cut 1.0 1.0

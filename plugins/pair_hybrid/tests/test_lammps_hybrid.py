@@ -25,6 +25,10 @@ CASES = {
     "overlay_tail": "pair_style hybrid/overlay lj/cut 2.5 soft 1.2\npair_coeff 1 1 lj/cut 1.0 1.0\n"
                     "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 2 lj/cut 0.7 1.1\npair_coeff 1 1 soft 2.0\n"
                     "pair_coeff 2 2 soft 3.0\npair_coeff 1 2 soft 2.5\npair_modify tail yes",
+    "hybrid_dpd": "comm_modify vel yes\npair_style hybrid dpd 0.0 1.0 34387 lj/cut 2.5\n"
+                  "pair_coeff 1 1 dpd 25.0 4.5\npair_coeff 2 2 lj/cut 1.0 1.0\npair_coeff 1 2 dpd 10.0 4.5 1.2",
+    "overlay_dpd": "comm_modify vel yes\npair_style hybrid/overlay lj/cut 2.5 dpd 0.0 1.0 34387\n"
+                   "pair_coeff * * lj/cut 1.0 1.0\npair_coeff * * dpd 0.0 4.5 1.0",
 }
 
 
