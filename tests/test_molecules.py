@@ -220,6 +220,8 @@ def test_molecule_errors(style, line, message):
     ("full", "2 7 1 -0.5", "2 7 1 nan", "dimers.data:20: charge must be finite (got nan)"),
     ("full", "2 7 1 -0.5 3.1", "2 7 1 3.1", "dimers.data:20: expected 7 or 10 values per full atom (got 6)"),
     ("molecular", "Atoms # full", "Atoms", "dimers.data:19: expected 6 or 9 values per molecular atom (got 7)"),
+    # a header line of one word (the fuzz suite's: "6\f atoms" splits at the form feed)
+    ("full", "4 atoms", "4\f atoms", "dimers.data:3: unrecognised header line: 4"),
 ])
 def test_data_file_errors(tmp_path, style, old, new, message):
     (tmp_path / "dimers.data").write_text(DIMER.replace(old, new, 1))

@@ -102,7 +102,7 @@ def read_data_file(path, particle_style):
                 elif len(words) == 4 and words[2][1:] == "lo" and words[3][1:] == "hi":
                     d = "xyz".index(words[2][0])
                     lo[d], hi[d] = float(words[0]), float(words[1])
-                elif molecular and words[1] == "extra" and text.endswith("per atom"):
+                elif molecular and len(words) > 2 and words[1] == "extra" and text.endswith("per atom"):
                     int(words[0])          # room LAMMPS reserves for bonds made later: nothing to do
                 elif any(text.endswith(k) for k in TOPOLOGY) or text.endswith("types"):
                     amount = int(words[0])
