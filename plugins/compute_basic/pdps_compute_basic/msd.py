@@ -1,5 +1,5 @@
 r"""Compute ``msd``: the mean squared displacement of a group, a vector of 4 read as ``c_ID[0]`` ..
-``c_ID[3]``.
+``c_ID[3]`` (``c_ID[1]`` .. ``c_ID[4]`` in the LAMMPS dialect).
 
 .. math::
 
@@ -14,30 +14,51 @@ was defined; it is kept per particle (array ``msd_origin_ID``), so it follows it
 re-sorting and between ranks, and is saved in restart files. A particle created after the compute
 takes its origin the first time the compute is read. An empty group gives 0.
 
+Keywords (LAMMPS's):
+
+- ``com yes``: positions are taken relative to the group's centre of mass (unwrapped, mass-weighted),
+  at the definition for the origins and now for the current positions, so a drift of the whole group
+  does not count as diffusion.
+- ``average yes``: at each evaluation the origin of every particle first becomes the running average
+  of its positions over the evaluations so far, this one included (the definition counting as one):
+  the msd then measures fluctuations about the mean position (a solid's vibrations). As in LAMMPS,
+  the average is over the steps the compute is read (thermo, dumps), once per step. The count of evaluations
+  is not saved in restart files (LAMMPS does not either).
+
 Syntax::
 
-    compute ID GROUP msd
+    compute ID GROUP msd [com yes|no] [average yes|no]
 
 Example::
 
-    compute m all msd
+    compute m all msd com yes
     thermo_style custom step c_m[3]
     analyze 2 all ave/time 10 1 10 c_m[*] file msd.txt
 """
 
 import numpy as np
 
-from pdps_core.api import Compute, observables
+from typing import Literal
+
+from pdps_core.api import Compute, StyleArgs, keyword, observables
 
 from .peratom import unwrapped
 
 
 class ComputeMSD(Compute):
     name = "msd"
-    usage = "compute ID GROUP msd"
+    usage = "compute ID GROUP msd [com yes|no] [average yes|no]"
+
+    class Args(StyleArgs):
+        com: Literal["yes", "no"] = keyword("no")
+        average: Literal["yes", "no"] = keyword("no")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
+        self.com = args.com == "yes"
+        self.average = args.average == "yes"
+        self.evaluations = 1        # the definition is the first position of the running average
+        self.averaged = None        # (step, vector): one update of the averages per step
         particles = sim.particles
         self.origin_name = f"msd_origin_{id}"
         existed = particles.has(self.origin_name)
@@ -46,7 +67,7 @@ class ComputeMSD(Compute):
         n = particles.nlocal
         # read_restart re-creates the compute after the particles: restore() puts these back
         self.replaced = (particles.tag[:n].copy(), origin[:n].copy()) if existed else None
-        origin[:n] = unwrapped(sim)
+        origin[:n] = unwrapped(sim) - self._centre(sim)
 
     def state(self):
         return {"origin": self.origin_name}
@@ -65,18 +86,34 @@ class ComputeMSD(Compute):
             particles.arrays[self.origin_name][:n][found] = saved[order[where[found]]]
         self.replaced = None
 
+    def _centre(self, sim):
+        """The group's unwrapped centre of mass with ``com yes``, else 0."""
+        if not self.com:
+            return np.zeros(3)
+        chosen = sim.groups.select(sim, self.group)
+        mass = observables.masses(sim, chosen)
+        moment = sim.comm.sum(mass @ unwrapped(sim)[chosen])
+        total = sim.comm.sum(float(mass.sum()))
+        return np.asarray(moment, dtype=np.float64) / total if total > 0 else np.zeros(3)
+
     def vector(self, sim):
+        if self.average and self.averaged is not None and self.averaged[0] == sim.step:
+            return self.averaged[1]
         p = sim.particles
         n = p.nlocal
         origin = p.arrays[self.origin_name][:n]
-        here = unwrapped(sim)
+        here = unwrapped(sim) - self._centre(sim)
         late = np.isnan(origin).any(axis=1)
         if late.any():
             origin[late] = here[late]
         chosen = sim.groups.select(sim, self.group)
+        if self.average:
+            origin[chosen] = (origin[chosen] * self.evaluations + here[chosen]) / (self.evaluations + 1)
+            self.evaluations += 1
         squares = sim.comm.sum(((here[chosen] - origin[chosen]) ** 2).sum(axis=0))
         count = observables.count(sim, self.group)
-        if count == 0:
-            return np.zeros(4)
-        squares = np.asarray(squares, dtype=np.float64) / count
-        return np.append(squares, squares.sum())
+        squares = np.asarray(squares, dtype=np.float64) / max(count, 1)
+        result = np.append(squares, squares.sum())
+        if self.average:
+            self.averaged = (sim.step, result)
+        return result

@@ -101,4 +101,4 @@ class ComputeCoordAtom(Compute):
         counts = np.zeros((p.nlocal, len(self.lows)))
         count_neighbors(p.x, p.type, p.mask, np.uint32(sim.groups.bit(self.args.group)), nlist.offsets,
                         nlist.neighbors, p.nlocal, self.args.cutoff ** 2, self.lows, self.highs, counts)
-        return counts[:, 0] if len(self.lows) == 1 and not self.args.types else counts
+        return counts[:, 0] if len(self.lows) == 1 else counts

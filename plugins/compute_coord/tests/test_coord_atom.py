@@ -50,7 +50,8 @@ def test_counts_equal_brute_force_with_type_ranges_and_groups(tmp_path):
     assert expected.mean() > 5          # a real test: several neighbors each
     by_type = brute_force(x, types, RC, [(1, 1), (2, 2), (1, 2)])
     assert sim.computes["by_type"].peratom(sim)[tags] == pytest.approx(by_type, abs=0)
-    twos = brute_force(x, types, RC, [(1, 2)], neighbor=types == 2)
+    # one type range: one value per particle (LAMMPS's per-atom vector, c_ID), not a column
+    twos = brute_force(x, types, RC, [(1, 2)], neighbor=types == 2)[:, 0]
     assert sim.computes["of_twos"].peratom(sim)[tags] == pytest.approx(twos, abs=0)
     around = brute_force(x, types, RC, [(1, 2)], center=types == 2)[:, 0]
     assert sim.computes["around_twos"].peratom(sim)[tags] == pytest.approx(around, abs=0)
