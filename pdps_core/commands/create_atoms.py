@@ -86,6 +86,7 @@ def create_atoms(sim, args):
         types = np.full(1, ptype, dtype=np.int64)
     else:
         n = integer(rest[0], "N", low=0, high=limits.MAX_CREATE)
+        sim.particles.check_room(n)
         region = None if rest[2] == "NULL" else sim.region(rest[2])
         maxtry = options["maxtry"] or MAXTRY[sim.dialect.name]
         if sim.dialect.name == "lammps":

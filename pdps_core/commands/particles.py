@@ -87,6 +87,7 @@ def create_particle(sim, args):
             seed = integer(rest[1], "seed", low=1)
             region = sim.region(rest[2])
             dmin = number(rest[4], "overlap", low=0.0) if len(rest) == 5 else 0.0
+        sim.particles.check_room(n)
         x = _random_no_overlap(sim, n, region, dmin, seed)
     sim.particles.add(x, ptype, **_sphere_values(sim, keywords))
     sim.comm.distribute(sim.particles, sim.box)

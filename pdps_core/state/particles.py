@@ -105,6 +105,13 @@ class Particles:
         return self.nlocal + self.nghost
 
     # ---- owned particles ------------------------------------------------------------------------
+    def check_room(self, n):
+        """MemoryError now when ``n`` more particles cannot fit: the rows they need are allocated and
+        freed at once (add() copies every array, so twice), before a command spends time and memory
+        placing them; near the address-space limit the interpreter can crash instead of raising."""
+        if n > 0:
+            np.empty((self.nlocal + n, 2 * self.row_width()))
+
     def add(self, x, type_, tags=None, **values):
         """Append owned particles at positions x (n x 3) of the given type(s), with ids ``tags``
         (default: from ``next_tag`` on); returns their indices."""
