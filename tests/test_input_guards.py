@@ -113,6 +113,26 @@ def test_a_lattice_too_fine_for_memory_is_refused_before_any_array(pdps_cli):
              "7.5e+115 sites, more than 20000000 particles at once")
 
 
+def test_a_lammps_lattice_of_23_million_sites_is_refused_at_once(pdps_cli):
+    # the fuzz suite's: create_atoms spent 23 s making the sites before refusing them (a hang)
+    one_line(pdps_cli("atom_style atomic\nlattice sc 0.9\nregion box block 0 4 0 4 0 1455100\n"
+                      "create_box 2 box\ncreate_atoms 1 box\n"),
+             "ERROR: in.test:5: create_atoms: the lattice has about 2.33e+07 sites in the box, more particles "
+             "than one command makes (20000000)")
+
+
+def test_a_lammps_lattice_region_too_full_stops_within_its_first_layers(pdps_cli):
+    one_line(pdps_cli("atom_style atomic\nlattice sc 0.9\nregion box block 0 4 0 4 0 1455100\n"
+                      "create_box 2 box\nregion most block 0 4 0 4 0 1400000\ncreate_atoms 1 region most\n"),
+             "ERROR: in.test:6: create_atoms: the lattice has more than 20000000 sites in region most, more "
+             "particles than one command makes")
+
+
+def test_a_skin_beyond_any_distance_is_refused(pdps_cli):
+    # the fuzz suite's: neighbor 1e308 made a mesh wall's bin grid infinite, and numba crashed on it
+    one_line(pdps_cli("neighbor 1e308 bin\n"), "ERROR: in.test:1: neighbor: skin must be <= 1e+150 (got 1e308)")
+
+
 def test_a_cutoff_many_times_the_box_is_refused(pdps_cli):
     one_line(pdps_cli("""region box block 0 6 0 6 0 6
 create_box 1 box
@@ -298,7 +318,7 @@ def set_field(path, value):
     (set_field(["dimension"], 0), "field dimension must be 2 or 3 (got 0)"),
     (set_field(["dimension"], 5), "field dimension must be 2 or 3 (got 5)"),
     (set_field(["neighbor", "every"], 0), "field every must be an integer >= 1 (got 0)"),
-    (set_field(["neighbor", "skin"], float("nan")), "field skin must be a finite number >= 0 (got nan)"),
+    (set_field(["neighbor", "skin"], float("nan")), "field skin must be a number from 0 to 1e+150 (got nan)"),
     (set_field(["dt"], -1.0), "field dt must be from 1e-50 to 1e+50 (got -1.0)"),
     (set_field(["neighbor", "last_sort"], [[1]]), "field last_sort must be a step or null (got [[1]])"),
     (set_field(["step"], -4), "field step must be from 0 to 9223372036854775807 (got -4)"),

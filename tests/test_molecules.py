@@ -220,6 +220,8 @@ def test_molecule_errors(style, line, message):
     ("full", "2 7 1 -0.5", "2 7 1 nan", "dimers.data:20: charge must be finite (got nan)"),
     ("full", "2 7 1 -0.5 3.1", "2 7 1 3.1", "dimers.data:20: expected 7 or 10 values per full atom (got 6)"),
     ("molecular", "Atoms # full", "Atoms", "dimers.data:19: expected 6 or 9 values per molecular atom (got 7)"),
+    ("full", "1 7 1 0.5", "1 9223372036854775808 1 0.5",
+     "dimers.data:19: molecule id must be from 0 to 4611686018427387904 (got 9223372036854775808)"),
     # a header line of one word (the fuzz suite's: "6\f atoms" splits at the form feed)
     ("full", "4 atoms", "4\f atoms", "dimers.data:3: unrecognised header line: 4"),
 ])

@@ -324,6 +324,9 @@ def _lattice_scale(sim):
     return np.ones(3) if sim.lattice is None else np.asarray(sim.lattice.spacing, dtype=np.float64)
 
 
+CHUNK_SITES = 1_000_000     # lattice sites made at once by create_atoms
+
+
 def lattice_sites(sim, region=None):
     """Sites of the lattice inside the box (and ``region``), as LAMMPS's create_atoms finds them;
     returns (positions, index of each site's basis atom)."""
@@ -355,22 +358,39 @@ def lattice_sites(sim, region=None):
         raise ScriptError(f"the lattice (spacing {' '.join(f'{a:g}' for a in lattice.spacing)}) has about "
                           f"{sites:.3g} sites in {'the box' if region is None else 'region ' + region.id}, more "
                           f"than {limits.MAX_CREATE} particles at once")
-    axes = [np.arange(first[d], last[d] + 1) for d in range(3)]
-    # LAMMPS's loop order (z outermost, then y, x, basis innermost), so ids follow LAMMPS's
-    k, j, i = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
-    cells = np.column_stack([i.ravel(), j.ravel(), k.ravel()])
-    x = lattice.sites(cells)
-    which = np.tile(np.arange(len(lattice.basis)), len(cells))
     dims = sim.dimension
-    if dims == 2:
-        x[:, 2] = 0.0
-    inside = np.all((x[:, :dims] >= face_lo[:dims]) & (x[:, :dims] < face_hi[:dims]), axis=1)
-    x, which = x[inside], which[inside]
-    if region is not None:
-        keep = region.match(x)
-        x, which = x[keep], which[keep]
-    if len(x) > limits.MAX_CREATE:
-        raise ScriptError(f"create_atoms would make {len(x)} particles, more than {limits.MAX_CREATE} at once")
+    if region is None:
+        # the box holds its volume over a cell's, times the basis, up to a layer at the faces
+        cell = lattice.cell[:dims, :dims]
+        filled = float(np.prod(box.length[:dims])) / abs(float(np.linalg.det(cell))) * len(lattice.basis)
+        if filled > 1.01 * limits.MAX_CREATE:
+            raise ScriptError(f"the lattice has about {filled:.3g} sites in the box, more particles than one "
+                              f"command makes ({limits.MAX_CREATE})")
+    axes = [np.arange(first[d], last[d] + 1) for d in range(3)]
+    # LAMMPS's loop order (z outermost, then y, x, basis innermost), so ids follow LAMMPS's; a few
+    # z layers at a time, so that a lattice too large for one command stops once it is known to be
+    layers = max(1, int(CHUNK_SITES // (len(axes[0]) * len(axes[1]) * len(lattice.basis))))
+    chunks, kept = [], 0
+    for start in range(0, len(axes[2]), layers):
+        k, j, i = np.meshgrid(axes[2][start:start + layers], axes[1], axes[0], indexing="ij")
+        cells = np.column_stack([i.ravel(), j.ravel(), k.ravel()])
+        x = lattice.sites(cells)
+        which = np.tile(np.arange(len(lattice.basis)), len(cells))
+        if dims == 2:
+            x[:, 2] = 0.0
+        inside = np.all((x[:, :dims] >= face_lo[:dims]) & (x[:, :dims] < face_hi[:dims]), axis=1)
+        x, which = x[inside], which[inside]
+        if region is not None:
+            keep = region.match(x)
+            x, which = x[keep], which[keep]
+        kept += len(x)
+        if kept > limits.MAX_CREATE:
+            where = "the box" if region is None else "region " + region.id
+            raise ScriptError(f"the lattice has more than {limits.MAX_CREATE} sites in {where}, more "
+                              "particles than one command makes")
+        chunks.append((x, which))
+    x = np.concatenate([c[0] for c in chunks]) if chunks else np.zeros((0, 3))
+    which = np.concatenate([c[1] for c in chunks]) if chunks else np.zeros(0, dtype=np.int64)
     return x, which
 
 

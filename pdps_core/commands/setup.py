@@ -61,7 +61,7 @@ def lattice(sim, args):
 @command("neighbor")
 def neighbor(sim, args):
     count(args, 1, "neighbor SKIN [single|multi|bin]", at_most=2)
-    sim.neighbors.skin = number(args[0], "skin", low=0.0)
+    sim.neighbors.skin = number(args[0], "skin", low=0.0, high=limits.MAX_COORDINATE)
     if len(args) == 2:
         style = choice(args[1], "neighbor style", ("single", "multi", "bin"))
         sim.neighbors.style = "single" if style == "bin" else style

@@ -169,15 +169,16 @@ def read_data_file(path, particle_style):
             if "diameter" in at:
                 diameter[k], density[k] = float(words[at["diameter"]]), float(words[at["density"]])
             if "molecule" in at:
-                molecule[k] = int(words[at["molecule"]])
+                mol = int(words[at["molecule"]])
+                if not 0 <= mol <= limits.MAX_TAG:
+                    fail(number, f"molecule id must be from 0 to {limits.MAX_TAG} (got {words[at['molecule']]})")
+                molecule[k] = mol
             if "q" in at:
                 charge[k] = float(words[at["q"]])
             x[k] = [float(words[at[axis]]) for axis in "xyz"]
             image = [int(w) for w in words[-3:]] if len(words) == len(columns) + 3 else [0, 0, 0]
         except ValueError:
             fail(number, f"cannot read Atoms line: {' '.join(words)}")
-        if not 0 <= molecule[k] <= limits.MAX_TAG:
-            fail(number, f"molecule id must be from 0 to {limits.MAX_TAG} (got {words[at['molecule']]})")
         if not np.isfinite(charge[k]):
             fail(number, f"charge must be finite (got {words[at['q']]})")
         if not 1 <= tag <= limits.MAX_TAG:

@@ -411,7 +411,8 @@ def validate(header, arrays):
     _field(particles, "next_tag", int, lambda t: 1 <= t <= limits.MAX_TAG + 1, "an id")
     _field(particles, "properties", list)
     neighbor = _field(header, "neighbor", dict)
-    _field(neighbor, "skin", number, lambda s: s >= 0, "a finite number >= 0")
+    _field(neighbor, "skin", number, lambda s: 0 <= s <= limits.MAX_COORDINATE,
+           f"a number from 0 to {limits.MAX_COORDINATE:g}")
     _field(neighbor, "every", int, lambda k: k >= 1, "an integer >= 1")
     _field(neighbor, "delay", int, lambda k: k >= 0, "an integer >= 0")
     _field(neighbor, "check", bool)

@@ -542,6 +542,9 @@ class FixWallMesh(Fix):
         box_lo, box_hi = corners.min(axis=1), corners.max(axis=1)
         grid_lo = box_lo.min(axis=0) - farthest
         extent = box_hi.max(axis=0) + farthest - grid_lo
+        if not np.isfinite(extent).all():
+            raise ScriptError(f"fix {self.id}: the mesh plus the particles' reach {farthest:g} (radius and "
+                              "skin) spans more than a float can hold")
         # a flat mesh with skin 0 and no particles has no width at all: one cell of any size
         size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS) or 1.0
         nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
