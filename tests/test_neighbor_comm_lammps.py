@@ -1,0 +1,51 @@
+"""neigh_modify exclude type/group/none, newton off, comm_modify cutoff and neigh_modify every/delay/
+check/one as LAMMPS: a two-type LJ liquid under each (benchmarks/lammps_references/neighbor_comm.py)
+prints LAMMPS's thermo (tests/data/lammps/neighbor_comm.txt, 15 digits) over 100 steps."""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
+from neighbor_comm import CASES, script  # noqa: E402
+
+
+def lammps_tables():
+    tables, case = {}, None
+    for line in (ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt").read_text().splitlines():
+        if line.startswith("# "):
+            case = line[2:]
+            tables[case] = []
+        else:
+            tables[case].append([float(w) for w in line.split()])
+    return {case: np.array(rows) for case, rows in tables.items()}
+
+
+LAMMPS = lammps_tables()
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_case_prints_lammps_thermo(tmp_path, case):
+    (tmp_path / "in.case").write_text(script(case))
+    log = tmp_path / "log.pdps"
+    sim = Simulation(screen=False, log=str(log))
+    sim.file(str(tmp_path / "in.case"))
+    sim.close()
+    lines = log.read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+    mine = np.array([[float(w) for w in line.split()] for line in lines[start + 1:start + 7]])
+    lammps = LAMMPS[case]
+    assert mine.shape == lammps.shape == (6, 4)
+    np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
+    np.testing.assert_allclose(mine[:, 1:], lammps[:, 1:], rtol=1e-11, atol=0)
+
+
+def test_the_cases_differ_from_each_other():
+    """Each exclusion changes the run (one that excluded nothing would pass the test above)."""
+    finals = {case: tuple(table[-1, 1:]) for case, table in LAMMPS.items()}
+    assert len({finals[c] for c in ("exclude_type", "exclude_group", "exclude_none")}) == 3
