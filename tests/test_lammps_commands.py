@@ -2,6 +2,7 @@
 thermo keywords and thermo_modify, units, lattices, create_atoms."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -282,3 +283,62 @@ def test_lost_error_is_still_the_default():
                 "create_particle 1 single 4.9 1 1\nvelocity all set 1 0 0\nfix 1 all nve")
     with pytest.raises(ScriptError, match="particle 1 lost through the fixed x boundary"):
         sim.command("run 100")
+
+
+# ---- read_data: Pair Coeffs and PairIJ Coeffs -------------------------------------------------------
+PAIR_DATA = """two particles
+
+2 atoms
+2 atom types
+
+0 10 xlo xhi
+0 10 ylo yhi
+0 10 zlo zhi
+
+Masses
+
+1 1.0
+2 1.0
+
+Pair Coeffs # lj/cut
+
+1 1.0 1.0
+2 0.5 1.2
+{pairij}
+Atoms # atomic
+
+1 1 2 2 2
+2 2 3.3 2 2
+"""
+
+
+def test_read_data_applies_pair_coeffs_as_pair_coeff_lines(tmp_path):
+    """LAMMPS's write_data writes Pair Coeffs by default: read_data applies them (I I), mixed as usual,
+    or as given per pair in PairIJ Coeffs."""
+    sigma = math.sqrt(1.0 * 1.2)                # LAMMPS's default geometric mixing of 1 1 and 2 2
+    mixed = 4 * math.sqrt(0.5) * ((sigma / 1.3) ** 12 - (sigma / 1.3) ** 6)
+    for pairij, expected in (("", mixed), ("\nPairIJ Coeffs\n\n1 2 0.3 0.9\n", 4 * 0.3 * ((0.9 / 1.3) ** 12
+                                                                                          - (0.9 / 1.3) ** 6))):
+        (tmp_path / "pairs.data").write_text(PAIR_DATA.format(pairij=pairij))
+        sim = Simulation(screen=False, log=None)
+        sim.command(f"pair_style lj/cut 2.5\nread_data {tmp_path / 'pairs.data'}\n"
+                    "thermo_style custom step pe\nthermo_modify norm no\nrun 0")
+        assert sim.variables.evaluate("pe") == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("setup, text, message", [
+    ("", PAIR_DATA.format(pairij=""), "pairs.data:17: the data file has pair coefficients: define the pair_style "
+                                      "before read_data"),
+    ("pair_style lj/cut 2.5\n", PAIR_DATA.format(pairij="").replace("2 0.5 1.2", "2 0.5"),
+     "pairs.data:18: pair coefficients: "),
+    ("pair_style lj/cut 2.5\n", PAIR_DATA.format(pairij="\nPairIJ Coeffs\n\n1 3 0.3 0.9\n"),
+     "pairs.data:22: pair coefficients for types 1 3 out of range 1..2"),
+])
+def test_read_data_pair_coeff_errors(tmp_path, setup, text, message):
+    (tmp_path / "pairs.data").write_text(text)
+    sim = Simulation(screen=False, log=None)
+    if setup:
+        sim.command(setup)
+    with pytest.raises(ScriptError, match=re.escape(message)) as caught:
+        sim.command(f"read_data {tmp_path / 'pairs.data'}")
+    assert sim.box is None, caught.value

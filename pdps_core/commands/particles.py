@@ -338,6 +338,24 @@ def _selected(values, words, style, usage):
     return member
 
 
+def _data_pair_coeffs(sim, data, name):
+    """The data file's Pair Coeffs and PairIJ Coeffs, checked by the pair style before the box is
+    made (a bad line leaves no half-read scene): [(I, J, coefficients)]."""
+    if not data.pair_coeffs:
+        return []
+    if sim.pair is None:
+        raise ScriptError(f"{name}:{data.pair_coeffs[0][0]}: the data file has pair coefficients: define the "
+                          "pair_style before read_data")
+    coeffs = []
+    for number, words in data.pair_coeffs:
+        try:
+            coeffs.append((min(int(words[0]), int(words[1])), max(int(words[0]), int(words[1])),
+                           sim.pair.parse_coeff(words[2:])))
+        except ScriptError as exc:
+            raise ScriptError(f"{name}:{number}: pair coefficients: {exc}") from None
+    return coeffs
+
+
 @command("read_data")
 def read_data(sim, args):
     from ..state.data_file import read_data_file
@@ -345,7 +363,10 @@ def read_data(sim, args):
     if sim.box is not None:
         raise ScriptError("read_data needs no box to exist yet (it creates it)")
     data = read_data_file(sim.resolve(args[0]), sim.particle_style)
+    coeffs = _data_pair_coeffs(sim, data, args[0])
     make_box(sim, data.lo, data.hi, data.ntypes)
+    for i, j, coeff in coeffs:
+        sim.pair.coeff(i, j, coeff)
     for t, value in data.masses.items():
         sim.type_mass[t] = value
     p = sim.particles

@@ -6,6 +6,8 @@
     Atoms # molecular:  id molecule type x y z [ix iy iz]   (bond and angle alike)
     Atoms # full:       id molecule type q x y z [ix iy iz]
     Velocities:         id vx vy vz  (sphere: id vx vy vz wx wy wz; the angular part is ignored here)
+    Pair Coeffs:        I coefficients...      (as pair_coeff I I ..., needs a pair_style first)
+    PairIJ Coeffs:      I J coefficients...    (as pair_coeff I J ...)
 
 For the styles with molecule ids, the header's bond, angle, dihedral and improper counts and types and
 the sections that list them (Bonds, Bond Coeffs, ...) are read past: pdps has no bond styles.
@@ -24,6 +26,8 @@ from ..script.lexer import read_text
 
 COLUMNS = {style: columns for style, (_, columns) in PARTICLE_STYLES.items()}
 SECTIONS = ("Masses", "Atoms", "Velocities")
+# pair coefficients, applied by read_data as pair_coeff lines (I I ... or I J ...)
+PAIR_SECTIONS = ("Pair Coeffs", "PairIJ Coeffs")
 TOPOLOGY = ("bonds", "angles", "dihedrals", "impropers")
 # sections of the topology pdps reads past (with a molecular style)
 SKIPPED_SECTIONS = ("Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
@@ -45,6 +49,7 @@ class DataFile:
     velocities: np.ndarray | None
     per_atom: dict = field(default_factory=dict)       # molecule, q: what the style's columns add
     skipped: dict = field(default_factory=dict)        # "bonds": 12, ...: topology read past
+    pair_coeffs: list = field(default_factory=list)    # (line number, [I, J, coefficient words...])
 
 
 def read_data_file(path, particle_style):
@@ -56,7 +61,7 @@ def read_data_file(path, particle_style):
 
     natoms, ntypes = None, None
     lo, hi = np.zeros(3), np.ones(3)
-    masses, atoms, velocities, skipped = {}, [], {}, {}
+    masses, atoms, velocities, skipped, pair_coeffs = {}, [], {}, {}, []
     columns = COLUMNS[particle_style]
     molecular = "molecule" in columns
     section, i = None, 1          # line 1 is a title
@@ -71,8 +76,11 @@ def read_data_file(path, particle_style):
         text = " ".join(words)          # tabs and repeated spaces separate words alike
         head = words[0]
         if head[0].isalpha():
-            # only section names start with a letter (LAMMPS's rule); Pair Coeffs, ... are not read
+            # only section names start with a letter (LAMMPS's rule)
             two = " ".join(words[:2])
+            if two in PAIR_SECTIONS:
+                section = two
+                continue
             if head in SKIPPED_SECTIONS or two in SKIPPED_SECTIONS:
                 if not molecular:
                     fail(number, f"section {text} needs a particle_style with molecule ids (molecular, bond, "
@@ -132,6 +140,12 @@ def read_data_file(path, particle_style):
                     fail(number, f"expected {width} or {width + 3} values per {particle_style} atom "
                                  f"(got {len(words)})")
                 atoms.append((number, words))
+            elif section in PAIR_SECTIONS:
+                width = 1 if section == "Pair Coeffs" else 2
+                if len(words) < width or not all(w.isdigit() for w in words[:width]):
+                    fail(number, f"expected {'I' if width == 1 else 'I J'} and coefficients in {section} "
+                                 f"(got {text})")
+                pair_coeffs.append((number, words[:1] * 2 + words[1:] if width == 1 else words))
             elif section == "Velocities":
                 if len(words) < 4:
                     fail(number, f"expected id vx vy vz (got {len(words)} values)")
@@ -216,4 +230,8 @@ def read_data_file(path, particle_style):
             fail(atoms[k][0], f"{axis} = {x[k, d]:g} is {abs(turns[k]):.3g} box lengths away: its image "
                               "flag would not fit in 32 bits")
     per_atom = {name: values for name, values in (("molecule", molecule), ("q", charge)) if name in at}
-    return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped)
+    for number, words in pair_coeffs:
+        if not all(1 <= int(w) <= ntypes for w in words[:2]):
+            fail(number, f"pair coefficients for types {words[0]} {words[1]} out of range 1..{ntypes}")
+    return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped,
+                    pair_coeffs)
