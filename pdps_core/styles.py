@@ -455,6 +455,9 @@ class Fix(Style):
     (``sim.eflag`` / ``sim.vflag`` are True during that step's force hooks, so a fix can tally only
     then).
 
+    ``modify_param(sim, keyword, value)``: a ``fix_modify ID keyword value`` other than energy and
+    virial (LAMMPS's modify_param); returns True when the fix took it, False for an unknown keyword.
+
     Inserting and deleting particles: set ``self.next_reneighbor`` to the step on which the fix
     will act (the same on every rank); that step rebuilds neighbor lists, and the fix's
     ``pre_exchange(sim)`` calls ``sim.add_particles`` / ``sim.delete_particles`` before particles
@@ -476,6 +479,9 @@ class Fix(Style):
 
     def virial(self, sim):
         return (0.0,) * 6
+
+    def modify_param(self, sim, keyword, value):
+        return False
 
 
 class Compute(Style):

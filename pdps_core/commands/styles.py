@@ -75,7 +75,8 @@ def fix(sim, args):
 @command("fix_modify")
 def fix_modify(sim, args):
     """``fix_modify ID energy yes|no virial yes|no``: whether a fix's energy and virial count in
-    thermo ``pe`` and ``press`` (LAMMPS's keywords)."""
+    thermo ``pe`` and ``press`` (LAMMPS's keywords); any other keyword goes to the fix's
+    ``modify_param`` (LAMMPS's, e.g. ``temp`` and ``press`` of fix nvt/npt/nph)."""
     usage = "expected: fix_modify ID [energy yes|no] [virial yes|no]"
     if len(args) < 3 or len(args) % 2 == 0:
         raise ScriptError(usage)
@@ -84,7 +85,9 @@ def fix_modify(sim, args):
         raise ScriptError(f"fix {args[0]} is not defined")
     for keyword, value in zip(args[1::2], args[2::2]):
         if keyword not in ("energy", "virial"):
-            raise ScriptError(f"unknown keyword {keyword}; {usage}")
+            if not fix.modify_param(sim, keyword, value):
+                raise ScriptError(f"unknown keyword {keyword}; {usage}")
+            continue
         on = choice(value, keyword, ("yes", "no")) == "yes"
         if on and not (fix.can_energy if keyword == "energy" else fix.can_virial):
             raise ScriptError(f"fix {fix.id} ({fix.name}) has no {keyword} to contribute")
