@@ -11,8 +11,14 @@ data/ecouple.txt. The runs are deterministic (no random numbers), so pdps must g
 these digits to round-off grown by the fluid's chaos over 100 steps. The walls' scenes (WALL_CASES,
 thermo step temp pe press f_2 f_2[1] f_2[2]) use walls.data, written here from fluid.data, and go to
 plugins/fix_wall/tests/data/wall_lj.txt.
+
+OPTION_CASES are the keywords added later (ptemp, disc, flip, fix_modify temp and press; deform
+volume, wiggle and variable), recorded alike into plugins/fix_nh/tests/data/nh_options.txt so that
+the files above stay as they were; the cases named *_2d run a 2-d fluid (plane.data, 144 particles
+on a square lattice with seeded Gaussian velocities, written here).
 """
 
+import random
 import subprocess
 import sys
 import tempfile
@@ -64,6 +70,50 @@ SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj
          "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]
 
 
+# the keywords added later; *_2d cases run on plane.data (dimension 2)
+LIGHT = "group light type 1\ngroup heavy type 2\ncompute light_t light temp\ncompute heavy_t heavy temp\n"
+OPTION_CASES = {
+    "nph_ptemp": "fix 1 all nph iso 0.5 0.5 0.5 ptemp 2.5",
+    "nph_aniso_ptemp": "fix 1 all nph aniso 0.5 0.5 0.3 ptemp 0.4 pchain 2",
+    "npt_flip": "fix 1 all npt temp 1.0 1.0 0.1 aniso 0.5 0.5 0.5 flip no",
+    "nvt_disc": "fix 1 all nvt temp 1.0 1.0 0.1 disc",
+    # the fix reads another temperature (the thermostat still scales all particles)
+    "nvt_modify_temp": LIGHT + "fix 1 all nvt temp 1.0 1.0 0.1\nfix_modify 1 temp light_t",
+    # ... and its pressure too
+    "npt_modify_temp": LIGHT + "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 0.5\nfix_modify 1 temp light_t",
+    "npt_modify_temp_aniso": LIGHT + "fix 1 all npt temp 1.0 1.0 0.1 aniso 0.5 0.5 0.5 couple xy\n"
+                                     "fix_modify 1 temp light_t",
+    # a pressure compute with its own temperature, another compute than the fix's
+    "nph_modify_press": "compute my_t all temp\ncompute my_p all pressure my_t\nfix 1 all nph aniso 0.5 0.5 0.5\n"
+                        "fix_modify 1 press my_p",
+    "npt_modify_press": LIGHT + "compute light_p all pressure light_t\n"
+                                "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 0.5\nfix_modify 1 press light_p",
+    # temp then press: the pressure keeps heavy_t; press then temp: LAMMPS points heavy_p at light_t
+    "npt_modify_temp_press": LIGHT + "compute heavy_p all pressure heavy_t\n"
+                                     "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 0.5\n"
+                                     "fix_modify 1 temp light_t press heavy_p",
+    "npt_modify_press_temp": LIGHT + "compute heavy_p all pressure heavy_t\n"
+                                     "fix 1 all npt temp 1.0 1.0 0.1 aniso 0.5 0.5 0.5\n"
+                                     "fix_modify 1 press heavy_p\nfix_modify 1 temp light_t",
+    "deform_volume": "fix 1 all nve\nfix 2 all deform 1 x erate 0.5 y volume remap x units box",
+    "deform_volume_two": "fix 1 all nve\nfix 2 all deform 1 x volume y trate -0.4 z volume",
+    "deform_volume_three": "fix 1 all nve\nfix 2 all deform 2 x erate 0.3 y scale 0.9 z volume units box",
+    "deform_volume_vremap": "neigh_modify every 1 delay 0 check no\nfix 1 all nve\n"
+                            "fix 2 all deform 1 x delta -0.4 0.3 y erate 0.3 z volume remap v units box",
+    "deform_wiggle": "fix 1 all nve\nfix 2 all deform 1 x wiggle 0.8 0.15 y wiggle -0.5 0.4 units box",
+    # units lattice: the amplitude in lattice spacings (1.077 for sc at reduced density 0.8)
+    "deform_wiggle_vremap": "lattice sc 0.8\nneigh_modify every 1 delay 0 check no\nfix 1 all nve\n"
+                            "fix 2 all deform 2 z wiggle 0.5 0.3 remap v",
+    "deform_variable": "variable dl equal 2.0*(step*0.002)^2\nvariable rate equal 4.0*step*0.002\n"
+                       "neigh_modify every 1 delay 0 check no\nfix 1 all nve\n"
+                       "fix 2 all deform 1 x variable v_dl v_rate y volume remap v",
+    "deform_nph_ptemp": "fix 1 all nph x 0.5 0.5 0.5 y 0.5 0.5 0.5 ptemp 1.5\n"
+                        "fix 2 all deform 1 z wiggle 0.4 0.2 units box",
+    "npt_disc_2d": "fix 1 all npt temp 1.0 1.0 0.1 iso 0.5 0.5 0.5 disc",
+    "nph_ptemp_2d": "fix 1 all nph aniso 0.3 0.3 0.5 ptemp 1.5 disc",
+    "deform_volume_2d": "fix 1 all nve\nfix 2 all deform 1 x erate 0.4 y volume units box",
+}
+
 # the reservoirs' energy: thermo ecouple, econserve and the fix's scalar, for these cases
 ECOUPLE_CASES = ("nvt_ramp", "npt_aniso", "npt_xyz", "nph_iso")
 ECOUPLE_THERMO = "step etotal ecouple econserve f_1"
@@ -71,6 +121,30 @@ ECOUPLE_THERMO = "step etotal ecouple econserve f_1"
 
 def script(case, thermo=THERMO):
     return "\n".join(SETUP + [CASES[case], "thermo 25", f"thermo_style custom {thermo}", "run 100"])
+
+
+def option_script(case):
+    """The script of an OPTION_CASES case: the fluid of fluid.data, or in 2-d of plane.data."""
+    lines = SETUP + [OPTION_CASES[case], "thermo 25", f"thermo_style custom {THERMO}", "run 100"]
+    if case.endswith("_2d"):
+        lines = ["dimension 2"] + [line.replace("fluid.data", "plane.data") for line in lines]
+    return "\n".join(lines)
+
+
+def plane_data():
+    """144 particles of two types on a 12 x 12 square lattice (spacing 1.15) in a periodic 2-d box,
+    velocities Gaussian (seed 2025, unit variance, no z part): LAMMPS's data format."""
+    n, spacing = 12, 1.15
+    side = repr(n * spacing)
+    draw = random.Random(2025)
+    atoms, velocities = [], []
+    for k in range(n * n):
+        i, j = divmod(k, n)
+        atoms.append(f"{k + 1} {1 + (i + j) % 2} {repr((i + 0.5) * spacing)} {repr((j + 0.5) * spacing)} 0.0")
+        velocities.append(f"{k + 1} {repr(draw.gauss(0.0, 1.0))} {repr(draw.gauss(0.0, 1.0))} 0.0")
+    return "\n".join(["written by benchmarks/lammps_references/nh.py", "", f"{n * n} atoms", "2 atom types", "",
+                      f"0 {side} xlo xhi", f"0 {side} ylo yhi", "-0.5 0.5 zlo zhi", "", "Masses", "", "1 1",
+                      "2 1.5", "", "Atoms # atomic", ""] + atoms + ["", "Velocities", ""] + velocities) + "\n"
 
 
 def wall_script(case):
@@ -129,7 +203,12 @@ def main(lmp):
     wall_rows = [f"{case}\t{line}" for case in WALL_CASES
                  for line in thermo_lines(lmp, wall_script(case), {"walls.data": walls})]
     (WALL_DATA / "wall_lj.txt").write_text("\n".join(wall_rows) + "\n")
-    print("\n".join(rows + wall_rows))
+    plane = plane_data()
+    (DATA / "plane.data").write_text(plane)
+    option_rows = [f"{case}\t{line}" for case in OPTION_CASES
+                   for line in thermo_lines(lmp, option_script(case), {"fluid.data": fluid, "plane.data": plane})]
+    (DATA / "nh_options.txt").write_text("\n".join(option_rows) + "\n")
+    print("\n".join(rows + wall_rows + option_rows))
 
 
 if __name__ == "__main__":

@@ -13,16 +13,25 @@ The particles' equations of motion, for barostatted axes a (no barostat: omega_d
     Q_1 deta_dot_1/dt = N_dof k_B T - N_dof k_B T_target - Q_1 eta_dot_1 eta_dot_2        (chain of M)
 
 with the thermostat masses Q_1 = N_dof k_B T_t / omega_T^2, Q_k = k_B T_t / omega_T^2
-(omega_T = 1/Tdamp), barostat masses W = N k_B T_t / omega_P^2 (omega_P = 1/Pdamp), N the number of
-particles, d_p the number of barostatted axes. The box follows dL_a/dt = omega_dot_a L_a about the
-fixed point; particles of the dilate group keep their fractional coordinates. The conserved
-quantity is pe + ke + ecouple, ecouple being this fix's scalar ``f_ID`` (chain and barostat kinetic
-and potential terms, P_target (V - V_0)).
+(omega_T = 1/Tdamp), barostat masses W = (N + 1) k_B T_t / omega_P^2 (omega_P = 1/Pdamp), N the
+number of particles, d_p the number of barostatted axes. Without a thermostat (nph) T_t is
+``ptemp``, or else the temperature at the first run's start (an error below 1e-6, as in LAMMPS
+2025: give ptemp). The box follows dL_a/dt = omega_dot_a L_a about the fixed point; particles of
+the dilate group keep their fractional coordinates. The conserved quantity is pe + ke + ecouple,
+ecouple being this fix's scalar ``f_ID`` (chain and barostat kinetic and potential terms,
+P_target (V - V_0)).
 
 Temperatures and pressures are LAMMPS's ``compute temp`` (of the fix's group for nvt, of all
 particles for npt and nph: N_dof = d N - d less what other fixes remove) and ``compute pressure``
-(its kinetic part from that temperature). Targets ramp from start to stop over a run (LAMMPS's
-delta = (step - first) / (last - first)).
+(its kinetic part from that temperature). ``fix_modify ID temp CTEMP`` makes the fix read the temp
+compute CTEMP instead (its group's T and N_dof: the thermostat still scales the fix's group; a
+warning when CTEMP is not of group all) and points the pressure at CTEMP too, as LAMMPS does: the
+fix's own pressure, or the compute that ``fix_modify ID press CPRESS`` named, whose TEMP-ID is
+changed to CTEMP. ``fix_modify ID press CPRESS`` makes the barostat read that pressure compute with
+its own temperature; where that is another compute than the fix's, LAMMPS reuses its value within a
+step, so the pressure of final_integrate has the kinetic part of initial_integrate's, and pdps does
+the same. Targets ramp from start to stop over a run (LAMMPS's delta = (step - first) / (last -
+first)).
 
 Syntax (LAMMPS's)::
 
@@ -38,14 +47,22 @@ Syntax (LAMMPS's)::
     drag D (0)                 damping of the chain and barostat velocities
     dilate all|GROUP (all)     particles whose positions the box change carries
     fixedpoint X Y Z           the point that stays put when the box changes (the box's centre)
+    ptemp T                    the barostat's temperature for its masses (nph only: with temp,
+                               the target temperature is that, and LAMMPS refuses both)
+    flip yes|no (yes)          accepted, no effect: it lets a tilted box flip (pdps has no tilt)
+    disc                       accepted, no effect: LAMMPS's fix nh skips it; only its /sphere
+                               variants read it (a 2-d disc's moment of inertia), which pdps lacks
 
-``tri``, ``xy``, ``xz``, ``yz`` need a triclinic box, which pdps does not have: refused.
+``tri``, ``xy``, ``xz``, ``yz`` and ``scalexy``/``scalexz``/``scaleyz`` concern a triclinic box,
+which pdps does not have: refused. ``fix_modify ID temp CTEMP`` and ``press CPRESS`` as above.
 
 Examples::
 
     fix 1 all nvt temp 1.0 1.0 0.5
     fix 1 all npt temp 1.0 1.0 0.5 iso 0.5 0.5 5.0
-    fix 1 all nph aniso 0.5 0.5 5.0 couple xy
+    fix 1 all nph aniso 0.5 0.5 5.0 couple xy ptemp 1.2
+    compute hot all temp
+    fix_modify 1 temp hot
 """
 
 import math
@@ -145,6 +162,9 @@ class FixNH(Fix):
         drag: float = keyword(0.0, ge=0)
         dilate: str = keyword("all")
         fixedpoint: Triple = keyword(None, unit="distance")
+        ptemp: float | None = keyword(None, unit="temperature", gt=0)
+        flip: Literal["yes", "no"] = keyword("yes")
+        disc: tuple[()] | None = keyword(None)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -193,6 +213,9 @@ class FixNH(Fix):
             raise ScriptError(f"{controls} needs a pressure: iso, aniso, x, y or z PSTART PSTOP PDAMP")
         if self.needs_press is False and self.pstat:
             raise ScriptError(f"{controls} controls no pressure (use fix npt for temp and pressure)")
+        if a.ptemp is not None and self.tstat:
+            raise ScriptError(f"ptemp: {controls} has a thermostat, whose target temperature sets the "
+                              "barostat's mass (ptemp is for nph)")
         axes = COUPLE[pcouple]
         if dim == 2 and 2 in axes and pcouple != "xyz":
             raise ScriptError(f"couple {pcouple}: a 2-d simulation has no z pressure to couple")
@@ -238,7 +261,14 @@ class FixNH(Fix):
         self.t_target = self.ke_target = self.t_current = 0.0
         self.mtk_term1 = self.mtk_term2 = 0.0
         self.sigma, self.fdev = np.zeros(3), np.zeros(3)
-        self.temp_group = group if self.name == "nvt" else "all"
+        self.own_temp_group = self.temp_group = group if self.name == "nvt" else "all"
+        # fix_modify temp/press: the computes named (None: the fix's own, LAMMPS's ID_temp, ID_press)
+        self.temp_id = self.press_id = None
+        self.press_temp_group = self.temp_group
+        self.press_tdof = 0.0
+        self.press_temp_shared = True     # the pressure's temperature is the fix's own
+        self.press_temp_cached = False    # ... or another compute, reused within a step
+        self.press_temp_cache = {"scalar": (None, 0.0), "vector": (None, np.zeros(3))}
         self.mvv = np.zeros(3)           # LAMMPS's temperature->vector: sum m v_a^2 (energy units)
         self.virial_diag = np.zeros(3)
 
@@ -269,9 +299,12 @@ class FixNH(Fix):
             self.tdrag_factor = 1.0 - dt * self.t_freq * self.args.drag / self.args.tloop
         if self.dilate != "all":
             sim.require_group(self.dilate)
+        self._resolve_computes(sim)
 
     def setup(self, sim):
         self.tdof = observables.degrees_of_freedom(sim, self.temp_group)
+        if not self.press_temp_shared:
+            self.press_tdof = observables.degrees_of_freedom(sim, self.press_temp_group)
         self.natoms = observables.count(sim, "all")
         if self.pstat and self.natoms == 0:
             raise ScriptError(f"fix {self.id} {self.name}: no particles, so no pressure to control")
@@ -279,15 +312,23 @@ class FixNH(Fix):
         if self.tstat:
             self._temp_target(sim)
         elif self.pstat:
+            # LAMMPS 2025: ptemp, else the temperature now (no longer a guess of 1 or 300 at T = 0)
             if self.t0 == 0.0:
-                self.t0 = self._temperature(sim)
-                if self.t0 == 0.0:
-                    self.t0 = 1.0 if sim.units.name == "lj" else 300.0
+                if self.args.ptemp is not None:
+                    self.t0 = self.args.ptemp
+                else:
+                    t0 = self._temperature(sim)
+                    if t0 < 1e-6:
+                        raise ScriptError(f"fix {self.id} {self.name}: the temperature is {t0:g}, too close "
+                                          "to 0 to set the barostat's mass; give ptemp T")
+                    self.t0 = t0
             self.t_target = self.t0
         if self.pstat:
             self._press_target(sim)
-        self.t_current = self._temperature(sim)
+        sums = self._sums(sim, self.temp_group)
+        self.t_current = self._temperature(sim, sums)
         if self.pstat:
+            self.mvv = sums[:3]
             self._pressure(sim, self.t_current)
         boltz, t_target = self.boltz, self.t_target
         if self.tstat:
@@ -315,8 +356,9 @@ class FixNH(Fix):
             self._nhc_temp_integrate(sim)
         if self.pstat:
             # the kinetic energy changed with the thermostat: a fresh pressure (t_current is not reset)
-            t = self._temperature(sim) if self.iso else None
-            self._pressure(sim, t)
+            sums = self._sums(sim, self.temp_group)
+            self.mvv = sums[:3]
+            self._pressure(sim, self._temperature(sim, sums))
             self._press_target(sim)
             self._omega_dot(sim)
             self._press_velocities(sim)
@@ -333,15 +375,73 @@ class FixNH(Fix):
         kick(p.v, p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group), p.nlocal, self.dtf)
         if self.pstat:
             self._press_velocities(sim)
-        self.t_current = self._temperature(sim)
+        sums = self._sums(sim, self.temp_group)
+        self.t_current = self._temperature(sim, sums)
         if self.pstat:
             self._read_virial(sim)
+            self.mvv = sums[:3]
             self._pressure(sim, self.t_current)
             self._omega_dot(sim)
         if self.tstat:
             self._nhc_temp_integrate(sim)
         if self.pstat and self.mpchain:
             self._nhc_press_integrate()
+
+    # ---- fix_modify temp CTEMP, press CPRESS (LAMMPS's modify_param) ----------------------------------
+    def modify_param(self, sim, keyword, value):
+        if keyword == "temp":
+            compute = self._named_compute(sim, value, "temp", "temperature")
+            self.temp_id = value
+            if compute.group != "all":
+                sim.warn(f"fix {self.id} {self.name}: temperature compute {value} is of group {compute.group}, "
+                         "not all (LAMMPS's fix_modify warns so too)")
+            if self.pstat and self.press_id is not None:
+                # LAMMPS points the pressure compute at the new temperature (reset_extra_compute_fix)
+                pressure = sim.computes.get(self.press_id)
+                if pressure is None:
+                    raise ScriptError(f"temp: pressure compute {self.press_id} of fix {self.id} is not defined")
+                pressure.args = pressure.args.model_copy(update={"temperature": value})
+            return True
+        if keyword == "press":
+            if not self.pstat:
+                raise ScriptError(f"press: fix {self.id} ({self.name}) controls no pressure")
+            self._named_compute(sim, value, "pressure", "pressure")
+            self.press_id = value
+            return True
+        return False
+
+    def _named_compute(self, sim, ident, style, what):
+        compute = sim.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"compute {ident} is not defined ({what} of fix {self.id})")
+        if compute.name != style:
+            raise ScriptError(f"compute {ident} ({compute.name}) is not a {style} compute, so it gives no {what}")
+        return compute
+
+    def _resolve_computes(self, sim):
+        """The groups whose velocities make the fix's temperature and its pressure's kinetic part, as
+        the computes named by fix_modify say at this run (LAMMPS's init)."""
+        self.temp_group = self.own_temp_group
+        if self.temp_id is not None:
+            self.temp_group = self._defined(sim, self.temp_id, "temperature").group
+        self.press_temp_shared, self.press_temp_cached = True, False
+        self.press_temp_group = self.temp_group
+        if self.press_id is None or not self.pstat:
+            return
+        press_temp = getattr(self._defined(sim, self.press_id, "pressure").args, "temperature", None)
+        if press_temp == self.temp_id and press_temp is not None:
+            return
+        self.press_temp_shared = False
+        self.press_temp_group = "all"
+        if press_temp is not None:
+            self.press_temp_cached = True
+            self.press_temp_group = self._defined(sim, press_temp, "temperature").group
+
+    def _defined(self, sim, ident, what):
+        compute = sim.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"fix {self.id} {self.name}: {what} compute {ident} is not defined")
+        return compute
 
     # ---- restart files: the chains, the barostat and the reference cell go on ---------------------
     def state(self):
@@ -400,25 +500,32 @@ class FixNH(Fix):
         local = mass_velocity_squares(p.v, observables.masses(sim), p.mask, sim.groups.bit(group), p.nlocal)
         return np.asarray(sim.comm.sum(local)) * sim.units.mvv2e
 
-    def _temperature(self, sim):
+    def _temperature(self, sim, sums=None):
+        """The fix's temperature; ``sums``: this step's _sums of its group, when already made."""
         if self.tdof <= 0:
             return 0.0
-        return float(self._sums(sim, self.temp_group)[3]) / (self.tdof * self.boltz)
+        if sums is None:
+            sums = self._sums(sim, self.temp_group)
+        return float(sums[3]) / (self.tdof * self.boltz)
 
     def _pressure(self, sim, t):
-        """p_current from LAMMPS's compute pressure (scalar for iso, else the diagonal, then couple);
-        the diagonal's kinetic part is sum m v_a^2 of the current velocities (mtk_term1 reads it)."""
+        """p_current from LAMMPS's compute pressure (scalar for iso, else the diagonal, then couple).
+        Its kinetic part is the fix's temperature ``t`` (iso) or ``self.mvv`` (sum m v_a^2, which
+        mtk_term1 reads too), unless fix_modify press named a compute with another temperature."""
         inv_volume = 1.0 / self._volume(sim)
         vir = self.virial_diag
         if self.iso:
+            dof = self.tdof
+            if not self.press_temp_shared:
+                dof, t = self.press_tdof, self._press_temperature(sim, "scalar")
             if self.dim == 3:
-                value = (self.tdof * self.boltz * t + vir[0] + vir[1] + vir[2]) / 3.0 * inv_volume * self.nktv2p
+                value = (dof * self.boltz * t + vir[0] + vir[1] + vir[2]) / 3.0 * inv_volume * self.nktv2p
             else:
-                value = (self.tdof * self.boltz * t + vir[0] + vir[1]) / 2.0 * inv_volume * self.nktv2p
+                value = (dof * self.boltz * t + vir[0] + vir[1]) / 2.0 * inv_volume * self.nktv2p
             self.p_current[:] = value
             return
-        self.mvv = self._sums(sim, self.temp_group)[:3]
-        tensor = (self.mvv + vir) * inv_volume * self.nktv2p
+        mvv = self.mvv if self.press_temp_shared else self._press_temperature(sim, "vector")
+        tensor = (mvv + vir) * inv_volume * self.nktv2p
         c = self.pcouple
         if c == "xyz":
             self.p_current[:] = 1.0 / 3.0 * (tensor[0] + tensor[1] + tensor[2])
@@ -428,6 +535,22 @@ class FixNH(Fix):
             i, j = COUPLE[c]
             self.p_current[:] = tensor
             self.p_current[i] = self.p_current[j] = 0.5 * (tensor[i] + tensor[j])
+
+    def _press_temperature(self, sim, kind):
+        """The pressure compute's own temperature (scalar) or sum m v_a^2 (vector). Where it is
+        another compute than the fix's, LAMMPS's compute pressure reuses the value that compute
+        gave earlier in the same step: the fix's second pressure of a step (final_integrate) reads
+        the kinetic energy of its first (initial_integrate)."""
+        step, value = self.press_temp_cache[kind]
+        if self.press_temp_cached and step == sim.step:
+            return value
+        sums = self._sums(sim, self.press_temp_group)
+        if kind == "vector":
+            value = sums[:3]
+        else:
+            value = float(sums[3]) / (self.press_tdof * self.boltz) if self.press_tdof > 0 else 0.0
+        self.press_temp_cache[kind] = (sim.step, value)
+        return value
 
     def _temp_target(self, sim):
         delta = sim.ramp(0.0, 1.0)
@@ -584,7 +707,7 @@ class FixNH(Fix):
 
 class FixNVT(FixNH):
     name = "nvt"
-    usage = "fix ID GROUP nvt temp TSTART TSTOP TDAMP [tchain M] [tloop N] [drag D]"
+    usage = "fix ID GROUP nvt temp TSTART TSTOP TDAMP [tchain M] [tloop N] [drag D] [disc]"
     needs_temp, needs_press = True, False
 
 
@@ -592,14 +715,14 @@ class FixNPT(FixNH):
     name = "npt"
     usage = ("fix ID GROUP npt temp TSTART TSTOP TDAMP iso|aniso|x|y|z PSTART PSTOP PDAMP [couple C] "
              "[tchain M] [pchain M] [mtk yes|no] [tloop N] [ploop N] [nreset N] [drag D] [dilate all|GROUP] "
-             "[fixedpoint X Y Z]")
+             "[fixedpoint X Y Z] [flip yes|no] [disc]")
     needs_temp, needs_press = True, True
 
 
 class FixNPH(FixNH):
     name = "nph"
     usage = ("fix ID GROUP nph iso|aniso|x|y|z PSTART PSTOP PDAMP [couple C] [pchain M] [mtk yes|no] "
-             "[ploop N] [nreset N] [drag D] [dilate all|GROUP] [fixedpoint X Y Z]")
+             "[ploop N] [nreset N] [drag D] [dilate all|GROUP] [fixedpoint X Y Z] [ptemp T] [flip yes|no] [disc]")
     needs_temp, needs_press = False, True
 
 

@@ -2,7 +2,9 @@
 a 200-particle Lennard-Jones fluid (data/nh.txt, recorded with LAMMPS by
 benchmarks/lammps_references/nh.py): thermostat chains, iso/aniso/x-y-z barostats, couple, drag,
 sub-cycles, ramps, dilate and fixedpoint as LAMMPS integrates them; deform's six styles with remap
-x, v and none, and deform beside a barostat."""
+x, v and none, and deform beside a barostat. data/nh_options.txt likewise for ptemp, disc, flip,
+fix_modify temp and press (in both orders), deform volume (its three cases), wiggle and variable,
+and 2-d barostats on a 144-particle fluid (data/plane.data)."""
 
 import shutil
 import sys
@@ -17,9 +19,10 @@ from pdps_core.testing import by_tag, restart_round_trip, run_ranks, thermo_rows
 DATA = Path(__file__).parent / "data"
 ROWS = [line.split("\t") for line in (DATA / "nh.txt").read_text().splitlines()]
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from nh import CASES, ECOUPLE_CASES, ECOUPLE_THERMO, script  # noqa: E402
+from nh import CASES, ECOUPLE_CASES, ECOUPLE_THERMO, OPTION_CASES, option_script, script  # noqa: E402
 
 COUPLED = [line.split("\t") for line in (DATA / "ecouple.txt").read_text().splitlines()]
+OPTIONS = [line.split("\t") for line in (DATA / "nh_options.txt").read_text().splitlines()]
 
 
 def run_case(tmp_path, monkeypatch, case):
@@ -40,6 +43,80 @@ def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
     for got, want in zip(mine, reference):
         np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
                                    atol=1e-10, err_msg=f"{case} step {got[0]}")
+
+
+@pytest.mark.parametrize("case", list(OPTION_CASES))
+def test_later_keywords_give_lammps_thermo(tmp_path, monkeypatch, case):
+    """ptemp (the barostat's mass from that temperature), disc and flip (no effect on these fixes),
+    fix_modify temp (a group's temperature drives the thermostat and the pressure) and press (a
+    pressure compute whose own temperature LAMMPS reuses within a step), deform volume, wiggle and
+    variable (with remap x and v, lattice units), and 2-d barostats: LAMMPS's thermo to 1e-8."""
+    for name in ("fluid.data", "plane.data"):
+        shutil.copy(DATA / name, tmp_path / name)
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log="log.case", dialect="lammps")
+    sim.command(option_script(case))
+    sim.close()
+    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
+    reference = [row[1:] for row in OPTIONS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
+                                   atol=1e-10, err_msg=f"{case} step {got[0]}")
+
+
+def fluid(tmp_path, monkeypatch, lines):
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("\n".join(CONSERVE + lines))
+    return sim
+
+
+@pytest.mark.parametrize("styles", ["x erate 0.5 y volume", "x volume y trate -0.4 z volume",
+                                    "x erate 0.3 y scale 0.9 z volume"])
+def test_deform_volume_keeps_the_volume(tmp_path, monkeypatch, styles):
+    """Whatever the other axes do, the volume axes keep Lx Ly Lz at its value at the run's start, every
+    step, about the box's centre; the other axes follow their own formulas (erate: L0 (1 + R t))."""
+    sim = fluid(tmp_path, monkeypatch, [f"fix 1 all nve\nfix 2 all deform 1 {styles} units box"])
+    volume, centre = sim.box.volume, 0.5 * (sim.box.lo + sim.box.hi)
+    for steps in (13, 25):
+        length = sim.box.length.copy()
+        sim.command(f"run {steps}")
+        assert sim.box.volume == pytest.approx(volume, rel=1e-13)
+        np.testing.assert_allclose(0.5 * (sim.box.lo + sim.box.hi), centre, rtol=1e-13)
+        if styles.startswith("x erate"):
+            rate = float(styles.split()[2])
+            assert sim.box.length[0] == pytest.approx(length[0] * (1 + rate * steps * 0.001), rel=1e-13)
+
+
+def test_deform_wiggle_follows_its_sine(tmp_path, monkeypatch):
+    """L(t) = L0 + A sin(2 pi t / TP) at the end of a run, t and L0 from the run's start, with A in
+    lattice spacings under units lattice (sc at reduced density 0.8: (1/0.8)^(1/3))."""
+    sim = fluid(tmp_path, monkeypatch, ["lattice sc 0.8", "fix 1 all nve",
+                                        "fix 2 all deform 1 x wiggle 0.3 0.02 y wiggle -0.2 0.05 z wiggle 0.1 0.03"])
+    spacing = (1 / 0.8) ** (1 / 3)
+    for steps in (7, 13):
+        length0 = sim.box.length.copy()
+        sim.command(f"run {steps}")
+        t = steps * 0.001
+        want = length0 + spacing * np.array([0.3 * np.sin(2 * np.pi * t / 0.02), -0.2 * np.sin(2 * np.pi * t / 0.05),
+                                             0.1 * np.sin(2 * np.pi * t / 0.03)])
+        np.testing.assert_allclose(sim.box.length, want, rtol=1e-13)
+
+
+def test_fix_modify_temp_points_the_pressure_compute_at_it(tmp_path, monkeypatch):
+    """As LAMMPS's reset_extra_compute_fix: after fix_modify press P, fix_modify temp T makes P's
+    temperature T (so c_P reads it too), and a group other than all draws LAMMPS's warning."""
+    sim = fluid(tmp_path, monkeypatch, ["group light type 1", "compute light_t light temp",
+                                        "compute p all pressure", "fix 1 all nph iso 0.5 0.5 1.0",
+                                        "fix_modify 1 press p temp light_t"])
+    assert sim.computes["p"].args.temperature == "light_t"
+    assert sim.warnings[-1] == ("fix 1 nph: temperature compute light_t is of group light, not all "
+                                "(LAMMPS's fix_modify warns so too)")
+    sim.command("run 0")
+    expected = observables.pressure(sim, observables.temperature(sim, "light"), "light")
+    assert sim.compute_value("p") == pytest.approx(expected, rel=1e-14)
 
 
 def test_two_ranks_give_the_serial_thermo(tmp_path):
@@ -132,6 +209,13 @@ SETUP_LONG = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_sty
     ("fix 1 all nvt temp 1 1 0.1 tchain 0", "tchain must be >= 1 (got 0)"),
     ("fix 1 all nph z 1 1 1", "z is not periodic: a barostat needs periodic axes it changes"),
     ("fix 1 all nvt temp 1 1 0.1 mtk maybe", "mtk must be one of 'yes' or 'no' (got maybe)"),
+    ("fix 1 all nph x 1 1 1 y 1 1 1 ptemp 0", "ptemp must be > 0 (got 0)"),
+    ("fix 1 all npt temp 1 1 0.1 x 1 1 1 ptemp 2", "ptemp: fix npt has a thermostat, whose target temperature "
+                                                   "sets the barostat's mass (ptemp is for nph)"),
+    ("fix 1 all nvt temp 1 1 0.1 flip maybe", "flip must be one of 'yes' or 'no' (got maybe)"),
+    ("fix 1 all nph x 1 1 1 scalexy yes", "unknown keyword scalexy (known: temp, iso, aniso, x, y, z, tri, xy, "
+                                          "xz, yz, couple, tchain, pchain, mtk, tloop, ploop, nreset, drag, dilate, "
+                                          "fixedpoint, ptemp, flip, disc)"),
 ])
 def test_bad_nh_fixes(line, message):
     sim = Simulation(screen=False, log=None)
@@ -142,10 +226,55 @@ def test_bad_nh_fixes(line, message):
 
 
 @pytest.mark.parametrize("line, message", [
+    ("fix 1 all nph x 1 1 1\nfix_modify 1 temp nobody", "compute nobody is not defined (temperature of fix 1)"),
+    ("fix 1 all nph x 1 1 1\ncompute p all pressure\nfix_modify 1 temp p",
+     "compute p (pressure) is not a temp compute, so it gives no temperature"),
+    ("fix 1 all nph x 1 1 1\ncompute t all temp\nfix_modify 1 press t",
+     "compute t (temp) is not a pressure compute, so it gives no pressure"),
+    ("fix 1 all nvt temp 1 1 0.1\ncompute p all pressure\nfix_modify 1 press p",
+     "press: fix 1 (nvt) controls no pressure"),
+    ("fix 1 all nvt temp 1 1 0.1\nfix_modify 1 dof 3",
+     "unknown keyword dof; expected: fix_modify ID [energy yes|no] [virial yes|no]"),
+])
+def test_bad_fix_modify_of_nh(line, message):
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
+    with pytest.raises(ScriptError) as caught:
+        sim.command(line)
+    assert caught.value.message == message
+
+
+@pytest.mark.parametrize("setup, message", [
+    ("fix 1 all nph iso 1 1 1", "fix 1 nph: the temperature is 0, too close to 0 to set the barostat's mass; "
+                                "give ptemp T"),
+    ("compute t all temp\nfix 1 all nvt temp 1 1 1\nfix_modify 1 temp t\nuncompute t",
+     "fix 1 nvt: temperature compute t is not defined"),
+    ("compute t all temp\ncompute p all pressure t\nfix 1 all nph iso 1 1 1 ptemp 1\nfix_modify 1 press p\n"
+     "uncompute p", "fix 1 nph: pressure compute p is not defined"),
+])
+def test_nh_refused_at_the_run(setup, message):
+    """LAMMPS 2025 stops a barostat without ptemp at T = 0 (it once guessed 1 or 300); computes named
+    by fix_modify must still exist when a run starts."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\ncreate_particle 1 single 1 1 1\n"
+                "create_particle 1 single 3 3 3\n" + setup)
+    with pytest.raises(ScriptError) as caught:
+        sim.command("run 1")
+    assert caught.value.message == message
+
+
+@pytest.mark.parametrize("line, message", [
     ("fix 2 all deform 1", "fix deform needs at least one of x, y, z with a style"),
     ("fix 2 all deform 0 x erate 0.1", "every must be >= 1 (got 0)"),
-    ("fix 2 all deform 1 x volume", "x volume: styles are final, delta, scale, vel, erate and trate (volume, "
-                                    "wiggle and variable are not supported)"),
+    ("fix 2 all deform 1 x shear 1", "x shear: styles are final, delta, scale, vel, erate, trate, volume, wiggle "
+                                     "and variable"),
+    ("fix 2 all deform 1 x volume", "x volume: another of x, y, z must change by a style other than volume for "
+                                    "this one to keep the volume"),
+    ("fix 2 all deform 1 x volume y volume z erate 0.1 z volume",
+     "x volume: another of x, y, z must change by a style other than volume for this one to keep the volume"),
+    ("fix 2 all deform 1 x wiggle 0.1 0", "x wiggle: the period must be > 0 (got 0)"),
+    ("fix 2 all deform 1 x wiggle 0.1", "x wiggle takes 2 number(s) (got 0.1)"),
+    ("fix 2 all deform 1 y variable v_a b", "y variable takes two variables v_LENGTH v_RATE (got v_a b)"),
     ("fix 2 all deform 1 x final 0", "x final takes 2 number(s) (got 0)"),
     ("fix 2 all deform 1 y scale big", "y scale takes 1 number(s) (got big)"),
     ("fix 2 all deform 1 xy erate 0.1", "xy: pdps boxes are orthogonal (no tilt), so only x, y and z can deform"),
@@ -165,6 +294,10 @@ def test_bad_deform(line, message):
                                                    "(it must stay > 0)"),
     ("fix 1 all nph iso 1 1 1\nfix 2 all deform 1 y erate 0.1", "fix 1 nph and fix 2 deform change the same box "
                                                                   "length"),
+    ("variable a equal 0.1\nfix 2 all deform 1 z variable v_a v_b", "fix 2 deform: variable b is not defined "
+                                                                       "(z variable)"),
+    ("variable a atom x\nvariable b equal 0\nfix 2 all deform 1 z variable v_a v_b",
+     "v_a is atom-style: name one element, v_a[i]"),
 ])
 def test_deform_refused_at_the_run(fixes, message):
     sim = Simulation(screen=False, log=None)
