@@ -131,6 +131,20 @@ def test_two_ranks_give_the_serial_thermo(tmp_path):
     np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)
 
 
+@pytest.mark.parametrize("case", ["npt_modify_temp_press", "deform_variable"])
+def test_two_ranks_give_the_serial_thermo_of_later_keywords(tmp_path, case):
+    """A pressure compute with its own (reused) temperature of one group and the fix's of another,
+    and a box length from variables with a volume axis and remap v, on 2 ranks: LAMMPS's serial
+    thermo to round-off."""
+    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
+    done = run_ranks(option_script(case).replace(
+        "run 100", "processors 2 1 1\nthermo_modify format float %.15g\nrun 100"), 2, tmp_path)
+    mine = thermo_rows(done.stdout)
+    reference = [[float(v) for v in row[1:]] for row in OPTIONS if row[0] == case]
+    assert [int(r[0]) for r in mine] == [0, 25, 50, 75, 100]
+    np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)
+
+
 CONSERVE = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5",
             "pair_coeff 1 1 1.0 1.0", "pair_coeff 2 2 0.5 1.2", "pair_modify shift yes", "timestep 0.001",
             "thermo 0"]
