@@ -13,21 +13,11 @@ from pdps_core.api import Simulation
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
 from analysis_computes import SCRIPTS  # noqa: E402
 
 
-def lammps_tables():
-    tables, name = {}, None
-    for line in (ROOT / "tests" / "data" / "lammps" / "analysis_computes.txt").read_text().splitlines():
-        if line.startswith("# "):
-            name = line[2:]
-            tables[name] = []
-        else:
-            tables[name].append([float(w) for w in line.split()])
-    return {name: np.array(rows) for name, rows in tables.items()}
-
-
-LAMMPS = lammps_tables()
+LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "analysis_computes.txt")
 
 
 @pytest.mark.parametrize("scene", SCRIPTS)

@@ -12,21 +12,11 @@ from pdps_core.api import Simulation
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
 from neighbor_comm import CASES, script  # noqa: E402
 
 
-def lammps_tables():
-    tables, case = {}, None
-    for line in (ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt").read_text().splitlines():
-        if line.startswith("# "):
-            case = line[2:]
-            tables[case] = []
-        else:
-            tables[case].append([float(w) for w in line.split()])
-    return {case: np.array(rows) for case, rows in tables.items()}
-
-
-LAMMPS = lammps_tables()
+LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt")
 
 
 @pytest.mark.parametrize("case", CASES)

@@ -14,21 +14,11 @@ from pdps_core.api import Simulation
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
 from units import STYLES, script  # noqa: E402
 
 
-def lammps_tables():
-    tables, style = {}, None
-    for line in (ROOT / "tests" / "data" / "lammps" / "units.txt").read_text().splitlines():
-        if line.startswith("# "):
-            style = line[2:]
-            tables[style] = []
-        else:
-            tables[style].append([float(w) for w in line.split()])
-    return {style: np.array(rows) for style, rows in tables.items()}
-
-
-LAMMPS = lammps_tables()
+LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "units.txt")
 
 
 @pytest.mark.parametrize("style", STYLES)

@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from lammps_run import run_lammps, thermo_lines  # noqa: E402
+from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "analysis_computes.txt"
@@ -91,11 +91,7 @@ run 100
 
 
 def main(lmp):
-    blocks = []
-    for name, script in SCRIPTS.items():
-        rows = thermo_lines(run_lammps(lmp, script, label=name))
-        blocks.append(f"# {name}\n" + "\n".join(" ".join(row) for row in rows))
-    OUT.write_text("\n".join(blocks) + "\n")
+    write_blocks(OUT, {name: thermo_lines(run_lammps(lmp, text, label=name)) for name, text in SCRIPTS.items()})
 
 
 if __name__ == "__main__":

@@ -33,3 +33,22 @@ def thermo_lines(log):
             break
         rows.append(line.split())
     return rows
+
+
+def write_blocks(path, tables):
+    """Thermo tables {name: rows of words} as one file: a "# name" line, then the rows."""
+    blocks = [f"# {name}\n" + "\n".join(" ".join(row) for row in rows) for name, rows in tables.items()]
+    Path(path).write_text("\n".join(blocks) + "\n")
+
+
+def read_blocks(path):
+    """The tables write_blocks wrote, as {name: float array (rows, columns)}."""
+    import numpy as np
+    tables, name = {}, None
+    for line in Path(path).read_text().splitlines():
+        if line.startswith("# "):
+            name = line[2:]
+            tables[name] = []
+        else:
+            tables[name].append([float(w) for w in line.split()])
+    return {name: np.array(rows) for name, rows in tables.items()}

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from lammps_run import run_lammps, thermo_lines  # noqa: E402
+from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt"
@@ -47,11 +47,7 @@ def script(case):
 
 
 def main(lmp):
-    blocks = []
-    for case in CASES:
-        rows = thermo_lines(run_lammps(lmp, script(case), label=case))
-        blocks.append(f"# {case}\n" + "\n".join(" ".join(row) for row in rows))
-    OUT.write_text("\n".join(blocks) + "\n")
+    write_blocks(OUT, {case: thermo_lines(run_lammps(lmp, script(case), label=case)) for case in CASES})
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from lammps_run import run_lammps, thermo_lines  # noqa: E402
+from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "units.txt"
@@ -53,11 +53,7 @@ run 100
 
 
 def main(lmp):
-    blocks = []
-    for style in STYLES:
-        rows = thermo_lines(run_lammps(lmp, script(style), label=style))
-        blocks.append(f"# {style}\n" + "\n".join(" ".join(row) for row in rows))
-    OUT.write_text("\n".join(blocks) + "\n")
+    write_blocks(OUT, {style: thermo_lines(run_lammps(lmp, script(style), label=style)) for style in STYLES})
 
 
 if __name__ == "__main__":

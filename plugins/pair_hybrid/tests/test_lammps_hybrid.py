@@ -3,6 +3,7 @@ two-type fluid (data/hybrid.txt, recorded with LAMMPS by benchmarks/lammps_refer
 a hybrid of one style is that style; overlaid styles add; bad assignments get one line."""
 
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,24 +13,9 @@ from pdps_core.api import ScriptError, Simulation, observables
 from pdps_core.testing import build, forces_by_tag
 
 DATA = Path(__file__).parent / "data"
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from pair_hybrid import CASES  # noqa: E402  (the recorder's cases, run as they are)
 ROWS = [line.split("\t") for line in (DATA / "hybrid.txt").read_text().splitlines()]
-CASES = {
-    "hybrid": "pair_style hybrid lj/cut 2.5 soft 1.5\npair_coeff 1 1 lj/cut 1.0 1.0\npair_coeff 2 2 soft 5.0\n"
-              "pair_coeff 1 2 lj/cut 0.8 1.1 2.2",
-    "hybrid_none_table": "pair_style hybrid lj/cut 2.5 table spline 600\npair_coeff 1 1 lj/cut 1.0 1.0\n"
-                         "pair_coeff 2 2 table pots.table MORSE_FP\npair_coeff 1 2 none",
-    "hybrid_mixed": "pair_style hybrid lj/cut 2.5\npair_coeff 1 1 lj/cut 1.0 1.0\n"
-                    "pair_coeff 2 2 lj/cut 0.5 1.2 2.0\npair_modify mix arithmetic shift yes",
-    "overlay": "pair_style hybrid/overlay lj/cut 2.5 yukawa 1.5 2.0\npair_coeff * * lj/cut 1.0 1.0\n"
-               "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 1 yukawa 2.0\npair_coeff 2 2 yukawa 3.0 1.8",
-    "overlay_tail": "pair_style hybrid/overlay lj/cut 2.5 soft 1.2\npair_coeff 1 1 lj/cut 1.0 1.0\n"
-                    "pair_coeff 2 2 lj/cut 0.5 1.2\npair_coeff 1 2 lj/cut 0.7 1.1\npair_coeff 1 1 soft 2.0\n"
-                    "pair_coeff 2 2 soft 3.0\npair_coeff 1 2 soft 2.5\npair_modify tail yes",
-    "hybrid_dpd": "comm_modify vel yes\npair_style hybrid dpd 0.0 1.0 34387 lj/cut 2.5\n"
-                  "pair_coeff 1 1 dpd 25.0 4.5\npair_coeff 2 2 lj/cut 1.0 1.0\npair_coeff 1 2 dpd 10.0 4.5 1.2",
-    "overlay_dpd": "comm_modify vel yes\npair_style hybrid/overlay lj/cut 2.5 dpd 0.0 1.0 34387\n"
-                   "pair_coeff * * lj/cut 1.0 1.0\npair_coeff * * dpd 0.0 4.5 1.0",
-}
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
