@@ -85,6 +85,9 @@ DATA_SCRIPTS = {
            "pair_coeff * * 25 4.5\nfix 1 all nve\ntimestep 0.02\n" + OUTPUT,
     "lj": "units lj\nboundary p p p\nread_data data.fuzz\npair_style lj/cut 2.0\n"
           "pair_coeff * * 1.0 1.0\nfix 1 all nve\ntimestep 0.002\n" + OUTPUT,
+    # the data file's Pair Coeffs and PairIJ Coeffs set the coefficients (pair_style first, as LAMMPS)
+    "lj_coeffs": "units lj\nboundary p p p\npair_style lj/cut 2.0\nread_data data.fuzz\nfix 1 all nve\n"
+                 "timestep 0.002\n" + OUTPUT,
     "dpd2d": "units lj\ndimension 2\nboundary p p p\nread_data data.fuzz\n"
              "pair_style dpd 1.0 1.0 5\npair_coeff * * 25 4.5\nfix 1 all nve\ntimestep 0.02\n" + OUTPUT,
     "sphere": "particle_style sphere\nboundary p p f\nread_data data.fuzz\n"
@@ -146,6 +149,41 @@ Angles
 
 1 1 2 1 3
 """
+PAIR_COEFFS = """four particles whose coefficients the data file gives (LAMMPS's write_data writes them)
+
+4 atoms
+2 atom types
+
+0 4 xlo xhi
+0 4 ylo yhi
+0 4 zlo zhi
+
+Masses
+
+1 1.0
+2 2.0
+
+Pair Coeffs # lj/cut
+
+1 1.0 1.0
+2 0.5 1.1
+
+PairIJ Coeffs # lj/cut
+
+1 2 0.8 1.05 1.8
+
+Atoms # atomic
+
+1 1 0.5 0.5 0.5 0 0 0
+2 2 1.6 0.5 0.5 0 0 0
+3 1 0.5 1.7 0.6 0 0 0
+4 2 2.5 2.5 2.5 1 0 0
+
+Velocities
+
+1 0.1 0.0 0.0
+4 -0.2 0.1 0.0
+"""
 SPHERES = """spheres in a box with a fixed floor
 
 6 atoms
@@ -200,6 +238,8 @@ def data_seeds(folder):
     seeds.append(Seed("spheres", {SCRIPT: DATA_SCRIPTS["sphere"].encode(), DATA: SPHERES.encode()},
                       target=DATA))
     seeds.append(Seed("molecules", {SCRIPT: DATA_SCRIPTS["full"].encode(), DATA: MOLECULES.encode()},
+                      target=DATA))
+    seeds.append(Seed("pair_coeffs", {SCRIPT: DATA_SCRIPTS["lj_coeffs"].encode(), DATA: PAIR_COEFFS.encode()},
                       target=DATA))
     lammps = (SEEDS / "particles.data").read_bytes()           # image flags, comments, two types
     seeds.append(Seed("particles", {SCRIPT: DATA_SCRIPTS["lj"].encode(), DATA: lammps}, target=DATA))
