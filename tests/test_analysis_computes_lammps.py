@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import thermo_rows
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -27,10 +28,8 @@ def test_scene_prints_lammps_thermo(tmp_path, scene):
     sim = Simulation(screen=False, log=str(log))
     sim.file(str(tmp_path / "in.scene"))
     sim.close()
-    lines = log.read_text().splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
     lammps = LAMMPS[scene]
-    mine = np.array([[float(w) for w in line.split()] for line in lines[start + 1:start + 1 + len(lammps)]])
+    mine = np.array(thermo_rows(log.read_text()))
     assert mine.shape == lammps.shape and len(lammps) >= 6
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
     # the printed digits; a msd of 0 at step 0 is roundoff (1e-29) in both

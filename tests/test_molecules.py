@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import thermo_rows
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data" / "lammps"
@@ -34,17 +35,6 @@ def lj(r):
     return 4.0 * (r ** -12 - r ** -6)
 
 
-def thermo_table(text):
-    lines = text.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    rows = []
-    for line in lines[start + 1:]:
-        if not line.split() or not line.split()[0].isdigit():
-            break
-        rows.append([float(w) for w in line.split()])
-    return np.array(rows)
-
-
 @pytest.fixture(scope="module")
 def lammps_script_run(tmp_path_factory):
     folder = tmp_path_factory.mktemp("molecules")
@@ -59,7 +49,7 @@ def lammps_script_run(tmp_path_factory):
 
 def test_the_molecule_script_prints_lammps_thermo(lammps_script_run):
     _, log = lammps_script_run
-    mine, lammps = thermo_table(log), thermo_table((DATA / "molecules.txt").read_text())
+    mine, lammps = np.array(thermo_rows(log)), np.array(thermo_rows((DATA / "molecules.txt").read_text()))
     assert mine.shape == lammps.shape == (11, 7)
     np.testing.assert_array_equal(mine[:, :2], lammps[:, :2])             # steps, 252 atoms
     np.testing.assert_allclose(mine[:, 2:], lammps[:, 2:], rtol=1e-12, atol=1e-13)

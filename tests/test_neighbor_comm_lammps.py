@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import thermo_rows
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -26,9 +27,7 @@ def test_case_prints_lammps_thermo(tmp_path, case):
     sim = Simulation(screen=False, log=str(log))
     sim.file(str(tmp_path / "in.case"))
     sim.close()
-    lines = log.read_text().splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    mine = np.array([[float(w) for w in line.split()] for line in lines[start + 1:start + 7]])
+    mine = np.array(thermo_rows(log.read_text()))
     lammps = LAMMPS[case]
     assert mine.shape == lammps.shape == (6, 4)
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import thermo_rows
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -28,10 +29,8 @@ def test_argon_in_each_unit_system_prints_lammps_thermo(tmp_path, style):
     sim = Simulation(screen=False, log=str(log))
     sim.file(str(tmp_path / "in.argon"))
     sim.close()
-    lines = log.read_text().splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    mine = np.array([[float(w) for w in line.split()] for line in lines[start + 1:start + 12]])
     lammps = LAMMPS[style]
+    mine = np.array(thermo_rows(log.read_text()))
     assert mine.shape == lammps.shape == (11, 6)
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
     # steps 0 to 100: temp, pe, ke, etotal, press to the printed digits (they agree to 7e-15)
