@@ -20,12 +20,14 @@ pdps_core.testing.bench_data, byte for byte what the kit's make_data.py writes.
 
 import re
 import statistics
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 from pdps_core.testing import bench_data
+
+sys.path.insert(0, str(Path(__file__).parent))
+from lammps_run import run_lammps_file, thermo_table  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 PAIR_DATA = ROOT / "plugins" / "pair_gran" / "tests" / "data"
@@ -184,7 +186,7 @@ def record_case(lmp, name, case):
     with tempfile.TemporaryDirectory() as folder:
         (Path(folder) / f"{name}.data").write_text((case["folder"] / f"{name}.data").read_text())
         (Path(folder) / f"{name}.in").write_text(script.replace(run_line, dump + run_line))
-        run_lammps(lmp, folder, f"{name}.in")
+        run_lammps_file(lmp, folder, f"{name}.in")
         rows = read_dump((Path(folder) / f"{name}.dump").read_text())
     text = [f"# {name}: LAMMPS's state every {every} steps (step id x y z vx vy vz omegax omegay omegaz)"]
     text += [" ".join(row) for row in rows]
@@ -206,28 +208,6 @@ def read_dump(text):
     return rows
 
 
-def run_lammps(lmp, folder, script, variables=()):
-    command = [lmp, "-in", script, "-log", "log.lammps", "-screen", "none"]
-    for name, value in variables:
-        command += ["-var", name, str(value)]
-    done = subprocess.run(command, cwd=folder, capture_output=True, text=True)
-    log = (Path(folder) / "log.lammps").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed on {script}:\n{log[-2000:]}")
-    return log
-
-
-def thermo_table(log):
-    lines = log.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("Loop time"):
-            break
-        rows.append(line.split())
-    return lines[start].split(), rows
-
-
 def gran_box(lmp):
     source = (GRAN_BOX / "in.gran_box").read_text()
     variables = (("scenes", "."), ("nsteps", NSTEPS), ("navg", NSTEPS // 2))
@@ -235,12 +215,12 @@ def gran_box(lmp):
     with tempfile.TemporaryDirectory() as folder:
         bench_data("gran_box", Path(folder) / "gran_box.data")
         (Path(folder) / "in.gran_box").write_text(source)
-        header, rows = thermo_table(run_lammps(lmp, folder, "in.gran_box", variables))
+        header, rows = thermo_table(run_lammps_file(lmp, folder, "in.gran_box", variables))
         for k in range(SEEDS):
             text = re.sub(r"^(velocity all create \S+) (\d+)", lambda m: f"{m[1]} {int(m[2]) + 104729 * (k + 1)}",
                           source, flags=re.M)
             (Path(folder) / "in.seeded").write_text(text)
-            _, seeded = thermo_table(run_lammps(lmp, folder, "in.seeded", variables))
+            _, seeded = thermo_table(run_lammps_file(lmp, folder, "in.seeded", variables))
             finals.append(float(dict(zip(header, seeded[-1]))["KinEng"]))
     lines = [f"# in.gran_box in LAMMPS, nsteps {NSTEPS}: the thermo table of the script as it is (seed 99)",
              " ".join(header)] + [" ".join(row) for row in rows]

@@ -15,16 +15,24 @@ def run_lammps(lmp, script, files=(), label=""):
         for path in files:
             shutil.copy(path, Path(folder) / Path(path).name)
         (Path(folder) / "in.case").write_text(script)
-        done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        log = (Path(folder) / "log.lammps").read_text()
+        return run_lammps_file(lmp, folder, "in.case", label=label)
+
+
+def run_lammps_file(lmp, folder, script, variables=(), label=""):
+    """The log of LAMMPS run on the file ``script`` in ``folder``, with ``-var NAME VALUE`` for each
+    (name, value) of ``variables``."""
+    command = [lmp, "-in", script, "-log", "log.lammps", "-screen", "none"]
+    for name, value in variables:
+        command += ["-var", name, str(value)]
+    done = subprocess.run(command, cwd=folder, capture_output=True, text=True)
+    log = (Path(folder) / "log.lammps").read_text()
     if done.returncode != 0:
-        sys.exit(f"LAMMPS failed ({label}):\n{log[-2000:]}")
+        sys.exit(f"LAMMPS failed ({label or script}):\n{log[-2000:]}")
     return log
 
 
-def thermo_lines(log):
-    """The lines of the log's first thermo table after its header, split into words."""
+def thermo_table(log):
+    """The header and the lines of the log's first thermo table, split into words."""
     lines = log.splitlines()
     start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
     rows = []
@@ -32,7 +40,12 @@ def thermo_lines(log):
         if line.startswith("Loop time"):
             break
         rows.append(line.split())
-    return rows
+    return lines[start].split(), rows
+
+
+def thermo_lines(log):
+    """The lines of the log's first thermo table after its header, split into words."""
+    return thermo_table(log)[1]
 
 
 def write_blocks(path, tables):

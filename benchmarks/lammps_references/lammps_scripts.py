@@ -16,12 +16,14 @@ make_data.py writes. Results go to tests/lammps_scripts/reference/.
 
 import re
 import statistics
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 from pdps_core.testing import bench_data
+
+sys.path.insert(0, str(Path(__file__).parent))
+from lammps_run import run_lammps_file, thermo_table  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPTS = ROOT / "tests" / "lammps_scripts"
@@ -32,33 +34,15 @@ STOCHASTIC = {"dpd_water": ("in.dpd_water", "dpd_water", 300, 150),
               "dpd_gw": ("in.dpd_gw", "dpd_gw", 100, 50)}
 
 
-def run_lammps(lmp, folder, script, nsteps, navg):
-    done = subprocess.run([lmp, "-in", script, "-var", "scenes", ".", "-var", "nsteps", str(nsteps),
-                           "-var", "navg", str(navg), "-log", "log.lammps", "-screen", "none"],
-                          cwd=folder, capture_output=True, text=True)
-    log = (Path(folder) / "log.lammps").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed on {script}:\n{log[-2000:]}")
-    return log
-
-
-def thermo_rows(log):
-    """The thermo table of the log: header and rows, as printed."""
-    lines = log.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("Loop time"):
-            break
-        rows.append(line.split())
-    return lines[start].split(), rows
+def run_script(lmp, folder, script, nsteps, navg):
+    return run_lammps_file(lmp, folder, script, (("scenes", "."), ("nsteps", nsteps), ("navg", navg)))
 
 
 def lj_melt(lmp):
     with tempfile.TemporaryDirectory() as folder:
         bench_data("lj_fcc", Path(folder) / "lj_fcc.data")
         (Path(folder) / "in.lj_melt").write_text((SCRIPTS / "in.lj_melt").read_text())
-        header, rows = thermo_rows(run_lammps(lmp, folder, "in.lj_melt", 100, 50))
+        header, rows = thermo_table(run_script(lmp, folder, "in.lj_melt", 100, 50))
     text = " ".join(header) + "\n" + "".join(" ".join(row) + "\n" for row in rows)
     (OUT / "lj_melt.txt").write_text(text)
     print(text)
@@ -76,7 +60,7 @@ def stochastic(lmp, scene):
             text = re.sub(r"^(velocity all create \S+) (\d+)", lambda m: f"{m[1]} {int(m[2]) + 104729 * (k + 1)}",
                           text, flags=re.M)
             (Path(folder) / script).write_text(text)
-            header, rows = thermo_rows(run_lammps(lmp, folder, script, nsteps, navg))
+            header, rows = thermo_table(run_script(lmp, folder, script, nsteps, navg))
             last = dict(zip(header, rows[-1]))
             results.append((float(last["f_avg[1]"]), float(last["f_avg[2]"])))
     temps, pressures = zip(*results)
