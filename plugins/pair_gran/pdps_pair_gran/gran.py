@@ -88,22 +88,24 @@ def store_spring(history, owner, i, j, slot_i, slot_j, shear):
 @njit(cache=True)
 def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offsets, neighbors, nlocal,
                  model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
-                 partner, history, touched):
+                 partner, history, touched, n, vtr, shear, tangential):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full."""
+    contact slots are full. ``n``, ``vtr``, ``shear``, ``tangential`` (3 each): one contact's
+    normal, sliding velocity, spring and tangential force."""
     with_history = model != lammps_classic.HOOKE
-    n = np.empty(3)
-    vtr = np.empty(3)
-    shear = np.zeros(3)
-    tangential = np.empty(3)
+    shear[:] = 0.0
     for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
+        radi = radius[i]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            delx = x[i, 0] - x[j, 0]
-            dely = x[i, 1] - x[j, 1]
-            delz = x[i, 2] - x[j, 2]
+            delx = xi0 - x[j, 0]
+            dely = xi1 - x[j, 1]
+            delz = xi2 - x[j, 2]
             rsq = delx * delx + dely * dely + delz * delz
-            radsum = radius[i] + radius[j]
+            radsum = radi + radius[j]
             if rsq >= radsum * radsum or rsq == 0.0:
                 # coincident centres have no normal (LAMMPS divides by zero): no force
                 continue
@@ -115,9 +117,9 @@ def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offset
             vr1 = v[i, 1] - v[j, 1]
             vr2 = v[i, 2] - v[j, 2]
             v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-            w0 = radius[i] * omega[i, 0] + radius[j] * omega[j, 0]
-            w1 = radius[i] * omega[i, 1] + radius[j] * omega[j, 1]
-            w2 = radius[i] * omega[i, 2] + radius[j] * omega[j, 2]
+            w0 = radi * omega[i, 0] + radius[j] * omega[j, 0]
+            w1 = radi * omega[i, 1] + radius[j] * omega[j, 1]
+            w2 = radi * omega[i, 2] + radius[j] * omega[j, 2]
             vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
             vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
             vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
@@ -131,7 +133,7 @@ def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offset
                 slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
                 if update and (slot_i < 0 or slot_j < 0):
                     return tag[i] if slot_i < 0 else tag[j]
-            r_eff = radius[i] * radius[j] / radsum
+            r_eff = radi * radius[j] / radsum
             fn = lammps_classic.classic_contact(model, False, radsum - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
                                                 gamma_n, gamma_t, xmu, limit_damping, update, dt,
                                                 shear, tangential)
@@ -144,9 +146,9 @@ def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offset
                 force = fn * n[d] + tangential[d]
                 f[i, d] += force
                 f[j, d] -= force
-            torque[i, 0] -= radius[i] * cx
-            torque[i, 1] -= radius[i] * cy
-            torque[i, 2] -= radius[i] * cz
+            torque[i, 0] -= radi * cx
+            torque[i, 1] -= radi * cy
+            torque[i, 2] -= radi * cz
             torque[j, 0] -= radius[j] * cx
             torque[j, 1] -= radius[j] * cy
             torque[j, 2] -= radius[j] * cz
@@ -172,12 +174,50 @@ def merge_mirrors(partner, history, touched, index, rows, capacity):
 
 
 @njit(cache=True)
-def free_stale(partner, touched, nlocal):
-    """Forget the contacts no pair computation touched this step (spheres apart)."""
+def free_stale(partner, history, touched, nlocal, nall):
+    """Forget the contacts no pair computation touched this step (spheres apart) and clear the
+    flags. A particle's open slots are kept first (the last one moves into a freed slot), so a row
+    is read only up to its first free slot: most particles touch nothing."""
+    capacity = partner.shape[1]
+    width = history.shape[1] // capacity
     for i in range(nlocal):
-        for s in range(partner.shape[1]):
-            if partner[i, s] >= 0 and not touched[i, s]:
+        count = 0
+        while count < capacity and partner[i, count] >= 0:
+            count += 1
+        s = 0
+        while s < count:
+            if touched[i, s]:
+                touched[i, s] = False
+                s += 1
+                continue
+            count -= 1
+            partner[i, s] = partner[i, count]
+            touched[i, s] = touched[i, count]
+            for h in range(width):
+                history[i, s * width + h] = history[i, count * width + h]
+            partner[i, count] = -1
+            touched[i, count] = False
+    for i in range(nlocal, nall):
+        for s in range(capacity):
+            touched[i, s] = False
+
+
+@njit(cache=True)
+def pack_slots(partner, history, nall):
+    """Move each particle's open slots first, in order (free_stale's layout), whatever wrote them."""
+    capacity = partner.shape[1]
+    width = history.shape[1] // capacity
+    for i in range(nall):
+        count = 0
+        for s in range(capacity):
+            if partner[i, s] < 0:
+                continue
+            if s != count:
+                partner[i, count] = partner[i, s]
                 partner[i, s] = -1
+                for h in range(width):
+                    history[i, count * width + h] = history[i, s * width + h]
+            count += 1
 
 
 class PairGran(Pair):
@@ -193,6 +233,9 @@ class PairGran(Pair):
         super().__init__(sim, args)
         self.history = None
         self._touched = None
+        self._scratch = tuple(np.zeros(3) for _ in range(4))
+        self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
+        self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
         self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
 
     def init(self, ntypes):
@@ -202,7 +245,7 @@ class PairGran(Pair):
                               "and rotation)")
         if self.model != lammps_classic.HOOKE:
             self.open_history()
-        self.freeze_bit = self.frozen_group_bit(sim)
+        self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
         self.check_box()
         cutoffs = super().init(ntypes)
@@ -289,27 +332,32 @@ class PairGran(Pair):
         if self.history is not None:
             partner, values = self.history.partner, self.history.values
             capacity = self.history.capacity
+            if not update:
+                pack_slots(partner, values, p.nall)
         else:
-            partner, values, capacity = np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2
+            partner, values, capacity = self._no_history
         touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
-        bad = gran_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.mask, p.f, p.torque, p.tag, owner,
-                           nlist.offsets, nlist.neighbors, p.nlocal, self.model, self.kn, self.kt,
-                           self.gamma_n, self.gamma_t, self.args.xmu, self.args.limit_damping is not None,
-                           np.uint32(self.freeze_bit), sim.dt, update, partner, values, touched)
+        offsets, neighbors = nlist.offsets, nlist.neighbors
+        a = p.arrays
+        bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["mask"], a["f"], a["torque"],
+                           a["tag"], owner, offsets, neighbors, p.nlocal, self.model, self.kn, self.kt,
+                           self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, self.freeze_bit,
+                           sim.dt, update, partner, values, touched, *self._scratch)
         if self.history is not None and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
-            free_stale(partner, touched, p.nlocal)
+            if bad < 0:
+                free_stale(partner, values, touched, p.nlocal, p.nall)
         if bad >= 0:
+            touched[:] = False
             raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "
                                   f"raise max_contacts of pair_style {self.name}")
         self.energy = 0.0
 
     def touched_flags(self, rows, capacity):
-        """Which slots a contact touched this step, zeroed; reused between steps."""
+        """Which slots a contact touched this step; free_stale clears what it set, so the flags are
+        all False between steps and are allocated only when the particles outgrow them."""
         if self._touched is None or self._touched.shape[0] < rows or self._touched.shape[1] != capacity:
             self._touched = np.zeros((max(rows, 1), capacity), dtype=np.bool_)
-        else:
-            self._touched[:rows] = False
         return self._touched
 
     def collect_mirrors(self, sim, owner, touched):
