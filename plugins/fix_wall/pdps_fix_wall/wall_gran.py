@@ -60,6 +60,10 @@ Syntax::
     STYLE = hooke | hooke/history | hertz/history
     WALLSTYLE args = xplane|yplane|zplane LO HI  |  zcylinder RADIUS
 
+Cost: at each neighbor list rebuild the fix lists the particles within their radius plus the skin
+of the wall (plus its stroke when it wiggles), and at each step visits only those: no particle can
+reach the wall before the next rebuild without moving more than the skin, when the run warns.
+
 Differences from LAMMPS: a rotating cylinder (``zcylinder ... shear x|y``) has the wall velocity of
 each particle's own contact point (LAMMPS adds every contacting particle's into one running sum);
 with gamma_n = 0 the tangential damping is m_i gamma_t (LAMMPS's fix computes gamma_t/gamma_n and
@@ -111,20 +115,36 @@ class CylinderWall(Motion):
 
 
 @njit(cache=True)
-def wall_gran_forces(x, v, omega, radius, rmass, f, torque, mask, groupbit, nlocal, wallstyle, lo,
-                     hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
-                     limit_damping, dt, update, history):
-    """Wall forces and torques on the group's particles. ``spin``: surface speed of a cylinder
-    turning about z (0 otherwise); ``history`` (nlocal, 3) springs, or one scratch row for hooke."""
-    with_history = model != lammps_classic.HOOKE
-    d = np.empty(3)
-    n = np.empty(3)
-    vw = np.empty(3)
-    vtr = np.empty(3)
-    tangential = np.empty(3)
+def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, margin, near, history,
+              with_history):
+    """The group's particles within their radius plus ``margin`` of the wall, into ``near``;
+    returns how many. The springs of the group's others are zeroed (none of them touches the wall)."""
+    count = 0
     for i in range(nlocal):
-        if not (mask[i] & groupbit):
-            continue
+        if mask[i] & groupbit:
+            if wallstyle == ZCYLINDER:
+                gap = abs(cylinder - math.sqrt(x[i, 0] * x[i, 0] + x[i, 1] * x[i, 1]))
+            else:
+                gap = min(abs(x[i, wallstyle] - lo), abs(hi - x[i, wallstyle]))
+            if gap < radius[i] + margin:
+                near[count] = i
+                count += 1
+            elif with_history:
+                for k in range(3):
+                    history[i, k] = 0.0
+    return count
+
+
+@njit(cache=True)
+def wall_gran_forces(x, v, omega, radius, rmass, f, torque, near, count, wallstyle, lo,
+                     hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
+                     limit_damping, dt, update, history, d, n, vw, vtr, tangential):
+    """Wall forces and torques on the particles ``near[:count]``. ``spin``: surface speed of a
+    cylinder turning about z (0 otherwise); ``history`` (nlocal, 3) springs, or one scratch row
+    for hooke; ``d``, ``n``, ``vw``, ``vtr``, ``tangential``: scratch vectors."""
+    with_history = model != lammps_classic.HOOKE
+    for c in range(count):
+        i = near[c]
         d[:] = 0.0
         r_wall = 0.0
         for k in range(3):
@@ -210,6 +230,9 @@ class FixWallGran(Fix):
         self.wiggle, self.shear = wall.wiggle, wall.shear
         self.time_origin = sim.step
         self.spring = None
+        self._near, self._count = np.empty(0, dtype=np.int64), 0
+        self._still, self._no_history = np.zeros(3), np.zeros((1, 3))
+        self._scratch = tuple(np.zeros(3) for _ in range(5))
         if self.model != lammps_classic.HOOKE:
             name = f"wall_gran_{id}"
             sim.particles.request(name, width=3)
@@ -255,16 +278,39 @@ class FixWallGran(Fix):
         return lo, hi, velocity, spin
 
     def setup(self, sim):
+        self.pre_neighbor(sim)
         self.forces(sim, update=False)
+
+    def pre_neighbor(self, sim):
+        """The particles that may touch the wall before the next rebuild: within their radius plus
+        the skin (a rebuild comes before any particle moves half of it; a wiggling plane adds its
+        stroke). Only they are visited at each step."""
+        p = sim.particles
+        a = p.arrays
+        if len(self._near) < p.nlocal:
+            self._near = np.empty(p.nall, dtype=np.int64)
+        margin = sim.neighbor.skin
+        if self.wiggle and AXES[self.wiggle[0]] == self.wallstyle:
+            margin += 2.0 * abs(self.wiggle[1])
+        lo, hi = self.lo, self.hi
+        if self.wiggle:
+            lo, hi, _, _ = self.wall_state(sim)
+        history = a[self.spring] if self.spring else self._no_history
+        self._count = near_wall(a["x"], a["radius"], a["mask"], sim.groups.bit(self.group), p.nlocal,
+                                self.wallstyle, lo, hi, self.cylinder, margin, self._near, history,
+                                self.spring is not None)
 
     def post_force(self, sim):
         self.forces(sim, update=True)
 
     def forces(self, sim, update):
-        p = sim.particles
-        lo, hi, velocity, spin = self.wall_state(sim)
-        history = p.arrays[self.spring] if self.spring else np.zeros((1, 3))
-        wall_gran_forces(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.mask,
-                         np.uint32(sim.groups.bit(self.group)), p.nlocal, self.wallstyle, lo, hi,
-                         self.cylinder, velocity, spin, self.model, self.kn, self.kt, self.gamma_n,
-                         self.gamma_t, self.xmu, self.limit_damping, sim.dt, update, history)
+        a = sim.particles.arrays
+        if self.wiggle or self.shear:
+            lo, hi, velocity, spin = self.wall_state(sim)
+        else:
+            lo, hi, velocity, spin = self.lo, self.hi, self._still, 0.0
+        history = a[self.spring] if self.spring else self._no_history
+        wall_gran_forces(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["f"], a["torque"], self._near,
+                         self._count, self.wallstyle, lo, hi, self.cylinder, velocity, spin, self.model,
+                         self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, sim.dt,
+                         update, history, *self._scratch)

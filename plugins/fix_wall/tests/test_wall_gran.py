@@ -173,6 +173,32 @@ def test_the_spring_grows_in_contact_and_is_zeroed_when_the_sphere_leaves(tmp_pa
     assert (sim.particles.arrays["wall_gran_w"][0] == 0.0).all()
 
 
+@pytest.mark.parametrize("neighbor", ["neigh_modify delay 0 every 1 check yes", "neigh_modify every 40 check no"])
+def test_a_sphere_arriving_from_far_between_rebuilds_bounces_as_if_always_watched(tmp_path, neighbor):
+    """Only particles within radius + skin of the wall at a rebuild are visited: a sphere thrown
+    from 10 radii away (0.005 per step, the skin 0.3 crossed in 60 steps) is still caught by the
+    floor, and bounces with the restitution of a contact followed at every step: Hooke's
+    e = exp(-pi zeta / sqrt(1 - zeta^2)) with m* gamma_n = 50, k = 2e5 (LAMMPS's damping)."""
+    sphere_on_wall(tmp_path, f"hooke {HOOKE} zplane 0.0 NULL", (5, 5, 5.0))
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(textwrap.dedent(f"""\
+        units lj
+        atom_style sphere
+        boundary p p f
+        read_data {tmp_path / 'one.data'}
+        {neighbor}
+        timestep 0.0001
+        fix 1 all test/nve_sphere
+        fix w all wall/gran hooke 200000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL
+        """))
+    sim.particles.v[0] = (0.0, 0.0, -50.0)
+    sim.command("run 1000")
+    zeta = 50.0 / (2.0 * math.sqrt(200000.0))
+    restitution = math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta * zeta))
+    assert sim.v[0, 2] > 0.0 and sim.x[0, 2] > 0.5
+    assert sim.v[0, 2] == pytest.approx(50.0 * restitution, rel=2e-2)
+
+
 @pytest.mark.parametrize("words, message", [
     ("hooke/histroy 1 NULL 1 NULL 0.5 1 zplane 0 NULL",
      "style must be one of 'hooke', 'hooke/history' or 'hertz/history' (got hooke/histroy)"),
