@@ -22,12 +22,25 @@ def chosen(sim, group, region=None):
 
 
 @njit(cache=True)
-def add_weight(f, mass, mask, groupbit, nlocal, acceleration):
-    """f += m a on the group's owned particles (every step of a granular run: no temporaries)."""
+def add_weight(f, mass, mask, groupbit, nlocal, ax, ay, az):
+    """f += m a on the group's owned particles, per-particle masses (every step of a granular run:
+    no temporaries)."""
     for i in range(nlocal):
         if mask[i] & groupbit:
-            for d in range(3):
-                f[i, d] += mass[i] * acceleration[d]
+            f[i, 0] += mass[i] * ax
+            f[i, 1] += mass[i] * ay
+            f[i, 2] += mass[i] * az
+
+
+@njit(cache=True)
+def add_type_weight(f, type_, type_mass, mask, groupbit, nlocal, ax, ay, az):
+    """f += m a on the group's owned particles, masses per type."""
+    for i in range(nlocal):
+        if mask[i] & groupbit:
+            m = type_mass[type_[i]]
+            f[i, 0] += m * ax
+            f[i, 1] += m * ay
+            f[i, 2] += m * az
 
 
 def require_spheres(sim, what):

@@ -40,9 +40,9 @@ from typing import Literal
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, observables, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from ._common import add_weight
+from ._common import add_type_weight, add_weight
 
 VALUES = {"vector": "X Y Z", "chute": "ANGLE", "spherical": "PHI THETA"}
 
@@ -89,12 +89,17 @@ class FixGravity(Fix):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         self.direction = direction(args.style, args.values, sim.dimension)
-        self.acceleration = args.magnitude * self.direction
+        self.acceleration = tuple(float(c) for c in args.magnitude * self.direction)
 
     def setup(self, sim):
         self.post_force(sim)
 
     def post_force(self, sim):
         p = sim.particles
-        add_weight(p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group), p.nlocal,
-                   self.acceleration)
+        a = p.arrays
+        ax, ay, az = self.acceleration
+        if "rmass" in a:
+            add_weight(a["f"], a["rmass"], a["mask"], sim.groups.bit(self.group), p.nlocal, ax, ay, az)
+        else:
+            add_type_weight(a["f"], a["type"], sim.mass, a["mask"], sim.groups.bit(self.group), p.nlocal,
+                            ax, ay, az)

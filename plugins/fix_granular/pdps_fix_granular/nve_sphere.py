@@ -36,7 +36,7 @@ from typing import Literal
 
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, observables
+from pdps_core.api import Fix, ScriptError, StyleArgs
 
 from ._common import require_radii, require_spheres
 
@@ -94,10 +94,12 @@ class FixNVESphere(Fix):
 
     def initial_integrate(self, sim):
         p = sim.particles
-        sphere_initial(p.x, p.v, p.f, p.omega, p.torque, p.radius, observables.masses(sim), p.mask,
+        a = p.arrays
+        sphere_initial(a["x"], a["v"], a["f"], a["omega"], a["torque"], a["radius"], a["rmass"], a["mask"],
                        sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)
 
     def final_integrate(self, sim):
         p = sim.particles
-        sphere_final(p.v, p.f, p.omega, p.torque, p.radius, observables.masses(sim), p.mask,
+        a = p.arrays
+        sphere_final(a["v"], a["f"], a["omega"], a["torque"], a["radius"], a["rmass"], a["mask"],
                      sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)
