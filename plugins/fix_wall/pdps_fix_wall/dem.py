@@ -53,6 +53,10 @@ enters the contact velocity; others slide without rotating. Forces are added in 
 at setup, without advancing the contact history). The run warns when the time step resolves the
 lightest particle's contact time with fewer than 10 steps.
 
+Cost: at each neighbor list rebuild the fix asks the regions which of its particles lie within the
+largest contact distance plus the skin of a surface, and at each step visits only those (no particle
+reaches a wall before the next rebuild without moving more than the skin, when the run warns).
+
 Example (PDPS manual)::
 
     region wall1 polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0
@@ -73,23 +77,40 @@ ELEMENT_BITS = 32           # history key = wall number << 32 | element id on th
 @njit(cache=True)
 def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, v, omega,
                     f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu, per_mass,
-                    e_star, g_star, beta, dt, update):
-    """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``.
+                    e_star, g_star, beta, dt, update, used, slots):
+    """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``
+    (``used``: one flag per history slot; ``slots``: one row per contact, at least).
     Returns -1, or the index of a particle whose contact history overflowed."""
-    used = np.empty(partner.shape[1], dtype=np.bool_)
-    most = 0
-    for k in range(len(chosen)):
-        most = max(most, offsets[k + 1] - offsets[k])
-    slots = np.empty(max(most, 1), dtype=np.int64)
     for k in range(len(chosen)):
         i = chosen[k]
         ok = particle_wall_contacts(i, offsets[k], offsets[k + 1], distance, normal, key,
                                     wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
                                     partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
-                                    g_star, beta, dt, update, used, slots)
+                                    g_star, beta, dt, update, used, slots[offsets[k]:])
         if not ok:
             return i
     return -1
+
+
+@njit(cache=True)
+def contact_offsets(index, count, offsets):
+    """offsets[k]..offsets[k+1]: the rows of ``index`` (sorted) that belong to point k < count."""
+    row = 0
+    for k in range(count + 1):
+        while row < len(index) and index[row] < k:
+            row += 1
+        offsets[k] = row
+
+
+@njit(cache=True)
+def forget_far(partner, chosen, near):
+    """Close every wall contact of the chosen particles not near a wall (``near`` flags, one per
+    chosen particle): none of them touches one until the next rebuild."""
+    for k in range(len(chosen)):
+        if not near[k]:
+            i = chosen[k]
+            for s in range(partner.shape[1]):
+                partner[i, s] = -1
 
 
 class FixWallDEM(Fix):
@@ -135,42 +156,77 @@ class FixWallDEM(Fix):
             raise ScriptError(f"cutoff must be > 0 (got {cutoff:g})")
         self.cutoff = cutoff
         self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
+        self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0
+        self._cutoffs = np.empty(0)
+        self._still, self._slots = np.zeros((0, 3)), np.empty(0, dtype=np.int64)
+        self._used = np.empty(self.history.capacity, dtype=np.bool_)
 
     def setup(self, sim):
-        p = sim.particles
-        if not p.has("radius") and self.cutoff is None:
-            raise ScriptError(f"fix {self.id} (wall/dem) needs particle radii (particle_style sphere) "
-                              "or a cutoff for particles without one")
         chosen = np.flatnonzero(sim.groups.select(sim, self.group))
         self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
+        self.pre_neighbor(sim)
         self._forces(sim, update=False)
 
     def post_force(self, sim):
         self._forces(sim, update=True)
 
+    def reach(self, sim):
+        """Each particle's contact distance: its radius, or the cutoff of particles without one."""
+        p = sim.particles
+        if p.has("radius"):
+            return p.arrays["radius"]
+        if self.cutoff is None:
+            raise ScriptError(f"fix {self.id} (wall/dem) needs particle radii (particle_style sphere) "
+                              "or a cutoff for particles without one")
+        if len(self._cutoffs) < p.nall:
+            self._cutoffs = np.full(p.nall, self.cutoff)
+        return self._cutoffs
+
+    def pre_neighbor(self, sim):
+        """The particles that may touch a wall before the next rebuild: within the largest contact
+        distance plus the skin of a surface (a rebuild comes before any particle moves half the
+        skin). Only they are visited at each step; the others' wall contacts are closed."""
+        p = sim.particles
+        chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+        reach = self.reach(sim)
+        self._farthest = float(reach[chosen].max()) if len(chosen) else 0.0
+        x = p.x[chosen]
+        flags = np.zeros(len(chosen), dtype=np.bool_)
+        for region in self.regions:
+            flags[region.surface_contacts(x, self._farthest + sim.neighbor.skin)[0]] = True
+        forget_far(self.history.partner, chosen, flags)
+        self._near = chosen[flags]
+        self._x_near = np.empty((len(self._near), 3))
+        self._offsets = np.empty(len(self._near) + 1, dtype=np.int64)
+
     def _forces(self, sim, update):
         p = sim.particles
-        n = p.nlocal
-        chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
-        reach = p.radius[:n] if p.has("radius") else np.full(n, self.cutoff)
-        x = p.x[chosen]
-        farthest = float(reach[chosen].max()) if len(chosen) else 0.0
-        parts = [region.surface_contacts(x, farthest) for region in self.regions]
-        index = np.concatenate([part[0] for part in parts])
-        order = np.argsort(index, kind="stable")
-        index = index[order]
-        distance = np.concatenate([part[1] for part in parts])[order]
-        normal = np.ascontiguousarray(np.concatenate([part[2] for part in parts])[order])
-        key = np.concatenate([(np.int64(w) << ELEMENT_BITS) + part[3]
-                              for w, part in enumerate(parts)])[order]
-        offsets = np.searchsorted(index, np.arange(len(chosen) + 1)).astype(np.int64)
-        rotation = p.has("omega") and p.has("torque")
-        omega = p.omega if rotation else p.v
-        torque = p.torque if rotation else p.f
-        still = np.zeros((len(index), 3))
-        bad = dem_wall_forces(chosen, offsets, distance, normal, key, still, reach,
-                              observables.masses(sim), p.v, omega, p.f, torque, rotation,
+        a = p.arrays
+        near, x = self._near, self._x_near
+        np.take(a["x"], near, axis=0, out=x)
+        parts = [region.surface_contacts(x, self._farthest) for region in self.regions]
+        if len(parts) == 1:
+            index, distance, normal, key = parts[0]
+            normal = np.ascontiguousarray(normal)
+        else:
+            index = np.concatenate([part[0] for part in parts])
+            order = np.argsort(index, kind="stable")
+            index = index[order]
+            distance = np.concatenate([part[1] for part in parts])[order]
+            normal = np.ascontiguousarray(np.concatenate([part[2] for part in parts])[order])
+            key = np.concatenate([(np.int64(w) << ELEMENT_BITS) + part[3]
+                                  for w, part in enumerate(parts)])[order]
+        contact_offsets(index, len(near), self._offsets)
+        if len(self._still) < len(index):
+            self._still = np.zeros((2 * len(index), 3))
+            self._slots = np.empty(2 * len(index), dtype=np.int64)
+        rotation = "omega" in a and "torque" in a
+        omega = a["omega"] if rotation else a["v"]
+        torque = a["torque"] if rotation else a["f"]
+        mass = a["rmass"] if "rmass" in a else observables.masses(sim)
+        bad = dem_wall_forces(near, self._offsets, distance, normal, key.astype(np.int64, copy=False),
+                              self._still, self.reach(sim), mass, a["v"], omega, a["f"], torque, rotation,
                               self.history.partner, self.history.values, *self.law.kernel_args(),
-                              sim.dt, update)
+                              sim.dt, update, self._used, self._slots)
         if bad >= 0:
             self.history.overflowed(p.tag[bad])

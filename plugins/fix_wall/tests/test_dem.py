@@ -77,6 +77,26 @@ def test_drop_on_a_block_floor_from_outside(scene, numbers):
     assert abs(v[0]) < 1e-12 and abs(v[1]) < 1e-12     # head-on: no tangential force
 
 
+@pytest.mark.parametrize("neighbor", ["neigh_modify delay 0 every 1 check yes", "neigh_modify every 20 check no"])
+def test_a_sphere_arriving_from_far_between_rebuilds_rebounds_as_if_always_watched(scene, neighbor):
+    """Only particles within reach + skin of a wall surface at a rebuild are visited at each step:
+    a sphere starting 6.45 skins above the floor (the skin 0.1 crossed in 10 steps, the floor met
+    between two rebuilds) feels the floor at every step it overlaps it, and at no other, and
+    rebounds with the law's restitution and contact time."""
+    sim = scene()
+    sim.command(f"region floor block -3 3 -3 3 -3.5 0\n{neighbor}")
+    speed = 100 * 0.01 / TC
+    record = impact(sim, f"wall/dem lsd region floor {PDPS}", (0.2, -0.1, 1.145), (0, 0, -speed),
+                    TC / 100, 200)
+    touching = record.series("x")[:, 2] < 0.5
+    pushed = record.series("f")[:, 2] != 0.0
+    assert touching.any() and (touching == pushed).all()
+    e, tc = measure_rebound(record, lambda p: p[2] - 0.5, speed)
+    e_law, tc_law = analytic(CN)
+    assert e == pytest.approx(e_law, rel=0.01)
+    assert tc == pytest.approx(tc_law, rel=0.02)
+
+
 def test_oblique_hit_on_the_inside_of_a_container_face(scene):
     """Inside a box, the sphere hits the xhi face at 45 degrees without friction: the normal
     velocity rebounds with e, the tangential one is kept."""
