@@ -270,6 +270,8 @@ def report(results, warm, fresh, floor, info, runs):
 
 def write_page(table):
     text = PAGE.read_text()
+    if BEGIN not in text or END not in text.split(BEGIN, 1)[1]:
+        sys.exit(f"bench: {PAGE} has no {BEGIN} ... {END} section to write the table into")
     head, rest = text.split(BEGIN, 1)
     _, tail = rest.split(END, 1)
     PAGE.write_text(f"{head}{BEGIN}\n{table}\n{END}{tail}")
