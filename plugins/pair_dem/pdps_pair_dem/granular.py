@@ -42,6 +42,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
 from pdps_granular_contact import contact_models
+from pdps_granular_contact.contact_slots import free_stale, pack_slots
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -176,20 +177,29 @@ def first_coincident(x, radius, offsets, neighbors, nlocal):
 @njit(cache=True)
 def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
                     nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
-                    log_pairs, log_force, logged):
+                    log_pairs, log_force, logged, n, vrel, shear, force):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
     contact slots are full. ``law`` holds the per-type-pair tables of the contact law: for the
-    linear law kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu; for Hertz e_star, g_star, beta, mu."""
+    linear law kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu; for Hertz e_star, g_star, beta, mu.
+    ``n``, ``vrel``, ``shear``, ``force`` (3 each): one contact's normal, contact velocity, spring and
+    force."""
     # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
     spring_dt = dt if update else 0.0
-    n = np.empty(3)
-    vrel = np.empty(3)
-    shear = np.empty(3)
-    force = np.empty(3)
     for i in range(nlocal):
         ti = type_[i]
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
+        radi = radius[i]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
+            # most listed pairs (within the skin) do not touch: only their distance is measured
+            delx = xi0 - x[j, 0]
+            dely = xi1 - x[j, 1]
+            delz = xi2 - x[j, 2]
+            radsum = radi + radius[j]
+            if delx * delx + dely * dely + delz * delz >= radsum * radsum:
+                continue
             overlap, arm_i, arm_j = contact_geometry(x, radius, i, j, n)
             if overlap <= 0.0:
                 continue
@@ -219,15 +229,6 @@ def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, of
     return -1
 
 
-@njit(cache=True)
-def free_stale(partner, touched, nlocal):
-    """Free the slots of contacts that no pair computation touched this step (spheres apart)."""
-    for i in range(nlocal):
-        for s in range(partner.shape[1]):
-            if partner[i, s] >= 0 and not touched[i, s]:
-                partner[i, s] = -1
-
-
 class GranularPair(Pair):
     """Base of the DEM pair styles: spheres with radius, per-particle mass and rotation, ghosts that
     carry v and omega, and a tangential spring per contact."""
@@ -238,6 +239,11 @@ class GranularPair(Pair):
     def __init__(self, sim, args):
         super().__init__(sim, args)
         self.history = None
+        self._touched = None
+        self._law = None
+        self._scratch = tuple(np.zeros(3) for _ in range(4))
+        self._log_pairs = None
+        self._logged = np.zeros(1, dtype=np.int64)
 
     # ---- start of a run ---------------------------------------------------------------------------
     def init(self, ntypes):
@@ -246,6 +252,7 @@ class GranularPair(Pair):
             raise ScriptError(f"pair {self.name} needs particle_style sphere "
                               "(per-particle radius, mass and rotation)")
         self.open_history()
+        self._law = None        # the law's tables as this run's coefficients make them
         self.max_radius, _ = self.extremes(ntypes)
         self.check_box()
         cutoffs = super().init(ntypes)
@@ -314,13 +321,21 @@ class GranularPair(Pair):
             self.warn_coincident(sim, nlist)
         update = not sim.in_setup      # the setup forces read the springs without advancing them
         history = self.history
-        touched = np.zeros((p.nall, history.capacity), dtype=np.bool_)
+        partner, values = history.partner, history.values
+        if not update:
+            pack_slots(partner, values, p.nall)
+        # cleared by free_stale after each step: allocated only when the particles outgrow it
+        if self._touched is None or self._touched.shape[0] < p.nall:
+            self._touched = np.zeros((p.nall, history.capacity), dtype=np.bool_)
+        touched = self._touched
         owner = sim.comm.owners(p)
-        bad = self.kernel(sim, nlist, update, owner, history.partner, history.values, touched)
+        bad = self.kernel(sim, nlist, update, owner, partner, values, touched)
         if bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
-            free_stale(history.partner, touched, p.nlocal)
+            if bad < 0:
+                free_stale(partner, values, touched, p.nlocal, p.nall)
         if bad >= 0:
+            touched[:] = False
             raise SimulationError(f"particle {bad} has more than {history.capacity} contacts at step "
                                   f"{sim.step}; raise max_contacts of pair_style {self.name}")
         # contact forces are dissipative: no potential energy is reported (the elastic part is not
@@ -357,10 +372,10 @@ class GranularPair(Pair):
         """Buffers the kernel fills with the contacts of this force computation (one per list pair
         at most), reused between steps."""
         size = max(len(nlist.neighbors), 1)
-        if getattr(self, "_log_pairs", None) is None or len(self._log_pairs) < size:
+        if self._log_pairs is None or len(self._log_pairs) < size:
             self._log_pairs = np.empty((size, 2), dtype=np.int64)
             self._log_force = np.empty((size, 3))
-        self._logged = np.zeros(1, dtype=np.int64)
+        self._logged[0] = 0
         return self._log_pairs, self._log_force, self._logged
 
     def contact_forces(self, sim):
@@ -373,10 +388,13 @@ class GranularPair(Pair):
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
         p = sim.particles
-        return contact_compute(p.x, p.v, p.omega, p.radius, p.rmass, p.f, p.torque, p.type, p.tag, owner,
-                               nlist.offsets, nlist.neighbors, p.nlocal, self.hertz, self.law_table(),
+        a = p.arrays
+        if self._law is None:
+            self._law = self.law_table()
+        return contact_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["f"], a["torque"], a["type"],
+                               a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.hertz, self._law,
                                sim.dt, update, self.args.limit_damping, partner, values, touched,
-                               *self.contact_log(nlist))
+                               *self.contact_log(nlist), *self._scratch)
 
     def law_table(self):
         """The contact law's per-type-pair tables, stacked in the order contact_compute reads them."""

@@ -41,6 +41,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, lammps_classic
+from pdps_granular_contact.contact_slots import free_stale, pack_slots
 
 HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
@@ -171,53 +172,6 @@ def merge_mirrors(partner, history, touched, index, rows, capacity):
                 for d in range(3):
                     history[i, 3 * slot + d] = rows[r, 2 * capacity + 3 * k + d]
     return -1
-
-
-@njit(cache=True)
-def free_stale(partner, history, touched, nlocal, nall):
-    """Forget the contacts no pair computation touched this step (spheres apart) and clear the
-    flags. A particle's open slots are kept first (the last one moves into a freed slot), so a row
-    is read only up to its first free slot: most particles touch nothing."""
-    capacity = partner.shape[1]
-    width = history.shape[1] // capacity
-    for i in range(nlocal):
-        count = 0
-        while count < capacity and partner[i, count] >= 0:
-            count += 1
-        s = 0
-        while s < count:
-            if touched[i, s]:
-                touched[i, s] = False
-                s += 1
-                continue
-            count -= 1
-            partner[i, s] = partner[i, count]
-            touched[i, s] = touched[i, count]
-            for h in range(width):
-                history[i, s * width + h] = history[i, count * width + h]
-            partner[i, count] = -1
-            touched[i, count] = False
-    for i in range(nlocal, nall):
-        for s in range(capacity):
-            touched[i, s] = False
-
-
-@njit(cache=True)
-def pack_slots(partner, history, nall):
-    """Move each particle's open slots first, in order (free_stale's layout), whatever wrote them."""
-    capacity = partner.shape[1]
-    width = history.shape[1] // capacity
-    for i in range(nall):
-        count = 0
-        for s in range(capacity):
-            if partner[i, s] < 0:
-                continue
-            if s != count:
-                partner[i, count] = partner[i, s]
-                partner[i, s] = -1
-                for h in range(width):
-                    history[i, count * width + h] = history[i, s * width + h]
-            count += 1
 
 
 class PairGran(Pair):
