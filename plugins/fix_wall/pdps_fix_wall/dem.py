@@ -69,7 +69,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, observables
 
-from .wall_contact import HISTORY_WIDTH, ContactLaw, check_law_numbers, particle_wall_contacts, read_numbers
+from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, forget_far, particle_wall_contacts,
+                           read_numbers)
 
 ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
 
@@ -100,17 +101,6 @@ def contact_offsets(index, count, offsets):
         while row < len(index) and index[row] < k:
             row += 1
         offsets[k] = row
-
-
-@njit(cache=True)
-def forget_far(partner, chosen, near):
-    """Close every wall contact of the chosen particles not near a wall (``near`` flags, one per
-    chosen particle): none of them touches one until the next rebuild."""
-    for k in range(len(chosen)):
-        if not near[k]:
-            i = chosen[k]
-            for s in range(partner.shape[1]):
-                partner[i, s] = -1
 
 
 class FixWallDEM(Fix):

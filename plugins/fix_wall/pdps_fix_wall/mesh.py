@@ -51,7 +51,8 @@ fix, also when a script gives the fix again after ``read_restart``.
 Cost: triangles are binned on a grid of cells at least the largest radius plus the skin wide, and
 each particle keeps the triangles whose bounding box is within its radius plus the skin; the lists
 are rebuilt only when a particle or a mesh vertex has moved more than half the skin
-(``neighbor SKIN``) since, or particles were re-sorted.
+(``neighbor SKIN``) since, or particles were re-sorted. Between rebuilds only the particles with
+candidate triangles are visited (the wall contacts of the others are closed at the rebuild).
 
 Errors: a missing file, an empty file or a file with no triangles gives one line naming the file.
 Particles need radii (``particle_style sphere``); with ``omega`` and ``torque`` they also spin.
@@ -79,8 +80,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, observables
 
-from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, particle_wall_contacts,
-                           read_numbers)
+from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, forget_far,
+                           particle_wall_contacts, read_numbers)
 
 MAX_CELLS_PER_AXIS = 64
 MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the coordinates) are one
@@ -269,6 +270,19 @@ def candidate_triangles(x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, 
                     candidates[slot] = t
                     slot += 1
     return offsets, candidates
+
+
+@njit(cache=True)
+def largest_move_sq(x, rows, built):
+    """Largest squared distance of the points ``x[rows]`` from where they were (``built``)."""
+    largest = 0.0
+    for k in range(len(rows)):
+        i = rows[k]
+        moved = 0.0
+        for d in range(3):
+            moved += (x[i, d] - built[k, d]) ** 2
+        largest = max(largest, moved)
+    return largest
 
 
 @njit(cache=True)
@@ -528,13 +542,13 @@ class FixWallMesh(Fix):
     def _rebuild_if_needed(self, sim, chosen, radius):
         p = sim.particles
         half_skin = 0.5 * sim.neighbor.skin
-        x = p.x[chosen]
         if not self.stale and len(chosen) == len(self.x_built):
-            moved = float(np.max(np.sum((x - self.x_built) ** 2, axis=1))) if len(chosen) else 0.0
-            shifted = (float(np.max(np.sum((self.vertices - self.vertices_built) ** 2, axis=1)))
+            moved = largest_move_sq(p.arrays["x"], chosen, self.x_built)
+            shifted = (largest_move_sq(self.vertices, self.all_vertices, self.vertices_built)
                        if self.moving else 0.0)
             if moved <= half_skin ** 2 and shifted <= half_skin ** 2:
                 return
+        x = p.x[chosen]
         skin = sim.neighbor.skin
         reach = radius + skin
         farthest = float(reach[chosen].max()) if len(chosen) else skin
@@ -550,8 +564,16 @@ class FixWallMesh(Fix):
         nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
         cell = np.maximum(extent / nbins, size)
         start, members = bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, farthest)
-        self.offsets, self.candidates = candidate_triangles(
+        offsets, self.candidates = candidate_triangles(
             p.x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, start, members)
+        # only particles with candidate triangles are visited until the next rebuild
+        counts = np.diff(offsets)
+        near = counts > 0
+        forget_far(self.history.partner, chosen, near)
+        self.near = chosen[near]
+        self.offsets = np.zeros(len(self.near) + 1, dtype=np.int64)
+        np.cumsum(counts[near], out=self.offsets[1:])
+        self.all_vertices = np.arange(len(self.vertices), dtype=np.int64)
         self.x_built = x
         self.vertices_built = self.vertices.copy()
         self.stale = False
@@ -600,7 +622,7 @@ class FixWallMesh(Fix):
         rotation = p.has("omega") and p.has("torque")
         omega = p.omega if rotation else p.v
         torque = p.torque if rotation else p.f
-        bad = mesh_wall_forces(self.chosen, self.offsets, self.candidates, p.x, self.vertices,
+        bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, self.vertices,
                                self.triangles, self.face_normal, radius, observables.masses(sim),
                                p.v, omega, p.f, torque, rotation, self.history.partner,
                                self.history.values, *self.law.kernel_args(), sim.dt, update,

@@ -217,3 +217,14 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
             torque[i, 1] -= reach * (n[2] * force[0] - n[0] * force[2])
             torque[i, 2] -= reach * (n[0] * force[1] - n[1] * force[0])
     return True
+
+
+@njit(cache=True)
+def forget_far(partner, chosen, near):
+    """Close every wall contact of the chosen particles not near a wall (``near`` flags, one per
+    chosen particle): none of them touches one before the next rebuild, and none is visited."""
+    for k in range(len(chosen)):
+        if not near[k]:
+            i = chosen[k]
+            for s in range(partner.shape[1]):
+                partner[i, s] = -1

@@ -319,6 +319,27 @@ def test_candidate_lists_are_rebuilt_only_after_half_a_skin(scene, tmp_path):
     assert np.ptp(vx) < 1e-3 * v0         # rolls on across the triangle edges without a jolt
 
 
+def test_only_spheres_with_candidate_triangles_are_visited(scene, data):
+    """A sphere sliding on the square holds a contact; thrown up beyond its radius plus the skin it
+    is no longer visited after the next rebuild of the candidate lists, with no contact left open;
+    falling back, it is visited again and its new contact starts from an unstretched spring."""
+    sim = scene(skin=0.1)
+    run_sphere(sim, f"file {data}/square.stl scale 2 model lsd {E} {KN} 0.5", (0.3, 0.2, 0.499),
+               (0.2, 0, 0), rotate="no", steps=5)
+    fix, partner = sim.fixes["w"], sim.particles.arrays["wall_w_partner"]
+    assert fix.near.tolist() == [0] and (partner[0] >= 0).sum() == 1
+    sim.particles.v[0] = (0.0, 0.0, 2.0)
+    sim.command("run 600")
+    assert sim.x[0, 2] > 0.5 + 0.1 + 0.05
+    assert fix.near.tolist() == [] and (partner[0] < 0).all()
+    sim.particles.v[0] = (0.0, 0.0, -2.0)
+    steps = int((sim.x[0, 2] - 0.499) / (2.0 * TC / 100))
+    sim.command(f"run {steps}")
+    assert fix.near.tolist() == [0] and (partner[0] >= 0).sum() == 1
+    spring = sim.particles.arrays["wall_w_history"][0, :3]
+    assert np.abs(spring).max() < 1e-12
+
+
 class NoForce(Pair):
     """A pair style with no force: makes the core build neighbor lists and re-sort particles."""
     name = "test/wall_no_force"
