@@ -82,12 +82,14 @@ def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach
     """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``
     (``used``: one flag per history slot; ``slots``: one row per contact, at least).
     Returns -1, or the index of a particle whose contact history overflowed."""
+    n, rel, force, spring = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
     for k in range(len(chosen)):
         i = chosen[k]
         ok = particle_wall_contacts(i, offsets[k], offsets[k + 1], distance, normal, key,
                                     wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
                                     partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
-                                    g_star, beta, dt, update, used, slots[offsets[k]:])
+                                    g_star, beta, dt, update, used, slots[offsets[k]:], n, rel, force,
+                                    spring)
         if not ok:
             return i
     return -1

@@ -338,6 +338,7 @@ def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_n
     used = np.empty(partner.shape[1], dtype=np.bool_)
     slots = np.empty(most, dtype=np.int64)
     probe = np.empty((1, 3))
+    contact_normal, rel, force, spring = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
     for k in range(len(chosen)):
         i = chosen[k]
         r = radius[i]
@@ -402,7 +403,8 @@ def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_n
             count += 1
         ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, r, mass[i], v,
                                     omega, f, torque, rotation, partner, values, model, kn, cn, kt,
-                                    ct, mu, per_mass, e_star, g_star, beta, dt, update, used, slots)
+                                    ct, mu, per_mass, e_star, g_star, beta, dt, update, used, slots,
+                                    contact_normal, rel, force, spring)
         if not ok:
             return i
     return -1

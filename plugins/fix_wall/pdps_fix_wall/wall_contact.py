@@ -122,11 +122,12 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
 def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
                            v, omega, f, torque, rotation, partner, values,
                            model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
-                           used, slots):
+                           used, slots, n, rel, force, spring):
     """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
     surface, normal from surface to centre, element key, wall velocity at the contact point).
     Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
     taken over, closed); without it (setup) forces use the stored springs and change nothing.
+    ``n``, ``rel``, ``force``, ``spring``: scratch vectors (3 each) of the caller.
     Returns False when particle i has no free history slot."""
     width = HISTORY_WIDTH
     capacity = partner.shape[1]
@@ -177,10 +178,6 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
                     values[i, s * width + h] = 0.0
                 used[s] = True
                 slots[c - start] = s
-    n = np.empty(3)
-    rel = np.empty(3)
-    force = np.empty(3)
-    spring = np.zeros(3)
     for c in range(start, end):
         overlap = reach - distance[c]
         if overlap <= 0.0:

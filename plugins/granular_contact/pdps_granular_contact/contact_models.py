@@ -34,14 +34,25 @@ place, and returns :math:`F_n`.
 
 import math
 
-import numpy as np
 from numba import njit
 
 HERTZ_DAMPING = 2.0 * math.sqrt(5.0 / 6.0)
 
 
 @njit(cache=True)
-def _tangential(n, vt, shear, kt, ct, mu, fn, dt, force):
+def _spring_dashpot(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force):
+    """Both laws once their stiffnesses and dampings are known for this overlap: F_n = kn delta -
+    cn v_n along n, then the tangential spring with its Coulomb limit. Vectors of one contact are
+    kept in scalars: the function runs for every contact of every step, and allocates nothing."""
+    vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2]
+    vt0 = v[0] - vn * n[0]
+    vt1 = v[1] - vn * n[1]
+    vt2 = v[2] - vn * n[2]
+    fn = kn * overlap - cn * vn
+    if limit_damping and fn < 0.0:
+        fn = 0.0
+    for d in range(3):
+        force[d] += fn * n[d]
     # keep the spring in the tangent plane of the current normal, with its length
     length = math.sqrt(shear[0] ** 2 + shear[1] ** 2 + shear[2] ** 2)
     along = shear[0] * n[0] + shear[1] * n[1] + shear[2] * n[2]
@@ -51,44 +62,27 @@ def _tangential(n, vt, shear, kt, ct, mu, fn, dt, force):
     if turned > 0.0:
         for d in range(3):
             shear[d] *= length / turned
-    for d in range(3):
-        shear[d] += vt[d] * dt
-    ft = np.empty(3)
-    for d in range(3):
-        ft[d] = -kt * shear[d] - ct * vt[d]
-    ft_mag = math.sqrt(ft[0] ** 2 + ft[1] ** 2 + ft[2] ** 2)
+    shear[0] += vt0 * dt
+    shear[1] += vt1 * dt
+    shear[2] += vt2 * dt
+    ft0 = -kt * shear[0] - ct * vt0
+    ft1 = -kt * shear[1] - ct * vt1
+    ft2 = -kt * shear[2] - ct * vt2
+    ft_mag = math.sqrt(ft0 ** 2 + ft1 ** 2 + ft2 ** 2)
     limit = mu * abs(fn)
     if ft_mag > limit:
         # sliding: the spring is cut back to what Coulomb's limit allows
         if ft_mag > 0.0:
             scale = limit / ft_mag
-            for d in range(3):
-                ft[d] *= scale
-                shear[d] = -(ft[d] + ct * vt[d]) / kt if kt > 0.0 else 0.0
-    for d in range(3):
-        force[d] += ft[d]
-
-
-@njit(cache=True)
-def _split(n, v):
-    vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2]
-    vt = np.empty(3)
-    for d in range(3):
-        vt[d] = v[d] - vn * n[d]
-    return vn, vt
-
-
-@njit(cache=True)
-def _spring_dashpot(overlap, n, v, shear, kn, cn, kt, ct, mu, dt, limit_damping, force):
-    """Both laws once their stiffnesses and dampings are known for this overlap: F_n = kn delta -
-    cn v_n along n, then the tangential spring with its Coulomb limit."""
-    vn, vt = _split(n, v)
-    fn = kn * overlap - cn * vn
-    if limit_damping and fn < 0.0:
-        fn = 0.0
-    for d in range(3):
-        force[d] += fn * n[d]
-    _tangential(n, vt, shear, kt, ct, mu, fn, dt, force)
+            ft0 *= scale
+            ft1 *= scale
+            ft2 *= scale
+            shear[0] = -(ft0 + ct * vt0) / kt if kt > 0.0 else 0.0
+            shear[1] = -(ft1 + ct * vt1) / kt if kt > 0.0 else 0.0
+            shear[2] = -(ft2 + ct * vt2) / kt if kt > 0.0 else 0.0
+    force[0] += ft0
+    force[1] += ft1
+    force[2] += ft2
     return fn
 
 
