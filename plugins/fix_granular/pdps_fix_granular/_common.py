@@ -24,12 +24,16 @@ def chosen(sim, group, region=None):
 @njit(cache=True)
 def add_weight(f, mass, mask, groupbit, nlocal, ax, ay, az):
     """f += m a on the group's owned particles, per-particle masses (every step of a granular run:
-    no temporaries)."""
+    no temporaries; a zero component of a is not added, which saves a third of the work per axis)."""
     for i in range(nlocal):
         if mask[i] & groupbit:
-            f[i, 0] += mass[i] * ax
-            f[i, 1] += mass[i] * ay
-            f[i, 2] += mass[i] * az
+            m = mass[i]
+            if ax != 0.0:
+                f[i, 0] += m * ax
+            if ay != 0.0:
+                f[i, 1] += m * ay
+            if az != 0.0:
+                f[i, 2] += m * az
 
 
 @njit(cache=True)
@@ -38,9 +42,12 @@ def add_type_weight(f, type_, type_mass, mask, groupbit, nlocal, ax, ay, az):
     for i in range(nlocal):
         if mask[i] & groupbit:
             m = type_mass[type_[i]]
-            f[i, 0] += m * ax
-            f[i, 1] += m * ay
-            f[i, 2] += m * az
+            if ax != 0.0:
+                f[i, 0] += m * ax
+            if ay != 0.0:
+                f[i, 1] += m * ay
+            if az != 0.0:
+                f[i, 2] += m * az
 
 
 def require_spheres(sim, what):
