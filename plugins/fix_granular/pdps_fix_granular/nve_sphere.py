@@ -59,7 +59,10 @@ def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal,
             for d in range(3):
                 v[i, d] += dtfm * f[i, d]
                 x[i, d] += dt * v[i, d]
-                omega[i, d] += dtirotate * torque[i, d]
+            # most spheres touch nothing: with no torque their spin stays as it is
+            if torque[i, 0] != 0.0 or torque[i, 1] != 0.0 or torque[i, 2] != 0.0:
+                for d in range(3):
+                    omega[i, d] += dtirotate * torque[i, d]
 
 
 @njit(cache=True)
@@ -74,7 +77,9 @@ def sphere_final(v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, 
                 dtirotate = half / (inertia * m_last * r_last * r_last)
             for d in range(3):
                 v[i, d] += dtfm * f[i, d]
-                omega[i, d] += dtirotate * torque[i, d]
+            if torque[i, 0] != 0.0 or torque[i, 1] != 0.0 or torque[i, 2] != 0.0:
+                for d in range(3):
+                    omega[i, d] += dtirotate * torque[i, d]
 
 
 def inertia_factor(sim, disc, what):
