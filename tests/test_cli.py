@@ -128,7 +128,7 @@ def test_styles_verbose_shows_hooks_needs_and_contributions(capsys, monkeypatch)
         "contributes:  pair forces, energy and virial"]
     assert blocks[("fix", "wall/reflect")][0].split() == ["fix", "wall/reflect", "pdps-fix-wall", "0.1.0"]
     assert blocks[("fix", "wall/reflect")][1] == "hooks:        setup; post_integrate; end_of_step"
-    assert blocks[("fix", "wall/dem")][1] == "hooks:        setup; post_force"
+    assert blocks[("fix", "wall/dem")][1] == "hooks:        setup; pre_neighbor; post_force"
     assert blocks[("pair", "dem/lsd")][2] == (
         "needs:        per-atom radius, rmass, omega, torque; half neighbor list; ghost velocities; ghost omega")
     assert blocks[("compute", "coord/atom")][1:3] == [
