@@ -12,7 +12,7 @@ from .commands.words import type_range
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
-from .random import pair_gaussian, particle_gaussians, particle_uniforms, philox4x32
+from .random import pair_gaussian, pair_uniform, particle_gaussians, particle_uniforms, philox4x32
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
@@ -23,7 +23,7 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "VariableRef", "check_bins", "check_images", "close_slot", "find_slot",
-           "keyword", "observables", "open_slot", "pair_gaussian", "param", "parse_args",
+           "keyword", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
            "type_range"]
 

@@ -38,7 +38,8 @@ MIN_RSQ = {min_rsq!r}
 '''
 
 # One loop per (list kind, energy or not): without energy the law's energy is dead code that the
-# compiler removes, so the steps that read no energy (most of them) do not compute it.
+# compiler removes, so the steps that read no energy (most of them) do not compute it. i's position
+# and force sit in locals: the compiler cannot keep f[i] in a register itself, as f[j] might alias it.
 LOOP = '''
 
 @njit(cache=True)
@@ -47,20 +48,27 @@ def {name}(x, f, type_, offsets, neighbors, nlocal, cutsq, coeff, atom, state):
     energy = 0.0
     for i in range(nlocal):
         ti = type_[i]
+        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
+        fxi = 0.0
+        fyi = 0.0
+        fzi = 0.0
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
             tj = type_[j]
-            dx = x[i, 0] - x[j, 0]
-            dy = x[i, 1] - x[j, 1]
-            dz = x[i, 2] - x[j, 2]
+            dx = xi - x[j, 0]
+            dy = yi - x[j, 1]
+            dz = zi - x[j, 2]
             rsq = dx * dx + dy * dy + dz * dz
             if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
                 continue
             fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
-            f[i, 0] += dx * fpair
-            f[i, 1] += dy * fpair
-            f[i, 2] += dz * fpair
-{newton}{tally}    return energy
+            fxi += dx * fpair
+            fyi += dy * fpair
+            fzi += dz * fpair
+{newton}{tally}        f[i, 0] += fxi
+        f[i, 1] += fyi
+        f[i, 2] += fzi
+    return energy
 '''
 
 NEWTON = """            f[j, 0] -= dx * fpair
@@ -122,6 +130,72 @@ TALLY_NEWTON = """            f[j, 0] -= dx * fpair
             energy += e
 """
 
+# Forces straight from the cell bins, with no Verlet list (pdps_core.neighbor.kernels for the bins
+# and the rules: owned partners from the upper half of the stencil and the rest of i's own bin,
+# ghosts from the rows not below, kept when above i): for scenes whose list would be rebuilt at
+# every step anyway (Neighbor's direct mode), the list's writing and second reading are saved.
+CELL_LOOP = '''
+
+@njit(cache=True)
+def {name}(x, f, type_, nlocal, cutsq, coeff, atom, state, cell, start, ghost_start, order, slot,
+           owned_rows, ghost_rows, inner_lo, inner_hi):
+    """{doc}"""
+    energy = 0.0
+    n_owned = 1 + len(owned_rows)
+    for i in range(nlocal):
+        ti = type_[i]
+        ci = cell[i]
+        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
+        fxi = 0.0
+        fyi = 0.0
+        fzi = 0.0
+        interior = (inner_lo[0] <= xi <= inner_hi[0] and inner_lo[1] <= yi <= inner_hi[1]
+                    and inner_lo[2] <= zi <= inner_hi[2])
+        runs = n_owned if interior else n_owned + len(ghost_rows)
+        for s in range(runs):
+            ghost = s >= n_owned
+            if s == 0:
+                begin = slot[i] + 1
+                end = start[ci + 1]
+            elif not ghost:
+                begin = start[ci + owned_rows[s - 1, 0]]
+                end = start[ci + owned_rows[s - 1, 1] + 1]
+            else:
+                begin = ghost_start[ci + ghost_rows[s - n_owned, 0]]
+                end = ghost_start[ci + ghost_rows[s - n_owned, 1] + 1]
+            for p in range(begin, end):
+                j = order[p]
+                if ghost:
+                    if x[j, 2] < zi:
+                        continue
+                    if x[j, 2] == zi:
+                        if x[j, 1] < yi:
+                            continue
+                        if x[j, 1] == yi and x[j, 0] <= xi:
+                            continue
+                tj = type_[j]
+                dx = xi - x[j, 0]
+                dy = yi - x[j, 1]
+                dz = zi - x[j, 2]
+                rsq = dx * dx + dy * dy + dz * dz
+                if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
+                    continue
+                fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
+                fxi += dx * fpair
+                fyi += dy * fpair
+                fzi += dz * fpair
+{newton}{tally}        f[i, 0] += fxi
+        f[i, 1] += fyi
+        f[i, 2] += fzi
+    return energy
+'''
+
+CELL_VARIANTS = {
+    ("cells", True): ("cell_loop_energy", "From the cell bins: each pair once, force on both "
+                                          "particles; the energy."),
+    ("cells", False): ("cell_loop", "From the cell bins: each pair once, force on both particles."),
+}
+
 TALLY_VARIANTS = {
     (True, "tally"): ("half_loop_tally", "Half list: the energy, and each pair's energy and virial half "
                                          "to each particle (ghosts included)."),
@@ -148,6 +222,10 @@ def _source(origin, binding, pair_coeff):
             tally = "            energy += e\n" if half else "            energy += 0.5 * e\n"
         text += LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
                             newton=NEWTON if half else "", tally=tally)
+    for (_, energy), (name, doc) in CELL_VARIANTS.items():
+        text += CELL_LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
+                                 newton=NEWTON.replace("            ", "                "),
+                                 tally="                energy += e\n" if energy else "")
     for (half, _), (name, doc) in TALLY_VARIANTS.items():
         text += TALLY_LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
                                   newton=TALLY_NEWTON if half else "            energy += half_e\n")
@@ -155,6 +233,10 @@ def _source(origin, binding, pair_coeff):
 
 
 _loaded = {}
+# numba's cache knows a function's own file only: a law inlines the core's random numbers, so their
+# source keys the generated loops too (a change there compiles afresh instead of loading stale code)
+with open(os.path.join(os.path.dirname(__file__), "random.py"), "rb") as _handle:
+    _RANDOM_SOURCE = _handle.read()
 
 
 def cache_dir():
@@ -202,7 +284,7 @@ def loops_for(nparams, law=None, source=None, name="law"):
         binding, keyed, origin = law_definition(law)
     pair_coeff = "(" + "".join(f"coeff[ti, tj, {k}], " for k in range(max(nparams, 1))) + ")"
     text = _source(origin, binding, pair_coeff)
-    digest = hashlib.sha256(keyed + text.encode()).hexdigest()[:16]
+    digest = hashlib.sha256(keyed + _RANDOM_SOURCE + text.encode()).hexdigest()[:16]
     if digest in _loaded:
         return _loaded[digest]
     module_name = f"pdps_pair_loop_{re.sub(r'[^A-Za-z0-9]', '_', origin)}_{digest}"
@@ -218,6 +300,7 @@ def loops_for(nparams, law=None, source=None, name="law"):
     module = importlib.util.module_from_spec(spec)
     sys.modules[module_name] = module
     spec.loader.exec_module(module)
-    _loaded[digest] = {key: getattr(module, name) for key, (name, _) in {**VARIANTS, **TALLY_VARIANTS}.items()}
+    variants = {**VARIANTS, **TALLY_VARIANTS, **CELL_VARIANTS}
+    _loaded[digest] = {key: getattr(module, name) for key, (name, _) in variants.items()}
     return _loaded[digest]
 

@@ -5,6 +5,7 @@ A random number is a pure function of its key, so a particle or a pair gets the 
 the particle order or the number of ranks. Call from numba code:
 
     xi = pair_gaussian(seed, step, tag_i, tag_j)                    # N(0, 1), symmetric in i and j
+    u = pair_uniform(seed, step, tag_i, tag_j)                      # U(0, 1), symmetric in i and j
     u0, u1, u2, u3 = particle_uniforms(seed, step, tag, stream)     # four U(0, 1), open interval
     g0, g1, g2, g3 = particle_gaussians(seed, step, tag, stream)    # four N(0, 1)
 
@@ -60,18 +61,94 @@ def _wide_key(k, a, b):
     return h0, h1
 
 
+def _ziggurat_tables(layers=128, edge=3.442619855899, area=9.91256303526217e-3):
+    """Marsaglia and Tsang's ziggurat for the normal density (J. Stat. Softw. 5 (8), 2000): for
+    layer i, ``accept[i]`` bounds |h| (h a signed 32-bit number) of the draws that fall inside the
+    layer's rectangle, ``width[i]`` turns h into x, ``height[i]`` is exp(-x_i^2/2) at its edge."""
+    accept = np.zeros(layers, dtype=np.int64)
+    width = np.zeros(layers)
+    height = np.zeros(layers)
+    scale = 2.0 ** 31
+    x = edge
+    q = area / math.exp(-0.5 * x * x)
+    accept[0] = int(x / q * scale)
+    width[0] = q / scale
+    width[layers - 1] = x / scale
+    height[0] = 1.0
+    height[layers - 1] = math.exp(-0.5 * x * x)
+    for i in range(layers - 2, 0, -1):
+        inner = math.sqrt(-2.0 * math.log(area / x + math.exp(-0.5 * x * x)))
+        accept[i + 1] = int(inner / x * scale)
+        x = inner
+        height[i] = math.exp(-0.5 * x * x)
+        width[i] = x / scale
+    return accept, width, height
+
+
+ZIGGURAT_ACCEPT, ZIGGURAT_WIDTH, ZIGGURAT_HEIGHT = _ziggurat_tables()
+ZIGGURAT_EDGE = 3.442619855899
+INT32_OFFSET = np.int64(2 ** 31)
+
+
+@njit(cache=True)
+def _signed(word):
+    return np.int64(word) - INT32_OFFSET
+
+
+@njit(cache=True)
+def _unit(word):
+    return (float(word) + 0.5) * INV_2_32
+
+
 @njit(cache=True)
 def pair_gaussian(seed, step, tag_i, tag_j):
-    """One N(0,1) number for the unordered pair (tag_i, tag_j) at this step (Box-Muller)."""
+    """One N(0,1) number for the unordered pair (tag_i, tag_j) at this step, by the ziggurat: one
+    Philox block gives the layer and the value, and 99 % of draws end there (two further words and,
+    rarely, further blocks of the same key serve the wedges and the tail)."""
     a = min(tag_i, tag_j)
     b = max(tag_i, tag_j)
     s = np.uint64(step)
     k0, k1 = _wide_key(np.uint64(seed), a, b)
-    r0, r1, r2, r3 = philox4x32(np.uint64(a) & MASK32, np.uint64(b) & MASK32, s & MASK32,
-                                s >> SHIFT32, k0, k1)
-    u1 = (float(r0) + 0.5) * INV_2_32
-    u2 = (float(r1) + 0.5) * INV_2_32
-    return math.sqrt(-2.0 * math.log(u1)) * math.cos(TWO_PI * u2)
+    c0, c1 = np.uint64(a) & MASK32, np.uint64(b) & MASK32
+    c2, c3 = s & MASK32, s >> SHIFT32
+    r0, r1, r2, r3 = philox4x32(c0, c1, c2, c3, k0, k1)
+    h = _signed(r0)
+    layer = np.int64(r1) & 127
+    if abs(h) < ZIGGURAT_ACCEPT[layer]:
+        return h * ZIGGURAT_WIDTH[layer]
+    block = 0
+    while True:
+        x = h * ZIGGURAT_WIDTH[layer]
+        if layer == 0:
+            # the tail beyond the edge (Marsaglia's method): two uniforms per try
+            while True:
+                block += 1
+                t0, t1, _, _ = philox4x32(c0, c1, c2, c3, k0, (k1 + np.uint64(block) * W0) & MASK32)
+                tail = -math.log(_unit(t0)) / ZIGGURAT_EDGE
+                if -2.0 * math.log(_unit(t1)) > tail * tail:
+                    return ZIGGURAT_EDGE + tail if h > 0 else -ZIGGURAT_EDGE - tail
+        if ZIGGURAT_HEIGHT[layer] + _unit(r2) * (ZIGGURAT_HEIGHT[layer - 1] - ZIGGURAT_HEIGHT[layer]) \
+                < math.exp(-0.5 * x * x):
+            return x
+        block += 1
+        r0, r1, r2, r3 = philox4x32(c0, c1, c2, c3, k0, (k1 + np.uint64(block) * W0) & MASK32)
+        h = _signed(r0)
+        layer = np.int64(r1) & 127
+        if abs(h) < ZIGGURAT_ACCEPT[layer]:
+            return h * ZIGGURAT_WIDTH[layer]
+
+
+@njit(cache=True)
+def pair_uniform(seed, step, tag_i, tag_j):
+    """One U(0, 1) number (never 0 or 1) for the unordered pair (tag_i, tag_j) at this step, from
+    the Philox block pair_gaussian's would start with, through another key word."""
+    a = min(tag_i, tag_j)
+    b = max(tag_i, tag_j)
+    s = np.uint64(step)
+    k0, k1 = _wide_key(np.uint64(seed), a, b)
+    r0, _, _, _ = philox4x32(np.uint64(a) & MASK32, np.uint64(b) & MASK32, s & MASK32, s >> SHIFT32,
+                             k0 ^ np.uint64(0x55555555), k1)
+    return _unit(r0)
 
 
 @njit(cache=True)

@@ -373,6 +373,10 @@ class PairLaw(Pair):
     the force on i only on a full list, ``neighbor_list = "full"``), and tallies energy only on
     steps that read it; the virial comes from sum(r . f) as for every pair style. The tables are
     ``self.coeff_table`` ((ntypes+1, ntypes+1, len(params)), symmetric) and ``self.cutsq``.
+
+    When the neighbor list would be rebuilt at nearly every step (DPD at its usual time steps), the
+    core runs the same law over its cell bins instead, with no list (the list's direct mode in
+    pdps_core.neighbor): same forces, summed in another order.
     """
     peratom_tally = True
     params: ClassVar[tuple] = ()
@@ -393,6 +397,12 @@ class PairLaw(Pair):
         self.cutsq = cut * cut
         self._loops = None
         return cut
+
+    @property
+    def cell_loops(self):
+        """True when the core may compute this style from its cell bins (a half list, and the
+        core's own loop: a subclass with a compute of its own reads the list)."""
+        return self.neighbor_list == "half" and type(self).compute is PairLaw.compute
 
     def _cutoff_of(self, i, j):
         try:
@@ -425,9 +435,14 @@ class PairLaw(Pair):
                            if self.law_source is not None else loops_for(nparams, law=self.force_law()))
         p = sim.particles
         atom = tuple(p.arrays[name] for name in self.law_atom)
+        tally = getattr(sim, "tally_atom", False)
+        if nlist.direct and not tally:
+            self.energy = self._loops[("cells", bool(eflag))](p.x, p.f, p.type, p.nlocal, self.cutsq, self.coeff_table,
+                                                              atom, self.law_state(sim), *nlist.cells)
+            return
         args = (p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq, self.coeff_table, atom,
                 self.law_state(sim))
-        if getattr(sim, "tally_atom", False):
+        if tally:
             self.energy = self._loops[(nlist.half_list, "tally")](*args, p.arrays[TALLY])
         else:
             self.energy = self._loops[(nlist.half_list, bool(eflag))](*args)

@@ -766,7 +766,8 @@ class TestPairCoeff:
         fails(sim, box() + "pair_coeff 1 1 1 1", "pair_coeff", "pair_coeff before pair_style")
 
     def test_pair_style_errors(self, sim):
-        fails(sim, "pair_style dpd 1 1", "pair_style", "missing argument seed; usage: pair_style dpd T rc seed")
+        fails(sim, "pair_style dpd 1 1", "pair_style", "missing argument seed; usage: pair_style dpd T rc seed "
+                                                          "[noise gaussian|uniform]")
         exc = fails(sim, "pair_style dpdd 1 1 1", "pair_style")
         assert exc.message == (f"unknown pair style dpdd; did you mean dpd? "
                                f"(installed: {', '.join(registry.names('pair'))})")

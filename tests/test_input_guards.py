@@ -328,6 +328,9 @@ def set_field(path, value):
     (set_field(["fixes", 0, "group"], {"a": 1}), "field group must be a name (got {'a': 1})"),
     (set_field(["fixes", 0, "group"], "nowhere"), "fixes '1' uses group 'nowhere', which the file does not define"),
     (set_field(["groups", "bits", "all"], 40), "group 'all' has bit 40, not 0 to 31"),
+    # fuzz, issue 12: the image flags' default beyond int32 (particle arrays grown in place)
+    (set_field(["particles", "properties", 6, "default"], 2147483648),
+     "per-atom array image has a default 2147483648 that is not an int32"),
 ])
 def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     make_sim().command(RESTART_SCRIPT)

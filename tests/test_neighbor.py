@@ -70,6 +70,42 @@ def test_half_list_holds_every_pair_within_cut_plus_skin_exactly_once(make_sim, 
     assert listed_pairs(sim, "half") == expected
 
 
+@pytest.mark.parametrize("length", [3.0, 3.6])
+def test_lattice_sites_on_bin_boundaries_are_listed_once(make_sim, length):
+    """Bins are 0.6 wide here (half of cut + skin, a whole number of them to the box length), so every
+    site of the lattice sits on a bin boundary, where rounding may put a periodic image in another
+    bin than its particle: each pair must still be listed exactly once."""
+    spacing = 0.6
+    sim = make_sim()
+    sim.command(f"""
+        region box block 0 {length} 0 {length} 0 {length}
+        create_box 1 box
+        mass 1 1
+        lattice spacing x {spacing} y {spacing} z {spacing}
+        create_particle 1 region box
+        neighbor 0.2
+        pair_style dpd 1.0 1.0 5
+        pair_coeff * * 25 4.5
+        run 0
+    """)
+    p = sim.particles
+    x = p.x[: p.nlocal]
+    assert listed_pairs(sim, "half") == brute_force_pairs(x, sim.box.length, (True,) * 3, 1.2)
+
+
+def test_full_lists_hold_every_pair_twice(make_sim):
+    """A full list (requested by a style) holds each pair within its cutoff from both sides."""
+    sim = setup_random(make_sim, 150, 4.0, 1.0, 0.3)
+    nlist = sim.neighbors.request("full", 1.0, ntypes=1, occasional=True)
+    sim.neighbors.build_occasional(nlist, sim.particles, sim.box, sim.step)
+    p = sim.particles
+    distances = sorted(round(float(np.linalg.norm(p.x[i] - p.x[j])), 9)
+                       for i in range(p.nlocal) for j in nlist.neighbors[nlist.offsets[i]:nlist.offsets[i + 1]])
+    half = brute_force_pairs(p.x[: p.nlocal], sim.box.length, (True,) * 3, 1.0)
+    # a pair of owned particles appears twice; a pair across a periodic face once from each owner
+    assert distances == sorted(half + half)
+
+
 def test_fixed_boundaries_make_no_ghosts(make_sim):
     sim = setup_random(make_sim, 100, 4.0, 1.0, 0.3, periodic="f f f")
     assert sim.particles.nghost == 0
@@ -134,3 +170,72 @@ def test_delay_holds_rebuilds_back_and_counts_dangerous_ones(drifting):
 def test_pdps_spelling_neighbor_modify(drifting):
     builds, _ = drifting("neighbor_modify delay 0 every 3 check no")
     assert builds == 4
+
+
+def _dpd_fluid(make_sim, temperature, steps, dimension=3):
+    sim = make_sim()
+    z = "-0.5 0.5" if dimension == 2 else "0 6"
+    sim.command(f"""
+        dimension {dimension}
+        region box block 0 6 0 6 {z}
+        create_box 2 box
+        mass * 1
+        create_particle 1 random 300 11 box
+        create_particle 2 random 200 12 box
+        pair_style dpd {temperature} 1.0 5
+        pair_coeff 1 1 25 4.5
+        pair_coeff 1 2 30 4.5 0.9
+        pair_coeff 2 2 25 4.5
+        velocity all create {temperature} 7 gaussian
+        neighbor 0.3
+        neigh_modify every 1 delay 0 check yes
+        timestep 0.04
+        fix 1 all nve
+        run {steps}
+    """)
+    return sim
+
+
+@pytest.mark.parametrize("dimension", [3, 2])
+def test_direct_mode_gives_the_forces_of_the_list(make_sim, dimension):
+    """A DPD fluid whose list is rebuilt at every step goes over to the cell loops (direct mode);
+    they give the list's forces (the same law over the same pairs, summed in another order) and
+    energy, and the list is still there for whoever reads it."""
+    sim = _dpd_fluid(make_sim, 1.0, 30, dimension)
+    nlist, p = sim.pair_list, sim.particles
+    assert nlist.direct
+    forces, energy = [], []
+    for direct in (True, False):
+        nlist.direct = direct
+        p.f[:] = 0.0
+        sim.pair.compute(sim, nlist, True, False)
+        sim.comm.reverse_comm(p, ("f",))
+        forces.append(p.f[: p.nlocal].copy())
+        energy.append(sim.pair.energy)
+    scale = np.abs(forces[1]).max()
+    assert np.abs(forces[0] - forces[1]).max() < 1e-12 * scale
+    assert energy[0] == pytest.approx(energy[1], rel=1e-12)
+    assert np.abs(forces[1]).sum() > 0
+
+
+def test_direct_mode_only_where_lists_live_one_step(make_sim):
+    """A DPD liquid at T = 0.01 started on a lattice moves so little that its list lives many steps:
+    it keeps its list."""
+    sim = make_sim()
+    sim.command("""
+        region box block 0 6 0 6 0 6
+        create_box 1 box
+        mass 1 1
+        lattice spacing x 0.5 y 0.5 z 0.5
+        create_particle 1 region box
+        pair_style dpd 0.01 1.0 5
+        pair_coeff * * 25 4.5
+        velocity all create 0.01 7 gaussian
+        neighbor 0.3
+        neigh_modify every 1 delay 0 check yes
+        timestep 0.04
+        fix 1 all nve
+        run 30
+    """)
+    assert not sim.pair_list.direct
+    assert sim.neighbors.builds <= 10       # a list lives several steps

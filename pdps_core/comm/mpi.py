@@ -73,6 +73,29 @@ def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, 
     return ranks, index, shift, m
 
 
+
+_NO_SHIFT = np.zeros((0, 3))
+
+
+@njit(cache=True)
+def _pack_rows(array, index, shift, out):
+    """Rows ``index`` of ``array`` into the flat buffer ``out``, plus ``shift`` (positions) if given."""
+    width = array.shape[1]
+    shifted = len(shift) > 0
+    for k in range(len(index)):
+        i = index[k]
+        for d in range(width):
+            out[k * width + d] = array[i, d] + (shift[k, d] if shifted else 0.0)
+
+
+@njit(cache=True)
+def _add_rows(array, index, rows):
+    """array[index[k]] += rows[k] (ghost forces summed onto their owners)."""
+    for k in range(len(index)):
+        i = index[k]
+        for d in range(array.shape[1]):
+            array[i, d] += rows[k, d]
+
 class MPIComm:
     def __init__(self, world=None):
         from mpi4py import MPI
@@ -88,6 +111,8 @@ class MPIComm:
         self._send_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._recv_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._self_ghost = np.zeros(0, dtype=np.int64)
+        self._layouts = {}          # ghost row layouts by width, for the current ghosts
+        self._send_buffer = self._recv_buffer = self._back_buffer = np.zeros(0)
 
     @property
     def is_root(self):
@@ -175,6 +200,7 @@ class MPIComm:
         self._send_index = index
         self._send_shift = shift
         self._send_counts = counts
+        self._layouts = {}
         rows = p.pack(index)
         rows[:, :3] += shift          # x is the first property: the rows carry the image position
         received, self._recv_counts = self._alltoall_rows(rows, counts, return_counts=True)
@@ -189,18 +215,51 @@ class MPIComm:
         """Owned index of every local particle; ghosts owned by another rank map to -1."""
         return np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self._self_ghost])
 
+    def _layout(self, width):
+        """Send and receive counts and displacements (in values) of ghost rows of ``width`` values,
+        fixed between rebuilds."""
+        layout = self._layouts.get(width)
+        if layout is None:
+            send, recv = self._send_counts * width, self._recv_counts * width
+            layout = (send, np.concatenate([[0], np.cumsum(send)[:-1]]),
+                      recv, np.concatenate([[0], np.cumsum(recv)[:-1]]))
+            self._layouts[width] = layout
+        return layout
+
+    def _buffers(self, width):
+        """Send and receive buffers for rows of ``width`` values, kept between steps."""
+        send_size = len(self._send_index) * width
+        recv_size = int(self._recv_counts.sum()) * width
+        if len(self._send_buffer) < send_size:
+            self._send_buffer = np.empty(int(1.25 * send_size) + 64)
+        if len(self._recv_buffer) < recv_size:
+            self._recv_buffer = np.empty(int(1.25 * recv_size) + 64)
+        return self._send_buffer[:send_size], self._recv_buffer[:recv_size]
+
     def forward_comm(self, particles, names=("x",)):
         p = particles
         index = self._send_index
         for name in names:
             array = p.arrays[name]
-            width = 1 if array.ndim == 1 else array.shape[1]
-            values = array[index].reshape(len(index), width).astype(np.float64)
-            if name == "x":
-                values += self._send_shift
-            received = self._alltoall_rows(values, self._send_counts, self._recv_counts)
-            ghost = array[p.nlocal:]
-            ghost[...] = received.reshape(ghost.shape).astype(array.dtype)
+            if array.dtype != np.float64 or array.ndim != 2:
+                self._forward_any(p, name)
+                continue
+            width = array.shape[1]
+            send, recv = self._buffers(width)
+            send_counts, send_displ, recv_counts, recv_displ = self._layout(width)
+            _pack_rows(array, index, self._send_shift if name == "x" else _NO_SHIFT, send)
+            self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
+                                 [recv, (recv_counts, recv_displ), self.MPI.DOUBLE])
+            array[p.nlocal:] = recv.reshape(p.nghost, width)
+
+    def _forward_any(self, p, name):
+        array = p.arrays[name]
+        index = self._send_index
+        width = 1 if array.ndim == 1 else array.shape[1]
+        values = array[index].reshape(len(index), width).astype(np.float64)
+        received = self._alltoall_rows(values, self._send_counts, self._recv_counts)
+        ghost = array[p.nlocal:]
+        ghost[...] = received.reshape(ghost.shape).astype(array.dtype)
 
     def reverse_comm(self, particles, names=("f",)):
         p = particles
@@ -208,10 +267,20 @@ class MPIComm:
         for name in names:
             array = p.arrays[name]
             width = 1 if array.ndim == 1 else array.shape[1]
-            ghost_values = array[p.nlocal:].reshape(p.nghost, width).astype(np.float64)
-            back = self._alltoall_rows(ghost_values, self._recv_counts, self._send_counts)
-            np.add.at(array.reshape(len(array), width) if width > 1 else array[:, None], index,
-                      back.reshape(len(index), width))
+            ghosts = array[p.nlocal:].reshape(p.nghost, width)
+            if array.dtype != np.float64:
+                ghosts = ghosts.astype(np.float64)
+            # back from every ghost to its owner: the forward layout reversed
+            recv_counts, recv_displ, send_counts, send_displ = self._layout(width)
+            back = self._reverse_buffer(len(index) * width)
+            self.world.Alltoallv([np.ascontiguousarray(ghosts).reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],
+                                 [back, (recv_counts, recv_displ), self.MPI.DOUBLE])
+            _add_rows(array.reshape(len(array), width), index, back.reshape(len(index), width))
+
+    def _reverse_buffer(self, size):
+        if len(self._back_buffer) < size:
+            self._back_buffer = np.empty(int(1.25 * size) + 64)
+        return self._back_buffer[:size]
 
     def reverse_rows(self, rows):
         """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,

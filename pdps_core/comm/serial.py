@@ -23,6 +23,58 @@ def _sum_onto_owners(values, source, nlocal):
             values[owner, d] += values[nlocal + g, d]
 
 
+@njit(cache=True)
+def _copy_to_ghosts(values, source, nlocal):
+    for g in range(len(source)):
+        for d in range(values.shape[1]):
+            values[nlocal + g, d] = values[source[g], d]
+
+
+@njit(cache=True)
+def _positions_to_ghosts(x, source, shift, nlocal):
+    for g in range(len(source)):
+        i = source[g]
+        x[nlocal + g, 0] = x[i, 0] + shift[g, 0]
+        x[nlocal + g, 1] = x[i, 1] + shift[g, 1]
+        x[nlocal + g, 2] = x[i, 2] + shift[g, 2]
+
+
+@njit(cache=True)
+def _periodic_images(x, nlocal, lo, hi, cutghost, periodic, source, shift):
+    """Ghosts of periodic images, one axis after the other (images of images make the edges and
+    corners): every copy of a particle (or of an earlier ghost) displaced by k box lengths along a
+    periodic axis that lands within ``cutghost`` of the box. Writes (owned index, shift) into the
+    buffers; returns how many ghosts, or -1 when they are too small."""
+    n = nlocal
+    capacity = len(source)
+    for d in range(3):
+        if not periodic[d]:
+            continue
+        length = hi[d] - lo[d]
+        images = int(math.ceil(cutghost / length))
+        current = n
+        for m in range(current):
+            if m < nlocal:
+                owner = m
+                base0, base1, base2 = 0.0, 0.0, 0.0
+            else:
+                owner = source[m - nlocal]
+                base0, base1, base2 = shift[m - nlocal, 0], shift[m - nlocal, 1], shift[m - nlocal, 2]
+            position = x[owner, d] + (base0, base1, base2)[d]
+            for k in range(1, images + 1):
+                for sign in (1.0, -1.0):
+                    moved = position + sign * k * length
+                    if moved < hi[d] + cutghost and moved >= lo[d] - cutghost:
+                        if n - nlocal >= capacity:
+                            return -1
+                        g = n - nlocal
+                        source[g] = owner
+                        shift[g, 0], shift[g, 1], shift[g, 2] = base0, base1, base2
+                        shift[g, d] += sign * k * length
+                        n += 1
+    return n - nlocal
+
+
 class SerialComm:
     nprocs = 1
     rank = 0
@@ -31,6 +83,8 @@ class SerialComm:
     def __init__(self):
         self.ghost_source = np.zeros(0, dtype=np.int64)
         self.ghost_shift = np.zeros((0, 3))
+        self._source = np.zeros(0, dtype=np.int64)      # buffers the ghosts' lists are written into
+        self._shift = np.zeros((0, 3))
 
     def exchange(self, particles, box, step):
         p = particles
@@ -48,31 +102,19 @@ class SerialComm:
     def borders(self, particles, box, cutghost):
         p = particles
         nlocal = p.nlocal
-        position = p.x[:nlocal].copy()
-        source = np.arange(nlocal, dtype=np.int64)
-        shift = np.zeros((nlocal, 3))
+        p.clear_ghosts()
+        count = 0
         if cutghost > 0:
-            for d in range(3):
-                if not box.periodic[d] or (box.dimension == 2 and d == 2):
-                    continue
-                length = box.hi[d] - box.lo[d]
-                images = math.ceil(cutghost / length)
-                new_pos, new_src, new_shift = [position], [source], [shift]
-                for k in range(1, images + 1):
-                    for sign in (1.0, -1.0):
-                        moved = position[:, d] + sign * k * length
-                        keep = (moved < box.hi[d] + cutghost) & (moved >= box.lo[d] - cutghost)
-                        if keep.any():
-                            delta = np.zeros(3)
-                            delta[d] = sign * k * length
-                            new_pos.append(position[keep] + delta)
-                            new_src.append(source[keep])
-                            new_shift.append(shift[keep] + delta)
-                position = np.concatenate(new_pos)
-                source = np.concatenate(new_src)
-                shift = np.concatenate(new_shift)
-        self.ghost_source = source[nlocal:]
-        self.ghost_shift = shift[nlocal:]
+            periodic = np.array([box.periodic[d] and not (box.dimension == 2 and d == 2) for d in range(3)])
+            while True:
+                count = _periodic_images(p.x, nlocal, box.lo, box.hi, cutghost, periodic, self._source,
+                                         self._shift)
+                if count >= 0:
+                    break
+                size = 2 * len(self._source) + nlocal + 16
+                self._source, self._shift = np.empty(size, dtype=np.int64), np.empty((size, 3))
+        self.ghost_source = self._source[:count]
+        self.ghost_shift = self._shift[:count]
         p.set_ghosts(self.ghost_source, self.ghost_shift)
 
     def owners(self, particles):
@@ -92,7 +134,9 @@ class SerialComm:
         for name in names:
             array = p.arrays[name]
             if name == "x":
-                array[p.nlocal:] = array[src] + self.ghost_shift
+                _positions_to_ghosts(array, src, self.ghost_shift, p.nlocal)
+            elif array.ndim == 2:
+                _copy_to_ghosts(array, src, p.nlocal)
             else:
                 array[p.nlocal:] = array[src]
 

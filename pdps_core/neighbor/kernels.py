@@ -1,8 +1,16 @@
-"""numba kernels for neighbor lists: cell binning and half/full Verlet lists in CSR form.
+"""numba kernels for neighbor lists: cell binning and half/full Verlet lists in CSR form, built much as
+LAMMPS builds them (npair_half_bin_newton, npair_full_bin).
 
-A half list holds each pair once. Pairs of two owned particles are kept as (i, j > i); a pair of an
-owned particle and a ghost is kept on the side where the ghost lies "above" (larger z, then y, then x),
-LAMMPS's newton-on rule, so that of the two periodic images of one pair exactly one is listed.
+Bins are whole fractions of the box, about half the neighbor cutoff wide, over the region the
+particles occupy; owned particles and ghosts are binned apart. A list is built from each owned
+particle's bin and a *stencil*, the bins whose nearest point lies within the neighbor cutoff, taken a
+row along x at a time (one contiguous run of binned particles per row instead of one per bin).
+
+A half list holds each pair once. Two owned particles are paired from the upper half of the stencil
+and, in the particle's own bin, from the particles after it. An owned particle and a ghost are
+paired, from the whole stencil, when the ghost lies "above" (larger z, then y, then x): LAMMPS's
+newton-on rule, which keeps exactly one of the two periodic images of a pair (and one of the two
+ranks' copies under MPI) whatever bins rounding puts a particle on a bin boundary in.
 """
 
 import numpy as np
@@ -38,88 +46,190 @@ def bin_particles(x, nall, lo, binsize, nbins):
 
 
 @njit(cache=True)
-def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, order, nbins, half, capacity,
-               excluded_types, excluded_groups, molecule, excluded_molecules):
+def extent(x, nlocal, nall):
+    """Lowest and highest coordinates of the owned particles and of all of them, (4, 3)."""
+    out = np.empty((4, 3))
+    for d in range(3):
+        out[0, d] = out[2, d] = np.inf
+        out[1, d] = out[3, d] = -np.inf
+    for i in range(nall):
+        row = 0 if i < nlocal else 2
+        for d in range(3):
+            v = x[i, d]
+            if v < out[row, d]:
+                out[row, d] = v
+            if v > out[row + 1, d]:
+                out[row + 1, d] = v
+    for d in range(3):
+        out[2, d] = min(out[2, d], out[0, d])
+        out[3, d] = max(out[3, d], out[1, d])
+    return out
+
+
+@njit(cache=True)
+def bin_into(x, nall, nlocal, lo, binsize, nbins, keep_off, cell, start, ghost_start, order, slot):
+    """Counting sort of particles into bins, owned and ghosts apart: ``cell[i]`` the bin of particle
+    i; ``order[start[c]:start[c+1]]`` the owned particles of bin c in index order, and
+    ``order[ghost_start[c]:ghost_start[c+1]]`` its ghosts; ``slot[i]`` where owned particle i sits in
+    ``order``. A particle beyond the grid goes to its edge bin, and owned ones stay ``keep_off[d]``
+    bins inside, so that their stencils stay in the grid (clamping keeps the bins' order, so no pair
+    is lost)."""
+    ncells = nbins[0] * nbins[1] * nbins[2]
+    for c in range(ncells + 1):
+        start[c] = 0
+        ghost_start[c] = 0
+    for i in range(nall):
+        index = 0
+        for d in range(2, -1, -1):
+            u = (x[i, d] - lo[d]) / binsize[d]
+            low = keep_off[d] if i < nlocal else 0
+            high = nbins[d] - 1 - low
+            if u < low:
+                k = low
+            elif u >= high:
+                k = high
+            else:
+                k = int(u)
+            index = index * nbins[d] + k
+        cell[i] = index
+        if i < nlocal:
+            start[index + 1] += 1
+        else:
+            ghost_start[index + 1] += 1
+    ghost_start[0] = nlocal
+    for c in range(ncells):
+        start[c + 1] += start[c]
+        ghost_start[c + 1] += ghost_start[c]
+    for i in range(nall):
+        c = cell[i]
+        if i < nlocal:
+            p = start[c]
+            start[c] = p + 1
+            slot[i] = p
+        else:
+            p = ghost_start[c]
+            ghost_start[c] = p + 1
+        order[p] = i
+    for c in range(ncells, 0, -1):
+        start[c] = start[c - 1]
+        ghost_start[c] = ghost_start[c - 1]
+    start[0] = 0
+    ghost_start[0] = nlocal
+
+
+@njit(cache=True)
+def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_start, order, slot,
+               owned_rows, ghost_rows, half, two_d, offsets, neighbors, excluded_types, excluded_groups,
+               molecule, excluded_molecules):
     """Neighbors of each owned particle of the group (``mask & groupbit``) within
-    cutneighsq[type_i, type_j]; particles outside the group have none. Pairs of excluded types
-    (``excluded_types[ti, tj]``), of excluded groups (rows of two mask bits, either order) or, for
-    rows (group bit, 1 for intra or 0 for inter) of ``excluded_molecules``, pairs of the group in the
-    same molecule (intra) or in different ones (inter) are left out (neigh_modify exclude).
-    -1 total on overflow."""
+    cutneighsq[type_i, type_j], into ``offsets`` (nlocal + 1) and ``neighbors``; particles outside the
+    group have none. ``owned_rows`` and ``ghost_rows``: the stencil's rows of bins along x, (first,
+    last) linear bin offsets, where owned partners and ghost partners are looked for (for a half
+    list the upper half without the own bin, and the rows not below in z); ``two_d``: z is not
+    searched. Pairs of excluded types (``excluded_types[ti, tj]``), of excluded groups (rows of two
+    mask bits, either order) or, for rows (group bit, 1 for intra or 0 for inter) of
+    ``excluded_molecules``, pairs of the group in the same molecule (intra) or in different ones
+    (inter) are left out (neigh_modify exclude). Returns the number of pairs, or -1 when ``neighbors`` is too small.
+
+    The pair test is written once, inline: a helper function taking the arrays would cost numba
+    reference counting on every candidate (20 times slower, measured)."""
     screen = excluded_groups.shape[0] > 0
     screen_molecules = excluded_molecules.shape[0] > 0
-    offsets = np.zeros(nlocal + 1, dtype=np.int64)
-    neighbors = np.empty(capacity, dtype=np.int64)
+    capacity = len(neighbors)
+    # ghosts lie outside the owned particles' bounding box (outside the box or this rank's part of
+    # it): a particle at least the cutoff inside that box has none to look at
+    inner_lo = np.empty(3)
+    inner_hi = np.empty(3)
+    for d in range(3):
+        inner_lo[d] = np.inf
+        inner_hi[d] = -np.inf
+    for i in range(nlocal):
+        for d in range(3):
+            inner_lo[d] = min(inner_lo[d], x[i, d])
+            inner_hi[d] = max(inner_hi[d], x[i, d])
+    reach = np.sqrt(cutneighsq.max())
+    for d in range(3):
+        if two_d and d == 2:
+            inner_lo[d], inner_hi[d] = -np.inf, np.inf
+        else:
+            inner_lo[d] += reach
+            inner_hi[d] -= reach
+    run_begin = np.empty(1 + len(owned_rows) + len(ghost_rows), dtype=np.int64)
+    run_end = np.empty_like(run_begin)
     k = 0
     for i in range(nlocal):
         offsets[i] = k
         if not mask[i] & groupbit:
             continue
         ci = cell[i]
-        cx = ci % nbins[0]
-        cy = (ci // nbins[0]) % nbins[1]
-        cz = ci // (nbins[0] * nbins[1])
         xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
         ti = type_[i]
-        for dz in range(-1, 2):
-            z = cz + dz
-            if z < 0 or z >= nbins[2]:
-                continue
-            for dy in range(-1, 2):
-                y = cy + dy
-                if y < 0 or y >= nbins[1]:
+        # runs of candidates: owned ones (the rest of i's own bin first, for a half list), then ghosts
+        nruns = 0
+        if half:
+            run_begin[0] = slot[i] + 1
+            run_end[0] = start[ci + 1]
+            nruns = 1
+        for r in range(len(owned_rows)):
+            run_begin[nruns] = start[ci + owned_rows[r, 0]]
+            run_end[nruns] = start[ci + owned_rows[r, 1] + 1]
+            nruns += 1
+        first_ghost_run = nruns
+        if not (inner_lo[0] <= xi <= inner_hi[0] and inner_lo[1] <= yi <= inner_hi[1]
+                and inner_lo[2] <= zi <= inner_hi[2]):
+            for r in range(len(ghost_rows)):
+                run_begin[nruns] = ghost_start[ci + ghost_rows[r, 0]]
+                run_end[nruns] = ghost_start[ci + ghost_rows[r, 1] + 1]
+                nruns += 1
+        for s in range(nruns):
+            ghost = s >= first_ghost_run
+            begin = run_begin[s]
+            end = run_end[s]
+            for p in range(begin, end):
+                j = order[p]
+                if j == i:
                     continue
-                for dx in range(-1, 2):
-                    xc = cx + dx
-                    if xc < 0 or xc >= nbins[0]:
+                if ghost and half:
+                    if x[j, 2] < zi:
                         continue
-                    c = (z * nbins[1] + y) * nbins[0] + xc
-                    for p in range(start[c], start[c + 1]):
-                        j = order[p]
-                        if j == i:
+                    if x[j, 2] == zi:
+                        if x[j, 1] < yi:
                             continue
-                        if half:
-                            if j < nlocal:
-                                if j < i:
-                                    continue
-                            elif x[j, 2] < zi:
-                                continue
-                            elif x[j, 2] == zi:
-                                if x[j, 1] < yi:
-                                    continue
-                                elif x[j, 1] == yi and x[j, 0] <= xi:
-                                    continue
-                        delx = xi - x[j, 0]
-                        dely = yi - x[j, 1]
-                        delz = zi - x[j, 2]
-                        if delx * delx + dely * dely + delz * delz < cutneighsq[ti, type_[j]]:
-                            if excluded_types[ti, type_[j]]:
-                                continue
-                            if screen:
-                                left_out = False
-                                for g in range(excluded_groups.shape[0]):
-                                    a, b = excluded_groups[g, 0], excluded_groups[g, 1]
-                                    if ((mask[i] & a) and (mask[j] & b)) or ((mask[i] & b) and (mask[j] & a)):
-                                        left_out = True
-                                        break
-                                if left_out:
-                                    continue
-                            if screen_molecules:
-                                left_out = False
-                                for g in range(excluded_molecules.shape[0]):
-                                    bit = excluded_molecules[g, 0]
-                                    if (mask[i] & bit) and (mask[j] & bit) and \
-                                            (molecule[i] == molecule[j]) == (excluded_molecules[g, 1] == 1):
-                                        left_out = True
-                                        break
-                                if left_out:
-                                    continue
-                            if k >= capacity:
-                                return offsets, neighbors, -1
-                            neighbors[k] = j
-                            k += 1
+                        if x[j, 1] == yi and x[j, 0] <= xi:
+                            continue
+                delx = xi - x[j, 0]
+                dely = yi - x[j, 1]
+                delz = zi - x[j, 2]
+                tj = type_[j]
+                if delx * delx + dely * dely + delz * delz >= cutneighsq[ti, tj]:
+                    continue
+                if excluded_types[ti, tj]:
+                    continue
+                if screen:
+                    left_out = False
+                    for g in range(excluded_groups.shape[0]):
+                        a, b = excluded_groups[g, 0], excluded_groups[g, 1]
+                        if ((mask[i] & a) and (mask[j] & b)) or ((mask[i] & b) and (mask[j] & a)):
+                            left_out = True
+                            break
+                    if left_out:
+                        continue
+                if screen_molecules:
+                    left_out = False
+                    for g in range(excluded_molecules.shape[0]):
+                        bit = excluded_molecules[g, 0]
+                        if (mask[i] & bit) and (mask[j] & bit) and \
+                                (molecule[i] == molecule[j]) == (excluded_molecules[g, 1] == 1):
+                            left_out = True
+                            break
+                    if left_out:
+                        continue
+                if k >= capacity:
+                    return -1
+                neighbors[k] = j
+                k += 1
     offsets[nlocal] = k
-    return offsets, neighbors, k
+    return k
 
 
 @njit(cache=True)

@@ -25,19 +25,20 @@ positions, particle order or summation order in the last bits and shift every la
 keeps all of them, so with forces that depend on positions only ``run N`` + ``run M`` is ``run N+M``.
 """
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
 from ..errors import ScriptError
 from ..state import limits
-from .kernels import bin_particles, build_list, max_displacement_sq
+from .kernels import bin_into, bin_particles, build_list, extent, max_displacement_sq
 
 ONE_DEFAULT = 2000
+# Direct mode (NeighborList) from the next build on when at least DIRECT_AT of the last 16 rebuild
+# decisions rebuilt: a list that lives one step costs more to write and read than the pairs it saves.
+HISTORY_MASK = 0xFFFF
+DIRECT_AT = 14
 NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
 
 
-@dataclass
 class NeighborList:
     """CSR list: the neighbors of owned particle i are ``neighbors[offsets[i]:offsets[i+1]]``, row
     indices into the particle arrays (owned ``< nlocal``, ghosts after).
@@ -46,14 +47,49 @@ class NeighborList:
     "full" holds it for both particles. ``cutoff`` is the interaction cutoff per type pair,
     (ntypes+1) x (ntypes+1); perpetual lists hold every pair within cutoff + skin (so they stay
     right until the next rebuild), occasional lists the pairs within the cutoff at the moment
-    they were built. ``groupbit``: only owned particles of that group have neighbors."""
-    kind: str
-    cutoff: np.ndarray
-    occasional: bool = False
-    groupbit: int = 0xFFFFFFFF
-    offsets: np.ndarray = field(default_factory=lambda: np.zeros(1, dtype=np.int64))
-    neighbors: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
-    built_step: int | None = None
+    they were built. ``groupbit``: only owned particles of that group have neighbors.
+
+    Direct mode (``direct``, for a list requested with ``direct_ok``, when the lists are rebuilt at
+    nearly every step): the pair style computes forces from the cell bins ``cells`` made at every
+    step, and the list itself is built only if something reads ``offsets`` or ``neighbors``."""
+
+    def __init__(self, kind, cutoff, occasional=False, groupbit=0xFFFFFFFF, direct_ok=False):
+        self.kind = kind
+        self.cutoff = cutoff
+        self.occasional = occasional
+        self.groupbit = groupbit
+        self.direct_ok = direct_ok
+        self.direct = False
+        self.cells = None           # direct mode: the bins, as the core's cell loops read them
+        self.built_step = None
+        self.buffer = np.zeros(0, dtype=np.int64)
+        self.offset_buffer = np.zeros(0, dtype=np.int64)
+        self._offsets = np.zeros(1, dtype=np.int64)
+        self._neighbors = np.zeros(0, dtype=np.int64)
+        self._pending = None        # builds the list when it is read (direct mode)
+
+    def _current(self):
+        if self._pending is not None:
+            build, self._pending = self._pending, None
+            build()
+
+    @property
+    def offsets(self):
+        self._current()
+        return self._offsets
+
+    @offsets.setter
+    def offsets(self, value):
+        self._offsets = value
+
+    @property
+    def neighbors(self):
+        self._current()
+        return self._neighbors
+
+    @neighbors.setter
+    def neighbors(self, value):
+        self._neighbors = value
 
     @property
     def half_list(self):
@@ -81,7 +117,11 @@ class Neighbor:
         self.excluded_type_pairs = []   # neigh_modify exclude type I J
         self.excluded_group_pairs = []  # neigh_modify exclude group G1 G2 (group names)
         self.excluded_molecules = []    # neigh_modify exclude molecule/intra|inter G: (group, "intra"|"inter")
-        self._capacity = 0
+        self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=np.int64)
+        self._last_grid = {}
+        self._direct = {name: np.zeros(0, dtype=np.int64) for name in ("cell", "start", "ghost_start", "order", "slot")}
+        self.history = 0            # the last rebuild decisions, one bit each (1: rebuilt)
+        self._stencils = {}
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
 
@@ -98,9 +138,10 @@ class Neighbor:
     def clear_requests(self):
         self.requests = []
 
-    def request(self, kind, cutoff, ntypes=None, occasional=False, groupbit=0xFFFFFFFF):
+    def request(self, kind, cutoff, ntypes=None, occasional=False, groupbit=0xFFFFFFFF, direct_ok=False):
         """A style asks for a list; ``cutoff`` is a (ntypes+1)^2 matrix or a number (the same for
-        every type pair: ``ntypes`` is then needed)."""
+        every type pair: ``ntypes`` is then needed). ``direct_ok``: the style can compute from the
+        cell bins instead (a half list; NeighborList's direct mode)."""
         if kind not in ("half", "full"):
             raise ScriptError(f"neighbor list kind must be half or full (got {kind})")
         cutoff = np.asarray(cutoff, dtype=np.float64)
@@ -108,7 +149,8 @@ class Neighbor:
             cutoff = np.full((ntypes + 1, ntypes + 1), float(cutoff))
         if not (np.isfinite(cutoff).all() and cutoff.max() > 0):
             raise ScriptError(f"neighbor list cutoff must be a finite number > 0 (got {cutoff.max():g})")
-        nlist = NeighborList(kind, cutoff, occasional=occasional, groupbit=groupbit)
+        nlist = NeighborList(kind, cutoff, occasional=occasional, groupbit=groupbit,
+                             direct_ok=direct_ok and kind == "half" and not occasional)
         self.requests.append(nlist)
         return nlist
 
@@ -136,6 +178,11 @@ class Neighbor:
     def decide(self, particles, comm):
         """Called once per step before forces: True when particles must be re-wrapped and the lists
         rebuilt now. Without any list it still decides when to wrap, so lost particles are caught."""
+        rebuild = self._decide(particles, comm)
+        self.history = ((self.history << 1) | int(rebuild)) & HISTORY_MASK
+        return rebuild
+
+    def _decide(self, particles, comm):
         self.ago += 1
         if self.ago < self.delay or self.ago % self.every:
             return False
@@ -206,17 +253,60 @@ class Neighbor:
         the rebuild schedule goes on."""
         p = particles
         if not resume:
-            self.xhold = p.x[:p.nlocal].copy()
+            if self.xhold is not None and self.xhold.shape == (p.nlocal, 3):
+                self.xhold[:] = p.x[:p.nlocal]
+            else:
+                self.xhold = p.x[:p.nlocal].copy()
             self.ago = 0
         self.built_with = (self.skin, [(r.kind, r.cutoff.copy()) for r in self.requests],
                            box.lo.copy(), box.hi.copy(), box.periodic)
         lists = self.perpetual
         if not lists:
             return
-        binned = self._bin(p, box)
+        direct = bin(self.history).count("1") >= DIRECT_AT
+        binned = None
         for nlist in lists:
-            self._fill(nlist, p, binned, self.skin)
+            nlist.direct = direct and nlist.direct_ok
+            if not nlist.direct:
+                binned = binned or self._bin(p, box)
+                self._fill(nlist, p, binned, self.skin)
         self.builds += 1
+        self.refresh(p, box)
+
+    def refresh(self, particles, box):
+        """Direct mode, at every step once ghosts are current: bin the particles where they are now
+        for the cell loops, and let a direct list be built from them if something reads it."""
+        for nlist in self.perpetual:
+            if nlist.direct:
+                nlist.cells = self._direct_bins(particles, box, nlist)
+                nlist._pending = lambda nlist=nlist, p=particles, box=box: \
+                    self._fill(nlist, p, self._bin(p, box), self.skin)
+
+    def _direct_bins(self, p, box, nlist):
+        """Bins of half the interaction cutoff (no skin: they are made afresh at every step) with
+        their stencils and the interior box (where no ghost is within the cutoff), in buffers of
+        their own (other lists' builds must not overwrite them)."""
+        cut = float(nlist.cutoff.max())
+        grid = self._grid(box, cut, p, cache="direct")
+        lo, binsize, nbins, keep_off = grid
+        bins = self._direct
+        ncells = int(np.prod(nbins))
+        if len(bins["start"]) < ncells + 1:
+            bins["start"] = np.empty(ncells + 1, dtype=np.int64)
+            bins["ghost_start"] = np.empty(ncells + 1, dtype=np.int64)
+        if len(bins["cell"]) < p.nall:
+            size = int(1.25 * p.nall) + 16
+            bins["cell"], bins["order"] = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+        if len(bins["slot"]) < p.nlocal:
+            bins["slot"] = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
+        bin_into(p.x, p.nall, p.nlocal, lo, binsize, nbins, keep_off, bins["cell"], bins["start"],
+                 bins["ghost_start"], bins["order"], bins["slot"])
+        owned_lo_hi = extent(p.x, p.nlocal, p.nlocal)
+        inner_lo, inner_hi = owned_lo_hi[0] + cut, owned_lo_hi[1] - cut
+        if box.dimension == 2:
+            inner_lo[2], inner_hi[2] = -np.inf, np.inf
+        return (bins["cell"], bins["start"], bins["ghost_start"], bins["order"], bins["slot"],
+                self._stencil(grid, cut, True), self._stencil(grid, cut, "above"), inner_lo, inner_hi)
 
     def build_occasional(self, nlist, particles, box, step):
         """Build an occasional list now, from the current positions of owned particles and ghosts
@@ -228,19 +318,101 @@ class Neighbor:
         return nlist
 
     def _bin(self, p, box):
-        cutmax = self.cutghost()
-        if cutmax <= 0:
+        """Bin every particle, owned and ghost, on the grid of the current cutoffs (``_grid``); the
+        buffers are kept from build to build."""
+        cutneigh = self.cutghost()
+        if cutneigh <= 0:
             raise ScriptError("neighbor list cutoff must be > 0")
-        reach = self.ghost_cutoff()
-        lo = box.lo - reach
-        extent = box.length + 2 * reach
-        nbins = limits.bin_grid(extent, cutmax)
-        if box.dimension == 2:
-            nbins[2] = 1
-            extent[2] = max(extent[2], 1.0)
-        binsize = extent / nbins
-        cell, start, order = bin_particles(p.x, p.nall, lo, binsize, nbins)
-        return cell, start, order, nbins
+        grid = self._grid(box, cutneigh, p)
+        lo, binsize, nbins, keep_off = grid
+        ncells = int(np.prod(nbins))
+        if len(self._start) < ncells + 1:
+            self._start = np.empty(ncells + 1, dtype=np.int64)
+            self._ghost_start = np.empty(ncells + 1, dtype=np.int64)
+        if len(self._cell) < p.nall:
+            size = int(1.25 * p.nall) + 16
+            self._cell, self._order = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+        if len(self._slot) < p.nlocal:
+            self._slot = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
+        bin_into(p.x, p.nall, p.nlocal, lo, binsize, nbins, keep_off, self._cell, self._start,
+                 self._ghost_start, self._order, self._slot)
+        return grid
+
+    def _grid(self, box, cutneigh, p, cache="lists"):
+        """(lo, binsize, nbins, keep_off) of the bins: whole fractions of the box length at least half
+        the neighbor cutoff wide (LAMMPS's default binsize), over the particles' extent, with room for
+        the stencil (``keep_off`` bins, its reach) around the owned particles. A grid of more than
+        about 8 bins per particle, or beyond limits.bin_grid, gets wider bins, and past that is cut
+        to size: particles beyond it share its edge bins (correct, only slower)."""
+        two_d = box.dimension == 2
+        low_high = extent(p.x, p.nlocal, p.nall)
+        most = min(limits.MAX_CELLS, 8 * p.nall + 4096)
+        target = 0.5 * cutneigh
+        while True:
+            per_box = limits.bin_grid(box.length, target)
+            binsize = box.length / per_box
+            reach = np.ceil(cutneigh / binsize).astype(np.int64)
+            with np.errstate(invalid="ignore", over="ignore"):
+                first = np.floor((np.minimum(low_high[2], low_high[0] - reach * binsize) - box.lo) / binsize) - 1
+                last = np.floor((np.maximum(low_high[3], low_high[1] + reach * binsize) - box.lo) / binsize) + 1
+            first = np.where(np.isfinite(first), first, 0.0)
+            last = np.where(np.isfinite(last), last, 0.0)
+            span = np.clip(last - first + 1, 2 * reach + 1, float(limits.MAX_BINS_PER_AXIS))
+            if two_d:
+                first[2], span[2], binsize[2], reach[2] = 0.0, 1.0, max(box.length[2], 1.0), 0
+            if float(np.prod(span)) <= most or (per_box == 1).all():
+                break
+            target *= 2.0
+        while float(np.prod(span)) > most and span.max() > 2 * reach.max() + 1:
+            widest = int(np.argmax(span - 2 * reach))
+            span[widest] = max(span[widest] // 2, 2 * reach[widest] + 1)
+        # the last grid, when it still covers the particles and is not much larger, keeps its
+        # stencils (a new grid shape costs a new stencil)
+        last_grid = self._last_grid.get(cache)
+        if last_grid is not None and np.array_equal(last_grid[1], binsize) and \
+                np.array_equal(last_grid[3], reach) and (last_grid[0] <= first).all() and \
+                (last_grid[0] + last_grid[2] >= first + span).all() and \
+                float(np.prod(last_grid[2])) <= 2.0 * float(np.prod(span)) + 64:
+            first, span = last_grid[0], last_grid[2]
+        else:
+            pad = np.where(reach > 0, 2, 0)      # a little room, so that the next builds fit too
+            first, span = first - pad, span + 2 * pad
+            if float(np.prod(span)) > most:
+                first, span = first + pad, span - 2 * pad
+            self._last_grid[cache] = (first.copy(), binsize.copy(), span.copy(), reach.copy())
+        lo = box.lo + first * binsize
+        if two_d:
+            lo[2] = box.lo[2]
+        return lo, binsize, span.astype(np.int64), reach
+
+    def _stencil(self, grid, cutneigh, half):
+        """The bins within ``cutneigh`` of a bin (nearest points), as rows along x: (first, last)
+        linear offsets of each row's bins, whose particles are contiguous in the binned order.
+        ``half`` True: the upper half without the bin itself (owned partners in a half list); "above":
+        the rows not below it in z (where a ghost above a particle can be, bins keeping the
+        coordinates' order); False: all."""
+        _, binsize, nbins, reach = grid
+        key = (tuple(binsize), tuple(nbins), cutneigh, half)
+        cached = self._stencils.get(key)
+        if cached is not None:
+            return cached
+        sx, sy, sz = (int(r) for r in reach)
+        rows = []
+        for k in range(-sz, sz + 1):
+            for j in range(-sy, sy + 1):
+                if half and (k < 0 or (k == 0 and j < 0 and half is True)):
+                    continue
+                gap_yz = (max(abs(j) - 1, 0) * binsize[1]) ** 2 + (max(abs(k) - 1, 0) * binsize[2]) ** 2
+                inside = [i for i in range(-sx, sx + 1)
+                          if gap_yz + (max(abs(i) - 1, 0) * binsize[0]) ** 2 < cutneigh * cutneigh
+                          and not (half is True and k == 0 and j == 0 and i <= 0)]
+                if inside:
+                    base = (k * int(nbins[1]) + j) * int(nbins[0])
+                    rows.append((base + inside[0], base + inside[-1]))
+        if len(self._stencils) > 16:        # a box or a grid that changes every build
+            self._stencils.clear()
+        self._stencils[key] = np.array(rows, dtype=np.int64).reshape(-1, 2)
+        return self._stencils[key]
 
     def exclusions(self, ntypes, groups):
         """The tables build_list reads, from neigh_modify exclude (called at a run's start)."""
@@ -254,8 +426,7 @@ class Neighbor:
         self._excluded_molecules = np.array([[groups.bit(g), kind == "intra"] for g, kind in self.excluded_molecules],
                                             dtype=np.uint32).reshape(-1, 2)
 
-    def _fill(self, nlist, p, binned, skin):
-        cell, start, order, nbins = binned
+    def _fill(self, nlist, p, grid, skin):
         if getattr(self, "_excluded_types", None) is None or self._excluded_types.shape[0] != nlist.cutoff.shape[0]:
             self._excluded_types = np.zeros(nlist.cutoff.shape, dtype=np.bool_)
             self._excluded_groups = np.zeros((0, 2), dtype=np.uint32)
@@ -264,22 +435,42 @@ class Neighbor:
         cutneighsq = (nlist.cutoff + skin) ** 2
         if cutneighsq.shape[0] != self.requests[0].cutoff.shape[0]:
             raise ScriptError("neighbor requests disagree on the number of types")
+        reach = float(np.sqrt(cutneighsq.max()))
+        owned_rows = self._stencil(grid, reach, nlist.half_list)
+        ghost_rows = self._stencil(grid, reach, "above" if nlist.half_list else False)
         # LAMMPS's neigh_modify one, taken as a mean: a list that would outgrow it is a mistake
         # (overlapping particles, a typo in a lattice), not something to allocate gigabytes for
         most = self.one * max(p.nlocal, 1)
-        capacity = min(max(self._capacity, 64 * max(p.nlocal, 1)), most)
+        if len(nlist.offset_buffer) < p.nlocal + 1:
+            nlist.offset_buffer = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
+        offsets = nlist.offset_buffer[:p.nlocal + 1]
+        if len(nlist.buffer) == 0:
+            nlist.buffer = np.empty(min(self._first_capacity(nlist, p, grid, cutneighsq), most), dtype=np.int64)
         while True:
-            offsets, neighbors, total = build_list(
-                p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, cell, start,
-                order, nbins, nlist.half_list, capacity, self._excluded_types, self._excluded_groups,
-                molecule, self._excluded_molecules)
+            total = build_list(p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, self._cell,
+                               self._start, self._ghost_start, self._order, self._slot, owned_rows, ghost_rows,
+                               nlist.half_list, grid[2][2] == 1, offsets, nlist.buffer, self._excluded_types,
+                               self._excluded_groups, molecule, self._excluded_molecules)
             if total >= 0:
                 break
-            if capacity >= most:
+            if len(nlist.buffer) >= most:
                 raise ScriptError(f"neighbor list overflow: more than {self.one} neighbors per particle "
                                   f"on average within {float(np.sqrt(cutneighsq.max())):g} of "
                                   f"{p.nlocal} particles (overlapping particles?); "
                                   "raise neigh_modify one if that is meant")
-            capacity = min(2 * capacity, most)
-        self._capacity = capacity
-        nlist.offsets, nlist.neighbors = offsets, neighbors[:total]
+            nlist.buffer = np.empty(min(2 * len(nlist.buffer), most), dtype=np.int64)
+        # a list that shrank a lot (particles deleted, a melt turned gas) gives its memory back
+        if len(nlist.buffer) > 4 * total + 4096:
+            nlist.buffer = nlist.buffer[:int(1.25 * total) + 1024].copy()
+        nlist.offsets, nlist.neighbors = offsets, nlist.buffer[:total]
+
+    def _first_capacity(self, nlist, p, grid, cutneighsq):
+        """Room for a list's first build: the pairs a uniform fluid of this density would have, with a
+        margin (a denser clump grows the buffer by doubling)."""
+        _, binsize, nbins, _ = grid
+        volume = float(np.prod(binsize * nbins))
+        density = p.nall / max(volume, 1e-300)
+        reach = float(np.sqrt(cutneighsq.max()))
+        ball = np.pi * reach * reach if nbins[2] == 1 else 4.0 / 3.0 * np.pi * reach ** 3
+        per_particle = density * ball * (0.5 if nlist.half_list else 1.0)
+        return int(min(1.3 * per_particle, 1e9) * p.nlocal) + 1024

@@ -12,16 +12,29 @@ Energy and virial are computed only on steps where an output reads them, and alw
 step of a run, so values read between runs are current.
 """
 
+import math
 import time
 
 import numpy as np
 import pluggy
+from numba import njit
 
 from ..errors import ScriptError, SimulationError
 from ..state import limits
 from ..styles import TALLY
 from .hookspec import HOOKS, TimestepSpec
 from .timers import timed_hooks
+
+
+@njit(cache=True)
+def first_non_finite(values, n):
+    """Index of the first of the first ``n`` rows holding a NaN or an infinity, -1 if none (every
+    step checks positions and forces: one pass, no temporaries)."""
+    for i in range(n):
+        for d in range(values.shape[1]):
+            if not math.isfinite(values[i, d]):
+                return i
+    return -1
 
 
 def _implements(style, hook):
@@ -92,7 +105,8 @@ class Verlet:
         sim.pair_list = None
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
-            sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff)
+            sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff,
+                                                 direct_ok=getattr(sim.pair, "cell_loops", False))
         # styles ask for neighbor lists (and prepare per-run state) before ghosts are sized
         sim.in_init = True
         try:
@@ -155,6 +169,7 @@ class Verlet:
         sim.neighbor.build(particles, sim.box, resume=True)
         particles.x[:n] = current
         sim.comm.forward_comm(particles, self.forward)
+        sim.neighbor.refresh(particles, sim.box)
         sim.timers.stage["Neigh"] += time.perf_counter() - t0
         self._call("pre_neighbor")
 
@@ -207,9 +222,9 @@ class Verlet:
         n = particles.nlocal
         message = None
         for name in ("x", "f"):
-            values = particles.arrays[name][:n]
-            if not np.isfinite(values).all():
-                i = int(np.flatnonzero(~np.isfinite(values).all(axis=1))[0])
+            values = particles.arrays[name]
+            i = first_non_finite(values, n)
+            if i >= 0:
                 what = "position" if name == "x" else "force"
                 message = (f"particle {int(particles.tag[i])} has a non-finite {what} "
                            f"({', '.join(f'{c:.6g}' for c in values[i])}) at step {self.sim.step}; "
@@ -267,7 +282,10 @@ class Verlet:
             else:
                 t0 = time.perf_counter()
                 sim.comm.forward_comm(particles, self.forward)
-                sim.timers.stage["Comm"] += time.perf_counter() - t0
+                t1 = time.perf_counter()
+                sim.neighbor.refresh(particles, sim.box)
+                sim.timers.stage["Comm"] += t1 - t0
+                sim.timers.stage["Neigh"] += time.perf_counter() - t1
             self._forces(eflag, vflag)
             self._call("post_force")
             self._fix_contributions()

@@ -57,9 +57,15 @@ PARTICLE_STYLES = {
 
 
 class Particles:
+    """``arrays[name]`` is a view of the first ``nall`` rows of a larger buffer (``_store``), grown
+    by a quarter when full: ghosts made at every rebuild and particles arriving from other ranks
+    are written in place instead of allocating every array anew. A view taken before particles are
+    added, deleted or ghosts are made may be stale afterwards: read ``p.x`` again."""
+
     def __init__(self):
         self.properties = dict(CORE)
-        self.arrays = {name: self._empty(p, 0) for name, p in self.properties.items()}
+        self._store = {name: self._empty(p, 0) for name, p in self.properties.items()}
+        self.arrays = dict(self._store)
         self.nlocal = 0
         self.nghost = 0
         self.next_tag = 1
@@ -68,6 +74,35 @@ class Particles:
     def _empty(prop, n):
         shape = (n, prop.width) if prop.width > 1 else (n,)
         return np.full(shape, prop.default, dtype=prop.dtype)
+
+    def _capacity(self):
+        return len(self._store["tag"])
+
+    def _reserve(self, rows):
+        """Room for ``rows`` particles in every buffer (the values of the current ones kept)."""
+        if rows <= self._capacity():
+            return
+        size = max(rows, int(1.25 * self._capacity()) + 16)
+        used = self.nlocal + self.nghost
+        for name, prop in self.properties.items():
+            shape = (size, prop.width) if prop.width > 1 else (size,)
+            grown = np.empty(shape, dtype=prop.dtype)
+            grown[:used] = self._store[name][:used]
+            self._store[name] = grown
+
+    def _views(self):
+        n = self.nlocal + self.nghost
+        for name in self.properties:
+            self.arrays[name] = self._store[name][:n]
+
+    def load(self, properties, values, nlocal):
+        """Set every per-atom array at once (a restart file read): ``values[name]`` holds ``nlocal``
+        owned particles for each of ``properties`` (name -> Property)."""
+        self.properties = dict(properties)
+        self._store = {name: np.array(values[name], dtype=prop.dtype) for name, prop in self.properties.items()}
+        self.arrays = {}
+        self.nlocal, self.nghost = nlocal, 0
+        self._views()
 
     # ---- properties -------------------------------------------------------------------------------
     def request(self, name, width=None, dtype=np.float64, default=0.0):
@@ -79,7 +114,8 @@ class Particles:
                 raise ScriptError(f"per-atom property {name} requested with two different shapes")
             return self.arrays[name]
         self.properties[name] = prop
-        self.arrays[name] = self._empty(prop, self.nlocal + self.nghost)
+        self._store[name] = self._empty(prop, self._capacity())
+        self.arrays[name] = self._store[name][:self.nlocal + self.nghost]
         return self.arrays[name]
 
     def request_all(self, entries):
@@ -119,8 +155,11 @@ class Particles:
         x = np.atleast_2d(np.asarray(x, dtype=np.float64))
         n = len(x)
         start = self.nlocal
+        self._reserve(start + n)
         for name, prop in self.properties.items():
-            self.arrays[name] = np.concatenate([self.arrays[name], self._empty(prop, n)])
+            self._store[name][start:start + n] = prop.default
+        self.nlocal += n
+        self._views()
         self.arrays["x"][start:] = x
         self.arrays["type"][start:] = type_
         if tags is None:
@@ -131,30 +170,36 @@ class Particles:
             if name not in self.arrays:
                 raise ScriptError(f"per-atom property {name} does not exist (a style must request it)")
             self.arrays[name][start:] = value
-        self.nlocal += n
         return np.arange(start, start + n)
 
     def keep(self, selection):
         """Keep only the owned particles selected (boolean mask or index array), in that order."""
         self.clear_ghosts()
-        for name in self.arrays:
-            self.arrays[name] = self.arrays[name][selection]
-        self.nlocal = len(self.arrays["tag"])
+        kept = 0
+        for name in self.properties:
+            values = self._store[name][:self.nlocal][selection]
+            kept = len(values)
+            self._store[name][:kept] = values
+        self.nlocal = kept
+        self._views()
 
     # ---- ghosts ---------------------------------------------------------------------------------
     def clear_ghosts(self):
         if self.nghost:
-            for name in self.arrays:
-                self.arrays[name] = self.arrays[name][: self.nlocal]
             self.nghost = 0
+            self._views()
 
     def set_ghosts(self, source, shift):
         """Replace the ghosts by copies of owned particles ``source`` displaced by ``shift`` (n x 3)."""
         self.clear_ghosts()
-        for name in self.arrays:
-            self.arrays[name] = np.concatenate([self.arrays[name], self.arrays[name][source]])
-        self.arrays["x"][self.nlocal:] += shift
-        self.nghost = len(source)
+        n = len(source)
+        self._reserve(self.nlocal + n)
+        for name in self.properties:
+            store = self._store[name]
+            np.take(store[:self.nlocal], source, axis=0, out=store[self.nlocal:self.nlocal + n])
+        self._store["x"][self.nlocal:self.nlocal + n] += shift
+        self.nghost = n
+        self._views()
 
     # ---- rows: every per-atom value of a particle as one float64 row (migration, ghosts) ----------
     def row_width(self):
@@ -183,16 +228,22 @@ class Particles:
     def append_owned(self, rows):
         """Particles arriving from another rank become owned (ghosts are cleared first)."""
         self.clear_ghosts()
+        n, start = len(rows), self.nlocal
+        self._reserve(start + n)
         for name, values in self._unpack(rows).items():
-            self.arrays[name] = np.concatenate([self.arrays[name], values])
-        self.nlocal += len(rows)
+            self._store[name][start:start + n] = values
+        self.nlocal += n
+        self._views()
 
     def set_ghost_rows(self, rows):
         """Replace the ghosts by particles received as rows."""
         self.clear_ghosts()
+        n, start = len(rows), self.nlocal
+        self._reserve(start + n)
         for name, values in self._unpack(rows).items():
-            self.arrays[name] = np.concatenate([self.arrays[name], values])
-        self.nghost = len(rows)
+            self._store[name][start:start + n] = values
+        self.nghost = n
+        self._views()
 
     # ---- lookup ---------------------------------------------------------------------------------
     def index_of_tag(self, tag):

@@ -50,7 +50,7 @@ from pydantic import ValidationError
 
 from .. import __version__
 from ..errors import ScriptError
-from ..neighbor.neighbor import Neighbor
+from ..neighbor.neighbor import HISTORY_MASK, Neighbor
 from ..styles import StyleArgs, registry
 from . import limits
 from .box import Box
@@ -145,7 +145,8 @@ def _neighbor_record(neighbor, particles, arrays, resumable=True):
     record = {"skin": neighbor.skin, "style": neighbor.style, "every": neighbor.every,
               "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
               "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
-              "dangerous": neighbor.dangerous, "one": neighbor.one, "built_with": None}
+              "dangerous": neighbor.dangerous, "one": neighbor.one, "history": neighbor.history,
+              "built_with": None}
     # the schedule and the lists' recipe go along only while they are current for the particles
     if resumable and neighbor.is_current(particles) and neighbor.built_with is not None:
         skin, lists, lo, hi, periodic = neighbor.built_with
@@ -425,6 +426,8 @@ def validate(header, arrays):
                f"from 1 to {limits.MAX_NEIGHBORS_ONE}")
     if neighbor.get("last_sort") is not None:
         _field(neighbor, "last_sort", int, lambda k: 0 <= k <= limits.MAX_STEP, "a step or null")
+    if "history" in neighbor:
+        _field(neighbor, "history", int, lambda k: 0 <= k <= HISTORY_MASK, f"an integer from 0 to {HISTORY_MASK}")
     _field(neighbor, "style", str, lambda s: s in ("single", "multi", "bin", "nsq"), "a neighbor style")
     built = neighbor.get("built_with")
     if built is not None:
@@ -564,21 +567,25 @@ def _lattice(header, arrays):
 def _particles(record, arrays):
     particles = Particles()
     n = int(record["nlocal"])
-    particles.properties, particles.arrays = {}, {}
+    properties, loaded = {}, {}
     for entry in record["properties"]:
         name = entry["name"]
         prop = Property(name, int(entry["width"]), np.dtype(entry["dtype"]).type, entry["default"])
+        try:
+            np.full(1, prop.default, dtype=prop.dtype)
+        except (OverflowError, ValueError, TypeError):
+            raise ScriptError(f"per-atom array {name} has a default {prop.default!r} that is not an "
+                              f"{np.dtype(prop.dtype).name}") from None
         values = arrays[f"particles/{name}"]
         shape = (n, prop.width) if prop.width > 1 else (n,)
         if values.shape != shape or values.dtype != np.dtype(prop.dtype):
             raise ValueError(f"per-atom array {name} has shape {values.shape} and dtype {values.dtype}, "
                              f"expected {shape} and {np.dtype(prop.dtype).name}")
-        particles.properties[name] = prop
-        particles.arrays[name] = values.copy()
-    missing = [name for name in CORE if name not in particles.properties]
+        properties[name], loaded[name] = prop, values
+    missing = [name for name in CORE if name not in properties]
     if missing:
         raise ValueError(f"per-atom arrays {', '.join(missing)} are missing")
-    particles.nlocal = n
+    particles.load(properties, loaded, n)
     particles.next_tag = int(record["next_tag"])
     return particles
 
@@ -609,6 +616,7 @@ def _neighbor(record, arrays, particles):
     neighbor.ago = int(record["ago"])
     neighbor.builds, neighbor.dangerous = int(record["builds"]), int(record["dangerous"])
     neighbor.one = int(record.get("one", neighbor.one))
+    neighbor.history = int(record.get("history", 0))
     built = record["built_with"]
     if built is not None:
         neighbor.xhold = arrays["neighbor/xhold"].copy()

@@ -13,14 +13,19 @@ Between particles i and j closer than the cutoff :math:`r_c`, with :math:`\mathb
 
 :math:`\xi_{ij}` is a standard normal number, the same for (i, j) and (j, i), drawn from a counter-based
 generator keyed by (seed, step, tag_i, tag_j): the noise does not depend on particle order or on how the
-box is split over ranks. The potential energy counts the conservative part only,
+box is split over ranks (normal numbers by Marsaglia and Tsang's ziggurat). With ``noise uniform``,
+:math:`\xi_{ij}` is instead uniform on :math:`[-\sqrt3, \sqrt3]` (zero mean, unit variance), Groot and
+Warren's choice: the fluctuation-dissipation theorem needs only the variance, and the uniform number
+is cheaper; docs/performance.md gives what it saves and what it changes. The potential energy counts
+the conservative part only,
 :math:`E = \tfrac12 a r_c w^2`. Pairs closer than 1e-10 are skipped (coincident particles have no
 defined direction), as in LAMMPS.
 
 Parameters (LAMMPS/PDPS units of the run):
 
-- ``pair_style dpd T rc seed``: ``T`` temperature (> = 0, temperature units), ``rc`` global cutoff
-  (> 0, distance), ``seed`` integer >= 1.
+- ``pair_style dpd T rc seed [noise gaussian|uniform]``: ``T`` temperature (> = 0, temperature
+  units), ``rc`` global cutoff (> 0, distance), ``seed`` integer >= 1; ``noise`` the distribution of
+  the random numbers (default gaussian, as LAMMPS; ``noise`` is pdps's own keyword).
 - ``pair_coeff I J a gamma [rc]``: ``a`` repulsion (force), ``gamma`` friction (>= 0, force/velocity),
   ``rc`` cutoff of this pair (distance; default the global one).
 
@@ -52,15 +57,17 @@ Example (the PDPS manual's water)::
 """
 
 import math
+from typing import Literal
 
 import numpy as np
 from numba import njit
 from pydantic import Field
 
-from pdps_core.api import PairLaw, ScriptError, StyleArgs, observables, pair_gaussian
+from pdps_core.api import PairLaw, ScriptError, StyleArgs, keyword, observables, pair_gaussian, pair_uniform
 
 EPSILON = 1.0e-10        # the core's pair loop skips pairs closer than this (coincident particles)
 STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more than ~5 % (docstring)
+SQRT3 = math.sqrt(3.0)
 
 
 @njit(cache=True, inline="always")
@@ -80,6 +87,21 @@ def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
 
 
 @njit(cache=True, inline="always")
+def dpd_uniform_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """The force law with uniform noise of unit variance, sqrt(3) (2u - 1) (``noise uniform``)."""
+    a, gamma, sigma, rc = coeff[0], coeff[1], coeff[2], coeff[3]
+    v, tag = atom
+    seed, step, dt_inv_sqrt = state
+    r = math.sqrt(rsq)
+    rinv = 1.0 / r
+    w = 1.0 - r / rc
+    dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
+    xi = SQRT3 * (2.0 * pair_uniform(seed, step, tag[i], tag[j]) - 1.0)
+    fpair = a * w - gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
+    return fpair * rinv, 0.5 * a * rc * w * w
+
+
+@njit(cache=True, inline="always")
 def dpd_conservative_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
     """The conservative part alone, for a splitting integrator (fix shardlow) that takes friction
     and noise."""
@@ -91,12 +113,13 @@ def dpd_conservative_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
 
 class PairDPD(PairLaw):
     name = "dpd"
-    usage = "pair_style dpd T rc seed"
+    usage = "pair_style dpd T rc seed [noise gaussian|uniform]"
     coeff_usage = "a gamma [rc]"
     ghost_velocity = True
     params = ("a", "gamma", "sigma", "rc")
     law_atom = ("v", "tag")
     law = staticmethod(dpd_law)
+    uniform_law = staticmethod(dpd_uniform_law)
     conservative_law = staticmethod(dpd_conservative_law)
     split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
@@ -104,6 +127,7 @@ class PairDPD(PairLaw):
         temperature: float = Field(ge=0)
         cutoff: float = Field(gt=0)
         seed: int = Field(ge=1, lt=2**63)
+        noise: Literal["gaussian", "uniform"] = keyword("gaussian")
 
     class Coeff(StyleArgs):
         a: float
@@ -168,7 +192,9 @@ class PairDPD(PairLaw):
         return cut, (c.a, c.gamma, sigma, cut)
 
     def force_law(self):
-        return self.conservative_law if self.split else self.law
+        if self.split:
+            return self.conservative_law
+        return self.uniform_law if self.args.noise == "uniform" else self.law
 
     def law_state(self, sim):
         return (sim.random_key(self.args.seed), sim.step, 1.0 / math.sqrt(sim.dt))

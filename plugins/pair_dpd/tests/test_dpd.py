@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from pdps_core import testing
-from pdps_core.api import Fix, ScriptError, observables, pair_gaussian, philox4x32
+from pdps_core.api import Fix, ScriptError, observables, pair_gaussian, pair_uniform, philox4x32
 from pdps_core.testing import by_tag, energy_gradient, forces_by_tag, make_box, register_styles
 
 SEED = 4872155
@@ -24,10 +24,10 @@ DT = 0.04
 # ---- helpers ------------------------------------------------------------------------------------
 def build(tmp_path, x, *, v=None, types=None, tags=None, lo=(0.0, 0.0, 0.0), hi=(10.0, 10.0, 10.0),
           boundary="f f f", T=1.0, rc=1.0, coeffs=("* * 25.0 0.0",), dt=DT, units="lj",
-          name="data.dpd", skin=None, masses=None):
+          name="data.dpd", skin=None, masses=None, noise=""):
     """A Simulation holding the given particles with pair style dpd; nothing run yet."""
     setup = [] if skin is None else [f"neighbor {skin}"]
-    setup += [f"timestep {dt!r}", f"pair_style dpd {T!r} {rc!r} {SEED}"]
+    setup += [f"timestep {dt!r}", f"pair_style dpd {T!r} {rc!r} {SEED} {noise}"]
     setup += [f"pair_coeff {line}" for line in coeffs]
     return testing.build(tmp_path, x, setup="\n".join(setup), types=types, tags=tags, v=v,
                          masses=masses, lo=lo, hi=hi, boundary=boundary, units=units, name=name)
@@ -165,6 +165,20 @@ def test_random_force_is_sigma_w_xi_over_sqrt_dt(tmp_path, units, T, gamma, dt, 
     np.testing.assert_allclose(forces_by_tag(sim)[0], expected, rtol=1e-10)
     np.testing.assert_allclose(forces_by_tag(sim)[1], -expected, rtol=1e-10)
     assert sim.pe == 0.0
+
+
+@pytest.mark.parametrize("step", [0, 5, 123])
+def test_uniform_noise_is_sigma_w_xi_over_sqrt_dt_with_xi_uniform_of_unit_variance(tmp_path, step):
+    """noise uniform: as above with xi = sqrt(3) (2 u - 1), u = pair_uniform(seed, step, i, j)."""
+    r, T, gamma = 0.6, 1.0, 4.5
+    e = unit([0.3, -0.5, 0.8])
+    x = np.array([np.full(3, 5.0) + r * e, np.full(3, 5.0)])
+    sim = build(tmp_path, x, T=T, coeffs=(f"1 1 0.0 {gamma!r}",), noise="noise uniform")
+    sim.command(f"reset_timestep {step}\nrun 0")
+    xi = math.sqrt(3.0) * (2.0 * pair_uniform(SEED, step, 1, 2) - 1.0)
+    expected = math.sqrt(2.0 * T * gamma) * (1.0 - r) * xi / math.sqrt(DT) * e
+    np.testing.assert_allclose(forces_by_tag(sim)[0], expected, rtol=1e-10)
+    np.testing.assert_allclose(forces_by_tag(sim)[1], -expected, rtol=1e-10)
 
 
 def test_random_force_does_not_depend_on_which_particle_comes_first(tmp_path):
@@ -524,6 +538,7 @@ def _box():
     ("pair_style dpd 1.0 1.0 5.5", ("seed", "integer", "(got 5.5)")),
     ("pair_style dpd 1.0 1.0", ("missing argument seed",)),
     ("pair_style dpd 1.0 nan 5", ("cutoff", "(got nan)")),
+    ("pair_style dpd 1.0 1.0 5 noise lorentz", ("noise", "gaussian", "uniform", "(got lorentz)")),
 ])
 def test_bad_pair_style_arguments(line, words):
     sim = _box()
