@@ -1,11 +1,14 @@
 """Neighbor lists against brute force, and the rebuild decision of neigh_modify."""
 
+import io
 import itertools
 
 import numpy as np
 import pytest
 
 from pdps_core.api import Fix, registry
+from pdps_core.neighbor import skin_trial
+from pdps_core.testing import thermo_rows
 
 
 def brute_force_pairs(x, lengths, periodic, cut):
@@ -239,3 +242,52 @@ def test_direct_mode_only_where_lists_live_one_step(make_sim):
     """)
     assert not sim.pair_list.direct
     assert sim.neighbors.builds <= 10       # a list lives several steps
+
+
+def _lj_liquid(make_sim, skin, steps, modify="every 1 delay 0 check yes"):
+    """LAMMPS's melt on 500 atoms; returns (sim, its screen text)."""
+    screen = io.StringIO()
+    sim = make_sim(screen=screen)
+    sim.command(f"""
+        units lj
+        lattice fcc 0.8442
+        region box block 0 5 0 5 0 5
+        create_box 1 box
+        create_atoms 1 box
+        mass 1 1.0
+        velocity all create 1.44 87287 loop geom
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0 2.5
+        neighbor {skin} bin
+        neigh_modify {modify}
+        timestep 0.005
+        fix 1 all nve
+        thermo_style custom step temp pe press
+        thermo 50
+        run {steps}
+    """)
+    return sim, screen.getvalue()
+
+
+def test_neighbor_auto_chooses_a_skin_without_changing_the_run(make_sim):
+    """neighbor auto tries six skins over the first 150 steps and keeps the fastest, saying so; the
+    trajectory is the fixed skin's (the forces do not depend on the skin) up to round-off."""
+    _, fixed_text = _lj_liquid(make_sim, 0.3, 200)
+    auto, text = _lj_liquid(make_sim, "auto", 200)
+    candidates = [round(f * 2.5, 12) for f in skin_trial.FRACTIONS]
+    assert len(candidates) * skin_trial.STEPS < 200
+    assert auto.neighbors.skin in candidates
+    report = [line for line in text.splitlines() if line.startswith("neighbor auto: skin ")]
+    assert len(report) == 1 and f"skin {auto.neighbors.skin:g} " in report[0]
+    assert all(f"{c:g}: " in report[0] for c in candidates)
+    table = "\n".join(line for line in text.splitlines() if line not in report)
+    np.testing.assert_allclose(np.array(thermo_rows(table)), np.array(thermo_rows(fixed_text)), rtol=1e-9)
+
+
+def test_neighbor_auto_rules_out_skins_that_could_miss_pairs(make_sim):
+    """With rebuilds held back (every 10, check no), a skin the particles outrun in 10 steps may miss
+    pairs: ruled out, and the choice is a skin that did not."""
+    auto, text = _lj_liquid(make_sim, "auto", 160, modify="every 10 delay 0 check no")
+    report = next(line for line in text.splitlines() if line.startswith("neighbor auto: skin "))
+    assert "0.125: ruled out" in report
+    assert f"{auto.neighbors.skin:g}: ruled out" not in report

@@ -60,8 +60,14 @@ def lattice(sim, args):
 
 @command("neighbor")
 def neighbor(sim, args):
-    count(args, 1, "neighbor SKIN [single|multi|bin]", at_most=2)
-    sim.neighbors.skin = number(args[0], "skin", low=0.0, high=limits.MAX_COORDINATE)
+    """``neighbor SKIN|auto [single|multi|bin]``; ``auto`` (pdps's own): the first steps of the next
+    run try several skins and keep the fastest (pdps_core/neighbor/skin_trial.py)."""
+    count(args, 1, "neighbor SKIN|auto [single|multi|bin]", at_most=2)
+    if args[0] == "auto":
+        sim.neighbors.start_skin_trial()
+    else:
+        sim.neighbors.skin = number(args[0], "skin", low=0.0, high=limits.MAX_COORDINATE)
+        sim.neighbors.skin_trial = None
     if len(args) == 2:
         style = choice(args[1], "neighbor style", ("single", "multi", "bin"))
         sim.neighbors.style = "single" if style == "bin" else style

@@ -29,6 +29,7 @@ import numpy as np
 
 from ..errors import ScriptError
 from ..state import limits
+from .skin_trial import SkinTrial
 from .kernels import bin_into, bin_particles, build_list, extent, max_displacement_sq
 
 ONE_DEFAULT = 2000
@@ -121,9 +122,15 @@ class Neighbor:
         self._last_grid = {}
         self._direct = {name: np.zeros(0, dtype=np.int64) for name in ("cell", "start", "ghost_start", "order", "slot")}
         self.history = 0            # the last rebuild decisions, one bit each (1: rebuilt)
+        self.skin_trial = None      # neighbor auto: a SkinTrial until it has chosen
+        self.moved_at_build = 0.0   # the largest move since the last build seen at a rebuild (the trial's)
         self._stencils = {}
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
+
+    def start_skin_trial(self):
+        """``neighbor auto``: the next run tries skins first (skin_trial.py)."""
+        self.skin_trial = SkinTrial(self.skin)
 
     def modify(self, every=None, delay=None, check=None, one=None):
         if one is not None:
@@ -197,6 +204,7 @@ class Neighbor:
                 self.overrun = max(self.overrun, float(np.sqrt(moved_sq)))
         if self.ago == max(self.every, self.delay) and self.check:
             self.dangerous += 1
+        self.moved_at_build = max(self.moved_at_build, float(np.sqrt(moved_sq)))
         return True
 
     # ---- spatial sort ---------------------------------------------------------------------------

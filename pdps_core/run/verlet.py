@@ -127,6 +127,12 @@ class Verlet:
                               f"style {sim.pair.name} does not tally")
 
         sim.box_changed = False
+        trial = sim.neighbor.skin_trial
+        if trial is not None and not trial.done:
+            if sim.neighbor.requests:
+                trial.begin(max(float(r.cutoff.max()) for r in sim.neighbor.requests))
+            else:
+                sim.neighbor.skin_trial = None
         limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
         limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
@@ -245,6 +251,17 @@ class Verlet:
                        "blown up (time step too large or forces too strong?)")
         sim.comm.agree(message)
 
+    def _skin_trial(self, step):
+        """neighbor auto: the skin this step switches to while the trial lasts (None: no change)."""
+        trial = self.sim.neighbor.skin_trial
+        if trial is None or trial.done:
+            return None
+        skin = trial.next_skin(self.sim.neighbor, step, self.sim.comm)
+        if trial.done:
+            self.sim.neighbor.skin_trial = None
+            self.sim.info(trial.report(skin))
+        return skin
+
     # ---- steps ----------------------------------------------------------------------------------
     def run(self, nsteps):
         sim = self.sim
@@ -255,9 +272,15 @@ class Verlet:
             sim.time += sim.dt
             step = sim.step
             eflag, vflag = sim.output.flags(step, last)
+            new_skin = self._skin_trial(step)
             self._call("initial_integrate")
             self._call("post_integrate")
             rebuild = sim.neighbor.decide(particles, sim.comm)
+            if new_skin is not None:
+                sim.neighbor.skin = new_skin
+                sim.neighbor.moved_at_build = 0.0       # moves under the old skin are not the new one's
+                rebuild = True
+                limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a box changed since the last decision (barostat, deform) shifts every periodic image:
             # wrap and make the ghosts again with the new lengths (sim.change_box)
             if sim.box_changed:
