@@ -112,6 +112,7 @@ class MPIComm:
         self._recv_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._self_ghost = np.zeros(0, dtype=np.int64)
         self._layouts = {}          # ghost row layouts by width, for the current ghosts
+        self._owners = None
         self._send_buffer = self._recv_buffer = self._back_buffer = np.zeros(0)
 
     @property
@@ -201,6 +202,7 @@ class MPIComm:
         self._send_shift = shift
         self._send_counts = counts
         self._layouts = {}
+        self._owners = None
         rows = p.pack(index)
         rows[:, :3] += shift          # x is the first property: the rows carry the image position
         received, self._recv_counts = self._alltoall_rows(rows, counts, return_counts=True)
@@ -212,8 +214,11 @@ class MPIComm:
         self._self_ghost[start:start + len(own_index)] = own_index
 
     def owners(self, particles):
-        """Owned index of every local particle; ghosts owned by another rank map to -1."""
-        return np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self._self_ghost])
+        """Owned index of every local particle; ghosts owned by another rank map to -1. Kept until
+        the ghosts are made again."""
+        if self._owners is None or len(self._owners) != particles.nlocal + len(self._self_ghost):
+            self._owners = np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self._self_ghost])
+        return self._owners
 
     def _layout(self, width):
         """Send and receive counts and displacements (in values) of ghost rows of ``width`` values,

@@ -85,6 +85,7 @@ class SerialComm:
         self.ghost_shift = np.zeros((0, 3))
         self._source = np.zeros(0, dtype=np.int64)      # buffers the ghosts' lists are written into
         self._shift = np.zeros((0, 3))
+        self._owners = None
 
     def exchange(self, particles, box, step):
         p = particles
@@ -115,12 +116,16 @@ class SerialComm:
                 self._source, self._shift = np.empty(size, dtype=np.int64), np.empty((size, 3))
         self.ghost_source = self._source[:count]
         self.ghost_shift = self._shift[:count]
+        self._owners = None
         p.set_ghosts(self.ghost_source, self.ghost_shift)
 
     def owners(self, particles):
         """Owned index of every particle, owned or ghost (ghost -> the particle it copies). On one
-        rank every ghost's owner is local; the MPI version maps only its own ghosts."""
-        return np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
+        rank every ghost's owner is local; the MPI version maps only its own ghosts. Kept until the
+        ghosts are made again."""
+        if self._owners is None or len(self._owners) != particles.nlocal + len(self.ghost_source):
+            self._owners = np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
+        return self._owners
 
     def reverse_rows(self, rows):
         """Rows of ghost values, with the owned index each ghost copies."""
