@@ -699,7 +699,9 @@ class TestNeighbor:
     @pytest.mark.parametrize("line, command, message", [
         ("neighbor -1", "neighbor", "skin must be >= 0 (got -1)"),
         ("neighbor 0.3 nsq", "neighbor", "neighbor style must be one of single, multi, bin (got nsq)"),
-        ("neighbor", "neighbor", "expected 1 to 2 argument(s), got 0; usage: neighbor SKIN [single|multi|bin]"),
+        ("neighbor auto nsq", "neighbor", "neighbor style must be one of single, multi, bin (got nsq)"),
+        ("neighbor outo", "neighbor", "skin must be a number (got outo)"),
+        ("neighbor", "neighbor", "expected 1 to 2 argument(s), got 0; usage: neighbor SKIN|auto [single|multi|bin]"),
         ("neigh_modify every 0", "neigh_modify", "every must be >= 1 (got 0)"),
         ("neigh_modify delay -1", "neigh_modify", "delay must be >= 0 (got -1)"),
         ("neigh_modify every", "neigh_modify",

@@ -33,6 +33,9 @@ from .skin_trial import SkinTrial
 from .kernels import bin_into, bin_particles, build_list, extent, max_displacement_sq
 
 ONE_DEFAULT = 2000
+# Rows of neighbors in a list: 32 bits (half the memory and the bandwidth of 64; a rank holds fewer
+# than 2^31 particles and ghosts).
+NEIGHBOR_INDEX = np.int32
 # Direct mode (NeighborList) from the next build on when at least DIRECT_AT of the last 16 rebuild
 # decisions rebuilt: a list that lives one step costs more to write and read than the pairs it saves.
 HISTORY_MASK = 0xFFFF
@@ -63,10 +66,10 @@ class NeighborList:
         self.direct = False
         self.cells = None           # direct mode: the bins, as the core's cell loops read them
         self.built_step = None
-        self.buffer = np.zeros(0, dtype=np.int64)
+        self.buffer = np.zeros(0, dtype=NEIGHBOR_INDEX)
         self.offset_buffer = np.zeros(0, dtype=np.int64)
         self._offsets = np.zeros(1, dtype=np.int64)
-        self._neighbors = np.zeros(0, dtype=np.int64)
+        self._neighbors = np.zeros(0, dtype=NEIGHBOR_INDEX)
         self._pending = None        # builds the list when it is read (direct mode)
 
     def _current(self):
@@ -274,10 +277,17 @@ class Neighbor:
         direct = bin(self.history).count("1") >= DIRECT_AT
         binned = None
         for nlist in lists:
+            going_direct = direct and nlist.direct_ok and not nlist.direct
             nlist.direct = direct and nlist.direct_ok
+            if going_direct:
+                # the list's memory back (it is built again only if something reads it)
+                nlist.buffer = np.zeros(0, dtype=NEIGHBOR_INDEX)
+                nlist.offsets, nlist.neighbors = np.zeros(1, dtype=np.int64), np.zeros(0, dtype=NEIGHBOR_INDEX)
             if not nlist.direct:
                 binned = binned or self._bin(p, box)
                 self._fill(nlist, p, binned, self.skin)
+        if binned is None and any(nlist.direct for nlist in lists) and len(self._cell):
+            self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=np.int64)
         self.builds += 1
         self.refresh(p, box)
 
@@ -453,7 +463,7 @@ class Neighbor:
             nlist.offset_buffer = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
         offsets = nlist.offset_buffer[:p.nlocal + 1]
         if len(nlist.buffer) == 0:
-            nlist.buffer = np.empty(min(self._first_capacity(nlist, p, grid, cutneighsq), most), dtype=np.int64)
+            nlist.buffer = np.empty(min(self._first_capacity(nlist, p, grid, cutneighsq), most), dtype=NEIGHBOR_INDEX)
         while True:
             total = build_list(p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, self._cell,
                                self._start, self._ghost_start, self._order, self._slot, owned_rows, ghost_rows,
@@ -466,7 +476,7 @@ class Neighbor:
                                   f"on average within {float(np.sqrt(cutneighsq.max())):g} of "
                                   f"{p.nlocal} particles (overlapping particles?); "
                                   "raise neigh_modify one if that is meant")
-            nlist.buffer = np.empty(min(2 * len(nlist.buffer), most), dtype=np.int64)
+            nlist.buffer = np.empty(min(2 * len(nlist.buffer), most), dtype=NEIGHBOR_INDEX)
         # a list that shrank a lot (particles deleted, a melt turned gas) gives its memory back
         if len(nlist.buffer) > 4 * total + 4096:
             nlist.buffer = nlist.buffer[:int(1.25 * total) + 1024].copy()
@@ -476,8 +486,12 @@ class Neighbor:
         """Room for a list's first build: the pairs a uniform fluid of this density would have, with a
         margin (a denser clump grows the buffer by doubling)."""
         _, binsize, nbins, _ = grid
-        volume = float(np.prod(binsize * nbins))
-        density = p.nall / max(volume, 1e-300)
+        # the owned particles' density (a grid's margins would dilute it and a first build overflow)
+        low_high = extent(p.x, p.nlocal, p.nlocal)
+        sides = np.maximum(low_high[1] - low_high[0], binsize)
+        if nbins[2] == 1:
+            sides[2] = 1.0
+        density = p.nlocal / max(float(np.prod(sides)), 1e-300)
         reach = float(np.sqrt(cutneighsq.max()))
         ball = np.pi * reach * reach if nbins[2] == 1 else 4.0 / 3.0 * np.pi * reach ** 3
         per_particle = density * ball * (0.5 if nlist.half_list else 1.0)
