@@ -13,6 +13,7 @@ import numpy as np
 from numba import njit
 
 from ..errors import SimulationError
+from ..state.finite import first_non_finite
 
 
 @njit(cache=True)
@@ -91,9 +92,8 @@ class SerialComm:
         p = particles
         p.clear_ghosts()
         x = p.x
-        bad = ~np.isfinite(x).all(axis=1)
-        if bad.any():
-            i = int(np.flatnonzero(bad)[0])
+        i = first_non_finite(x, p.nlocal)
+        if i >= 0:
             raise SimulationError(
                 f"particle {int(p.tag[i])} has a non-finite position {tuple(x[i])} at step {step}")
         gone = box.wrap(x, p.image, p.tag, step, box.lost)

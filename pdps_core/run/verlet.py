@@ -12,42 +12,17 @@ Energy and virial are computed only on steps where an output reads them, and alw
 step of a run, so values read between runs are current.
 """
 
-import math
 import time
 
 import numpy as np
 import pluggy
-from numba import njit
 
 from ..errors import ScriptError, SimulationError
 from ..state import limits
+from ..state.finite import first_non_finite
 from ..styles import TALLY
 from .hookspec import HOOKS, TimestepSpec
 from .timers import timed_hooks
-
-
-@njit(cache=True, fastmath={"reassoc"})
-def _nan_if_not_finite(values, n):
-    """NaN when one of the first ``n`` rows holds a NaN or an infinity (v * 0 is NaN for those), else
-    0: a sum the compiler may reorder, so it runs in vector registers."""
-    flat = values[:n].reshape(-1)
-    total = 0.0
-    for k in range(flat.shape[0]):
-        total += flat[k] * 0.0
-    return total
-
-
-@njit(cache=True)
-def first_non_finite(values, n):
-    """Index of the first of the first ``n`` rows holding a NaN or an infinity, -1 if none (every
-    step checks positions and forces: one vectorised pass, no temporaries)."""
-    if _nan_if_not_finite(values, n) == 0.0:
-        return -1
-    for i in range(n):
-        for d in range(values.shape[1]):
-            if not math.isfinite(values[i, d]):
-                return i
-    return -1
 
 
 def _implements(style, hook):

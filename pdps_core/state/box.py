@@ -7,10 +7,36 @@ The bounds may change during a run (``Simulation.change_box``: barostats, fix de
 place (``set_bounds``), so every holder of the box sees the new ones.
 """
 
+import math
+
 import numpy as np
+from numba import njit
 
 from ..errors import SimulationError
 
+
+@njit(cache=True)
+def _wrap_axis(x, image, n, d, lo, hi):
+    """Periodic axis d: positions moved back into [lo, hi) by whole lengths, image flags counting."""
+    length = hi - lo
+    for i in range(n):
+        shift = math.floor((x[i, d] - lo) / length)
+        if shift != 0:
+            x[i, d] -= shift * length
+            image[i, d] += np.int32(shift)
+            # floor() rounding can leave x == hi; hi belongs to the next image
+            if x[i, d] >= hi:
+                x[i, d] = lo
+                image[i, d] += 1
+
+
+@njit(cache=True)
+def _inside_axis(x, n, d, lo, hi):
+    """True when every position lies within [lo, hi] on fixed axis d (and is finite)."""
+    for i in range(n):
+        if not (lo <= x[i, d] <= hi):
+            return False
+    return True
 
 class Box:
     def __init__(self, lo, hi, periodic, dimension=3):
@@ -52,16 +78,9 @@ class Box:
         gone = np.zeros(len(x), dtype=bool)
         for d in range(3):
             if self.periodic[d]:
-                length = self.hi[d] - self.lo[d]
-                shift = np.floor((x[:, d] - self.lo[d]) / length)
-                moved = shift != 0
-                if moved.any():
-                    x[moved, d] -= shift[moved] * length
-                    image[moved, d] += shift[moved].astype(np.int32)
-                    # floor() rounding can leave x == hi; hi belongs to the next image
-                    at_hi = x[:, d] >= self.hi[d]
-                    x[at_hi, d] = self.lo[d]
-                    image[at_hi, d] += 1
+                _wrap_axis(x, image, len(x), d, self.lo[d], self.hi[d])
+            elif _inside_axis(x, len(x), d, self.lo[d], self.hi[d]):
+                continue
             else:
                 out = (x[:, d] < self.lo[d]) | (x[:, d] > self.hi[d]) | ~np.isfinite(x[:, d])
                 if out.any() and lost != "error":
