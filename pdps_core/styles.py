@@ -383,6 +383,10 @@ class PairLaw(Pair):
     law_atom: ClassVar[tuple] = ()
     law: ClassVar = None            # the force law (a static numba function)
     law_source: str | None = None   # or Python source defining ``law`` (generated laws)
+    # True for a cheap law defined at every distance of the list (no table lookups, no random
+    # numbers): the core evaluates it for every listed pair and keeps those within the cutoff,
+    # without a branch (pdps_core.pair_loop.MASKED_TEST)
+    masked: ClassVar[bool] = False
 
     def init(self, ntypes, pairs=None):
         size = ntypes + 1
@@ -432,7 +436,8 @@ class PairLaw(Pair):
             from .pair_loop import loops_for
             nparams = len(self.params)
             self._loops = (loops_for(nparams, source=self.law_source, name=self.name.replace("/", "_"))
-                           if self.law_source is not None else loops_for(nparams, law=self.force_law()))
+                           if self.law_source is not None else
+                           loops_for(nparams, law=self.force_law(), masked=self.masked))
         p = sim.particles
         atom = tuple(p.arrays[name] for name in self.law_atom)
         tally = getattr(sim, "tally_atom", False)
