@@ -13,11 +13,13 @@ def launched_ranks():
     return next((int(os.environ[v]) for v in RANK_COUNT_VARIABLES if os.environ.get(v)), 1)
 
 
-# One BLAS thread per MPI rank, set before numpy loads: OpenBLAS's spinning worker threads otherwise
-# take the cores the other ranks need (dpd_gw on 2 ranks: 9.0 s instead of 3.1 s for 100 steps).
-if launched_ranks() > 1:
-    for _variable in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-        os.environ.setdefault(_variable, "1")
+# One BLAS thread per process, set before numpy loads (a user's own setting wins). The kernels are
+# numba's; numpy's few BLAS calls are small, and OpenBLAS's worker threads only spin between them: under
+# MPI they take the cores the other ranks need (dpd_gw on 2 ranks: 9.0 s instead of 3.1 s for 100
+# steps), and on one rank they burn 40 % of a second core for the same loop time (dpd_gw, lj_melt).
+# OpenMP's thread count is left to the user on one rank (a plugin's parallel numba kernel may use it).
+for _variable in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS") + (("OMP_NUM_THREADS",) if launched_ranks() > 1 else ()):
+    os.environ.setdefault(_variable, "1")
 
 
 def _writable(folder):
