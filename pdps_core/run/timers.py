@@ -25,7 +25,7 @@ class Timers:
             rows.append((name, max(total - accounted, 0.0) if name == "Other" else self.stage[name]))
             if name == "Modify":
                 rows += [(f"  {style}", t) for style, t in sorted(self.style.items(), key=lambda kv: -kv[1])]
-        width = max(len(label) for label, _ in rows)
+        width = max(len("Section"), *(len(label) for label, _ in rows))
         lines = [f"{'Section':<{width}} |  time (s)  | %total", f"{'-' * width}-+------------+-------"]
         for label, seconds in rows:
             share = 100.0 * seconds / total if total > 0 else 0.0
