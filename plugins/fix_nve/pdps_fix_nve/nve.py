@@ -19,28 +19,34 @@ Example::
     fix 1 all nve
 """
 
+import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, observables
+from pdps_core.api import Fix
+
+NO_RMASS = np.zeros(0)
 
 
 @njit(cache=True)
-def nve_initial(x, v, f, mass, mask, groupbit, nlocal, dt, ftm2v):
+def nve_initial(x, v, f, type_, mass, rmass, mask, groupbit, nlocal, dt, ftm2v):
+    """Half kick and drift; the mass is ``rmass[i]`` when given, else the type's."""
     half = 0.5 * dt * ftm2v
+    with_rmass = len(rmass) > 0
     for i in range(nlocal):
         if mask[i] & groupbit:
-            dtfm = half / mass[i]
+            dtfm = half / (rmass[i] if with_rmass else mass[type_[i]])
             for d in range(3):
                 v[i, d] += dtfm * f[i, d]
                 x[i, d] += dt * v[i, d]
 
 
 @njit(cache=True)
-def nve_final(v, f, mass, mask, groupbit, nlocal, dt, ftm2v):
+def nve_final(v, f, type_, mass, rmass, mask, groupbit, nlocal, dt, ftm2v):
     half = 0.5 * dt * ftm2v
+    with_rmass = len(rmass) > 0
     for i in range(nlocal):
         if mask[i] & groupbit:
-            dtfm = half / mass[i]
+            dtfm = half / (rmass[i] if with_rmass else mass[type_[i]])
             for d in range(3):
                 v[i, d] += dtfm * f[i, d]
 
@@ -50,11 +56,11 @@ class FixNVE(Fix):
     usage = "fix ID GROUP nve"
 
     def initial_integrate(self, sim):
-        p = sim.particles
-        nve_initial(p.x, p.v, p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                    p.nlocal, sim.dt, sim.units.ftm2v)
+        a = sim.particles.arrays
+        nve_initial(a["x"], a["v"], a["f"], a["type"], sim.mass, a.get("rmass", NO_RMASS), a["mask"],
+                    sim.groups.bit(self.group), sim.particles.nlocal, sim.dt, sim.units.ftm2v)
 
     def final_integrate(self, sim):
-        p = sim.particles
-        nve_final(p.v, p.f, observables.masses(sim), p.mask, sim.groups.bit(self.group),
-                  p.nlocal, sim.dt, sim.units.ftm2v)
+        a = sim.particles.arrays
+        nve_final(a["v"], a["f"], a["type"], sim.mass, a.get("rmass", NO_RMASS), a["mask"],
+                  sim.groups.bit(self.group), sim.particles.nlocal, sim.dt, sim.units.ftm2v)
