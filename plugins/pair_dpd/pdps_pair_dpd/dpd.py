@@ -71,34 +71,34 @@ SQRT3 = math.sqrt(3.0)
 
 
 @njit(cache=True, inline="always")
-def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
-    """The force law (docstring formula); coeff = (a, gamma, sigma, rc), atom = (v, tag),
-    state = (seed, step, 1/sqrt(dt))."""
+def dpd_pair(rsq, dot, coeff, xi, dt_inv_sqrt):
+    """F/r and the conservative energy of one pair from r^2, r_ij . v_ij and the noise xi (the
+    docstring formula); coeff = (a, gamma, sigma, rc)."""
     a, gamma, sigma, rc = coeff[0], coeff[1], coeff[2], coeff[3]
-    v, tag = atom
-    seed, step, dt_inv_sqrt = state
     r = math.sqrt(rsq)
     rinv = 1.0 / r
     w = 1.0 - r / rc
-    dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
-    xi = pair_gaussian(seed, step, tag[i], tag[j])
     fpair = a * w - gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
     return fpair * rinv, 0.5 * a * rc * w * w
 
 
 @njit(cache=True, inline="always")
-def dpd_uniform_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
-    """The force law with uniform noise of unit variance, sqrt(3) (2u - 1) (``noise uniform``)."""
-    a, gamma, sigma, rc = coeff[0], coeff[1], coeff[2], coeff[3]
+def dpd_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """The force law with Gaussian noise; atom = (v, tag), state = (seed, step, 1/sqrt(dt))."""
     v, tag = atom
     seed, step, dt_inv_sqrt = state
-    r = math.sqrt(rsq)
-    rinv = 1.0 / r
-    w = 1.0 - r / rc
+    dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
+    return dpd_pair(rsq, dot, coeff, pair_gaussian(seed, step, tag[i], tag[j]), dt_inv_sqrt)
+
+
+@njit(cache=True, inline="always")
+def dpd_uniform_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
+    """The force law with uniform noise of unit variance, sqrt(3) (2u - 1) (``noise uniform``)."""
+    v, tag = atom
+    seed, step, dt_inv_sqrt = state
     dot = dx * (v[i, 0] - v[j, 0]) + dy * (v[i, 1] - v[j, 1]) + dz * (v[i, 2] - v[j, 2])
     xi = SQRT3 * (2.0 * pair_uniform(seed, step, tag[i], tag[j]) - 1.0)
-    fpair = a * w - gamma * w * w * dot * rinv + sigma * w * xi * dt_inv_sqrt
-    return fpair * rinv, 0.5 * a * rc * w * w
+    return dpd_pair(rsq, dot, coeff, xi, dt_inv_sqrt)
 
 
 @njit(cache=True, inline="always")
