@@ -175,10 +175,11 @@ def test_pdps_spelling_neighbor_modify(drifting):
     assert builds == 4
 
 
-def _dpd_fluid(make_sim, temperature, steps, dimension=3):
+def _dpd_fluid(make_sim, temperature, steps, dimension=3, setup=""):
     sim = make_sim()
     z = "-0.5 0.5" if dimension == 2 else "0 6"
     sim.command(f"""
+        {setup}
         dimension {dimension}
         region box block 0 6 0 6 {z}
         create_box 2 box
@@ -291,3 +292,12 @@ def test_neighbor_auto_rules_out_skins_that_could_miss_pairs(make_sim):
     report = next(line for line in text.splitlines() if line.startswith("neighbor auto: skin "))
     assert "0.125: ruled out" in report
     assert f"{auto.neighbors.skin:g}: ruled out" not in report
+
+
+def test_direct_mode_re_sorts_particles_every_100_steps_unless_atom_modify_says(make_sim):
+    """A fluid whose lists live one step diffuses fast: in direct mode the particles are put back in
+    cell order every 100 steps (LAMMPS's default interval, 1000, when atom_modify sort gives it)."""
+    sim = _dpd_fluid(make_sim, 1.0, 250)
+    assert sim.pair_list.direct and sim.neighbors.last_sort == 200
+    held = _dpd_fluid(make_sim, 1.0, 250, setup="atom_modify sort 1000 0.0")
+    assert held.pair_list.direct and held.neighbors.last_sort == 0

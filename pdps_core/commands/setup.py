@@ -212,6 +212,7 @@ def atom_modify(sim, args):
             if k + 2 >= len(args):
                 raise ScriptError(f"sort needs N and BINSIZE; usage: {usage}")
             sim.neighbors.sort_every = integer(args[k + 1], "sort interval", low=0)
+            sim.neighbors.sort_set = True
             number(args[k + 2], "bin size", low=0.0)
             k += 3
         elif key in ("map", "id") and k + 1 < len(args):
