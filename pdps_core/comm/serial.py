@@ -32,6 +32,26 @@ def _copy_to_ghosts(values, source, nlocal):
 
 
 @njit(cache=True)
+def _copy_pair_to_ghosts(first, second, source, nlocal):
+    """Two vectors per particle at once (v and omega of a granular step: one call fewer a step)."""
+    for g in range(len(source)):
+        i = source[g]
+        for d in range(3):
+            first[nlocal + g, d] = first[i, d]
+            second[nlocal + g, d] = second[i, d]
+
+
+@njit(cache=True)
+def _sum_pair_onto_owners(first, second, source, nlocal):
+    """f and torque summed back at once (one call fewer a step)."""
+    for g in range(len(source)):
+        owner = source[g]
+        for d in range(3):
+            first[owner, d] += first[nlocal + g, d]
+            second[owner, d] += second[nlocal + g, d]
+
+
+@njit(cache=True)
 def _positions_to_ghosts(x, source, shift, nlocal):
     for g in range(len(source)):
         i = source[g]
@@ -74,6 +94,10 @@ def _periodic_images(x, nlocal, lo, hi, cutghost, periodic, source, shift):
                         shift[g, d] += sign * k * length
                         n += 1
     return n - nlocal
+
+
+def _vector(array):
+    return array.ndim == 2 and array.shape[1] == 3 and array.dtype == np.float64
 
 
 class SerialComm:
@@ -136,21 +160,34 @@ class SerialComm:
         src = self.ghost_source
         if not len(src):
             return
+        pending = None          # a vector waiting for a second one, to copy both in one call
         for name in names:
             array = p.arrays[name]
             if name == "x":
                 _positions_to_ghosts(array, src, self.ghost_shift, p.nlocal)
+            elif _vector(array):
+                if pending is None:
+                    pending = array
+                else:
+                    _copy_pair_to_ghosts(pending, array, src, p.nlocal)
+                    pending = None
             elif array.ndim == 2:
                 _copy_to_ghosts(array, src, p.nlocal)
             else:
                 array[p.nlocal:] = array[src]
+        if pending is not None:
+            _copy_to_ghosts(pending, src, p.nlocal)
 
     def reverse_comm(self, particles, names=("f",)):
         p = particles
         if not len(self.ghost_source):
             return
-        for name in names:
-            _sum_onto_owners(p.arrays[name], self.ghost_source, p.nlocal)
+        arrays = [p.arrays[name] for name in names]
+        if len(arrays) == 2 and _vector(arrays[0]) and _vector(arrays[1]):
+            _sum_pair_onto_owners(arrays[0], arrays[1], self.ghost_source, p.nlocal)
+            return
+        for array in arrays:
+            _sum_onto_owners(array, self.ghost_source, p.nlocal)
 
     def set_grid(self, fixed):
         """Validated by the processors command: on one rank every factor is 1."""
