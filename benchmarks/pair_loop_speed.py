@@ -23,9 +23,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import Simulation, pair_gaussian
-
-sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "plugins" / "pair_lj" / "tests"))
-from test_lj_cut import lj_melt_data  # noqa: E402  (the in.lj configuration)
+from pdps_core.testing import bench_data
 
 EPSILON = 1.0e-10
 
@@ -97,7 +95,7 @@ def water():
 
 
 def lj(folder, style):
-    lj_melt_data(folder / "lj_fcc.data")
+    bench_data("lj_fcc", folder / "lj_fcc.data")      # the in.lj configuration
     sim = Simulation(screen=False, log=None)
     coeff = "1 1 1.0 1.0 2.5" if style == "lj/cut" else '1 1 "4*eps*((sig/r)^12 - (sig/r)^6)" eps 1.0 sig 1.0'
     sim.command(f"read_data {folder / 'lj_fcc.data'}\npair_style {style} 2.5\npair_coeff {coeff}\n"
