@@ -21,27 +21,18 @@ def chosen(sim, group, region=None):
     return selected
 
 
-@njit(cache=True)
-def add_weight(f, mass, mask, groupbit, nlocal, ax, ay, az):
-    """f += m a on the group's owned particles, per-particle masses (every step of a granular run:
-    no temporaries; a zero component of a is not added, which saves a third of the work per axis)."""
-    for i in range(nlocal):
-        if mask[i] & groupbit:
-            m = mass[i]
-            if ax != 0.0:
-                f[i, 0] += m * ax
-            if ay != 0.0:
-                f[i, 1] += m * ay
-            if az != 0.0:
-                f[i, 2] += m * az
+NO_RMASS = np.zeros(0)
 
 
 @njit(cache=True)
-def add_type_weight(f, type_, type_mass, mask, groupbit, nlocal, ax, ay, az):
-    """f += m a on the group's owned particles, masses per type."""
+def add_weight(f, type_, type_mass, rmass, mask, groupbit, nlocal, ax, ay, az):
+    """f += m a on the group's owned particles, m = rmass[i] when given (non-empty), else the type's
+    mass (every step of a granular run: no temporaries; a zero component of a is not added, which
+    saves a third of the work per axis)."""
+    with_rmass = len(rmass) > 0
     for i in range(nlocal):
         if mask[i] & groupbit:
-            m = type_mass[type_[i]]
+            m = rmass[i] if with_rmass else type_mass[type_[i]]
             if ax != 0.0:
                 f[i, 0] += m * ax
             if ay != 0.0:

@@ -42,7 +42,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from ._common import add_type_weight, add_weight
+from ._common import NO_RMASS, add_weight
 
 VALUES = {"vector": "X Y Z", "chute": "ANGLE", "spherical": "PHI THETA"}
 
@@ -98,8 +98,5 @@ class FixGravity(Fix):
         p = sim.particles
         a = p.arrays
         ax, ay, az = self.acceleration
-        if "rmass" in a:
-            add_weight(a["f"], a["rmass"], a["mask"], sim.groups.bit(self.group), p.nlocal, ax, ay, az)
-        else:
-            add_type_weight(a["f"], a["type"], sim.mass, a["mask"], sim.groups.bit(self.group), p.nlocal,
-                            ax, ay, az)
+        add_weight(a["f"], a["type"], sim.mass, a.get("rmass", NO_RMASS), a["mask"], sim.groups.bit(self.group),
+                   p.nlocal, ax, ay, az)
