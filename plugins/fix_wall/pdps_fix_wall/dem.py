@@ -78,7 +78,7 @@ ELEMENT_BITS = 32           # history key = wall number << 32 | element id on th
 @njit(cache=True)
 def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, v, omega,
                     f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu, per_mass,
-                    e_star, g_star, beta, dt, update, used, slots):
+                    e_star, g_star, beta, dt, update, used, slots, contact_force):
     """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``
     (``used``: one flag per history slot; ``slots``: one row per contact, at least).
     Returns -1, or the index of a particle whose contact history overflowed."""
@@ -89,7 +89,7 @@ def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach
                                     wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
                                     partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
                                     g_star, beta, dt, update, used, slots[offsets[k]:], n, rel, force,
-                                    spring)
+                                    spring, contact_force)
         if not ok:
             return i
     return -1
@@ -151,6 +151,7 @@ class FixWallDEM(Fix):
         self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0
         self._cutoffs = np.empty(0)
         self._still, self._slots = np.zeros((0, 3)), np.empty(0, dtype=np.int64)
+        self._contact_force = np.empty((0, 3))
         self._used = np.empty(self.history.capacity, dtype=np.bool_)
 
     def setup(self, sim):
@@ -212,6 +213,7 @@ class FixWallDEM(Fix):
         if len(self._still) < len(index):
             self._still = np.zeros((2 * len(index), 3))
             self._slots = np.empty(2 * len(index), dtype=np.int64)
+            self._contact_force = np.empty((2 * len(index), 3))
         rotation = "omega" in a and "torque" in a
         omega = a["omega"] if rotation else a["v"]
         torque = a["torque"] if rotation else a["f"]
@@ -219,6 +221,6 @@ class FixWallDEM(Fix):
         bad = dem_wall_forces(near, self._offsets, distance, normal, key.astype(np.int64, copy=False),
                               self._still, self.reach(sim), mass, a["v"], omega, a["f"], torque, rotation,
                               self.history.partner, self.history.values, *self.law.kernel_args(),
-                              sim.dt, update, self._used, self._slots)
+                              sim.dt, update, self._used, self._slots, self._contact_force)
         if bad >= 0:
             self.history.overflowed(p.tag[bad])

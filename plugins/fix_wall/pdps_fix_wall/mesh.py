@@ -54,11 +54,16 @@ are rebuilt only when a particle or a mesh vertex has moved more than half the s
 (``neighbor SKIN``) since, or particles were re-sorted. Between rebuilds only the particles with
 candidate triangles are visited (the wall contacts of the others are closed at the rebuild).
 
+``mesh MESH_ID`` instead of ``file FILE`` (and no placement or motion keywords): the wall is the
+surface of a ``fix mesh/surface`` (moved by ``fix move/mesh``; forces summed by
+``fix mesh/surface/stress``).
+
 Errors: a missing file, an empty file or a file with no triangles gives one line naming the file.
 Particles need radii (``particle_style sphere``); with ``omega`` and ``torque`` they also spin.
 
 Syntax::
 
+    fix ID GROUP wall/mesh mesh MESH_ID model ...
     fix ID GROUP wall/mesh file FILE [scale S] [move DX DY DZ] [rotate axis AX AY AZ angle DEG]
         [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] [surface_vel VX VY VZ]
         model lsd e kn Cn kt Ct mu | model lsd e kn mu | model hertz Y nu e mu
@@ -135,6 +140,79 @@ def unit(vector, what):
     if length == 0.0:
         raise ScriptError(f"{what} must not be zero")
     return vector / length
+
+
+# ---- script words shared by the mesh styles ------------------------------------------------------
+PLACEMENT = ("scale", "move", "rotate")
+
+
+def read_keywords(words, arity, stop=None):
+    """``{keyword: its values}`` and the placement keywords in the order given, from words of
+    ``keyword values...`` pairs (``arity``: how many values each takes); the words after ``stop``
+    (a keyword ending the list) are its values, all of them."""
+    given, transforms, k = {}, [], 0
+    while k < len(words):
+        word = words[k]
+        if word == stop:
+            given[stop] = words[k + 1:]
+            break
+        if word not in arity:
+            known = ", ".join(list(arity) + ([stop] if stop else []))
+            raise ScriptError(f"unknown keyword {word} (known: {known})")
+        if word in given:
+            raise ScriptError(f"keyword {word} is given twice")
+        values = words[k + 1:k + 1 + arity[word]]
+        short = [w for w in values if w in arity or w == stop]
+        if len(values) < arity[word] or short:
+            taken = values[:values.index(short[0])] if short else values
+            raise ScriptError(f"keyword {word} needs {arity[word]} value(s) "
+                              f"(got {' '.join(taken) or 'none'})")
+        given[word] = values
+        if word in PLACEMENT:
+            transforms.append(word)
+        k += 1 + arity[word]
+    return given, transforms
+
+
+def placed_mesh(sim, given, transforms):
+    """(vertices, triangles) of the mesh file ``given["file"]``, scaled, moved and rotated once
+    in the order given (LIGGGHTS's fix mesh/surface)."""
+    shown = given["file"][0]
+    points, triangles = read_triangles(sim.resolve(shown), shown)
+    for word in transforms:
+        if word == "scale":
+            (factor,) = read_numbers(given[word], "scale")
+            if not factor > 0.0:
+                raise ScriptError(f"scale must be > 0 (got {factor:g})")
+            points = points * factor
+        elif word == "move":
+            points = points + read_numbers(given[word], "move")
+        else:
+            w = given[word]
+            if w[0] != "axis" or w[4] != "angle":
+                raise ScriptError(f"rotate takes axis AX AY AZ angle DEG (got {' '.join(w)})")
+            axis = unit(read_numbers(w[1:4], "rotate axis"), "rotate axis")
+            (angle,) = read_numbers(w[5:6], "rotate angle")
+            points = points @ rotation_matrix(axis, math.radians(angle)).T
+    return np.ascontiguousarray(points), triangles
+
+
+def mesh_fix(sim, ident):
+    """The fix mesh/surface (or mesh/surface/stress) named ``ident``, or a one-line error."""
+    fix = sim.fixes.get(ident)
+    if fix is None:
+        raise ScriptError(f"fix {ident} is not defined (expected the ID of a fix mesh/surface)")
+    if not hasattr(fix, "add_mover"):
+        raise ScriptError(f"fix {ident} ({fix.name}) is not a fix mesh/surface")
+    return fix
+
+
+def face_normals(vertices, triangles):
+    """Unit normals of the triangles (right-hand rule over their corners' order)."""
+    corners = vertices[triangles]
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    return np.ascontiguousarray(normal / np.linalg.norm(normal, axis=1)[:, None])
+
 
 
 # ---- geometry kernels ---------------------------------------------------------------------------
@@ -317,12 +395,15 @@ def rigid_velocity(point, velocity, spin, pivot, out):
 
 
 @njit(cache=True)
-def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_normal, radius, mass,
-                     v, omega, f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu,
-                     per_mass, e_star, g_star, beta, dt, update, velocity, spin, pivot, belt,
-                     conveyor):
+def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
+                     mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update,
+                     velocity, spin, pivot, belt, conveyor, tally, reference, face_force,
+                     mesh_torque):
     """Contacts of the chosen particles with their candidate triangles (module docstring), then the
-    forces. Returns -1, or the index of a particle whose contact history overflowed."""
+    forces, with the law of each particle's type (``laws``: rows of ``wall_contact.LAW_COLUMNS``).
+    With ``tally`` the forces on the wall are summed per triangle into ``face_force`` and their
+    torque about ``reference`` into ``mesh_torque``. Returns -1, or the index of a particle whose
+    contact history overflowed."""
     most = 1
     for k in range(len(chosen)):
         most = max(most, offsets[k + 1] - offsets[k])
@@ -334,7 +415,9 @@ def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_n
     distance = np.empty(most)
     normal = np.empty((most, 3))
     key = np.empty(most, dtype=np.int64)
+    touch = np.empty((most, 3))
     wall_velocity = np.empty((most, 3))
+    contact_force = np.empty((most, 3))
     used = np.empty(partner.shape[1], dtype=np.bool_)
     slots = np.empty(most, dtype=np.int64)
     probe = np.empty((1, 3))
@@ -389,6 +472,8 @@ def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_n
             t = tri[a]
             distance[count] = gap[a]
             key[count] = t
+            for d in range(3):
+                touch[count, d] = point[a, d]
             if gap[a] > tolerance:
                 normal[count, 0] = (xi - point[a, 0]) / gap[a]
                 normal[count, 1] = (yi - point[a, 1]) / gap[a]
@@ -401,19 +486,137 @@ def mesh_wall_forces(chosen, offsets, candidates, x, vertices, triangles, face_n
             else:
                 rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[count])
             count += 1
+        law = laws[ptype[i]]
         ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, r, mass[i], v,
-                                    omega, f, torque, rotation, partner, values, model, kn, cn, kt,
-                                    ct, mu, per_mass, e_star, g_star, beta, dt, update, used, slots,
-                                    contact_normal, rel, force, spring)
+                                    omega, f, torque, rotation, partner, values, model, law[0],
+                                    law[1], law[2], law[3], law[4], law[5] != 0.0, law[6], law[7],
+                                    law[8], dt, update, used, slots, contact_normal, rel, force,
+                                    spring, contact_force)
         if not ok:
             return i
+        if tally:
+            for c in range(count):
+                t = key[c]
+                fx, fy, fz = -contact_force[c, 0], -contact_force[c, 1], -contact_force[c, 2]
+                face_force[t, 0] += fx
+                face_force[t, 1] += fy
+                face_force[t, 2] += fz
+                rx = touch[c, 0] - reference[0]
+                ry = touch[c, 1] - reference[1]
+                rz = touch[c, 2] - reference[2]
+                mesh_torque[0] += ry * fz - rz * fy
+                mesh_torque[1] += rz * fx - rx * fz
+                mesh_torque[2] += rx * fy - ry * fx
     return -1
+
+
+class MeshContacts:
+    """The contacts of a group's particles with one triangulated surface: candidate lists (rebuilt
+    only when a particle or a vertex has moved half the skin, or particles were re-sorted), the
+    contact history, and the force computation.
+
+    ``surface`` is any object with the attributes ``vertices`` (n x 3, now), ``triangles``
+    (m x 3), ``face_normal`` (m x 3), ``moving``, ``velocity``, ``spin``, ``pivot`` (its rigid
+    motion now: the wall velocity at p is velocity + spin x (p - pivot)), ``belt`` and ``conveyor``
+    (a conveyor's surface velocity): fix wall/mesh itself, or a fix mesh/surface."""
+
+    def __init__(self, sim, surface, history_name, group):
+        self.surface = surface
+        self.group = group
+        self.history = ContactHistory(sim, history_name, width=HISTORY_WIDTH)
+        self.stale = True
+        self.builds = 0
+        self.chosen = np.zeros(0, dtype=np.int64)
+        self.near = np.zeros(0, dtype=np.int64)
+        self.nlocal_built = -1
+        self.tags_built = np.zeros(0, dtype=np.int64)
+        self.x_built = np.zeros((0, 3))
+
+    def setup(self):
+        self.builds = 0
+        self.stale = True
+
+    def pre_neighbor(self, sim):
+        # the candidate lists name particles by index: re-sorting or migration makes them stale
+        p = sim.particles
+        if (p.nlocal != self.nlocal_built
+                or not np.array_equal(p.tag[self.chosen], self.tags_built)):
+            self.stale = True
+
+    def _rebuild_if_needed(self, sim, chosen, radius):
+        p = sim.particles
+        mesh = self.surface
+        half_skin = 0.5 * sim.neighbor.skin
+        if not self.stale and len(chosen) == len(self.x_built):
+            moved = largest_move_sq(p.arrays["x"], chosen, self.x_built)
+            shifted = (largest_move_sq(mesh.vertices, self.all_vertices, self.vertices_built)
+                       if mesh.moving else 0.0)
+            if moved <= half_skin ** 2 and shifted <= half_skin ** 2:
+                return
+        x = p.x[chosen]
+        skin = sim.neighbor.skin
+        reach = radius + skin
+        farthest = float(reach[chosen].max()) if len(chosen) else skin
+        corners = mesh.vertices[mesh.triangles]
+        box_lo, box_hi = corners.min(axis=1), corners.max(axis=1)
+        grid_lo = box_lo.min(axis=0) - farthest
+        extent = box_hi.max(axis=0) + farthest - grid_lo
+        if not np.isfinite(extent).all():
+            raise ScriptError(f"the mesh plus the particles' reach {farthest:g} (radius and skin) spans "
+                              "more than a float can hold")
+        # a flat mesh with skin 0 and no particles has no width at all: one cell of any size
+        size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS) or 1.0
+        nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
+        cell = np.maximum(extent / nbins, size)
+        start, members = bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, farthest)
+        offsets, self.candidates = candidate_triangles(
+            p.x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, start, members)
+        # only particles with candidate triangles are visited until the next rebuild
+        counts = np.diff(offsets)
+        near = counts > 0
+        forget_far(self.history.partner, chosen, near)
+        self.near = chosen[near]
+        self.offsets = np.zeros(len(self.near) + 1, dtype=np.int64)
+        np.cumsum(counts[near], out=self.offsets[1:])
+        self.all_vertices = np.arange(len(mesh.vertices), dtype=np.int64)
+        self.x_built = x
+        self.vertices_built = mesh.vertices.copy()
+        self.stale = False
+        self.builds += 1
+
+    def forces(self, sim, laws, update, tally=None):
+        """Wall forces on the group's particles with ``laws`` = (model, per-type law table);
+        ``tally``: None, or (reference point, face_force (m x 3), mesh_torque (3,)) to which the
+        forces on the wall are added."""
+        p = sim.particles
+        mesh = self.surface
+        if self.stale:
+            self.chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+            self.nlocal_built = p.nlocal
+            self.tags_built = p.tag[self.chosen].copy()
+        radius = p.radius
+        self._rebuild_if_needed(sim, self.chosen, radius)
+        rotation = p.has("omega") and p.has("torque")
+        omega = p.omega if rotation else p.v
+        torque = p.torque if rotation else p.f
+        model, table = laws
+        bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, p.type, mesh.vertices,
+                               mesh.triangles, mesh.face_normal, radius, observables.masses(sim),
+                               p.v, omega, p.f, torque, rotation, self.history.partner,
+                               self.history.values, model, table, sim.dt, update,
+                               mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
+                               tally is not None, *(NO_TALLY if tally is None else tally))
+        if bad >= 0:
+            self.history.overflowed(p.tag[bad])
+
+
+NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3))
 
 
 # ---- the style ----------------------------------------------------------------------------------
 class FixWallMesh(Fix):
     name = "wall/mesh"
-    usage = ("fix ID GROUP wall/mesh file FILE [scale S] [move DX DY DZ] "
+    usage = ("fix ID GROUP wall/mesh file FILE|mesh MESH_ID [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] "
              "[surface_vel VX VY VZ] model lsd e kn Cn kt Ct mu | model lsd e kn mu | "
              "model hertz Y nu e mu")
@@ -424,62 +627,46 @@ class FixWallMesh(Fix):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         self._read_words(sim, list(args.words))
-        self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
+        self.contacts = MeshContacts(sim, self.surface, f"wall_{id}", group)
+        self.laws = (self.law.model, self.law.table(sim.ntypes))
         self.elapsed = 0.0
-        self.vertices = self.placed
-        self._place()
-        self.stale = True
-        self.builds = 0
-        self.chosen = np.zeros(0, dtype=np.int64)
-        self.nlocal_built = -1
-        self.tags_built = np.zeros(0, dtype=np.int64)
+        if self.surface is self:
+            self.vertices = self.placed
+            self._place()
+
+    @property
+    def history(self):
+        return self.contacts.history
+
+    @property
+    def builds(self):
+        return self.contacts.builds
+
+    @property
+    def near(self):
+        return self.contacts.near
 
     # ---- script words ----
     def _read_words(self, sim, words):
         arity = {"file": 1, "scale": 1, "move": 3, "rotate": 6, "velocity": 3, "omega": 7,
                  "surface_vel": 3}
-        given, transforms, k = {}, [], 0
-        while k < len(words):
-            word = words[k]
-            if word == "model":
-                given["model"] = words[k + 1:]
-                break
-            if word not in arity:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(arity)}, model)")
-            if word in given:
-                raise ScriptError(f"keyword {word} is given twice")
-            values = words[k + 1:k + 1 + arity[word]]
-            short = [w for w in values if w in arity or w == "model"]
-            if len(values) < arity[word] or short:
-                taken = values[:values.index(short[0])] if short else values
-                raise ScriptError(f"keyword {word} needs {arity[word]} value(s) "
-                                  f"(got {' '.join(taken) or 'none'})")
-            given[word] = values
-            if word in ("scale", "move", "rotate"):
-                transforms.append(word)
-            k += 1 + arity[word]
-        if "file" not in given:
-            raise ScriptError(f"missing keyword file; usage: {self.usage}")
+        given, transforms = read_keywords(words, {**arity, "mesh": 1}, stop="model")
         if "model" not in given:
             raise ScriptError(f"missing keyword model; usage: {self.usage}")
-        shown = given["file"][0]
-        points, self.triangles = read_triangles(sim.resolve(shown), shown)
-        self.file = shown
-        for word in transforms:
-            if word == "scale":
-                (factor,) = read_numbers(given[word], "scale")
-                if not factor > 0.0:
-                    raise ScriptError(f"scale must be > 0 (got {factor:g})")
-                points = points * factor
-            elif word == "move":
-                points = points + read_numbers(given[word], "move")
-            else:
-                w = given[word]
-                if w[0] != "axis" or w[4] != "angle":
-                    raise ScriptError(f"rotate takes axis AX AY AZ angle DEG (got {' '.join(w)})")
-                axis = unit(read_numbers(w[1:4], "rotate axis"), "rotate axis")
-                (angle,) = read_numbers(w[5:6], "rotate angle")
-                points = points @ rotation_matrix(axis, math.radians(angle)).T
+        if "mesh" in given:
+            others = [word for word in given if word not in ("mesh", "model")]
+            if others:
+                raise ScriptError(f"mesh MESH_ID takes its geometry and motion from the fix mesh/surface; "
+                                  f"{others[0]} cannot be given with it")
+            self.surface = mesh_fix(sim, given["mesh"][0])
+            self.law = self._read_model(given["model"])
+            self.moving = False
+            return
+        if "file" not in given:
+            raise ScriptError(f"missing keyword file or mesh; usage: {self.usage}")
+        self.surface = self
+        self.file = given["file"][0]
+        points, self.triangles = placed_mesh(sim, given, transforms)
         self.placed = np.ascontiguousarray(points)
         self.velocity = np.array(read_numbers(given["velocity"], "velocity") if "velocity" in given
                                  else [0.0, 0.0, 0.0])
@@ -537,49 +724,7 @@ class FixWallMesh(Fix):
                 turn = rotation_matrix(self.spin / np.linalg.norm(self.spin), angle)
                 points = (points - self.pivot0) @ turn.T + self.pivot0
             self.vertices = np.ascontiguousarray(points + self.velocity * self.elapsed)
-        corners = self.vertices[self.triangles]
-        normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-        self.face_normal = np.ascontiguousarray(normal / np.linalg.norm(normal, axis=1)[:, None])
-
-    def _rebuild_if_needed(self, sim, chosen, radius):
-        p = sim.particles
-        half_skin = 0.5 * sim.neighbor.skin
-        if not self.stale and len(chosen) == len(self.x_built):
-            moved = largest_move_sq(p.arrays["x"], chosen, self.x_built)
-            shifted = (largest_move_sq(self.vertices, self.all_vertices, self.vertices_built)
-                       if self.moving else 0.0)
-            if moved <= half_skin ** 2 and shifted <= half_skin ** 2:
-                return
-        x = p.x[chosen]
-        skin = sim.neighbor.skin
-        reach = radius + skin
-        farthest = float(reach[chosen].max()) if len(chosen) else skin
-        corners = self.vertices[self.triangles]
-        box_lo, box_hi = corners.min(axis=1), corners.max(axis=1)
-        grid_lo = box_lo.min(axis=0) - farthest
-        extent = box_hi.max(axis=0) + farthest - grid_lo
-        if not np.isfinite(extent).all():
-            raise ScriptError(f"fix {self.id}: the mesh plus the particles' reach {farthest:g} (radius and "
-                              "skin) spans more than a float can hold")
-        # a flat mesh with skin 0 and no particles has no width at all: one cell of any size
-        size = max(farthest, float(extent.max()) / MAX_CELLS_PER_AXIS) or 1.0
-        nbins = np.maximum(1, np.floor(extent / size)).astype(np.int64)
-        cell = np.maximum(extent / nbins, size)
-        start, members = bin_triangles(box_lo, box_hi, grid_lo, cell, nbins, farthest)
-        offsets, self.candidates = candidate_triangles(
-            p.x, chosen, reach, box_lo, box_hi, grid_lo, cell, nbins, start, members)
-        # only particles with candidate triangles are visited until the next rebuild
-        counts = np.diff(offsets)
-        near = counts > 0
-        forget_far(self.history.partner, chosen, near)
-        self.near = chosen[near]
-        self.offsets = np.zeros(len(self.near) + 1, dtype=np.int64)
-        np.cumsum(counts[near], out=self.offsets[1:])
-        self.all_vertices = np.arange(len(self.vertices), dtype=np.int64)
-        self.x_built = x
-        self.vertices_built = self.vertices.copy()
-        self.stale = False
-        self.builds += 1
+        self.face_normal = face_normals(self.vertices, self.triangles)
 
     # ---- restart files: the mesh's clock is all the instance keeps beyond its arguments ----
     def state(self):
@@ -587,7 +732,8 @@ class FixWallMesh(Fix):
 
     def restore(self, state):
         self.elapsed = float(state["elapsed"])
-        self._place()
+        if self.surface is self:
+            self._place()
 
     # ---- hooks ----
     def setup(self, sim):
@@ -596,38 +742,19 @@ class FixWallMesh(Fix):
             raise ScriptError(f"fix {self.id} (wall/mesh) needs particle radii (particle_style sphere)")
         chosen = sim.groups.select(sim, self.group)
         self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
-        self.builds = 0
-        self.stale = True
-        self._forces(sim, update=False)
+        if len(self.laws[1]) != sim.ntypes + 1:
+            self.laws = (self.law.model, self.law.table(sim.ntypes))
+        self.contacts.setup()
+        self.contacts.forces(sim, self.laws, update=False, tally=self.surface_tally())
 
     def pre_neighbor(self, sim):
-        # the candidate lists name particles by index: re-sorting or migration makes them stale
-        p = sim.particles
-        if (p.nlocal != self.nlocal_built
-                or not np.array_equal(p.tag[self.chosen], self.tags_built)):
-            self.stale = True
+        self.contacts.pre_neighbor(sim)
 
     def post_force(self, sim):
         self.elapsed += sim.dt
-        self._forces(sim, update=True)
-
-    def _forces(self, sim, update):
-        p = sim.particles
-        if self.stale:
-            self.chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
-            self.nlocal_built = p.nlocal
-            self.tags_built = p.tag[self.chosen].copy()
         if self.moving:
             self._place()
-        radius = p.radius
-        self._rebuild_if_needed(sim, self.chosen, radius)
-        rotation = p.has("omega") and p.has("torque")
-        omega = p.omega if rotation else p.v
-        torque = p.torque if rotation else p.f
-        bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, self.vertices,
-                               self.triangles, self.face_normal, radius, observables.masses(sim),
-                               p.v, omega, p.f, torque, rotation, self.history.partner,
-                               self.history.values, *self.law.kernel_args(), sim.dt, update,
-                               self.velocity, self.spin, self.pivot, self.belt, self.conveyor)
-        if bad >= 0:
-            self.history.overflowed(p.tag[bad])
+        self.contacts.forces(sim, self.laws, update=True, tally=self.surface_tally())
+
+    def surface_tally(self):
+        return None if self.surface is self else self.surface.tally()

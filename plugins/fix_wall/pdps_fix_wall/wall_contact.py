@@ -30,6 +30,9 @@ from pdps_core.api import ScriptError
 from pdps_granular_contact import contact_models
 
 LSD, HERTZ = 0, 1
+# a per-type law table's columns (ContactLaw.row): one row per particle type, for walls whose law
+# depends on the particle's material
+LAW_COLUMNS = ("kn", "cn", "kt", "ct", "mu", "per_mass", "e_star", "g_star", "beta")
 HISTORY_WIDTH = 6           # tangential spring (3) and the contact's last normal (3)
 TRANSFER_COS = 0.995        # a new contact whose normal is this close to one just ended continues it
 
@@ -73,6 +76,15 @@ class ContactLaw:
     def kernel_args(self):
         return (self.model, self.kn, self.cn, self.kt, self.ct, self.mu, self.per_mass,
                 self.e_star, self.g_star, self.beta)
+
+    def row(self):
+        """The law's numbers as one row of a per-type table (``LAW_COLUMNS``)."""
+        return [self.kn, self.cn, self.kt, self.ct, self.mu, float(self.per_mass), self.e_star,
+                self.g_star, self.beta]
+
+    def table(self, ntypes):
+        """The same law for every particle type: a (ntypes + 1, 9) table, row 0 unused."""
+        return np.tile(np.array(self.row(), dtype=np.float64), (ntypes + 1, 1))
 
     def check_timestep(self, sim, fix, masses):
         """Warn when the time step resolves a linear contact with fewer than 10 steps."""
@@ -122,9 +134,10 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
 def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
                            v, omega, f, torque, rotation, partner, values,
                            model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
-                           used, slots, n, rel, force, spring):
+                           used, slots, n, rel, force, spring, contact_force):
     """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
-    surface, normal from surface to centre, element key, wall velocity at the contact point).
+    surface, normal from surface to centre, element key, wall velocity at the contact point);
+    each contact's force on i into ``contact_force[c]`` (zero for contacts that do not touch).
     Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
     taken over, closed); without it (setup) forces use the stored springs and change nothing.
     ``n``, ``rel``, ``force``, ``spring``: scratch vectors (3 each) of the caller.
@@ -180,6 +193,8 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
                 slots[c - start] = s
     for c in range(start, end):
         overlap = reach - distance[c]
+        for d in range(3):
+            contact_force[c, d] = 0.0
         if overlap <= 0.0:
             continue
         for d in range(3):
@@ -209,6 +224,7 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
                                          mu, dt, False, force)
         for d in range(3):
             f[i, d] += force[d]
+            contact_force[c, d] = force[d]
         if rotation:
             torque[i, 0] -= reach * (n[1] * force[2] - n[2] * force[1])
             torque[i, 1] -= reach * (n[2] * force[0] - n[0] * force[2])

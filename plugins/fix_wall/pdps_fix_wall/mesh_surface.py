@@ -1,0 +1,167 @@
+r"""Fix ``mesh/surface``: a triangulated surface read from a file, which walls act through (LIGGGHTS's
+fix mesh/surface): ``fix wall/gran ... mesh n_meshes N meshes ID ...`` or ``fix wall/mesh mesh ID``
+make it a granular wall, ``fix move/mesh`` moves it, ``dump vtk ... walls yes`` writes it.
+
+Geometry: the triangles of the file (STL ascii or binary, VTK, OBJ, ...: anything meshio reads; quads
+are split in two), placed once by ``scale S`` (about the origin), ``move DX DY DZ`` (distance) and
+``rotate axis AX AY AZ angle DEG`` (about the axis through the origin, right-hand rule, degrees) in
+the order given. ``type N`` is the wall's material type (LIGGGHTS: the atom type whose
+``fix property/global`` material the wall has; default 1).
+
+Surface motion without moving the mesh (LIGGGHTS's conveyor keywords):
+
+- ``surface_vel VX VY VZ``: on each triangle, the velocity projected onto its plane, scaled back to
+  the given speed (velocity units).
+- ``surface_ang_vel origin OX OY OZ axis AX AY AZ omega W``: the surface moves as if it turned with
+  angular velocity W (rad/time) about the axis through O: :math:`\mathbf{v}_w = W\hat{\mathbf{a}}
+  \times (\mathbf{p} - \mathbf{O})` at the contact point p (a shear cell).
+
+Moving meshes: each ``fix move/mesh`` on this mesh is a rigid motion :math:`T_k(t): \mathbf{x} \mapsto
+R_k\mathbf{x} + \mathbf{d}_k`, and several are superposed as LIGGGHTS's manual gives: the frame of each
+moves along with the motions defined before it, :math:`\mathbf{X}(t) = T_1(T_2(\dots T_n(\mathbf{X}_0)))`
+(so the origin of a second ``rotate`` turns with the first). The whole is one rigid motion
+:math:`\mathbf{X} = R\mathbf{X}_0 + \mathbf{d}`, and the wall's velocity at a point p is
+:math:`\dot{\mathbf{d}} + \boldsymbol\Omega\times(\mathbf{p} - \mathbf{d})` with
+:math:`[\boldsymbol\Omega]_\times = \dot R R^T`: the velocity the contact law sees.
+
+``fix mesh/surface/stress`` is this fix plus the forces on the mesh: see its module.
+
+Syntax::
+
+    fix ID GROUP mesh/surface file FILE [type N] [verbose yes|no] [heal no]
+        [scale S] [move DX DY DZ] [rotate axis AX AY AZ angle DEG]
+        [surface_vel VX VY VZ | surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]
+
+The group is not used (the wall fix's group says which particles see the mesh). LIGGGHTS keywords
+pdps does not honour are refused by name: ``precision`` and ``heal auto_remove_duplicates`` (meshio
+merges only identical nodes), ``curvature`` (contact history passes between faces whose normals
+are within about 6 degrees), ``temperature`` (no heat conduction with walls).
+
+Example::
+
+    fix cad all mesh/surface file hopper.stl type 2 scale 0.001 move 0 0 0.1
+"""
+
+import numpy as np
+
+from pdps_core.api import Fix, ScriptError, StyleArgs
+
+from .mesh import face_normals, placed_mesh, read_keywords, unit
+from .wall_contact import read_numbers
+
+SURFACE_ARITY = {"file": 1, "type": 1, "verbose": 1, "heal": 1, "precision": 1, "curvature": 1,
+                 "temperature": 1, "scale": 1, "move": 3, "rotate": 6, "surface_vel": 3,
+                 "surface_ang_vel": 10}
+REFUSED = {
+    "precision": "pdps merges only identical nodes (meshio)",
+    "curvature": "contact history passes between faces whose normals are within about 6 degrees",
+    "temperature": "pdps has no heat conduction with walls",
+}
+
+
+def skew_axis(matrix):
+    """The vector w of an antisymmetric matrix [w]x."""
+    return np.array([matrix[2, 1], matrix[0, 2], matrix[1, 0]])
+
+
+class FixMeshSurface(Fix):
+    name = "mesh/surface"
+    usage = ("fix ID GROUP mesh/surface file FILE [type N] [scale S] [move DX DY DZ] "
+             "[rotate axis AX AY AZ angle DEG] [surface_vel VX VY VZ | "
+             "surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]")
+    extra_arity: dict = {}
+
+    class Args(StyleArgs):
+        words: list[str]
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        given, transforms = read_keywords(list(args.words), {**SURFACE_ARITY, **self.extra_arity})
+        if "file" not in given:
+            raise ScriptError(f"missing keyword file; usage: {self.usage}")
+        for word, reason in REFUSED.items():
+            if word in given:
+                raise ScriptError(f"keyword {word} is not supported: {reason}")
+        if "heal" in given and given["heal"][0] != "no":
+            raise ScriptError(f"heal {given['heal'][0]} is not supported (heal no only): pdps merges "
+                              "only identical nodes (meshio)")
+        if "verbose" in given and given["verbose"][0] not in ("yes", "no"):
+            raise ScriptError(f"verbose must be yes or no (got {given['verbose'][0]})")
+        self.file = given["file"][0]
+        self.material_type = self._read_type(sim, given)
+        self.placed, self.triangles = placed_mesh(sim, given, transforms)
+        self.vertices = self.placed
+        self.face_normal = face_normals(self.vertices, self.triangles)
+        self.velocity, self.spin, self.pivot = np.zeros(3), np.zeros(3), np.zeros(3)
+        self.belt = np.zeros(3)
+        self.conveyor = "surface_vel" in given
+        if self.conveyor and "surface_ang_vel" in given:
+            raise ScriptError("surface_vel and surface_ang_vel cannot both be given")
+        if self.conveyor:
+            self.belt = np.array(read_numbers(given["surface_vel"], "surface_vel"))
+        if "surface_ang_vel" in given:
+            w = given["surface_ang_vel"]
+            if w[0] != "origin" or w[4] != "axis" or w[8] != "omega":
+                raise ScriptError("surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W "
+                                  f"(got {' '.join(w)})")
+            self.pivot = np.array(read_numbers(w[1:4], "surface_ang_vel origin"))
+            axis = unit(read_numbers(w[5:8], "surface_ang_vel axis"), "surface_ang_vel axis")
+            (omega,) = read_numbers(w[9:10], "surface_ang_vel omega")
+            self.spin = axis * omega
+        self.surface_motion = "surface_vel" in given or "surface_ang_vel" in given
+        self.moving = False
+        self.movers = []
+        self.extra_keywords(sim, given)
+
+    def _read_type(self, sim, given):
+        if "type" not in given:
+            return 1
+        word = given["type"][0]
+        try:
+            kind = int(word)
+        except ValueError:
+            raise ScriptError(f"type must be a whole number (got {word})") from None
+        if not 1 <= kind <= sim.ntypes:
+            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {word})")
+        return kind
+
+    def extra_keywords(self, sim, given):
+        """Keywords of a derived style (mesh/surface/stress)."""
+
+    # ---- motion: fix move/mesh registers here and calls place() after each step's advance ----
+    def add_mover(self, mover):
+        if self.surface_motion:
+            raise ScriptError(f"fix mesh/surface {self.id} has surface_vel or surface_ang_vel: a conveyor "
+                              "cannot also be moved (LIGGGHTS)")
+        self.movers.append(mover)
+        self.moving = True
+
+    def remove_mover(self, mover):
+        if mover in self.movers:
+            self.movers.remove(mover)
+        self.moving = bool(self.movers)
+
+    def place(self):
+        """Vertices, face normals and the wall's rigid velocity from the movers' poses now."""
+        rotation, shift = np.eye(3), np.zeros(3)
+        turning, drift = np.zeros((3, 3)), np.zeros(3)
+        # X = T_1(T_2(...T_n(X0))): compose from the innermost (the last defined) outwards
+        for mover in reversed(self.movers):
+            r_k, d_k, rdot_k, ddot_k = mover.pose()
+            turning, drift = rdot_k @ rotation + r_k @ turning, rdot_k @ shift + r_k @ drift + ddot_k
+            rotation, shift = r_k @ rotation, r_k @ shift + d_k
+        self.vertices = np.ascontiguousarray(self.placed @ rotation.T + shift)
+        self.face_normal = face_normals(self.vertices, self.triangles)
+        self.velocity = drift
+        self.spin = skew_axis(turning @ rotation.T)
+        self.pivot = shift
+
+    def tally(self):
+        """What a wall adds its forces on this mesh to: nothing (mesh/surface/stress sums them)."""
+        return None
+
+    def face_areas(self):
+        corners = self.vertices[self.triangles]
+        return 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0],
+                                             corners[:, 2] - corners[:, 0]), axis=1)
+

@@ -1,0 +1,259 @@
+"""fix mesh/surface and fix move/mesh: every motion puts the vertices where its formula (LIGGGHTS's
+manual) says, to round-off, at several times; superposed motions compose as the manual gives (the
+second in the frame carried by the first); the wall velocity is the time derivative of the vertex
+positions; bad words get one line.
+
+The reference positions are computed here from the formulas, with Rodrigues' formula written out
+(v cos + (k x v) sin + k (k.v)(1 - cos)), not with the code under test.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
+
+DT = 0.01
+
+
+def turned(points, axis, origin, angle):
+    k = np.asarray(axis, float) / np.linalg.norm(axis)
+    v = points - origin
+    return (origin + v * math.cos(angle) + np.cross(k, v) * math.sin(angle)
+            + np.outer(v @ k, k) * (1.0 - math.cos(angle)))
+
+
+def mesh_scene(data, *moves, extra=""):
+    sim = make_box(f"""
+        fix cad all mesh/surface file {data}/square.stl type 1 scale 2 move 0.5 0 1 {extra}
+        {chr(10).join(f"fix m{k} all move/mesh mesh cad {m}" for k, m in enumerate(moves))}
+        timestep {DT}
+    """, box="-10 10 -10 10 -10 10", particle_style="sphere")
+    return sim, sim.fixes["cad"]
+
+
+def positions_over_time(sim, mesh, steps):
+    """(time, vertices) after each of the runs of the given lengths."""
+    out = []
+    for n in steps:
+        sim.command(f"run {n}")
+        out.append((sim.step * DT, mesh.vertices.copy()))
+    return out
+
+
+X0 = None
+
+
+def start(data):
+    sim, mesh = mesh_scene(data)
+    return mesh.placed.copy()
+
+
+LINEAR = "linear 0.3 -0.2 0.1"
+WIGGLE = "wiggle amplitude 0.1 0.05 -0.2 period 0.37"
+ROTATE = "rotate origin 0.2 -0.1 0.3 axis 1 1 2 period 1.3"
+RIGGLE = "riggle origin 0.2 -0.1 0.3 axis 0 1 1 period 0.7 amplitude 25"
+VIBLIN = "viblin axis 1 0 1 order 2 amplitude 0.1 0.03 phase 0.3 -1.2 period 0.5"
+VIBROT = "vibrot origin 0 0 1 axis 0 0 1 order 3 amplitude 0.2 0.1 0.05 phase 0 0.5 1.0 period 0.8"
+
+
+def expected(style, x0, t):
+    if style == LINEAR:
+        return x0 + np.array([0.3, -0.2, 0.1]) * t
+    if style == WIGGLE:
+        return x0 + np.array([0.1, 0.05, -0.2]) * math.sin(2 * math.pi / 0.37 * t)
+    if style == ROTATE:
+        return turned(x0, [1, 1, 2], np.array([0.2, -0.1, 0.3]), 2 * math.pi / 1.3 * t)
+    if style == RIGGLE:
+        angle = math.radians(25) * math.sin(2 * math.pi / 0.7 * t)
+        return turned(x0, [0, 1, 1], np.array([0.2, -0.1, 0.3]), angle)
+    if style == VIBLIN:
+        w = 2 * math.pi / 0.5
+        shift = 0.1 * math.cos(w * t + 0.3) + 0.03 * math.cos(2 * w * t - 1.2)
+        return x0 + np.array([1, 0, 1]) / math.sqrt(2) * shift
+    w = 2 * math.pi / 0.8
+    angle = sum(c * math.cos(k * w * t + p) for k, c, p in zip((1, 2, 3), (0.2, 0.1, 0.05), (0, 0.5, 1.0)))
+    return turned(x0, [0, 0, 1], np.array([0.0, 0.0, 1.0]), angle)
+
+
+@pytest.mark.parametrize("style", [LINEAR, WIGGLE, ROTATE, RIGGLE, VIBLIN, VIBROT],
+                         ids=["linear", "wiggle", "rotate", "riggle", "viblin", "vibrot"])
+def test_each_motion_puts_the_vertices_where_its_formula_says(data, style):
+    sim, mesh = mesh_scene(data, style)
+    x0 = mesh.placed.copy()
+    for t, vertices in positions_over_time(sim, mesh, [1, 16, 40, 100]):
+        np.testing.assert_allclose(vertices, expected(style, x0, t), rtol=0, atol=1e-12)
+
+
+def test_variable_motions_integrate_their_rates(data):
+    """linear/variable with a constant velocity and rotate/variable with a constant omega are
+    linear and rotate (to round-off of the summed steps)."""
+    sim, mesh = mesh_scene(data)
+    sim.command("""
+        variable vx equal 0.3
+        variable vy equal -0.2
+        variable vz equal 0.1
+        variable w equal 2*PI/1.3
+        fix a all move/mesh mesh cad linear/variable v_vx v_vy v_vz
+    """)
+    x0 = mesh.placed.copy()
+    sim.command("run 50")
+    np.testing.assert_allclose(mesh.vertices, expected(LINEAR, x0, 50 * DT), atol=1e-12)
+    sim2, mesh2 = mesh_scene(data)
+    sim2.command("""
+        variable w equal 2*PI/1.3
+        fix a all move/mesh mesh cad rotate/variable origin 0.2 -0.1 0.3 axis 1 1 2 omega v_w
+    """)
+    sim2.command("run 50")
+    np.testing.assert_allclose(mesh2.vertices, expected(ROTATE, mesh2.placed, 50 * DT), atol=1e-12)
+
+
+def test_variable_velocity_that_changes_in_time(data):
+    """v_x = t (the time): the mesh moves by the sum of v dt over the steps, LIGGGHTS's explicit
+    update, which tends to t^2 / 2."""
+    sim, mesh = mesh_scene(data)
+    sim.command("""
+        variable vx equal time
+        variable zero equal 0
+        fix a all move/mesh mesh cad linear/variable v_vx v_zero v_zero
+    """)
+    sim.command("run 100")
+    # time at each step's update is the step's time: sum_{n=0}^{99} n dt * dt (time before the step)
+    # or sum_{n=1}^{100}; either is t^2/2 within dt t / 2
+    moved = mesh.vertices[:, 0] - mesh.placed[:, 0]
+    assert moved == pytest.approx(np.full(len(moved), 0.5), abs=0.5 * DT * 1.0 + 1e-12)
+
+
+def test_superposed_motions_move_in_the_frame_of_the_earlier_ones(data):
+    """rotate about z through the origin, then rotate about an axis through (1, 0, 1) carried by the
+    first: X = T1(T2(X0)); then a wiggle on top of both: X = T1(T2(T3(X0)))."""
+    first = "rotate origin 0 0 0 axis 0 0 1 period 2.0"
+    second = "rotate origin 1 0 1 axis 1 0 0 period 0.9"
+    sim, mesh = mesh_scene(data, first, second, WIGGLE)
+    x0 = mesh.placed.copy()
+    for t, vertices in positions_over_time(sim, mesh, [7, 30, 63]):
+        inner = expected(WIGGLE, x0, t)
+        middle = turned(inner, [1, 0, 0], np.array([1.0, 0.0, 1.0]), 2 * math.pi / 0.9 * t)
+        outer = turned(middle, [0, 0, 1], np.zeros(3), 2 * math.pi / 2.0 * t)
+        np.testing.assert_allclose(vertices, outer, atol=1e-12)
+
+
+@pytest.mark.parametrize("moves", [[ROTATE], [RIGGLE, LINEAR], [VIBROT, WIGGLE, ROTATE]],
+                         ids=["rotate", "riggle+linear", "vibrot+wiggle+rotate"])
+def test_the_wall_velocity_is_the_derivative_of_the_vertex_positions(data, moves):
+    """velocity + spin x (p - pivot) at each vertex against central differences of its positions
+    over steps of 1e-4 (error O(dt^2): below 1e-6 of the speeds here)."""
+    sim, mesh = mesh_scene(data, *moves)
+    sim.command("run 20")
+    h = 1e-4
+    sim.command(f"timestep {h}")
+    before = mesh.vertices.copy()
+    sim.command("run 1")
+    now = mesh.vertices.copy()
+    wall = mesh.velocity + np.cross(mesh.spin, now - mesh.pivot)
+    sim.command("run 1")
+    after = mesh.vertices.copy()
+    numeric = (after - before) / (2 * h)
+    scale = np.abs(numeric).max()
+    np.testing.assert_allclose(wall, numeric, atol=1e-6 * scale)
+
+
+def test_a_mesh_that_does_not_move_has_no_wall_velocity(data):
+    sim, mesh = mesh_scene(data)
+    sim.command("run 5")
+    assert not mesh.moving
+    np.testing.assert_array_equal(mesh.vertices, mesh.placed)
+    assert not np.any(mesh.velocity) and not np.any(mesh.spin)
+
+
+@pytest.mark.parametrize("words, message", [
+    ("mesh nothere linear 1 0 0", "fix nothere is not defined"),
+    ("mesh cad spin 1 0 0", "motion must be one of linear, linear/variable, wiggle, rotate"),
+    ("mesh cad linear 1 0", "linear: it needs 3 value(s) (got 1 0)"),
+    ("mesh cad linear 1 0 0 5", "linear: unexpected words 5"),
+    ("mesh cad wiggle amplitude 1 0 0 every 2", "wiggle: expected keyword period (got every)"),
+    ("mesh cad rotate origin 0 0 0 axis 0 0 0 period 1", "rotate axis must not be zero"),
+    ("mesh cad rotate origin 0 0 0 axis 0 0 1 period -1", "rotate: period must be > 0 (got -1)"),
+    ("mesh cad viblin axis 0 0 1 order 11 amplitude 1 phase 0 period 1",
+     "viblin: order must be from 1 to 10 (got 11)"),
+    ("mesh cad viblin axis 0 0 1 order 2 amplitude 1 phase 0 period 1",
+     "viblin: amplitude needs 2 value(s) (got 1)"),
+    ("mesh cad linear/variable 1 2 3", "linear/variable: expected a variable v_NAME (got 1)"),
+    ("mesh cad linear abc 0 0", "linear velocity must be a number (got abc)"),
+    ("cad linear 1 0 0", "expected mesh MESH_ID and a motion"),
+])
+def test_bad_move_mesh_words(data, words, message):
+    sim, _ = mesh_scene(data)
+    with pytest.raises(ScriptError) as info:
+        sim.command("fix bad all move/mesh " + words)
+    assert message in str(info.value)
+    assert "\n" not in str(info.value)
+
+
+def test_a_conveyor_cannot_be_moved(data):
+    sim, _ = mesh_scene(data, extra="surface_vel 1 0 0")
+    with pytest.raises(ScriptError, match="a conveyor cannot also be moved"):
+        sim.command("fix bad all move/mesh mesh cad linear 1 0 0")
+
+
+@pytest.mark.parametrize("words, message", [
+    ("type 1", "missing keyword file"),
+    ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
+    ("file {data}/square.stl type x", "type must be a whole number (got x)"),
+    ("file {data}/square.stl curvature 1e-5", "keyword curvature is not supported"),
+    ("file {data}/square.stl precision 1e-5", "keyword precision is not supported"),
+    ("file {data}/square.stl heal auto_remove_duplicates", "heal auto_remove_duplicates is not supported"),
+    ("file {data}/square.stl surface_ang_vel origin 0 0 0 axis 0 0 1 spin 1",
+     "surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W"),
+    ("file {data}/square.stl scale 0", "scale must be > 0 (got 0)"),
+    ("file {data}/nothere.stl", "mesh file {data}/nothere.stl does not exist"),
+    ("file {data}/square.stl wobble 1", "unknown keyword wobble"),
+])
+def test_bad_mesh_surface_words(data, words, message):
+    sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
+    with pytest.raises(ScriptError) as info:
+        sim.command("fix cad all mesh/surface " + words.format(data=data))
+    assert message.format(data=data) in str(info.value)
+    assert "\n" not in str(info.value)
+
+
+# ---- a sphere on a moving plate -----------------------------------------------------------------
+MASS = math.pi / 6.0
+KN, E_REST, G = 1.0e4, 0.8, 10.0
+
+
+def plate_run(data, motion, velocity, steps=400):
+    """A sphere (d = 1, density 1) resting at its equilibrium overlap on the square plate at z = 0
+    under gravity, moving with the plate's velocity; returns the wall force on it at each step."""
+    sim = make_box(f"""
+        fix cad all mesh/surface file {data}/square.stl scale 3
+        {f"fix mv all move/mesh mesh cad {motion}" if motion else ""}
+        create_particle 1 single 0.2 0.1 {0.5 - MASS * G / KN} diameter 1 density 1
+        velocity all set {velocity[0]} {velocity[1]} {velocity[2]}
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-G}
+        fix w all wall/mesh mesh cad model lsd {E_REST} {KN} 0.5
+        fix r all test/record
+        timestep 0.001
+    """, box="-10 10 -10 10 -10 10", particle_style="sphere")
+    sim.command(f"run {steps}")
+    force = np.array(sim.fixes["r"].series("f")) + np.array([0.0, 0.0, MASS * G])
+    return force, sim
+
+
+@pytest.mark.parametrize("velocity", [(0.0, 0.0, 0.7), (0.4, -0.3, 0.0), (0.2, 0.1, -0.3)],
+                         ids=["rising", "sliding-sideways", "oblique"])
+def test_a_sphere_on_a_plate_moving_at_constant_velocity_feels_the_force_of_a_fixed_plate(
+        data, velocity):
+    """Galilean invariance: carried along at the plate's velocity, the sphere feels at every step
+    the contact force it feels on the fixed plate (m g up, nothing sideways) to round-off."""
+    fixed, _ = plate_run(data, None, (0, 0, 0))
+    moving, sim = plate_run(data, f"linear {velocity[0]} {velocity[1]} {velocity[2]}", velocity)
+    np.testing.assert_allclose(fixed[-1], [0, 0, MASS * G], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(moving, fixed, rtol=0, atol=1e-9 * MASS * G)
+    # and it did travel with the plate, whose candidate lists were rebuilt as it went
+    np.testing.assert_allclose(sim.x[0, :2], np.array([0.2, 0.1]) + 0.4 * np.array(velocity[:2]), atol=1e-9)
+    travelled = 0.4 * np.linalg.norm(velocity)
+    assert sim.fixes["w"].builds == 1 + int(travelled / (0.5 * sim.neighbor.skin))
