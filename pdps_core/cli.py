@@ -1,7 +1,7 @@
 """The ``pdps`` command.
 
     pdps run [SCRIPT] [-in SCRIPT] [-var NAME VALUE...]... [-log FILE|none] [-screen FILE|none]
-             [-echo none|screen|log|both] [--dialect lammps|pdps] [--no-progress] [--debug]
+             [-echo none|screen|log|both] [--dialect lammps|liggghts|pdps] [--no-progress] [--debug]
                                 a script (or standard input, as lmp reads it when no -in is given)
     pdps -in SCRIPT ...         the same, spelled as LAMMPS's lmp is called
     pdps plot LOG [-o PNG] [--columns COLUMN...]   thermo columns against step, one panel each
@@ -33,8 +33,8 @@ def _parser():
                      help="screen output to FILE, or none (default: the terminal)")
     run.add_argument("-echo", "-e", choices=["none", "screen", "log", "both"], default=None,
                      help="where commands are echoed as read (default log), as LAMMPS's -echo")
-    run.add_argument("--dialect", choices=["lammps", "pdps"], default=None,
-                     help="read the script as LAMMPS or PDPS (default: as its lines say; docs/lammps.md)")
+    run.add_argument("--dialect", choices=["lammps", "liggghts", "pdps"], default=None,
+                     help="read the script as LAMMPS, LIGGGHTS or PDPS (default: as its lines say; docs/lammps.md)")
     run.add_argument("--no-progress", action="store_true",
                      help="no progress line (percent done, steps/s, time left) on stderr")
     run.add_argument("--debug", action="store_true", help="show the traceback of an error")

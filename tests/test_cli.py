@@ -182,7 +182,7 @@ def test_doc_of_an_unknown_style_is_one_line(capsys):
 @pytest.mark.parametrize("script, expected", [
     # unknown command, with and without a close match
     ("pair_cof 1 1 1 1", "ERROR: in.test:1: pair_cof: unknown command pair_cof; did you mean pair_coeff?"),
-    ("print ok\nfrobnicate 3", "ERROR: in.test:2: frobnicate: unknown command frobnicate"),
+    ("print ok\nfrobnicate 3", "ERROR: in.test:2: frobnicate: unknown command frobnicate; did you mean communicate?"),
     # unknown style: the installed ones, and a close match
     ("region box blok 0 1 0 1 0 1",
      "ERROR: in.test:1: region: unknown region style blok; did you mean block? (installed: {region})"),

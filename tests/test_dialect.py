@@ -42,7 +42,7 @@ def test_the_command_line_decides_over_the_lines(pdps_cli):
 @pytest.mark.parametrize("script, extra, message", [
     ("units lj\ndialect lammps\n", (),
      "ERROR: in.test:2: dialect: dialect must come before any other command (line 1 has units)"),
-    ("dialect fortran\n", (), "ERROR: in.test:1: dialect: dialect must be lammps or pdps (got fortran)"),
+    ("dialect fortran\n", (), "ERROR: in.test:1: dialect: dialect must be lammps, liggghts or pdps (got fortran)"),
     ("dialect pdps\nunits lj\n", ("--dialect", "lammps"),
      "ERROR: in.test: dialect pdps (dialect on line 1) contradicts the dialect given (lammps)"),
 ])

@@ -10,11 +10,11 @@ from .words import choice, count, integer
 
 @command("dialect")
 def dialect(sim, args):
-    """``dialect lammps|pdps``: read by the top script before its first command (see
+    """``dialect lammps|liggghts|pdps``: read by the top script before its first command (see
     pdps_core.script.dialect); run here it only confirms, or, typed from Python before any box
     exists, chooses."""
     from ..script.dialect import dialect_named
-    count(args, 1, "dialect lammps|pdps")
+    count(args, 1, "dialect lammps|liggghts|pdps")
     chosen = dialect_named(args[0])
     if chosen is sim.dialect:
         sim.dialect_fixed = True

@@ -137,9 +137,10 @@ def _exclusions(sim, args, usage):
 
 @command("particle_style", "atom_style")
 def particle_style(sim, args):
+    """``particle_style STYLE``; LIGGGHTS's ``atom_style granular`` is its sphere style."""
     count(args, 1, "particle_style " + "|".join(PARTICLE_STYLES))
     _before_box(sim, "particle_style")
-    style = choice(args[0], "particle style", tuple(PARTICLE_STYLES))
+    style = "sphere" if args[0] == "granular" else choice(args[0], "particle style", tuple(PARTICLE_STYLES))
     sim.particle_style = style
     sim.particles.request_all(PARTICLE_STYLES[style][0])
 
@@ -185,6 +186,16 @@ def comm_modify(sim, args):
             sim.ghost_velocity = yes_no(value, "vel")
         else:
             raise ScriptError(f"comm_modify {key} is not supported (supported: mode single, cutoff, vel)")
+
+
+@command("communicate")
+def communicate(sim, args):
+    """LIGGGHTS's (and old LAMMPS's) ``communicate single [cutoff D] [vel yes|no]``: comm_modify's
+    settings with the style first."""
+    count(args, 1, "communicate single [cutoff D] [vel yes|no]", at_most=5)
+    choice(args[0], "communicate style", ("single",))
+    if len(args) > 1:
+        comm_modify(sim, args[1:])
 
 
 @command("newton")

@@ -6,13 +6,18 @@ takes) is accepted in both, since it cannot change a meaning.
 
 Which dialect a script is read in, in order:
 
-1. ``pdps run --dialect lammps|pdps`` (or ``Simulation(dialect=...)``);
-2. a ``dialect lammps|pdps`` line in the script (before any other command);
+1. ``pdps run --dialect lammps|liggghts|pdps`` (or ``Simulation(dialect=...)``);
+2. a ``dialect lammps|liggghts|pdps`` line in the script (before any other command);
 3. the first command only one of the two languages has (``atom_style``, ``create_atoms``,
    ``comm_modify``... read as LAMMPS; ``particle_style``, ``create_particle``, ``integrate``,
    ``analyze``... as PDPS), or a lattice by its spelling (``lattice spacing ...`` PDPS,
    ``lattice fcc 0.8442`` LAMMPS);
 4. PDPS, the project's own language, when nothing says otherwise.
+
+A script read as LAMMPS by 3 or 4 is read as LIGGGHTS (a LAMMPS fork: the same meaning wherever
+they share a command) when any of its lines has a spelling only LIGGGHTS has (``LIGGGHTS_ONLY``:
+``atom_style granular``, ``pair_style gran``, ``fix ID G property/global``, ``fix ID G wall/gran
+model``...), the first such line being the reason.
 
 The run's first line names the dialect and why: ``read as LAMMPS: atom_style on line 4``.
 """
@@ -38,6 +43,9 @@ DIALECTS = {
                     velocity_numbers="counter"),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
                       velocity_numbers="park"),
+    # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command
+    "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
+                        velocity_numbers="park"),
 }
 
 # commands one language has and the other has not: the first one met names the dialect
@@ -47,6 +55,15 @@ LAMMPS_ONLY = frozenset({
     "newton", "thermo_modify", "dump_modify", "label", "jump", "clear", "kspace_style",
     "bond_style", "angle_style", "pair_modify", "change_box", "replicate", "velocity_modify",
     "compute_modify", "fix_modify", "molecule", "special_bonds", "read_dump",
+})
+# (command, first word) pairs only LIGGGHTS has, for fixes and computes the style word after ID and
+# group: in a LAMMPS-family script the first one met makes it a LIGGGHTS script
+LIGGGHTS_ONLY = frozenset({
+    ("atom_style", "granular"), ("pair_style", "gran"), ("fix", "property/global"), ("fix", "property/atom"),
+    ("fix", "mesh/surface"), ("fix", "mesh/surface/stress"), ("fix", "mesh/surface/planar"),
+    ("fix", "move/mesh"), ("fix", "insert/pack"), ("fix", "insert/stream"), ("fix", "insert/rate/region"),
+    ("fix", "particletemplate/sphere"), ("fix", "particledistribution/discrete"), ("fix", "heat/gran"),
+    ("fix", "heat/gran/conduction"), ("compute", "pair/gran/local"), ("compute", "wall/gran/local"),
 })
 PDPS_ONLY = frozenset({
     "particle_style", "create_particle", "integrate", "analyze", "unanalyze", "uncompute",
@@ -58,7 +75,7 @@ def dialect_named(word, where="dialect"):
     try:
         return DIALECTS[word]
     except KeyError:
-        raise ScriptError(f"{where} must be lammps or pdps (got {word})") from None
+        raise ScriptError(f"{where} must be lammps, liggghts or pdps (got {word})") from None
 
 
 def _lattice_dialect(words):
@@ -68,8 +85,36 @@ def _lattice_dialect(words):
     return None
 
 
+def _liggghts_marker(words):
+    """The LIGGGHTS-only spelling on a line (``pair_style gran``, ``fix ID G mesh/surface``), or None."""
+    name = words[0]
+    style = words[3] if name in ("fix", "compute") and len(words) > 3 else (words[1] if len(words) > 1 else None)
+    if name == "fix" and style == "wall/gran" and len(words) > 4 and words[4] == "model":
+        return "fix wall/gran model"
+    return f"{name} {style}" if (name, style) in LIGGGHTS_ONLY else None
+
+
 def detect(text, source):
-    """(Dialect, reason) for a script that was not told its dialect."""
+    """(Dialect, reason) for a script that was not told its dialect. A LAMMPS-family script (one a
+    LAMMPS-only command, or no command, names) is LIGGGHTS's when any line has a LIGGGHTS-only
+    spelling: the first one is the reason."""
+    found = _detect_family(text, source)
+    if found[0].name == "pdps" and not found[1].startswith("no command"):
+        return found
+    for number, raw in logical_lines(text):
+        try:
+            words = strip_comment(raw).split()
+        except ScriptError:
+            words = raw.split()
+        if words and words[0] == "dialect":
+            return found
+        marker = _liggghts_marker(words) if words else None
+        if marker:
+            return DIALECTS["liggghts"], f"{marker} on line {number}"
+    return found
+
+
+def _detect_family(text, source):
     first_command = None
     for number, raw in logical_lines(text):
         try:
@@ -85,7 +130,7 @@ def detect(text, source):
                     raise ScriptError(f"dialect must come before any other command (line "
                                       f"{first_command[1]} has {first_command[0]})")
                 if len(words) != 2:
-                    raise ScriptError("expected one word; usage: dialect lammps|pdps")
+                    raise ScriptError("expected one word; usage: dialect lammps|liggghts|pdps")
                 return dialect_named(words[1]), f"dialect on line {number}"
             except ScriptError as exc:
                 raise exc.locate(source, number, "dialect") from None
