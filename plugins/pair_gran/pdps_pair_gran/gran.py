@@ -160,17 +160,18 @@ def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offset
 def merge_mirrors(partner, history, touched, index, rows, capacity):
     """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
     is (touched flags, partner tags, values) of one ghost. Returns a row with no free slot, or -1."""
+    width = history.shape[1] // capacity
     for r in range(len(index)):
         i = index[r]
         for k in range(capacity):
             if rows[r, k] > 0.5:
                 key = np.int64(rows[r, capacity + k])
-                slot = open_slot(partner, history, i, key, 3)
+                slot = open_slot(partner, history, i, key, width)
                 if slot < 0:
                     return i
                 touched[i, slot] = True
-                for d in range(3):
-                    history[i, 3 * slot + d] = rows[r, 2 * capacity + 3 * k + d]
+                for d in range(width):
+                    history[i, width * slot + d] = rows[r, 2 * capacity + width * k + d]
     return -1
 
 
@@ -182,6 +183,8 @@ class PairGran(Pair):
     ghost_velocity = True
     ghost_fields = ("omega",)
     model = lammps_classic.HOOKE
+    history_width = 3         # values per contact: the tangential spring
+    history_name = HISTORY_NAME
 
     def __init__(self, sim, args):
         super().__init__(sim, args)
@@ -218,11 +221,11 @@ class PairGran(Pair):
             return
         capacity = self.args.max_contacts
         particles = self.sim.particles
-        name = f"{HISTORY_NAME}_partner"
+        name = f"{self.history_name}_partner"
         if particles.has(name) and particles.arrays[name].shape[1] != capacity:
             raise ScriptError(f"max_contacts cannot change once contacts are stored "
                               f"(stored: {particles.arrays[name].shape[1]}, asked: {capacity})")
-        self.history = ContactHistory(self.sim, HISTORY_NAME, width=3, capacity=capacity)
+        self.history = ContactHistory(self.sim, self.history_name, width=self.history_width, capacity=capacity)
 
     def largest_radii(self, ntypes):
         """Largest radius of each type among the moving and among the frozen particles present."""

@@ -1,0 +1,73 @@
+"""fix property/global: each of LIGGGHTS's forms read, and bad lines refused with one line."""
+
+import pytest
+
+from pdps_core.api import Simulation
+
+SETUP = """\
+atom_style granular
+units si
+region reg block -1 1 -1 1 -1 1 units box
+create_box 2 reg
+create_atoms 1 single 0 0 0 units box
+"""
+
+
+@pytest.mark.parametrize("line, kind, values", [
+    ("fix a all property/global youngsModulus peratomtype 1e6 2e6", "per_type", [1e6, 2e6]),
+    ("fix a all property/global youngsModulus atomtype 1e6 2e6", "per_type", [1e6, 2e6]),
+    ("fix a all property/global youngsModulus vector 1e6 2e6", "per_type", [1e6, 2e6]),
+    ("fix a all property/global characteristicVelocity scalar 2.", "scalar", [2.0]),
+    ("fix a all property/global coefficientFriction peratomtypepair 2 0.1 0.2 0.2 0.3", "per_type_pair",
+     [0.1, 0.2, 0.2, 0.3]),
+    ("fix a all property/global coefficientFriction atomtypepair 2 0.1 0.2 0.2 0.3", "per_type_pair",
+     [0.1, 0.2, 0.2, 0.3]),
+    ("fix a all property/global table matrix 3 1 2 3 4 5 6", "matrix", [1, 2, 3, 4, 5, 6]),
+])
+def test_each_property_global_form_is_read(line, kind, values):
+    sim = Simulation(screen=False, log=None)
+    sim.command(SETUP + line)
+    fix = sim.fixes["a"]
+    assert fix.style == kind
+    assert list(fix.values) == values
+    assert fix.columns == (3 if kind == "matrix" else 2 if kind == "per_type_pair" else 1)
+
+
+
+def test_the_later_of_two_fixes_of_one_name_holds():
+    from pdps_granular_contact.liggghts import read_property
+    sim = Simulation(screen=False, log=None)
+    sim.command(SETUP + "fix a all property/global youngsModulus peratomtype 1e6 2e6\n"
+                "fix b all property/global youngsModulus peratomtype 3e6 4e6\n")
+    assert list(read_property(sim, "youngsModulus", 2, "test")) == [0.0, 3e6, 4e6]
+
+
+def test_scalar_with_two_values_is_refused(pdps_cli):
+    done = pdps_cli(SETUP + "fix m2 all property/global poissonsRatio scalar 0.45 0.45\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == "ERROR: in.test:6: fix: poissonsRatio scalar takes one value (got 2)"
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix a all property/global coefficientFriction peratomtypepair 2 0.1 0.2 0.3 0.4",
+     "fix: coefficientFriction peratomtypepair: the table must be symmetric (value 1,2 is 0.2, value 2,1 is 0.3)"),
+    ("fix a all property/global coefficientFriction peratomtypepair 2 0.1 0.2 0.2",
+     "fix: coefficientFriction peratomtypepair 2: expected 2 x 2 = 4 values (got 3)"),
+    ("fix a all property/global coefficientFriction peratomtypepair two 0.1",
+     "fix: coefficientFriction peratomtypepair: the number of columns must be an integer (got two)"),
+    ("fix a all property/global table matrix 4 1 2 3", "fix: table matrix: 3 values do not fill rows of 4 columns"),
+    ("fix a all property/global youngsModulus peratomtype", "fix: youngsModulus peratomtype: expected at least "
+     "one value; usage: " + "fix ID GROUP property/global NAME scalar V | vector|atomtype|peratomtype V1 V2 ... | "
+     "matrix|atomtypepair|peratomtypepair N V11 ... VNN"),
+    ("fix a all property/global youngsModulus peratomtype 5e6 abc",
+     "fix: youngsModulus peratomtype: values must be numbers (got abc)"),
+    ("fix a all property/global youngsModulus peratomtype 5e6 inf",
+     "fix: youngsModulus peratomtype: values must be finite numbers (got inf)"),
+    ("fix a all property/global youngsModulus perparticle 5e6",
+     "fix: style must be one of 'scalar', 'vector', 'atomtype', 'peratomtype', 'matrix', 'atomtypepair' or "
+     "'peratomtypepair' (got perparticle)"),
+])
+def test_bad_lines(pdps_cli, line, message):
+    done = pdps_cli(SETUP + line + "\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"

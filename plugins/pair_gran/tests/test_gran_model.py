@@ -1,0 +1,210 @@
+"""pair_style gran model ... (LIGGGHTS): the material from fix property/global, the Hertz and Hooke
+laws against their formulas and restitution coefficients, the script's dialect and the error lines."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+
+RHO = 2500.0
+D = 0.01
+MASS = RHO * math.pi / 6.0 * D ** 3
+
+
+def material(e=0.5, mu=0.5, extra=""):
+    return (f"fix m1 all property/global youngsModulus peratomtype 5.e6\n"
+            f"fix m2 all property/global poissonsRatio peratomtype 0.45\n"
+            f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {e!r}\n"
+            f"fix m4 all property/global coefficientFriction peratomtypepair 1 {mu!r}\n" + extra)
+
+
+def two_spheres(pair, gap, speed, *, mat=None, dt=1e-6, extra=""):
+    """Two spheres of diameter D on the x axis, centres 2 (D/2 + gap) apart, approaching at
+    ``speed`` each (gap < 0: overlapping); SI units, LIGGGHTS's spelling."""
+    sim = Simulation(screen=False, log=None)
+    x = D / 2 + gap
+    sim.command(f"""
+atom_style granular
+boundary f f f
+communicate single vel yes
+units si
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 1 reg
+neighbor 0.002 bin
+neigh_modify delay 0
+{material() if mat is None else mat}
+pair_style gran {pair}
+pair_coeff * *
+timestep {dt!r}
+create_atoms 1 single {-x!r} 0 0 units box
+create_atoms 1 single {x!r} 0 0 units box
+set type 1 diameter {D!r} density {RHO!r}
+velocity all set 0 0 0 units box
+set atom 1 vx {speed!r}
+set atom 2 vx {-speed!r}
+{extra}""")
+    return sim
+
+
+def effective(youngs=5e6, poisson=0.45):
+    y_star = youngs / (2 * (1 - poisson ** 2))
+    g_star = youngs / (4 * (2 - poisson) * (1 + poisson))
+    return y_star, g_star, D / 4, MASS / 2
+
+
+@pytest.mark.parametrize("e", [0.5, 0.9])
+def test_hertz_head_on_collision_rebounds_with_the_restitution_coefficient(e):
+    """LIGGGHTS's Hertz damping (Tsuji's, -2 sqrt(5/6) beta sqrt(S_n m*)) makes the restitution
+    independent of the speed and equal to e; ~650 steps a contact."""
+    sim = two_spheres("model hertz tangential history", 1e-4, 1.0, mat=material(e),
+                      extra="fix integr all nve/sphere")
+    sim.command("run 3000")
+    v = sim.v[np.argsort(sim.tag)]
+    assert -v[0, 0] == pytest.approx(e, rel=2e-3)
+    assert v[1, 0] == pytest.approx(-v[0, 0], rel=1e-12)
+
+
+def test_hooke_head_on_collision_rebounds_with_the_restitution_coefficient():
+    """Hooke: a linear spring with damping sqrt(4 m* kn / (1 + pi^2/ln^2 e)) rebounds with e at any
+    speed; kn from the characteristic velocity."""
+    mat = material(0.7, extra="fix m5 all property/global characteristicVelocity scalar 2.0\n")
+    sim = two_spheres("model hooke tangential history", 1e-4, 0.5, mat=mat, extra="fix integr all nve/sphere")
+    sim.command("run 4000")
+    v = sim.v[np.argsort(sim.tag)]
+    assert -v[0, 0] / 0.5 == pytest.approx(0.7, rel=2e-3)
+
+
+def setup_forces(sim):
+    sim.command("run 0")
+    order = np.argsort(sim.tag)
+    return sim.f[order].copy(), sim.particles.torque[: sim.nlocal][order].copy()
+
+
+@pytest.mark.parametrize("speed", [0.0, 0.3])
+def test_hertz_normal_force_is_liggghts_formula(speed):
+    """F_n = 4/3 Y* sqrt(R* delta) delta - gamma_n v_n, gamma_n = -2 sqrt(5/6) beta sqrt(2 Y*
+    sqrt(R* delta) m*), Y* = Y / (2 (1 - nu^2)) for two equal spheres."""
+    delta = 2e-5
+    sim = two_spheres("model hertz tangential history", -delta / 2, speed)
+    force, _ = setup_forces(sim)
+    y_star, _, r_star, m_star = effective()
+    root = math.sqrt(r_star * delta)
+    beta = math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
+    gamma_n = -2 * math.sqrt(5 / 6) * beta * math.sqrt(2 * y_star * root * m_star)
+    v_n = -2 * speed     # (v_1 - v_2) . n with n from 2 to 1 (-x)
+    expected = 4 / 3 * y_star * root * delta - gamma_n * v_n
+    assert force[0, 0] == pytest.approx(-expected, rel=1e-12)
+    assert force[1, 0] == pytest.approx(expected, rel=1e-12)
+
+
+def test_hooke_stiffness_from_the_characteristic_velocity():
+    """kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5)."""
+    delta, velocity = 2e-5, 2.0
+    mat = material(extra=f"fix m5 all property/global characteristicVelocity scalar {velocity}\n")
+    sim = two_spheres("model hooke tangential history", -delta / 2, 0.0, mat=mat)
+    force, _ = setup_forces(sim)
+    y_star, _, r_star, m_star = effective()
+    kn = 16 / 15 * math.sqrt(r_star) * y_star * (15 * m_star * velocity ** 2 / (16 * math.sqrt(r_star) * y_star)) ** 0.2
+    assert force[1, 0] == pytest.approx(kn * delta, rel=1e-12)
+
+
+def test_no_history_friction_is_viscous_up_to_coulomb():
+    """tangential no_history: F_t = -min(mu |F_n|, gamma_t |v_t|) v_t/|v_t|; a fast slide sits on
+    Coulomb's limit."""
+    delta = 2e-5
+    sim = two_spheres("model hertz tangential no_history", -delta / 2, 0.0,
+                      extra="set atom 1 vy 1.0")
+    force, torque = setup_forces(sim)
+    assert abs(force[0, 1]) == pytest.approx(0.5 * abs(force[0, 0]), rel=1e-12)
+    assert force[0, 1] < 0
+    # the torque of the tangential force at the contact point, R - delta/2 along +x from sphere 1
+    assert torque[0, 2] == pytest.approx((D / 2 - delta / 2) * force[0, 1], rel=1e-12)
+
+
+def test_per_type_pair_tables_reach_the_law():
+    """Two types, friction per type pair: a sliding contact of types 1 and 2 is limited by
+    mu_12, not mu_11 or mu_22."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(f"""
+atom_style granular
+units si
+boundary f f f
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 2 reg
+fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.1 0.3 0.3 0.7
+pair_style gran model hertz tangential no_history
+pair_coeff * *
+create_atoms 1 single -0.00499 0 0 units box
+create_atoms 2 single 0.00499 0 0 units box
+set group all diameter {D} density {RHO}
+set atom 1 vy 1.0
+""")
+    force, _ = setup_forces(sim)
+    assert abs(force[0, 1]) == pytest.approx(0.3 * abs(force[0, 0]), rel=1e-12)
+
+
+SETUP = """\
+atom_style granular
+units si
+region reg block -1 1 -1 1 -1 1 units box
+create_box 2 reg
+create_atoms 1 single 0 0 0 units box
+"""
+FULL = """\
+fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+"""
+
+
+@pytest.mark.parametrize("lines, message", [
+    (FULL.replace("fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5\n", ""),
+     "run: pair gran needs coefficientFriction: fix ID all property/global coefficientFriction "
+     "peratomtypepair 2 V11 ... V22"),
+    (FULL.replace("peratomtype 5.e6 5.e6", "peratomtype 5.e6"),
+     "run: youngsModulus (fix m1) has 1 value(s) for 2 particle type(s)"),
+    (FULL.replace("coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5", "coefficientFriction peratomtypepair 1 0.5"),
+     "run: coefficientFriction (fix m4) is a 1 x 1 table for 2 particle type(s)"),
+    (FULL.replace("0.45 0.45", "0.45 0.7"), "run: poissonsRatio (fix m2) must be in (-1, 0.5] (got 0.7)"),
+    (FULL, "run: pair gran needs characteristicVelocity: fix ID all property/global characteristicVelocity "
+     "scalar VALUE"),
+    (FULL + "fix m5 all property/global characteristicVelocity peratomtype 2 2\n",
+     "run: characteristicVelocity (fix m5) must be given as scalar (got peratomtype)"),
+])
+def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
+    """Missing properties and wrong counts are found at the run that needs them (hooke reads the
+    characteristic velocity, hertz does not)."""
+    style = "hooke" if "characteristicVelocity" in message else "hertz"
+    script = SETUP + lines + f"pair_style gran model {style} tangential history\npair_coeff * *\nrun 0\n"
+    done = pdps_cli(script)
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:{script.count(chr(10))}: {message}"
+
+
+@pytest.mark.parametrize("line, message", [
+    ("pair_style gran model hertz", "pair_style: missing argument tangential"),
+    ("pair_style gran model hertz tangential history rolling_friction xyz",
+     "pair_style: rolling_friction must be one of 'off', 'cdt', 'epsd' or 'epsd2' (got xyz)"),
+    ("pair_style gran model hertz tangential history cohesion sjkr limitForce maybe",
+     "pair_style: limitForce must be one of 'on' or 'off' (got maybe)"),
+])
+def test_bad_pair_style_lines(pdps_cli, line, message):
+    done = pdps_cli(SETUP + line + "\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+
+
+def test_a_liggghts_script_says_so_on_its_first_line(pdps_cli):
+    done = pdps_cli("units si\nboundary f f f\natom_style granular\nregion reg block -1 1 -1 1 -1 1 units box\n"
+                    "create_box 1 reg\n")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[0] == "read as LIGGGHTS: atom_style granular on line 3"
+    done = pdps_cli("units si\natom_style sphere\nregion reg block -1 1 -1 1 -1 1 units box\ncreate_box 1 reg\n"
+                    + FULL.replace("5.e6 5.e6", "5.e6").splitlines()[0] + "\n")
+    assert done.stdout.splitlines()[0] == "read as LIGGGHTS: fix property/global on line 5"
