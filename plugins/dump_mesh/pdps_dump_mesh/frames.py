@@ -12,8 +12,10 @@ In a parallel run rank 0 gathers the particles and writes every file.
 Mesh walls (keyword ``walls yes``): every fix that exposes a triangulated surface through the
 public attributes ``vertices`` (n x 3) and ``triangles`` (m x 3 vertex indices), as fix wall/mesh
 does, is written as a surface of its own: once, to ``STEM_wall_FIXID.EXT``, if the fix says it does
-not move (``moving`` false), else one file per frame ``STEM_wall_FIXID_STEP.EXT`` with its own series
-file ``STEM_wall_FIXID`` + series suffix.
+not move (``moving`` false) and has no per-face values, else one file per frame
+``STEM_wall_FIXID_STEP.EXT`` with its own series file ``STEM_wall_FIXID`` + series suffix. A fix
+that offers per-face values through ``face_data(sim)`` (fix mesh/surface/stress: ``force``,
+``pressure``, ``shear``) has them written as cell data of its triangles.
 
 A run that stops keeps every complete frame: each file is written under a temporary name and
 renamed, and the series file is rewritten (the same way) after the frame it adds is in place, so it
@@ -138,9 +140,16 @@ def mesh_walls(sim):
             yield ident, fix
 
 
+def face_data(sim, fix):
+    """Per-triangle values a mesh fix offers through ``face_data(sim)`` ({name: (m,) or (m, k)
+    array}: fix mesh/surface/stress's force, pressure and shear), else {}."""
+    offer = getattr(fix, "face_data", None)
+    return dict(offer(sim)) if callable(offer) else {}
+
+
 class MeshDump(Dump):
     """A dump of one file per frame plus a series file; subclasses give the format:
-    ``extensions``, ``example``, ``write_mesh(tmp, points, cells, point_data, time)`` and
+    ``extensions``, ``example``, ``write_mesh(tmp, points, cells, point_data, time, cell_data)`` and
     ``render_series(frames, surface)``; ``series_suffix`` makes a series file's name from a frame
     pattern's."""
     extensions: tuple = ()
@@ -163,8 +172,9 @@ class MeshDump(Dump):
         self.wall_series = {}
         self.walls_written = {}     # fix id -> the static fix object whose surface is on disk
 
-    def write_frame(self, path, points, cells, point_data, time):
-        replace_atomically(path, lambda tmp: self.write_mesh(tmp, points, cells, point_data, time))
+    def write_frame(self, path, points, cells, point_data, time, cell_data=None):
+        replace_atomically(path, lambda tmp: self.write_mesh(tmp, points, cells, point_data, time,
+                                                             cell_data or {}))
 
     def write(self, sim):
         frame = particle_frame(sim, self.group)
@@ -181,7 +191,8 @@ class MeshDump(Dump):
         for ident, fix in mesh_walls(sim):
             cells = [("triangle", np.asarray(fix.triangles, dtype=np.int64))]
             points = np.asarray(fix.vertices, dtype=np.float64)
-            if not getattr(fix, "moving", True):
+            faces = face_data(sim, fix)
+            if not getattr(fix, "moving", True) and not faces:
                 if self.walls_written.get(ident) is not fix:
                     self.write_frame(self.pattern.wall(ident), points, cells, {}, sim.time)
                     self.walls_written[ident] = fix
@@ -192,10 +203,11 @@ class MeshDump(Dump):
                     self.pattern.wall(ident) + self.series_suffix,
                     lambda frames: self.render_series(frames, True))
             path = self.pattern.wall(ident, sim.step)
-            self.write_frame(path, points, cells, {}, sim.time)
+            self.write_frame(path, points, cells, {}, sim.time,
+                             {name: [values] for name, values in faces.items()})
             series.add(path, sim.time)
 
-    def write_mesh(self, tmp, points, cells, point_data, time):
+    def write_mesh(self, tmp, points, cells, point_data, time, cell_data):
         raise NotImplementedError
 
     def render_series(self, frames, surface):

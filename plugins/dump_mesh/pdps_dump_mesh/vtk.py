@@ -15,9 +15,11 @@ the simulation time, in the JSON form ParaView reads::
 
     {"file-series-version": "1.0", "files": [{"name": "p_0.vtu", "time": 0.0}, ...]}
 
-``walls yes`` also writes the surface of every mesh wall (fix wall/mesh): once if it does not move
-(``p_wall_FIXID.vtu``), else a file per frame with a series of its own (``p_wall_FIXID_STEP.vtu``,
-``p_wall_FIXID.vtu.series``). Default ``no``.
+``walls yes`` also writes the surface of every mesh wall (fix wall/mesh, fix mesh/surface): once if
+it does not move (``p_wall_FIXID.vtu``), else a file per frame with a series of its own
+(``p_wall_FIXID_STEP.vtu``, ``p_wall_FIXID.vtu.series``). A fix mesh/surface/stress is written every
+frame with the cell data ``force`` (3 values), ``pressure`` and ``shear`` of each triangle (the
+forces the particles exert on it, LIGGGHTS's mesh/vtk output). Default ``no``.
 
 Each file is written under a temporary name and renamed, and the series file is rewritten after
 each frame is in place: a run that stops leaves complete frames and a series naming only those.
@@ -41,9 +43,10 @@ class DumpVTK(MeshDump):
     example = "frames_*.vtu"
     series_suffix = ".series"
 
-    def write_mesh(self, tmp, points, cells, point_data, time):
+    def write_mesh(self, tmp, points, cells, point_data, time, cell_data):
         kind = "vtu" if self.pattern.tail.endswith(".vtu") else "vtk"
-        meshio.write(tmp, meshio.Mesh(points, cells, point_data=point_data), file_format=kind)
+        meshio.write(tmp, meshio.Mesh(points, cells, point_data=point_data, cell_data=cell_data),
+                     file_format=kind)
 
     def render_series(self, frames, surface):
         # ParaView's layout: one frame per line

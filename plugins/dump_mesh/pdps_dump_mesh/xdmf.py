@@ -44,7 +44,7 @@ class DumpXDMF(MeshDump):
     extensions = (".xdmf", ".xmf")
     example = "frames_*.xdmf"
 
-    def write_mesh(self, tmp, points, cells, point_data, time):
+    def write_mesh(self, tmp, points, cells, point_data, time, cell_data):
         if len(points) == 0:
             # empty data items make ParaView's XDMF reader abort: a grid with a time and nothing else
             root = ET.Element("Xdmf", Version="3.0")
@@ -58,7 +58,7 @@ class DumpXDMF(MeshDump):
         with meshio.xdmf.TimeSeriesWriter(tmp, data_format="XML") as writer:
             writer.mesh_name = MESH
             writer.write_points_cells(points, cells)
-            writer.write_data(time, point_data=point_data)
+            writer.write_data(time, point_data=point_data, cell_data=cell_data)
 
     def render_series(self, frames, surface):
         root = ET.Element("Xdmf", Version="3.0")

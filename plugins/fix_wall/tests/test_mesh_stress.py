@@ -1,0 +1,120 @@
+"""fix mesh/surface/stress: the force a settled bed exerts on the floor is its weight; the torque of a
+resting sphere about the reference point is r x (-m g); per-face pressure times area adds up to the
+normal force; the vector reads from thermo in each dialect's index base.
+
+Units lj; spheres of diameter 1, density 1 (m = pi/6); data/square.stl is [-1, 1]^2 at z = 0.
+"""
+
+import math
+
+import meshio
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
+
+MASS = math.pi / 6.0
+KN, E, G = 1.0e4, 0.5, 10.0
+
+
+def test_the_floor_carries_the_weight_of_a_settled_bed(data):
+    """216 spheres poured in a box periodic in x and y onto a floor mesh wider than the box, settled
+    with viscous damping and friction: the force on the floor (f_floor[2], PDPS index base) is
+    N m g within 0.5 %, pointing down, with no net sideways force; the per-face pressure times the
+    face area sums to it."""
+    sim = make_box(f"""
+        neighbor 0.2 bin
+        lattice sc 1.02
+        region fill block 0 6 0 6 0 6 units lattice
+        create_particle 1 region fill diameter 1 density 1
+        pair_style dem/lsd 0.5 1.0
+        pair_coeff * * {KN} 20 {2 / 7 * KN} 10 0.5
+        fix floor all mesh/surface/stress file {data}/square.stl scale 8 move 3 3 -0.05
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-G}
+        fix 3 all viscous 2.0
+        timestep 0.002
+    """, box="0 6.12 0 6.12 -1 12", boundary="p p f", particle_style="sphere")
+    n = sim.nlocal
+    assert n == 216
+    sim.command("run 3000")
+    fz = []
+    for _ in range(20):
+        sim.command("run 10")
+        fz.append(sim.fix_value("floor", (2,)))
+    weight = n * MASS * G
+    assert np.mean(fz) == pytest.approx(-weight, rel=0.005)
+    force = sim.fixes["floor"].vector(sim)
+    assert abs(force[0]) < 1e-3 * weight and abs(force[1]) < 1e-3 * weight
+    faces = sim.fixes["floor"].face_data(sim)
+    area = sim.fixes["floor"].face_areas()
+    assert np.sum(faces["pressure"] * area) == pytest.approx(abs(force[2]), rel=1e-9)
+
+
+def test_torque_of_a_resting_sphere_about_the_reference_point(data):
+    """One sphere resting at (a, b) on the floor: force (0, 0, -m g) at the contact point (a, b, 0),
+    torque (p - r0) x F about r0 = (1, -2, 3)."""
+    a, b = 0.3, -0.4
+    r0 = np.array([1.0, -2.0, 3.0])
+    sim = make_box(f"""
+        fix floor all mesh/surface/stress file {data}/square.stl scale 2 reference_point 1 -2 3
+        create_particle 1 single {a} {b} {0.5 - MASS * G / KN} diameter 1 density 1
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-G}
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+        timestep 0.001
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 50")
+    force = np.array([0.0, 0.0, -MASS * G])
+    expected = np.concatenate([force, np.cross(np.array([a, b, 0.0]) - r0, force)])
+    np.testing.assert_allclose(sim.fixes["floor"].vector(sim), expected, atol=1e-9)
+    sim.command("thermo_style custom step f_floor[2]")      # PDPS: 0-based, [2] is z
+    assert sim.fix_value("floor", (2,)) == pytest.approx(-MASS * G, abs=1e-9)
+
+
+def test_stress_off_sums_nothing(data):
+    sim = make_box(f"""
+        fix floor all mesh/surface/stress file {data}/square.stl scale 2 stress off
+        create_particle 1 single 0 0 0.49 diameter 1 density 1
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 2")
+    assert not np.any(sim.fixes["floor"].vector(sim))
+
+
+@pytest.mark.parametrize("words, message", [
+    ("stress maybe", "stress must be on or off (got maybe)"),
+    ("wear finnie", "wear finnie is not supported (wear off only)"),
+    ("reference_point 0 0", "keyword reference_point needs 3 value(s) (got 0 0)"),
+])
+def test_bad_stress_words(data, words, message):
+    sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
+    with pytest.raises(ScriptError) as info:
+        sim.command(f"fix floor all mesh/surface/stress file {data}/square.stl {words}")
+    assert message in str(info.value)
+
+
+def test_dump_vtk_writes_the_force_pressure_and_shear_of_each_face(data, tmp_path):
+    """dump vtk ... walls yes writes the stress mesh every frame, with the cell data force, pressure
+    and shear: for a sphere resting on the square (two triangles of area 2) the faces' forces sum to
+    (0, 0, -m g), pressure x area to m g, and there is no shear."""
+    sim = make_box(f"""
+        fix floor all mesh/surface/stress file {data}/square.stl
+        create_particle 1 single 0.4 -0.3 {0.5 - MASS * G / KN} diameter 1 density 1
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-G}
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+        timestep 0.001
+        dump d all vtk 10 {tmp_path}/p_*.vtu walls yes
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 20")
+    for step in (0, 10, 20):
+        mesh = meshio.read(tmp_path / f"p_wall_floor_{step}.vtu")
+        force = mesh.cell_data["force"][0]
+        pressure, shear = mesh.cell_data["pressure"][0], mesh.cell_data["shear"][0]
+        np.testing.assert_allclose(force.sum(axis=0), [0, 0, -MASS * G], atol=1e-9)
+        assert np.sum(pressure * 2.0) == pytest.approx(MASS * G, rel=1e-9)
+        np.testing.assert_allclose(shear, 0.0, atol=1e-9)
+    assert (tmp_path / "p_wall_floor.vtu.series").exists()
