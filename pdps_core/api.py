@@ -94,7 +94,7 @@ CONTRACT = {
         "molecule": "(nall,) int64 molecule ids (0: none), with particle_style molecular, bond, angle, full",
         "q": "(nall,) charges, with particle_style charge, full",
         "arrays": "{name: array} of every per-atom array, custom ones included",
-        "request": "request(name, width=, dtype=, default=): allocate a per-atom array",
+        "request": "request(name, width=, dtype=, default=, ghost=): allocate a per-atom array (ghost=False: ghosts do not carry it)",
         "has": "has(name): whether a per-atom array exists",
         "index_of_tag": "index_of_tag(tag): the owned row of a global id, or -1",
     },

@@ -21,17 +21,17 @@ import numpy as np
 from numba import njit
 
 from ..errors import SimulationError
+from ..state.finite import first_non_finite
 from .grid import Decomposition, choose_grid
 
 
 @njit(cache=True)
-def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, capacity):
-    """(rank, particle, image shift) of every ghost this rank must send: particle i, displaced by a
-    whole number of box lengths along periodic axes, inside rank r's sub-domain grown by cutghost.
-    Returns counts -1 when ``capacity`` is too small."""
-    ranks = np.empty(capacity, dtype=np.int64)
-    index = np.empty(capacity, dtype=np.int64)
-    shift = np.empty((capacity, 3))
+def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, ranks, index, shift):
+    """(rank, particle, image shift) of every ghost this rank must send, in rank order: particle i,
+    displaced by a whole number of box lengths along periodic axes, inside rank r's sub-domain grown
+    by cutghost. Written into the buffers ``ranks, index, shift``; returns how many, or -1 when the
+    buffers are too small."""
+    capacity = len(ranks)
     k_lo = np.zeros(3, dtype=np.int64)
     k_hi = np.zeros(3, dtype=np.int64)
     m = 0
@@ -63,14 +63,38 @@ def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, 
                         if r == me and kx == 0 and ky == 0 and kz == 0:
                             continue
                         if m >= capacity:
-                            return ranks, index, shift, -1
+                            return -1
                         ranks[m] = r
                         index[m] = i
                         shift[m, 0] = kx * length[0]
                         shift[m, 1] = ky * length[1]
                         shift[m, 2] = kz * length[2]
                         m += 1
-    return ranks, index, shift, m
+    return m
+
+
+@njit(cache=True)
+def _leavers(x, nlocal, lo, length, grid, me, gone, index, dest):
+    """Owned particles now in another rank's sub-domain (positions wrapped into the box): flagged in
+    ``gone``, listed with their new owner in ``index, dest``; returns how many. The owner is
+    Decomposition.owner's, computed alike."""
+    m = 0
+    for i in range(nlocal):
+        rank = 0
+        stride = 1
+        for d in range(3):
+            cell = int(math.floor((x[i, d] - lo[d]) / length[d] * grid[d]))
+            cell = min(max(cell, 0), grid[d] - 1)
+            rank += cell * stride
+            stride *= grid[d]
+        if rank == me:
+            gone[i] = 0
+        else:
+            gone[i] = 1
+            index[m] = i
+            dest[m] = rank
+            m += 1
+    return m
 
 
 
@@ -114,6 +138,11 @@ class MPIComm:
         self._layouts = {}          # ghost row layouts by width, for the current ghosts
         self._owners = None
         self._send_buffer = self._recv_buffer = self._back_buffer = np.zeros(0)
+        self._ghost_rows = (np.zeros(0), np.zeros(0))       # borders' send and receive rows
+        self._ghost_rank = self._ghost_index = np.zeros(0, dtype=np.int64)
+        self._ghost_shift = np.zeros((0, 3))
+        self._gone = np.zeros(0, dtype=np.uint8)             # exchange's flags and lists
+        self._leave_index = self._leave_dest = np.zeros(0, dtype=np.int64)
 
     @property
     def is_root(self):
@@ -151,12 +180,11 @@ class MPIComm:
             self.decompose(box)
         message = None
         x = p.x
-        bad = ~np.isfinite(x).all(axis=1)
-        if bad.any():
-            i = int(np.flatnonzero(bad)[0])
-            message = f"particle {int(p.tag[i])} has a non-finite position {tuple(x[i])} at step {step}"
+        bad = first_non_finite(x, p.nlocal)
+        if bad >= 0:
+            message = f"particle {int(p.tag[bad])} has a non-finite position {tuple(x[bad])} at step {step}"
         count = 0
-        if not bad.any():
+        if bad < 0:
             try:
                 gone = box.wrap(x, p.image, p.tag, step, box.lost)
                 if gone.any():
@@ -164,12 +192,20 @@ class MPIComm:
             except SimulationError as exc:
                 message, count = exc.template, exc.count
         self.agree(message, count)
-        owner = self.decomposition.owner(p.x[: p.nlocal])
-        leaving = np.flatnonzero(owner != self.rank)
-        order = leaving[np.argsort(owner[leaving], kind="stable")]
-        counts = np.bincount(owner[order], minlength=self.nprocs)
+        n = p.nlocal
+        if len(self._gone) < n:
+            size = n + n // 4 + 16
+            self._gone = np.empty(size, dtype=np.uint8)
+            self._leave_index, self._leave_dest = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+        d = self.decomposition
+        m = _leavers(p.x, n, box.lo, box.length, d.grid, self.rank, self._gone, self._leave_index,
+                     self._leave_dest)
+        dest = self._leave_dest[:m]
+        order = self._leave_index[:m][np.argsort(dest, kind="stable")]
+        counts = np.bincount(dest, minlength=self.nprocs)
         rows = p.pack(order)
-        p.keep(np.setdiff1d(np.arange(p.nlocal), leaving, assume_unique=True))
+        if m:
+            p.remove(self._gone[:n])
         arrived = self._alltoall_rows(rows, counts)
         if len(arrived):
             p.append_owned(arrived)
@@ -179,21 +215,22 @@ class MPIComm:
         p = particles
         p.clear_ghosts()
         nlocal = p.nlocal
+        m = 0
         if cutghost > 0:
             bounds = [self.decomposition.bounds(r) for r in range(self.nprocs)]
             sublo = np.array([b[0] for b in bounds])
             subhi = np.array([b[1] for b in bounds])
             periodic = np.array(box.periodic, dtype=np.bool_)
-            capacity = max(4 * nlocal, 1024)
             while True:
-                ranks, index, shift, m = ghost_sends(p.x, nlocal, sublo, subhi, cutghost, box.length,
-                                                     periodic, self.rank, box.dimension == 2, capacity)
+                m = ghost_sends(p.x, nlocal, sublo, subhi, cutghost, box.length, periodic, self.rank,
+                                box.dimension == 2, self._ghost_rank, self._ghost_index, self._ghost_shift)
                 if m >= 0:
                     break
-                capacity *= 4
-            ranks, index, shift = ranks[:m], index[:m], shift[:m]
-        else:
-            ranks, index, shift = (np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros((0, 3)))
+                size = 2 * len(self._ghost_rank) + nlocal + 64
+                self._ghost_rank = np.empty(size, dtype=np.int64)
+                self._ghost_index = np.empty(size, dtype=np.int64)
+                self._ghost_shift = np.empty((size, 3))
+        ranks, index, shift = self._ghost_rank[:m], self._ghost_index[:m], self._ghost_shift[:m]
         counts = np.bincount(ranks, minlength=self.nprocs).astype(np.int64)
         starts = np.concatenate([[0], np.cumsum(counts)])
         self._send = [(index[starts[r]:starts[r + 1]], shift[starts[r]:starts[r + 1]])
@@ -203,9 +240,19 @@ class MPIComm:
         self._send_counts = counts
         self._layouts = {}
         self._owners = None
-        rows = p.pack(index)
-        rows[:, :3] += shift          # x is the first property: the rows carry the image position
-        received, self._recv_counts = self._alltoall_rows(rows, counts, return_counts=True)
+        width = p.row_width(ghost=True)
+        send, receive = self._ghost_rows
+        if send.size < m * width:
+            send = np.empty(int(1.25 * m * width) + 64)
+        rows = p.pack(index, out=send[:m * width].reshape(m, width), ghost=True, shift=shift)
+        self._recv_counts = np.empty(self.nprocs, dtype=np.int64)
+        self.world.Alltoall(counts, self._recv_counts)
+        total = int(self._recv_counts.sum())
+        if receive.size < total * width:
+            receive = np.empty(int(1.25 * total * width) + 64)
+        self._ghost_rows = (send, receive)
+        received = receive[:total * width].reshape(total, width)
+        self._alltoallv(rows, counts * width, received, self._recv_counts * width)
         p.set_ghost_rows(received)
         # ghosts this rank sent to itself (periodic self-images), for owners()
         start = int(self._recv_counts[: self.rank].sum())
@@ -303,16 +350,21 @@ class MPIComm:
             recv_counts = np.empty(self.nprocs, dtype=np.int64)
             self.world.Alltoall(counts, recv_counts)
         received = np.empty((int(recv_counts.sum()), width))
-        send = np.ascontiguousarray(rows, dtype=np.float64).reshape(-1)
-        send_counts = counts * width
-        recv_counts_values = recv_counts * width
-        send_displ = np.concatenate([[0], np.cumsum(send_counts)[:-1]])
-        recv_displ = np.concatenate([[0], np.cumsum(recv_counts_values)[:-1]])
-        self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
-                             [received.reshape(-1), (recv_counts_values, recv_displ), self.MPI.DOUBLE])
+        self._alltoallv(np.ascontiguousarray(rows, dtype=np.float64), counts * width, received,
+                        recv_counts * width)
         if return_counts:
             return received, recv_counts
         return received
+
+    def _alltoallv(self, send, send_counts, receive, recv_counts):
+        """Doubles to every rank: ``send_counts`` values to each, in rank order, ``recv_counts``
+        from each into ``receive``."""
+        send_displ = np.zeros(self.nprocs, dtype=np.int64)
+        recv_displ = np.zeros(self.nprocs, dtype=np.int64)
+        np.cumsum(send_counts[:-1], out=send_displ[1:])
+        np.cumsum(recv_counts[:-1], out=recv_displ[1:])
+        self.world.Alltoallv([send.reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],
+                             [receive.reshape(-1), (recv_counts, recv_displ), self.MPI.DOUBLE])
 
     def sum(self, value):
         return self.world.allreduce(value, op=self.MPI.SUM)

@@ -236,7 +236,7 @@ def delete_atoms(sim, args):
     if whole_molecules:
         doomed = _whole_molecules(sim, doomed)
     deleted = int(sim.comm.sum(int(doomed.sum())))
-    p.keep(_lammps_deletion_order(doomed))
+    p.remove(np.array(doomed, dtype=np.bool_))       # LAMMPS's order: compressed ids follow its
     sim.groups.update(sim)
     if compress:
         _compress_ids(sim)
@@ -277,22 +277,6 @@ def _overlapping(sim, cutoff, group1, group2):
         gone[i] = bool(partner.any())
     doomed_tags = set(tag_all[gone].tolist())
     return np.array([t in doomed_tags for t in p.tag[:n].tolist()], dtype=bool)
-
-
-def _lammps_deletion_order(doomed):
-    """The rows kept, in the order LAMMPS leaves them: each deleted particle's slot is taken by the
-    last one (its AtomVec::copy), so ids given afterwards (compress) follow LAMMPS's."""
-    rows = list(range(len(doomed)))
-    gone = [bool(d) for d in doomed]
-    i = 0
-    while i < len(rows):
-        if gone[i]:
-            rows[i], gone[i] = rows[-1], gone[-1]
-            rows.pop()
-            gone.pop()
-        else:
-            i += 1
-    return np.array(rows, dtype=np.int64)
 
 
 def _compress_ids(sim):

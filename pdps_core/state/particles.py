@@ -5,11 +5,17 @@ from 1), ``mask`` (uint32 group bits) and ``image`` (int32, n x 3). Any other pe
 ``radius``, ``rmass``, ``omega``, ``torque``, ``molecule`` (int64 molecule id, 0 for none) or ``q``
 (charge), exists only after a style has asked for it with
 ``request``: a scene that needs no rotation never allocates ``omega``.
+
+Ghosts carry every per-atom value a pair or a fix may read of a neighbour. They do not carry the
+values the force computation sums into (``f``, ``torque``: zeroed at every step, then summed back onto
+the owners) nor image flags, which only owned particles have; such properties are requested with
+``ghost=False`` and their ghost rows are zero after ghosts are made.
 """
 
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
 
@@ -20,16 +26,17 @@ class Property:
     width: int          # values per particle: 1 (scalar) or 3 (vector)
     dtype: type
     default: float = 0.0
+    ghost: bool = True  # ghosts receive it when they are made
 
 
 CORE = {
     "x": Property("x", 3, np.float64),
     "v": Property("v", 3, np.float64),
-    "f": Property("f", 3, np.float64),
+    "f": Property("f", 3, np.float64, ghost=False),
     "tag": Property("tag", 1, np.int64),
     "type": Property("type", 1, np.int32, 1),
     "mask": Property("mask", 1, np.uint32, 1),
-    "image": Property("image", 3, np.int32),
+    "image": Property("image", 3, np.int32, ghost=False),
 }
 
 # Properties styles commonly ask for, so that two styles asking for "radius" agree on its shape.
@@ -37,7 +44,7 @@ KNOWN = {
     "radius": Property("radius", 1, np.float64, 0.5),
     "rmass": Property("rmass", 1, np.float64, 1.0),
     "omega": Property("omega", 3, np.float64),
-    "torque": Property("torque", 3, np.float64),
+    "torque": Property("torque", 3, np.float64, ghost=False),
     "molecule": Property("molecule", 1, np.int64),
     "q": Property("q", 1, np.float64),
 }
@@ -56,6 +63,65 @@ PARTICLE_STYLES = {
 }
 
 
+@njit(cache=True)
+def _gather_columns(values, index, rows, column):
+    """rows[k, column:column + width] = values[index[k]]: one property of the particles ``index``
+    into float64 rows (ids, types and group bits are exact in a double below 2^53)."""
+    for k in range(len(index)):
+        i = index[k]
+        for d in range(values.shape[1]):
+            rows[k, column + d] = values[i, d]
+
+
+@njit(cache=True)
+def _scatter_columns(rows, column, values, start):
+    """values[start + k] = rows[k, column:column + width], each value cast to the property's type."""
+    for k in range(rows.shape[0]):
+        for d in range(values.shape[1]):
+            values[start + k, d] = rows[k, column + d]
+
+
+@njit(cache=True)
+def _removal_moves(gone, nlocal, into, source):
+    """Rows to move when the particles flagged in ``gone`` are removed as LAMMPS removes them (each
+    gone particle's slot taken by the current last particle, which is looked at again): writes the
+    (slot, row it takes) pairs and returns (how many moves, particles left). ``gone`` is modified."""
+    n = nlocal
+    moved = 0
+    i = 0
+    origin = source          # origin[k]: the original row now in slot k, for slots a move touched
+    for k in range(nlocal):
+        origin[k] = k
+    while i < n:
+        if gone[i]:
+            last = n - 1
+            gone[i] = gone[last]
+            origin[i] = origin[last]
+            n -= 1
+        else:
+            i += 1
+    for k in range(n):
+        if origin[k] != k:
+            into[moved] = k
+            origin[moved] = origin[k]
+            moved += 1
+    return moved, n
+
+
+@njit(cache=True)
+def _move_rows(values, into, source, moved):
+    """values[into[k]] = values[source[k]] for the first ``moved`` moves (every source lies beyond
+    every slot written before it, so moving in order is safe)."""
+    for k in range(moved):
+        for d in range(values.shape[1]):
+            values[into[k], d] = values[source[k], d]
+
+
+def _columns(array):
+    """A per-atom array as (n, width): vectors as they are, scalars as a one-column view."""
+    return array if array.ndim == 2 else array.reshape(-1, 1)
+
+
 class Particles:
     """``arrays[name]`` is a view of the first ``nall`` rows of a larger buffer (``_store``), grown
     by a quarter when full: ghosts made at every rebuild and particles arriving from other ranks
@@ -69,6 +135,7 @@ class Particles:
         self.nlocal = 0
         self.nghost = 0
         self.next_tag = 1
+        self._moves = np.zeros((2, 0), dtype=np.int64)     # remove()'s buffers
 
     @staticmethod
     def _empty(prop, n):
@@ -105,9 +172,10 @@ class Particles:
         self._views()
 
     # ---- properties -------------------------------------------------------------------------------
-    def request(self, name, width=None, dtype=np.float64, default=0.0):
-        """Allocate a per-atom array (idempotent); known names have a fixed shape."""
-        prop = KNOWN.get(name) or Property(name, width or 1, dtype, default)
+    def request(self, name, width=None, dtype=np.float64, default=0.0, ghost=True):
+        """Allocate a per-atom array (idempotent); known names have a fixed shape. ``ghost=False``
+        for a value only owned particles need (one summed back from ghosts, say)."""
+        prop = KNOWN.get(name) or Property(name, width or 1, dtype, default, ghost)
         existing = self.properties.get(name)
         if existing is not None:
             if existing.width != prop.width or existing.dtype != prop.dtype:
@@ -183,6 +251,20 @@ class Particles:
         self.nlocal = kept
         self._views()
 
+    def remove(self, gone):
+        """Remove the owned particles flagged in ``gone`` (bool or uint8 per owned particle; it is
+        modified) as LAMMPS does: the last particle takes each freed slot, so only the moved rows
+        are copied and the order afterwards is LAMMPS's."""
+        self.clear_ghosts()
+        if self._moves.shape[1] < self.nlocal:
+            self._moves = np.empty((2, self.nlocal + self.nlocal // 4 + 16), dtype=np.int64)
+        into, source = self._moves[0], self._moves[1]
+        moved, left = _removal_moves(gone.view(np.uint8), self.nlocal, into, source)
+        for name in self.properties:
+            _move_rows(_columns(self._store[name]), into, source, moved)
+        self.nlocal = left
+        self._views()
+
     # ---- ghosts ---------------------------------------------------------------------------------
     def clear_ghosts(self):
         if self.nghost:
@@ -194,54 +276,63 @@ class Particles:
         self.clear_ghosts()
         n = len(source)
         self._reserve(self.nlocal + n)
-        for name in self.properties:
+        for name, prop in self.properties.items():
             store = self._store[name]
-            np.take(store[:self.nlocal], source, axis=0, out=store[self.nlocal:self.nlocal + n])
+            if prop.ghost:
+                np.take(store[:self.nlocal], source, axis=0, out=store[self.nlocal:self.nlocal + n])
+            else:
+                store[self.nlocal:self.nlocal + n] = 0
         self._store["x"][self.nlocal:self.nlocal + n] += shift
         self.nghost = n
         self._views()
 
-    # ---- rows: every per-atom value of a particle as one float64 row (migration, ghosts) ----------
-    def row_width(self):
-        return sum(prop.width for prop in self.properties.values())
+    # ---- rows: per-atom values of a particle as one float64 row (migration, ghosts) --------------
+    def row_width(self, ghost=False):
+        """Values in a particle's row: every property, or (``ghost``) those ghosts carry."""
+        return sum(p.width for p in self.properties.values() if p.ghost or not ghost)
 
-    def pack(self, index):
-        """Rows of all per-atom values of the particles ``index``, in property order; every rank
-        requests properties in script order, so the layout agrees between ranks."""
-        rows = np.empty((len(index), self.row_width()))
+    def pack(self, index, out=None, ghost=False, shift=None):
+        """Rows of the per-atom values of the particles ``index``, in property order (every rank
+        requests properties in script order, so the layout agrees between ranks): all of them, or
+        (``ghost``) those ghosts carry, with positions displaced by ``shift`` (periodic images).
+        Written into ``out`` (rows x row_width) when given."""
+        width = self.row_width(ghost)
+        rows = np.empty((len(index), width)) if out is None else out
         column = 0
         for name, prop in self.properties.items():
-            values = self.arrays[name][index]
-            rows[:, column:column + prop.width] = values.reshape(len(index), prop.width)
+            if ghost and not prop.ghost:
+                continue
+            _gather_columns(_columns(self.arrays[name]), index, rows, column)
             column += prop.width
+        if shift is not None:
+            rows[:, :3] += shift          # x is the first property
         return rows
 
-    def _unpack(self, rows):
-        column, out = 0, {}
+    def _place_rows(self, rows, start, ghost):
+        column = 0
         for name, prop in self.properties.items():
-            block = rows[:, column:column + prop.width]
-            values = block.astype(prop.dtype)
-            out[name] = values if prop.width > 1 else values[:, 0]
+            store = self._store[name]
+            if ghost and not prop.ghost:
+                store[start:start + len(rows)] = 0
+                continue
+            _scatter_columns(rows, column, _columns(store), start)
             column += prop.width
-        return out
 
     def append_owned(self, rows):
-        """Particles arriving from another rank become owned (ghosts are cleared first)."""
+        """Particles arriving from another rank (full rows) become owned (ghosts are cleared first)."""
         self.clear_ghosts()
         n, start = len(rows), self.nlocal
         self._reserve(start + n)
-        for name, values in self._unpack(rows).items():
-            self._store[name][start:start + n] = values
+        self._place_rows(rows, start, ghost=False)
         self.nlocal += n
         self._views()
 
     def set_ghost_rows(self, rows):
-        """Replace the ghosts by particles received as rows."""
+        """Replace the ghosts by particles received as ghost rows (``pack(..., ghost=True)``)."""
         self.clear_ghosts()
         n, start = len(rows), self.nlocal
         self._reserve(start + n)
-        for name, values in self._unpack(rows).items():
-            self._store[name][start:start + n] = values
+        self._place_rows(rows, start, ghost=True)
         self.nghost = n
         self._views()
 
