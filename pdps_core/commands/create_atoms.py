@@ -401,6 +401,10 @@ def _add(sim, x, types):
     if len(x):
         p.add(x, int(types[0]), **extra)
         p.type[start:p.nlocal] = types
+        if extra and sim.dialect.name == "pdps":
+            # the mass command's type masses hold for PDPS spheres (particles.mass)
+            masses = sim.type_mass[p.type[start:p.nlocal]]
+            p.rmass[start:p.nlocal] = np.where(masses > 0, masses, p.rmass[start:p.nlocal])
     sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Created {len(x)} atoms")

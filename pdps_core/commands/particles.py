@@ -15,8 +15,9 @@ from .words import choice, count, integer, number, type_range
 SPHERE_KEYWORDS = ("diameter", "density")
 
 
-def _sphere_values(sim, keywords):
-    """Per-particle radius and rmass for particle_style sphere (diameter 1, density 1 by default)."""
+def _sphere_values(sim, keywords, ptype=None):
+    """Per-particle radius and rmass for particle_style sphere (diameter 1, density 1 by default);
+    in the PDPS dialect a mass the mass command gave type ``ptype`` holds instead of the density's."""
     if sim.particle_style != "sphere":
         if keywords:
             raise ScriptError(f"{next(iter(keywords))} needs particle_style sphere")
@@ -28,6 +29,12 @@ def _sphere_values(sim, keywords):
         rmass = density * math.pi * radius ** 2
     else:
         rmass = density * 4.0 / 3.0 * math.pi * radius ** 3
+    type_mass = sim.type_mass[ptype] if ptype is not None else 0.0
+    if type_mass > 0:
+        if "density" in keywords:
+            raise ScriptError(f"type {ptype} has mass {type_mass:g} (mass command), which a density would "
+                              "replace: give the mass or the density, not both")
+        rmass = float(type_mass)
     return {"radius": radius, "rmass": rmass}
 
 
@@ -89,7 +96,7 @@ def create_particle(sim, args):
             dmin = number(rest[4], "overlap", low=0.0) if len(rest) == 5 else 0.0
         sim.particles.check_room(n)
         x = _random_no_overlap(sim, n, region, dmin, seed)
-    sim.particles.add(x, ptype, **_sphere_values(sim, keywords))
+    sim.particles.add(x, ptype, **_sphere_values(sim, keywords, ptype))
     sim.comm.distribute(sim.particles, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Created {len(x)} particles")
@@ -217,10 +224,26 @@ def _data_mass(sim, radius, density):
 
 @command("mass")
 def mass(sim, args):
+    """``mass TYPE VALUE``. With spheres (particle_style sphere), whose masses are per particle:
+    in the PDPS dialect the type's mass holds (PDPS's spheres have no mass of their own), for the
+    particles of those types now present and those create_particle makes later; in the LAMMPS and
+    LIGGGHTS dialects it is refused as LAMMPS refuses it (their masses come from diameter and
+    density). Never ignored."""
     count(args, 2, "mass TYPE VALUE")
     sim.require_box("mass")
     lo, hi = type_range(args[0], sim.ntypes)
-    sim.type_mass[lo:hi + 1] = number(args[1], "mass", low=0.0, strict_low=True)
+    value = number(args[1], "mass", low=0.0, strict_low=True)
+    if sim.particle_style == "sphere" and sim.dialect.name != "pdps":
+        raise ScriptError(f"cannot set a per-type mass for atom_style sphere (LAMMPS's rule): each particle's "
+                          f"mass comes from its diameter and density (set type {args[0]} density RHO)")
+    sim.type_mass[lo:hi + 1] = value
+    if sim.particle_style == "sphere":
+        p = sim.particles
+        rows = (p.type[: p.nlocal] >= lo) & (p.type[: p.nlocal] <= hi)
+        p.rmass[: p.nlocal][rows] = value
+        changed = int(sim.comm.sum(int(rows.sum())))
+        sim.output.message(f"mass: {changed} sphere(s) of type {args[0]} now have mass {value:g} (the type's mass "
+                           "holds for spheres in the PDPS dialect)")
 
 
 @command("group")

@@ -1,0 +1,59 @@
+"""A type's mass under particle_style sphere: honored in the PDPS dialect (PDPS's spheres have no
+mass of their own), refused with one line in the LAMMPS and LIGGGHTS dialects (LAMMPS's rule: the
+mass comes from diameter and density); never silently replaced."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation, observables
+
+PDPS = """
+particle_style sphere
+region box block 0 10 0 10 0 10
+create_box 2 box
+"""
+
+
+def test_pdps_type_mass_holds_for_spheres_created_before_and_after():
+    sim = Simulation(screen=False, log=None)
+    sim.command(PDPS + """
+create_particle 1 single 2 2 2 diameter 1.0
+create_particle 2 single 5 5 5 diameter 0.5 density 3.0
+mass 1 2.5
+create_particle 1 single 8 8 8 diameter 2.0
+""")
+    order = np.argsort(sim.tag)
+    rmass = sim.particles.rmass[: sim.nlocal][order]
+    assert rmass[0] == 2.5 and rmass[2] == 2.5
+    # type 2 has no mass line: its density gives the mass
+    assert rmass[1] == pytest.approx(3.0 * math.pi / 6.0 * 0.5 ** 3, rel=1e-15)
+    # the dynamics see it: 1/2 m v^2 of the type-1 spheres
+    sim.command("velocity all set 1.0 0 0\nrun 0")
+    ke = observables.kinetic_energy(sim, "all")
+    assert ke == pytest.approx(0.5 * (2.5 + 2.5 + rmass[1]) * 1.0, rel=1e-14)
+
+
+def test_pdps_mass_and_density_for_one_type_is_refused(pdps_cli):
+    done = pdps_cli(PDPS + "mass 1 2.5\ncreate_particle 1 single 2 2 2 density 3.0\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == ("ERROR: in.test:6: create_particle: type 1 has mass 2.5 (mass command), which "
+                                   "a density would replace: give the mass or the density, not both")
+
+
+@pytest.mark.parametrize("style, dialect", [("sphere", "LAMMPS"), ("granular", "LIGGGHTS")])
+def test_lammps_and_liggghts_refuse_a_type_mass_for_spheres(pdps_cli, style, dialect):
+    done = pdps_cli(f"units si\natom_style {style}\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\nmass 1 2.0\n")
+    assert done.returncode == 1
+    assert done.stdout.splitlines()[0].startswith(f"read as {dialect}")
+    assert done.stderr.strip() == ("ERROR: in.test:5: mass: cannot set a per-type mass for atom_style sphere "
+                                   "(LAMMPS's rule): each particle's mass comes from its diameter and density "
+                                   "(set type 1 density RHO)")
+
+
+def test_lammps_point_particles_keep_their_type_mass():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("region r block 0 5 0 5 0 5\ncreate_box 1 r\ncreate_atoms 1 single 1 1 1\nmass 1 4.0\n"
+                "velocity all set 1 0 0\nrun 0")
+    assert observables.kinetic_energy(sim, "all") == pytest.approx(2.0, rel=1e-15)
