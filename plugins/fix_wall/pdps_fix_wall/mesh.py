@@ -395,6 +395,95 @@ def rigid_velocity(point, velocity, spin, pivot, out):
 
 
 @njit(cache=True)
+def triangle_contacts(xi, yi, zi, r, start, end, candidates, vertices, triangles, face_normal,
+                      velocity, spin, pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
+                      distance, normal, key, touch, wall_velocity):
+    """The contacts of a sphere (centre xi yi zi, radius r) with its candidate triangles
+    ``candidates[start:end]`` (module docstring: one per local closest point) into ``distance``,
+    ``normal``, ``key`` (the triangle), ``touch`` (the contact point) and ``wall_velocity`` (the
+    wall's velocity there); returns how many. ``tri`` .. ``probe``: scratch of the caller."""
+    tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
+    nc = 0
+    for m in range(start, end):
+        t = candidates[m]
+        inside = closest_on_triangle(xi, yi, zi, vertices[triangles[t, 0]],
+                                     vertices[triangles[t, 1]], vertices[triangles[t, 2]],
+                                     point[nc])
+        g = math.sqrt((xi - point[nc, 0]) ** 2 + (yi - point[nc, 1]) ** 2
+                      + (zi - point[nc, 2]) ** 2)
+        if g < r:
+            tri[nc] = t
+            gap[nc] = g
+            on_face[nc] = inside
+            keep[nc] = True
+            nc += 1
+    # an edge or corner point lying on another touched triangle whose closest point is
+    # elsewhere is not a local closest point; equal points are one contact
+    for a in range(nc):
+        if on_face[a]:
+            continue
+        for b in range(nc):
+            if b == a:
+                continue
+            if separation(point, a, point, b) <= tolerance:
+                continue
+            t = tri[b]
+            closest_on_triangle(point[a, 0], point[a, 1], point[a, 2],
+                                vertices[triangles[t, 0]], vertices[triangles[t, 1]],
+                                vertices[triangles[t, 2]], probe[0])
+            if separation(probe, 0, point, a) <= tolerance:
+                keep[a] = False
+                break
+    for a in range(nc):
+        if not keep[a]:
+            continue
+        for b in range(a):
+            if keep[b] and separation(point, a, point, b) <= tolerance:
+                keep[a] = False
+                break
+    count = 0
+    for a in range(nc):
+        if not keep[a]:
+            continue
+        t = tri[a]
+        distance[count] = gap[a]
+        key[count] = t
+        for d in range(3):
+            touch[count, d] = point[a, d]
+        if gap[a] > tolerance:
+            normal[count, 0] = (xi - point[a, 0]) / gap[a]
+            normal[count, 1] = (yi - point[a, 1]) / gap[a]
+            normal[count, 2] = (zi - point[a, 2]) / gap[a]
+        else:
+            for d in range(3):
+                normal[count, d] = face_normal[t, d]
+        if conveyor:
+            belt_on_face(belt, face_normal[t], wall_velocity[count])
+        else:
+            rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[count])
+        count += 1
+    return count
+
+
+@njit(cache=True)
+def tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque):
+    """Add the forces on the wall (minus each contact's force on the particle) to their triangles,
+    and their torque about ``reference``."""
+    for c in range(count):
+        t = key[c]
+        fx, fy, fz = -contact_force[c, 0], -contact_force[c, 1], -contact_force[c, 2]
+        face_force[t, 0] += fx
+        face_force[t, 1] += fy
+        face_force[t, 2] += fz
+        rx = touch[c, 0] - reference[0]
+        ry = touch[c, 1] - reference[1]
+        rz = touch[c, 2] - reference[2]
+        mesh_torque[0] += ry * fz - rz * fy
+        mesh_torque[1] += rz * fx - rx * fz
+        mesh_torque[2] += rx * fy - ry * fx
+
+
+@njit(cache=True)
 def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
                      mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update,
                      velocity, spin, pivot, belt, conveyor, tally, reference, face_force,
@@ -425,67 +514,10 @@ def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles,
     for k in range(len(chosen)):
         i = chosen[k]
         r = radius[i]
-        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
-        tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
-        nc = 0
-        for m in range(offsets[k], offsets[k + 1]):
-            t = candidates[m]
-            inside = closest_on_triangle(xi, yi, zi, vertices[triangles[t, 0]],
-                                         vertices[triangles[t, 1]], vertices[triangles[t, 2]],
-                                         point[nc])
-            g = math.sqrt((xi - point[nc, 0]) ** 2 + (yi - point[nc, 1]) ** 2
-                          + (zi - point[nc, 2]) ** 2)
-            if g < r:
-                tri[nc] = t
-                gap[nc] = g
-                on_face[nc] = inside
-                keep[nc] = True
-                nc += 1
-        # an edge or corner point lying on another touched triangle whose closest point is
-        # elsewhere is not a local closest point; equal points are one contact
-        for a in range(nc):
-            if on_face[a]:
-                continue
-            for b in range(nc):
-                if b == a:
-                    continue
-                if separation(point, a, point, b) <= tolerance:
-                    continue
-                t = tri[b]
-                closest_on_triangle(point[a, 0], point[a, 1], point[a, 2],
-                                    vertices[triangles[t, 0]], vertices[triangles[t, 1]],
-                                    vertices[triangles[t, 2]], probe[0])
-                if separation(probe, 0, point, a) <= tolerance:
-                    keep[a] = False
-                    break
-        for a in range(nc):
-            if not keep[a]:
-                continue
-            for b in range(a):
-                if keep[b] and separation(point, a, point, b) <= tolerance:
-                    keep[a] = False
-                    break
-        count = 0
-        for a in range(nc):
-            if not keep[a]:
-                continue
-            t = tri[a]
-            distance[count] = gap[a]
-            key[count] = t
-            for d in range(3):
-                touch[count, d] = point[a, d]
-            if gap[a] > tolerance:
-                normal[count, 0] = (xi - point[a, 0]) / gap[a]
-                normal[count, 1] = (yi - point[a, 1]) / gap[a]
-                normal[count, 2] = (zi - point[a, 2]) / gap[a]
-            else:
-                for d in range(3):
-                    normal[count, d] = face_normal[t, d]
-            if conveyor:
-                belt_on_face(belt, face_normal[t], wall_velocity[count])
-            else:
-                rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[count])
-            count += 1
+        count = triangle_contacts(x[i, 0], x[i, 1], x[i, 2], r, offsets[k], offsets[k + 1],
+                                  candidates, vertices, triangles, face_normal, velocity, spin,
+                                  pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
+                                  distance, normal, key, touch, wall_velocity)
         law = laws[ptype[i]]
         ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, r, mass[i], v,
                                     omega, f, torque, rotation, partner, values, model, law[0],
@@ -495,18 +527,7 @@ def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles,
         if not ok:
             return i
         if tally:
-            for c in range(count):
-                t = key[c]
-                fx, fy, fz = -contact_force[c, 0], -contact_force[c, 1], -contact_force[c, 2]
-                face_force[t, 0] += fx
-                face_force[t, 1] += fy
-                face_force[t, 2] += fz
-                rx = touch[c, 0] - reference[0]
-                ry = touch[c, 1] - reference[1]
-                rz = touch[c, 2] - reference[2]
-                mesh_torque[0] += ry * fz - rz * fy
-                mesh_torque[1] += rz * fx - rx * fz
-                mesh_torque[2] += rx * fy - ry * fx
+            tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque)
     return -1
 
 
@@ -520,10 +541,10 @@ class MeshContacts:
     motion now: the wall velocity at p is velocity + spin x (p - pivot)), ``belt`` and ``conveyor``
     (a conveyor's surface velocity): fix wall/mesh itself, or a fix mesh/surface."""
 
-    def __init__(self, sim, surface, history_name, group):
+    def __init__(self, sim, surface, history_name, group, width=HISTORY_WIDTH):
         self.surface = surface
         self.group = group
-        self.history = ContactHistory(sim, history_name, width=HISTORY_WIDTH)
+        self.history = ContactHistory(sim, history_name, width=width)
         self.stale = True
         self.builds = 0
         self.chosen = np.zeros(0, dtype=np.int64)
@@ -584,18 +605,24 @@ class MeshContacts:
         self.stale = False
         self.builds += 1
 
+    def candidates_now(self, sim):
+        """(particles visited, CSR offsets, candidate triangles), re-listed when needed."""
+        p = sim.particles
+        if self.stale:
+            self.chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+            self.nlocal_built = p.nlocal
+            self.tags_built = p.tag[self.chosen].copy()
+        self._rebuild_if_needed(sim, self.chosen, p.radius)
+        return self.near, self.offsets, self.candidates
+
     def forces(self, sim, laws, update, tally=None):
         """Wall forces on the group's particles with ``laws`` = (model, per-type law table);
         ``tally``: None, or (reference point, face_force (m x 3), mesh_torque (3,)) to which the
         forces on the wall are added."""
         p = sim.particles
         mesh = self.surface
-        if self.stale:
-            self.chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
-            self.nlocal_built = p.nlocal
-            self.tags_built = p.tag[self.chosen].copy()
+        self.candidates_now(sim)
         radius = p.radius
-        self._rebuild_if_needed(sim, self.chosen, radius)
         rotation = p.has("omega") and p.has("torque")
         omega = p.omega if rotation else p.v
         torque = p.torque if rotation else p.f

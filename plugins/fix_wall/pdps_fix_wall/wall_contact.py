@@ -131,19 +131,16 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
 
 
 @njit(cache=True)
-def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
-                           v, omega, f, torque, rotation, partner, values,
-                           model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
-                           used, slots, n, rel, force, spring, contact_force):
-    """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
-    surface, normal from surface to centre, element key, wall velocity at the contact point);
-    each contact's force on i into ``contact_force[c]`` (zero for contacts that do not touch).
-    Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
-    taken over, closed); without it (setup) forces use the stored springs and change nothing.
-    ``n``, ``rel``, ``force``, ``spring``: scratch vectors (3 each) of the caller.
-    Returns False when particle i has no free history slot."""
-    width = HISTORY_WIDTH
+def wall_slots(i, start, end, distance, normal, key, reach, partner, values, normal_at, update,
+               used, slots):
+    """The history slot of each of particle i's wall contacts ``start..end`` into
+    ``slots[c - start]`` (-1: none, for contacts at distance >= reach). A contact keeps the slot of
+    its wall element (``key``); with ``update`` a new one continues a contact that just ended with
+    nearly the same normal (stored at ``normal_at`` in each slot's values), the slots of contacts
+    that ended are freed, and the remaining new contacts open zeroed slots. Returns False when
+    particle i has no free slot."""
     capacity = partner.shape[1]
+    width = values.shape[1] // capacity
     for s in range(capacity):
         used[s] = False
     # contacts already known keep their slot
@@ -157,40 +154,60 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
             slots[c - start] = s
             if s >= 0:
                 used[s] = True
-    if update:
-        # a new contact continues one that just ended with nearly the same normal
-        for c in range(start, end):
-            if distance[c] < reach and slots[c - start] < 0:
-                best, best_cos = -1, TRANSFER_COS
-                for k in range(capacity):
-                    if partner[i, k] >= 0 and not used[k]:
-                        cos = (normal[c, 0] * values[i, k * width + 3]
-                               + normal[c, 1] * values[i, k * width + 4]
-                               + normal[c, 2] * values[i, k * width + 5])
-                        if cos > best_cos:
-                            best, best_cos = k, cos
-                if best >= 0:
-                    partner[i, best] = key[c]
-                    used[best] = True
-                    slots[c - start] = best
-        # contacts that ended free their slot, then the remaining new ones open one
-        for k in range(capacity):
-            if partner[i, k] >= 0 and not used[k]:
-                partner[i, k] = -1
-        for c in range(start, end):
-            if distance[c] < reach and slots[c - start] < 0:
-                s = -1
-                for k in range(capacity):
-                    if partner[i, k] < 0:
-                        s = k
-                        break
-                if s < 0:
-                    return False
-                partner[i, s] = key[c]
-                for h in range(width):
-                    values[i, s * width + h] = 0.0
-                used[s] = True
-                slots[c - start] = s
+    if not update:
+        return True
+    # a new contact continues one that just ended with nearly the same normal
+    for c in range(start, end):
+        if distance[c] < reach and slots[c - start] < 0:
+            best, best_cos = -1, TRANSFER_COS
+            for k in range(capacity):
+                if partner[i, k] >= 0 and not used[k]:
+                    at = k * width + normal_at
+                    cos = (normal[c, 0] * values[i, at] + normal[c, 1] * values[i, at + 1]
+                           + normal[c, 2] * values[i, at + 2])
+                    if cos > best_cos:
+                        best, best_cos = k, cos
+            if best >= 0:
+                partner[i, best] = key[c]
+                used[best] = True
+                slots[c - start] = best
+    # contacts that ended free their slot, then the remaining new ones open one
+    for k in range(capacity):
+        if partner[i, k] >= 0 and not used[k]:
+            partner[i, k] = -1
+    for c in range(start, end):
+        if distance[c] < reach and slots[c - start] < 0:
+            s = -1
+            for k in range(capacity):
+                if partner[i, k] < 0:
+                    s = k
+                    break
+            if s < 0:
+                return False
+            partner[i, s] = key[c]
+            for h in range(width):
+                values[i, s * width + h] = 0.0
+            used[s] = True
+            slots[c - start] = s
+    return True
+
+
+@njit(cache=True)
+def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
+                           v, omega, f, torque, rotation, partner, values,
+                           model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
+                           used, slots, n, rel, force, spring, contact_force):
+    """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
+    surface, normal from surface to centre, element key, wall velocity at the contact point);
+    each contact's force on i into ``contact_force[c]`` (zero for contacts that do not touch).
+    Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
+    taken over, closed: ``wall_slots``); without it (setup) forces use the stored springs and
+    change nothing. ``n``, ``rel``, ``force``, ``spring``: scratch vectors (3 each) of the caller.
+    Returns False when particle i has no free history slot."""
+    width = HISTORY_WIDTH
+    if not wall_slots(i, start, end, distance, normal, key, reach, partner, values, 3, update, used,
+                      slots):
+        return False
     for c in range(start, end):
         overlap = reach - distance[c]
         for d in range(3):

@@ -70,6 +70,9 @@ with gamma_n = 0 the tangential damping is m_i gamma_t (LAMMPS's fix computes ga
 gives NaN); a particle whose centre lies exactly on the wall feels no force (no normal). The
 ``region`` wall style and ``contacts``/``temperature`` keywords of LAMMPS are not supported.
 
+LIGGGHTS's spelling, ``fix ID GROUP wall/gran model ...`` (primitive and mesh walls with the
+material of fix property/global), is the style of pdps_fix_wall.wall_gran_model.
+
 Example (the benchmark kit's in.gran_box)::
 
     fix w all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 40.0
@@ -202,6 +205,13 @@ class FixWallGran(Fix):
 
     class Args(StyleArgs):
         words: list[str] = []
+
+    def __new__(cls, sim, id, group, args):
+        # LIGGGHTS's spelling (``wall/gran model ...``) is a style of its own
+        if list(args.words)[:1] == ["model"]:
+            from .wall_gran_model import FixWallGranModel
+            return FixWallGranModel(sim, id, group, args)
+        return super().__new__(cls)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

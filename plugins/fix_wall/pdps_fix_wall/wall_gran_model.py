@@ -1,0 +1,455 @@
+r"""Fix ``wall/gran model ...``: LIGGGHTS's granular walls, primitive (planes, cylinders) or meshes
+(``fix mesh/surface``), with LIGGGHTS's contact models and the material of ``fix property/global``
+(LIGGGHTS's fix wall/gran; the LAMMPS spelling ``fix wall/gran hooke|hooke/history|hertz/history ...``
+is pdps_fix_wall.wall_gran).
+
+Contact law: ``pdps_granular_contact.liggghts`` with the wall as body j (``pdps doc pair gran``):
+:math:`R^* = R_i`, :math:`m^* = m_i`, no spin of the wall; the material of the type pair (particle's
+type, the wall's ``type``) from ``fix property/global`` (youngsModulus, poissonsRatio,
+coefficientRestitution, coefficientFriction; coefficientRollingFriction,
+coefficientRollingViscousDamping, cohesionEnergyDensity, characteristicVelocity as the models
+need them). A particle i at distance :math:`d < R_i` from the wall (overlap :math:`\delta = R_i -
+d`, normal :math:`\mathbf{n}` from the wall to its centre, contact point p) with the wall's velocity
+:math:`\mathbf{v}_w(\mathbf{p})` has :math:`v_n = (\mathbf{v}_i - \mathbf{v}_w)\cdot\mathbf{n}`, the
+sliding velocity :math:`\mathbf{v}_{tr} = \mathbf{v}_t - (R_i - \delta/2)\,\boldsymbol\omega_i\times
+\mathbf{n}` and gets the force :math:`\mathbf{F}` of the law, the torque :math:`-(R_i -
+\delta/2)\,\mathbf{n}\times\mathbf{F}_t - \mathbf{M}_r` (rolling friction :math:`\mathbf{M}_r`).
+Each contact keeps its tangential spring and rolling torque per particle and wall element (as
+fix wall/mesh keeps them, handed on from one triangle to the next).
+
+Walls:
+
+- ``primitive type N xplane|yplane|zplane C``: the plane x (y, z) = C, touched from either side.
+- ``primitive type N xcylinder R C1 C2``: the cylinder of radius R about the axis along x through
+  (y, z) = (C1, C2), touched from inside or outside; ``ycylinder R C1 C2`` has its axis through
+  (z, x) = (C1, C2) and ``zcylinder R C1 C2`` through (x, y) = (C1, C2) (LIGGGHTS's order: the two
+  coordinates that follow the axis cyclically). Distances.
+- ``mesh n_meshes N meshes ID1 .. IDN``: the surfaces of N ``fix mesh/surface`` (or
+  ``mesh/surface/stress``, which then sum the forces on them), each with its own ``type``; moved
+  by ``fix move/mesh``, the wall velocity at each contact from their motion.
+
+``type N`` (primitive) is the wall's material type (1..number of types).
+
+Moving primitive walls: ``shear DIM V``: a plane slides along DIM (x, y or z, not its own normal)
+with velocity V; a cylinder slides along its axis when DIM is the axis, else turns about its axis
+with angular velocity V (rad/time: LIGGGHTS multiplies the axis by V; the wall velocity is taken at
+the contact point, :math:`V\hat{\mathbf{a}}\times\boldsymbol\rho` with :math:`\boldsymbol\rho` from
+the axis to p, where LIGGGHTS takes it at the particle's centre). Only the friction feels it.
+
+Keywords after ``model``: ``tangential history|no_history`` (required), ``rolling_friction
+off|cdt|epsd|epsd2``, ``cohesion off|sjkr|sjkr2``, ``tangential_damping on|off``, ``limitForce
+on|off`` (as pair gran); ``store_force no`` (yes is not supported).
+
+Cost: the particles within their radius plus the skin of a primitive wall are listed at each
+neighbor list rebuild and only they are visited; mesh walls keep fix wall/mesh's binned candidate
+triangles, re-listed only after a particle or vertex has moved half the skin.
+
+Syntax::
+
+    fix ID GROUP wall/gran model hertz|hooke tangential history|no_history
+        [rolling_friction ...] [cohesion ...] [tangential_damping on|off] [limitForce on|off]
+        primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2  [shear DIM V]
+      | mesh n_meshes N meshes ID1 ... IDN
+        [store_force no]
+
+Examples::
+
+    fix m1 all property/global youngsModulus peratomtype 5.e6
+    fix m2 all property/global poissonsRatio peratomtype 0.45
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
+    fix floor all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+    fix drum all wall/gran model hertz tangential history primitive type 1 zcylinder 0.05 0 0
+    fix cad all mesh/surface/stress file hopper.stl type 1
+    fix walls all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs
+from pdps_granular_contact import liggghts
+
+from .mesh import MeshContacts, mesh_fix, tally_wall_forces, triangle_contacts
+from .wall_contact import forget_far, read_numbers, wall_slots
+
+XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
+PRIMITIVES = {"xplane": (XPLANE, 1), "yplane": (YPLANE, 1), "zplane": (ZPLANE, 1),
+              "xcylinder": (XCYLINDER, 3), "ycylinder": (YCYLINDER, 3), "zcylinder": (ZCYLINDER, 3)}
+AXES = {"x": 0, "y": 1, "z": 2}
+# a contact's values: the law's history, then its last normal (for handing it on between faces)
+WIDTH = liggghts.HISTORY_WIDTH + 3
+NORMAL_AT = liggghts.HISTORY_WIDTH
+MODEL_WORDS = {"model": liggghts.NORMAL_MODELS, "tangential": liggghts.TANGENTIAL_MODELS,
+               "rolling_friction": liggghts.ROLLING_MODELS, "cohesion": liggghts.COHESION_MODELS,
+               "tangential_damping": {"on": 1, "off": 0}, "limitForce": {"on": 1, "off": 0}}
+
+
+@njit(cache=True)
+def liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f, torque,
+                           radius, rmass, ptype, wall_type, models, table, charvel, nktv2p, dt,
+                           update, partner, values, used, slots, hist, force, tangential, roll,
+                           n, vtr, wr, contact_force):
+    """Force and torque on particle i from its wall contacts 0..count (module docstring), each
+    contact's force into ``contact_force``. Returns False when i has no free history slot."""
+    r_i = radius[i]
+    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, NORMAL_AT, update,
+                      used, slots):
+        return False
+    width = values.shape[1] // partner.shape[1]
+    for c in range(count):
+        for d in range(3):
+            contact_force[c, d] = 0.0
+        if distance[c] >= r_i:
+            continue
+        overlap = r_i - distance[c]
+        arm = r_i - 0.5 * overlap
+        for d in range(3):
+            n[d] = normal[c, d]
+        vr0 = v[i, 0] - wall_velocity[c, 0]
+        vr1 = v[i, 1] - wall_velocity[c, 1]
+        vr2 = v[i, 2] - wall_velocity[c, 2]
+        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
+        w0, w1, w2 = arm * omega[i, 0], arm * omega[i, 1], arm * omega[i, 2]
+        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+        for d in range(3):
+            wr[d] = omega[i, d]
+        s = slots[c]
+        for h in range(liggghts.HISTORY_WIDTH):
+            hist[h] = values[i, s * width + h] if s >= 0 else 0.0
+        liggghts.liggghts_contact(models, True, table, ptype[i], wall_type, distance[c], r_i, 0.0,
+                                  rmass[i], 0.0, rmass[i], n, v_n, vtr, wr, charvel, nktv2p, dt,
+                                  update, hist, force, tangential, roll)
+        if s >= 0:
+            for h in range(liggghts.HISTORY_WIDTH):
+                values[i, s * width + h] = hist[h]
+            if update:
+                for d in range(3):
+                    values[i, s * width + NORMAL_AT + d] = n[d]
+        for d in range(3):
+            f[i, d] += force[d]
+            contact_force[c, d] = force[d]
+        torque[i, 0] -= arm * (n[1] * tangential[2] - n[2] * tangential[1]) + roll[0]
+        torque[i, 1] -= arm * (n[2] * tangential[0] - n[0] * tangential[2]) + roll[1]
+        torque[i, 2] -= arm * (n[0] * tangential[1] - n[1] * tangential[0]) + roll[2]
+    return True
+
+
+@njit(cache=True)
+def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radius, rmass, ptype,
+                         vertices, triangles, face_normal, velocity, spin, pivot, belt, conveyor,
+                         wall_type, models, table, charvel, nktv2p, dt, update, partner, values,
+                         tally, reference, face_force, mesh_torque):
+    """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form).
+    Returns -1, or the index of a particle whose contact history overflowed."""
+    most = 1
+    for k in range(len(near)):
+        most = max(most, offsets[k + 1] - offsets[k])
+    tri = np.empty(most, dtype=np.int64)
+    point = np.empty((most, 3))
+    gap = np.empty(most)
+    on_face = np.empty(most, dtype=np.bool_)
+    keep = np.empty(most, dtype=np.bool_)
+    distance = np.empty(most)
+    normal = np.empty((most, 3))
+    key = np.empty(most, dtype=np.int64)
+    touch = np.empty((most, 3))
+    wall_velocity = np.empty((most, 3))
+    contact_force = np.empty((most, 3))
+    used = np.empty(partner.shape[1], dtype=np.bool_)
+    slots = np.empty(most, dtype=np.int64)
+    probe = np.empty((1, 3))
+    hist = np.empty(liggghts.HISTORY_WIDTH)
+    force, tangential, roll = np.empty(3), np.empty(3), np.empty(3)
+    n, vtr, wr = np.empty(3), np.empty(3), np.empty(3)
+    for k in range(len(near)):
+        i = near[k]
+        count = triangle_contacts(x[i, 0], x[i, 1], x[i, 2], radius[i], offsets[k], offsets[k + 1],
+                                  candidates, vertices, triangles, face_normal, velocity, spin,
+                                  pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
+                                  distance, normal, key, touch, wall_velocity)
+        if not liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f,
+                                      torque, radius, rmass, ptype, wall_type, models, table,
+                                      charvel, nktv2p, dt, update, partner, values, used, slots,
+                                      hist, force, tangential, roll, n, vtr, wr, contact_force):
+            return i
+        if tally:
+            tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque)
+    return -1
+
+
+@njit(cache=True)
+def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance, normal,
+                      wall_velocity):
+    """Particle i's contact with the primitive wall into row 0 of ``distance``, ``normal`` and
+    ``wall_velocity``; returns False when its centre lies on the wall (no normal)."""
+    for d in range(3):
+        wall_velocity[0, d] = shear[d]
+        normal[0, d] = 0.0
+    if wallstyle <= ZPLANE:
+        gap = x[i, wallstyle] - position
+        if gap == 0.0:
+            return False
+        distance[0] = abs(gap)
+        normal[0, wallstyle] = 1.0 if gap > 0.0 else -1.0
+        return True
+    axis = wallstyle - XCYLINDER
+    a, b = (axis + 1) % 3, (axis + 2) % 3
+    da = x[i, a] - cylinder[1]
+    db = x[i, b] - cylinder[2]
+    across = math.sqrt(da * da + db * db)
+    if across == 0.0:
+        return False
+    radius = cylinder[0]
+    outward = 1.0 if across > radius else -1.0
+    distance[0] = abs(across - radius)
+    normal[0, a] = outward * da / across
+    normal[0, b] = outward * db / across
+    if spin != 0.0:
+        # turning about the axis: spin e_axis x rho, rho from the axis to the contact point
+        ra, rb = radius * da / across, radius * db / across
+        wall_velocity[0, a] = -spin * rb
+        wall_velocity[0, b] = spin * ra
+        wall_velocity[0, axis] = 0.0
+    return True
+
+
+@njit(cache=True)
+def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, rmass, ptype,
+                              wallstyle, position, cylinder, shear, spin, wall_type, models, table,
+                              charvel, nktv2p, dt, update, partner, values):
+    """The primitive wall's forces on the particles ``near[:count_near]``. Returns -1, or the index
+    of a particle whose contact history overflowed."""
+    distance = np.empty(1)
+    normal = np.empty((1, 3))
+    key = np.zeros(1, dtype=np.int64)
+    wall_velocity = np.empty((1, 3))
+    contact_force = np.empty((1, 3))
+    used = np.empty(partner.shape[1], dtype=np.bool_)
+    slots = np.empty(1, dtype=np.int64)
+    hist = np.empty(liggghts.HISTORY_WIDTH)
+    force, tangential, roll = np.empty(3), np.empty(3), np.empty(3)
+    n, vtr, wr = np.empty(3), np.empty(3), np.empty(3)
+    for k in range(count_near):
+        i = near[k]
+        count = 1 if primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance,
+                                       normal, wall_velocity) else 0
+        if not liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f,
+                                      torque, radius, rmass, ptype, wall_type, models, table,
+                                      charvel, nktv2p, dt, update, partner, values, used, slots,
+                                      hist, force, tangential, roll, n, vtr, wr, contact_force):
+            return i
+    return -1
+
+
+@njit(cache=True)
+def near_primitive(x, radius, chosen, wallstyle, position, cylinder, margin, flags):
+    """Flags the chosen particles within their radius plus ``margin`` of the primitive wall."""
+    for k in range(len(chosen)):
+        i = chosen[k]
+        if wallstyle <= ZPLANE:
+            gap = abs(x[i, wallstyle] - position)
+        else:
+            axis = wallstyle - XCYLINDER
+            a, b = (axis + 1) % 3, (axis + 2) % 3
+            across = math.sqrt((x[i, a] - cylinder[1]) ** 2 + (x[i, b] - cylinder[2]) ** 2)
+            gap = abs(across - cylinder[0])
+        flags[k] = gap < radius[i] + margin
+
+
+class FixWallGranModel(Fix):
+    name = "wall/gran"
+    usage = ("fix ID GROUP wall/gran model hertz|hooke tangential history|no_history [rolling_friction "
+             "off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] "
+             "primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 [shear DIM V] | "
+             "mesh n_meshes N meshes ID1 ... IDN [store_force no]")
+
+    class Args(StyleArgs):
+        words: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        if sim.particle_style != "sphere":
+            raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
+                              "and rotation)")
+        words = list(args.words)
+        rest = self._read_models(words)
+        if not rest or rest[0] not in ("primitive", "mesh"):
+            raise ScriptError(f"expected primitive or mesh after the model keywords (got "
+                              f"{rest[0] if rest else 'nothing'}); usage: {self.usage}")
+        self.meshes, self.primitive = [], None
+        if rest[0] == "primitive":
+            rest = self._read_primitive(sim, rest[1:])
+        else:
+            rest = self._read_meshes(sim, rest[1:])
+        self._read_options(rest)
+        self.table, self.charvel = None, 0.0
+        self.history = ContactHistory(sim, f"wall_{id}", width=WIDTH) if self.primitive is not None else None
+        self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=WIDTH)
+                              for mesh in self.meshes]
+        self._near = np.zeros(0, dtype=np.int64)
+        self._count = 0
+
+    # ---- script words ----
+    def _read_models(self, words):
+        given, k = {}, 0
+        while k < len(words) and words[k] in MODEL_WORDS:
+            word = words[k]
+            if k + 1 >= len(words):
+                raise ScriptError(f"keyword {word} needs a value ({'|'.join(MODEL_WORDS[word])})")
+            value = words[k + 1]
+            if value not in MODEL_WORDS[word]:
+                raise ScriptError(f"{word} must be one of {', '.join(MODEL_WORDS[word])} (got {value})")
+            if word in given:
+                raise ScriptError(f"keyword {word} is given twice")
+            given[word] = MODEL_WORDS[word][value]
+            k += 2
+        for required in ("model", "tangential"):
+            if required not in given:
+                raise ScriptError(f"missing keyword {required}; usage: {self.usage}")
+        self.models = np.array([given["model"], given["tangential"], given.get("rolling_friction", 0),
+                                given.get("cohesion", 0), given.get("tangential_damping", 1),
+                                given.get("limitForce", 0), self.sim.dimension], dtype=np.int64)
+        return words[k:]
+
+    def _read_primitive(self, sim, words):
+        if len(words) < 3 or words[0] != "type":
+            raise ScriptError(f"primitive takes type N and a wall style; usage: {self.usage}")
+        self.wall_type = self._read_type(sim, words[1])
+        style = words[2]
+        if style not in PRIMITIVES:
+            raise ScriptError(f"primitive wall style must be one of {', '.join(PRIMITIVES)} (got {style})")
+        self.wallstyle, count = PRIMITIVES[style]
+        values = words[3:3 + count]
+        if len(values) < count:
+            raise ScriptError(f"{style} takes {count} value(s) (got {' '.join(values) or 'none'})")
+        numbers = read_numbers(values, f"{style} argument")
+        self.position = numbers[0] if count == 1 else 0.0
+        self.cylinder = np.array(numbers if count == 3 else [0.0, 0.0, 0.0])
+        if count == 3 and not self.cylinder[0] > 0.0:
+            raise ScriptError(f"{style} radius must be > 0 (got {values[0]})")
+        self.primitive = style
+        return words[3 + count:]
+
+    def _read_type(self, sim, word):
+        try:
+            kind = int(word)
+        except ValueError:
+            raise ScriptError(f"type must be a whole number (got {word})") from None
+        if not 1 <= kind <= sim.ntypes:
+            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {word})")
+        return kind
+
+    def _read_meshes(self, sim, words):
+        if len(words) < 2 or words[0] != "n_meshes":
+            raise ScriptError(f"mesh takes n_meshes N meshes ID1 ... IDN; usage: {self.usage}")
+        try:
+            count = int(words[1])
+        except ValueError:
+            raise ScriptError(f"n_meshes must be a whole number (got {words[1]})") from None
+        if count < 1:
+            raise ScriptError(f"n_meshes must be > 0 (got {words[1]})")
+        if len(words) < 3 or words[2] != "meshes":
+            raise ScriptError(f"expected meshes ID1 ... ID{count} after n_meshes {count}")
+        ids = words[3:3 + count]
+        if len(ids) < count:
+            raise ScriptError(f"meshes needs {count} mesh ID(s) (got {' '.join(ids) or 'none'})")
+        self.meshes = [mesh_fix(sim, ident) for ident in ids]
+        if len(set(ids)) != len(ids):
+            raise ScriptError(f"a mesh is named twice in meshes {' '.join(ids)}")
+        return words[3 + count:]
+
+    def _read_options(self, words):
+        self.shear = np.zeros(3)
+        self.spin = 0.0
+        k = 0
+        while k < len(words):
+            word = words[k]
+            if word == "shear":
+                if self.primitive is None:
+                    raise ScriptError("shear moves primitive walls; move meshes with fix move/mesh")
+                if len(words) < k + 3:
+                    raise ScriptError(f"shear takes DIM V (got {' '.join(words[k + 1:]) or 'nothing'})")
+                dim, speed = words[k + 1], words[k + 2]
+                if dim not in AXES:
+                    raise ScriptError(f"shear dimension must be x, y or z (got {dim})")
+                (value,) = read_numbers([speed], "shear velocity")
+                axis = AXES[dim]
+                if self.wallstyle <= ZPLANE:
+                    if axis == self.wallstyle:
+                        raise ScriptError(f"shear {dim} would move a {self.primitive} wall along its own normal; "
+                                          "shear along a direction in the plane")
+                    self.shear[axis] = value
+                elif axis == self.wallstyle - XCYLINDER:
+                    self.shear[axis] = value
+                else:
+                    self.spin = value
+                k += 3
+            elif word == "store_force":
+                if k + 1 >= len(words) or words[k + 1] not in ("yes", "no"):
+                    raise ScriptError("store_force must be yes or no")
+                if words[k + 1] == "yes":
+                    raise ScriptError("store_force yes is not supported (the forces on a mesh: "
+                                      "fix mesh/surface/stress)")
+                k += 2
+            else:
+                raise ScriptError(f"unknown keyword {word}; usage: {self.usage}")
+
+    # ---- hooks ----
+    def setup(self, sim):
+        ntypes = sim.ntypes
+        self.models[6] = sim.dimension
+        self.table, self.charvel = liggghts.material_table(sim, self.models, ntypes, f"fix {self.id} (wall/gran)")
+        for contacts in self.mesh_contacts:
+            contacts.setup()
+        if self.primitive is not None:
+            self.pre_neighbor(sim)
+        self._forces(sim, update=False)
+
+    def pre_neighbor(self, sim):
+        if self.primitive is None:
+            for contacts in self.mesh_contacts:
+                contacts.pre_neighbor(sim)
+            return
+        p = sim.particles
+        chosen = np.flatnonzero(sim.groups.select(sim, self.group)).astype(np.int64)
+        flags = np.zeros(len(chosen), dtype=np.bool_)
+        near_primitive(p.x, p.radius, chosen, self.wallstyle, self.position, self.cylinder, sim.neighbor.skin,
+                       flags)
+        forget_far(self.history.partner, chosen, flags)
+        self._near = chosen[flags]
+        self._count = len(self._near)
+
+    def post_force(self, sim):
+        self._forces(sim, update=True)
+
+    def _forces(self, sim, update):
+        p = sim.particles
+        common = (p.x, p.v, p.omega, p.f, p.torque, p.radius, p.rmass, p.type)
+        law = (self.models, self.table, self.charvel, sim.units.nktv2p, sim.dt, update)
+        if self.primitive is not None:
+            history = self.history
+            bad = liggghts_primitive_forces(self._near, self._count, *common, self.wallstyle, self.position,
+                                            self.cylinder, self.shear, self.spin, self.wall_type, *law,
+                                            history.partner, history.values)
+            if bad >= 0:
+                history.overflowed(p.tag[bad])
+            return
+        for mesh, contacts in zip(self.meshes, self.mesh_contacts):
+            near, offsets, triangles = contacts.candidates_now(sim)
+            tally = mesh.tally()
+            reference, face_force, torque = tally if tally is not None else NO_TALLY
+            history = contacts.history
+            bad = liggghts_mesh_forces(near, offsets, triangles, *common, mesh.vertices, mesh.triangles,
+                                       mesh.face_normal, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
+                                       mesh.conveyor, mesh.material_type, *law, history.partner, history.values,
+                                       tally is not None, reference, face_force, torque)
+            if bad >= 0:
+                history.overflowed(p.tag[bad])
+
+
+NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3))

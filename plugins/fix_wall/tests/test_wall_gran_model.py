@@ -1,0 +1,177 @@
+"""fix wall/gran model ... (LIGGGHTS's spelling): a sphere bouncing head-on off each primitive wall
+(planes from either side, cylinders from inside and outside) and off a mesh plane leaves at e times
+its speed, e the coefficientRestitution of the type pair (particle, wall); the hooke model's contact
+time; sliding walls (shear) and turning cylinders drag a sphere by friction; exact error lines.
+
+Units lj; spheres of diameter 1, density 1 (m = pi/6). Two types: particles of type 1, walls of type
+2 with another material, so the pair (1, 2) is what the wall must use.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError
+from pdps_core.testing import make_box
+
+MASS = math.pi / 6.0
+E12 = 0.7
+MATERIAL = f"""
+    fix m1 all property/global youngsModulus peratomtype 1.0e5 3.0e5
+    fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
+    fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 {E12} {E12} 0.5
+    fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.4 0.4 0.3
+    fix m5 all property/global characteristicVelocity scalar 1.0
+"""
+
+
+def y_star():
+    return 1.0 / ((1 - 0.3 ** 2) / 1.0e5 + (1 - 0.25 ** 2) / 3.0e5)
+
+
+def hooke_time():
+    """Contact time of LIGGGHTS's hooke law for m* = m, R* = R = 0.5, V = 1."""
+    ys, r = y_star(), 0.5
+    kn = 16 / 15 * math.sqrt(r) * ys * (15 * MASS / (16 * math.sqrt(r) * ys)) ** 0.2
+    log_e = math.log(E12)
+    gamma = math.sqrt(4 * MASS * kn * log_e ** 2 / (log_e ** 2 + math.pi ** 2))
+    return math.pi / math.sqrt(kn / MASS - (gamma / (2 * MASS)) ** 2)
+
+
+def bounce(model, wall, start, velocity, steps=400, extra=""):
+    dt = hooke_time() / 100
+    sim = make_box(f"""
+        create_particle 1 single {start[0]} {start[1]} {start[2]} diameter 1 density 1
+        velocity all set {velocity[0]} {velocity[1]} {velocity[2]}
+        {MATERIAL}
+        {extra}
+        fix 1 all test/nve_sphere
+        fix w all wall/gran model {model} tangential history {wall}
+        fix r all test/record
+        timestep {dt}
+    """, box="-6 6 -6 6 -6 6", particle_style="sphere", ntypes=2, boundary="f f f")
+    sim.command(f"run {steps}")
+    return sim
+
+
+PRIMITIVES = [
+    ("primitive type 2 xplane -1.0", (-0.49, 0.2, 0.1), (-1, 0, 0)),
+    ("primitive type 2 xplane -1.0", (-1.51, 0.2, 0.1), (1, 0, 0)),          # from the other side
+    ("primitive type 2 yplane 2.0", (0.3, 1.49, 0.0), (0, 1, 0)),
+    ("primitive type 2 zplane 0.5", (0.0, 0.0, 1.01), (0, 0, -1)),
+    ("primitive type 2 zcylinder 3.0 0.5 -0.5", (0.5 + 2.49 * 0.6, -0.5 + 2.49 * 0.8, 0.3), (0.6, 0.8, 0)),
+    ("primitive type 2 zcylinder 1.0 0.5 -0.5", (0.5, -0.5 + 1.51, 0.3), (0, -1, 0)),      # outside
+    ("primitive type 2 xcylinder 3.0 1.0 0.0", (0.3, 1.0 + 2.49, 0.0), (0, 1, 0)),           # (y, z)
+    ("primitive type 2 ycylinder 3.0 1.0 0.0", (0.0, 0.4, 1.0 - 2.49), (0, 0, -1)),          # (z, x)
+]
+
+
+@pytest.mark.parametrize("wall, start, direction", PRIMITIVES,
+                         ids=["xplane", "xplane-below", "yplane", "zplane", "zcylinder-inside",
+                              "zcylinder-outside", "xcylinder", "ycylinder"])
+@pytest.mark.parametrize("model, tolerance", [("hooke", 0.005), ("hertz", 0.01)])
+def test_head_on_bounce_off_each_primitive_has_the_pair_restitution(wall, start, direction, model,
+                                                                     tolerance):
+    """Speed 1 straight at the wall: it comes back along the same line at e12 = 0.7 (hooke: the
+    linear law's e exactly, to the time step's error; hertz: LIGGGHTS's damping, close to e)."""
+    v = np.array(direction, float)
+    sim = bounce(model, wall, start, v)
+    assert sim.v[0] @ v == pytest.approx(-E12, rel=tolerance)
+    np.testing.assert_allclose(np.cross(sim.v[0], v), 0.0, atol=1e-9)
+
+
+def test_hooke_contact_time_against_a_plane():
+    """The sphere touches the plane for the linear law's contact time pi / sqrt(kn/m - (gn/2m)^2),
+    within 2 % (two time steps)."""
+    sim = bounce("hooke", "primitive type 2 zplane 0.0", (0, 0, 0.505), (0, 0, -1))
+    record = sim.fixes["r"]
+    t = np.array(record.t)
+    touching = np.array(record.series("x"))[:, 2] < 0.5
+    assert touching.sum() * (t[1] - t[0]) == pytest.approx(hooke_time(), rel=0.02)
+
+
+def test_bounce_off_a_mesh_plane(data):
+    """The square (type 2) as a mesh wall: the same rebound as off zplane."""
+    sim = bounce("hooke", "mesh n_meshes 1 meshes cad", (0.3, -0.2, 0.51), (0, 0, -1),
+                 extra=f"fix cad all mesh/surface file {data}/square.stl type 2")
+    assert sim.v[0, 2] == pytest.approx(E12, rel=0.005)
+
+
+def test_two_meshes_each_with_its_material(data, tmp_path):
+    """Two meshes, one of type 2 (e = 0.7 against type 1) at z = 0 and one of type 1 (e = 0.9) at
+    z = 3 turned over: a sphere bouncing between them loses speed by 0.7 then 0.9."""
+    sim = bounce("hooke", "mesh n_meshes 2 meshes low high", (0.3, -0.2, 0.51), (0, 0, -1),
+                 steps=400 + int((2.0 / E12 + 1.0) / (hooke_time() / 100)),
+                 extra=f"fix low all mesh/surface file {data}/square.stl type 2\n"
+                       f"fix high all mesh/surface file {data}/square.stl type 1 move 0 0 3")
+    assert sim.v[0, 2] == pytest.approx(-E12 * 0.9, rel=0.01)
+
+
+def test_a_sliding_plane_drags_a_resting_sphere():
+    """zplane with shear x 0.5 under gravity: a sphere that cannot spin is dragged up to the wall's
+    speed (0.5 along x) by friction, and stays on the wall."""
+    sim = make_box(f"""
+        create_particle 1 single 0 0 0.499 diameter 1 density 1
+        {MATERIAL}
+        fix 1 all test/nve_sphere rotate no
+        fix 2 all test/wall_gravity 0 0 -10
+        fix w all wall/gran model hooke tangential history primitive type 2 zplane 0.0 shear x 0.5
+        timestep {hooke_time() / 50}
+    """, box="-6 6 -6 6 -6 6", particle_style="sphere", ntypes=2, boundary="f f f")
+    sim.command(f"run {int(1.0 / (hooke_time() / 50))}")
+    assert sim.v[0, 0] == pytest.approx(0.5, rel=0.01)
+    assert sim.x[0, 2] == pytest.approx(0.5, abs=0.01)
+
+
+def test_a_turning_cylinder_carries_a_sphere_at_its_surface_speed():
+    """zcylinder of radius 2 turning at omega = 0.5 (shear x 0.5): a sphere that cannot spin,
+    pressed onto its inside by a force along x, is dragged up to the wall's surface speed
+    omega R_c = 1.0, along the wall (perpendicular to the radius)."""
+    sim = make_box(f"""
+        create_particle 1 single 1.5 0 0 diameter 1 density 1
+        {MATERIAL}
+        fix 1 all test/nve_sphere rotate no
+        fix 2 all test/wall_gravity 10 0 0
+        fix w all wall/gran model hooke tangential history primitive type 2 zcylinder 2.0 0 0 shear x 0.5
+        timestep {hooke_time() / 50}
+    """, box="-6 6 -6 6 -6 6", particle_style="sphere", ntypes=2, boundary="f f f")
+    sim.command(f"run {int(0.4 / (hooke_time() / 50))}")
+    assert np.linalg.norm(sim.v[0]) == pytest.approx(0.5 * 2.0, rel=0.01)
+    assert sim.v[0] @ sim.x[0] == pytest.approx(0.0, abs=0.01)
+    assert sim.v[0, 1] > 0.9          # counter-clockwise about +z
+
+
+@pytest.mark.parametrize("words, message", [
+    ("model hertz primitive type 2 zplane 0", "missing keyword tangential"),
+    ("model jkr tangential history primitive type 2 zplane 0", "model must be one of hertz, hooke (got jkr)"),
+    ("model hertz tangential history", "expected primitive or mesh after the model keywords (got nothing)"),
+    ("model hertz tangential history primitive type 3 zplane 0",
+     "type must be from 1 to 2, the number of types (got 3)"),
+    ("model hertz tangential history primitive type 2 wplane 0", "primitive wall style must be one of"),
+    ("model hertz tangential history primitive type 2 zcylinder 1 0", "zcylinder takes 3 value(s) (got 1 0)"),
+    ("model hertz tangential history primitive type 2 zcylinder -1 0 0", "zcylinder radius must be > 0 (got -1)"),
+    ("model hertz tangential history primitive type 2 zplane 0 shear z 1",
+     "shear z would move a zplane wall along its own normal"),
+    ("model hertz tangential history primitive type 2 zplane 0 shear q 1", "shear dimension must be x, y or z"),
+    ("model hertz tangential history primitive type 2 zplane 0 wiggle", "unknown keyword wiggle"),
+    ("model hertz tangential history mesh n_meshes 1 meshes nothere", "fix nothere is not defined"),
+    ("model hertz tangential history mesh n_meshes 2 meshes m1", "meshes needs 2 mesh ID(s) (got m1)"),
+    ("model hertz tangential history mesh n_meshes 1 meshes m1", "fix m1 (property/global) is not a fix mesh/surface"),
+    ("model hertz tangential history mesh n_meshes 0 meshes", "n_meshes must be > 0 (got 0)"),
+    ("model hertz tangential history primitive type 2 zplane 0 store_force yes", "store_force yes is not supported"),
+])
+def test_bad_words(words, message):
+    sim = make_box(MATERIAL, box="-4 4 -4 4 -4 4", particle_style="sphere", ntypes=2, boundary="f f f")
+    with pytest.raises(ScriptError) as info:
+        sim.command("fix w all wall/gran " + words)
+    assert message in str(info.value)
+    assert "\n" not in str(info.value)
+
+
+def test_a_missing_material_is_named_at_the_run():
+    sim = make_box("create_particle 1 single 0 0 0 diameter 1 density 1\n"
+                   "fix w all wall/gran model hertz tangential history primitive type 1 zplane -3",
+                   box="-4 4 -4 4 -4 4", particle_style="sphere", boundary="f f f")
+    with pytest.raises(ScriptError, match="fix w \\(wall/gran\\) needs youngsModulus"):
+        sim.command("run 0")
