@@ -49,7 +49,11 @@ class DumpVTK(MeshDump):
                      file_format=kind)
 
     def render_series(self, frames, surface):
-        # ParaView's layout: one frame per line
-        files = ",\n".join(f"    {json.dumps({'name': name, 'time': time})}"
-                           for name, (time, _) in frames.items())
-        return f'{{\n  "file-series-version": "1.0",\n  "files": [\n{files}\n  ]\n}}\n'
+        return series_json(frames)
+
+
+def series_json(frames):
+    """ParaView's series file of the frames {name: (time, empty)}, one frame per line."""
+    files = ",\n".join(f"    {json.dumps({'name': name, 'time': time})}"
+                       for name, (time, _) in frames.items())
+    return f'{{\n  "file-series-version": "1.0",\n  "files": [\n{files}\n  ]\n}}\n'

@@ -46,7 +46,7 @@ import numpy as np
 
 from pdps_core.api import Fix, ScriptError, StyleArgs
 
-from .mesh import face_normals, placed_mesh, read_keywords, unit
+from .mesh import belt_on_face, face_normals, placed_mesh, read_keywords, rigid_velocity, unit
 from .wall_contact import read_numbers
 
 SURFACE_ARITY = {"file": 1, "type": 1, "verbose": 1, "heal": 1, "precision": 1, "curvature": 1,
@@ -155,6 +155,18 @@ class FixMeshSurface(Fix):
         self.velocity = drift
         self.spin = skew_axis(turning @ rotation.T)
         self.pivot = shift
+
+    def face_velocity(self):
+        """The wall velocity at each triangle's centre (a conveyor's belt velocity on the face, or
+        the rigid motion's), (m, 3)."""
+        centre = self.vertices[self.triangles].mean(axis=1)
+        out = np.empty_like(centre)
+        for t in range(len(centre)):
+            if self.conveyor:
+                belt_on_face(self.belt, self.face_normal[t], out[t])
+            else:
+                rigid_velocity(centre[t], self.velocity, self.spin, self.pivot, out[t])
+        return out
 
     def tally(self):
         """What a wall adds its forces on this mesh to: nothing (mesh/surface/stress sums them)."""

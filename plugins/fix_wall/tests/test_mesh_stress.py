@@ -118,3 +118,49 @@ def test_dump_vtk_writes_the_force_pressure_and_shear_of_each_face(data, tmp_pat
         assert np.sum(pressure * 2.0) == pytest.approx(MASS * G, rel=1e-9)
         np.testing.assert_allclose(shear, 0.0, atol=1e-9)
     assert (tmp_path / "p_wall_floor.vtu.series").exists()
+
+
+@pytest.mark.parametrize("style", ["mesh/vtk", "mesh/gran/VTK"])
+def test_dump_mesh_vtk_writes_the_meshes_with_liggghts_values(data, tmp_path, style):
+    """LIGGGHTS's dump mesh/vtk: both meshes in one legacy VTK file per frame, per triangle the
+    stress |F|/A (0 on the plain mesh/surface lid), the stress components F/A, the id, the area and
+    the wall velocity (the moving mesh's linear velocity; 0 on the still one)."""
+    sim = make_box(f"""
+        fix floor all mesh/surface/stress file {data}/square.stl
+        fix lid all mesh/surface file {data}/square.stl move 0 0 3
+        fix up all move/mesh mesh lid linear 0 0 0.5
+        create_particle 1 single 0.4 -0.3 {0.5 - MASS * G / KN} diameter 1 density 1
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-G}
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+        timestep 0.001
+        dump d all {style} 10 {tmp_path}/mesh*.vtk stress stresscomponents id area vel floor lid
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 20")
+    mesh = meshio.read(tmp_path / "mesh20.vtk")
+    assert len(mesh.cells_dict["triangle"]) == 4
+    stress = mesh.cell_data["stress"][0]
+    components = mesh.cell_data["stress_components"][0]
+    area = mesh.cell_data["area"][0]
+    np.testing.assert_allclose(area, 2.0)
+    np.testing.assert_array_equal(mesh.cell_data["id"][0], [0, 1, 0, 1])
+    assert np.sum(stress * area) == pytest.approx(MASS * G, rel=1e-9)
+    np.testing.assert_array_equal(stress[2:], 0.0)            # the lid sums no forces
+    np.testing.assert_allclose(np.sum(components * area[:, None], axis=0), [0, 0, -MASS * G], atol=1e-9)
+    np.testing.assert_allclose(mesh.cell_data["vel"][0], [[0, 0, 0]] * 2 + [[0, 0, 0.5]] * 2, atol=1e-12)
+    np.testing.assert_allclose(mesh.points[4:, 2], 3.0 + 0.5 * 20 * 0.001, atol=1e-12)
+
+
+@pytest.mark.parametrize("words, message", [
+    ("stress cad", "stress needs a fix mesh/surface/stress (fix cad is a mesh/surface)"),
+    ("wear", "wear is not supported"),
+    ("output interpolate", "output interpolate is not supported (output face only)"),
+    ("stress nothere", "nothere is neither a value"),
+])
+def test_bad_dump_mesh_vtk(data, tmp_path, words, message):
+    sim = make_box(f"fix cad all mesh/surface file {data}/square.stl", box="-4 4 -4 4 -4 4",
+                   particle_style="sphere")
+    with pytest.raises(ScriptError) as info:
+        sim.command(f"dump d all mesh/vtk 10 {tmp_path}/m*.vtk {words}")
+        sim.command("run 0")
+    assert message in str(info.value)

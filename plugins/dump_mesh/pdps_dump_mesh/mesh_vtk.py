@@ -1,0 +1,137 @@
+r"""Dump ``mesh/vtk`` (also spelled ``mesh/gran/VTK``): the surfaces of ``fix mesh/surface`` meshes,
+one legacy VTK file per frame with values per triangle (LIGGGHTS's dump mesh/vtk).
+
+Syntax::
+
+    dump ID GROUP mesh/vtk N FILE [output face] [VALUE ...] [MESH_ID ...]
+
+N is the interval in steps; FILE has one ``*``, replaced by the step, and ends in ``.vtk`` (legacy
+VTK) or ``.vtu``. The group is not used. Each frame holds the triangles of the meshes named (all
+fix mesh/surface meshes when none is named), one after the other in the order named, as VTK
+triangle cells, with the cell data chosen by the VALUE words (LIGGGHTS's names):
+
+- ``stress``: :math:`|\mathbf{F}|/A`, the magnitude of the force the particles exert on the
+  triangle per unit area (pressure units);
+- ``stresscomponents``: :math:`\mathbf{F}/A` (3 values, written as ``stress_components``);
+
+  both need a fix mesh/surface/stress among the meshes written, and are 0 on the triangles of the
+  plain mesh/surface meshes written beside it (they sum no forces);
+- ``id``: the triangle's index in its mesh file, from 0; ``area``: its area; ``vel``: the wall
+  velocity at its centre (velocity units; from fix move/mesh or a conveyor);
+- ``owner``: the rank writing it (always 0: rank 0 gathers every mesh).
+
+``output face`` is the default and only form (per-triangle values; LIGGGHTS's ``interpolate`` is not
+supported), ``wear`` is refused (no wear model). As pdps's dump vtk, each file is written under a
+temporary name and renamed, and ``STEM.vtk.series`` lists the frames for ParaView.
+
+Example::
+
+    dump stress all mesh/vtk 1000 post/mesh*.vtk stress stresscomponents vel cad
+"""
+
+import meshio
+import numpy as np
+
+from pdps_core.api import Dump, ScriptError, StyleArgs, param
+
+from .frames import Pattern, Series, replace_atomically
+from .vtk import series_json
+
+VALUES = ("stress", "stresscomponents", "id", "area", "vel", "owner")
+
+
+class DumpMeshVTK(Dump):
+    name = "mesh/vtk"
+    usage = ("dump ID GROUP mesh/vtk N FILE_*.vtk [output face] [stress] [stresscomponents] [id] [area] "
+             "[vel] [owner] [MESH_ID ...]")
+
+    class Args(StyleArgs):
+        every: int = param(ge=1, unit="timesteps")
+        file: str
+        words: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.pattern = Pattern(args.file, (".vtk", ".vtu"), "post/mesh*.vtk")
+        words = list(args.words)
+        self.values, self.mesh_ids = [], []
+        k = 0
+        while k < len(words):
+            word = words[k]
+            if word == "output":
+                if k + 1 >= len(words) or words[k + 1] != "face":
+                    got = words[k + 1] if k + 1 < len(words) else "nothing"
+                    raise ScriptError(f"output {got} is not supported (output face only)")
+                k += 2
+                continue
+            if word == "wear":
+                raise ScriptError("wear is not supported (no wear model)")
+            if word in VALUES:
+                self.values.append(word)
+            else:
+                self.mesh_ids.append(word)
+            k += 1
+        for ident in self.mesh_ids:
+            fix = sim.fixes.get(ident)
+            if fix is None or not hasattr(fix, "add_mover"):
+                raise ScriptError(f"{ident} is neither a value ({', '.join(VALUES)}) nor the ID of a "
+                                  "fix mesh/surface")
+        self.series = Series(self.pattern.series() + ".series",
+                             series_json)
+
+    def meshes(self, sim):
+        if self.mesh_ids:
+            return [sim.fixes[ident] for ident in self.mesh_ids]
+        return [fix for fix in sim.fixes.values() if hasattr(fix, "add_mover")]
+
+    def write(self, sim):
+        meshes = self.meshes(sim)
+        if not meshes:
+            raise ScriptError(f"dump {self.id} ({self.name}): there is no fix mesh/surface to write")
+        stressed = [name for name in self.values if name in ("stress", "stresscomponents")]
+        if stressed and not any(hasattr(mesh, "face_data") for mesh in meshes):
+            raise ScriptError(f"dump {self.id} ({self.name}): {stressed[0]} needs a fix mesh/surface/stress "
+                              f"(fix {meshes[0].id} is a {meshes[0].name})")
+        points, cells, data, offset = [], [], {name: [] for name in self.values}, 0
+        for mesh in meshes:
+            faces = mesh.face_data(sim) if hasattr(mesh, "face_data") else None
+            area = mesh.face_areas()
+            for name in self.values:
+                data[name].append(self._value(sim, mesh, name, faces, area))
+            points.append(mesh.vertices)
+            cells.append(np.asarray(mesh.triangles, dtype=np.int64) + offset)
+            offset += len(mesh.vertices)
+        if not sim.comm.is_root:
+            return
+        cell_data = {}
+        for name, blocks in data.items():
+            column = "stress_components" if name == "stresscomponents" else name
+            cell_data[column] = [np.concatenate(blocks)]
+        path = self.pattern.frame(sim.step)
+        mesh = (np.concatenate(points), [("triangle", np.concatenate(cells))])
+        kind = "vtu" if self.pattern.tail.endswith(".vtu") else "vtk"
+
+        def write(tmp):
+            meshio.write(tmp, meshio.Mesh(*mesh, cell_data=cell_data), file_format=kind)
+        replace_atomically(path, write)
+        self.series.add(path, sim.time)
+
+    def _value(self, sim, mesh, name, faces, area):
+        if name in ("stress", "stresscomponents"):
+            force = faces["force"] if faces is not None else np.zeros((len(mesh.triangles), 3))
+            if name == "stress":
+                return np.linalg.norm(force, axis=1) / area
+            return force / area[:, None]
+        if name == "id":
+            return np.arange(len(mesh.triangles), dtype=np.int64)
+        if name == "area":
+            return area
+        if name == "owner":
+            return np.zeros(len(mesh.triangles), dtype=np.int64)
+        return mesh.face_velocity()
+
+
+class DumpMeshGranVTK(DumpMeshVTK):
+    """LIGGGHTS's older spelling of dump mesh/vtk."""
+    name = "mesh/gran/VTK"
+    usage = DumpMeshVTK.usage.replace("mesh/vtk", "mesh/gran/VTK")
