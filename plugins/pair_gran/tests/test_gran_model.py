@@ -208,3 +208,33 @@ def test_a_liggghts_script_says_so_on_its_first_line(pdps_cli):
     done = pdps_cli("units si\natom_style sphere\nregion reg block -1 1 -1 1 -1 1 units box\ncreate_box 1 reg\n"
                     + FULL.replace("5.e6 5.e6", "5.e6").splitlines()[0] + "\n")
     assert done.stdout.splitlines()[0] == "read as LIGGGHTS: fix property/global on line 5"
+
+
+def test_cohesion_sjkr_pulls_with_k_times_the_intersection_area():
+    """sjkr: F_n = hertz - k pi a^2, a the radius of the circle where the spheres intersect."""
+    delta, k = 2e-5, 3.0e4
+    mat = material(extra=f"fix m5 all property/global cohesionEnergyDensity peratomtypepair 1 {k}\n")
+    sim = two_spheres("model hertz tangential history cohesion sjkr", -delta / 2, 0.0, mat=mat)
+    force, _ = setup_forces(sim)
+    y_star, _, r_star, _ = effective()
+    r = D - delta
+    a2 = (D / 2) ** 2 - (r / 2) ** 2
+    assert force[1, 0] == pytest.approx(4 / 3 * y_star * math.sqrt(r_star * delta) * delta - k * math.pi * a2,
+                                        rel=1e-12)
+
+
+@pytest.mark.parametrize("spin", [40.0, -40.0])
+def test_cdt_rolling_torque_opposes_the_relative_spin(spin):
+    """Spheres spinning oppositely about z (their contact points move together: no sliding) feel
+    the cdt torque mu_r k_n delta R* against omega_1 - omega_2: -M on 1, +M on 2."""
+    delta, mu_r = 2e-5, 0.2
+    mat = material(extra=f"fix m5 all property/global coefficientRollingFriction peratomtypepair 1 {mu_r}\n")
+    sim = two_spheres("model hertz tangential history rolling_friction cdt", -delta / 2, 0.0, mat=mat)
+    p = sim.particles
+    p.omega[p.index_of_tag(1)] = (0.0, 0.0, spin)
+    p.omega[p.index_of_tag(2)] = (0.0, 0.0, -spin)
+    _, torque = setup_forces(sim)
+    y_star, _, r_star, _ = effective()
+    moment = mu_r * 4 / 3 * y_star * math.sqrt(r_star * delta) * delta * r_star
+    assert torque[0] == pytest.approx([0.0, 0.0, -math.copysign(moment, spin)], rel=1e-12, abs=1e-20)
+    assert torque[1] == pytest.approx([0.0, 0.0, math.copysign(moment, spin)], rel=1e-12, abs=1e-20)
