@@ -4,7 +4,7 @@ and their removal (unfix, uncompute, unanalyze, undump)."""
 from ..errors import ScriptError
 from ..styles import Pair, registry
 from . import command
-from .words import choice, count, integer, type_range
+from .words import choice, count, integer, number, type_range
 
 
 @command("pair_style")
@@ -102,6 +102,29 @@ def unfix(sim, args):
 @command("compute")
 def compute(sim, args):
     _create(sim, "compute", sim.computes, args, "compute ID GROUP STYLE args")
+
+
+@command("compute_modify")
+def compute_modify(sim, args):
+    """LAMMPS's ``compute_modify ID dynamic|dynamic/dof yes [extra/dof N]`` for a temperature
+    compute or thermo's own (``thermo_temp``): pdps counts a temperature's particles each time it
+    is read, which is ``dynamic yes`` (particles inserted or lost during a run count at once); ``no``
+    and an extra/dof other than the dimension (LAMMPS's default) are refused."""
+    usage = "compute_modify ID [dynamic yes] [dynamic/dof yes] [extra/dof N]"
+    if len(args) < 3 or len(args) % 2 == 0:
+        raise ScriptError(f"expected an ID and keyword/value pairs; usage: {usage}")
+    ident = args[0]
+    if ident not in ("thermo_temp", "thermo_press") and ident not in sim.computes:
+        raise ScriptError(f"compute {ident} is not defined")
+    for key, value in zip(args[1::2], args[2::2]):
+        choice(key, "compute_modify keyword", ("dynamic", "dynamic/dof", "extra/dof", "extra"))
+        if key in ("dynamic", "dynamic/dof"):
+            if choice(value, key, ("yes", "no")) == "no":
+                raise ScriptError(f"{key} no is not supported: pdps counts a temperature's particles each time "
+                                  f"it is read (LAMMPS's {key} yes)")
+        elif number(value, key) != sim.dimension:
+            raise ScriptError(f"{key} {value} is not supported: temperatures remove the {sim.dimension} "
+                              "degrees of freedom of the centre of mass (LAMMPS's default)")
 
 
 @command("uncompute")

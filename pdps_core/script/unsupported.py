@@ -7,7 +7,7 @@ ALTERNATIVES = {
     "bond_coeff": "pdps has no bond styles", "bond_style": "pdps has no bond styles",
     "box": "nothing: the command is obsolete in LAMMPS too",
     "change_box": "define the box you need with region and create_box, or read_data",
-    "comm_style": "comm_modify cutoff", "compute_modify": "the compute's own keywords",
+    "comm_style": "comm_modify cutoff",
     "create_bonds": "pdps has no bonds", "delete_bonds": "pdps has no bonds",
     "dielectric": "pdps has no charges", "dihedral_coeff": "pdps has no dihedral styles",
     "dihedral_style": "pdps has no dihedral styles", "dynamical_matrix": "none in pdps",
