@@ -1,0 +1,227 @@
+r"""Fix ``heat/gran`` (also ``heat/gran/conduction``): heat conduction through the contacts of
+granular particles and the temperature of each particle (LIGGGHTS's fix heat/gran; Chaudhuri et al.,
+Chem. Eng. Sci. 61, 6348 (2006); the conductance of two half-spaces through a contact spot).
+
+Each particle has one temperature :math:`T_i` (uniform inside it). Two spheres i and j in contact
+(:math:`r < R_i + R_j`) exchange the heat flux
+
+.. math::
+
+    Q_{ij} = h_{ij}\,(T_j - T_i), \qquad h_{ij} = \frac{4 k_i k_j}{k_i + k_j}\sqrt{A_{ij}}
+
+(into i; :math:`-Q_{ij}` into j), with :math:`k` the thermal conductivity of each particle's type
+(0 for either: no flux) and the contact area :math:`A_{ij}`:
+
+- ``overlap`` (default): the circle where the spheres intersect,
+  :math:`A = -\tfrac{\pi}{4}(r-R_i-R_j)(r+R_i-R_j)(r-R_i+R_j)(r+R_i+R_j)/r^2`;
+- ``constant A``: the same area A for every contact;
+- ``projection``: :math:`\pi\max(R_i, R_j)^2` (LIGGGHTS's source; its manual says the smaller).
+
+The temperatures then advance with explicit Euler steps, as LIGGGHTS's scalar transport equation,
+
+.. math::
+
+    T_i \leftarrow T_i + \Delta t\,\frac{\sum_j Q_{ij} + S_i}{m_i c_i}
+
+for the particles of the fix's group (:math:`c` the heat capacity of its type, :math:`S_i` a heat
+source, energy/time); particles outside the group exchange heat but keep their temperature. The
+sum :math:`\sum_i m_ic_iT_i` is conserved by the conduction to round-off. Two particles alone relax
+as :math:`T_1 - T_2 \propto (1 - \lambda\Delta t)^n \approx e^{-\lambda t}`, :math:`\lambda =
+h(1/m_1c_1 + 1/m_2c_2)`.
+
+Material from ``fix property/global`` (per type, ``peratomtype``): ``thermalConductivity`` (>= 0,
+energy/(time distance temperature)) and ``thermalCapacity`` (> 0, energy/(mass temperature)); read
+at the start of each run. Needs ``pair_style gran`` (or another granular pair style: the contacts
+are those of the pair style's neighbor list) and spheres.
+
+Per-atom values: ``Temp`` (temperature), ``heatFlux`` (the summed :math:`Q` of the last step,
+energy/time), ``heatSource`` (S, 0 unless set) and ``directionalHeatFlux`` (3: half of each
+contact's :math:`Q\,(\mathbf{x}_i - \mathbf{x}_j)` on each particle); ``set ... property/atom Temp
+T`` and ``set ... property/atom heatSource S`` give them values. Output: ``f_ID`` the group's
+thermal energy :math:`\sum m_ic_iT_i` (thermo); per particle ``f_ID[1]`` the temperature and
+``f_ID[2]`` the heat flux (dump custom; [0] and [1] in the PDPS dialect).
+
+Syntax::
+
+    fix ID GROUP heat/gran initial_temperature T0 [contact_area overlap|projection|constant A]
+                                                  [area_correction no]
+
+``initial_temperature`` is every particle's temperature until ``set`` changes it (particles
+created later start at T0 too). ``area_correction yes`` (LIGGGHTS's correction for a softened
+Young's modulus) is not supported.
+
+Example (LIGGGHTS)::
+
+    fix ctc all property/global thermalConductivity peratomtype 5.
+    fix cap all property/global thermalCapacity peratomtype 10.
+    fix heat all heat/gran initial_temperature 273.15
+    set region hot property/atom Temp 800.
+    dump d all custom 100 heat.dump id x y z f_heat[1] f_heat[2]
+"""
+
+import math
+from typing import Literal
+
+import numpy as np
+from numba import njit
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
+from pdps_granular_contact.liggghts import read_property
+
+OVERLAP, CONSTANT, PROJECTION = 0, 1, 2
+AREAS = {"overlap": OVERLAP, "constant": CONSTANT, "projection": PROJECTION}
+
+
+@njit(cache=True)
+def conduction(x, radius, temp, type_, conductivity, offsets, neighbors, nlocal, mode, area_constant,
+               heat_flux, directional):
+    """Heat fluxes of the contacts of a half list into ``heat_flux`` and ``directional`` (owned and
+    ghost rows, zeroed first; the caller sums ghosts onto their owners)."""
+    for i in range(len(heat_flux)):
+        heat_flux[i] = 0.0
+        for d in range(3):
+            directional[i, d] = 0.0
+    for i in range(nlocal):
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            dx = x[i, 0] - x[j, 0]
+            dy = x[i, 1] - x[j, 1]
+            dz = x[i, 2] - x[j, 2]
+            rsq = dx * dx + dy * dy + dz * dz
+            ri, rj = radius[i], radius[j]
+            if rsq >= (ri + rj) * (ri + rj) or rsq == 0.0:
+                continue
+            ki, kj = conductivity[type_[i]], conductivity[type_[j]]
+            if ki <= 0.0 or kj <= 0.0:
+                continue
+            if mode == OVERLAP:
+                r = math.sqrt(rsq)
+                area = -0.25 * math.pi * ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj)) / rsq
+            elif mode == CONSTANT:
+                area = area_constant
+            else:
+                area = math.pi * max(ri, rj) ** 2
+            if area <= 0.0:
+                continue
+            flux = 4.0 * ki * kj / (ki + kj) * math.sqrt(area) * (temp[j] - temp[i])
+            heat_flux[i] += flux
+            heat_flux[j] -= flux
+            directional[i, 0] += 0.5 * flux * dx
+            directional[i, 1] += 0.5 * flux * dy
+            directional[i, 2] += 0.5 * flux * dz
+            directional[j, 0] += 0.5 * flux * dx
+            directional[j, 1] += 0.5 * flux * dy
+            directional[j, 2] += 0.5 * flux * dz
+
+
+@njit(cache=True)
+def advance(temp, heat_flux, heat_source, rmass, type_, capacity, mask, groupbit, dt, nlocal):
+    """T += dt (Q + S) / (m c) for the owned particles of the group."""
+    for i in range(nlocal):
+        if mask[i] & groupbit:
+            temp[i] += dt * (heat_flux[i] + heat_source[i]) / (rmass[i] * capacity[type_[i]])
+
+
+@njit(cache=True)
+def thermal_energy(temp, rmass, type_, capacity, mask, groupbit, nlocal):
+    total = 0.0
+    for i in range(nlocal):
+        if mask[i] & groupbit:
+            total += rmass[i] * capacity[type_[i]] * temp[i]
+    return total
+
+
+class FixHeatGran(Fix):
+    name = "heat/gran"
+    usage = ("fix ID GROUP heat/gran initial_temperature T0 [contact_area overlap|projection|constant A] "
+             "[area_correction no]")
+    ghost_fields = ("Temp",)
+
+    class Args(StyleArgs):
+        initial_temperature: float = keyword(..., unit="temperature")
+        contact_area: Literal["overlap", "projection", "constant"] = keyword("overlap")
+        area: float | None = keyword(None, gt=0, unit="area")
+        area_correction: Literal["no"] = keyword("no")
+
+    @classmethod
+    def parse(cls, words):
+        words = list(words)
+        # LIGGGHTS's "contact_area constant A": the area is the constant's own keyword here
+        for k in range(len(words) - 2):
+            if words[k] == "contact_area" and words[k + 1] == "constant":
+                words.insert(k + 2, "area")
+                break
+        if "area" in words and "constant" not in words:
+            raise ScriptError(f"area is given with contact_area constant A; usage: {cls.usage}")
+        if "area_correction" in words:
+            k = words.index("area_correction")
+            if k + 1 < len(words) and words[k + 1] == "yes":
+                raise ScriptError("area_correction yes is not supported (it needs youngsModulusOriginal); "
+                                  "use area_correction no")
+        args = super().parse(words)
+        if args.contact_area == "constant" and args.area is None:
+            raise ScriptError(f"contact_area constant needs the area A; usage: {cls.usage}")
+        return args
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        for fix in sim.fixes.values():
+            if fix.name in ("heat/gran", "heat/gran/conduction") and fix is not self:
+                raise ScriptError(f"fix {fix.id} ({fix.name}) already transports heat: one heat/gran fix at most")
+        p = sim.particles
+        p.request("Temp", 1, default=args.initial_temperature)
+        p.request("heatFlux", 1)
+        p.request("heatSource", 1)
+        p.request("directionalHeatFlux", 3)
+        self.mode = AREAS[args.contact_area]
+        self.area_constant = args.area or 0.0
+        self.conductivity = self.capacity = None
+
+    def init_run(self, sim):
+        if not sim.particles.has("radius") or not sim.particles.has("rmass"):
+            raise ScriptError(f"fix {self.id} ({self.name}) needs atom_style granular or sphere")
+        if sim.pair is None:
+            raise ScriptError(f"fix {self.id} ({self.name}) needs a granular pair style (its contacts carry the heat)")
+        self.conductivity = read_property(sim, "thermalConductivity", sim.ntypes, f"fix {self.id} ({self.name})")
+        self.capacity = read_property(sim, "thermalCapacity", sim.ntypes, f"fix {self.id} ({self.name})")
+        self.groupbit = np.uint32(sim.groups.bit(self.group))
+
+    def setup(self, sim):
+        self.conduct(sim)
+
+    def post_force(self, sim):
+        self.conduct(sim)
+
+    def conduct(self, sim):
+        p = sim.particles
+        nlist = sim.pair_list
+        a = p.arrays
+        conduction(a["x"], a["radius"], a["Temp"], a["type"], self.conductivity, nlist.offsets, nlist.neighbors,
+                   p.nlocal, self.mode, self.area_constant, a["heatFlux"], a["directionalHeatFlux"])
+        sim.comm.reverse_comm(p, ("heatFlux", "directionalHeatFlux"))
+
+    def final_integrate(self, sim):
+        p = sim.particles
+        a = p.arrays
+        advance(a["Temp"], a["heatFlux"], a["heatSource"], a["rmass"], a["type"], self.capacity,
+                a["mask"], self.groupbit, sim.dt, p.nlocal)
+
+    def scalar(self, sim):
+        """The group's thermal energy sum m c T (energy)."""
+        if self.capacity is None:
+            raise ScriptError(f"f_{self.id}: the thermal energy is known once a run has started")
+        p = sim.particles
+        a = p.arrays
+        return sim.comm.sum(thermal_energy(a["Temp"], a["rmass"], a["type"], self.capacity, a["mask"],
+                                           self.groupbit, p.nlocal))
+
+    def peratom(self, sim):
+        """Temperature and heat flux of each owned particle."""
+        p = sim.particles
+        n = p.nlocal
+        return np.column_stack([p.arrays["Temp"][:n], p.arrays["heatFlux"][:n]])
+
+
+class FixHeatGranConduction(FixHeatGran):
+    name = "heat/gran/conduction"
+    usage = FixHeatGran.usage.replace("heat/gran", "heat/gran/conduction", 1)

@@ -1,0 +1,133 @@
+"""fix heat/gran: two spheres in contact relax to one temperature at the conduction model's
+exponential rate, the total heat sum m c T is conserved to round-off, and bad input is one line."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+
+D1, D2, RHO = 0.01, 0.008, 2500.0
+K1, K2, C1, C2 = 5.0, 2.0, 10.0, 30.0
+
+
+def scene(delta=2e-4, area="", dt=1e-4, t1=400.0, t2=300.0):
+    """Spheres of types 1 and 2 (different conductivities and capacities), overlapping by delta,
+    held in place (no integrator)."""
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    x2 = 0.5 * (D1 + D2) - delta
+    sim.command(f"""
+atom_style granular
+boundary f f f
+units si
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 2 reg
+fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m5 all property/global thermalConductivity peratomtype {K1} {K2}
+fix m6 all property/global thermalCapacity peratomtype {C1} {C2}
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep {dt!r}
+create_atoms 1 single 0 0 0 units box
+create_atoms 2 single {x2!r} 0 0 units box
+set type 1 diameter {D1} density {RHO}
+set type 2 diameter {D2} density {RHO}
+fix heat all heat/gran initial_temperature {t2} {area}
+set atom 1 property/atom Temp {t1}
+""")
+    return sim
+
+
+def temperatures(sim):
+    order = np.argsort(sim.tag)
+    return sim.particles.arrays["Temp"][: sim.nlocal][order]
+
+
+def masses():
+    return [RHO * math.pi / 6 * d ** 3 for d in (D1, D2)]
+
+
+@pytest.mark.parametrize("area, area_of", [
+    ("", lambda r, r1, r2: math.pi * (r1 ** 2 - ((r * r + r1 * r1 - r2 * r2) / (2 * r)) ** 2)),
+    ("contact_area constant 1e-6", lambda r, r1, r2: 1e-6),
+    ("contact_area projection", lambda r, r1, r2: math.pi * max(r1, r2) ** 2),
+])
+def test_two_spheres_equilibrate_at_the_conduction_rate(area, area_of):
+    """T1 - T2 decays as exp(-lambda t), lambda = h (1/m1c1 + 1/m2c2), h = 4 k1 k2/(k1+k2) sqrt(A);
+    the explicit steps give (1 - lambda dt)^n, within 1e-3 of it at lambda dt = 2e-3."""
+    delta = 2e-4
+    r = 0.5 * (D1 + D2) - delta
+    h = 4 * K1 * K2 / (K1 + K2) * math.sqrt(area_of(r, D1 / 2, D2 / 2))
+    m1, m2 = masses()
+    rate = h * (1 / (m1 * C1) + 1 / (m2 * C2))
+    dt = 2e-3 / rate
+    sim = scene(delta, area, dt)
+    heat0 = m1 * C1 * 400.0 + m2 * C2 * 300.0
+    steps = int(1.5 / (rate * dt))
+    sim.command(f"run {steps}")
+    t1, t2 = temperatures(sim)
+    measured = -math.log((t1 - t2) / 100.0) / (steps * dt)
+    assert measured == pytest.approx(rate, rel=0.01)
+    assert measured == pytest.approx(-math.log(1 - rate * dt) / dt, rel=1e-9)
+    assert m1 * C1 * t1 + m2 * C2 * t2 == pytest.approx(heat0, rel=1e-14)
+    assert sim.fix_value("heat") == pytest.approx(heat0, rel=1e-14)
+
+
+def test_per_atom_temperature_and_flux_in_a_dump(tmp_path):
+    sim = scene()
+    path = tmp_path / "heat.dump"
+    sim.command(f"dump d all custom 1 {path} id f_heat[1] f_heat[2]\nrun 0")
+    rows = [line.split() for line in path.read_text().splitlines()[-2:]]
+    (_, t1, q1), (_, t2, q2) = sorted(rows)
+    assert (float(t1), float(t2)) == (400.0, 300.0)
+    assert float(q1) == pytest.approx(-float(q2), rel=1e-12)
+    assert float(q1) < 0
+
+
+def test_particles_outside_the_group_keep_their_temperature():
+    sim = scene()
+    sim.command("unfix heat\ngroup one id 1\nfix heat one heat/gran initial_temperature 300\n"
+                "set atom 1 property/atom Temp 400\nrun 100")
+    t1, t2 = temperatures(sim)
+    assert t2 == 300.0 and t1 < 400.0
+
+
+SETUP = """\
+atom_style granular
+units si
+region reg block -1 1 -1 1 -1 1 units box
+create_box 1 reg
+create_atoms 1 single 0 0 0 units box
+"""
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix h all heat/gran", "fix: missing argument initial_temperature"),
+    ("fix h all heat/gran initial_temperature 300 contact_area constant",
+     "fix: contact_area constant needs the area A; usage: fix ID GROUP heat/gran initial_temperature T0 "
+     "[contact_area overlap|projection|constant A] [area_correction no]"),
+    ("fix h all heat/gran initial_temperature 300 area_correction yes",
+     "fix: area_correction yes is not supported (it needs youngsModulusOriginal); use area_correction no"),
+    ("set atom 1 property/atom Temp 400", "set: set property/atom: Temp is not a per-atom property of one value a "
+     "fix made (heat/gran makes Temp and heatSource)"),
+])
+def test_bad_lines(pdps_cli, line, message):
+    done = pdps_cli(SETUP + line + "\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+
+
+def test_missing_conductivity_stops_the_run(pdps_cli):
+    done = pdps_cli(SETUP + "fix m1 all property/global youngsModulus peratomtype 5.e6\n"
+                    "fix m2 all property/global poissonsRatio peratomtype 0.45\n"
+                    "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5\n"
+                    "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5\n"
+                    "pair_style gran model hertz tangential history\npair_coeff * *\n"
+                    "fix h all heat/gran initial_temperature 300\nrun 0\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == ("ERROR: in.test:13: run: fix h (heat/gran) needs thermalConductivity: "
+                                   "fix ID all property/global thermalConductivity peratomtype V1 ... V1")
