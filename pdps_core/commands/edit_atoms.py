@@ -41,7 +41,8 @@ from .words import choice, count, integer, number, type_range, yes_no
 
 # ---- set ---------------------------------------------------------------------------------------------
 SET_ARITY = {"type": 1, "type/fraction": 3, "x": 1, "y": 1, "z": 1, "vx": 1, "vy": 1, "vz": 1, "mass": 1,
-             "diameter": 1, "density": 1, "image": 3, "omega": 3, "charge": 1, "mol": 1}
+             "diameter": 1, "density": 1, "image": 3, "omega": 3, "charge": 1, "mol": 1, "property/atom": 2,
+             "property/peratom": 2}
 
 
 def _selection(sim, style, ident):
@@ -164,6 +165,14 @@ def _set_one(sim, key, values, selected):
             p.rmass[rows] = density * _volume(sim, p.radius[rows])
         else:
             p.rmass[rows] = np.asarray(value) * _volume(sim, p.radius[rows])
+        return len(rows)
+    if key in ("property/atom", "property/peratom"):
+        # LIGGGHTS's per-atom properties that fixes make (heat/gran's Temp, heatSource)
+        name = values[0]
+        if name in ("x", "v", "f", "tag", "type", "mask", "image") or not p.has(name) or p.arrays[name].ndim != 1:
+            raise ScriptError(f"set {key}: {name} is not a per-atom property of one value a fix made (heat/gran "
+                              "makes Temp and heatSource)")
+        p.arrays[name][rows] = _values(sim, values[1], name, selected)
         return len(rows)
     if key == "charge":
         if not p.has("q"):
