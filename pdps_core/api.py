@@ -70,6 +70,7 @@ CONTRACT = {
         "evaluate": "evaluate(arg): a style argument's value now (v_NAME evaluated)",
         "compute_value": "compute_value(id, indices): c_ID, c_ID[i], c_ID[i][j]",
         "fix_value": "fix_value(id, indices): f_ID, f_ID[i], f_ID[i][j]",
+        "dialect_index": "dialect_index(i, what): a script's index (c_ID[i], a column) counted from the dialect's first, as 0-based",
         "compute_needs": "compute_needs(id): {'energy', 'virial'} a compute reads",
         "require_group": "require_group(name): the name, or a one-line error",
         "require_box": "require_box(what): a one-line error when no box exists yet",
