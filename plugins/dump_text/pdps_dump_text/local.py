@@ -1,0 +1,123 @@
+"""Dump ``local``: rows of local data (one per contact, bond, ...) that computes give, in LAMMPS's text
+format (LAMMPS's and LIGGGHTS's dump local).
+
+Syntax::
+
+    dump ID GROUP local N FILE ATTRIBUTE ...
+
+ATTRIBUTE: ``index`` (the row's number in the frame, from 1), ``c_ID`` (the only column of a
+compute's local data) or ``c_ID[k]`` (its column k, counted from the dialect's first index: 1 in
+LAMMPS's and LIGGGHTS's, 0 in PDPS's). Every compute named must give the same number of rows (they
+describe the same contacts). Computes with local data: ``wall/gran/local``. The group is not used
+(each compute has its own). Each frame::
+
+    ITEM: TIMESTEP / step / ITEM: NUMBER OF ENTRIES / n / ITEM: BOX BOUNDS ... / 3 lines lo hi /
+    ITEM: ENTRIES index c_walls[1] ... / n rows
+
+written whole and flushed; in a parallel run rank 0 gathers every rank's rows (in rank order).
+
+Example::
+
+    compute walls all wall/gran/local pos force
+    dump contacts all local 1000 contacts.txt index c_walls[1] c_walls[2] c_walls[3] c_walls[7]
+"""
+
+import re
+
+import numpy as np
+
+from pdps_core.api import Dump, ScriptError, StyleArgs, param
+
+REFERENCE = re.compile(r"^c_([^\[\]]+)(?:\[(\d+)\])?$")
+
+
+class DumpLocal(Dump):
+    name = "local"
+    usage = "dump ID GROUP local N FILE index|c_ID|c_ID[k] ..."
+
+    class Args(StyleArgs):
+        every: int = param(ge=1, unit="timesteps")
+        file: str
+        attributes: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        if not args.attributes:
+            raise ScriptError(f"dump local needs at least one attribute; usage: {self.usage}")
+        self.attributes = []
+        for word in args.attributes:
+            if word == "index":
+                self.attributes.append(("index", None, None))
+                continue
+            match = REFERENCE.match(word)
+            if match is None:
+                raise ScriptError(f"attribute must be index, c_ID or c_ID[k] (got {word})")
+            column = None if match.group(2) is None else sim.dialect_index(int(match.group(2)), word)
+            self.attributes.append((word, match.group(1), column))
+        self.path = args.file
+        self.handle = None
+        if sim.comm.is_root:
+            try:
+                open(self.path, "a").close()
+            except OSError as exc:
+                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+
+    def _columns(self, sim):
+        cache, columns, rows = {}, [], None
+        for word, ident, column in self.attributes:
+            if ident is None:
+                columns.append(None)
+                continue
+            if ident not in cache:
+                compute = sim.computes.get(ident)
+                if compute is None:
+                    raise ScriptError(f"dump {self.id}: compute {ident} is not defined ({word})")
+                reader = getattr(compute, "local", None)
+                if reader is None:
+                    raise ScriptError(f"dump {self.id}: compute {ident} ({compute.name}) has no local data ({word})")
+                values = np.asarray(reader(sim), dtype=np.float64)
+                cache[ident] = values[:, None] if values.ndim == 1 else values
+            values = cache[ident]
+            if rows is not None and len(values) != rows:
+                raise ScriptError(f"dump {self.id}: {word} has {len(values)} rows, the columns before it {rows}")
+            rows = len(values)
+            if column is None:
+                if values.shape[1] != 1:
+                    raise ScriptError(f"dump {self.id}: compute {ident} has {values.shape[1]} columns: "
+                                      f"name one as c_{ident}[k]")
+                columns.append(values[:, 0])
+            elif not 0 <= column < values.shape[1]:
+                raise ScriptError(f"dump {self.id}: {word} is out of range (compute {ident} has "
+                                  f"{values.shape[1]} columns)")
+            else:
+                columns.append(values[:, column])
+        rows = rows or 0
+        return [np.arange(rows, dtype=np.float64) if c is None else c for c in columns], rows
+
+    def write(self, sim):
+        columns, rows = self._columns(sim)
+        local = np.column_stack(columns) if columns else np.zeros((rows, 0))
+        table = sim.comm.gather_rows(local.reshape(rows, len(self.attributes)))
+        if not sim.comm.is_root:
+            return
+        for k, (word, ident, _) in enumerate(self.attributes):
+            if ident is None:
+                table[:, k] = np.arange(1, len(table) + 1)
+        box = sim.box
+        header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ENTRIES\n{len(table)}\n",
+                  f"ITEM: BOX BOUNDS {box.bounds_label()}\n"]
+        header += ["%-1.16e %-1.16e\n" % (lo, hi) for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
+        header.append(f"ITEM: ENTRIES {' '.join(word for word, _, _ in self.attributes)}\n")
+        formats = ["%d" if ident is None else "%.16g" for _, ident, _ in self.attributes]
+        body = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist()) if len(table) else ""
+        if self.handle is None:
+            try:
+                self.handle = open(self.path, "w")
+            except OSError as exc:
+                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+        self.handle.write("".join(header) + body)
+        self.handle.flush()
+
+    def close(self):
+        if self.handle is not None and not self.handle.closed:
+            self.handle.close()
