@@ -88,12 +88,14 @@ MODEL_WORDS = {"model": liggghts.NORMAL_MODELS, "tangential": liggghts.TANGENTIA
 
 
 @njit(cache=True)
-def liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f, torque,
-                           radius, rmass, ptype, wall_type, models, table, charvel, nktv2p, dt,
-                           update, partner, values, used, slots, hist, force, tangential, roll,
-                           n, vtr, wr, contact_force):
+def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega, f,
+                           torque, radius, rmass, ptype, wall_type, models, table, charvel, nktv2p,
+                           dt, update, partner, values, used, slots, hist, force, tangential, roll,
+                           n, vtr, wr, contact_force, log, logged):
     """Force and torque on particle i from its wall contacts 0..count (module docstring), each
-    contact's force into ``contact_force``. Returns False when i has no free history slot."""
+    contact's force into ``contact_force``; with a ``log`` of rows (LOG_COLUMNS), one row per
+    touching contact after ``logged[0]`` (which counts them). Returns False when i has no free
+    history slot."""
     r_i = radius[i]
     if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, NORMAL_AT, update,
                       used, slots):
@@ -133,9 +135,27 @@ def liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, om
         for d in range(3):
             f[i, d] += force[d]
             contact_force[c, d] = force[d]
-        torque[i, 0] -= arm * (n[1] * tangential[2] - n[2] * tangential[1]) + roll[0]
-        torque[i, 1] -= arm * (n[2] * tangential[0] - n[0] * tangential[2]) + roll[1]
-        torque[i, 2] -= arm * (n[0] * tangential[1] - n[1] * tangential[0]) + roll[2]
+        # the torque of the tangential force; the rolling torque comes on top
+        tx = -arm * (n[1] * tangential[2] - n[2] * tangential[1])
+        ty = -arm * (n[2] * tangential[0] - n[0] * tangential[2])
+        tz = -arm * (n[0] * tangential[1] - n[1] * tangential[0])
+        torque[i, 0] += tx - roll[0]
+        torque[i, 1] += ty - roll[1]
+        torque[i, 2] += tz - roll[2]
+        row = logged[0]
+        if row < log.shape[0]:
+            log[row, 0] = i
+            log[row, 1] = key[c]
+            for d in range(3):
+                log[row, 2 + d] = touch[c, d]
+                log[row, 5 + d] = wall_velocity[c, d]
+                log[row, 8 + d] = force[d]
+            log[row, 11], log[row, 12], log[row, 13] = tx, ty, tz
+            log[row, 14] = overlap
+            log[row, 15] = math.pi * (r_i * r_i - distance[c] * distance[c])
+            for h in range(liggghts.HISTORY_WIDTH):
+                log[row, 16 + h] = hist[h]
+            logged[0] = row + 1
     return True
 
 
@@ -143,9 +163,10 @@ def liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, om
 def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radius, rmass, ptype,
                          vertices, triangles, face_normal, velocity, spin, pivot, belt, conveyor,
                          wall_type, models, table, charvel, nktv2p, dt, update, partner, values,
-                         tally, reference, face_force, mesh_torque):
-    """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form).
-    Returns -1, or the index of a particle whose contact history overflowed."""
+                         tally, reference, face_force, mesh_torque, log, logged):
+    """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form),
+    logged as liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact
+    history overflowed."""
     most = 1
     for k in range(len(near)):
         most = max(most, offsets[k + 1] - offsets[k])
@@ -172,10 +193,11 @@ def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radi
                                   candidates, vertices, triangles, face_normal, velocity, spin,
                                   pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
                                   distance, normal, key, touch, wall_velocity)
-        if not liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f,
-                                      torque, radius, rmass, ptype, wall_type, models, table,
+        if not liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega,
+                                      f, torque, radius, rmass, ptype, wall_type, models, table,
                                       charvel, nktv2p, dt, update, partner, values, used, slots,
-                                      hist, force, tangential, roll, n, vtr, wr, contact_force):
+                                      hist, force, tangential, roll, n, vtr, wr, contact_force, log,
+                                      logged):
             return i
         if tally:
             tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque)
@@ -221,10 +243,12 @@ def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance
 @njit(cache=True)
 def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, rmass, ptype,
                               wallstyle, position, cylinder, shear, spin, wall_type, models, table,
-                              charvel, nktv2p, dt, update, partner, values):
-    """The primitive wall's forces on the particles ``near[:count_near]``. Returns -1, or the index
-    of a particle whose contact history overflowed."""
+                              charvel, nktv2p, dt, update, partner, values, log, logged):
+    """The primitive wall's forces on the particles ``near[:count_near]``, logged as
+    liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact history
+    overflowed."""
     distance = np.empty(1)
+    touch = np.empty((1, 3))
     normal = np.empty((1, 3))
     key = np.zeros(1, dtype=np.int64)
     wall_velocity = np.empty((1, 3))
@@ -238,10 +262,13 @@ def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, 
         i = near[k]
         count = 1 if primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance,
                                        normal, wall_velocity) else 0
-        if not liggghts_wall_contacts(i, count, distance, normal, key, wall_velocity, v, omega, f,
-                                      torque, radius, rmass, ptype, wall_type, models, table,
+        for d in range(3):
+            touch[0, d] = x[i, d] - distance[0] * normal[0, d]
+        if not liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega,
+                                      f, torque, radius, rmass, ptype, wall_type, models, table,
                                       charvel, nktv2p, dt, update, partner, values, used, slots,
-                                      hist, force, tangential, roll, n, vtr, wr, contact_force):
+                                      hist, force, tangential, roll, n, vtr, wr, contact_force, log,
+                                      logged):
             return i
     return -1
 
@@ -293,6 +320,7 @@ class FixWallGranModel(Fix):
                               for mesh in self.meshes]
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
+        self._not_logged = np.zeros(1, dtype=np.int64)
 
     # ---- script words ----
     def _read_models(self, words):
@@ -427,29 +455,56 @@ class FixWallGranModel(Fix):
     def post_force(self, sim):
         self._forces(sim, update=True)
 
-    def _forces(self, sim, update):
+    def contact_log(self, sim):
+        """Every contact of the current step, recomputed without touching forces or histories:
+        [(wall number, rows)] with one row per contact, LOG_COLUMNS (particle row, element, ...)."""
+        if self.table is None:
+            raise ScriptError(f"fix {self.id} (wall/gran) has not computed contacts yet (run 0 first)")
         p = sim.particles
-        common = (p.x, p.v, p.omega, p.f, p.torque, p.radius, p.rmass, p.type)
+        scratch = {"f": np.zeros_like(p.f), "torque": np.zeros_like(p.torque)}
+        return self._forces(sim, update=False, log=True, scratch=scratch)
+
+    def _forces(self, sim, update, log=False, scratch=None):
+        p = sim.particles
+        f, torque = (scratch["f"], scratch["torque"]) if scratch else (p.f, p.torque)
+        common = (p.x, p.v, p.omega, f, torque, p.radius, p.rmass, p.type)
         law = (self.models, self.table, self.charvel, sim.units.nktv2p, sim.dt, update)
+        logs = []
         if self.primitive is not None:
             history = self.history
+            values = history.values.copy() if log else history.values
+            rows, logged = self._log_buffer(self._count if log else 0)
             bad = liggghts_primitive_forces(self._near, self._count, *common, self.wallstyle, self.position,
                                             self.cylinder, self.shear, self.spin, self.wall_type, *law,
-                                            history.partner, history.values)
+                                            history.partner, values, rows, logged)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
-            return
-        for mesh, contacts in zip(self.meshes, self.mesh_contacts):
+            return [(0, rows[:logged[0]])]
+        for number, (mesh, contacts) in enumerate(zip(self.meshes, self.mesh_contacts)):
             near, offsets, triangles = contacts.candidates_now(sim)
-            tally = mesh.tally()
-            reference, face_force, torque = tally if tally is not None else NO_TALLY
+            tally = None if log else mesh.tally()
+            reference, face_force, mesh_torque = tally if tally is not None else NO_TALLY
             history = contacts.history
+            values = history.values.copy() if log else history.values
+            rows, logged = self._log_buffer(offsets[-1] if log else 0)
             bad = liggghts_mesh_forces(near, offsets, triangles, *common, mesh.vertices, mesh.triangles,
                                        mesh.face_normal, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
-                                       mesh.conveyor, mesh.material_type, *law, history.partner, history.values,
-                                       tally is not None, reference, face_force, torque)
+                                       mesh.conveyor, mesh.material_type, *law, history.partner, values,
+                                       tally is not None, reference, face_force, mesh_torque, rows, logged)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
+            logs.append((number, rows[:logged[0]]))
+        return logs
+
+    def _log_buffer(self, most):
+        if most == 0:
+            return NO_LOG, self._not_logged
+        return np.zeros((most, len(LOG_COLUMNS))), np.zeros(1, dtype=np.int64)
 
 
 NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3))
+# a contact log's columns (compute wall/gran/local reads them): t is the torque of the tangential
+# force alone (without rolling friction)
+LOG_COLUMNS = (("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",
+                "delta", "area") + tuple(f"history{h}" for h in range(liggghts.HISTORY_WIDTH)))
+NO_LOG = np.zeros((0, len(LOG_COLUMNS)))

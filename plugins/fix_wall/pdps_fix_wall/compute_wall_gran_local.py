@@ -1,0 +1,111 @@
+r"""Compute ``wall/gran/local``: one row per particle-wall contact of a ``fix wall/gran model ...``
+(LIGGGHTS's compute wall/gran/local), for ``dump local``.
+
+The compute finds the fix wall/gran of LIGGGHTS's spelling (there must be exactly one; name another
+with ``wall FIX_ID``) and, when read, recomputes the contacts of the current step without changing
+forces or contact histories. For each contact of a particle of the compute's group, the columns
+chosen by the keywords, always in LIGGGHTS's order whatever order they are given in:
+
+- ``pos`` (6): the particle's position, then the contact point on the wall (distance);
+- ``vel`` (6): the particle's velocity, then the wall's velocity at the contact point;
+- ``id`` (3): the mesh number (its place in ``meshes ...``, from 0; 0 for a primitive wall), the
+  triangle's index in the mesh file (from 0; 0 for a primitive wall), the particle's id;
+- ``force`` (3): the contact force on the particle (force);
+- ``torque`` (3): the torque of the contact's tangential force on the particle divided by the
+  particle's radius (force; without rolling friction, as LIGGGHTS);
+- ``history`` (6): the contact's history (tangential spring, 3 values; the epsd/epsd2 rolling
+  spring torque, 3 values; as pair gran's);
+- ``contactArea`` (1): :math:`\pi(R^2 - d^2)`, the area of the circle where the sphere meets the
+  wall's plane (distance^2);
+- ``delta`` (1): the overlap :math:`R - d` (distance).
+
+No keyword: pos, vel, id, force, torque, history, contactArea. ``heatFlux`` is refused (no heat
+conduction with walls). Rows of a parallel run come from the rank owning the particle.
+
+Syntax::
+
+    compute ID GROUP wall/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea]
+        [delta] [wall FIX_ID]
+
+Example::
+
+    compute walls all wall/gran/local pos force contactArea
+    dump contacts all local 1000 contacts.txt c_walls[1] c_walls[2] c_walls[3] c_walls[7]
+"""
+
+import numpy as np
+
+from pdps_core.api import Compute, ScriptError, StyleArgs
+
+from .wall_gran_model import LOG_COLUMNS, FixWallGranModel
+
+KEYWORDS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": 6, "contactArea": 1,
+            "delta": 1}
+DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
+COLUMN = {name: k for k, name in enumerate(LOG_COLUMNS)}
+
+
+class ComputeWallGranLocal(Compute):
+    name = "wall/gran/local"
+    usage = ("compute ID GROUP wall/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] "
+             "[delta] [wall FIX_ID]")
+
+    class Args(StyleArgs):
+        words: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.words)
+        self.wall_id = None
+        if "wall" in words:
+            at = words.index("wall")
+            if at + 1 >= len(words):
+                raise ScriptError("wall needs a fix ID")
+            self.wall_id = words[at + 1]
+            words = words[:at] + words[at + 2:]
+        for word in words:
+            if word == "heatFlux":
+                raise ScriptError("heatFlux is not supported (no heat conduction with walls)")
+            if word not in KEYWORDS:
+                raise ScriptError(f"unknown keyword {word} (known: {', '.join(KEYWORDS)}, wall)")
+        chosen = set(words) or set(DEFAULT)
+        self.keywords = [name for name in KEYWORDS if name in chosen]
+        self.columns = sum(KEYWORDS[name] for name in self.keywords)
+
+    def wall(self, sim):
+        if self.wall_id is not None:
+            fix = sim.fixes.get(self.wall_id)
+            if not isinstance(fix, FixWallGranModel):
+                raise ScriptError(f"compute {self.id}: fix {self.wall_id} is not a fix wall/gran model ...")
+            return fix
+        walls = [fix for fix in sim.fixes.values() if isinstance(fix, FixWallGranModel)]
+        if len(walls) != 1:
+            found = ", ".join(fix.id for fix in walls) or "none"
+            raise ScriptError(f"compute {self.id} (wall/gran/local) needs exactly one fix wall/gran model ... "
+                              f"(found {found}); name one with wall FIX_ID")
+        return walls[0]
+
+    def local(self, sim):
+        """This rank's contacts, one row each: (rows, columns) floats in the keywords' order."""
+        p = sim.particles
+        in_group = p.mask & sim.groups.bit(self.group)
+        blocks = []
+        for number, log in self.wall(sim).contact_log(sim):
+            rows = log[:, COLUMN["row"]].astype(np.int64)
+            keep = in_group[rows] != 0
+            log, rows = log[keep], rows[keep]
+            parts = {
+                "pos": [p.x[rows], log[:, COLUMN["px"]:COLUMN["pz"] + 1]],
+                "vel": [p.v[rows], log[:, COLUMN["vwx"]:COLUMN["vwz"] + 1]],
+                "id": [np.full((len(rows), 1), float(number)), log[:, [COLUMN["element"]]],
+                       p.tag[rows].astype(np.float64)[:, None]],
+                "force": [log[:, COLUMN["fx"]:COLUMN["fz"] + 1]],
+                "torque": [log[:, COLUMN["tx"]:COLUMN["tz"] + 1] / p.radius[rows][:, None]],
+                "history": [log[:, COLUMN["history0"]:]],
+                "contactArea": [log[:, [COLUMN["area"]]]],
+                "delta": [log[:, [COLUMN["delta"]]]],
+            }
+            blocks.append(np.hstack([part for name in self.keywords for part in parts[name]]))
+        if not blocks:
+            return np.zeros((0, self.columns))
+        return np.vstack(blocks).reshape(-1, self.columns)
