@@ -18,20 +18,37 @@ MASS = math.pi / 6.0
 KN, E, G = 1.0e4, 0.5, 10.0
 
 
-def test_the_floor_carries_the_weight_of_a_settled_bed(data):
+PDPS_BED = f"""
+    pair_style dem/lsd 0.5 1.0
+    pair_coeff * * {KN} 20 {2 / 7 * KN} 10 0.5
+    fix floor all mesh/surface/stress file {{data}}/square.stl scale 8 move 3 3 -0.6
+    fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+"""
+LIGGGHTS_BED = """
+    fix m1 all property/global youngsModulus peratomtype 2.0e5
+    fix m2 all property/global poissonsRatio peratomtype 0.3
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+    pair_style gran model hertz tangential history
+    pair_coeff * *
+    fix floor all mesh/surface/stress file {data}/square.stl type 1 scale 8 move 3 3 -0.6
+    fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes floor
+"""
+
+
+@pytest.mark.parametrize("walls", [PDPS_BED, LIGGGHTS_BED], ids=["wall/mesh", "wall/gran-model"])
+def test_the_floor_carries_the_weight_of_a_settled_bed(data, walls):
     """216 spheres poured in a box periodic in x and y onto a floor mesh wider than the box, settled
-    with viscous damping and friction: the force on the floor (f_floor[2], PDPS index base) is
-    N m g within 0.5 %, pointing down, with no net sideways force; the per-face pressure times the
-    face area sums to it."""
+    with viscous damping and friction (PDPS's dem/lsd with wall/mesh, or LIGGGHTS's pair gran and
+    wall/gran model hertz): the force on the floor (f_floor[2], PDPS index base) is N m g within
+    0.5 %, pointing down, with no net sideways force; the per-face pressure times the face area
+    sums to it."""
     sim = make_box(f"""
         neighbor 0.2 bin
         lattice sc 1.02
         region fill block 0 6 0 6 0 6 units lattice
         create_particle 1 region fill diameter 1 density 1
-        pair_style dem/lsd 0.5 1.0
-        pair_coeff * * {KN} 20 {2 / 7 * KN} 10 0.5
-        fix floor all mesh/surface/stress file {data}/square.stl scale 8 move 3 3 -0.05
-        fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
+        {walls.format(data=data)}
         fix 1 all test/nve_sphere
         fix 2 all test/wall_gravity 0 0 {-G}
         fix 3 all viscous 2.0
