@@ -187,7 +187,8 @@ class SerialComm:
             _sum_pair_onto_owners(arrays[0], arrays[1], self.ghost_source, p.nlocal)
             return
         for array in arrays:
-            _sum_onto_owners(array, self.ghost_source, p.nlocal)
+            # a per-atom scalar (1-d) as a column, as MPIComm.reverse_comm reads it
+            _sum_onto_owners(array.reshape(len(array), -1), self.ghost_source, p.nlocal)
 
     def set_grid(self, fixed):
         """Validated by the processors command: on one rank every factor is 1."""

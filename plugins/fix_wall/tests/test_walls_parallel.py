@@ -1,0 +1,64 @@
+"""Mesh and primitive walls give the same run on 1 and 2 ranks: a polydisperse bed settling onto a
+wiggling fix mesh/surface/stress floor inside a turning zcylinder (LIGGGHTS's spellings), with the
+floor's force (summed over ranks) and the kinetic energy equal to 1e-9."""
+
+import shutil
+
+import numpy as np
+import pytest
+
+from pdps_core.testing import run_ranks, thermo_rows
+
+
+def bed(path, n_side=(6, 6, 3), seed=5):
+    """Polydisperse spheres (d 0.8-1.2) on a loose lattice inside the cylinder, random velocities."""
+    rng = np.random.default_rng(seed)
+    cells = np.mgrid[0:n_side[0], 0:n_side[1], 0:n_side[2]].reshape(3, -1).T
+    x = cells * 1.3 - np.array([3.25, 3.25, -0.75]) + rng.uniform(-0.05, 0.05, size=(len(cells), 3))
+    d = rng.uniform(0.8, 1.2, size=len(x))
+    v = rng.normal(scale=0.5, size=x.shape)
+    lines = ["bed", "", f"{len(x)} atoms", "2 atom types", "", "-7 7 xlo xhi", "-7 7 ylo yhi",
+             "-1 10 zlo zhi", "", "Atoms # sphere", ""]
+    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
+              for k, p in enumerate(x, 1)]
+    lines += ["", "Velocities", ""]
+    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def run(tmp_path, data, ranks):
+    bed(tmp_path / "bed.data")
+    shutil.copy(f"{data}/square.stl", tmp_path / "square.stl")
+    done = run_ranks("""\
+        atom_style granular
+        units lj
+        boundary f f f
+        comm_modify vel yes
+        read_data bed.data
+        fix m1 all property/global youngsModulus peratomtype 1.0e5 2.0e5
+        fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+        fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.6 0.6 0.5
+        fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.4 0.4 0.5
+        pair_style gran model hertz tangential history
+        pair_coeff * *
+        timestep 0.0005
+        fix floor all mesh/surface/stress file square.stl type 2 scale 6 move 0 0 0.2
+        fix shake all move/mesh mesh floor wiggle amplitude 0 0 0.02 period 0.5
+        fix walls all wall/gran model hertz tangential history mesh n_meshes 1 meshes floor
+        fix drum all wall/gran model hertz tangential history primitive type 2 zcylinder 5.5 0 0 shear x 0.5
+        fix 1 all nve/sphere
+        fix 2 all gravity 10.0 vector 0 0 -1
+        thermo_style custom step ke f_floor[3] f_floor[4]
+        thermo_modify format float %.15g
+        thermo 250
+        run 2000
+        """, ranks, tmp_path)
+    return np.array(thermo_rows(done.stdout))
+
+
+def test_same_run_on_1_and_2_ranks(tmp_path, data):
+    one = run(tmp_path, data, 1)
+    two = run(tmp_path, data, 2)
+    assert one[:, 0].tolist() == list(range(0, 2001, 250))
+    assert np.all(one[-3:, 2] < 0)                # the bed presses on the floor
+    assert two == pytest.approx(one, rel=1e-9, abs=1e-9 * np.abs(one[:, 2]).max())
