@@ -175,3 +175,69 @@ def test_a_missing_material_is_named_at_the_run():
                    box="-4 4 -4 4 -4 4", particle_style="sphere", boundary="f f f")
     with pytest.raises(ScriptError, match="fix w \\(wall/gran\\) needs youngsModulus"):
         sim.command("run 0")
+
+
+# ---- rolling friction and cohesion through the wall ---------------------------------------------
+def one_type_material(extra):
+    return """
+        fix m1 all property/global youngsModulus peratomtype 1.0e6
+        fix m2 all property/global poissonsRatio peratomtype 0.3
+        fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+        fix m4 all property/global coefficientFriction peratomtypepair 1 0.8
+        fix m5 all property/global characteristicVelocity scalar 1.0
+    """ + extra
+
+
+@pytest.mark.parametrize("rolling, lever", [("cdt", "arm"), ("epsd2", "radius")])
+def test_a_sphere_rolling_on_a_plane_stops_where_its_rolling_torque_puts_it(rolling, lever):
+    """A sphere rolling without slip at v0 = 0.5 on zplane with mu_r = 0.05 and gravity 10: the
+    wall's rolling torque M (cdt: mu_r k_n delta (R - delta/2); epsd2: capped at mu_r |F_n| R, with
+    k_n delta = m g at rest) decelerates it at M a_c / (I + m a_c^2), a_c = R - delta/2 the lever
+    of the contact point (I = 2/5 m R^2): it stops after v0^2 / 2|a| within 2 %."""
+    g, v0, mu_r, r = 10.0, 0.5, 0.05, 0.5
+    sim = make_box(one_type_material(
+        "fix m6 all property/global coefficientRollingFriction peratomtypepair 1 0.05") + f"""
+        create_particle 1 single 0 0 0.5 diameter 1 density 1
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-g}
+        fix w all wall/gran model hooke tangential history rolling_friction {rolling} primitive type 1 zplane 0.0
+        timestep 0.0004
+    """, box="-6 6 -6 6 -6 6", particle_style="sphere", boundary="f f f")
+    sim.command("run 2500")                       # settle at rest on the plane (spring and overlap)
+    delta = 0.5 - sim.x[0, 2]
+    arm = r - 0.5 * delta
+    sim.particles.v[0] = [v0, 0.0, 0.0]
+    sim.particles.omega[0] = [0.0, v0 / arm, 0.0]
+    start = sim.x[0, 0]
+    sim.command("fix r all test/record\nrun 4500")
+    x, v = sim.fixes["r"].series("x")[:, 0], sim.fixes["r"].series("v")[:, 0]
+    stop = np.flatnonzero(v <= 0.0)[0]
+    torque = mu_r * MASS * g * (arm if lever == "arm" else r)
+    expected = v0 ** 2 / (2 * torque * arm / (0.4 * MASS * r * r + MASS * arm * arm))
+    assert x[stop] - start == pytest.approx(expected, rel=0.02)
+
+
+@pytest.mark.parametrize("cohesion, area", [
+    ("sjkr", lambda d: math.pi * (0.25 - (0.5 - d) ** 2)),
+    ("sjkr2", lambda d: 2 * math.pi * 0.5 * d),
+])
+def test_a_cohesive_sphere_rests_where_spring_cohesion_and_weight_balance(cohesion, area):
+    """With cohesionEnergyDensity k the wall also pulls k A(delta): a sphere settled on zplane (hooke,
+    so k_n delta is linear) rests where k_n delta - k A(delta) = m g, to 1e-6 of its weight; the
+    overlap is larger than without cohesion."""
+    k, g = 2000.0, 10.0
+    sim = make_box(one_type_material(
+        f"fix m6 all property/global cohesionEnergyDensity peratomtypepair 1 {k}") + f"""
+        create_particle 1 single 0 0 0.5 diameter 1 density 1
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-g}
+        fix 3 all viscous 1.0
+        fix w all wall/gran model hooke tangential history cohesion {cohesion} primitive type 1 zplane 0.0
+        timestep 0.0002
+    """, box="-6 6 -6 6 -6 6", particle_style="sphere", boundary="f f f")
+    sim.command("run 20000")
+    delta = 0.5 - sim.x[0, 2]
+    y_star = 1.0 / (2 * (1 - 0.3 ** 2) / 1.0e6)
+    kn = 16 / 15 * math.sqrt(0.5) * y_star * (15 * MASS / (16 * math.sqrt(0.5) * y_star)) ** 0.2
+    assert kn * delta - k * area(delta) == pytest.approx(MASS * g, rel=1e-6)
+    assert kn * delta > MASS * g * 1.1
