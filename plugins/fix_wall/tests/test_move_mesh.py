@@ -257,3 +257,35 @@ def test_a_sphere_on_a_plate_moving_at_constant_velocity_feels_the_force_of_a_fi
     np.testing.assert_allclose(sim.x[0, :2], np.array([0.2, 0.1]) + 0.4 * np.array(velocity[:2]), atol=1e-9)
     travelled = 0.4 * np.linalg.norm(velocity)
     assert sim.fixes["w"].builds == 1 + int(travelled / (0.5 * sim.neighbor.skin))
+
+
+def test_moving_meshes_and_their_walls_continue_through_a_restart_file(data, tmp_path):
+    """rotate + wiggle on a mesh/surface/stress floor under a wall/gran model with spheres resting on
+    it: 30 steps, write_restart, read_restart, 20 steps is the 50-step run, vertices, particles and
+    floor force alike (the motions' clocks and the contact histories are in the file)."""
+    from pdps_core.testing import restart_round_trip
+    setup = f"""
+        atom_style granular
+        boundary f f f
+        region box block -4 4 -4 4 -2 4
+        create_box 1 box
+        create_atoms 1 single 0.3 0.1 0.4995
+        create_atoms 1 single -0.4 -0.3 0.4998
+        set type 1 diameter 1 density 1
+        fix m1 all property/global youngsModulus peratomtype 1.0e5
+        fix m2 all property/global poissonsRatio peratomtype 0.3
+        fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+        fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+        fix floor all mesh/surface/stress file {data}/square.stl scale 2
+        fix spin all move/mesh mesh floor rotate origin 0 0 0 axis 0 0 1 period 3.0
+        fix shake all move/mesh mesh floor wiggle amplitude 0 0 0.002 period 0.05
+        fix w all wall/gran model hertz tangential history mesh n_meshes 1 meshes floor
+        fix 1 all nve/sphere
+        fix 2 all gravity 10 vector 0 0 -1
+        timestep 0.001
+    """
+    straight, resumed = restart_round_trip(tmp_path, setup, 30, 20)
+    np.testing.assert_array_equal(resumed.fixes["floor"].vertices, straight.fixes["floor"].vertices)
+    np.testing.assert_array_equal(resumed.x, straight.x)
+    np.testing.assert_array_equal(resumed.fixes["floor"].vector(resumed), straight.fixes["floor"].vector(straight))
+    assert straight.fixes["floor"].vector(straight)[2] < 0
