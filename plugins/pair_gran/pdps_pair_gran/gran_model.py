@@ -179,6 +179,66 @@ def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, 
     return -1
 
 
+@njit(cache=True)
+def gran_model_contacts(x, v, omega, radius, rmass, type_, mask, tag, offsets, neighbors, nlocal, models, table,
+                        charvel, nktv2p, freeze_bit, dt, partner, history, groupbit, rows, force_out, tangential_out,
+                        hist_out, n, vtr, wr, hist, force, tangential, roll):
+    """Every contact of the half list whose two particles are in ``groupbit``, evaluated as the
+    setup force computation does (nothing stored): returns how many; their rows (i, j), forces on
+    i, tangential parts and history values (as i sees them) into the ``*_out`` arrays."""
+    count = 0
+    width = len(hist)
+    for i in range(nlocal):
+        if not mask[i] & groupbit:
+            continue
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            if not mask[j] & groupbit:
+                continue
+            delx = x[i, 0] - x[j, 0]
+            dely = x[i, 1] - x[j, 1]
+            delz = x[i, 2] - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            radsum = radius[i] + radius[j]
+            if rsq >= radsum * radsum or rsq == 0.0:
+                continue
+            r = math.sqrt(rsq)
+            n[0] = delx / r
+            n[1] = dely / r
+            n[2] = delz / r
+            arm_i = radius[i] - 0.5 * (radsum - r)
+            arm_j = radius[j] - 0.5 * (radsum - r)
+            v_n = (v[i, 0] - v[j, 0]) * n[0] + (v[i, 1] - v[j, 1]) * n[1] + (v[i, 2] - v[j, 2]) * n[2]
+            w0 = arm_i * omega[i, 0] + arm_j * omega[j, 0]
+            w1 = arm_i * omega[i, 1] + arm_j * omega[j, 1]
+            w2 = arm_i * omega[i, 2] + arm_j * omega[j, 2]
+            vtr[0] = v[i, 0] - v[j, 0] - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+            vtr[1] = v[i, 1] - v[j, 1] - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+            vtr[2] = v[i, 2] - v[j, 2] - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+            for d in range(3):
+                wr[d] = omega[i, d] - omega[j, d]
+            m_eff = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
+            if mask[i] & freeze_bit:
+                m_eff = rmass[j]
+            if mask[j] & freeze_bit:
+                m_eff = rmass[i]
+            slot = find_slot(partner, i, tag[j])
+            for d in range(width):
+                hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
+            for d in range(width):
+                hist_out[count, d] = hist[d]
+            liggghts.liggghts_contact(models, False, table, type_[i], type_[j], r, radius[i], radius[j], rmass[i],
+                                      rmass[j], m_eff, n, v_n, vtr, wr, charvel, nktv2p, dt, False, hist, force,
+                                      tangential, roll)
+            rows[count, 0] = i
+            rows[count, 1] = j
+            for d in range(3):
+                force_out[count, d] = force[d]
+                tangential_out[count, d] = tangential[d]
+            count += 1
+    return count
+
+
 class PairGranModel(PairGran):
     name = "gran"
     usage = ("pair_style gran model hertz|hooke tangential history|no_history [rolling_friction off|cdt|epsd|epsd2] "
@@ -248,6 +308,27 @@ class PairGranModel(PairGran):
             rate = kn / m_eff - (gamma_n / (2.0 * m_eff)) ** 2
             shortest = min(shortest, math.pi / math.sqrt(rate) if rate > 0 else math.pi * math.sqrt(m_eff / kn))
         return {"rayleigh": None, "hertz": shortest if math.isfinite(shortest) else None, "contact": shortest}
+
+    def contacts(self, sim, group="all"):
+        """The contacts of owned particles with both particles in ``group``, as the forces of this
+        moment give them (velocities, spins and springs now; nothing advanced): a dict of arrays
+        over the contacts, "i" and "j" (particle rows, j possibly a ghost), "force" (on i),
+        "tangential" (its tangential part) and "history" (the HISTORY_WIDTH values as i sees them)
+        (compute pair/gran/local reads it)."""
+        p = sim.particles
+        nlist = sim.pair_list
+        size = max(len(nlist.neighbors), 1)
+        rows = np.zeros((size, 2), dtype=np.int64)
+        force, tangential = np.zeros((size, 3)), np.zeros((size, 3))
+        hist = np.zeros((size, liggghts.HISTORY_WIDTH))
+        a = p.arrays
+        count = gran_model_contacts(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["type"], a["mask"], a["tag"],
+                                    nlist.offsets, nlist.neighbors, p.nlocal, self.models, self.table, self.charvel,
+                                    sim.units.nktv2p, self.freeze_bit, sim.dt, self.history.partner,
+                                    self.history.values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
+                                    hist, self._scratch[0], self._scratch[1], self._scratch[2], *self._contact)
+        return {"i": rows[:count, 0], "j": rows[:count, 1], "force": force[:count],
+                "tangential": tangential[:count], "history": hist[:count]}
 
     def compute(self, sim, nlist, eflag, vflag):
         p = sim.particles

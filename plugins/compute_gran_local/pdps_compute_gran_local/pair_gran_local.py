@@ -1,0 +1,121 @@
+r"""Compute ``pair/gran/local``: one row per contact between two particles of the group, with what
+LIGGGHTS's compute pair/gran/local gives (its columns and their order), for ``dump local``.
+
+Columns, in this order whatever the order of the keywords (LIGGGHTS's):
+
+- ``pos`` (6): :math:`\mathbf{x}_i`, :math:`\mathbf{x}_j` (distance);
+- ``vel`` (6): :math:`\mathbf{v}_i`, :math:`\mathbf{v}_j` (velocity);
+- ``id`` (3): the ids of i and j, and 1 when the contact crosses a periodic boundary (0 else);
+- ``force`` (3): the contact force on i (force; :math:`-` on j);
+- ``torque`` (3): :math:`-\mathbf{n}\times\mathbf{F}_t`, the torque of the tangential force on i
+  divided by its lever arm (force; rolling friction torques are not included, as LIGGGHTS);
+- ``history`` (6 with pair gran: the tangential spring, then the epsd rolling spring torque, as i
+  sees them);
+- ``contactArea`` (1): :math:`\pi a^2`, the circle where the spheres intersect (area);
+- ``delta`` (1): the overlap :math:`R_i + R_j - r` (distance);
+- ``heatFlux`` (1): the conductive heat flux into i, :math:`h(T_j - T_i)` of fix heat/gran
+  (energy/time; needs that fix).
+
+Without keywords: all but delta and heatFlux (LIGGGHTS's default). The forces are those of the
+moment the compute is read (current velocities, spins and springs; nothing advanced), as LIGGGHTS
+evaluates the pair style again for it; ``dump local`` reads them at its output steps. Rows hold
+the contacts of owned particles i (each contact once over all ranks), in no fixed order.
+
+Syntax::
+
+    compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta]
+                                     [heatFlux]
+
+Needs ``pair_style gran``. Example::
+
+    compute cpgl all pair/gran/local pos id force contactArea
+    dump contacts all local 1000 contacts.txt c_cpgl[1] c_cpgl[2] c_cpgl[3] c_cpgl[7] c_cpgl[8]
+"""
+
+import math
+
+import numpy as np
+
+from pdps_core.api import Compute, ScriptError, StyleArgs
+
+# keyword -> columns, in LIGGGHTS's order
+COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,
+           "heatFlux": 1}
+DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
+
+
+class ComputePairGranLocal(Compute):
+    name = "pair/gran/local"
+    usage = "compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta] [heatFlux]"
+
+    class Args(StyleArgs):
+        keywords: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        for word in args.keywords:
+            if word not in COLUMNS:
+                raise ScriptError(f"unknown keyword {word} (known: {', '.join(COLUMNS)})")
+        self.keywords = [k for k in COLUMNS if k in args.keywords] if args.keywords else list(DEFAULT)
+
+    def local(self, sim):
+        pair = sim.pair
+        if pair is None or not callable(getattr(pair, "contacts", None)):
+            raise ScriptError(f"compute {self.id} (pair/gran/local) needs pair_style gran")
+        found = pair.contacts(sim, self.group)
+        p = sim.particles
+        i, j = found["i"], found["j"]
+        xi, xj = p.x[i], p.x[j]
+        d = xi - xj
+        r = np.sqrt((d * d).sum(axis=1))
+        ri, rj = p.radius[i], p.radius[j]
+        blocks = []
+        for key in self.keywords:
+            if key == "pos":
+                blocks += [xi, xj]
+            elif key == "vel":
+                blocks += [p.v[i], p.v[j]]
+            elif key == "id":
+                blocks.append(np.column_stack([p.tag[i], p.tag[j], self._periodic(sim, xj)]))
+            elif key == "force":
+                blocks.append(found["force"])
+            elif key == "torque":
+                n = d / r[:, None]
+                blocks.append(-np.cross(n, found["tangential"]))
+            elif key == "history":
+                blocks.append(found["history"])
+            elif key == "contactArea":
+                blocks.append(-0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2)
+            elif key == "delta":
+                blocks.append(ri + rj - r)
+            else:
+                blocks.append(self._heat_flux(sim, i, j, r))
+        return np.column_stack([np.asarray(b, dtype=np.float64).reshape(len(i), -1) for b in blocks])
+
+    @staticmethod
+    def _periodic(sim, xj):
+        """1 where j is a periodic image: outside the box along a periodic axis."""
+        box = sim.box
+        flag = np.zeros(len(xj), dtype=bool)
+        for d in range(3):
+            if box.periodic[d]:
+                flag |= (xj[:, d] < box.lo[d]) | (xj[:, d] >= box.hi[d])
+        return flag.astype(np.float64)
+
+    def _heat_flux(self, sim, i, j, r):
+        heat = next((f for f in sim.fixes.values() if f.name in ("heat/gran", "heat/gran/conduction")), None)
+        if heat is None or getattr(heat, "conductivity", None) is None:
+            raise ScriptError(f"compute {self.id} (pair/gran/local): heatFlux needs a fix heat/gran (and a run)")
+        p = sim.particles
+        ri, rj = p.radius[i], p.radius[j]
+        ki, kj = heat.conductivity[p.type[i]], heat.conductivity[p.type[j]]
+        if heat.mode == 0:
+            area = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
+        elif heat.mode == 1:
+            area = np.full(len(i), heat.area_constant)
+        else:
+            area = math.pi * np.maximum(ri, rj) ** 2
+        with np.errstate(invalid="ignore", divide="ignore"):
+            h = np.where((ki > 0) & (kj > 0), 4 * ki * kj / (ki + kj) * np.sqrt(np.maximum(area, 0.0)), 0.0)
+        temp = p.arrays["Temp"]
+        return h * (temp[j] - temp[i])

@@ -1,0 +1,131 @@
+"""compute pair/gran/local and contact/atom on a chain of spheres: one row per contact with the
+pair style's own forces, torques, overlaps and areas; contacts counted per particle."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+
+D, RHO = 0.01, 2500.0
+
+
+def chain(extra=""):
+    """Spheres 1-2 and 2-3 overlapping by 1e-4 and 2e-4, 3-4 apart; 2 spinning, 3 moving."""
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(f"""
+atom_style granular
+boundary f f f
+units si
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 1 reg
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+fix m5 all property/global thermalConductivity peratomtype 5.
+fix m6 all property/global thermalCapacity peratomtype 10.
+pair_style gran model hertz tangential history
+pair_coeff * *
+create_atoms 1 single 0 0 0 units box
+create_atoms 1 single {D - 1e-4!r} 0 0 units box
+create_atoms 1 single {2 * D - 3e-4!r} 0.001 0 units box
+create_atoms 1 single {3 * D + 0.01!r} 0 0 units box
+set type 1 diameter {D} density {RHO}
+set atom 2 omega 0 0 30
+set atom 3 vy 0.2
+{extra}
+""")
+    return sim
+
+
+def test_rows_hold_the_pair_styles_contacts():
+    sim = chain("compute c all pair/gran/local pos vel id force torque history contactArea delta\nrun 0")
+    rows = sim.computes["c"].local(sim)
+    assert rows.shape == (2, 6 + 6 + 3 + 3 + 3 + 6 + 1 + 1)
+    p = sim.particles
+    ids = rows[:, 12:14].astype(int)
+    assert sorted(map(tuple, np.sort(ids, axis=1))) == [(1, 2), (2, 3)]
+    assert (rows[:, 14] == 0).all()
+    # forces: on each particle, the sum of its contacts' forces is the pair style's force
+    force = rows[:, 15:18]
+    for tag in (1, 2, 3, 4):
+        total = force[ids[:, 0] == tag].sum(axis=0) - force[ids[:, 1] == tag].sum(axis=0)
+        np.testing.assert_allclose(total, p.f[p.index_of_tag(tag)], rtol=1e-12, atol=1e-15)
+    # positions, velocities, overlap and intersection area of each row
+    for row, (a, b) in zip(rows, ids):
+        xi, xj = p.x[p.index_of_tag(a)], p.x[p.index_of_tag(b)]
+        np.testing.assert_array_equal(row[0:6], np.concatenate([xi, xj]))
+        np.testing.assert_array_equal(row[6:12], np.concatenate([p.v[p.index_of_tag(a)], p.v[p.index_of_tag(b)]]))
+        r = np.linalg.norm(xi - xj)
+        assert row[28] == pytest.approx(D - r, rel=1e-12)
+        assert row[27] == pytest.approx(math.pi * ((D / 2) ** 2 - (r / 2) ** 2), rel=1e-9)
+    # torque column: the tangential force's torque on i over its lever arm R - delta/2, which both
+    # spheres of a contact feel; sphere 1 has one contact and no rolling friction: its whole torque
+    k = int(np.flatnonzero((ids == 1).any(axis=1))[0])
+    arm = D / 2 - 0.5 * rows[k, 28]
+    torque_1 = sim.particles.torque[p.index_of_tag(1)]
+    assert np.abs(torque_1).max() > 0
+    np.testing.assert_allclose(arm * rows[k, 18:21], torque_1, rtol=1e-12)
+
+
+def test_default_columns_and_heat_flux():
+    sim = chain("fix heat all heat/gran initial_temperature 300\nset atom 1 property/atom Temp 400\n"
+                "compute c all pair/gran/local\ncompute h all pair/gran/local id heatFlux\nrun 0")
+    assert sim.computes["c"].local(sim).shape == (2, 6 + 6 + 3 + 3 + 3 + 6 + 1)
+    rows = sim.computes["h"].local(sim)
+    p = sim.particles
+    flux_into_1 = sum(row[3] if row[0] == 1 else -row[3] for row in rows if 1 in row[:2])
+    assert flux_into_1 == pytest.approx(p.arrays["heatFlux"][p.index_of_tag(1)], rel=1e-12)
+    assert flux_into_1 < 0
+
+
+def test_contact_atom_counts_touching_neighbors(tmp_path):
+    path = tmp_path / "c.dump"
+    sim = chain(f"compute c all contact/atom\ngroup few id 1 2\ncompute g few contact/atom\n"
+                f"dump d all custom 1 {path} id c_c c_g\nrun 0")
+    rows = sorted(tuple(int(float(w)) for w in line.split()) for line in path.read_text().splitlines()[-4:])
+    assert rows == [(1, 1, 1), (2, 2, 2), (3, 1, 0), (4, 0, 0)]
+
+
+@pytest.mark.parametrize("line, message", [
+    ("compute c all pair/gran/local force velocity",
+     "compute: unknown keyword velocity (known: pos, vel, id, force, torque, history, contactArea, delta, heatFlux)"),
+])
+def test_bad_lines(pdps_cli, line, message):
+    done = pdps_cli("atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n" + line + "\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:4: {message}"
+
+
+def test_a_contact_across_a_periodic_boundary():
+    """Spheres touching through the periodic x faces: counted once each (the ghost's count summed
+    onto its owner), and flagged periodic in the id columns."""
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(f"""
+atom_style granular
+boundary p f f
+units si
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 1 reg
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+create_atoms 1 single -0.0451 0 0 units box
+create_atoms 1 single 0.0451 0 0 units box
+create_atoms 1 single 0 0 0 units box
+set type 1 diameter {D} density {RHO}
+compute c all contact/atom
+compute l all pair/gran/local id delta
+run 0
+""")
+    counts = sim.computes["c"].peratom(sim)[np.argsort(sim.tag)]
+    assert list(counts) == [1.0, 1.0, 0.0]
+    rows = sim.computes["l"].local(sim)
+    assert rows.shape == (1, 4)
+    assert rows[0, 2] == 1.0
+    assert rows[0, 3] == pytest.approx(D - (0.1 - 2 * 0.0451), rel=1e-9)
