@@ -169,7 +169,8 @@ def _set_one(sim, key, values, selected):
     if key in ("property/atom", "property/peratom"):
         # LIGGGHTS's per-atom properties that fixes make (heat/gran's Temp, heatSource)
         name = values[0]
-        if name in ("x", "v", "f", "tag", "type", "mask", "image") or not p.has(name) or p.arrays[name].ndim != 1:
+        core = ("x", "v", "f", "tag", "type", "mask", "image", "radius", "rmass", "omega", "torque", "q", "molecule")
+        if name in core or not p.has(name) or p.arrays[name].ndim != 1:
             raise ScriptError(f"set {key}: {name} is not a per-atom property of one value a fix made (heat/gran "
                               "makes Temp and heatSource)")
         p.arrays[name][rows] = _values(sim, values[1], name, selected)
