@@ -14,14 +14,16 @@ triangle cells, with the cell data chosen by the VALUE words (LIGGGHTS's names):
   triangle per unit area (pressure units);
 - ``stresscomponents``: :math:`\mathbf{F}/A` (3 values, written as ``stress_components``);
 
-  both need a fix mesh/surface/stress among the meshes written, and are 0 on the triangles of the
-  plain mesh/surface meshes written beside it (they sum no forces);
+- ``wear``: the Finnie wear of each triangle so far (fix mesh/surface/stress ... wear finnie);
+
+  these need a fix mesh/surface/stress among the meshes written, and are 0 on the triangles of
+  meshes that do not sum them (plain mesh/surface, or no ``wear finnie``);
 - ``id``: the triangle's index in its mesh file, from 0; ``area``: its area; ``vel``: the wall
   velocity at its centre (velocity units; from fix move/mesh or a conveyor);
 - ``owner``: the rank writing it (always 0: rank 0 gathers every mesh).
 
 ``output face`` is the default and only form (per-triangle values; LIGGGHTS's ``interpolate`` is not
-supported), ``wear`` is refused (no wear model). As pdps's dump vtk, each file is written under a
+supported). As pdps's dump vtk, each file is written under a
 temporary name and renamed, and ``STEM.vtk.series`` lists the frames for ParaView.
 
 Example::
@@ -37,7 +39,7 @@ from pdps_core.api import Dump, ScriptError, StyleArgs, param
 from .frames import Pattern, Series, replace_atomically
 from .vtk import series_json
 
-VALUES = ("stress", "stresscomponents", "id", "area", "vel", "owner")
+VALUES = ("stress", "stresscomponents", "wear", "id", "area", "vel", "owner")
 
 
 class DumpMeshVTK(Dump):
@@ -64,8 +66,6 @@ class DumpMeshVTK(Dump):
                     raise ScriptError(f"output {got} is not supported (output face only)")
                 k += 2
                 continue
-            if word == "wear":
-                raise ScriptError("wear is not supported (no wear model)")
             if word in VALUES:
                 self.values.append(word)
             else:
@@ -88,7 +88,7 @@ class DumpMeshVTK(Dump):
         meshes = self.meshes(sim)
         if not meshes:
             raise ScriptError(f"dump {self.id} ({self.name}): there is no fix mesh/surface to write")
-        stressed = [name for name in self.values if name in ("stress", "stresscomponents")]
+        stressed = [name for name in self.values if name in ("stress", "stresscomponents", "wear")]
         if stressed and not any(hasattr(mesh, "face_data") for mesh in meshes):
             raise ScriptError(f"dump {self.id} ({self.name}): {stressed[0]} needs a fix mesh/surface/stress "
                               f"(fix {meshes[0].id} is a {meshes[0].name})")
@@ -117,6 +117,8 @@ class DumpMeshVTK(Dump):
         self.series.add(path, sim.time)
 
     def _value(self, sim, mesh, name, faces, area):
+        if name == "wear":
+            return faces["wear"] if faces is not None and "wear" in faces else np.zeros(len(mesh.triangles))
         if name in ("stress", "stresscomponents"):
             force = faces["force"] if faces is not None else np.zeros((len(mesh.triangles), 3))
             if name == "stress":

@@ -466,9 +466,12 @@ def triangle_contacts(xi, yi, zi, r, start, end, candidates, vertices, triangles
 
 
 @njit(cache=True)
-def tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque):
-    """Add the forces on the wall (minus each contact's force on the particle) to their triangles,
-    and their torque about ``reference``."""
+def tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal, ptype,
+                      dt, reference, face_force, mesh_torque, wear_k, face_wear, face_area):
+    """Add the forces on the wall (minus each contact's force on particle i) to their triangles,
+    and their torque about ``reference``; with ``wear_k`` (Finnie's k per particle type, empty: no
+    wear) each contact's wear 2 k |v_rel| |F| f(gamma) dt / A to its triangle
+    (fix mesh/surface/stress)."""
     for c in range(count):
         t = key[c]
         fx, fy, fz = -contact_force[c, 0], -contact_force[c, 1], -contact_force[c, 2]
@@ -481,13 +484,32 @@ def tally_wall_forces(count, key, touch, contact_force, reference, face_force, m
         mesh_torque[0] += ry * fz - rz * fy
         mesh_torque[1] += rz * fx - rx * fz
         mesh_torque[2] += rx * fy - ry * fx
+        if len(wear_k) == 0:
+            continue
+        # Finnie: only a particle moving towards its contact point wears the wall
+        u0 = v[i, 0] - wall_velocity[c, 0]
+        u1 = v[i, 1] - wall_velocity[c, 1]
+        u2 = v[i, 2] - wall_velocity[c, 2]
+        towards = ((touch[c, 0] - x[i, 0]) * u0 + (touch[c, 1] - x[i, 1]) * u1
+                   + (touch[c, 2] - x[i, 2]) * u2)
+        speed = math.sqrt(u0 * u0 + u1 * u1 + u2 * u2)
+        if towards < 0.0 or speed == 0.0:
+            continue
+        sin_g = min(abs(u0 * face_normal[t, 0] + u1 * face_normal[t, 1] + u2 * face_normal[t, 2]) / speed, 1.0)
+        cos_g = math.sqrt(1.0 - sin_g * sin_g)
+        if 3.0 * sin_g <= cos_g:
+            shape = 2.0 * sin_g * cos_g - 3.0 * sin_g * sin_g
+        else:
+            shape = cos_g * cos_g / 3.0
+        force = math.sqrt(fx * fx + fy * fy + fz * fz)
+        face_wear[t] += 2.0 * wear_k[ptype[i]] * speed * force * shape * dt / face_area[t]
 
 
 @njit(cache=True)
 def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
                      mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update,
                      velocity, spin, pivot, belt, conveyor, tally, reference, face_force,
-                     mesh_torque):
+                     mesh_torque, wear_k, face_wear, face_area):
     """Contacts of the chosen particles with their candidate triangles (module docstring), then the
     forces, with the law of each particle's type (``laws``: rows of ``wall_contact.LAW_COLUMNS``).
     With ``tally`` the forces on the wall are summed per triangle into ``face_force`` and their
@@ -527,7 +549,9 @@ def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles,
         if not ok:
             return i
         if tally:
-            tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque)
+            tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal,
+                              ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear,
+                              face_area)
     return -1
 
 
@@ -617,8 +641,9 @@ class MeshContacts:
 
     def forces(self, sim, laws, update, tally=None):
         """Wall forces on the group's particles with ``laws`` = (model, per-type law table);
-        ``tally``: None, or (reference point, face_force (m x 3), mesh_torque (3,)) to which the
-        forces on the wall are added."""
+        ``tally``: None, or what the forces on the wall are added to (fix mesh/surface/stress's
+        tally(): reference point, face_force (m x 3), mesh_torque (3,), wear_k, face_wear,
+        face_area)."""
         p = sim.particles
         mesh = self.surface
         self.candidates_now(sim)
@@ -627,6 +652,8 @@ class MeshContacts:
         omega = p.omega if rotation else p.v
         torque = p.torque if rotation else p.f
         model, table = laws
+        if tally is not None and not update:
+            tally = no_wear(tally)
         bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, p.type, mesh.vertices,
                                mesh.triangles, mesh.face_normal, radius, observables.masses(sim),
                                p.v, omega, p.f, torque, rotation, self.history.partner,
@@ -637,7 +664,12 @@ class MeshContacts:
             self.history.overflowed(p.tag[bad])
 
 
-NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3))
+NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3), np.zeros(0), np.zeros(0), np.zeros(0))
+
+
+def no_wear(tally):
+    """The tally without wear: a run's setup force computation wears nothing."""
+    return tally[:3] + (NO_TALLY[3],) + tally[4:]
 
 
 # ---- the style ----------------------------------------------------------------------------------

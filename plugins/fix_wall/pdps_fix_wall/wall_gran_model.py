@@ -72,7 +72,7 @@ from numba import njit
 from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs
 from pdps_granular_contact import liggghts
 
-from .mesh import MeshContacts, mesh_fix, tally_wall_forces, triangle_contacts
+from .mesh import NO_TALLY, MeshContacts, mesh_fix, no_wear, tally_wall_forces, triangle_contacts
 from .wall_contact import forget_far, read_numbers, wall_slots
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
@@ -163,7 +163,8 @@ def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity
 def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radius, rmass, ptype,
                          vertices, triangles, face_normal, velocity, spin, pivot, belt, conveyor,
                          wall_type, models, table, charvel, nktv2p, dt, update, partner, values,
-                         tally, reference, face_force, mesh_torque, log, logged):
+                         tally, reference, face_force, mesh_torque, wear_k, face_wear, face_area,
+                         log, logged):
     """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form),
     logged as liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact
     history overflowed."""
@@ -200,7 +201,9 @@ def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radi
                                       logged):
             return i
         if tally:
-            tally_wall_forces(count, key, touch, contact_force, reference, face_force, mesh_torque)
+            tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal,
+                              ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear,
+                              face_area)
     return -1
 
 
@@ -483,14 +486,15 @@ class FixWallGranModel(Fix):
         for number, (mesh, contacts) in enumerate(zip(self.meshes, self.mesh_contacts)):
             near, offsets, triangles = contacts.candidates_now(sim)
             tally = None if log else mesh.tally()
-            reference, face_force, mesh_torque = tally if tally is not None else NO_TALLY
+            if tally is not None and not update:
+                tally = no_wear(tally)
             history = contacts.history
             values = history.values.copy() if log else history.values
             rows, logged = self._log_buffer(offsets[-1] if log else 0)
             bad = liggghts_mesh_forces(near, offsets, triangles, *common, mesh.vertices, mesh.triangles,
                                        mesh.face_normal, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
                                        mesh.conveyor, mesh.material_type, *law, history.partner, values,
-                                       tally is not None, reference, face_force, mesh_torque, rows, logged)
+                                       tally is not None, *(NO_TALLY if tally is None else tally), rows, logged)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs.append((number, rows[:logged[0]]))
@@ -502,7 +506,6 @@ class FixWallGranModel(Fix):
         return np.zeros((most, len(LOG_COLUMNS))), np.zeros(1, dtype=np.int64)
 
 
-NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3))
 # a contact log's columns (compute wall/gran/local reads them): t is the torque of the tangential
 # force alone (without rolling friction)
 LOG_COLUMNS = (("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",

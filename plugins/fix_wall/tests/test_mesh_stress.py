@@ -103,7 +103,7 @@ def test_stress_off_sums_nothing(data):
 
 @pytest.mark.parametrize("words, message", [
     ("stress maybe", "stress must be on or off (got maybe)"),
-    ("wear finnie", "wear finnie is not supported (wear off only)"),
+    ("wear archard", "wear must be finnie or off (got archard)"),
     ("reference_point 0 0", "keyword reference_point needs 3 value(s) (got 0 0)"),
 ])
 def test_bad_stress_words(data, words, message):
@@ -170,7 +170,7 @@ def test_dump_mesh_vtk_writes_the_meshes_with_liggghts_values(data, tmp_path, st
 
 @pytest.mark.parametrize("words, message", [
     ("stress cad", "stress needs a fix mesh/surface/stress (fix cad is a mesh/surface)"),
-    ("wear", "wear is not supported"),
+    ("wear", "wear needs a fix mesh/surface/stress (fix cad is a mesh/surface)"),
     ("output interpolate", "output interpolate is not supported (output face only)"),
     ("stress nothere", "nothere is neither a value"),
 ])
@@ -181,3 +181,44 @@ def test_bad_dump_mesh_vtk(data, tmp_path, words, message):
         sim.command(f"dump d all mesh/vtk 10 {tmp_path}/m*.vtk {words}")
         sim.command("run 0")
     assert message in str(info.value)
+
+
+@pytest.mark.parametrize("velocity", [(1.0, 0.0, -0.2), (1.0, 0.0, -1.0), (0.0, 0.3, -0.5)],
+                         ids=["grazing", "45-degrees", "steep"])
+def test_finnie_wear_of_a_sphere_driven_into_the_floor(data, velocity):
+    """A sphere held at a fixed overlap with a fixed velocity towards the floor (the force on the
+    face constant) wears its triangle by 2 k |v| |F| f(gamma) dt / A a step, Finnie's f: sin 2g -
+    3 sin^2 g for tan g <= 1/3, cos^2 g / 3 above; the other triangle not at all, and the setup
+    force computation not either. k_finnie of the type pair (particle 1, mesh 2) = 0.3."""
+    v = np.array(velocity)
+    sim = make_box(f"""
+        fix m all property/global k_finnie peratomtypepair 2 0.1 0.3 0.3 0.2
+        fix floor all mesh/surface/stress file {data}/square.stl type 2 wear finnie
+        create_particle 1 single 0.4 -0.3 0.49 diameter 1 density 1
+        velocity all set {v[0]} {v[1]} {v[2]}
+        fix 1 all test/nve_sphere translate no rotate no
+        fix w all wall/mesh mesh floor model lsd {E} {KN} 0
+        timestep 0.001
+        run 0
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere", ntypes=2)
+    floor = sim.fixes["floor"]
+    assert not np.any(floor.face_data(sim)["wear"])
+    sim.command("run 25")
+    speed = np.linalg.norm(v)
+    sin_g = abs(v[2]) / speed
+    cos_g = math.sqrt(1 - sin_g ** 2)
+    shape = 2 * sin_g * cos_g - 3 * sin_g ** 2 if 3 * sin_g <= cos_g else cos_g ** 2 / 3
+    force = np.linalg.norm(floor.face_data(sim)["force"][0])
+    expected = 25 * 0.001 * 2 * 0.3 * speed * force * shape / 2.0
+    wear = floor.face_data(sim)["wear"]
+    assert wear[0] == pytest.approx(expected, rel=1e-12)
+    assert wear[1] == 0.0 and expected > 0
+
+
+def test_wear_needs_k_finnie(data):
+    sim = make_box(f"""
+        fix floor all mesh/surface/stress file {data}/square.stl wear finnie
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    with pytest.raises(ScriptError, match="fix floor \\(wear finnie\\) needs k_finnie: fix ID all property/global "
+                                          "k_finnie peratomtypepair 1 V11 ... V11"):
+        sim.command("run 0")
