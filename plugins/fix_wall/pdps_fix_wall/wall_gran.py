@@ -70,8 +70,20 @@ with gamma_n = 0 the tangential damping is m_i gamma_t (LAMMPS's fix computes ga
 gives NaN); a particle whose centre lies exactly on the wall feels no force (no normal). The
 ``region`` wall style and ``contacts``/``temperature`` keywords of LAMMPS are not supported.
 
-LIGGGHTS's spelling, ``fix ID GROUP wall/gran model ...`` (primitive and mesh walls with the
-material of fix property/global), is the style of pdps_fix_wall.wall_gran_model.
+LIGGGHTS's spelling (the first word ``model``) is a style of its own, pdps_fix_wall.wall_gran_model,
+whose docstring gives the physics: LIGGGHTS's contact models of pair gran (hertz, hooke, rolling
+friction, cohesion) with the wall as a body of infinite mass and radius, the material of the type
+pair (particle, wall) from fix property/global::
+
+    fix ID GROUP wall/gran model hertz|hooke tangential history|no_history
+        [rolling_friction off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2]
+        [tangential_damping on|off] [limitForce on|off]
+        primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 [shear DIM V]
+      | mesh n_meshes N meshes MESH_ID ...   (fix mesh/surface IDs; moved by fix move/mesh)
+
+Planes are touched from either side, cylinders from inside and outside (axis through (y, z) for
+xcylinder, (z, x) for ycylinder, (x, y) for zcylinder: LIGGGHTS's order); ``shear DIM V`` slides a
+plane along DIM, or a cylinder along its axis, or turns it about its axis at V rad/time.
 
 Example (the benchmark kit's in.gran_box)::
 
