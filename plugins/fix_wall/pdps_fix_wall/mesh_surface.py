@@ -42,7 +42,10 @@ Example::
     fix cad all mesh/surface file hopper.stl type 2 scale 0.001 move 0 0 0.1
 """
 
+import math
+
 import numpy as np
+from numba import njit
 
 from pdps_core.api import Fix, ScriptError, StyleArgs
 
@@ -57,6 +60,23 @@ REFUSED = {
     "curvature": "contact history passes between faces whose normals are within about 6 degrees",
     "temperature": "pdps has no heat conduction with walls",
 }
+
+
+@njit(cache=True)
+def place_vertices(placed, rotation, shift, triangles, vertices, face_normal):
+    """vertices = rotation placed + shift, and the faces' unit normals, in place (no temporaries:
+    a moving mesh is placed at every step)."""
+    for k in range(placed.shape[0]):
+        for d in range(3):
+            vertices[k, d] = (rotation[d, 0] * placed[k, 0] + rotation[d, 1] * placed[k, 1]
+                              + rotation[d, 2] * placed[k, 2] + shift[d])
+    for t in range(triangles.shape[0]):
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        ux, uy, uz = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
+        wx, wy, wz = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
+        nx, ny, nz = uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx
+        size = math.sqrt(nx * nx + ny * ny + nz * nz)
+        face_normal[t, 0], face_normal[t, 1], face_normal[t, 2] = nx / size, ny / size, nz / size
 
 
 def skew_axis(matrix):
@@ -90,7 +110,7 @@ class FixMeshSurface(Fix):
         self.file = given["file"][0]
         self.material_type = self._read_type(sim, given)
         self.placed, self.triangles = placed_mesh(sim, given, transforms)
-        self.vertices = self.placed
+        self.vertices = self.placed.copy()
         self.face_normal = face_normals(self.vertices, self.triangles)
         self.velocity, self.spin, self.pivot = np.zeros(3), np.zeros(3), np.zeros(3)
         self.belt = np.zeros(3)
@@ -150,8 +170,7 @@ class FixMeshSurface(Fix):
             r_k, d_k, rdot_k, ddot_k = mover.pose()
             turning, drift = rdot_k @ rotation + r_k @ turning, rdot_k @ shift + r_k @ drift + ddot_k
             rotation, shift = r_k @ rotation, r_k @ shift + d_k
-        self.vertices = np.ascontiguousarray(self.placed @ rotation.T + shift)
-        self.face_normal = face_normals(self.vertices, self.triangles)
+        place_vertices(self.placed, rotation, shift, self.triangles, self.vertices, self.face_normal)
         self.velocity = drift
         self.spin = skew_axis(turning @ rotation.T)
         self.pivot = shift

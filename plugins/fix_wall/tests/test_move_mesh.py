@@ -289,3 +289,25 @@ def test_moving_meshes_and_their_walls_continue_through_a_restart_file(data, tmp
     np.testing.assert_array_equal(resumed.x, straight.x)
     np.testing.assert_array_equal(resumed.fixes["floor"].vector(resumed), straight.fixes["floor"].vector(straight))
     assert straight.fixes["floor"].vector(straight)[2] < 0
+
+
+@pytest.mark.parametrize("conveyor, expected", [
+    ("surface_vel 0.5 0 0", lambda x: np.array([0.5, 0.0, 0.0])),
+    ("surface_ang_vel origin 0 0 0 axis 0 0 2 omega 1.0", lambda x: np.cross([0, 0, 1.0], [x[0], x[1], 0.0])),
+], ids=["surface_vel", "surface_ang_vel"])
+def test_a_conveyor_mesh_drags_a_resting_sphere_to_its_surface_velocity(data, conveyor, expected):
+    """mesh/surface with surface_vel (a belt) or surface_ang_vel (a turning surface, as a shear cell):
+    the mesh stays put, and a sphere that cannot spin, resting on it, is dragged by friction to the
+    surface's velocity where it touches."""
+    g = 10.0
+    sim = make_box(f"""
+        fix cad all mesh/surface file {data}/square.stl scale 3 {conveyor}
+        create_particle 1 single 0.6 0.0 {0.5 - MASS * g / KN} diameter 1 density 1
+        fix 1 all test/nve_sphere rotate no
+        fix 2 all test/wall_gravity 0 0 {-g}
+        fix w all wall/mesh mesh cad model lsd {E_REST} {KN} 0.5
+        timestep 0.0005
+    """, box="-10 10 -10 10 -10 10", particle_style="sphere")
+    sim.command("run 1200")
+    np.testing.assert_allclose(sim.v[0], expected(sim.x[0]), atol=0.01 * 0.6)
+    np.testing.assert_array_equal(sim.fixes["cad"].vertices, sim.fixes["cad"].placed)
