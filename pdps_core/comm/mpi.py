@@ -300,9 +300,13 @@ class MPIComm:
             send, recv = self._buffers(width)
             send_counts, send_displ, recv_counts, recv_displ = self._layout(width)
             _pack_rows(array, index, self._send_shift if name == "x" else _NO_SHIFT, send)
+            ghosts = array[p.nlocal:]
+            # the ghost rows of a row-major per-atom array are one block: received in place
+            target = ghosts.reshape(-1) if ghosts.flags.c_contiguous else recv
             self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
-                                 [recv, (recv_counts, recv_displ), self.MPI.DOUBLE])
-            array[p.nlocal:] = recv.reshape(p.nghost, width)
+                                 [target, (recv_counts, recv_displ), self.MPI.DOUBLE])
+            if target is recv:
+                ghosts[...] = recv.reshape(p.nghost, width)
 
     def _forward_any(self, p, name):
         array = p.arrays[name]

@@ -96,6 +96,16 @@ def _periodic_images(x, nlocal, lo, hi, cutghost, periodic, source, shift):
     return n - nlocal
 
 
+def _ghost_estimate(nlocal, box, cutghost, periodic):
+    """Room for the ghosts of a uniform fluid, a tenth more: the layer of width cutghost around the
+    box along its periodic axes, at the particles' density."""
+    grown = 1.0
+    for d in range(3):
+        if periodic[d]:
+            grown *= 1.0 + 2.0 * cutghost / box.length[d]
+    return int(1.1 * nlocal * (grown - 1.0)) + 64
+
+
 def _vector(array):
     return array.ndim == 2 and array.shape[1] == 3 and array.dtype == np.float64
 
@@ -136,7 +146,7 @@ class SerialComm:
                                          self._shift)
                 if count >= 0:
                     break
-                size = 2 * len(self._source) + nlocal + 16
+                size = max(2 * len(self._source), _ghost_estimate(nlocal, box, cutghost, periodic))
                 self._source, self._shift = np.empty(size, dtype=np.int64), np.empty((size, 3))
         self.ghost_source = self._source[:count]
         self.ghost_shift = self._shift[:count]

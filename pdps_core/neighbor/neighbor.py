@@ -37,6 +37,8 @@ ONE_DEFAULT = 2000
 # Rows of neighbors in a list: 32 bits (half the memory and the bandwidth of 64; a rank holds fewer
 # than 2^31 particles and ghosts).
 NEIGHBOR_INDEX = np.int32
+# bin heads, bin of each particle, particles in bin order: rows and bins of one rank fit in 32 bits
+BIN_INDEX = np.int32
 # Direct mode (NeighborList) from the next build on when at least DIRECT_AT of the last 16 rebuild
 # decisions rebuilt: a list that lives one step costs more to write and read than the pairs it saves.
 HISTORY_MASK = 0xFFFF
@@ -127,9 +129,9 @@ class Neighbor:
         self.excluded_type_pairs = []   # neigh_modify exclude type I J
         self.excluded_group_pairs = []  # neigh_modify exclude group G1 G2 (group names)
         self.excluded_molecules = []    # neigh_modify exclude molecule/intra|inter G: (group, "intra"|"inter")
-        self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=np.int64)
+        self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=BIN_INDEX)
         self._last_grid = {}
-        self._direct = {name: np.zeros(0, dtype=np.int64) for name in ("cell", "start", "ghost_start", "order", "slot")}
+        self._direct = {name: np.zeros(0, dtype=BIN_INDEX) for name in ("cell", "start", "ghost_start", "order", "slot")}
         self.history = 0            # the last rebuild decisions, one bit each (1: rebuilt)
         self.skin_trial = None      # neighbor auto: a SkinTrial until it has chosen
         self.moved_at_build = 0.0   # the largest move since the last build seen at a rebuild (the trial's)
@@ -296,7 +298,7 @@ class Neighbor:
                 binned = binned or self._bin(p, box)
                 self._fill(nlist, p, binned, self.skin)
         if binned is None and any(nlist.direct for nlist in lists) and len(self._cell):
-            self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=np.int64)
+            self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=BIN_INDEX)
         self.builds += 1
         self.refresh(p, box)
 
@@ -319,13 +321,13 @@ class Neighbor:
         bins = self._direct
         ncells = int(np.prod(nbins))
         if len(bins["start"]) < ncells + 1:
-            bins["start"] = np.empty(ncells + 1, dtype=np.int64)
-            bins["ghost_start"] = np.empty(ncells + 1, dtype=np.int64)
+            bins["start"] = np.empty(ncells + 1, dtype=BIN_INDEX)
+            bins["ghost_start"] = np.empty(ncells + 1, dtype=BIN_INDEX)
         if len(bins["cell"]) < p.nall:
             size = int(1.25 * p.nall) + 16
-            bins["cell"], bins["order"] = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+            bins["cell"], bins["order"] = np.empty(size, dtype=BIN_INDEX), np.empty(size, dtype=BIN_INDEX)
         if len(bins["slot"]) < p.nlocal:
-            bins["slot"] = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
+            bins["slot"] = np.empty(int(1.25 * p.nlocal) + 16, dtype=BIN_INDEX)
         bin_into(p.x, p.nall, p.nlocal, lo, binsize, nbins, keep_off, bins["cell"], bins["start"],
                  bins["ghost_start"], bins["order"], bins["slot"])
         owned_lo_hi = extent(p.x, p.nlocal, p.nlocal)
@@ -354,13 +356,13 @@ class Neighbor:
         lo, binsize, nbins, keep_off = grid
         ncells = int(np.prod(nbins))
         if len(self._start) < ncells + 1:
-            self._start = np.empty(ncells + 1, dtype=np.int64)
-            self._ghost_start = np.empty(ncells + 1, dtype=np.int64)
+            self._start = np.empty(ncells + 1, dtype=BIN_INDEX)
+            self._ghost_start = np.empty(ncells + 1, dtype=BIN_INDEX)
         if len(self._cell) < p.nall:
             size = int(1.25 * p.nall) + 16
-            self._cell, self._order = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+            self._cell, self._order = np.empty(size, dtype=BIN_INDEX), np.empty(size, dtype=BIN_INDEX)
         if len(self._slot) < p.nlocal:
-            self._slot = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
+            self._slot = np.empty(int(1.25 * p.nlocal) + 16, dtype=BIN_INDEX)
         bin_into(p.x, p.nall, p.nlocal, lo, binsize, nbins, keep_off, self._cell, self._start,
                  self._ghost_start, self._order, self._slot)
         return grid

@@ -139,7 +139,7 @@ def read_data_file(path, particle_style):
                 if len(words) not in (width, width + 3):
                     fail(number, f"expected {width} or {width + 3} values per {particle_style} atom "
                                  f"(got {len(words)})")
-                atoms.append((number, words))
+                atoms.append(number)        # its words are split again below, one line at a time
             elif section in PAIR_SECTIONS:
                 width = 1 if section == "Pair Coeffs" else 2
                 if len(words) < width or not all(w.isdigit() for w in words[:width]):
@@ -177,7 +177,8 @@ def read_data_file(path, particle_style):
     charge = np.zeros(n)
     seen = {}
     at = {name: k for k, name in enumerate(columns)}
-    for k, (number, words) in enumerate(atoms):
+    for k, number in enumerate(atoms):
+        words = lines[number - 1].split("#")[0].split()
         try:
             tag, kind = int(words[at["id"]]), int(words[at["type"]])
             if "diameter" in at:
@@ -227,7 +228,7 @@ def read_data_file(path, particle_style):
         turns = np.floor((x[:, d] - lo[d]) / length[d]) + images[:, d]
         if n and np.abs(turns).max() > limits.MAX_IMAGE:
             k = int(np.argmax(np.abs(turns)))
-            fail(atoms[k][0], f"{axis} = {x[k, d]:g} is {abs(turns[k]):.3g} box lengths away: its image "
+            fail(atoms[k], f"{axis} = {x[k, d]:g} is {abs(turns[k]):.3g} box lengths away: its image "
                               "flag would not fit in 32 bits")
     per_atom = {name: values for name, values in (("molecule", molecule), ("q", charge)) if name in at}
     for number, words in pair_coeffs:

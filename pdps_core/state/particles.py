@@ -149,7 +149,7 @@ class Particles:
         """Room for ``rows`` particles in every buffer (the values of the current ones kept)."""
         if rows <= self._capacity():
             return
-        size = max(rows, int(1.25 * self._capacity()) + 16)
+        size = max(rows + rows // 8 + 16, int(1.25 * self._capacity()) + 16)
         used = self.nlocal + self.nghost
         for name, prop in self.properties.items():
             shape = (size, prop.width) if prop.width > 1 else (size,)
