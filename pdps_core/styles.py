@@ -481,7 +481,9 @@ class Fix(Style):
     Inserting and deleting particles: set ``self.next_reneighbor`` to the step on which the fix
     will act (the same on every rank); that step rebuilds neighbor lists, and the fix's
     ``pre_exchange(sim)`` calls ``sim.add_particles`` / ``sim.delete_particles`` before particles
-    are wrapped, migrated and listed.
+    are wrapped, migrated and listed. A fix inserting spheres says in ``inserted_radius(type_)`` the
+    largest radius of that type it will insert: granular pair styles size their cutoffs by it
+    before the particles exist (LAMMPS's ``extract("radius")`` of fix pour).
     """
     kind = "fix"
     can_energy: ClassVar[bool] = False
@@ -502,6 +504,10 @@ class Fix(Style):
 
     def modify_param(self, sim, keyword, value):
         return False
+
+    def inserted_radius(self, type_):
+        """The largest radius of particles of type ``type_`` this fix will insert (0: none)."""
+        return 0.0
 
 
 class Compute(Style):
