@@ -287,8 +287,8 @@ class GranularPair(Pair):
         self.history = ContactHistory(self.sim, HISTORY_NAME, width=3, capacity=capacity)
 
     def extremes(self, ntypes):
-        """Largest radius and smallest mass of each type among the particles now present (0 and inf
-        for a type with none)."""
+        """Largest radius of each type among the particles now present or to be inserted by a fix,
+        and smallest mass among those present (0 and inf for a type with none)."""
         sim, p = self.sim, self.sim.particles
         n = p.nlocal
         types, radius, mass = p.type[:n], p.radius[:n], p.rmass[:n]
@@ -297,6 +297,7 @@ class GranularPair(Pair):
         for t in range(1, ntypes + 1):
             chosen = types == t
             max_radius[t] = sim.comm.max(float(radius[chosen].max()) if chosen.any() else 0.0)
+            max_radius[t] = max([max_radius[t]] + [fix.inserted_radius(t) for fix in sim.fixes.values()])
             min_mass[t] = sim.comm.min(float(mass[chosen].min()) if chosen.any() else math.inf)
         return max_radius, min_mass
 

@@ -28,8 +28,8 @@ of that step, as LAMMPS zeroes the spring of a pair that stopped touching. The s
 computation of a run reads the springs without growing them (LAMMPS's ``shearupdate = 0``).
 
 The neighbor cutoff of types I, J is, as LAMMPS's, the largest sum of the radii of a moving
-particle of one type and any particle of the other present at the start of the run (two frozen
-particles never need to meet). No potential energy is reported (pe stays 0, as LAMMPS); the virial
+particle of one type and any particle of the other present at the start of the run or to be
+inserted by a fix during it (two frozen particles never need to meet). No potential energy is reported (pe stays 0, as LAMMPS); the virial
 is the core's :math:`\sum \mathbf{r}\cdot\mathbf{f}`.
 """
 
@@ -237,6 +237,8 @@ class PairGran(Pair):
             of_type = p.type[:n] == t
             for table, chosen in ((moving_max, of_type & ~frozen), (frozen_max, of_type & frozen)):
                 table[t] = sim.comm.max(float(p.radius[:n][chosen].max()) if chosen.any() else 0.0)
+            # particles an insertion fix will add during the run move
+            moving_max[t] = max([moving_max[t]] + [fix.inserted_radius(t) for fix in sim.fixes.values()])
         return moving_max, frozen_max
 
     def check_box(self):
