@@ -83,6 +83,38 @@ class RegionCylinder(Region):
         along = x[:, self.axis]
         return (np.sqrt(d1 * d1 + d2 * d2) <= self.radius) & (along >= self.lo) & (along <= self.hi)
 
+    def surface_contacts(self, x, reach):
+        """Points within reach of the curved wall (from inside or outside, along the cylinder's length)
+        or of a finite end cap (from inside): element 0 the curved wall, 1 the lo cap, 2 the hi cap."""
+        x = np.asarray(x, dtype=np.float64).reshape(-1, 3)
+        a, b = self.across
+        d1, d2 = x[:, a] - self.c[0], x[:, b] - self.c[1]
+        rho = np.sqrt(d1 * d1 + d2 * d2)
+        along = x[:, self.axis]
+        within = (along >= self.lo) & (along <= self.hi)
+        rows, gaps, normals, elements = [], [], [], []
+        wall = np.flatnonzero(within & (np.abs(rho - self.radius) < reach) & (rho > 0))
+        outward = np.zeros((len(wall), 3))
+        outward[:, a], outward[:, b] = d1[wall] / rho[wall], d2[wall] / rho[wall]
+        inside = rho[wall] < self.radius
+        rows.append(wall)
+        gaps.append(np.abs(rho[wall] - self.radius))
+        normals.append(np.where(inside[:, None], -outward, outward))
+        elements.append(np.zeros(len(wall), dtype=np.int64))
+        for element, end, sign in ((1, self.lo, 1.0), (2, self.hi, -1.0)):
+            if abs(end) >= HUGE:
+                continue
+            gap = sign * (along - end)
+            cap = np.flatnonzero(within & (rho <= self.radius) & (gap < reach))
+            normal = np.zeros((len(cap), 3))
+            normal[:, self.axis] = sign
+            rows.append(cap)
+            gaps.append(gap[cap])
+            normals.append(normal)
+            elements.append(np.full(len(cap), element, dtype=np.int64))
+        return (np.concatenate(rows), np.concatenate(gaps), np.concatenate(normals),
+                np.concatenate(elements))
+
     def bounds(self):
         if abs(self.lo) >= HUGE or abs(self.hi) >= HUGE:
             raise ScriptError(f"region {self.id} is unbounded (INF) and cannot define a box")
