@@ -311,3 +311,12 @@ def test_a_conveyor_mesh_drags_a_resting_sphere_to_its_surface_velocity(data, co
     sim.command("run 1200")
     np.testing.assert_allclose(sim.v[0], expected(sim.x[0]), atol=0.01 * 0.6)
     np.testing.assert_array_equal(sim.fixes["cad"].vertices, sim.fixes["cad"].placed)
+
+
+def test_mesh_surface_planar_takes_a_flat_mesh_and_refuses_a_funnel(data):
+    sim = make_box(f"fix face all mesh/surface/planar file {data}/square.stl scale 2 rotate axis 1 1 0 angle 30",
+                   box="-4 4 -4 4 -4 4", particle_style="sphere")
+    assert len(sim.fixes["face"].triangles) == 2
+    with pytest.raises(ScriptError, match=r"hopper.stl is not planar: a vertex lies 1\.\d+ from the plane of its "
+                                          r"first triangle \(use fix mesh/surface\)$"):
+        sim.command(f"fix funnel all mesh/surface/planar file {data}/hopper.stl")
