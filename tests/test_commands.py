@@ -126,8 +126,10 @@ class TestBoundary:
         assert sim.box.periodic == (True, False, True)
 
     def test_errors(self, sim):
-        fails(sim, "boundary p s p", "boundary", "boundary y must be one of p, f (got s)")
-        fails(sim, "boundary p p", "boundary", "expected 3 argument(s), got 2; usage: boundary x y z  (each p or f)")
+        fails(sim, "boundary p x p", "boundary", "boundary y must be one of p, f, s, m, ff, fs, fm, sf, ss, sm, mf, "
+                                                "ms, mm (got x)")
+        fails(sim, "boundary p p", "boundary", "expected 3 argument(s), got 2; usage: boundary x y z  (each p, f, s, "
+                                               "m, or two of f, s, m)")
         fails(sim, box() + "boundary f f f", "boundary", "boundary must come before the simulation box is created")
 
 

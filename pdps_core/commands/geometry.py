@@ -4,6 +4,7 @@ import numpy as np
 
 from ..errors import ScriptError
 from ..state import limits
+from ..run.shrink_wrap import shrink_faces
 from ..state.box import Box
 from ..styles import registry
 from . import command
@@ -44,5 +45,6 @@ def make_box(sim, lo, hi, ntypes):
     lo, hi = limits.check_box(lo, hi)
     limits.check_ntypes(ntypes)
     sim.box = Box(lo, hi, [p == "p" for p in sim.periodicity], sim.dimension)
+    sim.shrink_faces = shrink_faces(sim.periodicity, lo, hi)
     sim.ntypes = ntypes
     sim.type_mass = np.full(ntypes + 1, np.nan)

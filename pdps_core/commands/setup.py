@@ -4,6 +4,7 @@ particle_style, processors, integrate, comm_modify, newton."""
 import numpy as np
 
 from ..errors import ScriptError
+from ..run.shrink_wrap import BOUNDARY_STYLES
 from ..state import limits
 from ..state.particles import PARTICLE_STYLES
 from ..state.units import UNITS
@@ -37,10 +38,13 @@ def dimension(sim, args):
 
 @command("boundary")
 def boundary(sim, args):
-    count(args, 3, "boundary x y z  (each p or f)")
+    """``boundary x y z``, each p (periodic) or f, s, m for both faces, or two of f, s, m (lower,
+    upper face), as LAMMPS's and LIGGGHTS's: s shrink-wraps the face around the particles at every
+    neighbor list rebuild, m too but never inside the face's first position (pdps_core.run.shrink_wrap)."""
+    count(args, 3, "boundary x y z  (each p, f, s, m, or two of f, s, m)")
     _before_box(sim, "boundary")
     for axis, word in zip("xyz", args):
-        choice(word, f"boundary {axis}", ("p", "f"))
+        choice(word, f"boundary {axis}", BOUNDARY_STYLES)
     sim.periodicity = tuple(args)
 
 

@@ -22,6 +22,7 @@ from ..state import limits
 from ..state.finite import first_non_finite
 from ..styles import TALLY
 from .hookspec import HOOKS, TimestepSpec
+from .shrink_wrap import shrink_wrap
 from .timers import timed_hooks
 
 
@@ -138,6 +139,7 @@ class Verlet:
         if sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:
+            shrink_wrap(sim)
             sim.comm.exchange(particles, sim.box, sim.step)
             self._reneighbor()
         # styles with history read it without advancing it during the setup forces (LAMMPS setupflag)
@@ -299,6 +301,7 @@ class Verlet:
                              "have been missed (time step too large or velocities too high?)")
                 self._call("pre_exchange")
                 t0 = time.perf_counter()
+                shrink_wrap(sim)
                 sim.comm.exchange(particles, sim.box, step)
                 sim.timers.stage["Comm"] += time.perf_counter() - t0
                 self._reneighbor()

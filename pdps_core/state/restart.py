@@ -51,6 +51,7 @@ from pydantic import ValidationError
 from .. import __version__
 from ..errors import ScriptError
 from ..neighbor.neighbor import HISTORY_MASK, Neighbor
+from ..run.shrink_wrap import BOUNDARY_STYLES, shrink_faces
 from ..styles import StyleArgs, registry
 from . import limits
 from .box import Box
@@ -385,8 +386,8 @@ def validate(header, arrays):
     number = (int, float)
     _field(header, "units", str, lambda u: u in UNITS, f"one of {', '.join(UNITS)}")
     dimension = _field(header, "dimension", int, lambda d: d in (2, 3), "2 or 3")
-    _field(header, "periodicity", list, lambda p: len(p) == 3 and all(w in ("p", "f") for w in p),
-           "three of p, f")
+    _field(header, "periodicity", list, lambda p: len(p) == 3 and all(w in BOUNDARY_STYLES for w in p),
+           "three of p, f, s, m (or two of f, s, m)")
     _field(header, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
            "three booleans")
     ntypes = _field(header, "ntypes", int, lambda t: 1 <= t <= limits.MAX_TYPES, f"from 1 to {limits.MAX_TYPES}")
@@ -506,6 +507,8 @@ def restore(sim, header, arrays):
     sim.dimension = int(header["dimension"])
     sim.periodicity = tuple(header["periodicity"])
     sim.box = Box(arrays["box/lo"].copy(), arrays["box/hi"].copy(), header["periodic"], sim.dimension)
+    # an m face never moves inside where the restart file has it (LAMMPS's set_initial_box)
+    sim.shrink_faces = shrink_faces(sim.periodicity, sim.box.lo, sim.box.hi)
     sim.ntypes = int(header["ntypes"])
     sim.type_mass = arrays["mass"].copy()
     sim.particle_style = header["particle_style"]

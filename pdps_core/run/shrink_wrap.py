@@ -1,0 +1,45 @@
+"""Shrink-wrapped box faces (``boundary s`` and ``m``, LAMMPS's and LIGGGHTS's): before each
+exchange of a neighbor list rebuild (and at a run's setup), such a face moves to the particles'
+extent along its axis, less (lower face) or plus (upper face) 1e-4 of the box length (LAMMPS's
+``SMALL`` margin); an ``m`` face never moves inside its first position (the box command's or the
+data file's). With no particles the faces stay. The new bounds are the same on every rank."""
+
+import math
+
+import numpy as np
+
+SMALL = 1.0e-4
+BOUNDARY_STYLES = ("p", "f", "s", "m") + tuple(a + b for a in "fsm" for b in "fsm")
+
+
+def shrink_faces(periodicity, lo, hi):
+    """The shrink-wrapped faces of a box: (axis, 0 lower | 1 upper, "s" or "m", the face's first
+    position) for each face whose boundary word (p, f, s, m, or two letters) says s or m."""
+    return tuple((d, side, word[side % len(word)], float((lo, hi)[side][d]))
+                 for d, word in enumerate(periodicity) for side in (0, 1) if word[side % len(word)] in "sm")
+
+
+def shrink_wrap(sim):
+    faces = getattr(sim, "shrink_faces", ())
+    if not faces:
+        return
+    p = sim.particles
+    x = p.x[: p.nlocal]
+    box = sim.box
+    lo, hi = box.lo.copy(), box.hi.copy()
+    margin = SMALL * box.length
+    for d, side, style, first in faces:
+        if side == 0:
+            extent = sim.comm.min(float(x[:, d].min()) if len(x) else math.inf)
+            if math.isfinite(extent):
+                lo[d] = extent - margin[d]
+                if style == "m":
+                    lo[d] = min(lo[d], first)
+        else:
+            extent = sim.comm.max(float(x[:, d].max()) if len(x) else -math.inf)
+            if math.isfinite(extent):
+                hi[d] = extent + margin[d]
+                if style == "m":
+                    hi[d] = max(hi[d], first)
+    if not (np.array_equal(lo, box.lo) and np.array_equal(hi, box.hi)):
+        box.set_bounds(lo, hi)

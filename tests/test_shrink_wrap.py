@@ -1,0 +1,70 @@
+"""boundary s and m (LAMMPS, LIGGGHTS): shrink-wrapped faces follow the particles at each neighbor
+list rebuild, m never inside its first position; f loses the particle instead."""
+
+import pytest
+
+from pdps_core.api import Simulation
+
+SCRIPT = """
+units lj
+atom_style atomic
+boundary {x} p {z}
+region r block 0 10 0 10 0 10
+create_box 1 r
+create_atoms 1 single 5 5 5 units box
+create_atoms 1 single 5 5 6 units box
+mass 1 1.0
+velocity all set 0 0 {vz} units box
+fix 1 all nve
+"""
+
+
+@pytest.mark.parametrize("z", ["m", "fm", "sm", "s"])
+def test_a_particle_leaving_through_a_shrink_wrapped_face_grows_the_box(z):
+    """Moving up at 2 for 5 time units from z = 6: z = 16, past the face at 10, which follows it at
+    each rebuild (1e-4 of the box length beyond it, LAMMPS's margin), so the particle is never more
+    than half the skin (0.15) beyond it; the lower face stays (f, m) or wraps the lower particle
+    now at z = 15 (s)."""
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(SCRIPT.format(x="f", z=z, vz=2.0) + "run 1000")
+    top = sim.x[:, 2].max()
+    assert top == pytest.approx(16.0, rel=1e-12)
+    assert 0.0 <= top - sim.box.hi[2] < 0.15
+    if z in ("m", "fm"):
+        assert sim.box.lo[2] == 0.0
+    else:
+        assert 0.0 < 15.0 - sim.box.lo[2] < 0.15 + 2e-3
+
+
+def test_m_faces_never_move_inside_their_first_position_and_s_faces_do():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(SCRIPT.format(x="s", z="m", vz=0.0) + "run 10")
+    # x shrinks to the particles (margin 1e-4 of the first length, 10), z keeps [0, 10]
+    assert list(sim.box.lo[[0, 2]]) == pytest.approx([5.0 - 1e-3, 0.0], rel=1e-12)
+    assert sim.box.hi[0] == pytest.approx(5.0 + 1e-3, rel=1e-12)
+    assert sim.box.hi[2] == 10.0
+
+
+def test_a_fixed_face_loses_the_particle(pdps_cli):
+    done = pdps_cli(SCRIPT.format(x="f", z="f", vz=2.0) + "run 1000\n")
+    assert done.returncode == 1
+    assert "lost through the fixed z boundary" in done.stderr
+
+
+def test_bad_boundary_word(pdps_cli):
+    done = pdps_cli("boundary p p pm\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == ("ERROR: in.test:1: boundary: boundary z must be one of p, f, s, m, ff, fs, fm, "
+                                   "sf, ss, sm, mf, ms, mm (got pm)")
+
+
+def test_a_restart_keeps_the_shrink_wrapped_faces(tmp_path):
+    """Written and read back, boundary m still grows the box: the run goes on instead of losing
+    the particle (the restart's box is the m face's new minimum, as LAMMPS's read_restart)."""
+    path = tmp_path / "r.restart"
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(SCRIPT.format(x="f", z="m", vz=2.0) + f"run 100\nwrite_restart {path}")
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(f"read_restart {path}\nfix 1 all nve\nrun 900")
+    assert sim.x[:, 2].max() == pytest.approx(16.0, rel=1e-12)
+    assert sim.periodicity == ("f", "p", "m")
