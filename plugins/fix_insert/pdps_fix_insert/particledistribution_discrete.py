@@ -1,0 +1,87 @@
+r"""Fix ``particledistribution/discrete``: a mixture of particle templates by mass (LIGGGHTS's fix
+particledistribution/discrete), which the insertion fixes draw particles from.
+
+Syntax::
+
+    fix ID GROUP particledistribution/discrete SEED N TEMPLATE1 FRACTION1 ... TEMPLATEN FRACTIONN
+
+``TEMPLATEk`` the ID of a ``fix particletemplate/sphere``, ``FRACTIONk`` the fraction of the
+*mass* its particles carry (LIGGGHTS's mass-%). Fractions that do not add up to 1 are scaled to
+do so, with a warning. A particle comes from template k with the number probability
+
+.. math::
+
+    p_k = \frac{w_k / \langle m_k\rangle}{\sum_l w_l / \langle m_l\rangle}
+
+(:math:`\langle m_k\rangle` the template's expected mass), so that in the long run template k's
+particles carry the fraction :math:`w_k` of the inserted mass. The expected particle mass and
+volume of the mixture are :math:`\sum_k p_k \langle m_k\rangle` and :math:`\sum_k p_k \langle
+V_k\rangle`. As in LIGGGHTS, the particles of one insertion are placed largest first (a higher
+packing fraction is reached); their types are the templates', their groups this fix's and the
+template's besides the insertion fix's and ``all``.
+
+``SEED``: a positive whole number, read for its range (the insertion fix's seed draws the
+particles, on every rank alike).
+
+Example::
+
+    fix pdd all particledistribution/discrete 32452843 2 pts1 0.3 pts2 0.7
+"""
+
+import numpy as np
+
+from pdps_core.api import Fix, ScriptError, StyleArgs
+
+from .insertion import number, whole_number
+from .particletemplate_sphere import FixParticleTemplateSphere
+
+
+class FixParticleDistributionDiscrete(Fix):
+    name = "particledistribution/discrete"
+    usage = "fix ID GROUP particledistribution/discrete SEED N TEMPLATE1 FRACTION1 ... TEMPLATEN FRACTIONN"
+
+    class Args(StyleArgs):
+        words: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        words = list(args.words)
+        if len(words) < 2:
+            raise ScriptError(f"expected SEED and N; usage: {self.usage}")
+        self.seed = whole_number(words[0], "seed", low=1)
+        count = whole_number(words[1], "number of templates", low=1)
+        pairs = words[2:]
+        if len(pairs) != 2 * count:
+            raise ScriptError(f"expected {count} template/fraction pairs (got {len(pairs)} words after N)")
+        self.templates, fractions = [], []
+        for name, word in zip(pairs[::2], pairs[1::2]):
+            template = sim.fixes.get(name)
+            if not isinstance(template, FixParticleTemplateSphere):
+                known = [k for k, f in sim.fixes.items() if isinstance(f, FixParticleTemplateSphere)]
+                raise ScriptError(f"{name} is not a fix particletemplate/sphere (defined: {', '.join(known) or 'none'})")
+            fraction = number(word, f"mass fraction of {name}")
+            if not 0 < fraction <= 1:
+                raise ScriptError(f"mass fraction of {name} must be > 0 and <= 1 (got {word})")
+            self.templates.append(template)
+            fractions.append(fraction)
+        total = sum(fractions)
+        if abs(total - 1.0) > 1e-10:
+            sim.warn(f"fix {id}: the mass fractions add up to {total:g}, not 1: they are scaled to do so")
+        self.mass_fraction = np.array(fractions) / total
+        mass = np.array([t.mass_expected for t in self.templates])
+        weight = self.mass_fraction / mass
+        self.number_fraction = weight / weight.sum()
+        self.mass_expected = float(self.number_fraction @ mass)
+        self.volume_expected = float(self.number_fraction @ [t.volume_expected for t in self.templates])
+        self.max_radius = max(t.max_radius for t in self.templates)
+
+    def draw(self, rng, n):
+        """n particles, largest first: (radius, density, type, template index) arrays."""
+        which = rng.choice(len(self.templates), size=n, p=self.number_fraction)
+        radius, density = np.empty(n), np.empty(n)
+        for k, template in enumerate(self.templates):
+            rows = np.flatnonzero(which == k)
+            radius[rows], density[rows] = template.draw(rng, len(rows))
+        order = np.argsort(-radius, kind="stable")
+        types = np.array([t.atom_type for t in self.templates], dtype=np.int32)[which]
+        return radius[order], density[order], types[order], which[order]

@@ -1,0 +1,219 @@
+"""Insertion during a run: insert/pack fills a cylinder with exactly the particles asked for, clear
+of each other and wholly inside; the same particles and ids on 1 and 2 ranks; insert/stream delivers
+mass through its face at the set rate; insert/rate/region follows its rate's line; bad input gets
+one line."""
+
+import math
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError
+from pdps_core.testing import run_ranks
+
+MATERIAL = """
+    fix m1 all property/global youngsModulus peratomtype 5.e6
+    fix m2 all property/global poissonsRatio peratomtype 0.45
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+    pair_style gran model hertz tangential history
+    pair_coeff * *
+"""
+
+PACK = """
+    atom_style granular
+    boundary f f f
+    region box block -0.06 0.06 -0.06 0.06 0 0.2 units box
+    create_box 1 box
+""" + MATERIAL + """
+    timestep 0.00001
+    fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003
+    fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+    region bc cylinder z 0.0 0.0 0.045 0.00 0.15 units box
+    fix ins all insert/pack seed 32452843 distributiontemplate pdd1 insert_every once overlapcheck yes &
+        all_in yes particles_in_region {n} region bc
+    fix integr all nve/sphere
+"""
+
+RADIUS, DENSITY = 0.003, 2500.0
+
+
+def pairwise_gaps(x, r):
+    d = np.sqrt(((x[:, None, :] - x[None, :, :]) ** 2).sum(axis=2))
+    gap = d - (r[:, None] + r[None, :])
+    np.fill_diagonal(gap, np.inf)
+    return gap
+
+
+def test_pack_fills_a_cylinder_with_n_spheres_clear_and_inside(make_sim):
+    n = 1500
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=n) + "run 1")
+    p = sim.particles
+    x, r, m = p.x[:p.nlocal], p.radius[:p.nlocal], p.rmass[:p.nlocal]
+    assert p.nlocal == n and sim.fixes["ins"].vector(sim)[0] == n
+    assert pairwise_gaps(x, r).min() >= 0.0                       # no two spheres overlap
+    rho = np.hypot(x[:, 0], x[:, 1])
+    assert (rho + r <= 0.045).all() and (x[:, 2] - r >= 0.0).all() and (x[:, 2] + r <= 0.15).all()
+    assert m.sum() == pytest.approx(n * DENSITY * 4.0 / 3.0 * math.pi * RADIUS ** 3, rel=1e-13)
+    assert sim.fixes["ins"].vector(sim)[1] == pytest.approx(m.sum(), rel=1e-13)
+    assert sorted(p.tag[:p.nlocal]) == list(range(1, n + 1))
+
+
+def test_pack_without_all_in_keeps_only_centres_inside(make_sim):
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=400).replace("all_in yes", "all_in no") + "run 1")
+    p = sim.particles
+    x = p.x[:p.nlocal]
+    assert p.nlocal == 400
+    assert (np.hypot(x[:, 0], x[:, 1]) <= 0.045).all()
+    # some centres lie closer to the wall than a radius: all_in no lets spheres cross it
+    assert (np.hypot(x[:, 0], x[:, 1]) > 0.045 - RADIUS).any()
+
+
+def test_same_particles_and_ids_on_one_and_two_ranks(tmp_path):
+    script = PACK.format(n=800) + """
+        fix gravi all gravity 9.81 vector 0.0 0.0 -1.0
+        dump d all custom 200 out.dump id x y z radius
+        dump_modify d sort id
+        run 200
+    """
+    frames = []
+    for ranks in (1, 2):
+        folder = tmp_path / f"n{ranks}"
+        folder.mkdir()
+        run_ranks("atom_style granular\n" + script.replace("atom_style granular", "", 1), ranks, folder)
+        frames.append((folder / "out.dump").read_text().split("ITEM: ATOMS")[-1])
+    one, two = (np.loadtxt(f.splitlines()[1:]) for f in frames)
+    assert len(one) == 800
+    assert np.array_equal(one[:, 0], two[:, 0])
+    # and after 200 steps of falling: the same to round-off
+    np.testing.assert_allclose(one[:, 1:], two[:, 1:], rtol=0, atol=1e-12)
+
+
+STREAM = """
+    atom_style granular
+    boundary f f f
+    region box block -0.06 0.06 -0.06 0.06 0 0.2 units box
+    create_box 1 box
+""" + MATERIAL + """
+    timestep 0.00001
+    fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002
+    fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+    fix inface all mesh/surface file face.stl type 1
+    fix ins all insert/stream seed 32452843 distributiontemplate pdd1 nparticles INF massrate 0.5 &
+        insert_every 100 overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02
+    fix integr all nve/sphere
+"""
+
+FACE = """solid face
+facet normal 0 0 1
+ outer loop
+  vertex -0.04 -0.04 0.15
+  vertex 0.04 -0.04 0.15
+  vertex 0.04 0.04 0.15
+ endloop
+endfacet
+facet normal 0 0 1
+ outer loop
+  vertex -0.04 -0.04 0.15
+  vertex 0.04 0.04 0.15
+  vertex -0.04 0.04 0.15
+ endloop
+endfacet
+endsolid face
+"""
+
+
+def test_stream_delivers_mass_through_its_face_at_the_set_rate(make_sim, tmp_path):
+    (tmp_path / "face.stl").write_text(FACE)
+    sim = make_sim(dialect="liggghts")
+    sim.command(STREAM)
+    crossed = []
+    mass = DENSITY * 4.0 / 3.0 * math.pi * 0.002 ** 3
+    # from 0.02 s on (the depth over the speed) the first particles have reached the face
+    for steps in (2000, 8000):
+        sim.command(f"run {steps}")
+        p = sim.particles
+        below = p.x[:p.nlocal, 2] < 0.15
+        crossed.append((sim.time, float(p.rmass[:p.nlocal][below].sum())))
+        # in flight until the face: no particle behind it has moved off the insertion velocity
+        behind = ~below
+        np.testing.assert_allclose(p.v[:p.nlocal][behind], [[0.0, 0.0, -1.0]] * int(behind.sum()), atol=1e-15)
+    (t1, m1), (t2, m2) = crossed
+    rate = (m2 - m1) / (t2 - t1)
+    assert rate == pytest.approx(0.5, rel=0.01)
+    # and the inserted mass follows the rate to a particle
+    inserted = sim.fixes["ins"].vector(sim)[1]
+    assert abs(inserted - 0.5 * sim.time) <= mass
+
+
+def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=1).split("fix ins")[0] + """
+        fix ins all insert/rate/region seed 5 distributiontemplate pdd1 nparticles 100 particlerate 3700 &
+            insert_every 10 region bc
+        fix integr all nve/sphere
+    """)
+    counts = []
+    for _ in range(30):
+        sim.command("run 10")
+        counts.append(int(sim.fixes["ins"].vector(sim)[0]))
+    # after k insertions floor(k x 3700 x 10 x 1e-5) = floor(0.37 k) particles, at most 100
+    assert counts == [min(math.floor(0.37 * k + 1e-9), 100) for k in range(1, 31)]
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 particles_in_region 5",
+     "missing keyword region; usage: fix ID GROUP insert/pack seed S distributiontemplate DIST [keywords] region "
+     "REGION volumefraction_region VF | particles_in_region N | mass_in_region M [ntry_mc N]"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pts1 region bc particles_in_region 5",
+     "distributiontemplate pts1 is not a fix particledistribution/discrete (defined: pdd1)"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 mass_in_region 1",
+     "give exactly one of volumefraction_region, particles_in_region, mass_in_region (got particles_in_region, "
+     "mass_in_region)"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc volumefraction_region 1.5",
+     "volumefraction_region must be > 0 and < 1 (got 1.5)"),
+    ("fix ins all insert/pack seed 0 distributiontemplate pdd1 region bc particles_in_region 5",
+     "seed must be >= 1 (got 0)"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 vel sideways 1 2 3",
+     "vel must be constant, uniform or gaussian (got sideways)"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 sideways 1",
+     "unknown keyword sideways (known: seed, distributiontemplate, verbose, maxattempt, insert_every, start, "
+     "overlapcheck, all_in, random_distribute, orientation, set_property, vel, omega, region, "
+     "volumefraction_region, particles_in_region, mass_in_region, ntry_mc)"),
+    ("fix ins all insert/rate/region seed 1 distributiontemplate pdd1 nparticles 5 particlerate 10 region bc",
+     "missing keyword insert_every; usage: fix ID GROUP insert/rate/region seed S distributiontemplate DIST "
+     "nparticles N|INF | mass M|INF particlerate R | massrate R insert_every N region REGION [keywords]"),
+    ("fix t2 all particletemplate/sphere 1 atom_type 1 radius constant 0.001",
+     "missing keyword density; usage: fix ID GROUP particletemplate/sphere SEED atom_type T density STYLE ... "
+     "radius STYLE ... [volume_limit V]"),
+    ("fix d2 all particledistribution/discrete 1 2 pts1 0.5",
+     "expected 2 template/fraction pairs (got 2 words after N)"),
+])
+def test_bad_insertion_lines(make_sim, line, message):
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=1).split("fix ins")[0])
+    with pytest.raises(ScriptError) as error:
+        sim.command(line)
+    assert str(error.value).endswith(message)
+
+
+def test_mass_and_volume_fraction_targets(make_sim):
+    mass = DENSITY * 4.0 / 3.0 * math.pi * RADIUS ** 3
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=1).replace("particles_in_region 1", "mass_in_region 0.1") + "run 1")
+    assert sim.particles.nlocal in (math.floor(0.1 / mass), math.ceil(0.1 / mass))
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=1).replace("particles_in_region 1", "volumefraction_region 0.2") + "run 1")
+    volume = math.pi * 0.045 ** 2 * 0.15           # the cylinder (inside the box)
+    expected = 0.2 * volume / (4.0 / 3.0 * math.pi * RADIUS ** 3)
+    # ntry_mc = 100000 points measure the volume to sqrt((1 - f) / (f n)) with f = pi / 4
+    error = expected * 4 * math.sqrt((1 - math.pi / 4) / (math.pi / 4 * 100_000)) + 1
+    assert abs(sim.particles.nlocal - expected) <= error
+    # a second insertion finds the target met and adds nothing
+    sim.command("unfix ins")
+    sim.command("fix again all insert/pack seed 7 distributiontemplate pdd1 particles_in_region 10 region bc")
+    before = sim.particles.nlocal
+    sim.command("run 1")
+    assert sim.particles.nlocal == before
