@@ -126,5 +126,6 @@ CONTRACT = {
                      "neighbors": "CSR neighbor rows", "occasional": "built on demand"},
     "Variables": {"value": "value(name): v_NAME as a number"},
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
-             "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times"},
+             "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",
+             "contacts": "contacts(sim, group) (pair gran): this moment's contacts, rows i, j, forces, history"},
 }

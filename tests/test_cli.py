@@ -190,7 +190,7 @@ def test_doc_of_an_unknown_style_is_one_line(capsys):
      "ERROR: in.test:4: fix: unknown fix style nvee; did you mean nve? (installed: {fix})"),
     ("pair_style quadrupole 2.5", "ERROR: in.test:1: pair_style: unknown pair style quadrupole (installed: {pair})"),
     # wrong argument count
-    ("boundary p p", "ERROR: in.test:1: boundary: expected 3 argument(s), got 2; usage: boundary x y z  (each p or f)"),
+    ("boundary p p", "ERROR: in.test:1: boundary: expected 3 argument(s), got 2; usage: boundary x y z  (each p, f, s, m, or two of f, s, m)"),
     (BOX + "fix 1 all nve extra", "ERROR: in.test:4: fix: too many arguments: unexpected 'extra'; usage: fix ID GROUP nve"),
     ("region box block 0 1 0 1 0",
      "ERROR: in.test:1: region: missing argument zhi; usage: region ID block xlo xhi ylo yhi zlo zhi "

@@ -9,7 +9,7 @@ import tomllib
 
 import pytest
 
-from pdps_core.api import CONTRACT, Simulation
+from pdps_core.api import CONTRACT, Simulation, registry
 
 ROOT = pathlib.Path(__file__).parents[1]
 # attributes of sim whose value is another contract object
@@ -136,8 +136,10 @@ def test_every_name_in_the_contract_exists(tmp_path):
     # molecule ids and charges exist with the particle styles that have them, not with sphere
     full = Simulation(screen=False, log=None)
     full.command("particle_style full\nregion box block 0 5 0 5 0 5\ncreate_box 1 box")
-    assert missing == ["Particles.molecule", "Particles.q"]
+    assert missing == ["Particles.molecule", "Particles.q", "Pair.contacts"]
     assert hasattr(full.particles, "molecule") and hasattr(full.particles, "q")
+    # contacts(sim, group) is pair gran's (LIGGGHTS's contact computes read it)
+    assert hasattr(registry.lookup("pair", "gran"), "contacts")
 
 
 def test_the_plugin_guide_shows_every_name():
