@@ -97,3 +97,15 @@ def test_hopper_example_drains_through_its_outlet_at_the_beverloo_rate(tmp_path)
     assert all(b2 >= b1 for b1, b2 in zip(below, below[1:])), below
     rate = (below[8] - below[6]) / 2.0                                   # t = 6 to 8
     assert beverloo_rate(8.0, C=0.55, k=3.0) < rate < beverloo_rate(8.0, C=0.65, k=1.2), rate
+
+
+def test_liggghts_example_fills_the_cylinder_and_the_floor_feels_the_beads(tmp_path):
+    """2,000 beads inserted at the first step, none lost; after 2,000 steps (0.02 s; the lowest ones
+    start 5 mm above the floor at 0.5 m/s) the floor is pushed down, and the VTK series are written."""
+    work, result = run_example(tmp_path, "liggghts", "in.liggghts", 2000)
+    assert "read as LIGGGHTS" in result.stdout
+    rows = [line.split() for line in result.stdout.splitlines() if line.strip()[:1].isdigit()]
+    assert rows[0][:2] == ["0", "0"] and rows[-1][:2] == ["2000", "2000"]
+    force_z = float(rows[-1][6])
+    assert force_z < -0.1
+    assert (work / "post" / "beads.vtu.series").exists() and (work / "post" / "floor_0.vtk").exists()
