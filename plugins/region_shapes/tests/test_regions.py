@@ -248,3 +248,22 @@ def test_polygon_surface_of_a_non_convex_polygon(make_sim):
     np.testing.assert_array_equal(index, [0, 1])
     np.testing.assert_allclose(distance, [0.2, 0.5], rtol=1e-14)
     np.testing.assert_allclose(normal[1], [0, 0.6, 0.8], rtol=1e-14, atol=1e-15)
+
+
+def test_cylinder_surface_curved_wall_and_caps(make_sim):
+    """A cylinder about z (axis at x=1, y=2, radius 3, from z=0 to 10): inside near the wall (normal
+    towards the axis), outside near the wall (normal away from it), near a cap from inside (normal
+    along the axis), in a corner (wall and cap); the middle and a point beyond reach nothing."""
+    sim = make_sim()
+    sim.command("region c cylinder z 1 2 3 0 10 units box")
+    points = [[3.8, 2, 5], [1, 5.4, 5], [1, 2, 0.3], [1, 4.75, 9.8], [1, 2, 5], [5, 2, 5]]
+    found = contacts_by_point(sim.region("c"), points, 0.5)
+    assert set(found) == {0, 1, 2, 3}
+    ((element, gap, normal),) = found[0]
+    assert element == 0 and gap == pytest.approx(0.2, abs=1e-14) and normal == pytest.approx((-1.0, 0.0, 0.0))
+    ((element, gap, normal),) = found[1]
+    assert element == 0 and gap == pytest.approx(0.4, abs=1e-14) and normal == pytest.approx((0.0, 1.0, 0.0))
+    assert found[2] == [(1, 0.3, (0.0, 0.0, 1.0))]
+    (wall, cap) = found[3]
+    assert wall[0] == 0 and wall[1] == pytest.approx(0.25, abs=1e-14) and wall[2] == pytest.approx((0.0, -1.0, 0.0))
+    assert cap[0] == 2 and cap[1] == pytest.approx(0.2, abs=1e-12) and cap[2] == (0.0, 0.0, -1.0)
