@@ -16,7 +16,9 @@ References (the header shows them as written):
   ``compute property/atom`` of one attribute); ``c_ID[k]``: column k of one with several. k counts
   from 0, as every pdps index (``c_ID[i]`` in thermo; LAMMPS's dump counts from 1: its ``c_p[1]`` is
   pdps's ``c_p[0]``).
-- ``f_ID``, ``f_ID[k]``: the same for a fix (or analyze style) that offers per-atom values.
+- ``f_ID``, ``f_ID[k]``: the same for a fix (or analyze style) that offers per-atom values. In the
+  LIGGGHTS dialect ``f_NAME[k]`` also names column k (from 0, as LIGGGHTS) of a per-atom property
+  a fix made: ``f_Temp[0]``, ``f_heatFlux[0]`` of fix heat/gran.
 - ``v_NAME``: a variable's value, the same on every row. LAMMPS's dump reads atom-style variables,
   one value per particle; pdps has only global (equal, index) variables so far.
 
@@ -145,11 +147,28 @@ def _reference(sim, word):
     else:
         style, kind = sim.fixes.get(ident) or sim.analyzes.get(ident), "fix"
         offers = callable(getattr(style, "peratom", None))
+        if style is None and _liggghts_property(sim, ident, k, word) is not None:
+            return None, k, None
     if style is None:
         raise ScriptError(f"dump column {word}: {kind} {ident} is not defined")
     if not offers:
         raise ScriptError(f"dump column {word}: {kind} {ident} ({style.name}) has no per-atom values")
     return style, k, None
+
+
+def _liggghts_property(sim, ident, k, word):
+    """LIGGGHTS's ``f_NAME[k]`` for a per-atom property a fix made (heat/gran's ``f_Temp[0]``,
+    ``f_heatFlux[0]``, ``f_directionalHeatFlux[2]``): its column k, counted from 0 as LIGGGHTS
+    counts them; None outside the LIGGGHTS dialect or for a name no per-atom property has."""
+    p = sim.particles
+    if sim.dialect.name != "liggghts" or ident in ("x", "v", "f", "tag", "type", "mask", "image") or not p.has(ident):
+        return None
+    array = p.arrays[ident]
+    width = 1 if array.ndim == 1 else array.shape[1]
+    if k is None and width > 1 or k is not None and not 0 <= k < width:
+        raise ScriptError(f"dump column {word}: per-atom property {ident} has {width} value(s) per particle, "
+                          f"f_{ident}[0]{f' to [{width - 1}]' if width > 1 else ''} (LIGGGHTS counts from 0)")
+    return array[: p.nlocal] if array.ndim == 1 else array[: p.nlocal, k]
 
 
 def _reference_values(sim, word):
@@ -158,4 +177,7 @@ def _reference_values(sim, word):
     n = sim.particles.nlocal
     if variable is not None:
         return np.full(n, float(sim.variables.value(variable)))
+    if style is None:
+        prefix, ident, _ = REFERENCE.match(word).groups()
+        return _liggghts_property(sim, ident, k, word)
     return peratom_column(sim, style, k, f"dump column {word}")

@@ -131,3 +131,23 @@ def test_missing_conductivity_stops_the_run(pdps_cli):
     assert done.returncode == 1
     assert done.stderr.strip() == ("ERROR: in.test:13: run: fix h (heat/gran) needs thermalConductivity: "
                                    "fix ID all property/global thermalConductivity peratomtype V1 ... V1")
+
+
+def test_liggghts_dump_spelling_of_the_per_atom_properties(tmp_path):
+    """LIGGGHTS writes f_Temp[0] and f_heatFlux[0] (its per-atom properties, counted from 0)."""
+    sim = scene()
+    path = tmp_path / "heat.dump"
+    sim.command(f"dump d all custom 1 {path} id f_Temp[0] f_heatFlux[0] f_directionalHeatFlux[0] f_heat[1]\nrun 0")
+    rows = sorted(line.split() for line in path.read_text().splitlines()[-2:])
+    assert [float(r[1]) for r in rows] == [400.0, 300.0]
+    assert [float(r[1]) for r in rows] == [float(r[4]) for r in rows]
+    assert float(rows[0][2]) == pytest.approx(-float(rows[1][2]), rel=1e-12)
+    assert float(rows[0][3]) == pytest.approx(float(rows[1][3]), rel=1e-12)
+
+
+def test_liggghts_dump_spelling_out_of_range(pdps_cli):
+    done = pdps_cli(SETUP + "fix h all heat/gran initial_temperature 300\n"
+                    "dump d all custom 1 d.txt id f_Temp[1]\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == ("ERROR: in.test:7: dump: dump column f_Temp[1]: per-atom property Temp has 1 "
+                                   "value(s) per particle, f_Temp[0] (LIGGGHTS counts from 0)")
