@@ -71,3 +71,31 @@ def test_bad_lines(pdps_cli, line, message):
     done = pdps_cli(SETUP + line + "\n")
     assert done.returncode == 1
     assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+
+
+def test_property_atom_values_follow_set_and_dumps(tmp_path):
+    """LIGGGHTS's property/atom: a default for every particle, set property/atom, f_NAME[k] in a
+    LIGGGHTS dump (from 0)."""
+    path = tmp_path / "p.dump"
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(SETUP + "create_atoms 1 single 0.5 0.5 0.5 units box\n"
+                "fix a all property/atom age scalar yes no no 7.0\n"
+                "fix u all property/atom uf vector yes no no 1. 2. 3.\n"
+                "set atom 2 property/atom age 9.5\n"
+                f"dump d all custom 1 {path} id f_age[0] f_uf[0] f_uf[2]\nrun 0")
+    rows = sorted(line.split() for line in path.read_text().splitlines()[-2:])
+    assert rows == [["1", "7", "1", "3"], ["2", "9.5", "1", "3"]]
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix a all property/atom age scalar yes no no 1 2", "fix: age scalar takes one default value (got 2)"),
+    ("fix a all property/atom age scalar yes no no", "fix: age scalar: expected the default value(s); usage: "
+     "fix ID GROUP property/atom NAME scalar|vector yes|no yes|no yes|no V1 [V2 ...]"),
+    ("fix a all property/atom radius scalar yes no no 1", "fix: radius is a core per-atom array, not a property a "
+     "fix can make"),
+    ("fix a all property/atom age scalar maybe no no 1", "fix: restart must be one of 'yes' or 'no' (got maybe)"),
+])
+def test_bad_property_atom_lines(pdps_cli, line, message):
+    done = pdps_cli(SETUP + line + "\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
