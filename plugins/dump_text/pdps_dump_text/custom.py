@@ -145,10 +145,11 @@ def _reference(sim, word):
         style, kind = sim.computes.get(ident), "compute"
         offers = style is not None and type(style).peratom is not Compute.peratom
     else:
+        # LIGGGHTS names a per-atom property by the property, whatever fix made it
+        if _liggghts_property(sim, ident, k, word) is not None:
+            return None, k, None
         style, kind = sim.fixes.get(ident) or sim.analyzes.get(ident), "fix"
         offers = callable(getattr(style, "peratom", None))
-        if style is None and _liggghts_property(sim, ident, k, word) is not None:
-            return None, k, None
     if style is None:
         raise ScriptError(f"dump column {word}: {kind} {ident} is not defined")
     if not offers:

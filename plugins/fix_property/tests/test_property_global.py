@@ -79,7 +79,7 @@ def test_property_atom_values_follow_set_and_dumps(tmp_path):
     path = tmp_path / "p.dump"
     sim = Simulation(screen=False, log=None, dialect="liggghts")
     sim.command(SETUP + "create_atoms 1 single 0.5 0.5 0.5 units box\n"
-                "fix a all property/atom age scalar yes no no 7.0\n"
+                "fix age all property/atom age scalar yes no no 7.0\n"
                 "fix u all property/atom uf vector yes no no 1. 2. 3.\n"
                 "set atom 2 property/atom age 9.5\n"
                 f"dump d all custom 1 {path} id f_age[0] f_uf[0] f_uf[2]\nrun 0")
