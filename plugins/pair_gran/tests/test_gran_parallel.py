@@ -53,3 +53,40 @@ def test_same_settling_on_1_and_2_ranks(tmp_path):
     # free fall would add (g t)^2 / 2 = 8 per sphere by t = 0.4: the floor and the contacts took some
     assert one[-1, 1] < one[0, 1] + 0.6 * 8.0
     assert two == pytest.approx(one, rel=1e-9)
+
+
+def test_liggghts_model_with_rolling_spring_and_cohesion_on_1_and_2_ranks(tmp_path):
+    """pair gran with epsd (a rolling spring torque in each contact's history besides the
+    tangential spring: six values merged back on their owners) and sjkr cohesion: the same
+    kinetic energies on 1 and 2 ranks."""
+    bed(tmp_path / "bed.data")
+    script = """\
+        units lj
+        atom_style granular
+        boundary p p f
+        read_data bed.data
+        fix m1 all property/global youngsModulus peratomtype 1.e5 1.e5
+        fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+        fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
+        fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+        fix m5 all property/global coefficientRollingFriction peratomtypepair 2 0.2 0.2 0.2 0.2
+        fix m6 all property/global coefficientRollingViscousDamping peratomtypepair 2 0.3 0.3 0.3 0.3
+        fix m7 all property/global cohesionEnergyDensity peratomtypepair 2 500 500 500 500
+        pair_style gran model hertz tangential history rolling_friction epsd cohesion sjkr
+        pair_coeff * *
+        timestep 0.0005
+        fix 1 all nve/sphere
+        fix 2 all gravity 10.0 vector 0 0 -1
+        fix 3 all wall/gran model hertz tangential history primitive type 2 zplane 0.0
+        thermo_style custom step ke
+        thermo_modify format float %.15g
+        thermo 500
+        run 3000
+        """
+    # the data file has one type: a second (the floor's material) is made room for
+    (tmp_path / "bed.data").write_text((tmp_path / "bed.data").read_text().replace("1 atom types", "2 atom types"))
+    one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
+    two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
+    assert one[:, 0].tolist() == list(range(0, 3001, 500))
+    assert not np.allclose(one[-1, 1], one[0, 1])
+    assert two == pytest.approx(one, rel=1e-9)
