@@ -238,3 +238,48 @@ def test_cdt_rolling_torque_opposes_the_relative_spin(spin):
     moment = mu_r * 4 / 3 * y_star * math.sqrt(r_star * delta) * delta * r_star
     assert torque[0] == pytest.approx([0.0, 0.0, -math.copysign(moment, spin)], rel=1e-12, abs=1e-20)
     assert torque[1] == pytest.approx([0.0, 0.0, math.copysign(moment, spin)], rel=1e-12, abs=1e-20)
+
+
+def test_a_liggghts_header_runs_as_liggghts_means_it(pdps_cli):
+    """The lines LIGGGHTS's own examples start with: atom_modify map array, boundary m m m,
+    newton off, communicate single vel yes, thermo_modify lost ignore norm no, compute_modify
+    thermo_temp dynamic yes, run N upto. A sphere falls out through the m floor: the box follows
+    it instead of losing it; run 300 upto after run 100 stops at step 300."""
+    done = pdps_cli("""\
+atom_style granular
+atom_modify map array
+boundary m m m
+newton off
+communicate single vel yes
+units si
+region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
+create_box 1 reg
+neighbor 0.002 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 0.001
+create_atoms 1 single 0 0 0.01 units box
+set type 1 diameter 0.01 density 2500
+fix integr all nve/sphere
+fix g all gravity 9.81 vector 0 0 -1
+compute_modify thermo_temp dynamic yes
+thermo_style custom step atoms zlo
+thermo_modify lost ignore norm no
+thermo 100
+run 100
+run 300 upto
+""")
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0] == "read as LIGGGHTS: atom_style granular on line 1"
+    rows = [line.split() for line in lines if line.split()[:1] in (["100"], ["200"], ["300"])]
+    steps = [int(r[0]) for r in rows]
+    assert steps[-1] == 300 and steps.count(300) == 1
+    # fallen 0.44 m by t = 0.3 s: the lower face went with it, the sphere is still there
+    assert float(rows[-1][1]) == 1
+    assert float(rows[-1][2]) < -0.4
