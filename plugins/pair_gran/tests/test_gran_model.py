@@ -283,3 +283,35 @@ run 300 upto
     # fallen 0.44 m by t = 0.3 s: the lower face went with it, the sphere is still there
     assert float(rows[-1][1]) == 1
     assert float(rows[-1][2]) < -0.4
+
+
+@pytest.mark.parametrize("limit", ["off", "on"])
+def test_limit_force_keeps_a_separating_contact_from_pulling(limit):
+    """Spheres 1e-7 into each other, separating at 2 m/s: the damping outweighs the spring, so
+    F_n = kn delta - gamma_n v_n < 0 (a pull) unless limitForce on sets it to 0."""
+    delta = 1e-7
+    sim = two_spheres(f"model hertz tangential history limitForce {limit}", -delta / 2, -1.0)
+    force, _ = setup_forces(sim)
+    y_star, _, r_star, m_star = effective()
+    root = math.sqrt(r_star * delta)
+    beta = math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
+    gamma_n = -2 * math.sqrt(5 / 6) * beta * math.sqrt(2 * y_star * root * m_star)
+    pull = 4 / 3 * y_star * root * delta - gamma_n * 2.0
+    assert pull < 0
+    assert force[1, 0] == (0.0 if limit == "on" else pytest.approx(pull, rel=1e-12))
+
+
+def test_tangential_damping_off_leaves_only_the_spring():
+    """With no spring yet (run 0 does not grow it) a sliding contact feels the tangential damping
+    -gamma_t v_t alone, and nothing with tangential_damping off."""
+    delta = 2e-5
+    forces = {}
+    for damping in ("on", "off"):
+        sim = two_spheres(f"model hertz tangential history tangential_damping {damping}", -delta / 2, 0.0,
+                          extra="set atom 1 vy 0.001")
+        forces[damping], _ = setup_forces(sim)
+    _, g_star, r_star, m_star = effective()
+    beta = math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
+    gamma_t = -2 * math.sqrt(5 / 6) * beta * math.sqrt(8 * g_star * math.sqrt(r_star * delta) * m_star)
+    assert forces["on"][0, 1] == pytest.approx(-gamma_t * 0.001, rel=1e-12)
+    assert forces["off"][0, 1] == 0.0
