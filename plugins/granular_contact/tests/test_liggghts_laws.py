@@ -175,3 +175,36 @@ def test_pull_off_force_of_two_spheres(cohesion):
     pulled = min(pair_force(cohesion, 2 * R - d, k) for d in deltas)
     assert -pulled == pytest.approx(pull_off, rel=0.01)
     assert pull_off > 0.1 * MASS * G
+
+
+@pytest.mark.parametrize("rolling", ["epsd", "epsd2"])
+def test_rolling_spring_grows_then_caps_and_epsd_damps_below_the_cap(rolling):
+    """One contact of two equal spheres spinning oppositely about z (n along x): the spring torque
+    grows by k_r omega_r dt (k_r = 2.25 k_n mu_r^2 R*^2 for epsd, k_t R*^2 for epsd2); below the cap
+    epsd adds eta_r 2 sqrt(I_r k_r) omega_r (not stored), I_r = 1.4 (m R^2)/2; the cap is
+    mu_r |F_n| R*."""
+    mu_r, eta, dt, delta = 0.3, 0.4, 1e-6, 2e-5
+    mat = table(mu_roll=mu_r, eta_roll=eta)
+    mods = models(rolling)
+    n, zero = np.array([1.0, 0.0, 0.0]), np.zeros(3)
+    spin = np.array([0.0, 0.0, 4.0])
+    hist = np.zeros(lg.HISTORY_WIDTH)
+    force, tangential, torque = np.zeros(3), np.zeros(3), np.zeros(3)
+    r_star = R / 2
+    y_star, g_star = mat[lg.Y_STAR, 1, 1], mat[lg.G_STAR, 1, 1]
+    kn = 4 / 3 * y_star * math.sqrt(r_star * delta)
+    kt = 8 * g_star * math.sqrt(r_star * delta)
+    kr = 2.25 * kn * mu_r ** 2 * r_star ** 2 if rolling == "epsd" else kt * r_star ** 2
+    cap = mu_r * kn * delta * r_star
+    damping = eta * 2 * math.sqrt(1.4 * MASS * R ** 2 / 2 * kr) if rolling == "epsd" else 0.0
+    for step in range(1, 4):
+        fn = lg.liggghts_contact(mods, False, mat, 1, 1, 2 * R - delta, R, R, MASS, MASS, MASS / 2, n, 0.0, zero,
+                                 spin, 0.0, 1.0, dt, True, hist, force, tangential, torque)
+        assert fn == pytest.approx(kn * delta, rel=1e-12)
+        assert hist[5] == pytest.approx(kr * dt * 4.0 * step, rel=1e-12)
+        assert torque[2] == pytest.approx(kr * dt * 4.0 * step + damping * 4.0, rel=1e-12)
+    for _ in range(int(cap / (kr * dt * 4.0)) + 5):
+        lg.liggghts_contact(mods, False, mat, 1, 1, 2 * R - delta, R, R, MASS, MASS, MASS / 2, n, 0.0, zero, spin,
+                            0.0, 1.0, dt, True, hist, force, tangential, torque)
+    assert torque[2] == pytest.approx(cap, rel=1e-12)
+    assert hist[5] == pytest.approx(cap, rel=1e-12)
