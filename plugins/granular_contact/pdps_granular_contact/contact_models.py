@@ -105,6 +105,17 @@ def hertz_contact(overlap, n, v, shear, e_star, g_star, r_star, m_star, beta, mu
     return _spring_dashpot(overlap, n, v, shear, kn, cn, st, ct, mu, dt, limit_damping, force)
 
 
+def youngs_effective(youngs_i, poisson_i, youngs_j, poisson_j):
+    """E* of two materials: 1/E* = (1 - nu_i^2)/Y_i + (1 - nu_j^2)/Y_j."""
+    return 1.0 / ((1.0 - poisson_i ** 2) / youngs_i + (1.0 - poisson_j ** 2) / youngs_j)
+
+
+def shear_effective(youngs_i, poisson_i, youngs_j, poisson_j):
+    """G* of two materials: 1/G* = 2(2 - nu_i)(1 + nu_i)/Y_i + 2(2 - nu_j)(1 + nu_j)/Y_j."""
+    return 1.0 / (2.0 * (2.0 - poisson_i) * (1.0 + poisson_i) / youngs_i
+                  + 2.0 * (2.0 - poisson_j) * (1.0 + poisson_j) / youngs_j)
+
+
 def restitution_beta(e):
     """LIGGGHTS's damping parameter from the restitution coefficient (0 < e <= 1)."""
     log_e = math.log(e)

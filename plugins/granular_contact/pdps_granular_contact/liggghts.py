@@ -74,6 +74,8 @@ from numba import njit
 
 from pdps_core.api import ScriptError
 
+from .contact_models import restitution_beta, shear_effective, youngs_effective
+
 HERTZ, HOOKE = 0, 1
 NORMAL_MODELS = {"hertz": HERTZ, "hooke": HOOKE}
 HISTORY, NO_HISTORY = 0, 1
@@ -88,20 +90,6 @@ MATERIAL = ("y_star", "g_star", "beta", "log_e", "mu", "mu_roll", "eta_roll", "c
 Y_STAR, G_STAR, BETA, LOG_E, MU, MU_ROLL, ETA_ROLL, COHESION = range(len(MATERIAL))
 HISTORY_WIDTH = 6
 SQRT_FIVE_SIXTHS = math.sqrt(5.0 / 6.0)
-
-
-def youngs_effective(youngs_i, poisson_i, youngs_j, poisson_j):
-    return 1.0 / ((1.0 - poisson_i ** 2) / youngs_i + (1.0 - poisson_j ** 2) / youngs_j)
-
-
-def shear_effective(youngs_i, poisson_i, youngs_j, poisson_j):
-    return 1.0 / (2.0 * (2.0 - poisson_i) * (1.0 + poisson_i) / youngs_i
-                  + 2.0 * (2.0 - poisson_j) * (1.0 + poisson_j) / youngs_j)
-
-
-def restitution_beta(e):
-    log_e = math.log(e)
-    return log_e / math.sqrt(log_e * log_e + math.pi * math.pi)
 
 
 @njit(cache=True)
