@@ -11,7 +11,8 @@ Columns, in this order whatever the order of the keywords (LIGGGHTS's):
   divided by its lever arm (force; rolling friction torques are not included, as LIGGGHTS);
 - ``history`` (6 with pair gran: the tangential spring, then the epsd rolling spring torque, as i
   sees them);
-- ``contactArea`` (1): :math:`\pi a^2`, the circle where the spheres intersect (area);
+- ``contactArea`` (1): :math:`\pi a^2`, the circle where the spheres intersect (area; the smaller
+  sphere's cross-section once its centre is inside the other);
 - ``delta`` (1): the overlap :math:`R_i + R_j - r` (distance);
 - ``heatFlux`` (1): the conductive heat flux into i, :math:`h(T_j - T_i)` of fix heat/gran
   (energy/time; needs that fix).
@@ -42,6 +43,13 @@ from pdps_core.api import Compute, ScriptError, StyleArgs
 COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,
            "heatFlux": 1}
 DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
+
+
+def intersection_area(r, ri, rj):
+    """pi a^2 of the circle where spheres at distance r intersect; the smaller one's cross-section
+    once its centre is inside the other (as the LIGGGHTS laws and heat/gran take it)."""
+    circle = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
+    return np.where(r < np.maximum(ri, rj), math.pi * np.minimum(ri, rj) ** 2, circle)
 
 
 class ComputePairGranLocal(Compute):
@@ -85,7 +93,7 @@ class ComputePairGranLocal(Compute):
             elif key == "history":
                 blocks.append(found["history"])
             elif key == "contactArea":
-                blocks.append(-0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2)
+                blocks.append(intersection_area(r, ri, rj))
             elif key == "delta":
                 blocks.append(ri + rj - r)
             else:
@@ -110,7 +118,7 @@ class ComputePairGranLocal(Compute):
         ri, rj = p.radius[i], p.radius[j]
         ki, kj = heat.conductivity[p.type[i]], heat.conductivity[p.type[j]]
         if heat.mode == 0:
-            area = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
+            area = intersection_area(r, ri, rj)
         elif heat.mode == 1:
             area = np.full(len(i), heat.area_constant)
         else:

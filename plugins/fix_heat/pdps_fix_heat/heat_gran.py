@@ -13,7 +13,8 @@ Each particle has one temperature :math:`T_i` (uniform inside it). Two spheres i
 (0 for either: no flux) and the contact area :math:`A_{ij}`:
 
 - ``overlap`` (default): the circle where the spheres intersect,
-  :math:`A = -\tfrac{\pi}{4}(r-R_i-R_j)(r+R_i-R_j)(r-R_i+R_j)(r+R_i+R_j)/r^2`;
+  :math:`A = -\tfrac{\pi}{4}(r-R_i-R_j)(r+R_i-R_j)(r-R_i+R_j)(r+R_i+R_j)/r^2` (the smaller
+  sphere's cross-section once its centre is inside the other sphere, as LIGGGHTS 3.8);
 - ``constant A``: the same area A for every contact;
 - ``projection``: :math:`\pi\max(R_i, R_j)^2` (LIGGGHTS's source; its manual says the smaller).
 
@@ -96,7 +97,10 @@ def conduction(x, radius, temp, type_, conductivity, offsets, neighbors, nlocal,
                 continue
             if mode == OVERLAP:
                 r = math.sqrt(rsq)
-                area = -0.25 * math.pi * ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj)) / rsq
+                if r < max(ri, rj):
+                    area = math.pi * min(ri, rj) ** 2
+                else:
+                    area = -0.25 * math.pi * ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj)) / rsq
             elif mode == CONSTANT:
                 area = area_constant
             else:

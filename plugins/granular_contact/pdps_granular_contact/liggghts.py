@@ -36,7 +36,8 @@ normal force :math:`F_n` as the ones before left it:
   while the contact sticks.
 - cohesion ``sjkr``: :math:`F_n \mathrel{-}= k A` with the area of the circle where the two spheres
   intersect, :math:`A = -\tfrac{\pi}{4}(r-R_i-R_j)(r+R_i-R_j)(r-R_i+R_j)(r+R_i+R_j)/r^2`
-  (:math:`A = \pi(R_i^2 - r^2)` against a wall); ``sjkr2``: :math:`A = 2\pi\,\tfrac{2R_iR_j}{R_i+R_j}
+  (:math:`A = \pi(R_i^2 - r^2)` against a wall; :math:`\pi\min(R_i, R_j)^2` once the smaller sphere's
+  centre is inside the other, where that circle shrinks and vanishes); ``sjkr2``: :math:`A = 2\pi\,\tfrac{2R_iR_j}{R_i+R_j}
   \,\delta` (:math:`2\pi R_i\delta` against a wall). :math:`k` is the cohesion energy density
   (energy/volume). Acts only while the bodies touch.
 - tangential ``history``: the spring :math:`\boldsymbol\xi` grows by :math:`\mathbf{v}_{tr}\Delta t`
@@ -98,6 +99,10 @@ def contact_area(cohesion, wall, r, radius_i, radius_j):
     if cohesion == SJKR:
         if wall:
             return math.pi * (radius_i * radius_i - r * r)
+        if r < max(radius_i, radius_j):
+            # the smaller sphere's centre inside the other: its cross-section (LIGGGHTS 3.8's heat
+            # transfer does the same), where the intersection circle shrinks and then vanishes
+            return math.pi * min(radius_i, radius_j) ** 2
         return -0.25 * math.pi * ((r - radius_i - radius_j) * (r + radius_i - radius_j)
                                   * (r - radius_i + radius_j) * (r + radius_i + radius_j)) / (r * r)
     if cohesion == SJKR2:

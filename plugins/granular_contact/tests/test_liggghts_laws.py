@@ -208,3 +208,14 @@ def test_rolling_spring_grows_then_caps_and_epsd_damps_below_the_cap(rolling):
                             0.0, 1.0, dt, True, hist, force, tangential, torque)
     assert torque[2] == pytest.approx(cap, rel=1e-12)
     assert hist[5] == pytest.approx(cap, rel=1e-12)
+
+
+def test_sjkr_area_of_a_sphere_whose_centre_is_inside_the_other():
+    """A small sphere pushed in past its centre: the area is its cross-section, finite and positive
+    (the intersection circle shrinks to nothing and its formula turns negative inside)."""
+    small = 0.2 * R
+    for r in (0.5 * (R - small), 0.999 * R):
+        assert lg.contact_area(lg.SJKR, False, r, R, small) == pytest.approx(math.pi * small ** 2, rel=1e-15)
+        assert lg.contact_area(lg.SJKR, False, r, small, R) == pytest.approx(math.pi * small ** 2, rel=1e-15)
+    # just outside that regime the circle is still there and nearly that big (a^2 = s^2 - s^4/4R^2 at r = R)
+    assert 0.98 * math.pi * small ** 2 < lg.contact_area(lg.SJKR, False, 1.001 * R, R, small) < math.pi * small ** 2
