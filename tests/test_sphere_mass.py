@@ -57,3 +57,16 @@ def test_lammps_point_particles_keep_their_type_mass():
     sim.command("region r block 0 5 0 5 0 5\ncreate_box 1 r\ncreate_atoms 1 single 1 1 1\nmass 1 4.0\n"
                 "velocity all set 1 0 0\nrun 0")
     assert observables.kinetic_energy(sim, "all") == pytest.approx(2.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("dialect", ["lammps", "pdps"])
+def test_a_masses_section_for_spheres_is_refused(pdps_cli, tmp_path, dialect):
+    """LAMMPS's read_data: "Cannot set mass for atom style sphere"; the data file's densities give
+    the masses in every dialect (the mass command after read_data gives a PDPS type one mass)."""
+    (tmp_path / "s.data").write_text("s\n\n1 atoms\n1 atom types\n\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\n"
+                                     "Masses\n\n1 3.0\n\nAtoms # sphere\n\n1 1 1.0 1.0 5 5 5\n")
+    done = pdps_cli(f"dialect {dialect}\natom_style sphere\nread_data s.data\n")
+    assert done.returncode == 1
+    assert done.stderr.strip() == ("ERROR: in.test:3: read_data: s.data: Masses: cannot set a per-type mass for "
+                                   "atom_style sphere (LAMMPS's rule): each particle's mass comes from its diameter "
+                                   "and density columns")

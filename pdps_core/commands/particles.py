@@ -386,6 +386,11 @@ def read_data(sim, args):
     if sim.box is not None:
         raise ScriptError("read_data needs no box to exist yet (it creates it)")
     data = read_data_file(sim.resolve(args[0]), sim.particle_style)
+    if sim.particle_style == "sphere" and data.masses:
+        # LAMMPS's read_data refuses them too; in the PDPS dialect the mass command after read_data
+        # gives a type's spheres one mass
+        raise ScriptError(f"{args[0]}: Masses: cannot set a per-type mass for atom_style sphere (LAMMPS's rule): "
+                          "each particle's mass comes from its diameter and density columns")
     coeffs = _data_pair_coeffs(sim, data, args[0])
     make_box(sim, data.lo, data.hi, data.ntypes)
     for i, j, coeff in coeffs:
