@@ -69,8 +69,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, observables
 
-from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, forget_far, particle_wall_contacts,
-                           read_numbers)
+from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
+                           particle_wall_contacts, read_numbers)
 
 ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
 
@@ -89,7 +89,7 @@ def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach
                                     wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
                                     partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
                                     g_star, beta, dt, update, used, slots[offsets[k]:], n, rel, force,
-                                    spring, contact_force)
+                                    spring, contact_force, TRANSFER_COS)
         if not ok:
             return i
     return -1

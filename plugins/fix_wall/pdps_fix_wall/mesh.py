@@ -85,7 +85,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, observables
 
-from .wall_contact import (HISTORY_WIDTH, ContactLaw, check_law_numbers, forget_far,
+from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
                            particle_wall_contacts, read_numbers)
 
 MAX_CELLS_PER_AXIS = 64
@@ -509,7 +509,7 @@ def tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, 
 def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
                      mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update,
                      velocity, spin, pivot, belt, conveyor, tally, reference, face_force,
-                     mesh_torque, wear_k, face_wear, face_area):
+                     mesh_torque, wear_k, face_wear, face_area, transfer_cos):
     """Contacts of the chosen particles with their candidate triangles (module docstring), then the
     forces, with the law of each particle's type (``laws``: rows of ``wall_contact.LAW_COLUMNS``).
     With ``tally`` the forces on the wall are summed per triangle into ``face_force`` and their
@@ -545,7 +545,7 @@ def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles,
                                     omega, f, torque, rotation, partner, values, model, law[0],
                                     law[1], law[2], law[3], law[4], law[5] != 0.0, law[6], law[7],
                                     law[8], dt, update, used, slots, contact_normal, rel, force,
-                                    spring, contact_force)
+                                    spring, contact_force, transfer_cos)
         if not ok:
             return i
         if tally:
@@ -563,7 +563,8 @@ class MeshContacts:
     ``surface`` is any object with the attributes ``vertices`` (n x 3, now), ``triangles``
     (m x 3), ``face_normal`` (m x 3), ``moving``, ``velocity``, ``spin``, ``pivot`` (its rigid
     motion now: the wall velocity at p is velocity + spin x (p - pivot)), ``belt`` and ``conveyor``
-    (a conveyor's surface velocity): fix wall/mesh itself, or a fix mesh/surface."""
+    (a conveyor's surface velocity), ``transfer_cos`` (history hand-over between triangles): fix
+    wall/mesh itself, or a fix mesh/surface."""
 
     def __init__(self, sim, surface, history_name, group, width=HISTORY_WIDTH):
         self.surface = surface
@@ -659,7 +660,8 @@ class MeshContacts:
                                p.v, omega, p.f, torque, rotation, self.history.partner,
                                self.history.values, model, table, sim.dt, update,
                                mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
-                               tally is not None, *(NO_TALLY if tally is None else tally))
+                               tally is not None, *(NO_TALLY if tally is None else tally),
+                               mesh.transfer_cos)
         if bad >= 0:
             self.history.overflowed(p.tag[bad])
 
@@ -675,6 +677,7 @@ def no_wear(tally):
 # ---- the style ----------------------------------------------------------------------------------
 class FixWallMesh(Fix):
     name = "wall/mesh"
+    transfer_cos = TRANSFER_COS         # as a surface: the history hand-over angle (wall_contact)
     usage = ("fix ID GROUP wall/mesh file FILE|mesh MESH_ID [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] "
              "[surface_vel VX VY VZ] model lsd e kn Cn kt Ct mu | model lsd e kn mu | "

@@ -28,14 +28,19 @@ moves along with the motions defined before it, :math:`\mathbf{X}(t) = T_1(T_2(\
 
 Syntax::
 
-    fix ID GROUP mesh/surface file FILE [type N] [verbose yes|no] [heal no]
+    fix ID GROUP mesh/surface file FILE [type N] [verbose yes|no] [heal no] [curvature DEG]
         [scale S] [move DX DY DZ] [rotate axis AX AY AZ angle DEG]
         [surface_vel VX VY VZ | surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]
 
+``curvature DEG``: a contact that moves onto a neighbouring triangle keeps its history (tangential
+spring, rolling spring) when the two contact normals are within DEG degrees (default 5.73, a cosine
+of 0.995: LIGGGHTS's default of 0.256 degrees would restart the friction of a sphere rolling around a
+drum tessellated in facets of a few degrees). LIGGGHTS also uses it to decide edge and corner
+contacts; pdps finds those from the geometry alone (fix wall/mesh's docstring).
+
 The group is not used (the wall fix's group says which particles see the mesh). LIGGGHTS keywords
 pdps does not honour are refused by name: ``precision`` and ``heal auto_remove_duplicates`` (meshio
-merges only identical nodes), ``curvature`` (contact history passes between faces whose normals
-are within about 6 degrees), ``temperature`` (no heat conduction with walls).
+merges only identical nodes), ``temperature`` (no heat conduction with walls).
 
 Example::
 
@@ -50,14 +55,13 @@ from numba import njit
 from pdps_core.api import Fix, ScriptError, StyleArgs
 
 from .mesh import belt_on_face, face_normals, placed_mesh, read_keywords, rigid_velocity, unit
-from .wall_contact import read_numbers
+from .wall_contact import TRANSFER_COS, read_numbers
 
 SURFACE_ARITY = {"file": 1, "type": 1, "verbose": 1, "heal": 1, "precision": 1, "curvature": 1,
                  "temperature": 1, "scale": 1, "move": 3, "rotate": 6, "surface_vel": 3,
                  "surface_ang_vel": 10}
 REFUSED = {
     "precision": "pdps merges only identical nodes (meshio)",
-    "curvature": "contact history passes between faces whose normals are within about 6 degrees",
     "temperature": "pdps has no heat conduction with walls",
 }
 
@@ -128,6 +132,12 @@ class FixMeshSurface(Fix):
             axis = unit(read_numbers(w[5:8], "surface_ang_vel axis"), "surface_ang_vel axis")
             (omega,) = read_numbers(w[9:10], "surface_ang_vel omega")
             self.spin = axis * omega
+        self.transfer_cos = TRANSFER_COS
+        if "curvature" in given:
+            (degrees,) = read_numbers(given["curvature"], "curvature")
+            if not 0.0 < degrees <= 90.0:
+                raise ScriptError(f"curvature must be in (0, 90] degrees (got {given['curvature'][0]})")
+            self.transfer_cos = math.cos(math.radians(degrees))
         self.surface_motion = "surface_vel" in given or "surface_ang_vel" in given
         self.moving = False
         self.movers = []

@@ -132,11 +132,12 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
 
 @njit(cache=True)
 def wall_slots(i, start, end, distance, normal, key, reach, partner, values, normal_at, update,
-               used, slots):
+               used, slots, transfer_cos):
     """The history slot of each of particle i's wall contacts ``start..end`` into
     ``slots[c - start]`` (-1: none, for contacts at distance >= reach). A contact keeps the slot of
     its wall element (``key``); with ``update`` a new one continues a contact that just ended with
-    nearly the same normal (stored at ``normal_at`` in each slot's values), the slots of contacts
+    nearly the same normal (cosine above ``transfer_cos``; the normal is stored at ``normal_at`` in
+    each slot's values), the slots of contacts
     that ended are freed, and the remaining new contacts open zeroed slots. Returns False when
     particle i has no free slot."""
     capacity = partner.shape[1]
@@ -159,7 +160,7 @@ def wall_slots(i, start, end, distance, normal, key, reach, partner, values, nor
     # a new contact continues one that just ended with nearly the same normal
     for c in range(start, end):
         if distance[c] < reach and slots[c - start] < 0:
-            best, best_cos = -1, TRANSFER_COS
+            best, best_cos = -1, transfer_cos
             for k in range(capacity):
                 if partner[i, k] >= 0 and not used[k]:
                     at = k * width + normal_at
@@ -196,7 +197,7 @@ def wall_slots(i, start, end, distance, normal, key, reach, partner, values, nor
 def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
                            v, omega, f, torque, rotation, partner, values,
                            model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
-                           used, slots, n, rel, force, spring, contact_force):
+                           used, slots, n, rel, force, spring, contact_force, transfer_cos):
     """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
     surface, normal from surface to centre, element key, wall velocity at the contact point);
     each contact's force on i into ``contact_force[c]`` (zero for contacts that do not touch).
@@ -206,7 +207,7 @@ def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, 
     Returns False when particle i has no free history slot."""
     width = HISTORY_WIDTH
     if not wall_slots(i, start, end, distance, normal, key, reach, partner, values, 3, update, used,
-                      slots):
+                      slots, transfer_cos):
         return False
     for c in range(start, end):
         overlap = reach - distance[c]

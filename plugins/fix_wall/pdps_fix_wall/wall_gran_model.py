@@ -73,7 +73,7 @@ from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs
 from pdps_granular_contact import liggghts
 
 from .mesh import NO_TALLY, MeshContacts, mesh_fix, no_wear, tally_wall_forces, triangle_contacts
-from .wall_contact import forget_far, read_numbers, wall_slots
+from .wall_contact import TRANSFER_COS, forget_far, read_numbers, wall_slots
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
 PRIMITIVES = {"xplane": (XPLANE, 1), "yplane": (YPLANE, 1), "zplane": (ZPLANE, 1),
@@ -91,14 +91,14 @@ MODEL_WORDS = {"model": liggghts.NORMAL_MODELS, "tangential": liggghts.TANGENTIA
 def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega, f,
                            torque, radius, rmass, ptype, wall_type, models, table, charvel, nktv2p,
                            dt, update, partner, values, used, slots, hist, force, tangential, roll,
-                           n, vtr, wr, contact_force, log, logged):
+                           n, vtr, wr, contact_force, log, logged, transfer_cos):
     """Force and torque on particle i from its wall contacts 0..count (module docstring), each
     contact's force into ``contact_force``; with a ``log`` of rows (LOG_COLUMNS), one row per
     touching contact after ``logged[0]`` (which counts them). Returns False when i has no free
     history slot."""
     r_i = radius[i]
     if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, NORMAL_AT, update,
-                      used, slots):
+                      used, slots, transfer_cos):
         return False
     width = values.shape[1] // partner.shape[1]
     for c in range(count):
@@ -164,7 +164,7 @@ def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radi
                          vertices, triangles, face_normal, velocity, spin, pivot, belt, conveyor,
                          wall_type, models, table, charvel, nktv2p, dt, update, partner, values,
                          tally, reference, face_force, mesh_torque, wear_k, face_wear, face_area,
-                         log, logged):
+                         log, logged, transfer_cos):
     """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form),
     logged as liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact
     history overflowed."""
@@ -198,7 +198,7 @@ def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radi
                                       f, torque, radius, rmass, ptype, wall_type, models, table,
                                       charvel, nktv2p, dt, update, partner, values, used, slots,
                                       hist, force, tangential, roll, n, vtr, wr, contact_force, log,
-                                      logged):
+                                      logged, transfer_cos):
             return i
         if tally:
             tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal,
@@ -271,7 +271,7 @@ def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, 
                                       f, torque, radius, rmass, ptype, wall_type, models, table,
                                       charvel, nktv2p, dt, update, partner, values, used, slots,
                                       hist, force, tangential, roll, n, vtr, wr, contact_force, log,
-                                      logged):
+                                      logged, TRANSFER_COS):
             return i
     return -1
 
@@ -494,7 +494,8 @@ class FixWallGranModel(Fix):
             bad = liggghts_mesh_forces(near, offsets, triangles, *common, mesh.vertices, mesh.triangles,
                                        mesh.face_normal, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
                                        mesh.conveyor, mesh.material_type, *law, history.partner, values,
-                                       tally is not None, *(NO_TALLY if tally is None else tally), rows, logged)
+                                       tally is not None, *(NO_TALLY if tally is None else tally), rows, logged,
+                                       mesh.transfer_cos)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs.append((number, rows[:logged[0]]))

@@ -8,6 +8,7 @@ The reference positions are computed here from the formulas, with Rodrigues' for
 """
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -15,6 +16,7 @@ import pytest
 from pdps_core.api import ScriptError
 from pdps_core.testing import make_box
 
+DATA = os.path.join(os.path.dirname(__file__), "data")
 DT = 0.01
 
 
@@ -202,7 +204,7 @@ def test_a_conveyor_cannot_be_moved(data):
     ("type 1", "missing keyword file"),
     ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
     ("file {data}/square.stl type x", "type must be a whole number (got x)"),
-    ("file {data}/square.stl curvature 1e-5", "keyword curvature is not supported"),
+    ("file {data}/square.stl curvature 120", "curvature must be in (0, 90] degrees (got 120)"),
     ("file {data}/square.stl precision 1e-5", "keyword precision is not supported"),
     ("file {data}/square.stl heal auto_remove_duplicates", "heal auto_remove_duplicates is not supported"),
     ("file {data}/square.stl surface_ang_vel origin 0 0 0 axis 0 0 1 spin 1",
@@ -320,3 +322,27 @@ def test_mesh_surface_planar_takes_a_flat_mesh_and_refuses_a_funnel(data):
     with pytest.raises(ScriptError, match=r"hopper.stl is not planar: a vertex lies 1\.\d+ from the plane of its "
                                           r"first triangle \(use fix mesh/surface\)$"):
         sim.command(f"fix funnel all mesh/surface/planar file {data}/hopper.stl")
+
+
+@pytest.mark.parametrize("curvature, taken_over", [(5.0, True), (1.0, False)])
+def test_curvature_is_the_angle_within_which_a_contact_hands_its_history_on(curvature, taken_over):
+    """wall_slots with the cosine of mesh/surface's curvature: a contact that ended on triangle 5
+    (normal along z, spring (1, 2, 0)) and a new one on triangle 6 whose normal is 3 degrees away:
+    within curvature 5 the new contact continues the old one's spring; within 1 it starts afresh."""
+    from pdps_fix_wall.wall_contact import wall_slots
+    sim = make_box(f"fix cad all mesh/surface file {DATA}/square.stl curvature {curvature}",
+                   box="-4 4 -4 4 -4 4", particle_style="sphere")
+    capacity, width = 4, 6
+    partner = np.full((1, capacity), -1, dtype=np.int64)
+    values = np.zeros((1, capacity * width))
+    partner[0, 0] = 5
+    values[0, 0:6] = [1.0, 2.0, 0.0, 0.0, 0.0, 1.0]
+    tilt = math.radians(3.0)
+    normal = np.array([[math.sin(tilt), 0.0, math.cos(tilt)]])
+    slots = np.empty(1, dtype=np.int64)
+    ok = wall_slots(0, 0, 1, np.array([0.4]), normal, np.array([6]), 0.5, partner, values, 3, True,
+                    np.empty(capacity, dtype=np.bool_), slots, sim.fixes["cad"].transfer_cos)
+    assert ok
+    assert partner[0].tolist().count(6) == 1 and 5 not in partner[0].tolist()
+    spring = values[0, slots[0] * width:slots[0] * width + 3].tolist()
+    assert spring == ([1.0, 2.0, 0.0] if taken_over else [0.0, 0.0, 0.0])
