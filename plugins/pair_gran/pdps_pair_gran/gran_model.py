@@ -52,7 +52,8 @@ potential energy is reported; the neighbor cutoff is the largest :math:`R_i + R_
 Time step: the run warns when it is more than a tenth of the shortest contact: the Hertz time
 :math:`2.868\,(m^{*2}/(R^*Y^{*2}v))^{1/5}` at twice the largest speed (hertz), or
 :math:`\pi/\sqrt{k_n/m^* - \gamma_n^2/4m^{*2}}` (hooke), for the lightest particle of each type
-against its copy.
+against its copy. ``fix check/timestep/gran`` also gets the Rayleigh time of the particles present,
+:math:`\pi R\sqrt{\rho/G}/(0.1631\nu + 0.8766)`, :math:`G = Y/2(1+\nu)` (LIGGGHTS's).
 
 Example (LIGGGHTS)::
 
@@ -275,6 +276,8 @@ class PairGranModel(PairGran):
                               "and rotation)")
         self.models[6] = sim.dimension
         self.table, self.charvel = liggghts.material_table(sim, self.models, ntypes, f"pair {self.name}")
+        self.youngs = liggghts.read_property(sim, "youngsModulus", ntypes, f"pair {self.name}")
+        self.poisson = liggghts.read_property(sim, "poissonsRatio", ntypes, f"pair {self.name}")
         self.open_history()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
@@ -284,11 +287,23 @@ class PairGranModel(PairGran):
         return cutoffs
 
     def timestep_limits(self, sim):
-        """{"rayleigh": None, "hertz": t, "contact": t}: the shortest contact of the lightest particle
-        of each type hitting its copy (module docstring); inf when nothing moves (hertz) or there
-        are no particles."""
+        """{"rayleigh": t_R, "hertz": t, "contact": t}: the smallest Rayleigh time of the particles
+        present (LIGGGHTS's check/timestep/gran: pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = Y / 2(1 +
+        nu)) and the shortest contact of the lightest particle of each type hitting its copy (module
+        docstring); None where there is nothing to time (no particles; for hertz, nothing moving)."""
         p = sim.particles
         nl = p.nlocal
+        rayleigh = math.inf
+        for t in range(1, sim.ntypes + 1):
+            of_type = p.type[:nl] == t
+            if not of_type.any():
+                continue
+            radius, mass = p.radius[:nl][of_type], p.rmass[:nl][of_type]
+            density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
+            k = int(np.argmin(radius * np.sqrt(density)))
+            shear = self.youngs[t] / (2.0 * (1.0 + self.poisson[t]))
+            rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, self.poisson[t]))
+        rayleigh = sim.comm.min(rayleigh)
         shortest = math.inf
         speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
         for t in range(1, sim.ntypes + 1):
@@ -307,7 +322,8 @@ class PairGranModel(PairGran):
                                                           self.charvel, sim.units.nktv2p, True)
             rate = kn / m_eff - (gamma_n / (2.0 * m_eff)) ** 2
             shortest = min(shortest, math.pi / math.sqrt(rate) if rate > 0 else math.pi * math.sqrt(m_eff / kn))
-        return {"rayleigh": None, "hertz": shortest if math.isfinite(shortest) else None, "contact": shortest}
+        return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
+                "hertz": shortest if math.isfinite(shortest) else None, "contact": shortest}
 
     def contacts(self, sim, group="all"):
         """The contacts of owned particles with both particles in ``group``, as the forces of this

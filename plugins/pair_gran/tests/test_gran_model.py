@@ -315,3 +315,18 @@ def test_tangential_damping_off_leaves_only_the_spring():
     gamma_t = -2 * math.sqrt(5 / 6) * beta * math.sqrt(8 * g_star * math.sqrt(r_star * delta) * m_star)
     assert forces["on"][0, 1] == pytest.approx(-gamma_t * 0.001, rel=1e-12)
     assert forces["off"][0, 1] == 0.0
+
+
+def test_timestep_limits_give_liggghts_rayleigh_and_hertz_times():
+    """Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = Y / 2(1 + nu); Hertz time of a
+    sphere hitting its copy at twice the largest speed, 2.868 (m*^2 / (R* Y*^2 v))^(1/5)."""
+    sim = two_spheres("model hertz tangential history", 1e-4, 1.0)
+    sim.command("run 0")
+    limits = sim.pair.timestep_limits(sim)
+    shear = 5e6 / (2 * 1.45)
+    rayleigh = math.pi * (D / 2) * math.sqrt(RHO / shear) / (0.1631 * 0.45 + 0.8766)
+    assert limits["rayleigh"] == pytest.approx(rayleigh, rel=1e-12)
+    y_star, _, r_star, m_star = effective()
+    hertz = 2.868 * (m_star ** 2 / (r_star * y_star ** 2 * 2.0)) ** 0.2
+    assert limits["hertz"] == pytest.approx(hertz, rel=1e-12)
+    assert limits["contact"] == limits["hertz"]
