@@ -54,7 +54,7 @@ def test_write_data_reads_back(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("line, message", [
     ("set type 1 colour 2", "unknown set keyword colour (supported: type, type/fraction, x, y, z, vx, vy, vz, "
-                            "mass, diameter, density, image, omega, charge, mol)"),
+                            "mass, diameter, density, image, omega, charge, mol, property/atom, property/peratom)"),
     ("set type 1 type 3", "type must be <= 2 (got 3)"),
     ("set type 1 type/fraction 2 1.5 7", "fraction must be <= 1 (got 1.5)"),
     ("set atom 1 mass 2", "set mass needs per-particle masses (atom_style sphere)"),
