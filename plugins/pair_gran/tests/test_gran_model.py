@@ -20,7 +20,7 @@ def material(e=0.5, mu=0.5, extra=""):
             f"fix m4 all property/global coefficientFriction peratomtypepair 1 {mu!r}\n" + extra)
 
 
-def two_spheres(pair, gap, speed, *, mat=None, dt=1e-6, extra=""):
+def two_spheres(pair, gap, speed, *, mat=None, dt=1e-6, extra="", style="gran", coeff=""):
     """Two spheres of diameter D on the x axis, centres 2 (D/2 + gap) apart, approaching at
     ``speed`` each (gap < 0: overlapping); SI units, LIGGGHTS's spelling."""
     sim = Simulation(screen=False, log=None)
@@ -35,8 +35,8 @@ create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
 {material() if mat is None else mat}
-pair_style gran {pair}
-pair_coeff * *
+pair_style {style} {pair}
+pair_coeff * * {coeff}
 timestep {dt!r}
 create_atoms 1 single {-x!r} 0 0 units box
 create_atoms 1 single {x!r} 0 0 units box
@@ -330,3 +330,20 @@ def test_timestep_limits_give_liggghts_rayleigh_and_hertz_times():
     hertz = 2.868 * (m_star ** 2 / (r_star * y_star ** 2 * 2.0)) ** 0.2
     assert limits["hertz"] == pytest.approx(hertz, rel=1e-12)
     assert limits["contact"] == limits["hertz"]
+
+
+def test_head_on_hertz_collision_is_dem_hertzs():
+    """LIGGGHTS's normal Hertz law is pdps's dem/hertz one (the same stiffness and Tsuji damping):
+    a head-on collision, with no tangential motion, gives the same velocities after every step to
+    1e-12; so docs/accuracy-dem.md's dem/hertz rows (restitution against dt/t_c) hold for it."""
+    records = []
+    for style, pair, coeff in (("gran", "model hertz tangential history", ""),
+                               ("dem/hertz", "", "5.e6 0.45 0.5 0.5")):
+        sim = two_spheres(pair, 1e-4, 1.0, extra="fix integr all nve/sphere", style=style, coeff=coeff)
+        velocities = []
+        for _ in range(30):
+            sim.command("run 100")
+            velocities.append(sim.v[np.argsort(sim.tag)][:, 0].copy())
+        records.append(np.array(velocities))
+    np.testing.assert_allclose(records[0], records[1], rtol=1e-12, atol=1e-15)
+    assert records[0][-1, 0] == pytest.approx(-0.5, rel=2e-3)
