@@ -116,6 +116,8 @@ CONTRACT = {
         "reverse_comm": "reverse_comm(particles, names): ghosts' values summed onto their owners",
         "reverse_rows": "reverse_rows(rows): ghost rows back to their owners, merged by the style",
         "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
+        "send_rows": "send_rows(rows, ranks): each row to the rank named; returns (rows received, the rank each came from)",
+        "rank_of": "rank_of(points): the rank whose sub-domain holds each point (points inside the box)",
     },
     "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},
     "Units": {"name": "lj, real, metal, si, cgs, micro or nano", "boltz": "k_B", "mvv2e": "m v^2 to energy",

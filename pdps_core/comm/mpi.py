@@ -338,6 +338,19 @@ class MPIComm:
             self._back_buffer = np.empty(int(1.25 * size) + 64)
         return self._back_buffer[:size]
 
+    def send_rows(self, rows, ranks):
+        """Each row (float64) to the rank named in ``ranks``: (rows received, in the order of the
+        ranks that sent them, and the rank each came from)."""
+        rows = np.asarray(rows, dtype=np.float64)       # (n, width), n = len(ranks)
+        order = np.argsort(ranks, kind="stable")
+        counts = np.bincount(np.asarray(ranks)[order], minlength=self.nprocs)
+        received, sources = self._alltoall_rows(rows[order], counts, return_counts=True)
+        return received.reshape(len(received), rows.shape[1]), np.repeat(np.arange(self.nprocs), sources)
+
+    def rank_of(self, points):
+        """The rank whose sub-domain holds each point (inside the box)."""
+        return self.decomposition.owner(np.asarray(points, dtype=np.float64).reshape(-1, 3))
+
     def reverse_rows(self, rows):
         """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,
         for values a style merges itself rather than sums."""

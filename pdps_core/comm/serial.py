@@ -161,6 +161,14 @@ class SerialComm:
             self._owners = np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
         return self._owners
 
+    def send_rows(self, rows, ranks):
+        """On one rank every row stays: (rows, the rank each came from)."""
+        rows = np.asarray(rows, dtype=np.float64)       # (n, width), n = len(ranks)
+        return rows, np.zeros(len(rows), dtype=np.int64)
+
+    def rank_of(self, points):
+        return np.zeros(len(points), dtype=np.int64)
+
     def reverse_rows(self, rows):
         """Rows of ghost values, with the owned index each ghost copies."""
         return self.ghost_source, rows
