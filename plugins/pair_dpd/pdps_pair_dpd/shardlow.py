@@ -36,8 +36,8 @@ momentum exactly; together the two are the trapezoidal rule for the radial relat
 damping factor :math:`(1 - \mu g)/(1 + \mu g)` has modulus below one for any :math:`\Delta t`
 (unconditionally stable), and the random impulse over the step has variance
 :math:`\sigma^2 w^2 \Delta t`, as the fluctuation-dissipation theorem asks. The result depends on
-the order in which pairs are visited (any order is a valid splitting); pdps visits the half list
-in storage order.
+the order in which pairs are visited (any order is a valid splitting); pdps's order is given
+below.
 
 Accuracy: each pair update leaves the Maxwell-Boltzmann distribution of the velocities exactly
 invariant, whatever the time step (the update of u above has stationary variance
@@ -53,16 +53,21 @@ stream. With the pair's own seed, a Shardlow run would reuse, number for number,
 two runs meant to be independent samples would share their noise. A XOR with a large constant
 rather than seed + 1, because seed + 1 is the seed a user is likely to type for the next run.
 
-Order of the sweep: every pair within the cutoff, both particles in the group, is updated once per
-step in one global order, sorted by the pair's two particle ids; each update reads the velocities the
-previous ones left (a sequential sweep). Each rank collects the pairs of its half list, rank 0 sweeps
-them all over the velocities of all particles and sends the result back, so the trajectory is the
-same on any number of ranks and does not depend on how particles are stored. The sweep itself is
-serial: it costs a counting sort of the pairs per step (by the lower tag, then each particle's
-partners by the higher), and on several ranks a gather. (LAMMPS sweeps its SSA sub-boxes in
-parallel instead; its result depends on the decomposition.) A particle paired with its own periodic
-image (boxes shorter than the cutoff) is skipped: its relative velocity and net impulse are zero.
-Ghost velocities are left stale: with this fix the pair style reads none.
+Order of the sweep, the same on any number of ranks (and parallel on several): the box is cut into
+a global grid of cells at least the cutoff wide, n per axis (n even, or 1 along a periodic axis
+shorter than 4 cutoffs). A pair's two particles lie in the same or neighbouring cells, so every
+pair belongs to one *block* of 2 x 2 x 2 cells, the one whose lowest cell along each axis holds one
+of them. Blocks are swept colour by colour (the parity of the block's cell along x, y and z: 8
+colours, 4 in 2-d); two blocks of one colour share no particle, so their order does not matter, and
+within a block the pairs are swept in the order of their (lower, higher) particle ids. Each rank
+sweeps the blocks whose first cell's centre lies in its sub-domain: the pairs of its half list go
+to the block's rank, and before each colour every particle's owner sends its velocity where that
+colour's block of the particle is swept and takes the result back. (LAMMPS sweeps sub-box by
+sub-box of each rank's domain, so its result depends on the decomposition.) A particle's cell is
+its owner's, from its position wrapped into the box, so ghosts agree with owners to the bit. A
+particle paired with its own periodic image (boxes shorter than the cutoff) is skipped: its
+relative velocity and net impulse are zero. Ghost velocities are left stale: with this fix the
+pair style reads none.
 
 Only pairs with both particles in the fix's group are updated (LAMMPS ignores the group).
 ``pair_style dpd/fdt`` must be the pair style; a deterministic integrator (``fix nve``) must be
@@ -110,15 +115,45 @@ def radial_relative_velocity(v, i, j, ex, ey, ez):
 
 
 @njit(cache=True)
-def collect_pairs(x, type_, tag, number, mask, groupbit, offsets, neighbors, nlocal, cut):
-    """The pairs this rank's half list holds within the cutoff, both particles in the group, as the
-    ``number`` (any per-particle label, owned and ghost) of the lower-tag particle, that of the other,
-    and the separation vector from the other to the lower-tag particle."""
+def cells_of(x, n, lo, length, ncell, periodic, out):
+    """The global sweep cell (x, y, z indices) of each of the first n particles, from its position
+    wrapped into the box along periodic axes (clamped to the grid along others)."""
+    for i in range(n):
+        for d in range(3):
+            u = x[i, d] - lo[d]
+            if periodic[d]:
+                u -= length[d] * math.floor(u / length[d])
+            out[i, d] = min(max(int(math.floor(u / length[d] * ncell[d])), 0), ncell[d] - 1)
+
+
+@njit(cache=True)
+def _block_axis(ca, cb, n, periodic):
+    """The block's cell along one axis: the lower of two equal or neighbouring cells."""
+    if n == 1 or ca == cb:
+        return ca
+    if cb == ca + 1 or (periodic and ca == n - 1 and cb == 0):
+        return ca
+    return cb
+
+
+@njit(cache=True)
+def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets, neighbors, nlocal, cut, ncell,
+                  periodic, block_rank, me):
+    """The pairs this rank's half list holds within the cutoff, both particles in the group, split by
+    the rank sweeping their block. Those swept here: the ``owner`` row of each end (the lower tag's
+    first; -1 for a particle owned by another rank), their tags, the separation from the higher- to
+    the lower-tag particle, the sweep key (colour, then block). Those swept elsewhere: rows (lower
+    tag, higher tag, separation (3), types (2), inverse masses (2), key) and their rank."""
     total = offsets[nlocal]
-    a = np.empty(total, dtype=np.int64)
-    b = np.empty(total, dtype=np.int64)
-    d = np.empty((total, 3))
+    ends = np.empty((total, 2), dtype=np.int64)
+    ids = np.empty((total, 2), dtype=np.int64)
+    separation = np.empty((total, 3))
+    key = np.empty(total, dtype=np.int64)
+    away = np.empty((0, 10))
+    away_rank = np.empty(0, dtype=np.int64)
+    nblocks = ncell[0] * ncell[1] * ncell[2]
     m = 0
+    sent = 0
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
@@ -135,56 +170,96 @@ def collect_pairs(x, type_, tag, number, mask, groupbit, offsets, neighbors, nlo
             rc = cut[ti, type_[j]]
             if rsq >= rc * rc or rsq < EPSILON * EPSILON:
                 continue
-            sign = 1.0 if tag[i] < tag[j] else -1.0
-            a[m] = number[i] if tag[i] < tag[j] else number[j]
-            b[m] = number[j] if tag[i] < tag[j] else number[i]
-            d[m, 0] = sign * delx
-            d[m, 1] = sign * dely
-            d[m, 2] = sign * delz
+            lower, upper, sign = (i, j, 1.0) if tag[i] < tag[j] else (j, i, -1.0)
+            bx = _block_axis(int(cell[lower, 0]), int(cell[upper, 0]), ncell[0], periodic[0])
+            by = _block_axis(int(cell[lower, 1]), int(cell[upper, 1]), ncell[1], periodic[1])
+            bz = _block_axis(int(cell[lower, 2]), int(cell[upper, 2]), ncell[2], periodic[2])
+            block = bx + ncell[0] * (by + ncell[1] * bz)
+            sweep_key = ((bx & 1) + 2 * (by & 1) + 4 * (bz & 1)) * nblocks + block
+            rank = block_rank[block]
+            if rank != me:
+                if sent == len(away):
+                    grown = np.empty((2 * sent + 64, 10))
+                    grown[:sent] = away[:sent]
+                    away = grown
+                    grown_rank = np.empty(2 * sent + 64, dtype=np.int64)
+                    grown_rank[:sent] = away_rank[:sent]
+                    away_rank = grown_rank
+                row = away[sent]
+                row[0], row[1] = tag[lower], tag[upper]
+                row[2], row[3], row[4] = sign * delx, sign * dely, sign * delz
+                row[5], row[6] = type_[lower], type_[upper]
+                row[7], row[8] = inv_mass[lower], inv_mass[upper]
+                row[9] = sweep_key
+                away_rank[sent] = rank
+                sent += 1
+                continue
+            ends[m, 0] = owner[lower]
+            ends[m, 1] = owner[upper]
+            ids[m, 0] = tag[lower]
+            ids[m, 1] = tag[upper]
+            separation[m, 0] = sign * delx
+            separation[m, 1] = sign * dely
+            separation[m, 2] = sign * delz
+            key[m] = sweep_key
             m += 1
-    return a[:m], b[:m], d[:m]
+    return ends[:m], ids[:m], separation[:m], key[:m], away[:sent], away_rank[:sent]
 
 
 @njit(cache=True)
-def sort_pairs(a, b, d, count):
-    """The pairs sorted by (a, b), numbers below ``count``: a counting sort by a, then each
-    particle's few partners by b. Copies, so that the sweep reads memory in order."""
-    start = np.zeros(count + 1, dtype=np.int64)
-    for m in range(len(a)):
-        start[a[m] + 1] += 1
-    for k in range(count):
-        start[k + 1] += start[k]
-    fill = start[:-1].copy()
-    sorted_a, sorted_b, sorted_d = np.empty_like(a), np.empty_like(b), np.empty_like(d)
-    for m in range(len(a)):
-        slot = fill[a[m]]
-        fill[a[m]] += 1
-        sorted_a[slot] = a[m]
-        sorted_b[slot] = b[m]
-        sorted_d[slot, 0] = d[m, 0]
-        sorted_d[slot, 1] = d[m, 1]
-        sorted_d[slot, 2] = d[m, 2]
-    for k in range(count):
-        lo, hi = start[k], start[k + 1]
-        if hi - lo > 1:
-            by_b = np.argsort(sorted_b[lo:hi], kind="mergesort") + lo
-            sorted_b[lo:hi] = sorted_b[by_b]
-            sorted_d[lo:hi] = sorted_d[by_b]
-    return sorted_a, sorted_b, sorted_d
+def sweep_order(key, ends, ids, separation, nkeys):
+    """The pairs in sweep order, as copies: by key (colour, then block: a stable counting sort that
+    writes each pair to its place, reading the pairs in memory order), then within a key by their
+    tags (a block holds a few dozen pairs: insertion sort). Returns the sorted ends, tags and
+    separations, and where each key's pairs start."""
+    m = len(key)
+    first = np.zeros(nkeys + 1, dtype=np.int64)
+    for k in range(m):
+        first[key[k] + 1] += 1
+    for k in range(nkeys):
+        first[k + 1] += first[k]
+    sorted_ends = np.empty_like(ends)
+    sorted_ids = np.empty_like(ids)
+    sorted_separation = np.empty_like(separation)
+    fill = first[:-1].copy()
+    for k in range(m):
+        slot = fill[key[k]]
+        fill[key[k]] = slot + 1
+        sorted_ends[slot, 0], sorted_ends[slot, 1] = ends[k, 0], ends[k, 1]
+        sorted_ids[slot, 0], sorted_ids[slot, 1] = ids[k, 0], ids[k, 1]
+        for d in range(3):
+            sorted_separation[slot, d] = separation[k, d]
+    for c in range(nkeys):
+        lo, hi = first[c], first[c + 1]
+        for p in range(lo + 1, hi):
+            a0, a1 = sorted_ids[p, 0], sorted_ids[p, 1]
+            e0, e1 = sorted_ends[p, 0], sorted_ends[p, 1]
+            s0, s1, s2 = sorted_separation[p, 0], sorted_separation[p, 1], sorted_separation[p, 2]
+            q = p - 1
+            while q >= lo and (sorted_ids[q, 0] > a0 or (sorted_ids[q, 0] == a0 and sorted_ids[q, 1] > a1)):
+                sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = sorted_ids[q, 0], sorted_ids[q, 1]
+                sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = sorted_ends[q, 0], sorted_ends[q, 1]
+                for d in range(3):
+                    sorted_separation[q + 1, d] = sorted_separation[q, d]
+                q -= 1
+            sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = a0, a1
+            sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = e0, e1
+            sorted_separation[q + 1, 0], sorted_separation[q + 1, 1], sorted_separation[q + 1, 2] = s0, s1, s2
+    return sorted_ends, sorted_ids, sorted_separation, first
 
 
 @njit(cache=True)
-def sweep_pairs(v, inv_mass, type_, tags, a, b, d, cut, gamma, sigma, dt, key, step):
-    """Shardlow's S1 update pair after pair, in the order given; v, inv_mass, type_ and tags are
-    indexed by the numbers a and b of each pair's particles (a the lower tag, d from b to a)."""
+def sweep_pairs(v, inv_mass, type_, ends, ids, d, lo, hi, cut, gamma, sigma, dt, key, step):
+    """Shardlow's S1 update pair after pair, pairs lo to hi; v, inv_mass and type_ are indexed by
+    the numbers of each pair's ends (the lower tag's first; d from the second to the first)."""
     sqrt_dt = math.sqrt(dt)
-    for m in range(len(a)):
-        i, j = a[m], b[m]
+    for m in range(lo, hi):
+        i, j = ends[m, 0], ends[m, 1]
         ti, tj = type_[i], type_[j]
         r = math.sqrt(d[m, 0] * d[m, 0] + d[m, 1] * d[m, 1] + d[m, 2] * d[m, 2])
         ex, ey, ez = d[m, 0] / r, d[m, 1] / r, d[m, 2] / r
         w = 1.0 - r / cut[ti, tj]
-        s = 0.5 * sigma[ti, tj] * w * sqrt_dt * pair_gaussian(key, step, tags[i], tags[j])
+        s = 0.5 * sigma[ti, tj] * w * sqrt_dt * pair_gaussian(key, step, ids[m, 0], ids[m, 1])
         g = 0.5 * gamma[ti, tj] * w * w * dt
         inv_mi, inv_mj = inv_mass[i], inv_mass[j]
         implicit = 1.0 / (1.0 + (inv_mi + inv_mj) * g)
@@ -219,9 +294,13 @@ def check_fix_order(sim):
                       "(e.g. fix 2 all nve)")
 
 
+CELL = "shardlow_cell"        # each particle's sweep cell, its owner's, copied to ghosts
+
+
 class FixShardlow(Fix):
     name = "shardlow"
     usage = "fix ID GROUP shardlow"
+    per_atom = ((CELL, 3),)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -232,47 +311,146 @@ class FixShardlow(Fix):
         check_fix_order(sim)
 
     def initial_integrate(self, sim):
-        """Pairs are swept in one global order, sorted by their two tags, on rank 0 over the
-        velocities of all particles: the same sequence of updates on any number of ranks (LAMMPS
-        instead sweeps sub-box by sub-box in parallel, and its result depends on the decomposition)."""
         p, pair, comm = sim.particles, sim.pair, sim.comm
-        nlist = sim.pair_list
         n, everyone = p.nlocal, p.nlocal + p.nghost
-        key = sim.random_key(pair.args.seed) ^ SHARDLOW_KEY
-        groupbit = sim.groups.bit(self.group)
+        box = sim.box
+        periodic = np.array([box.periodic[d] and d < sim.dimension for d in range(3)], dtype=np.bool_)
+        ncell = np.ones(3, dtype=np.int64)
+        for d in range(sim.dimension):
+            count = int(box.length[d] // float(pair.cut.max()))
+            if periodic[d]:
+                count = 1 if count < 4 else count - count % 2
+            ncell[d] = max(count, 1)
+        nblocks = int(np.prod(ncell))
+        cell = p.arrays[CELL]
+        cells_of(p.x, n, box.lo, box.length, ncell, periodic, cell)
+        comm.forward_comm(p, (CELL,))
+        nlist = sim.pair_list
+        table = self._block_ranks(sim, ncell)
+        owner = comm.owners(p)
+        inv_mass = 1.0 / (p.rmass[:everyone] if p.has("rmass") else sim.mass[p.type[:everyone]])
+        ends, ids, separation, keys, outgoing, rank = collect_pairs(
+            p.x, p.type, p.tag, cell, owner, inv_mass, p.mask, sim.groups.bit(self.group), nlist.offsets,
+            nlist.neighbors, n, pair.cut, ncell, periodic, table, comm.rank)
+        sweep = (pair.cut, pair.gamma, pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
         if comm.nprocs == 1:
-            # one rank owns every tag: number the particles (ghosts too) by their tag's rank
-            by_tag = np.argsort(p.tag[:n], kind="stable")
-            tags = p.tag[by_tag]
-            a, b, d = collect_pairs(p.x, p.type, p.tag, np.searchsorted(tags, p.tag[:everyone]), p.mask,
-                                    groupbit, nlist.offsets, nlist.neighbors, n, pair.cut)
-            velocities = p.v[by_tag]
-            self._sweep(sim, tags, observables.masses(sim)[by_tag], p.type[by_tag], velocities, a, b, d,
-                        key)
-            p.v[by_tag] = velocities
+            ends, ids, separation, _ = sweep_order(keys, ends, ids, separation, 8 * nblocks)
+            sweep_pairs(p.v, inv_mass, p.type, ends, ids, separation, 0, len(ends), *sweep)
             return
-        a, b, d = collect_pairs(p.x, p.type, p.tag, p.tag, p.mask, groupbit, nlist.offsets,
-                                nlist.neighbors, n, pair.cut)
-        owned = np.column_stack([p.tag[:n], observables.masses(sim), p.type[:n], p.v[:n]])
-        pairs = np.column_stack([a, b, d])
-        owned, pairs = comm.gather_rows(owned), comm.gather_rows(pairs)
-        velocities = None
-        if comm.is_root:
-            by_tag = np.argsort(owned[:, 0], kind="stable")
-            tags = owned[by_tag, 0].astype(np.int64)
-            velocities = np.ascontiguousarray(owned[by_tag, 3:6])
-            self._sweep(sim, tags, owned[by_tag, 1], owned[by_tag, 2].astype(np.int64), velocities,
-                        np.searchsorted(tags, pairs[:, 0].astype(np.int64)),
-                        np.searchsorted(tags, pairs[:, 1].astype(np.int64)),
-                        np.ascontiguousarray(pairs[:, 2:5]), key)
-            velocities = (tags, velocities)
-        tags, updated = comm.bcast(velocities)
-        p.v[:n] = updated[np.searchsorted(tags, p.tag[:n])]
+        self._sweep_in_parallel(sim, ends, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
+                                table, sweep)
 
-    @staticmethod
-    def _sweep(sim, tags, masses, types, velocities, a, b, d, key):
-        """Sweep every pair in the order of its (lower, higher) tags over ``velocities``: the
-        particles' rows in the order of the sorted ``tags``, which a and b number."""
-        a, b, d = sort_pairs(a, b, d, len(tags))
-        sweep_pairs(velocities, 1.0 / masses, types, tags, a, b, d, sim.pair.cut, sim.pair.gamma,
-                    sim.pair.sigma, sim.dt, key, sim.step)
+    def _sweep_in_parallel(self, sim, local, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
+                           table, sweep):
+        """Pairs go to the rank sweeping their block; a particle's velocity goes where each colour's
+        block of it is swept and comes back to its owner after the last."""
+        p, comm = sim.particles, sim.comm
+        n = p.nlocal
+        nblocks = int(np.prod(ncell))
+        incoming, _ = comm.send_rows(outgoing, rank)
+        # this rank's pairs: its own, then those sent here. Numbers: owned rows, then the particles
+        # owned elsewhere (remote ghosts and the partners of pairs sent here), by tag
+        m_local = len(local)
+        ids = np.concatenate([ids, incoming[:, 0:2].astype(np.int64)])
+        separation = np.concatenate([separation, incoming[:, 2:5]])
+        keys = np.concatenate([keys, incoming[:, 9].astype(np.int64)])
+        numbers = np.concatenate([local, np.full((len(incoming), 2), -1, dtype=np.int64)])
+        by_tag = np.argsort(p.tag[:n], kind="stable")
+        owned_tags = p.tag[:n][by_tag]
+        tail = numbers[m_local:]
+        slot = _lookup(owned_tags, ids[m_local:].ravel()).reshape(-1, 2)
+        tail[slot >= 0] = by_tag[slot[slot >= 0]]
+        unknown = numbers < 0
+        remote_tags = np.unique(ids[unknown])
+        numbers[unknown] = n + np.searchsorted(remote_tags, ids[unknown])
+        # types and inverse masses of the remote particles: from ghosts, or from the pairs sent here
+        types = np.concatenate([p.type[:n], np.zeros(len(remote_tags), dtype=p.type.dtype)])
+        inverse = np.concatenate([inv_mass[:n], np.zeros(len(remote_tags))])
+        ghost_rows = p.nlocal + np.flatnonzero(comm.owners(p)[n:] < 0)
+        slot = _lookup(remote_tags, p.tag[ghost_rows])
+        types[n + slot[slot >= 0]] = p.type[ghost_rows[slot >= 0]]
+        inverse[n + slot[slot >= 0]] = inv_mass[ghost_rows[slot >= 0]]
+        for column in (0, 1):
+            types[numbers[m_local:, column]] = incoming[:, 5 + column].astype(types.dtype)
+            inverse[numbers[m_local:, column]] = incoming[:, 7 + column]
+        numbers, ids, separation, first = sweep_order(keys, numbers, ids, separation, 8 * nblocks)
+        # velocities travel: each owner sends a particle's velocity, with its itinerary (the rank of
+        # each colour's block), to where the first colour sweeps it; after each colour it moves on
+        # to the next colour's rank, and after the last back home. Most never leave their owner.
+        route = np.empty((n, 9), dtype=np.int64)
+        itineraries(p.arrays[CELL], n, ncell, periodic, table, comm.rank, route)
+        velocities = np.zeros((n + len(remote_tags), 3))
+        velocities[:n] = p.v[:n]
+        # visitors: rows (tag, vx, vy, vz, owner, route[0..8]) of particles owned elsewhere, here now
+        visitors = np.zeros((0, 14))
+        for c in range(9):
+            leaving = np.flatnonzero((route[:, c - 1] == comm.rank if c else True) & (route[:, c] != comm.rank))
+            mine_out = np.column_stack([p.tag[:n][leaving], velocities[leaving], np.full(len(leaving), comm.rank),
+                                        route[leaving]])
+            slot = _lookup(remote_tags, visitors[:, 0].astype(np.int64))
+            known = slot >= 0
+            visitors[known, 1:4] = velocities[n + slot[known]]
+            going = visitors[:, 5 + c].astype(np.int64) != comm.rank
+            rows = np.concatenate([mine_out, visitors[going]])
+            arrived, _ = comm.send_rows(rows, rows[:, 5 + c].astype(np.int64))
+            visitors = np.concatenate([visitors[~going], arrived[arrived[:, 4] != comm.rank]])
+            home = arrived[arrived[:, 4] == comm.rank]
+            if len(home):
+                velocities[by_tag[_lookup(owned_tags, home[:, 0].astype(np.int64))]] = home[:, 1:4]
+            slot = _lookup(remote_tags, visitors[:, 0].astype(np.int64))
+            known = slot >= 0
+            velocities[n + slot[known]] = visitors[known, 1:4]
+            if c < 8:
+                sweep_pairs(velocities, inverse, types, numbers, ids, separation, first[c * nblocks],
+                            first[(c + 1) * nblocks], *sweep)
+        p.v[:n] = velocities[:n]
+
+    def _block_ranks(self, sim, ncell):
+        """The rank sweeping each block: the one whose sub-domain holds the centre of the block's
+        first cell (kept while the box and the grid stay)."""
+        box = sim.box
+        state = (tuple(box.lo), tuple(box.length), tuple(ncell))
+        if getattr(self, "_table_for", None) != state:
+            nx, ny, nz = ncell
+            index = np.arange(nx * ny * nz)
+            first = np.column_stack([index % nx, (index // nx) % ny, index // (nx * ny)])
+            self._table = sim.comm.rank_of(box.lo + (first + 0.5) * (box.length / ncell))
+            self._table_for = state
+        return self._table
+
+
+def _lookup(sorted_values, wanted):
+    """Where each wanted value sits in a sorted array, -1 where it is absent."""
+    slot = np.searchsorted(sorted_values, wanted)
+    inside = slot < len(sorted_values)
+    inside[inside] = sorted_values[slot[inside]] == wanted[inside]
+    return np.where(inside, slot, -1)
+
+
+@njit(cache=True)
+def itineraries(cell, n, ncell, periodic, table, me, out):
+    """out[i, c]: the rank sweeping the colour-c block of owned particle i (the block among the 2 x 2
+    x 2 whose first cell is the particle's cell or one below, of that parity), ``me`` where the
+    particle has none of that colour; out[i, 8] = me (home again)."""
+    first = np.empty(3, dtype=np.int64)
+    for i in range(n):
+        for c in range(8):
+            valid = True
+            for d in range(3):
+                parity = (c >> d) & 1
+                k = int(cell[i, d])
+                if ncell[d] == 1:
+                    if parity:
+                        valid = False
+                    first[d] = 0
+                    continue
+                if k % 2 != parity:
+                    k -= 1
+                    if k < 0:
+                        if periodic[d]:
+                            k += ncell[d]
+                        else:
+                            valid = False
+                first[d] = k
+            out[i, c] = table[first[0] + ncell[0] * (first[1] + ncell[1] * first[2])] if valid else me
+        out[i, 8] = me
