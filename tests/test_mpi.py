@@ -209,6 +209,47 @@ def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
     assert outputs[1] == outputs[2] == outputs[4]
 
 
+SWEEP_SHARES = """
+import sys
+import numpy as np
+from pdps_core.api import Simulation
+sim = Simulation(screen=False, log=None)
+sim.command(open(sys.argv[1]).read())
+share = np.array([[sim.fixes["1"].pairs_swept]], dtype=float)
+shares = sim.comm.gather_rows(share)
+if sim.comm.rank == 0:
+    print(" ".join(str(int(v)) for v in shares[:, 0]))
+"""
+
+
+def test_shardlow_sweep_is_shared_between_ranks(tmp_path):
+    """No rank sweeps everything: on 2 ranks each sweeps about half the pairs of a uniform fluid, and
+    the shares add up to the one rank's count."""
+    script = """
+        region box block 0 8 0 8 0 8
+        create_box 1 box
+        mass 1 1
+        create_particle 1 random_no_overlap 1536 box 0.0 7
+        pair_style dpd/fdt 1.0 1.0 4321
+        pair_coeff * * 25.0 4.5 1.0
+        fix 1 all shardlow
+        fix 2 all nve
+        timestep 0.04
+        run 1
+    """
+    (tmp_path / "in.shares").write_text(textwrap.dedent(script))
+    (tmp_path / "shares.py").write_text(SWEEP_SHARES)
+    counts = {}
+    for ranks in (1, 2):
+        done = subprocess.run([str(MPIEXEC), "-n", str(ranks), sys.executable, "shares.py", "in.shares"],
+                              cwd=tmp_path, capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr
+        counts[ranks] = [int(w) for w in done.stdout.split()]
+    (total,) = counts[1]
+    assert sum(counts[2]) == total
+    assert max(counts[2]) < 0.6 * total
+
+
 def test_spheres_on_a_mesh_wall_give_the_same_run_on_1_2_and_4_ranks(tmp_path):
     stl = ROOT / "plugins" / "fix_wall" / "tests" / "data" / "square.stl"
     script = (ROOT / "tests" / "data" / "mesh_plate.in").read_text().replace("{stl}", str(stl))

@@ -334,6 +334,7 @@ class FixShardlow(Fix):
             nlist.neighbors, n, pair.cut, ncell, periodic, table, comm.rank)
         sweep = (pair.cut, pair.gamma, pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
         if comm.nprocs == 1:
+            self.pairs_swept = len(ends)
             ends, ids, separation, _ = sweep_order(keys, ends, ids, separation, 8 * nblocks)
             sweep_pairs(p.v, inv_mass, p.type, ends, ids, separation, 0, len(ends), *sweep)
             return
@@ -373,6 +374,7 @@ class FixShardlow(Fix):
         for column in (0, 1):
             types[numbers[m_local:, column]] = incoming[:, 5 + column].astype(types.dtype)
             inverse[numbers[m_local:, column]] = incoming[:, 7 + column]
+        self.pairs_swept = len(ids)          # this rank's share of the step's sweep
         numbers, ids, separation, first = sweep_order(keys, numbers, ids, separation, 8 * nblocks)
         # velocities travel: each owner sends a particle's velocity, with its itinerary (the rank of
         # each colour's block), to where the first colour sweeps it; after each colour it moves on
