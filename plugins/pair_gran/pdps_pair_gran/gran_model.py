@@ -123,12 +123,16 @@ def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, 
     contact slots are full. The last seven arrays are one contact's scratch (3 each; ``hist``
     HISTORY_WIDTH)."""
     for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
         radi = radius[i]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            delx = x[i, 0] - x[j, 0]
-            dely = x[i, 1] - x[j, 1]
-            delz = x[i, 2] - x[j, 2]
+            # most listed pairs (within the skin) do not touch: only their distance is measured
+            delx = xi0 - x[j, 0]
+            dely = xi1 - x[j, 1]
+            delz = xi2 - x[j, 2]
             rsq = delx * delx + dely * dely + delz * delz
             radsum = radi + radius[j]
             if rsq >= radsum * radsum or rsq == 0.0:
