@@ -37,11 +37,14 @@ def count_contacts(x, radius, offsets, neighbors, nlocal, counts):
     for i in range(len(counts)):
         counts[i] = 0.0
     for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            dx = x[i, 0] - x[j, 0]
-            dy = x[i, 1] - x[j, 1]
-            dz = x[i, 2] - x[j, 2]
+            dx = xi0 - x[j, 0]
+            dy = xi1 - x[j, 1]
+            dz = xi2 - x[j, 2]
             radsum = radius[i] + radius[j]
             if dx * dx + dy * dy + dz * dz < radsum * radsum:
                 counts[i] += 1.0

@@ -83,13 +83,17 @@ def conduction(x, radius, temp, type_, conductivity, offsets, neighbors, nlocal,
         for d in range(3):
             directional[i, d] = 0.0
     for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
+        ri = radius[i]
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            dx = x[i, 0] - x[j, 0]
-            dy = x[i, 1] - x[j, 1]
-            dz = x[i, 2] - x[j, 2]
+            dx = xi0 - x[j, 0]
+            dy = xi1 - x[j, 1]
+            dz = xi2 - x[j, 2]
             rsq = dx * dx + dy * dy + dz * dz
-            ri, rj = radius[i], radius[j]
+            rj = radius[j]
             if rsq >= (ri + rj) * (ri + rj) or rsq == 0.0:
                 continue
             ki, kj = conductivity[type_[i]], conductivity[type_[j]]
