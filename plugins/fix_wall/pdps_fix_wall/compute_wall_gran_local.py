@@ -37,7 +37,8 @@ import numpy as np
 
 from pdps_core.api import Compute, ScriptError, StyleArgs
 
-from .wall_gran_model import LOG_COLUMNS, FixWallGranModel
+from .wall_contact import LOG_COLUMNS
+from .wall_gran_model import FixWallGranModel
 
 KEYWORDS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": 6, "contactArea": 1,
             "delta": 1}

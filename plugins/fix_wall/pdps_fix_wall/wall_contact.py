@@ -27,7 +27,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ScriptError
-from pdps_granular_contact import contact_models
+from pdps_granular_contact import contact_models, liggghts
 
 LSD, HERTZ = 0, 1
 # a per-type law table's columns (ContactLaw.row): one row per particle type, for walls whose law
@@ -35,6 +35,14 @@ LSD, HERTZ = 0, 1
 LAW_COLUMNS = ("kn", "cn", "kt", "ct", "mu", "per_mass", "e_star", "g_star", "beta")
 HISTORY_WIDTH = 6           # tangential spring (3) and the contact's last normal (3)
 TRANSFER_COS = 0.995        # a new contact whose normal is this close to one just ended continues it
+# LIGGGHTS's laws (fix wall/gran model ...): a contact's values are the law's history, then its last
+# normal (for handing it on between faces)
+LIGGGHTS_WIDTH = liggghts.HISTORY_WIDTH + 3
+LIGGGHTS_NORMAL_AT = liggghts.HISTORY_WIDTH
+# the columns of a LIGGGHTS wall's contact log (compute wall/gran/local reads them): t is the torque
+# of the tangential force alone (without rolling friction)
+LOG_COLUMNS = (("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",
+                "delta", "area") + tuple(f"history{h}" for h in range(liggghts.HISTORY_WIDTH)))
 
 
 class ContactLaw:
@@ -130,7 +138,7 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
             raise ScriptError(f"{name} must be >= 0 (got {value:g})")
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def wall_slots(i, start, end, distance, normal, key, reach, partner, values, normal_at, update,
                used, slots, transfer_cos):
     """The history slot of each of particle i's wall contacts ``start..end`` into
@@ -259,3 +267,75 @@ def forget_far(partner, chosen, near):
             i = chosen[k]
             for s in range(partner.shape[1]):
                 partner[i, s] = -1
+
+
+@njit(cache=True)
+def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega, f,
+                           torque, radius, rmass, ptype, wall_type, models, table, charvel, nktv2p,
+                           dt, update, partner, values, used, slots, hist, force, tangential, roll,
+                           n, vtr, wr, contact_force, log, logged, transfer_cos):
+    """Force and torque on particle i from its wall contacts 0..count (module docstring), each
+    contact's force into ``contact_force``; with a ``log`` of rows (LOG_COLUMNS), one row per
+    touching contact after ``logged[0]`` (which counts them). Returns False when i has no free
+    history slot."""
+    r_i = radius[i]
+    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, LIGGGHTS_NORMAL_AT, update,
+                      used, slots, transfer_cos):
+        return False
+    width = values.shape[1] // partner.shape[1]
+    for c in range(count):
+        for d in range(3):
+            contact_force[c, d] = 0.0
+        if distance[c] >= r_i:
+            continue
+        overlap = r_i - distance[c]
+        arm = r_i - 0.5 * overlap
+        for d in range(3):
+            n[d] = normal[c, d]
+        vr0 = v[i, 0] - wall_velocity[c, 0]
+        vr1 = v[i, 1] - wall_velocity[c, 1]
+        vr2 = v[i, 2] - wall_velocity[c, 2]
+        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
+        w0, w1, w2 = arm * omega[i, 0], arm * omega[i, 1], arm * omega[i, 2]
+        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+        for d in range(3):
+            wr[d] = omega[i, d]
+        s = slots[c]
+        for h in range(liggghts.HISTORY_WIDTH):
+            hist[h] = values[i, s * width + h] if s >= 0 else 0.0
+        liggghts.liggghts_contact(models, True, table, ptype[i], wall_type, distance[c], r_i, 0.0,
+                                  rmass[i], 0.0, rmass[i], n, v_n, vtr, wr, charvel, nktv2p, dt,
+                                  update, hist, force, tangential, roll)
+        if s >= 0:
+            for h in range(liggghts.HISTORY_WIDTH):
+                values[i, s * width + h] = hist[h]
+            if update:
+                for d in range(3):
+                    values[i, s * width + LIGGGHTS_NORMAL_AT + d] = n[d]
+        for d in range(3):
+            f[i, d] += force[d]
+            contact_force[c, d] = force[d]
+        # the torque of the tangential force; the rolling torque comes on top
+        tx = -arm * (n[1] * tangential[2] - n[2] * tangential[1])
+        ty = -arm * (n[2] * tangential[0] - n[0] * tangential[2])
+        tz = -arm * (n[0] * tangential[1] - n[1] * tangential[0])
+        torque[i, 0] += tx - roll[0]
+        torque[i, 1] += ty - roll[1]
+        torque[i, 2] += tz - roll[2]
+        row = logged[0]
+        if row < log.shape[0]:
+            log[row, 0] = i
+            log[row, 1] = key[c]
+            for d in range(3):
+                log[row, 2 + d] = touch[c, d]
+                log[row, 5 + d] = wall_velocity[c, d]
+                log[row, 8 + d] = force[d]
+            log[row, 11], log[row, 12], log[row, 13] = tx, ty, tz
+            log[row, 14] = overlap
+            log[row, 15] = math.pi * (r_i * r_i - distance[c] * distance[c])
+            for h in range(liggghts.HISTORY_WIDTH):
+                log[row, 16 + h] = hist[h]
+            logged[0] = row + 1
+    return True

@@ -72,139 +72,19 @@ from numba import njit
 from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs
 from pdps_granular_contact import liggghts
 
-from .mesh import NO_TALLY, MeshContacts, mesh_fix, no_wear, tally_wall_forces, triangle_contacts
-from .wall_contact import TRANSFER_COS, forget_far, read_numbers, wall_slots
+from .mesh import (LIGGGHTS_LAWS, NO_PDPS_LAW, NO_TALLY, MeshContacts, mesh_fix, mesh_wall_forces,
+                   no_wear)
+from .wall_contact import (LIGGGHTS_WIDTH, LOG_COLUMNS, TRANSFER_COS, forget_far, liggghts_wall_contacts,
+                           read_numbers)
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
 PRIMITIVES = {"xplane": (XPLANE, 1), "yplane": (YPLANE, 1), "zplane": (ZPLANE, 1),
               "xcylinder": (XCYLINDER, 3), "ycylinder": (YCYLINDER, 3), "zcylinder": (ZCYLINDER, 3)}
 AXES = {"x": 0, "y": 1, "z": 2}
-# a contact's values: the law's history, then its last normal (for handing it on between faces)
-WIDTH = liggghts.HISTORY_WIDTH + 3
-NORMAL_AT = liggghts.HISTORY_WIDTH
+WIDTH = LIGGGHTS_WIDTH
 MODEL_WORDS = {"model": liggghts.NORMAL_MODELS, "tangential": liggghts.TANGENTIAL_MODELS,
                "rolling_friction": liggghts.ROLLING_MODELS, "cohesion": liggghts.COHESION_MODELS,
                "tangential_damping": {"on": 1, "off": 0}, "limitForce": {"on": 1, "off": 0}}
-
-
-@njit(cache=True)
-def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega, f,
-                           torque, radius, rmass, ptype, wall_type, models, table, charvel, nktv2p,
-                           dt, update, partner, values, used, slots, hist, force, tangential, roll,
-                           n, vtr, wr, contact_force, log, logged, transfer_cos):
-    """Force and torque on particle i from its wall contacts 0..count (module docstring), each
-    contact's force into ``contact_force``; with a ``log`` of rows (LOG_COLUMNS), one row per
-    touching contact after ``logged[0]`` (which counts them). Returns False when i has no free
-    history slot."""
-    r_i = radius[i]
-    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, NORMAL_AT, update,
-                      used, slots, transfer_cos):
-        return False
-    width = values.shape[1] // partner.shape[1]
-    for c in range(count):
-        for d in range(3):
-            contact_force[c, d] = 0.0
-        if distance[c] >= r_i:
-            continue
-        overlap = r_i - distance[c]
-        arm = r_i - 0.5 * overlap
-        for d in range(3):
-            n[d] = normal[c, d]
-        vr0 = v[i, 0] - wall_velocity[c, 0]
-        vr1 = v[i, 1] - wall_velocity[c, 1]
-        vr2 = v[i, 2] - wall_velocity[c, 2]
-        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-        w0, w1, w2 = arm * omega[i, 0], arm * omega[i, 1], arm * omega[i, 2]
-        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-        for d in range(3):
-            wr[d] = omega[i, d]
-        s = slots[c]
-        for h in range(liggghts.HISTORY_WIDTH):
-            hist[h] = values[i, s * width + h] if s >= 0 else 0.0
-        liggghts.liggghts_contact(models, True, table, ptype[i], wall_type, distance[c], r_i, 0.0,
-                                  rmass[i], 0.0, rmass[i], n, v_n, vtr, wr, charvel, nktv2p, dt,
-                                  update, hist, force, tangential, roll)
-        if s >= 0:
-            for h in range(liggghts.HISTORY_WIDTH):
-                values[i, s * width + h] = hist[h]
-            if update:
-                for d in range(3):
-                    values[i, s * width + NORMAL_AT + d] = n[d]
-        for d in range(3):
-            f[i, d] += force[d]
-            contact_force[c, d] = force[d]
-        # the torque of the tangential force; the rolling torque comes on top
-        tx = -arm * (n[1] * tangential[2] - n[2] * tangential[1])
-        ty = -arm * (n[2] * tangential[0] - n[0] * tangential[2])
-        tz = -arm * (n[0] * tangential[1] - n[1] * tangential[0])
-        torque[i, 0] += tx - roll[0]
-        torque[i, 1] += ty - roll[1]
-        torque[i, 2] += tz - roll[2]
-        row = logged[0]
-        if row < log.shape[0]:
-            log[row, 0] = i
-            log[row, 1] = key[c]
-            for d in range(3):
-                log[row, 2 + d] = touch[c, d]
-                log[row, 5 + d] = wall_velocity[c, d]
-                log[row, 8 + d] = force[d]
-            log[row, 11], log[row, 12], log[row, 13] = tx, ty, tz
-            log[row, 14] = overlap
-            log[row, 15] = math.pi * (r_i * r_i - distance[c] * distance[c])
-            for h in range(liggghts.HISTORY_WIDTH):
-                log[row, 16 + h] = hist[h]
-            logged[0] = row + 1
-    return True
-
-
-@njit(cache=True)
-def liggghts_mesh_forces(near, offsets, candidates, x, v, omega, f, torque, radius, rmass, ptype,
-                         vertices, triangles, face_normal, velocity, spin, pivot, belt, conveyor,
-                         wall_type, models, table, charvel, nktv2p, dt, update, partner, values,
-                         tally, reference, face_force, mesh_torque, wear_k, face_wear, face_area,
-                         log, logged, transfer_cos):
-    """The wall forces of one mesh on the particles ``near`` (candidate triangles in CSR form),
-    logged as liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact
-    history overflowed."""
-    most = 1
-    for k in range(len(near)):
-        most = max(most, offsets[k + 1] - offsets[k])
-    tri = np.empty(most, dtype=np.int64)
-    point = np.empty((most, 3))
-    gap = np.empty(most)
-    on_face = np.empty(most, dtype=np.bool_)
-    keep = np.empty(most, dtype=np.bool_)
-    distance = np.empty(most)
-    normal = np.empty((most, 3))
-    key = np.empty(most, dtype=np.int64)
-    touch = np.empty((most, 3))
-    wall_velocity = np.empty((most, 3))
-    contact_force = np.empty((most, 3))
-    used = np.empty(partner.shape[1], dtype=np.bool_)
-    slots = np.empty(most, dtype=np.int64)
-    probe = np.empty((1, 3))
-    hist = np.empty(liggghts.HISTORY_WIDTH)
-    force, tangential, roll = np.empty(3), np.empty(3), np.empty(3)
-    n, vtr, wr = np.empty(3), np.empty(3), np.empty(3)
-    for k in range(len(near)):
-        i = near[k]
-        count = triangle_contacts(x[i, 0], x[i, 1], x[i, 2], radius[i], offsets[k], offsets[k + 1],
-                                  candidates, vertices, triangles, face_normal, velocity, spin,
-                                  pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
-                                  distance, normal, key, touch, wall_velocity)
-        if not liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega,
-                                      f, torque, radius, rmass, ptype, wall_type, models, table,
-                                      charvel, nktv2p, dt, update, partner, values, used, slots,
-                                      hist, force, tangential, roll, n, vtr, wr, contact_force, log,
-                                      logged, transfer_cos):
-            return i
-        if tally:
-            tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal,
-                              ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear,
-                              face_area)
-    return -1
 
 
 @njit(cache=True)
@@ -491,11 +371,13 @@ class FixWallGranModel(Fix):
             history = contacts.history
             values = history.values.copy() if log else history.values
             rows, logged = self._log_buffer(offsets[-1] if log else 0)
-            bad = liggghts_mesh_forces(near, offsets, triangles, *common, mesh.vertices, mesh.triangles,
-                                       mesh.face_normal, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
-                                       mesh.conveyor, mesh.material_type, *law, history.partner, values,
-                                       tally is not None, *(NO_TALLY if tally is None else tally), rows, logged,
-                                       mesh.transfer_cos)
+            bad = mesh_wall_forces(near, offsets, triangles, p.x, p.type, mesh.vertices, mesh.triangles,
+                                   mesh.face_normal, p.radius, p.rmass, p.v, p.omega, f, torque, True,
+                                   history.partner, values, LIGGGHTS_LAWS, *NO_PDPS_LAW, self.models, self.table,
+                                   self.charvel, sim.units.nktv2p, mesh.material_type, sim.dt, update,
+                                   mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
+                                   tally is not None, *(NO_TALLY if tally is None else tally), mesh.transfer_cos,
+                                   rows, logged)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs.append((number, rows[:logged[0]]))
@@ -507,8 +389,4 @@ class FixWallGranModel(Fix):
         return np.zeros((most, len(LOG_COLUMNS))), np.zeros(1, dtype=np.int64)
 
 
-# a contact log's columns (compute wall/gran/local reads them): t is the torque of the tangential
-# force alone (without rolling friction)
-LOG_COLUMNS = (("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",
-                "delta", "area") + tuple(f"history{h}" for h in range(liggghts.HISTORY_WIDTH)))
 NO_LOG = np.zeros((0, len(LOG_COLUMNS)))
