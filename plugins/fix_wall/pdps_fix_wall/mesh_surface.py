@@ -173,10 +173,9 @@ class FixMeshSurface(Fix):
 
     def place(self):
         """Vertices, face normals and the wall's rigid velocity from the movers' poses now."""
-        rotation, shift = np.eye(3), np.zeros(3)
-        turning, drift = np.zeros((3, 3)), np.zeros(3)
         # X = T_1(T_2(...T_n(X0))): compose from the innermost (the last defined) outwards
-        for mover in reversed(self.movers):
+        rotation, shift, turning, drift = self.movers[-1].pose()
+        for mover in reversed(self.movers[:-1]):
             r_k, d_k, rdot_k, ddot_k = mover.pose()
             turning, drift = rdot_k @ rotation + r_k @ turning, rdot_k @ shift + r_k @ drift + ddot_k
             rotation, shift = r_k @ rotation, r_k @ shift + d_k

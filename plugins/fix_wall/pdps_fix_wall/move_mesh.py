@@ -49,6 +49,9 @@ from .mesh import rotation_matrix, unit
 from .wall_contact import read_numbers
 
 MAX_ORDER = 10
+STILL, NO_TURN = np.eye(3), np.zeros((3, 3))    # read only: the pose of a translation
+STILL.flags.writeable = False
+NO_TURN.flags.writeable = False
 
 
 def cross_matrix(axis):
@@ -218,7 +221,7 @@ class FixMoveMesh(Fix):
     def pose(self):
         """(R, d, dR/dt, dd/dt) of this motion at its clock."""
         t = self.elapsed
-        still, zero = np.eye(3), np.zeros((3, 3))
+        still, zero = STILL, NO_TURN
         style = self.style
         if style == "linear":
             return still, self.velocity * t, zero, self.velocity.copy()
