@@ -43,7 +43,7 @@ from .words import choice, integer, number, yes_no
 
 EPSILON = 1e-6      # LAMMPS's create_atoms: faces shifted by this fraction of the box length
 WARMUP_RANDOM = 30  # LAMMPS's create_atoms random: uniforms discarded after seeding
-MAXTRY = {"lammps": 1000, "pdps": 100}
+MAXTRY = {"lammps": 1000, "liggghts": 1000, "pdps": 100}
 MAX_DRAWS = 20_000_000      # tries in all before create_atoms random stops instead of running on
 MAX_GRID_CELLS = 2 ** 21    # overlap test: wider cells beyond this many (still correct, only slower)
 
@@ -89,7 +89,7 @@ def create_atoms(sim, args):
         sim.particles.check_room(n)
         region = None if rest[2] == "NULL" else sim.region(rest[2])
         maxtry = options["maxtry"] or MAXTRY[sim.dialect.name]
-        if sim.dialect.name == "lammps":
+        if sim.dialect.name in ("lammps", "liggghts"):
             seed = integer(rest[1], "seed", low=1, high=MAX_SEED)
             overlap = options["overlap"] * (_lattice_scale(sim)[0] if options["units"] == "lattice" else 1.0)
             x = lammps_random(sim, n, seed, region, overlap, maxtry)

@@ -272,7 +272,7 @@ def group(sim, args):
         count(rest[1:], 0, usage)
         sim.groups.define(sim, name, ("delete",))
         return
-    lammps = sim.dialect.name == "lammps"
+    lammps = sim.dialect.name in ("lammps", "liggghts")
     if not lammps and style in ("all", "region", "type"):
         sim.groups.define(sim, name, _pdps_definition(sim, style, rest[1:], usage))
         return
