@@ -96,3 +96,28 @@ def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_si
     assert sorted(got) == [0, 100]
     for step, reference in LAMMPS_LJ_MELT.items():
         assert got[step] == pytest.approx(reference, rel=1e-10), step
+
+
+def test_coincident_particles_are_skipped_not_divided_by_zero(make_sim):
+    """Two particles on the same spot (create_atoms twice): the masked law is never evaluated at r = 0
+    (a fuzz case once raised ZeroDivisionError); the pair is skipped, as the branching laws skip it,
+    and every other pair's force is what it is without the duplicate's partner."""
+    sim = make_sim()
+    sim.command("""
+        region box block 0 6 0 6 0 6
+        create_box 1 box
+        mass 1 1.0
+        create_particle 1 single 1 1 1
+        create_particle 1 single 1 1 1
+        create_particle 1 single 2.2 1 1
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0
+        run 0
+    """)
+    f = sim.particles.f[:3]
+    assert np.isfinite(f).all()
+    # the third particle feels both copies at r = 1.2: 2 x 24 (2 r^-13 - r^-7)
+    expected = 2 * 24.0 * (2 * 1.2 ** -13 - 1.2 ** -7)
+    by = dict(zip(sim.particles.tag[:3], f[:, 0]))
+    assert by[3] == pytest.approx(expected, rel=1e-12)
+    assert by[1] == pytest.approx(-expected / 2, rel=1e-12) and by[2] == pytest.approx(-expected / 2, rel=1e-12)
