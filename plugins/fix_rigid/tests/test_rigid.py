@@ -1,0 +1,271 @@
+"""fix rigid and rigid/nve: free rotation (conservation, the intermediate-axis instability), constant
+force and torque against the analytic motion, rigid/nve's energy against rigid's, bodies across
+periodic boundaries, degrees of freedom, and the errors of bad input."""
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.testing import build, register_styles
+
+# a body of six unit masses on its principal axes: I = 2 (b^2 + c^2), 2 (a^2 + c^2), 2 (a^2 + b^2)
+A, B, C = 1.0, 0.7, 0.4
+MOMENTS = np.array([2 * (B * B + C * C), 2 * (A * A + C * C), 2 * (A * A + B * B)])    # 1.3, 2.32, 2.98
+OCTAHEDRON = np.array([[A, 0, 0], [-A, 0, 0], [0, B, 0], [0, -B, 0], [0, 0, C], [0, 0, -C]])
+
+
+class Probe(Fix):
+    """``fix ID GROUP test/rigid_probe``: every step, the kinetic energy, angular momentum about the
+    centre of mass and centre of mass of the group's particles (this rank's; serial tests)."""
+    name = "test/rigid_probe"
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.energy_, self.angmom, self.centre, self.x = [], [], [], []
+
+    def end_of_step(self, sim):
+        p = sim.particles
+        order = np.argsort(p.tag[: p.nlocal])
+        x = (p.x[: p.nlocal] + p.image[: p.nlocal] * sim.box.length)[order]
+        v = p.v[: p.nlocal][order]
+        centre = x.mean(axis=0)
+        self.energy_.append(0.5 * float((v * v).sum()))
+        self.angmom.append(np.cross(x - centre, v).sum(axis=0))
+        self.centre.append(centre)
+        self.x.append(x)
+
+
+class Torque(Fix):
+    """``fix ID GROUP test/torque TX TY TZ FX FY FZ``: on a body of unit masses, f_i = F/n +
+    tau x r_i / sum |r_i|^2 (r_i from the centre of mass): total force F and, for a body flat in the
+    plane normal to tau, total torque tau."""
+    name = "test/torque"
+
+    class Args(StyleArgs):
+        tx: float
+        ty: float
+        tz: float
+        fx: float
+        fy: float
+        fz: float
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def post_force(self, sim):
+        p = sim.particles
+        n = p.nlocal
+        chosen = sim.groups.select(sim, self.group)
+        r = (p.x[:n] + p.image[:n] * sim.box.length)[chosen]
+        r = r - r.mean(axis=0)
+        tau = np.array([self.args.tx, self.args.ty, self.args.tz])
+        force = np.array([self.args.fx, self.args.fy, self.args.fz])
+        p.f[:n][chosen] += force / len(r) + np.cross(tau, r) / (r * r).sum()
+
+
+register_styles(Probe, Torque)
+
+
+def spinning(tmp_path, omega, style, dt=0.001, centre=(0.0, 0.0, 0.0), box=10.0, boundary="f f f"):
+    x = OCTAHEDRON + np.asarray(centre)
+    v = np.cross(omega, OCTAHEDRON)
+    return build(tmp_path, x, v=v, lo=(-box,) * 3, hi=(box,) * 3, boundary=boundary,
+                 setup=f"""
+                 timestep {dt}
+                 fix 1 all {style} single
+                 fix 2 all test/rigid_probe
+                 """)
+
+
+def drift(probe):
+    """Largest relative change of the kinetic energy and of |L - L0| / |L0| over the run."""
+    energy = np.array(probe.energy_)
+    angmom = np.array(probe.angmom)
+    return (float(np.abs(energy / energy[0] - 1).max()),
+            float(np.linalg.norm(angmom - angmom[0], axis=1).max() / np.linalg.norm(angmom[0])))
+
+
+@pytest.mark.parametrize("omega", [(1.0, 0, 0), (0, 1.0, 0), (0, 0, 1.0), (0.6, 0.5, -0.7)],
+                         ids=["axis1", "axis2", "axis3", "off-axis"])
+def test_free_body_conserves_energy_and_angular_momentum(tmp_path, omega):
+    """1e5 steps of dt = 5e-4 (8 turns): the splitting's energy error is O(dt^2), 1.3e-8 at 1e-3."""
+    sim = spinning(tmp_path, np.array(omega), "rigid/nve", dt=0.0005)
+    sim.run(100_000)
+    energy, angmom = drift(sim.fixes["2"])
+    print(f"omega {omega}: energy {energy:.2e}, angular momentum {angmom:.2e} over 1e5 steps")
+    assert energy < 1e-8
+    assert angmom < 1e-8
+    # the spin about a principal axis stays an exact spin
+    if np.count_nonzero(omega) == 1:
+        assert sim.fixes["1"].omega[0] == pytest.approx(omega, abs=1e-9)
+
+
+def axis_alignment(probe, pair):
+    """Cosine between the axis through particles ``pair`` and the angular momentum, per step."""
+    x = np.array(probe.x)
+    axis = x[:, pair[0]] - x[:, pair[1]]
+    axis /= np.linalg.norm(axis, axis=1)[:, None]
+    angmom = np.array(probe.angmom)
+    return (axis * angmom).sum(axis=1) / np.linalg.norm(angmom, axis=1)
+
+
+@pytest.mark.parametrize("axis", [0, 1, 2])
+def test_only_the_intermediate_axis_is_unstable(tmp_path, axis):
+    """A spin about principal axis k with a 1 % wobble: about the smallest and largest moments the
+    axis stays within a few degrees of L; about the middle one it turns over (Dzhanibekov)."""
+    omega = np.full(3, 0.01)
+    omega[axis] = 2.0
+    sim = spinning(tmp_path, omega, "rigid/nve", dt=0.002)
+    sim.run(20_000)
+    pairs = [(0, 1), (2, 3), (4, 5)]
+    cosine = axis_alignment(sim.fixes["2"], pairs[axis])
+    print(f"axis {axis + 1} (I = {MOMENTS[axis]:.3g}): cos(axis, L) from {cosine[0]:.4f}, min {cosine.min():.4f}")
+    if axis == 1:
+        assert cosine.min() < -0.99
+    else:
+        assert cosine.min() > 0.99
+
+
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve"])
+def test_constant_force_and_torque_follow_the_analytic_motion(tmp_path, style):
+    """A flat body (in the xy plane) under a constant force and a constant torque along z, the
+    normal of its plane and one of its principal axes: X = X0 + F t^2 / 2M, phi = tau t^2 / 2 I_z.
+    The force is defined before the body, so that the body's setup sums it (fixes set up in script
+    order, as LAMMPS's: after it, the first half-kick would miss it)."""
+    flat = np.array([[1.0, 0, 0], [-1.0, 0, 0], [0, 0.5, 0], [0, -0.5, 0]])
+    dt, steps = 0.001, 4000
+    tau, force = 0.3, np.array([0.2, -0.1, 0.05])
+    sim = build(tmp_path, flat, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f",
+                setup=f"""
+                timestep {dt}
+                fix 2 all test/torque 0 0 {tau} {force[0]} {force[1]} {force[2]}
+                fix 1 all {style} single
+                fix 3 all test/rigid_probe
+                """)
+    sim.run(steps)
+    probe = sim.fixes["3"]
+    t = dt * steps
+    mass, inertia_z = 4.0, 2 * 1.0 + 2 * 0.25
+    assert probe.centre[-1] == pytest.approx(force * t * t / (2 * mass), rel=1e-12, abs=1e-14)
+    phi = tau * t * t / (2 * inertia_z)
+    x = probe.x[-1][0] - probe.centre[-1]
+    angle = np.arctan2(x[1], x[0])
+    print(f"{style}: rotation angle {angle:.12f} against {phi:.12f} (error {abs(angle / phi - 1):.1e})")
+    assert angle == pytest.approx(phi, rel=1e-6)
+    assert sim.fixes["1"].omega[0, 2] == pytest.approx(tau * t / inertia_z, rel=1e-12)
+
+
+def test_rigid_nve_conserves_energy_better_than_rigid(tmp_path):
+    """The same off-axis tumble at a coarse time step: the symplectic rigid/nve keeps the energy,
+    Richardson iteration (rigid) drifts (LAMMPS's documentation says as much)."""
+    errors = {}
+    for style in ("rigid", "rigid/nve"):
+        sim = spinning(tmp_path, np.array([0.6, 2.0, -0.7]), style, dt=0.01)
+        sim.run(20_000)
+        errors[style] = drift(sim.fixes["2"])[0]
+    print(f"largest relative energy error over 2e4 steps at dt = 0.01: rigid {errors['rigid']:.2e}, "
+          f"rigid/nve {errors['rigid/nve']:.2e}")
+    assert errors["rigid/nve"] < errors["rigid"]
+
+
+def test_body_across_a_periodic_boundary_moves_as_one_inside(tmp_path):
+    """The same tumbling body whole in the middle of the box and split across the corner of a
+    periodic box (image flags not set: the particles sit where they are wrapped): the same motion."""
+    omega = np.array([0.6, 0.5, -0.7])
+    inside = spinning(tmp_path, omega, "rigid/nve", box=5.0, boundary="p p p")
+    inside.run(2000)
+    corner = spinning(tmp_path, omega, "rigid/nve", centre=(5.0, 5.0, 5.0), box=5.0, boundary="p p p")
+    p = corner.particles
+    assert np.any(p.image[: p.nlocal] != 0) or np.any(np.abs(p.x[: p.nlocal]) < 4.9)
+    corner.run(2000)
+    a, b = inside.fixes["2"], corner.fixes["2"]
+    # unwrapped, every particle is where the centred body's is, moved by (5, 5, 5)
+    shift = np.array(b.x[-1]) - np.array(a.x[-1]) - 5.0
+    assert np.abs(shift).max() < 1e-10
+    assert b.energy_[-1] == pytest.approx(a.energy_[-1], rel=1e-12)
+    xcm = corner.fixes["1"].xcm[0]
+    assert np.all((xcm >= -5.0) & (xcm < 5.0))
+
+
+def test_temperature_counts_six_degrees_of_freedom_per_body(tmp_path):
+    """Two bodies of 6 and 4 particles and 3 free particles: N_dof = 3 * 13 - 3 - (3*6 - 6) - (3*4 - 6)."""
+    x = np.vstack([OCTAHEDRON, OCTAHEDRON[:4] + 4.0, [[-4, -4, -4], [-4, 4, -4], [4, -4, 4]]])
+    v = np.random.default_rng(3).normal(size=(13, 3))
+    sim = build(tmp_path, x, v=v, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f", setup="""
+        group a id 1:6
+        group b id 7:10
+        fix 1 all rigid group 2 a b
+        run 0
+        """)
+    from pdps_core.api import observables
+    assert observables.degrees_of_freedom(sim) == 3 * 13 - 3 - 12 - 6
+    ke = 0.5 * float((sim.v ** 2).sum())
+    assert observables.temperature(sim) == pytest.approx(2 * ke / 18, rel=1e-12)
+
+
+def test_linear_body_has_five_degrees_of_freedom(tmp_path):
+    x = np.array([[0.0, 0, 0], [1.0, 0, 0], [2.0, 0, 0]])
+    sim = build(tmp_path, x, v=np.zeros((3, 3)), lo=(-10,) * 3, hi=(10,) * 3, setup="""
+        fix 1 all rigid single
+        run 0
+        """)
+    from pdps_core.api import observables
+    assert observables.degrees_of_freedom(sim) == 9 - 3 - (9 - 5)
+
+
+def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
+    x = OCTAHEDRON
+    sim = build(tmp_path, x, lo=(-10,) * 3, hi=(10,) * 3, setup="""
+        group left id 1:4
+        group right id 3:6
+        """)
+    with pytest.raises(ScriptError, match=r"particle 3 is in two bodies: group left \(body 1\) and group "
+                                          r"right \(body 2\)"):
+        sim.command("fix 1 all rigid group 2 left right")
+    sim.command("group first id 1:3\ngroup second id 3:6\nfix 1 first rigid single")
+    with pytest.raises(ScriptError, match="particle 3 is in two bodies: body 1 of fix 2 and body 1 of fix 1"):
+        sim.command("fix 2 second rigid/nve single")
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix 1 all rigid single langevin 1 1 1 4", "keyword langevin of fix rigid is not implemented yet"),
+    ("fix 1 all rigid/nve molecule temp 1 1 1", "keyword temp of fix rigid/nve is not implemented yet"),
+    ("fix 1 all rigid single infile bodies.txt", "keyword infile of fix rigid is not implemented yet"),
+    ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),
+    ("fix 1 all rigid single torque 1*x on on on", "torque: body '1\\*x' is not a number or a range"),
+    ("fix 1 all rigid single force * off maybe on", "must be one of"),
+    ("fix 1 all rigid group 2 all", "bodystyle group needs N >= 1 and N group ids"),
+    ("fix 1 all rigid single all", "bodystyle single takes no arguments"),
+    ("fix 1 all rigid molecule", "bodystyle molecule needs molecule ids"),
+    ("fix 1 all rigid wobbly", "must be one of"),
+])
+def test_bad_input_is_one_line(tmp_path, line, message):
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3)
+    with pytest.raises(ScriptError, match=message):
+        sim.command(line)
+
+
+def test_a_lone_particle_is_no_body(tmp_path):
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, setup="group one id 2\ngroup two id 3:6")
+    with pytest.raises(ScriptError, match="body 1 has 1 particle"):
+        sim.command("fix 1 all rigid group 2 one two")
+
+
+def test_force_and_torque_flags_by_body_range(tmp_path):
+    """Three bodies pushed along x and twisted about z; force 2* off off off holds bodies 2 and 3 in
+    place, torque *1 off off off stops body 1 turning."""
+    flat = np.array([[1.0, 0, 0], [-1.0, 0, 0], [0, 0.5, 0], [0, -0.5, 0]])
+    x = np.vstack([flat + [0, -5, 0], flat, flat + [0, 5, 0]])
+    sim = build(tmp_path, x, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f", setup="""
+        group b1 id 1:4
+        group b2 id 5:8
+        group b3 id 9:12
+        fix 1 all rigid/nve group 3 b1 b2 b3 force 2* off off off torque *1 off off off
+        fix 2 b1 test/torque 0 0 0.3 0.2 0 0
+        fix 3 b2 test/torque 0 0 0.3 0.2 0 0
+        fix 4 b3 test/torque 0 0 0.3 0.2 0 0
+        run 500
+        """)
+    fix = sim.fixes["1"]
+    assert fix.vcm[0, 0] > 0 and np.all(fix.vcm[1:] == 0.0)
+    assert np.all(fix.omega[0] == 0.0) and np.all(fix.omega[1:, 2] > 0)
