@@ -17,8 +17,14 @@ force :math:`\mathbf{F}` of the law acts on i, and the torque is :math:`(-R_i\ma
 
 History: each contact keeps its tangential spring (3 values) and its last normal (3 values) in a
 ``ContactHistory`` keyed by the wall element's id. A contact that opens in the same step as another
-of the same wall closes, with a normal within about 6 degrees of it, takes over its spring: a sphere
-rolling from one triangle of a tessellated surface onto the next keeps its static friction.
+of the same wall closes, with a normal within about 6 degrees of it (``TRANSFER_COS``; a mesh's
+``curvature``), takes over its spring: a sphere rolling from one triangle of a tessellated surface
+onto the next keeps its static friction (``wall_slots``).
+
+LIGGGHTS's walls (fix wall/gran model ...) use LIGGGHTS's laws instead
+(``pdps_granular_contact.liggghts`` with the wall as body j; ``liggghts_wall_contacts``): their
+contacts keep the law's history (tangential spring, rolling spring) and the last normal, and can be
+logged one row per contact (``LOG_COLUMNS``) for compute wall/gran/local.
 """
 
 import math
