@@ -10,7 +10,14 @@ flushed, so a run that stops leaves every complete frame readable.
 (by column N, ascending or descending; ``sort off`` keeps id order, so frames stay comparable),
 ``format line "F1 F2 ..."``, ``format int F``, ``format float F``, ``format N F`` (C formats;
 ``format none`` resets), ``append yes`` (frames added to an existing file), plus every and first.
+
+A ``*`` in the file name (LAMMPS's wildcard) writes each frame to a file of its own, the ``*``
+replaced by the step (``dump.*.txt`` -> ``dump.0.txt``, ``dump.100.txt``, ...); ``%`` (one file per
+processor) is refused: pdps writes one file per frame.
 """
+
+import os
+import tempfile
 
 import numpy as np
 
@@ -37,10 +44,18 @@ class TextDump(Dump):
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.frames = 0
         self.append = False
+        if "%" in self.path:
+            raise ScriptError(f"per-processor dump files (% in {self.path}) are not supported: pdps writes "
+                              "one file per frame")
+        self.per_frame = "*" in self.path
         if sim.comm.is_root:           # rank 0 alone writes
             try:
                 # checked now, opened (truncated unless dump_modify append yes) at the first frame
-                open(self.path, "a").close()
+                if self.per_frame:
+                    with tempfile.NamedTemporaryFile(dir=os.path.dirname(self.path) or ".", prefix=".pdps-probe-"):
+                        pass
+                else:
+                    open(self.path, "a").close()
             except OSError as exc:
                 raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
 
@@ -134,6 +149,14 @@ class TextDump(Dump):
         rows = ""
         if len(table):
             rows = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist())
+        if self.per_frame:
+            path = self.path.replace("*", str(sim.step))
+            try:
+                with open(path, "w") as handle:
+                    handle.write("".join(header) + rows)
+            except OSError as exc:
+                raise ScriptError(f"cannot open dump file {path}: {exc.strerror}") from None
+            return
         if self.handle is None:
             try:
                 self.handle = open(self.path, "a" if self.append else "w")

@@ -232,3 +232,16 @@ def test_ovito_reads_the_dumps(tmp_path, monkeypatch):
         np.testing.assert_allclose(np.asarray(data.cell[:, 3]), LO, atol=1e-12)
         read = np.asarray(data.particles.positions)[np.argsort(np.asarray(data.particles["Particle Identifier"]))]
         np.testing.assert_allclose(read, positions, atol=tolerance * (HI - LO).max())
+
+
+def test_a_star_in_the_file_name_writes_a_file_per_frame(tmp_path, monkeypatch):
+    """LAMMPS's wildcard: dump.*.txt holds one frame each, named by its step; % is refused."""
+    sim, ids = make(tmp_path, monkeypatch)
+    sim.command("dump 2 all custom 5 dump.*.txt id x y z\nrun 10")
+    for step in (0, 5, 10):
+        (frame,) = read_dump(tmp_path / f"dump.{step}.txt")
+        assert frame["step"] == step
+        np.testing.assert_array_equal(frame["data"]["id"], np.sort(ids))
+    assert not (tmp_path / "dump.*.txt").exists()
+    with pytest.raises(ScriptError, match=r"per-processor dump files \(% in dump.%.txt\) are not supported"):
+        sim.command("dump 3 all custom 5 dump.%.txt id x y z")
