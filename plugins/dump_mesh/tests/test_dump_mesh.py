@@ -320,3 +320,33 @@ def test_bad_dump_commands(fluid, line, words):
         sim.command(line)
     for word in words:
         assert word in str(info.value)
+
+
+def test_custom_vtk_writes_the_listed_values(tmp_path, make_sim):
+    """LIGGGHTS's dump custom/vtk: positions as points, sorted by id, vx vy vz as the vector v, a lone
+    component alone, radius and id as listed; c_ID and unknown words refused."""
+    sim = make_sim()
+    sim.command("""
+        particle_style sphere
+        region box block -3 3 -3 3 -3 3
+        create_box 2 box
+        create_particle 1 single 0 0 0 diameter 1 density 1
+        create_particle 2 single 1.5 0.5 -1 diameter 0.6 density 2
+        velocity all set 0.1 0.2 -0.3
+        fix 1 all nve/sphere
+        dump 1 all custom/vtk 3 post_*.vtk id type x y z vx vy vz fz radius
+    """)
+    sim.command("run 3")
+    expected = state(sim)
+    mesh = meshio.read(tmp_path / "post_3.vtk")
+    np.testing.assert_array_equal(mesh.points, expected["x"])
+    assert sorted(mesh.point_data) == ["fz", "id", "radius", "type", "v"]
+    np.testing.assert_array_equal(mesh.point_data["v"], expected["v"])
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["fz"]), expected["f"][:, 2])
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["radius"]), expected["radius"])
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["id"]), expected["id"])
+    assert (tmp_path / "post.vtk.series").exists()
+    with pytest.raises(ScriptError, match="custom/vtk: c_ke: computes, fixes and variables"):
+        sim.command("dump 2 all custom/vtk 3 q_*.vtk id c_ke")
+    with pytest.raises(ScriptError, match="custom/vtk: unknown attribute colour"):
+        sim.command("dump 3 all custom/vtk 3 q_*.vtk id colour")

@@ -1,0 +1,132 @@
+"""Dump ``custom/vtk`` (LIGGGHTS's and LAMMPS's spelling): particles for ParaView with the per-atom
+values named, one VTK file per frame and a ``.series`` file listing them, as dump vtk writes them.
+
+Syntax::
+
+    dump ID GROUP custom/vtk N FILE ATTRIBUTE ...
+
+N is the interval in steps; FILE has one ``*`` (replaced by the step) and ends in ``.vtk`` (legacy
+VTK, LIGGGHTS's default) or ``.vtu``. The particles are points, sorted by id (their positions always:
+``x y z`` may be listed or not, as LIGGGHTS says), with point data for the attributes listed, in
+LIGGGHTS's groups: ``id``, ``type``, ``mass``, ``radius``, ``diameter``, ``ix iy iz`` (as the vector
+``image``), ``vx vy vz`` (``v``), ``fx fy fz`` (``f``), ``omegax omegay omegaz`` (``omega``),
+``tqx tqy tqz`` (``torque``); a component listed alone is written alone (``vz``). Computes, fixes
+and variables (``c_ID``, ``f_ID``, ``v_NAME``) and per-processor files (``%``) are refused by name:
+write them with dump custom.
+
+Example (LIGGGHTS's tutorials)::
+
+    dump dmp all custom/vtk 800 post/packing_*.vtk id type x y z vx vy vz fx fy fz omegax omegay omegaz radius
+"""
+
+import numpy as np
+
+from pdps_core.api import ScriptError, StyleArgs, param
+
+from .frames import MeshDump, vertex_cells
+from .vtk import DumpVTK, series_json
+
+VECTORS = {"v": ("vx", "vy", "vz"), "f": ("fx", "fy", "fz"), "omega": ("omegax", "omegay", "omegaz"),
+           "torque": ("tqx", "tqy", "tqz"), "image": ("ix", "iy", "iz")}
+SCALARS = ("id", "type", "mass", "radius", "diameter")
+POSITIONS = ("x", "y", "z", "xu", "yu", "zu", "xs", "ys", "zs")
+COMPONENT = {word: (name, k) for name, words in VECTORS.items() for k, word in enumerate(words)}
+
+
+class DumpCustomVTK(MeshDump):
+    name = "custom/vtk"
+    usage = "dump ID GROUP custom/vtk N FILE_*.vtk ATTRIBUTE ..."
+    extensions = (".vtk", ".vtu")
+    example = "post/particles_*.vtk"
+    series_suffix = ".series"
+
+    class Args(StyleArgs):
+        every: int = param(ge=1, unit="timesteps")
+        file: str
+        attributes: list[str] = []
+
+    def __init__(self, sim, id, group, args):
+        if "%" in args.file:
+            raise ScriptError("per-processor files (%) are not supported: pdps writes one file per frame")
+        super().__init__(sim, id, group, args)
+        self.columns = []           # (name in the file, array name, component or None)
+        for word in args.attributes:
+            if word.startswith(("c_", "f_", "v_")):
+                raise ScriptError(f"custom/vtk: {word}: computes, fixes and variables are not written by "
+                                  "custom/vtk in pdps; use dump custom for them")
+            if word in POSITIONS:
+                continue
+            if word in SCALARS:
+                self.columns.append((word, word, None))
+            elif word in COMPONENT:
+                self.columns.append(COMPONENT[word] + (None,))
+            else:
+                raise ScriptError(f"custom/vtk: unknown attribute {word} (known: {', '.join(SCALARS)}, "
+                                  f"{', '.join(w for words in VECTORS.values() for w in words)}, x y z)")
+        needs_sphere = {"radius", "diameter", "omega", "torque"}
+        for name, *_ in self.columns:
+            if name in needs_sphere and not sim.particles.has("radius" if name == "diameter" else name):
+                raise ScriptError(f"custom/vtk: {name} needs spheres (atom_style sphere or granular)")
+
+    def write(self, sim):
+        p = sim.particles
+        n = p.nlocal
+        chosen = np.flatnonzero(sim.groups.select(sim, self.group))
+        blocks = [np.asarray(p.tag[:n][chosen], dtype=np.float64).reshape(-1, 1), p.x[:n][chosen]]
+        layout = []                 # (name, width)
+        for name in self._vector_names():
+            values = np.asarray(self._values(sim, name)[chosen], dtype=np.float64)
+            blocks.append(values if values.ndim == 2 else values[:, None])
+            layout.append((name, blocks[-1].shape[1]))
+        table = sim.comm.gather_rows(np.column_stack(blocks) if blocks else np.zeros((0, 4)))
+        if not sim.comm.is_root:
+            return
+        table = table[np.argsort(table[:, 0], kind="stable")]
+        data, start = {}, 4
+        for name, width in layout:
+            block = table[:, start:start + width]
+            data[name] = np.ascontiguousarray(block[:, 0] if width == 1 else block)
+            start += width
+        for name in ("id", "type", "image"):
+            if name in data:
+                data[name] = data[name].astype(np.int64)
+        path = self.pattern.frame(sim.step)
+        points = np.ascontiguousarray(table[:, 1:4])
+        self.write_frame(path, points, vertex_cells(len(points)), data, sim.time)
+        self.series.add(path, sim.time, empty=len(points) == 0)
+
+    def _vector_names(self):
+        """Point data names in the order first listed: a vector whose three components are all listed
+        is one entry; a lone component is an entry of its own."""
+        names = []
+        for word in self.args.attributes:
+            if word in SCALARS and word not in names:
+                names.append(word)
+            elif word in COMPONENT:
+                vector, _ = COMPONENT[word]
+                whole = all(w in self.args.attributes for w in VECTORS[vector])
+                entry = vector if whole else word
+                if entry not in names:
+                    names.append(entry)
+        return names
+
+    def _values(self, sim, name):
+        p = sim.particles
+        n = p.nlocal
+        if name in VECTORS:
+            return p.arrays[name][:n]
+        if name in COMPONENT:
+            vector, k = COMPONENT[name]
+            return p.arrays[vector][:n, k]
+        if name == "id":
+            return p.tag[:n]
+        if name == "mass":
+            return p.rmass[:n] if p.has("rmass") else sim.mass[p.type[:n]]
+        if name == "diameter":
+            return 2.0 * p.radius[:n]
+        return p.arrays[name][:n]
+
+    write_mesh = DumpVTK.write_mesh
+
+    def render_series(self, frames, surface):
+        return series_json(frames)
