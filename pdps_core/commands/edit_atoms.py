@@ -350,7 +350,7 @@ def displace_atoms(sim, args):
         amplitude = np.array([number(w, f"d{a}", low=0.0) for a, w in zip("xyz", words[:3])]) * scale
         if amplitude[2] != 0.0 and sim.dimension == 2:
             raise ScriptError(f"a 2-d system's particles cannot be displaced in z (dz = {words[2]})")
-        if sim.dialect.name in ("lammps", "liggghts"):
+        if sim.dialect.name == "lammps":
             seed = integer(words[3], "seed", low=1, high=2 ** 31 - 1)
             _park_displace(x, rows, amplitude, seed)
         else:
