@@ -45,6 +45,9 @@ class DumpVTK(MeshDump):
 
     def write_mesh(self, tmp, points, cells, point_data, time, cell_data):
         kind = "vtu" if self.pattern.tail.endswith(".vtu") else "vtk"
+        if not len(points):
+            # a frame with no particle: meshio's legacy writer fails on an empty vertex block
+            cells, point_data = [], {}
         meshio.write(tmp, meshio.Mesh(points, cells, point_data=point_data, cell_data=cell_data),
                      file_format=kind)
 
