@@ -350,3 +350,17 @@ def test_custom_vtk_writes_the_listed_values(tmp_path, make_sim):
         sim.command("dump 2 all custom/vtk 3 q_*.vtk id c_ke")
     with pytest.raises(ScriptError, match="custom/vtk: unknown attribute colour"):
         sim.command("dump 3 all custom/vtk 3 q_*.vtk id colour")
+
+
+@pytest.mark.parametrize("style", ["vtk", "custom/vtk"])
+def test_a_frame_without_particles_is_an_empty_legacy_grid(tmp_path, make_sim, style):
+    """Before an insertion fix has added anything: a legacy VTK frame with no points, not an error."""
+    sim = make_sim()
+    sim.command(f"""
+        particle_style sphere
+        region box block -3 3 -3 3 -3 3
+        create_box 1 box
+        dump 1 all {style} 1 e_*.vtk{' id radius' if style == 'custom/vtk' else ''}
+        run 0
+    """)
+    assert b"POINTS 0 double" in (tmp_path / "e_0.vtk").read_bytes()
