@@ -311,7 +311,6 @@ class FixRigid(Fix):
             t = tensor[b]
             matrix = np.array([[t[0], t[5], t[4]], [t[5], t[1], t[3]], [t[4], t[3], t[2]]])
             moments, vectors = np.linalg.eigh(matrix)
-            moments, vectors = moments[::-1], vectors[:, ::-1]
             largest = moments.max()
             moments = np.where(moments < EPSILON * largest, 0.0, moments)
             self.inertia[b] = moments

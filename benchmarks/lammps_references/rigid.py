@@ -1,0 +1,84 @@
+"""Record what LAMMPS prints for fix rigid and fix rigid/nve on bodies of Lennard-Jones particles, the
+reference plugins/fix_rigid/tests/test_rigid_lammps.py compares pdps with.
+
+    python benchmarks/lammps_references/rigid.py [LMP]
+
+The scene (written here, deterministic, no random start in either program): 8 bodies of 3 to 5
+Lennard-Jones particles (molecule ids, atom_style molecular), randomly oriented on a 2x2x2 grid in a
+periodic box of 12 sigma, one of them straddling the x and y boundaries (image flags in the data
+file), with random particle velocities (made rigid by each program's body setup) and interactions
+within a body excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100 steps
+over 10^4 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_lj.txt; the data
+file is plugins/fix_rigid/tests/data/rigid_lj.data.
+"""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
+STYLES = ("rigid", "rigid/nve")
+SCRIPT = """units lj
+atom_style molecular
+read_data rigid_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+timestep 0.001
+fix 1 all {style} molecule
+thermo_style custom step temp epair ke etotal press f_1
+thermo_modify format float %20.15g
+thermo 100
+run 10000
+"""
+LENGTH = 12.0
+
+
+def body(rng, count):
+    """``count`` points within 1.3 of their centroid, no two closer than 0.95, randomly turned."""
+    while True:
+        points = rng.uniform(-1.0, 1.0, size=(count, 3))
+        distances = np.linalg.norm(points[:, None] - points[None], axis=2)[np.triu_indices(count, 1)]
+        if distances.min() > 0.95 and np.linalg.norm(points - points.mean(axis=0), axis=1).max() < 1.3:
+            return points - points.mean(axis=0)
+
+
+def write_data(path):
+    rng = np.random.default_rng(20261123)
+    rows = []
+    tag = 0
+    centres = [np.array([i, j, k]) * 6.0 + 3.0 for i in range(2) for j in range(2) for k in range(2)]
+    centres[0] = np.array([0.3, 11.8, 3.0])          # across the x and y boundaries
+    for mol, centre in enumerate(centres, start=1):
+        for point in body(rng, 3 + mol % 3) + centre:
+            tag += 1
+            image = np.floor(point / LENGTH).astype(int)
+            wrapped = point - image * LENGTH
+            rows.append((tag, mol, wrapped, image, rng.normal(0.0, 0.5, size=3)))
+    lines = ["fix rigid reference scene: 8 LJ bodies (benchmarks/lammps_references/rigid.py)", "",
+             f"{len(rows)} atoms", "1 atom types", "",
+             f"0 {LENGTH} xlo xhi", f"0 {LENGTH} ylo yhi", f"0 {LENGTH} zlo zhi", "", "Masses", "", "1 1.0", "",
+             "Atoms # molecular", ""]
+    lines += [f"{t} {m} 1 {x[0]:.17g} {x[1]:.17g} {x[2]:.17g} {i[0]} {i[1]} {i[2]}" for t, m, x, i, _ in rows]
+    lines += ["", "Velocities", ""]
+    lines += [f"{t} {v[0]:.17g} {v[1]:.17g} {v[2]:.17g}" for t, _, _, _, v in rows]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def main():
+    lmp = sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp")
+    DATA.mkdir(parents=True, exist_ok=True)
+    data = DATA / "rigid_lj.data"
+    write_data(data)
+    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style), [data], label=style))
+              for style in STYLES}
+    write_blocks(DATA / "rigid_lj.txt", tables)
+
+
+if __name__ == "__main__":
+    main()
