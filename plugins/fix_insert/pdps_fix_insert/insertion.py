@@ -62,10 +62,18 @@ def number(word, what):
 
 
 def whole_number(word, what, low=None):
+    """An integer; also written as a float with no fraction ("1.", as LIGGGHTS's tutorials write seeds,
+    which its atoi reads)."""
     try:
         value = int(word)
     except ValueError:
-        raise ScriptError(f"{what} must be a whole number (got {word})") from None
+        try:
+            number_value = float(word)
+        except ValueError:
+            number_value = math.nan
+        if not (math.isfinite(number_value) and number_value == int(number_value)):
+            raise ScriptError(f"{what} must be a whole number (got {word})") from None
+        value = int(number_value)
     if low is not None and value < low:
         raise ScriptError(f"{what} must be >= {low} (got {word})")
     return value

@@ -190,6 +190,7 @@ def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
      "radius STYLE ... [volume_limit V]"),
     ("fix d2 all particledistribution/discrete 1 2 pts1 0.5",
      "expected 2 template/fraction pairs (got 2 words after N)"),
+    ("fix d2 all particledistribution/discrete 1.5 1 pts1 1.0", "seed must be a whole number (got 1.5)"),
 ])
 def test_bad_insertion_lines(make_sim, line, message):
     sim = make_sim(dialect="liggghts")
@@ -217,3 +218,10 @@ def test_mass_and_volume_fraction_targets(make_sim):
     before = sim.particles.nlocal
     sim.command("run 1")
     assert sim.particles.nlocal == before
+
+
+def test_a_seed_written_as_a_float_is_read_as_liggghts_reads_it(make_sim):
+    """LIGGGHTS's own tutorials write ``particledistribution/discrete 1.  1 pts1 1.0`` (atoi reads 1)."""
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=1).split("fix pdd1")[0] + "fix pdd1 all particledistribution/discrete 1.  1 pts1 1.0")
+    assert sim.fixes["pdd1"].seed == 1
