@@ -38,7 +38,9 @@ the axis to p, where LIGGGHTS takes it at the particle's centre). Only the frict
 
 Keywords after ``model``: ``tangential history|no_history`` (required), ``rolling_friction
 off|cdt|epsd|epsd2``, ``cohesion off|sjkr|sjkr2``, ``tangential_damping on|off``, ``limitForce
-on|off`` (as pair gran); ``store_force no`` (yes is not supported).
+on|off`` (as pair gran). ``store_force yes`` keeps each particle's wall force of the step (force
+units, 3 values; all the wall's contacts summed) in the per-atom property ``force_ID``: dump custom
+reads it as ``f_ID[k]``, or as LIGGGHTS's ``f_force_ID[k]`` (from 0) in the LIGGGHTS dialect.
 
 Cost: the particles within their radius plus the skin of a primitive wall are listed at each
 neighbor list rebuild and only they are visited; mesh walls keep fix wall/mesh's binned candidate
@@ -50,7 +52,7 @@ Syntax::
         [rolling_friction ...] [cohesion ...] [tangential_damping on|off] [limitForce on|off]
         primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2  [shear DIM V]
       | mesh n_meshes N meshes ID1 ... IDN
-        [store_force no]
+        [store_force yes|no]
 
 Examples::
 
@@ -176,7 +178,7 @@ class FixWallGranModel(Fix):
     usage = ("fix ID GROUP wall/gran model hertz|hooke tangential history|no_history [rolling_friction "
              "off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] "
              "primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 [shear DIM V] | "
-             "mesh n_meshes N meshes ID1 ... IDN [store_force no]")
+             "mesh n_meshes N meshes ID1 ... IDN [store_force yes|no]")
 
     class Args(StyleArgs):
         words: list[str] = []
@@ -275,6 +277,7 @@ class FixWallGranModel(Fix):
         return words[3 + count:]
 
     def _read_options(self, words):
+        self.store = None
         self.shear = np.zeros(3)
         self.spin = 0.0
         k = 0
@@ -304,8 +307,8 @@ class FixWallGranModel(Fix):
                 if k + 1 >= len(words) or words[k + 1] not in ("yes", "no"):
                     raise ScriptError("store_force must be yes or no")
                 if words[k + 1] == "yes":
-                    raise ScriptError("store_force yes is not supported (the forces on a mesh: "
-                                      "fix mesh/surface/stress)")
+                    self.store = f"force_{self.id}"
+                    self.sim.particles.request(self.store, width=3)
                 k += 2
             else:
                 raise ScriptError(f"unknown keyword {word}; usage: {self.usage}")
@@ -356,13 +359,16 @@ class FixWallGranModel(Fix):
         if self.primitive is not None:
             history = self.history
             values = history.values.copy() if log else history.values
-            rows, logged = self._log_buffer(self._count if log else 0)
+            rows, logged = self._log_buffer(self._count if (log or self.store) else 0)
             bad = liggghts_primitive_forces(self._near, self._count, *common, self.wallstyle, self.position,
                                             self.cylinder, self.shear, self.spin, self.wall_type, *law,
                                             history.partner, values, rows, logged)
             if bad >= 0:
                 history.overflowed(p.tag[bad])
-            return [(0, rows[:logged[0]])]
+            logs = [(0, rows[:logged[0]])]
+            if self.store and not log:
+                self._store_forces(sim, logs)
+            return logs
         for number, (mesh, contacts) in enumerate(zip(self.meshes, self.mesh_contacts)):
             near, offsets, triangles = contacts.candidates_now(sim)
             tally = None if log else mesh.tally()
@@ -370,7 +376,7 @@ class FixWallGranModel(Fix):
                 tally = no_wear(tally)
             history = contacts.history
             values = history.values.copy() if log else history.values
-            rows, logged = self._log_buffer(offsets[-1] if log else 0)
+            rows, logged = self._log_buffer(offsets[-1] if (log or self.store) else 0)
             bad = mesh_wall_forces(near, offsets, triangles, p.x, p.type, mesh.vertices, mesh.triangles,
                                    mesh.face_normal, p.radius, p.rmass, p.v, p.omega, f, torque, True,
                                    history.partner, values, LIGGGHTS_LAWS, *NO_PDPS_LAW, self.models, self.table,
@@ -381,7 +387,25 @@ class FixWallGranModel(Fix):
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs.append((number, rows[:logged[0]]))
+        if self.store and not log:
+            self._store_forces(sim, logs)
         return logs
+
+    def _store_forces(self, sim, logs):
+        """store_force yes: each particle's wall force this step, from the contacts' log."""
+        p = sim.particles
+        stored = p.arrays[self.store]
+        stored[: p.nlocal] = 0.0
+        for _, rows in logs:
+            np.add.at(stored, rows[:, 0].astype(np.int64), rows[:, 8:11])
+
+    def peratom(self, sim):
+        """store_force yes: the wall force on each owned particle (nlocal, 3), for dump custom
+        (``f_ID[k]``; LIGGGHTS's ``f_force_ID[k]`` in the LIGGGHTS dialect)."""
+        if not self.store:
+            raise ScriptError(f"fix {self.id} (wall/gran) has per-atom values only with store_force yes")
+        p = sim.particles
+        return p.arrays[self.store][: p.nlocal]
 
     def _log_buffer(self, most):
         if most == 0:

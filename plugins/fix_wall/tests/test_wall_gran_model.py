@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, Simulation
 from pdps_core.testing import make_box
 
 MASS = math.pi / 6.0
@@ -159,7 +159,7 @@ def test_a_turning_cylinder_carries_a_sphere_at_its_surface_speed():
     ("model hertz tangential history mesh n_meshes 2 meshes m1", "meshes needs 2 mesh ID(s) (got m1)"),
     ("model hertz tangential history mesh n_meshes 1 meshes m1", "fix m1 (property/global) is not a fix mesh/surface"),
     ("model hertz tangential history mesh n_meshes 0 meshes", "n_meshes must be > 0 (got 0)"),
-    ("model hertz tangential history primitive type 2 zplane 0 store_force yes", "store_force yes is not supported"),
+    ("model hertz tangential history primitive type 2 zplane 0 store_force maybe", "store_force must be yes or no"),
 ])
 def test_bad_words(words, message):
     sim = make_box(MATERIAL, box="-4 4 -4 4 -4 4", particle_style="sphere", ntypes=2, boundary="f f f")
@@ -241,3 +241,43 @@ def test_a_cohesive_sphere_rests_where_spring_cohesion_and_weight_balance(cohesi
     kn = 16 / 15 * math.sqrt(0.5) * y_star * (15 * MASS / (16 * math.sqrt(0.5) * y_star)) ** 0.2
     assert kn * delta - k * area(delta) == pytest.approx(MASS * g, rel=1e-6)
     assert kn * delta > MASS * g * 1.1
+
+
+def test_store_force_keeps_each_particles_wall_force(data, tmp_path):
+    """store_force yes: a sphere resting on the mesh floor and one resting on a zplane of another
+    wall fix (and one in the air) carry their wall's force m g up in force_ID, which dump custom
+    reads as LIGGGHTS's f_force_ID[k] in the LIGGGHTS dialect; the wall fix without it has none."""
+    sim = Simulation(screen=False, log=None)
+    sim.command("dialect liggghts")
+    sim.command(f"""
+        units lj
+        atom_style granular
+        boundary f f f
+        region box block -4 4 -4 4 -4 4 units box
+        create_box 2 box
+        create_atoms 1 single 0.3 -0.2 0.499 units box
+        create_atoms 1 single 3.0 3.0 -1.501 units box
+        create_atoms 1 single 3.0 -3.0 2.0 units box
+        set type 1 diameter 1 density 1
+        {MATERIAL}
+        fix cad all mesh/surface file {data}/square.stl type 2
+        fix 1 all test/nve_sphere
+        fix 2 all test/wall_gravity 0 0 {-10.0}
+        fix w all wall/gran model hooke tangential history mesh n_meshes 1 meshes cad store_force yes
+        fix low all wall/gran model hooke tangential history primitive type 2 zplane -2.0 store_force yes
+        fix plain all wall/gran model hooke tangential history primitive type 2 zplane -3.9
+        timestep {hooke_time() / 50}
+        dump d all custom 100 {tmp_path}/forces.txt id f_force_w[2] f_force_low[2]
+    """)
+    sim.command("run 3000")
+    mesh_force = sim.fixes["w"].peratom(sim)[np.argsort(sim.tag)]
+    plane_force = sim.fixes["low"].peratom(sim)[np.argsort(sim.tag)]
+    np.testing.assert_allclose(mesh_force[0], [0, 0, MASS * 10.0], rtol=1e-6, atol=1e-9)
+    np.testing.assert_allclose(plane_force[1], [0, 0, MASS * 10.0], rtol=1e-6, atol=1e-9)
+    np.testing.assert_array_equal(mesh_force[1:], 0.0)
+    np.testing.assert_array_equal(plane_force[[0, 2]], 0.0)
+    last = (tmp_path / "forces.txt").read_text().splitlines()[-3:]
+    rows = sorted([float(w) for w in line.split()] for line in last)
+    assert rows[0][1] == pytest.approx(MASS * 10.0, rel=1e-6) and rows[1][2] == pytest.approx(MASS * 10.0, rel=1e-6)
+    with pytest.raises(ScriptError, match="has per-atom values only with store_force yes"):
+        sim.fixes["plain"].peratom(sim)
