@@ -5,11 +5,13 @@ Syntax::
 
     fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF
         particlerate R | massrate R  insert_every N  vel constant VX VY VZ
-        insertion_face MESH  extrude_length L  [general keywords]
+        insertion_face MESH  [extrude_length L | duration D]  [general keywords]
 
 ``insertion_face`` names a ``fix mesh/surface`` (its triangles as they are at the insertion, moved
 or not). The particles of each insertion are placed in the volume the face sweeps when it is pushed
-back against the velocity by ``extrude_length`` L (distance): a point of the face, drawn with
+back against the velocity by the extrusion length L: ``extrude_length L`` (distance), or the way
+the particles fly in ``duration D`` steps, :math:`L = D\,\Delta t\,|\mathbf{v}|` (LIGGGHTS's default:
+D = insert_every, so each insertion fills what the stream empties until the next): a point of the face, drawn with
 probability proportional to the triangles' areas, minus :math:`s\,\hat{\mathbf{v}}` with s uniform
 on [0, L]. Until it reaches the face, after :math:`s/|\mathbf{v}|`, a particle flies straight at the
 insertion velocity, whatever acts on it (its force and torque are zeroed after every force
@@ -37,7 +39,7 @@ from numba import njit
 
 from pdps_core.api import ScriptError
 
-from .insertion import FixInsert, number
+from .insertion import FixInsert, number, whole_number
 from .insert_rate_region import RATE_ARITY, rate_count, read_rate
 
 
@@ -64,23 +66,26 @@ class FixInsertStream(FixInsert):
     name = "insert/stream"
     usage = ("fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF "
              "particlerate R | massrate R insert_every N vel constant VX VY VZ insertion_face MESH "
-             "extrude_length L [keywords]")
+             "[extrude_length L | duration D] [keywords]")
     STYLE_ARITY = {**RATE_ARITY, "insertion_face": 1, "extrude_length": 1, "duration": 1}
     once_by_default = False
 
     def read_style(self, sim, given):
-        if "duration" in given:
-            raise ScriptError("keyword duration is not supported: give extrude_length")
-        for needed in ("insertion_face", "extrude_length"):
-            if needed not in given:
-                raise ScriptError(f"missing keyword {needed}; usage: {self.usage}")
+        if "duration" in given and "extrude_length" in given:
+            raise ScriptError("give extrude_length or duration, not both (LIGGGHTS)")
+        if "insertion_face" not in given:
+            raise ScriptError(f"missing keyword insertion_face; usage: {self.usage}")
         name = given["insertion_face"][0]
         self.face = sim.fixes.get(name)
         if not hasattr(self.face, "triangles") or not hasattr(self.face, "vertices"):
             raise ScriptError(f"insertion_face {name} is not a fix mesh/surface")
-        self.depth = number(given["extrude_length"][0], "extrude_length")
-        if not self.depth > 0:
-            raise ScriptError(f"extrude_length must be > 0 (got {given['extrude_length'][0]})")
+        self.extrude_length, self.duration = None, None
+        if "extrude_length" in given:
+            self.extrude_length = number(given["extrude_length"][0], "extrude_length")
+            if not self.extrude_length > 0:
+                raise ScriptError(f"extrude_length must be > 0 (got {given['extrude_length'][0]})")
+        elif "duration" in given:
+            self.duration = whole_number(given["duration"][0], "duration", low=1)
         if "vel" not in given or self.velocity_style != "constant":
             raise ScriptError("insert/stream needs vel constant VX VY VZ (the particles cross the face at it)")
         speed = float(np.linalg.norm(self.velocity_mean))
@@ -94,6 +99,13 @@ class FixInsertStream(FixInsert):
         self.wanted_so_far = 0
         self.release_name = f"release_{self.id}"
         sim.particles.request(self.release_name, ghost=False)
+
+    @property
+    def depth(self):
+        """The extrusion length: given, or the flight of ``duration`` steps (default insert_every)."""
+        if self.extrude_length is not None:
+            return self.extrude_length
+        return (self.duration or self.every) * self.sim.dt * self.speed
 
     def events_done_after(self):
         return self.events + 1

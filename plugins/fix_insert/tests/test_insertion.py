@@ -225,3 +225,21 @@ def test_a_seed_written_as_a_float_is_read_as_liggghts_reads_it(make_sim):
     sim = make_sim(dialect="liggghts")
     sim.command(PACK.format(n=1).split("fix pdd1")[0] + "fix pdd1 all particledistribution/discrete 1.  1 pts1 1.0")
     assert sim.fixes["pdd1"].seed == 1
+
+
+def test_stream_without_extrude_length_fills_what_one_interval_of_flight_empties(make_sim, tmp_path):
+    """LIGGGHTS's default (its chute_wear tutorial gives no extrude_length): duration = insert_every,
+    so the particles of an insertion lie within insert_every x dt x |v| behind the face."""
+    (tmp_path / "face.stl").write_text(FACE)
+    sim = make_sim(dialect="liggghts")
+    sim.command(STREAM.replace(" extrude_length 0.02", "").replace("massrate 0.5", "massrate 5.0")
+                .replace("insert_every 100", "insert_every 400") + "run 1")
+    p = sim.particles
+    z = p.x[:p.nlocal, 2]
+    depth = 400 * 1e-5 * 1.0
+    assert p.nlocal > 10
+    assert z.min() >= 0.15 - 1e-12 and z.max() <= 0.15 + depth + 1e-12
+    assert z.max() > 0.15 + 0.8 * depth           # the whole depth is used
+    with pytest.raises(ScriptError, match=r"give extrude_length or duration, not both \(LIGGGHTS\)"):
+        sim.command("fix s2 all insert/stream seed 3 distributiontemplate pdd1 nparticles 5 massrate 1 "
+                    "insert_every 10 vel constant 0 0 -1 insertion_face inface extrude_length 0.01 duration 5")
