@@ -173,7 +173,12 @@ def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, lengt
         x[i, 0] = rx + xcm[b, 0] - sx
         x[i, 1] = ry + xcm[b, 1] - sy
         x[i, 2] = rz + xcm[b, 2] - sz
+        if with_omega:
+            for d in range(3):
+                omega_atom[i, d] = omega[b, d]
         m = particle_mass(i, type_, mass, rmass)
+        if dtf == 0.0:
+            continue
         fc0 = m * (v[i, 0] - v0) / dtf - f[i, 0]
         fc1 = m * (v[i, 1] - v1) / dtf - f[i, 1]
         fc2 = m * (v[i, 2] - v2) / dtf - f[i, 2]
@@ -183,9 +188,6 @@ def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, lengt
         virial[3] += 0.5 * x0 * fc1
         virial[4] += 0.5 * x0 * fc2
         virial[5] += 0.5 * x1 * fc2
-        if with_omega:
-            for d in range(3):
-                omega_atom[i, d] = omega[b, d]
 
 
 @njit(cache=True)
@@ -205,7 +207,12 @@ def set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length
         v[i, 0] = omega[b, 1] * rz - omega[b, 2] * ry + vcm[b, 0]
         v[i, 1] = omega[b, 2] * rx - omega[b, 0] * rz + vcm[b, 1]
         v[i, 2] = omega[b, 0] * ry - omega[b, 1] * rx + vcm[b, 2]
+        if with_omega:
+            for d in range(3):
+                omega_atom[i, d] = omega[b, d]
         m = particle_mass(i, type_, mass, rmass)
+        if dtf == 0.0:
+            continue
         fc0 = m * (v[i, 0] - v0) / dtf - f[i, 0]
         fc1 = m * (v[i, 1] - v1) / dtf - f[i, 1]
         fc2 = m * (v[i, 2] - v2) / dtf - f[i, 2]
@@ -218,9 +225,6 @@ def set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length
         virial[3] += 0.5 * x0 * fc1
         virial[4] += 0.5 * x0 * fc2
         virial[5] += 0.5 * x1 * fc2
-        if with_omega:
-            for d in range(3):
-                omega_atom[i, d] = omega[b, d]
 
 
 @njit(cache=True)

@@ -21,7 +21,9 @@ from numba import njit
 
 @njit(cache=True, inline="always")
 def normalize4(q):
-    norm = 1.0 / math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
+    square = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]
+    # a body spun up to an overflowing rate: NaN, which the core's finiteness check reports by line
+    norm = 1.0 / math.sqrt(square) if 0.0 < square < math.inf else math.nan
     q[0] *= norm
     q[1] *= norm
     q[2] *= norm
