@@ -34,7 +34,7 @@ from .region_volume import clipped_extent, region_points, surface_clearance
 RATE_ARITY = {"nparticles": 1, "mass": 1, "particlerate": 1, "massrate": 1}
 
 
-def read_rate(fix, given):
+def read_rate(fix, given, every_needed=True):
     """The total and the rate (nparticles|mass, particlerate|massrate), as particle counts."""
     totals = [k for k in ("nparticles", "mass") if k in given]
     rates = [k for k in ("particlerate", "massrate") if k in given]
@@ -42,7 +42,7 @@ def read_rate(fix, given):
         raise ScriptError(f"give one of nparticles, mass (got {', '.join(totals) or 'none'})")
     if len(rates) != 1:
         raise ScriptError(f"give one of particlerate, massrate (got {', '.join(rates) or 'none'})")
-    if "insert_every" not in given:
+    if every_needed and "insert_every" not in given:
         raise ScriptError(f"missing keyword insert_every; usage: {fix.usage}")
     if fix.every is None:
         raise ScriptError(f"insert_every must be a number of steps for fix {fix.name} (got once)")

@@ -4,32 +4,33 @@ insert/stream).
 Syntax::
 
     fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF
-        particlerate R | massrate R  insert_every N  vel constant VX VY VZ
-        insertion_face MESH  [extrude_length L | duration D]  [general keywords]
+        particlerate R | massrate R  vel constant VX VY VZ  insertion_face MESH
+        insert_every N [duration D] | extrude_length L  [general keywords]
 
-``insertion_face`` names a ``fix mesh/surface`` (its triangles as they are at the insertion, moved
-or not). The particles of each insertion are placed in the volume the face sweeps when it is pushed
-back against the velocity by the extrusion length L: ``extrude_length L`` (distance), or the way
-the particles fly in ``duration D`` steps, :math:`L = D\,\Delta t\,|\mathbf{v}|` (LIGGGHTS's default:
-D = insert_every, so each insertion fills what the stream empties until the next): a point of the face, drawn with
-probability proportional to the triangles' areas, minus :math:`s\,\hat{\mathbf{v}}` with s uniform
-on [0, L]. Until it reaches the face, after :math:`s/|\mathbf{v}|`, a particle flies straight at the
-insertion velocity, whatever acts on it (its force and torque are zeroed after every force
-computation and its velocity reset at the end of the step: LIGGGHTS's release at the face), so the
-mass crossing the face per unit time is the inserted rate once the first particles arrive (after
-L/|v|), and a stream never overlaps the particles it follows. ``vel constant`` (not parallel to the
-face) is required; ``vel uniform|gaussian`` and ``all_in yes`` are refused (a particle must cross
-the face at its own depth).
+``insertion_face`` names a planar ``fix mesh/surface``; its normal :math:`\hat{\mathbf{n}}` is turned
+so that :math:`\mathbf{v}\cdot\hat{\mathbf{n}} > 0`, and the particles enter with the insertion
+velocity's normal part :math:`\mathbf{v}_n = (\mathbf{v}\cdot\hat{\mathbf{n}})\hat{\mathbf{n}}`
+(LIGGGHTS's ``v_normal``). The particles of each insertion are placed in the volume the face sweeps
+when pushed back along :math:`-\hat{\mathbf{n}}` by the extrusion length L, at least the largest
+radius behind the face: a point of the face (triangles by area) minus :math:`(uL + R_\max)
+\hat{\mathbf{n}}`, u uniform on [0, 1). As in LIGGGHTS, exactly one of ``insert_every`` and
+``extrude_length`` is given and fixes the other: :math:`L = D\,\Delta t\,|\mathbf{v}_n|` with
+``duration`` D (default insert_every, D <= insert_every), or insert_every = :math:`\lfloor L /
+(\Delta t\,|\mathbf{v}_n|)\rfloor`; L must be at least 3 times the largest radius. Until it reaches the face
+a particle flies straight at :math:`\mathbf{v}_n` whatever acts on it (its force and torque are
+zeroed after every force computation and its velocity reset at the end of the step: LIGGGHTS's
+release), so the mass crossing the face per unit time is the inserted rate once the first particles
+arrive. ``vel uniform|gaussian`` and ``all_in yes`` are refused.
 
 The counts per insertion follow the rate's line as for insert/rate/region (insert_rate_region.py:
-never a whole particle off the rate); ``insert_every`` is required. Placement and ranks:
-insertion.py.
+never a whole particle off the rate). Placement and ranks: insertion.py. (LIGGGHTS draws each
+particle's depth from its own radius rather than the largest.)
 
-Example::
+Example (LIGGGHTS's chute tutorial)::
 
-    fix inface all mesh/surface file insertion_face.stl type 1
-    fix ins all insert/stream seed 32452843 distributiontemplate pdd nparticles 5000 massrate 0.1 &
-        insert_every 1000 overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.06
+    fix inface all mesh/surface file meshes/insertion_face.stl type 1
+    fix ins nve_group insert/stream seed 5330 distributiontemplate pdd1 nparticles 6000 massrate 0.1 &
+        insert_every 1000 overlapcheck yes all_in no vel constant 0.0 0.0 -1.0 insertion_face inface
 """
 
 import math
@@ -65,20 +66,24 @@ def keep_flying(release, time, v, omega, velocity):
 class FixInsertStream(FixInsert):
     name = "insert/stream"
     usage = ("fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF "
-             "particlerate R | massrate R insert_every N vel constant VX VY VZ insertion_face MESH "
-             "[extrude_length L | duration D] [keywords]")
+             "particlerate R | massrate R vel constant VX VY VZ insertion_face MESH "
+             "insert_every N [duration D] | extrude_length L [keywords]")
     STYLE_ARITY = {**RATE_ARITY, "insertion_face": 1, "extrude_length": 1, "duration": 1}
     once_by_default = False
 
     def read_style(self, sim, given):
-        if "duration" in given and "extrude_length" in given:
-            raise ScriptError("give extrude_length or duration, not both (LIGGGHTS)")
         if "insertion_face" not in given:
             raise ScriptError(f"missing keyword insertion_face; usage: {self.usage}")
         name = given["insertion_face"][0]
         self.face = sim.fixes.get(name)
         if not hasattr(self.face, "triangles") or not hasattr(self.face, "vertices"):
             raise ScriptError(f"insertion_face {name} is not a fix mesh/surface")
+        if "extrude_length" in given and "insert_every" in given:
+            raise ScriptError("must not provide both 'insert_every' and 'extrude_length' (LIGGGHTS)")
+        if "extrude_length" not in given and "insert_every" not in given:
+            raise ScriptError("must define either 'insert_every' or 'extrude_length' (LIGGGHTS)")
+        if "extrude_length" in given and "duration" in given:
+            raise ScriptError("must not provide both 'extrude_length' and 'duration' (LIGGGHTS)")
         self.extrude_length, self.duration = None, None
         if "extrude_length" in given:
             self.extrude_length = number(given["extrude_length"][0], "extrude_length")
@@ -86,19 +91,42 @@ class FixInsertStream(FixInsert):
                 raise ScriptError(f"extrude_length must be > 0 (got {given['extrude_length'][0]})")
         elif "duration" in given:
             self.duration = whole_number(given["duration"][0], "duration", low=1)
+            if self.duration > self.every:
+                raise ScriptError(f"duration must not exceed insert_every (got {self.duration} > {self.every})")
         if "vel" not in given or self.velocity_style != "constant":
             raise ScriptError("insert/stream needs vel constant VX VY VZ (the particles cross the face at it)")
-        speed = float(np.linalg.norm(self.velocity_mean))
-        if speed == 0.0:
-            raise ScriptError("vel constant must not be zero: the particles must cross the insertion face")
-        self.direction = self.velocity_mean / speed
-        self.speed = speed
         if self.all_in:
             raise ScriptError("all_in yes is not supported by insert/stream")
-        read_rate(self, given)
+        normals = self.face.face_normal
+        if not (np.abs(normals @ normals[0]) > 1.0 - 1e-6).all():
+            raise ScriptError(f"insertion_face {name} must be planar (LIGGGHTS)")
+        normal = normals[0] if normals[0] @ self.velocity_mean >= 0 else -normals[0]
+        along = float(normal @ self.velocity_mean)
+        if along < 1e-3:
+            raise ScriptError(f"the insertion velocity projected on the face normal is {along:.3g}, less "
+                              "than 1e-3 (LIGGGHTS): no particle would cross the face")
+        self.normal = normal
+        self.velocity_mean = along * normal           # LIGGGHTS's v_normal: what the particles get
+        self.speed = along
+        read_rate(self, given, every_needed=False)
         self.wanted_so_far = 0
         self.release_name = f"release_{self.id}"
         sim.particles.request(self.release_name, ghost=False)
+
+    def setup(self, sim):
+        largest = self.distribution.max_radius
+        if self.extrude_length is not None:
+            self.every = int((self.extrude_length + 1e-13) / (sim.dt * self.speed))
+            if self.every < 1:
+                raise ScriptError("insertion velocity too high or extrude_length too low (LIGGGHTS)")
+            if self.extrude_length < 3.0 * largest:
+                raise ScriptError(f"extrude_length {self.extrude_length:g} is too small: at least 3 times the "
+                                  f"largest radius {largest:g} (LIGGGHTS)")
+        elif (self.duration or self.every) * sim.dt * self.speed < 3.0 * largest:
+            raise ScriptError(f"insert_every or vel is too small, or the particles too large: the extrusion "
+                              f"{(self.duration or self.every) * sim.dt * self.speed:g} is less than 3 times the "
+                              f"largest radius {largest:g} (LIGGGHTS)")
+        super().setup(sim)
 
     @property
     def depth(self):
@@ -118,15 +146,12 @@ class FixInsertStream(FixInsert):
         area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
         if not area.sum() > 0:
             raise ScriptError(f"insertion_face {self.face.id} has no area")
-        normal_part = np.abs(self.face.face_normal @ self.direction)
-        if not (normal_part * area).sum() > 1e-12 * area.sum():
-            raise ScriptError("vel constant is parallel to the insertion face: no particle would cross it")
         return corners, area
 
     def extent(self, sim):
         corners, _ = self._corners()
         points = corners.reshape(-1, 3)
-        back = points - self.depth * self.direction
+        back = points - (self.depth + self.distribution.max_radius) * self.normal
         both = np.vstack([points, back])
         return both.min(axis=0), both.max(axis=0)
 
@@ -138,8 +163,8 @@ class FixInsertStream(FixInsert):
         u[flip], w[flip] = 1.0 - u[flip], 1.0 - w[flip]
         a, b, c = corners[which, 0], corners[which, 1], corners[which, 2]
         on_face = a + u[:, None] * (b - a) + w[:, None] * (c - a)
-        self.pool_depth = self.depth * rng.random(n)
-        return on_face - self.pool_depth[:, None] * self.direction
+        self.pool_depth = self.depth * rng.random(n) + self.distribution.max_radius
+        return on_face - self.pool_depth[:, None] * self.normal
 
     def clearance(self, points, reach):
         return np.full(len(points), np.inf)

@@ -102,7 +102,7 @@ STREAM = """
     fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
     fix inface all mesh/surface file face.stl type 1
     fix ins all insert/stream seed 32452843 distributiontemplate pdd1 nparticles INF massrate 0.5 &
-        insert_every 100 overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02
+        overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02
     fix integr all nve/sphere
 """
 
@@ -228,18 +228,20 @@ def test_a_seed_written_as_a_float_is_read_as_liggghts_reads_it(make_sim):
 
 
 def test_stream_without_extrude_length_fills_what_one_interval_of_flight_empties(make_sim, tmp_path):
-    """LIGGGHTS's default (its chute_wear tutorial gives no extrude_length): duration = insert_every,
-    so the particles of an insertion lie within insert_every x dt x |v| behind the face."""
+    """LIGGGHTS's default (its chute_wear tutorial gives insert_every, no extrude_length): duration =
+    insert_every, so the particles of an insertion lie between the largest radius and that plus
+    insert_every x dt x |v_n| behind the face; insert_every and extrude_length together are refused."""
     (tmp_path / "face.stl").write_text(FACE)
     sim = make_sim(dialect="liggghts")
-    sim.command(STREAM.replace(" extrude_length 0.02", "").replace("massrate 0.5", "massrate 5.0")
-                .replace("insert_every 100", "insert_every 400") + "run 1")
+    sim.command(STREAM.replace(" extrude_length 0.02", " insert_every 1000").replace("massrate 0.5", "massrate 5.0")
+                + "run 1")
     p = sim.particles
     z = p.x[:p.nlocal, 2]
-    depth = 400 * 1e-5 * 1.0
+    depth, radius = 1000 * 1e-5 * 1.0, 0.002
     assert p.nlocal > 10
-    assert z.min() >= 0.15 - 1e-12 and z.max() <= 0.15 + depth + 1e-12
-    assert z.max() > 0.15 + 0.8 * depth           # the whole depth is used
-    with pytest.raises(ScriptError, match=r"give extrude_length or duration, not both \(LIGGGHTS\)"):
+    assert z.min() >= 0.15 + radius - 1e-12 and z.max() <= 0.15 + radius + depth + 1e-12
+    assert z.max() > 0.15 + radius + 0.8 * depth           # the whole depth is used
+    np.testing.assert_array_equal(p.v[:p.nlocal], [[0.0, 0.0, -1.0]] * p.nlocal)
+    with pytest.raises(ScriptError, match=r"must not provide both 'insert_every' and 'extrude_length' \(LIGGGHTS\)"):
         sim.command("fix s2 all insert/stream seed 3 distributiontemplate pdd1 nparticles 5 massrate 1 "
-                    "insert_every 10 vel constant 0 0 -1 insertion_face inface extrude_length 0.01 duration 5")
+                    "insert_every 10 vel constant 0 0 -1 insertion_face inface extrude_length 0.01")
