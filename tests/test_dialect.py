@@ -142,3 +142,34 @@ def test_lammps_styles_pdps_has_not_name_an_alternative(pdps_cli):
     assert done.stderr.strip().splitlines() == [
         "ERROR: in.test:3: pair_style: pair style lj/cut/coul/long is a LAMMPS style pdps does not have; "
         "instead: pdps has no charges: lj/cut for the Lennard-Jones part (docs/lammps.md)"]
+
+
+LIGGGHTS_MATERIAL = """
+    atom_style granular
+    region box block -1 1 -1 1 0 2 units box
+    create_box 1 box
+    fix m1 all property/global youngsModulus peratomtype 5.e6
+    fix m2 all property/global poissonsRatio peratomtype 0.45
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+"""
+
+
+def test_liggghts_2_spellings_of_its_granular_models(make_sim):
+    """LIGGGHTS's conveyor tutorial: pair_style gran/hertz/history with no coefficients and fix
+    wall/gran/hertz/history mesh|primitive ... mean today's gran model hertz tangential history; in the
+    LAMMPS dialect those names stay LAMMPS's styles, which need their coefficients."""
+    sim = make_sim(dialect="liggghts")
+    sim.command(LIGGGHTS_MATERIAL + """
+        pair_style gran/hertz/history
+        pair_coeff * *
+        fix floor all wall/gran/hertz/history primitive type 1 zplane 0.0
+    """)
+    assert sim.pair.name == "gran" and sim.pair.args.model == "hertz"
+    assert sim.fixes["floor"].name == "wall/gran" and sim.fixes["floor"].args.words[:4] == ["model", "hertz", "tangential", "history"]
+    sim.command("pair_style gran/hooke")
+    assert sim.pair.name == "gran" and sim.pair.args.model == "hooke" and sim.pair.args.tangential == "no_history"
+    lammps = make_sim(dialect="lammps")
+    lammps.command("atom_style sphere\nregion box block -1 1 -1 1 0 2 units box\ncreate_box 1 box")
+    with pytest.raises(ScriptError, match="missing argument"):
+        lammps.command("pair_style gran/hertz/history")

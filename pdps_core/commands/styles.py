@@ -7,6 +7,31 @@ from . import command
 from .words import choice, count, integer, number, type_range
 
 
+# LIGGGHTS 2.x spellings of its granular models, still in its own tutorials (conveyor):
+# ``pair_style gran/hertz/history`` with no coefficients reads the material from fix property/global,
+# as ``pair_style gran model hertz tangential history`` does; the same for the wall fix's style
+LIGGGHTS_LEGACY_MODELS = {
+    "gran/hertz/history": ["model", "hertz", "tangential", "history"],
+    "gran/hooke/history": ["model", "hooke", "tangential", "history"],
+    "gran/hooke": ["model", "hooke", "tangential", "no_history"],
+}
+
+
+def _liggghts_legacy(sim, style, rest, wall=False):
+    """(style, words) with a LIGGGHTS 2.x granular spelling read as today's, else as given."""
+    if getattr(sim.dialect, "name", None) != "liggghts":
+        return style, rest
+    base = style[len("wall/"):] if wall and style.startswith("wall/gran/") else style
+    model = LIGGGHTS_LEGACY_MODELS.get(base)
+    if model is None or (wall and base == style):
+        return style, rest
+    if not wall and rest:              # coefficients given: LAMMPS's style of that name
+        return style, rest
+    if wall and rest and rest[0] not in ("mesh", "primitive"):
+        return style, rest
+    return ("wall/gran" if wall else "gran"), model + list(rest)
+
+
 @command("pair_style")
 def pair_style(sim, args):
     if not args:
@@ -14,6 +39,8 @@ def pair_style(sim, args):
     if args[0] == "none":
         sim.pair = None
         return
+    style, rest = _liggghts_legacy(sim, args[0], args[1:])
+    args = [style, *rest]
     cls = registry.lookup("pair", args[0])
     pair = cls(sim, cls.parse(args[1:]))
     if sim.pair is not None and sim.pair.name == pair.name:
@@ -69,6 +96,9 @@ def _remove(sim, kind, table, args):
 
 @command("fix")
 def fix(sim, args):
+    if len(args) >= 3:
+        style, rest = _liggghts_legacy(sim, args[2], args[3:], wall=True)
+        args = [args[0], args[1], style, *rest]
     _create(sim, "fix", sim.fixes, args, "fix ID GROUP STYLE args")
 
 
