@@ -14,7 +14,9 @@ group and :math:`r_{skin}` the neighbor skin. A warning names the limit passed a
 ratios when :math:`\Delta t > f_R t_R`, :math:`\Delta t > f_H t_H` or :math:`v_{max}\Delta t > r_{skin}`
 (particles could cross the skin in one step, so contacts could be found late); it is given again only
 when a limit is passed that was not at the previous check. The ratios of the last check are kept in
-``ratios`` (LIGGGHTS's vector of this fix). The check also runs at the start of each run.
+``ratios`` and read as LIGGGHTS's vector of this fix: ``f_ID[1]`` :math:`\Delta t/t_R`, ``f_ID[2]``
+:math:`\Delta t/t_H`, ``f_ID[3]`` the skin ratio at LIGGGHTS's relative speed :math:`2 v_{max}` (0 for a
+ratio with nothing to measure). The check also runs at the start of each run.
 
 The times come from the pair style: its ``timestep_limits(sim)`` returns
 ``{"rayleigh": t_R or None, "hertz": t_H or None, "contact": t_c}``. When it gives neither a
@@ -75,6 +77,10 @@ class FixCheckTimestepGran(Fix):
     def setup(self, sim):
         self._passed = frozenset()
         self.check(sim)
+
+    def vector(self, sim):
+        rayleigh, collision, skin = (0.0 if r is None else r for r in self.ratios)
+        return np.array([rayleigh, collision, 2.0 * skin])
 
     def end_of_step(self, sim):
         if sim.step % self.args.nevery == 0:

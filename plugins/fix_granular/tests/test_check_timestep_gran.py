@@ -35,6 +35,8 @@ def test_silent_when_the_time_step_is_fine(spheres):
     sim.command("run 10")
     assert sim.warnings == []
     assert sim.fixes["ts"].ratios == pytest.approx((0.02, 0.05, 100.0 * 0.001 / 0.3))
+    # LIGGGHTS's vector f_ts[1..3]: the skin ratio at the relative speed 2 v_max
+    assert sim.fixes["ts"].vector(sim).tolist() == pytest.approx([0.02, 0.05, 2 * 100.0 * 0.001 / 0.3])
 
 
 def test_contact_time_stands_in_when_there_is_no_hertz_time(spheres):
