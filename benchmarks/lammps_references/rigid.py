@@ -10,6 +10,13 @@ file), with random particle velocities (made rigid by each program's body setup)
 within a body excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100 steps
 over 10^4 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_lj.txt; the data
 file is plugins/fix_rigid/tests/data/rigid_lj.data.
+
+A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
+group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
+spheres under fix nve, all falling under fix gravity along a slanted vector, 5000 steps. A third,
+``plane``: a 2-d box (fix enforce2d) with a triangle, a dimer and a dimer of particles near the two x
+faces (image flags 0: the body spans the box, as LAMMPS reads it) pushed by fix addforce, one with its torque off (torque 2 off off on keeps z, as 2d needs),
+beside a free particle, 3000 steps.
 """
 
 import sys
@@ -37,6 +44,74 @@ thermo 100
 run 10000
 """
 LENGTH = 12.0
+CLUMPS = """units lj
+atom_style sphere
+region box block -10 10 -10 10 -10 10
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0.8 0 0
+create_atoms 1 single 0.3 0.6 0.1
+create_atoms 1 single 4 4 4
+create_atoms 1 single 4.9 4 4
+create_atoms 1 single -5 -5 -5
+create_atoms 1 single -5 5 -5
+create_atoms 1 single 5 -5 -5
+set atom 1 diameter 1.0
+set atom 2 diameter 0.8
+set atom 3 diameter 1.2
+set atom 4 diameter 1.0
+set atom 5 diameter 0.6
+set atom 6*8 diameter 1.0
+set atom * density 1.5
+group free id 6:8
+group a id 1:3
+group b id 4:5
+velocity all set 0.1 0.2 0.3
+group g id 2 5
+velocity g set 0.5 -0.3 0.2
+group h id 3
+velocity h set -0.5 -0.3 0.9
+fix 1 all rigid/nve group 2 a b
+fix 3 free nve
+fix 2 all gravity 1.0 vector 0.3 -0.5 -1
+thermo_style custom step temp ke press f_1 f_1[2][1] f_1[1][6]
+thermo_modify format float %20.15g
+thermo 500
+run 5000
+"""
+PLANE = """units lj
+dimension 2
+atom_style atomic
+boundary p p p
+region box block -10 10 -10 10 -0.5 0.5
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 1 0 0
+create_atoms 1 single 0.3 0.8 0
+create_atoms 1 single 3 3 0
+create_atoms 1 single 3.9 3.1 0
+create_atoms 1 single 9.5 2 0
+create_atoms 1 single -9.5 2.4 0
+create_atoms 1 single -5 -5 0
+mass 1 1.0
+group a id 1:3
+group b id 4:5
+group c id 6:7
+group free id 8
+velocity all set 0.1 0.2 0
+group g id 2 5 6
+velocity g set 0.5 -0.3 0
+group h id 3
+velocity h set -0.5 -0.3 0
+fix 1 all rigid group 3 a b c torque 2 off off on
+fix 3 free nve
+fix 4 all addforce 0.1 -0.05 0
+fix 5 all enforce2d
+thermo_style custom step temp ke press f_1 f_1[3][1] f_1[1][12]
+thermo_modify format float %20.15g
+thermo 500
+run 3000
+"""
 
 
 def body(rng, count):
@@ -77,6 +152,8 @@ def main():
     write_data(data)
     tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style), [data], label=style))
               for style in STYLES}
+    tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
+    tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     write_blocks(DATA / "rigid_lj.txt", tables)
 
 

@@ -31,7 +31,8 @@ half of the step. Forces between particles of one body do not move it: exclude t
 ``neigh_modify exclude molecule/intra GROUP`` (or ``exclude group``) to save their cost.
 
 Body temperature (``f_ID``, intensive): sum (M V^2 + sum_k I_k omega_k^2) / (N_free k_B), N_free the
-force and torque components left on, less 1 per linear body. ``f_ID[i][j]`` (body i, counted from
+force and torque components left on, less 1 per linear body in 3d (LAMMPS subtracts it from its
+second run on: its first run counts the linear body's 6). ``f_ID[i][j]`` (body i, counted from
 the dialect's first index): columns x y z of the centre of mass, vx vy vz, fx fy fz, tx ty tz and
 the three image flags of the centre of mass, as LAMMPS's global array.
 
@@ -335,6 +336,10 @@ class FixRigid(Fix):
                                                          length, self.xcm, self.image_body, n, nb)))
         self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
         self.angmom[:] = momenta[:, 3:]
+        if sim.dimension == 2:
+            # 2d bodies move in the plane and turn about z only (LAMMPS's fix enforce2d on bodies)
+            self.vcm[:, 2] = 0.0
+            self.angmom[:, :2] = 0.0
         self.set_up += 1
         self.dof_cache = {}
 
@@ -343,7 +348,8 @@ class FixRigid(Fix):
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
         self.setup_bodies(sim)
-        nlinear = int(np.count_nonzero((self.inertia == 0.0).any(axis=1)))
+        # a linear body does not turn about its line in 3d; in 2d it turns about z all the same
+        nlinear = int(np.count_nonzero((self.inertia == 0.0).any(axis=1))) if sim.dimension == 3 else 0
         free = self.fflag.sum() + self.tflag.sum() - nlinear
         self.tfactor = sim.units.mvv2e / (free * sim.units.boltz) if free > 0 else 0.0
 

@@ -1,6 +1,6 @@
 """fix rigid and rigid/nve against LAMMPS (22 Jul 2025) on bodies of Lennard-Jones particles, one of
 them across the periodic x and y boundaries: temperature, total energy, pressure (the constraint
-virial) and the bodies' temperature f_1 over 10^4 steps, recorded by
+virial) and the bodies' temperature f_1 over 10^4 steps (and clumps of spheres under gravity), recorded by
 benchmarks/lammps_references/rigid.py into tests/data/rigid_lj.txt; the same thermo on 1 and 2 ranks."""
 
 import shutil
@@ -24,6 +24,76 @@ thermo_style custom step temp epair ke etotal press f_1
 thermo_modify format float %20.15g
 thermo 100
 run {steps}
+"""
+
+CLUMPS = """units lj
+atom_style sphere
+region box block -10 10 -10 10 -10 10
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0.8 0 0
+create_atoms 1 single 0.3 0.6 0.1
+create_atoms 1 single 4 4 4
+create_atoms 1 single 4.9 4 4
+create_atoms 1 single -5 -5 -5
+create_atoms 1 single -5 5 -5
+create_atoms 1 single 5 -5 -5
+set atom 1 diameter 1.0
+set atom 2 diameter 0.8
+set atom 3 diameter 1.2
+set atom 4 diameter 1.0
+set atom 5 diameter 0.6
+set atom 6*8 diameter 1.0
+set atom * density 1.5
+group free id 6:8
+group a id 1:3
+group b id 4:5
+velocity all set 0.1 0.2 0.3
+group g id 2 5
+velocity g set 0.5 -0.3 0.2
+group h id 3
+velocity h set -0.5 -0.3 0.9
+fix 1 all rigid/nve group 2 a b
+fix 3 free nve
+fix 2 all gravity 1.0 vector 0.3 -0.5 -1
+thermo_style custom step temp ke press f_1 f_1[2][1] f_1[1][6]
+thermo_modify format float %20.15g
+thermo 500
+run 5000
+"""
+
+PLANE = """units lj
+dimension 2
+atom_style atomic
+boundary p p p
+region box block -10 10 -10 10 -0.5 0.5
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 1 0 0
+create_atoms 1 single 0.3 0.8 0
+create_atoms 1 single 3 3 0
+create_atoms 1 single 3.9 3.1 0
+create_atoms 1 single 9.5 2 0
+create_atoms 1 single -9.5 2.4 0
+create_atoms 1 single -5 -5 0
+mass 1 1.0
+group a id 1:3
+group b id 4:5
+group c id 6:7
+group free id 8
+velocity all set 0.1 0.2 0
+group g id 2 5 6
+velocity g set 0.5 -0.3 0
+group h id 3
+velocity h set -0.5 -0.3 0
+fix 1 all rigid group 3 a b c torque 2 off off on
+fix 3 free nve
+fix 4 all addforce 0.1 -0.05 0
+fix 5 all enforce2d
+thermo_style custom step temp ke press f_1 f_1[3][1] f_1[1][12]
+thermo_modify format float %20.15g
+thermo 500
+run 3000
 """
 
 
@@ -54,6 +124,23 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits (achieved: 4e-12 and 8e-14)
     assert press < 1e-5
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
+
+
+@pytest.mark.parametrize("scene", ["clumps", "plane"])
+def test_clumps_and_2d_bodies_match_lammps(pdps_cli, scene):
+    """Clumps of finite-size spheres (their own inertia, 6 degrees of freedom each) beside free
+    spheres, falling under gravity; 2-d bodies (3 degrees of freedom each, one spanning the box
+    with image flags 0, one with its torque off) under a constant force: temperature, pressure and the bodies'
+    values (f_1: their temperature, with 2d's components) as LAMMPS's."""
+    done = pdps_cli(CLUMPS if scene == "clumps" else PLANE, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    ours = np.array(thermo_rows(done.stdout))
+    lammps = reference(scene)
+    assert ours.shape == lammps.shape
+    scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)
+    worst = np.abs(ours[:, 1:] - lammps[:, 1:]).max(axis=0) / scale
+    print(f"{scene}: largest difference from LAMMPS, relative to each column's largest value: {worst.max():.1e}")
+    assert worst.max() < 1e-5
 
 
 @pytest.mark.parametrize("style", ["rigid", "rigid/nve"])
