@@ -1,4 +1,4 @@
-"""Record what LAMMPS prints for fix rigid and fix rigid/nve on bodies of Lennard-Jones particles, the
+"""Record what LAMMPS prints for fix rigid, rigid/nve and rigid/nvt (temp 0.5 0.4 1.0) on bodies of Lennard-Jones particles, the
 reference plugins/fix_rigid/tests/test_rigid_lammps.py compares pdps with.
 
     python benchmarks/lammps_references/rigid.py [LMP]
@@ -29,7 +29,7 @@ from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
-STYLES = ("rigid", "rigid/nve")
+STYLES = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
 SCRIPT = """units lj
 atom_style molecular
 read_data rigid_lj.data
@@ -37,8 +37,8 @@ pair_style lj/cut 2.5
 pair_coeff * * 1.0 1.0
 neigh_modify exclude molecule/intra all
 timestep 0.001
-fix 1 all {style} molecule
-thermo_style custom step temp epair ke etotal press f_1
+fix 1 all {style} molecule{extra}
+thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
 thermo_modify format float %20.15g
 thermo 100
 run 10000
@@ -150,8 +150,8 @@ def main():
     DATA.mkdir(parents=True, exist_ok=True)
     data = DATA / "rigid_lj.data"
     write_data(data)
-    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style), [data], label=style))
-              for style in STYLES}
+    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra), [data], label=style))
+              for style, extra in STYLES.items()}
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     write_blocks(DATA / "rigid_lj.txt", tables)

@@ -16,7 +16,8 @@ with the new F and tau. Particle positions and velocities are then set from the 
 r_i = X + R(q) d_i, v_i = V + omega x (r_i - X), d_i the particle's place in the body frame.
 ``fix rigid/nve`` integrates the same bodies symplectically instead (its module says how).
 
-Bodies are set up at the start of every run from the particles as they are (LAMMPS's ``reinit yes``):
+Bodies are set up at the start of every run from the particles as they are (``reinit yes``, LAMMPS's
+default; ``reinit no``: at the first run only, later runs going on from the bodies as they were):
 total mass M, centre of mass from positions unwrapped by their image flags (a body straddling a
 periodic boundary is whole), the inertia tensor about it (spheres add 2/5 m R^2) diagonalised into
 principal moments I_1..3 and axes (a right-handed frame, quaternion q), V = sum m v / M and
@@ -38,7 +39,7 @@ the three image flags of the centre of mass, as LAMMPS's global array.
 
 Syntax::
 
-    fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
+    fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG] [reinit yes|no]
 
 - BODYSTYLE ``single``: the whole group is one body; ``molecule``: one body per molecule id in the
   group (the id 0 too); ``group N G1 ... GN``: one body per group, its particles those of the fix
@@ -47,8 +48,10 @@ Syntax::
   by default; in 2d z is off); ``torque M ...`` likewise for the torque (x and y off in 2d). M is a
   body number from 1 or a range as LAMMPS writes it: ``*``, ``*n``, ``n*``, ``m*n``. Repeated
   keywords apply in order, the last setting of a body winning.
-- The thermostat and barostat keywords (langevin, temp, iso, aniso, x, y, z, couple, tparam, pchain,
-  dilate), infile, reinit, mol and gravity are refused by name: not implemented yet.
+- ``reinit yes|no``: set the bodies up again from the particles at every run (yes, the default) or at
+  the first only.
+- The thermostat and barostat keywords (langevin, iso, aniso, x, y, z, couple, pchain, dilate; temp and
+  tparam belong to ``rigid/nvt``), infile, mol and gravity are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -80,7 +83,7 @@ OnOff = Literal["on", "off"]
 EPSILON = 1e-7
 TOLERANCE = 1e-6
 NOT_YET = ("langevin", "temp", "iso", "aniso", "x", "y", "z", "couple", "tparam", "pchain", "dilate",
-           "infile", "reinit", "mol", "gravity")
+           "infile", "mol", "gravity")
 
 
 def body_range(word, nbody, what):
@@ -134,12 +137,14 @@ class FixRigid(Fix):
              "[torque M XFLAG YFLAG ZFLAG]")
     can_virial = True
     virial_default = True
+    not_yet = NOT_YET
 
     class Args(StyleArgs):
         bodystyle: Literal["single", "molecule", "group"] = param()
         groups: list[str] = param(default_factory=list)
         force: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
+        reinit: Literal["yes", "no"] = keyword("yes")
 
     @classmethod
     def parse(cls, words):
@@ -151,9 +156,11 @@ class FixRigid(Fix):
                 raise ScriptError(f"bodystyle group needs a number of groups N, then N group ids "
                                   f"(got {words[1]})") from None
         for word in words[start:]:
-            if word in NOT_YET:
+            if word in cls.not_yet:
+                implemented = [name for name, info in cls.Args.model_fields.items()
+                               if name not in ("bodystyle", "groups")]
                 raise ScriptError(f"keyword {word} of fix {cls.name} is not implemented yet "
-                                  "(implemented: force, torque)")
+                                  f"(implemented: {', '.join(implemented)})")
         args = parse_args(cls.Args, words, cls.usage)
         if args.bodystyle == "group":
             count = int(args.groups[0]) if args.groups else 0
@@ -347,7 +354,8 @@ class FixRigid(Fix):
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
-        self.setup_bodies(sim)
+        if self.args.reinit == "yes" or not self.set_up:
+            self.setup_bodies(sim)
         # a linear body does not turn about its line in 3d; in 2d it turns about z all the same
         nlinear = int(np.count_nonzero((self.inertia == 0.0).any(axis=1))) if sim.dimension == 3 else 0
         free = self.fflag.sum() + self.tflag.sum() - nlinear
@@ -377,17 +385,17 @@ class FixRigid(Fix):
         # LAMMPS's estimate of the setup virial: twice the set_v half
         self.step_virial *= 2.0
 
-    def advance_initial(self):
+    def advance_initial(self, sim):
         richardson_initial(self.xcm, self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.quat,
                            self.ex, self.ey, self.ez, self.inertia, self.masstotal, self.fflag, self.tflag,
                            self.dtv, self.dtf, self.dtq)
 
-    def advance_final(self):
+    def advance_final(self, sim):
         richardson_final(self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.ex, self.ey, self.ez,
                          self.inertia, self.masstotal, self.fflag, self.tflag, self.dtf)
 
     def initial_integrate(self, sim):
-        self.advance_initial()
+        self.advance_initial(sim)
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)
         self.step_virial[:] = 0.0
         bodies.set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, self.xcm, self.vcm,
@@ -396,7 +404,7 @@ class FixRigid(Fix):
 
     def final_integrate(self, sim):
         self._sum_force_torque(sim)
-        self.advance_final()
+        self.advance_final(sim)
         self.final_virial[:] = 0.0
         self._set_v(sim, self.final_virial)
         # the core read virial() after post_force, before this half existed: add it where it would be

@@ -116,11 +116,11 @@ class FixRigidNVE(FixRigid):
         super().setup(sim)
         conjugate_momenta(self.angmom, self.quat, self.ex, self.ey, self.ez, self.conjqm)
 
-    def advance_initial(self):
+    def advance_initial(self, sim):
         no_squish_initial(self.xcm, self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.quat, self.conjqm,
                           self.ex, self.ey, self.ez, self.inertia, self.masstotal, self.fflag, self.tflag,
                           self.dtv, self.dtf, self.dtq)
 
-    def advance_final(self):
+    def advance_final(self, sim):
         no_squish_final(self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.quat, self.conjqm,
                         self.ex, self.ey, self.ez, self.inertia, self.masstotal, self.fflag, self.tflag, self.dtf)

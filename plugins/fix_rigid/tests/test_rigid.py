@@ -232,6 +232,7 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
     ("fix 1 all rigid single langevin 1 1 1 4", "keyword langevin of fix rigid is not implemented yet"),
     ("fix 1 all rigid/nve molecule temp 1 1 1", "keyword temp of fix rigid/nve is not implemented yet"),
     ("fix 1 all rigid single infile bodies.txt", "keyword infile of fix rigid is not implemented yet"),
+    ("fix 1 all rigid single reinit maybe", "reinit must be one of"),
     ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),
     ("fix 1 all rigid single torque 1*x on on on", "torque: body '1\\*x' is not a number or a range"),
     ("fix 1 all rigid single force * off maybe on", "must be one of"),
@@ -270,3 +271,61 @@ def test_force_and_torque_flags_by_body_range(tmp_path):
     fix = sim.fixes["1"]
     assert fix.vcm[0, 0] > 0 and np.all(fix.vcm[1:] == 0.0)
     assert np.all(fix.omega[0] == 0.0) and np.all(fix.omega[1:, 2] > 0)
+
+
+def test_rigid_nvt_conserves_its_extended_energy_and_heats_toward_the_target(tmp_path):
+    """Four free tumbling bodies (periodic box) under rigid/nvt (temp 2 2 0.5), heated from T = 0.03
+    over 20 time units: their kinetic energy plus the chains' energy (f_ID less the bodies'
+    temperature, LAMMPS's scalar) stays constant to second order in dt."""
+    from pdps_core.api import observables
+    from pdps_fix_rigid.rigid import FixRigid
+    errors = {}
+    for dt in (0.002, 0.001):
+        rng = np.random.default_rng(7)
+        x = np.vstack([OCTAHEDRON + centre for centre in ([-5, -5, 0], [5, -5, 0], [-5, 5, 0], [5, 5, 0])])
+        sim = build(tmp_path, x, v=0.1 * rng.normal(size=(24, 3)), lo=(-10,) * 3, hi=(10,) * 3, setup=f"""
+            timestep {dt}
+            group b1 id 1:6
+            group b2 id 7:12
+            group b3 id 13:18
+            group b4 id 19:24
+            fix 1 all rigid/nvt group 4 b1 b2 b3 b4 temp 2.0 2.0 0.5
+            """)
+        fix = sim.fixes["1"]
+
+        def extended():
+            return observables.kinetic_energy(sim) + fix.scalar(sim) - FixRigid.scalar(fix, sim)
+
+        sim.run(0)
+        start, cold = extended(), FixRigid.scalar(fix, sim)
+        sim.run(round(20 / dt))
+        errors[dt] = abs(extended() / start - 1)
+        hot = FixRigid.scalar(fix, sim)
+        print(f"rigid/nvt at dt = {dt}: extended energy {errors[dt]:.1e} from its start; bodies' T from "
+              f"{cold:.3f} to {hot:.3f}")
+        assert cold < 0.1 and hot > 0.5
+    assert errors[0.001] < 1e-4
+    assert 3.0 < errors[0.002] / errors[0.001] < 5.0
+
+
+def test_rigid_nvt_needs_temp(tmp_path):
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3)
+    with pytest.raises(ScriptError, match="fix rigid/nvt needs temp TSTART TSTOP TDAMP"):
+        sim.command("fix 1 all rigid/nvt single")
+    with pytest.raises(ScriptError, match="tparam: TCHAIN and TITER must be >= 1 and TORDER 3 or 5"):
+        sim.command("fix 1 all rigid/nvt single temp 1 1 1 tparam 3 1 4")
+    with pytest.raises(ScriptError, match="keyword iso of fix rigid/nvt is not implemented yet"):
+        sim.command("fix 1 all rigid/nvt single temp 1 1 1 iso 1 1 1")
+
+
+@pytest.mark.parametrize("reinit, expected", [("yes", 0.0), ("no", None)])
+def test_reinit(tmp_path, reinit, expected):
+    """Velocities changed between runs: reinit yes sets the bodies up from them again, reinit no
+    goes on with the bodies (and sets the particles' velocities back from them)."""
+    v = np.cross([0.3, 0.2, 0.5], OCTAHEDRON) + [0.1, 0, 0]
+    sim = build(tmp_path, OCTAHEDRON, v=v, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f",
+                setup=f"fix 1 all rigid/nve single reinit {reinit}\nrun 100")
+    before = 0.5 * float((sim.v ** 2).sum())
+    sim.command("velocity all set 0 0 0\nrun 0")
+    after = 0.5 * float((sim.v ** 2).sum())
+    assert after == pytest.approx(before if expected is None else expected, rel=1e-12, abs=1e-15)

@@ -1,4 +1,4 @@
-"""fix rigid and rigid/nve against LAMMPS (22 Jul 2025) on bodies of Lennard-Jones particles, one of
+"""fix rigid, rigid/nve and rigid/nvt against LAMMPS (22 Jul 2025) on bodies of Lennard-Jones particles, one of
 them across the periodic x and y boundaries: temperature, total energy, pressure (the constraint
 virial) and the bodies' temperature f_1 over 10^4 steps (and clumps of spheres under gravity), recorded by
 benchmarks/lammps_references/rigid.py into tests/data/rigid_lj.txt; the same thermo on 1 and 2 ranks."""
@@ -19,8 +19,8 @@ pair_style lj/cut 2.5
 pair_coeff * * 1.0 1.0
 neigh_modify exclude molecule/intra all
 timestep 0.001
-fix 1 all {style} molecule
-thermo_style custom step temp epair ke etotal press f_1
+fix 1 all {style} molecule{extra}
+thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
 thermo_modify format float %20.15g
 thermo 100
 run {steps}
@@ -108,10 +108,13 @@ def reference(style):
     return np.array(tables[style])
 
 
-@pytest.mark.parametrize("style", ["rigid", "rigid/nve"])
+EXTRA = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
+
+
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt"])
 def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style):
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    done = pdps_cli(SCRIPT.format(style=style, steps=10000), "-log", "none")
+    done = pdps_cli(SCRIPT.format(style=style, extra=EXTRA[style], steps=10000), "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
     lammps = reference(style)
@@ -124,6 +127,8 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits (achieved: 4e-12 and 8e-14)
     assert press < 1e-5
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
+    # rigid/nvt's chains: ecouple and econserve (etotal + ecouple)
+    assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
 
 
 @pytest.mark.parametrize("scene", ["clumps", "plane"])
@@ -143,11 +148,11 @@ def test_clumps_and_2d_bodies_match_lammps(pdps_cli, scene):
     assert worst.max() < 1e-5
 
 
-@pytest.mark.parametrize("style", ["rigid", "rigid/nve"])
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt"])
 def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    script = SCRIPT.format(style=style, steps=2000)
+    script = SCRIPT.format(style=style, extra=EXTRA[style], steps=2000)
     one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
     two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
-    assert one.shape == two.shape == (21, 7)
+    assert one.shape == two.shape == (21, 9)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
