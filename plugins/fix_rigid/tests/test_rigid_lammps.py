@@ -156,3 +156,22 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
     assert one.shape == two.shape == (21, 9)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
+
+
+@pytest.mark.parametrize("style", ["rigid/nve", "rigid/nvt"])
+def test_restart_goes_on_as_the_straight_run(tmp_path, style):
+    """A run of 400 steps, and one of 200 written to a restart file, read back and run 200 more: the
+    bodies are set up again from the particles (as LAMMPS does), rigid/nvt's chains come back from
+    the file; the same particles to round-off."""
+    from pdps_core.testing import restart_round_trip
+    shutil.copy(DATA / "rigid_lj.data", tmp_path)
+    # a constant target: a ramp restarts with each run
+    extra = " temp 0.5 0.5 1.0" if style == "rigid/nvt" else ""
+    setup = SCRIPT.format(style=style, extra=extra, steps=0).replace(
+        "read_data rigid_lj.data", f"read_data {tmp_path / 'rigid_lj.data'}").replace("run 0\n", "")
+    straight, resumed = restart_round_trip(tmp_path, setup, 200, 200)
+    order_a, order_b = np.argsort(straight.tag), np.argsort(resumed.tag)
+    assert resumed.x[order_b] == pytest.approx(straight.x[order_a], abs=1e-9)
+    assert resumed.v[order_b] == pytest.approx(straight.v[order_a], abs=1e-9)
+    if style == "rigid/nvt":
+        assert resumed.fixes["1"].eta_dot_t == pytest.approx(straight.fixes["1"].eta_dot_t, abs=1e-12)
