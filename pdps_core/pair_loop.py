@@ -79,9 +79,9 @@ BRANCH_TEST = """            if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
 """
 
 MASKED_TEST = """            inside = rsq < cutsq[ti, tj] and rsq >= MIN_RSQ
-            # a pair outside (coincident ones included) is evaluated at the cutoff, where the law is
-            # finite, and masked: no division by zero
-            at = rsq if inside else cutsq[ti, tj]
+            # coincident particles (rsq below MIN_RSQ) are evaluated at MIN_RSQ, where a masked law is
+            # finite, then masked like every pair outside: no division by zero
+            at = rsq if rsq >= MIN_RSQ else MIN_RSQ
             fpair, e = law(at, dx, dy, dz, {pair_coeff}, i, j, atom, state)
             fpair = fpair if inside else 0.0
             e = e if inside else 0.0
