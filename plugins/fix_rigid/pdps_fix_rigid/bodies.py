@@ -19,20 +19,16 @@ import numpy as np
 from numba import njit
 
 
-@njit(cache=True, inline="always")
-def particle_mass(i, type_, mass, rmass):
-    return rmass[i] if len(rmass) > 0 else mass[type_[i]]
-
-
 @njit(cache=True)
 def mass_and_centre(x, image, body, type_, mass, rmass, length, nlocal, nbody):
     """Per body: sum m r (unwrapped by the particle's image flags) and sum m, (nbody, 4)."""
+    with_rmass = len(rmass) > 0
     out = np.zeros((nbody, 4))
     for i in range(nlocal):
         b = body[i]
         if b < 0:
             continue
-        m = particle_mass(i, type_, mass, rmass)
+        m = rmass[i] if with_rmass else mass[type_[i]]
         for d in range(3):
             out[b, d] += (x[i, d] + image[i, d] * length[d]) * m
         out[b, 3] += m
@@ -43,6 +39,7 @@ def mass_and_centre(x, image, body, type_, mass, rmass, length, nlocal, nbody):
 def inertia_sums(x, image, body, type_, mass, rmass, radius, length, xcm, image_body, nlocal, nbody):
     """Per body: the inertia tensor about the centre of mass (xx, yy, zz, yz, xz, xy); spheres add
     2/5 m R^2 on the diagonal."""
+    with_rmass = len(rmass) > 0
     out = np.zeros((nbody, 6))
     for i in range(nlocal):
         b = body[i]
@@ -51,7 +48,7 @@ def inertia_sums(x, image, body, type_, mass, rmass, radius, length, xcm, image_
         dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
         dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
         dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
-        m = particle_mass(i, type_, mass, rmass)
+        m = rmass[i] if with_rmass else mass[type_[i]]
         out[b, 0] += m * (dy * dy + dz * dz)
         out[b, 1] += m * (dx * dx + dz * dz)
         out[b, 2] += m * (dx * dx + dy * dy)
@@ -70,6 +67,7 @@ def body_frame(x, image, body, type_, mass, rmass, radius, length, xcm, image_bo
                displace, nlocal, nbody):
     """Set each particle's body-frame displacement; return the inertia tensor recomputed from them
     (diagonal: the principal moments, off-diagonal: 0, when the axes are right)."""
+    with_rmass = len(rmass) > 0
     out = np.zeros((nbody, 6))
     for i in range(nlocal):
         b = body[i]
@@ -82,7 +80,7 @@ def body_frame(x, image, body, type_, mass, rmass, radius, length, xcm, image_bo
         d1 = ey[b, 0] * dx + ey[b, 1] * dy + ey[b, 2] * dz
         d2 = ez[b, 0] * dx + ez[b, 1] * dy + ez[b, 2] * dz
         displace[i, 0], displace[i, 1], displace[i, 2] = d0, d1, d2
-        m = particle_mass(i, type_, mass, rmass)
+        m = rmass[i] if with_rmass else mass[type_[i]]
         out[b, 0] += m * (d1 * d1 + d2 * d2)
         out[b, 1] += m * (d0 * d0 + d2 * d2)
         out[b, 2] += m * (d0 * d0 + d1 * d1)
@@ -101,12 +99,13 @@ def momenta(x, v, omega_atom, image, body, type_, mass, rmass, radius, length, x
             nlocal, nbody):
     """Per body: linear momentum sum m v and angular momentum about the centre of mass
     sum (r - X) x m v (+ 2/5 m R^2 omega of spheres), (nbody, 6)."""
+    with_rmass = len(rmass) > 0
     out = np.zeros((nbody, 6))
     for i in range(nlocal):
         b = body[i]
         if b < 0:
             continue
-        m = particle_mass(i, type_, mass, rmass)
+        m = rmass[i] if with_rmass else mass[type_[i]]
         dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
         dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
         dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
@@ -148,12 +147,25 @@ def force_torque(x, f, torque_atom, image, body, length, xcm, image_body, nlocal
             out[b, 5] += torque_atom[i, 2]
 
 
+@njit(cache=True, inline="always")
+def _add_virial(virial, w0, w1, w2, w3, w4, w5):
+    virial[0] += w0
+    virial[1] += w1
+    virial[2] += w2
+    virial[3] += w3
+    virial[4] += w4
+    virial[5] += w5
+
+
 @njit(cache=True)
 def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, xcm, vcm, omega,
-           ex, ey, ez, image_body, nlocal, dtf, virial):
-    """Positions and velocities of the particles from their bodies; half the constraint virial
-    added to ``virial`` (6,)."""
+           ex, ey, ez, image_body, nlocal, dtf, virial, tally):
+    """Positions and velocities of the particles from their bodies; with ``tally``, half the
+    constraint virial added to ``virial`` (6,)."""
+    with_rmass = len(rmass) > 0
     with_omega = len(omega_atom) > 0
+    tally = tally and dtf != 0.0
+    w0 = w1 = w2 = w3 = w4 = w5 = 0.0
     for i in range(nlocal):
         b = body[i]
         if b < 0:
@@ -176,25 +188,31 @@ def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, lengt
         if with_omega:
             for d in range(3):
                 omega_atom[i, d] = omega[b, d]
-        m = particle_mass(i, type_, mass, rmass)
-        if dtf == 0.0:
+        m = rmass[i] if with_rmass else mass[type_[i]]
+        if not tally:
             continue
-        fc0 = m * (v[i, 0] - v0) / dtf - f[i, 0]
-        fc1 = m * (v[i, 1] - v1) / dtf - f[i, 1]
-        fc2 = m * (v[i, 2] - v2) / dtf - f[i, 2]
-        virial[0] += 0.5 * x0 * fc0
-        virial[1] += 0.5 * x1 * fc1
-        virial[2] += 0.5 * x2 * fc2
-        virial[3] += 0.5 * x0 * fc1
-        virial[4] += 0.5 * x0 * fc2
-        virial[5] += 0.5 * x1 * fc2
+        scale = m / dtf
+        fc0 = scale * (v[i, 0] - v0) - f[i, 0]
+        fc1 = scale * (v[i, 1] - v1) - f[i, 1]
+        fc2 = scale * (v[i, 2] - v2) - f[i, 2]
+        w0 += 0.5 * x0 * fc0
+        w1 += 0.5 * x1 * fc1
+        w2 += 0.5 * x2 * fc2
+        w3 += 0.5 * x0 * fc1
+        w4 += 0.5 * x0 * fc2
+        w5 += 0.5 * x1 * fc2
+    _add_virial(virial, w0, w1, w2, w3, w4, w5)
 
 
 @njit(cache=True)
 def set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, vcm, omega,
-          ex, ey, ez, image_body, nlocal, dtf, virial):
-    """Velocities of the particles from their bodies; half the constraint virial added."""
+          ex, ey, ez, image_body, nlocal, dtf, virial, tally):
+    """Velocities of the particles from their bodies; with ``tally``, half the constraint virial
+    added."""
+    with_rmass = len(rmass) > 0
     with_omega = len(omega_atom) > 0
+    tally = tally and dtf != 0.0
+    w0 = w1 = w2 = w3 = w4 = w5 = 0.0
     for i in range(nlocal):
         b = body[i]
         if b < 0:
@@ -210,21 +228,23 @@ def set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length
         if with_omega:
             for d in range(3):
                 omega_atom[i, d] = omega[b, d]
-        m = particle_mass(i, type_, mass, rmass)
-        if dtf == 0.0:
+        m = rmass[i] if with_rmass else mass[type_[i]]
+        if not tally:
             continue
-        fc0 = m * (v[i, 0] - v0) / dtf - f[i, 0]
-        fc1 = m * (v[i, 1] - v1) / dtf - f[i, 1]
-        fc2 = m * (v[i, 2] - v2) / dtf - f[i, 2]
+        scale = m / dtf
+        fc0 = scale * (v[i, 0] - v0) - f[i, 0]
+        fc1 = scale * (v[i, 1] - v1) - f[i, 1]
+        fc2 = scale * (v[i, 2] - v2) - f[i, 2]
         x0 = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0]
         x1 = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1]
         x2 = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2]
-        virial[0] += 0.5 * x0 * fc0
-        virial[1] += 0.5 * x1 * fc1
-        virial[2] += 0.5 * x2 * fc2
-        virial[3] += 0.5 * x0 * fc1
-        virial[4] += 0.5 * x0 * fc2
-        virial[5] += 0.5 * x1 * fc2
+        w0 += 0.5 * x0 * fc0
+        w1 += 0.5 * x1 * fc1
+        w2 += 0.5 * x2 * fc2
+        w3 += 0.5 * x0 * fc1
+        w4 += 0.5 * x0 * fc2
+        w5 += 0.5 * x1 * fc2
+    _add_virial(virial, w0, w1, w2, w3, w4, w5)
 
 
 @njit(cache=True)

@@ -105,20 +105,15 @@ def body_range(word, nbody, what):
 @njit(cache=True)
 def richardson_initial(xcm, vcm, fcm, angmom, torque, omega, quat, ex, ey, ez, inertia, masstotal,
                        fflag, tflag, dtv, dtf, dtq):
-    half = np.empty(4)
-    full = np.empty(4)
-    ax = np.empty(3)
-    ay = np.empty(3)
-    az = np.empty(3)
     for b in range(xcm.shape[0]):
         dtfm = dtf / masstotal[b]
         for d in range(3):
             vcm[b, d] += dtfm * fcm[b, d] * fflag[b, d]
             xcm[b, d] += dtv * vcm[b, d]
             angmom[b, d] += dtf * torque[b, d] * tflag[b, d]
-        omega_from_angmom(angmom[b], ex[b], ey[b], ez[b], inertia[b], omega[b])
-        richardson(quat[b], angmom[b], omega[b], inertia[b], dtq, half, full, ax, ay, az)
-        axes_from_quaternion(quat[b], ex[b], ey[b], ez[b])
+        omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
+        richardson(quat, angmom, omega, inertia, b, dtq)
+        axes_from_quaternion(quat, b, ex, ey, ez)
 
 
 @njit(cache=True)
@@ -128,7 +123,13 @@ def richardson_final(vcm, fcm, angmom, torque, omega, ex, ey, ez, inertia, masst
         for d in range(3):
             vcm[b, d] += dtfm * fcm[b, d] * fflag[b, d]
             angmom[b, d] += dtf * torque[b, d] * tflag[b, d]
-        omega_from_angmom(angmom[b], ex[b], ey[b], ez[b], inertia[b], omega[b])
+        omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
+
+
+@njit(cache=True)
+def omegas(angmom, ex, ey, ez, inertia, omega):
+    for b in range(angmom.shape[0]):
+        omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
 
 
 class FixRigid(Fix):
@@ -315,30 +316,29 @@ class FixRigid(Fix):
                              np.asarray(sim.box.hi, dtype=np.float64), length, periodic)
         tensor = np.asarray(sim.comm.sum(bodies.inertia_sums(x, image, body, type_, mass, rmass, radius, length,
                                                              self.xcm, self.image_body, n, nb)))
+        t = tensor
+        matrices = np.stack([t[:, [0, 5, 4]], t[:, [5, 1, 3]], t[:, [4, 3, 2]]], axis=1)
+        moments, vectors = np.linalg.eigh(matrices)          # ascending, as LAMMPS's jacobi
+        moments[moments < EPSILON * moments.max(axis=1, keepdims=True)] = 0.0
+        self.inertia[:] = moments
+        self.ex[:], self.ey[:], self.ez[:] = vectors[:, :, 0], vectors[:, :, 1], vectors[:, :, 2]
+        left_handed = np.einsum("bi,bi->b", np.cross(self.ex, self.ey), self.ez) < 0.0
+        self.ez[left_handed] *= -1.0
         for b in range(nb):
-            t = tensor[b]
-            matrix = np.array([[t[0], t[5], t[4]], [t[5], t[1], t[3]], [t[4], t[3], t[2]]])
-            moments, vectors = np.linalg.eigh(matrix)
-            largest = moments.max()
-            moments = np.where(moments < EPSILON * largest, 0.0, moments)
-            self.inertia[b] = moments
-            self.ex[b], self.ey[b], self.ez[b] = vectors[:, 0], vectors[:, 1], vectors[:, 2]
-            if np.dot(np.cross(self.ex[b], self.ey[b]), self.ez[b]) < 0.0:
-                self.ez[b] *= -1.0
             quaternion_from_axes(self.ex[b], self.ey[b], self.ez[b], self.quat[b])
         check = np.asarray(sim.comm.sum(bodies.body_frame(x, image, body, type_, mass, rmass, radius, length,
                                                            self.xcm, self.image_body, self.ex, self.ey, self.ez,
                                                            displace, n, nb)))
-        for b in range(nb):
-            moments = self.inertia[b]
-            scale = moments.sum() / 3.0
-            for k in range(3):
-                bad = (abs(check[b, k]) > TOLERANCE if moments[k] == 0.0
-                       else abs((check[b, k] - moments[k]) / moments[k]) > TOLERANCE)
-                if bad or abs(check[b, 3 + k]) > TOLERANCE * scale:
-                    raise ScriptError(f"fix {self.id}: body {b + 1} has bad principal moments of inertia "
-                                      f"({', '.join(f'{m:.6g}' for m in moments)}; recomputed in the body frame: "
-                                      f"{', '.join(f'{c:.6g}' for c in check[b, :3])})")
+        moments = self.inertia
+        zero = moments == 0.0
+        relative = np.abs(check[:, :3] - moments) / np.where(zero, 1.0, moments)
+        bad = np.where(zero, np.abs(check[:, :3]) > TOLERANCE, relative > TOLERANCE)
+        bad |= np.abs(check[:, 3:]) > TOLERANCE * moments.sum(axis=1, keepdims=True) / 3.0
+        if bad.any():
+            b = int(np.flatnonzero(bad.any(axis=1))[0])
+            raise ScriptError(f"fix {self.id}: body {b + 1} has bad principal moments of inertia "
+                              f"({', '.join(f'{m:.6g}' for m in moments[b])}; recomputed in the body frame: "
+                              f"{', '.join(f'{c:.6g}' for c in check[b, :3])})")
         momenta = np.asarray(sim.comm.sum(bodies.momenta(x, v, omega_atom, image, body, type_, mass, rmass, radius,
                                                          length, self.xcm, self.image_body, n, nb)))
         self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
@@ -370,18 +370,17 @@ class FixRigid(Fix):
         self.fcm[:] = total[:, :3]
         self.torque[:] = total[:, 3:]
 
-    def _set_v(self, sim, virial):
+    def _set_v(self, sim, virial, tally):
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)
         bodies.set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, self.vcm, self.omega,
-                     self.ex, self.ey, self.ez, self.image_body, sim.particles.nlocal, self.dtf, virial)
+                     self.ex, self.ey, self.ez, self.image_body, sim.particles.nlocal, self.dtf, virial, tally)
 
     def setup(self, sim):
         self.atom_arrays = None
         self._sum_force_torque(sim)
-        for b in range(self.nbody):
-            omega_from_angmom(self.angmom[b], self.ex[b], self.ey[b], self.ez[b], self.inertia[b], self.omega[b])
+        omegas(self.angmom, self.ex, self.ey, self.ez, self.inertia, self.omega)
         self.step_virial[:] = 0.0
-        self._set_v(sim, self.step_virial)
+        self._set_v(sim, self.step_virial, True)
         # LAMMPS's estimate of the setup virial: twice the set_v half
         self.step_virial *= 2.0
 
@@ -400,15 +399,16 @@ class FixRigid(Fix):
         self.step_virial[:] = 0.0
         bodies.set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, self.xcm, self.vcm,
                       self.omega, self.ex, self.ey, self.ez, self.image_body, sim.particles.nlocal, self.dtf,
-                      self.step_virial)
+                      self.step_virial, self.thermo_virial)
 
     def final_integrate(self, sim):
         self._sum_force_torque(sim)
         self.advance_final(sim)
         self.final_virial[:] = 0.0
-        self._set_v(sim, self.final_virial)
+        tally = sim.vflag and self.thermo_virial
+        self._set_v(sim, self.final_virial, tally)
         # the core read virial() after post_force, before this half existed: add it where it would be
-        if sim.vflag and self.thermo_virial:
+        if tally:
             sim.virial += self.final_virial
 
     def pre_neighbor(self, sim):
@@ -451,14 +451,11 @@ class FixRigid(Fix):
         """Temperature of the bodies' translation and rotation (the components left on)."""
         if not self.set_up:
             return 0.0
-        total = 0.0
-        for b in range(self.nbody):
-            total += self.masstotal[b] * float(np.dot(self.fflag[b], self.vcm[b] ** 2))
-            basis = np.stack([self.ex[b], self.ey[b], self.ez[b]])
-            moments = self.inertia[b]
-            wbody = np.divide(basis @ self.angmom[b], moments, out=np.zeros(3), where=moments != 0.0)
-            total += float(np.dot(self.tflag[b], moments * wbody ** 2))
-        return total * self.tfactor
+        translation = self.masstotal * np.einsum("bd,bd->b", self.fflag, self.vcm ** 2)
+        projected = np.stack([np.einsum("bd,bd->b", axis, self.angmom) for axis in (self.ex, self.ey, self.ez)], 1)
+        wbody = np.divide(projected, self.inertia, out=np.zeros_like(projected), where=self.inertia != 0.0)
+        rotation = np.einsum("bd,bd->b", self.tflag, self.inertia * wbody ** 2)
+        return float(translation.sum() + rotation.sum()) * self.tfactor
 
     def array(self, sim):
         return np.hstack([self.xcm, self.vcm, self.fcm, self.torque, self.image_body.astype(np.float64)])

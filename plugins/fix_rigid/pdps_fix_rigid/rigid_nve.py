@@ -44,21 +44,20 @@ from .rigid import FixRigid
 def _kick_rotation(b, torque, quat, conjqm, ex, ey, ez, tflag, dtf2):
     for d in range(3):
         torque[b, d] *= tflag[b, d]
-    t = torque[b]
-    tbody = (ex[b, 0] * t[0] + ex[b, 1] * t[1] + ex[b, 2] * t[2],
-             ey[b, 0] * t[0] + ey[b, 1] * t[1] + ey[b, 2] * t[2],
-             ez[b, 0] * t[0] + ez[b, 1] * t[1] + ez[b, 2] * t[2])
-    fquat = quaternion_times_vector(quat[b], tbody)
+    t0, t1, t2 = torque[b, 0], torque[b, 1], torque[b, 2]
+    fquat = quaternion_times_vector(quat, b, ex[b, 0] * t0 + ex[b, 1] * t1 + ex[b, 2] * t2,
+                                    ey[b, 0] * t0 + ey[b, 1] * t1 + ey[b, 2] * t2,
+                                    ez[b, 0] * t0 + ez[b, 1] * t1 + ez[b, 2] * t2)
     for c in range(4):
         conjqm[b, c] += dtf2 * fquat[c]
 
 
 @njit(cache=True, inline="always")
 def _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega):
-    mbody = conjugate_times(quat[b], conjqm[b])
+    mbody = conjugate_times(quat, conjqm, b)
     for d in range(3):
         angmom[b, d] = 0.5 * (ex[b, d] * mbody[0] + ey[b, d] * mbody[1] + ez[b, d] * mbody[2])
-    omega_from_angmom(angmom[b], ex[b], ey[b], ez[b], inertia[b], omega[b])
+    omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
 
 
 @njit(cache=True)
@@ -70,12 +69,12 @@ def no_squish_initial(xcm, vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey
             vcm[b, d] += dtfm * fcm[b, d] * fflag[b, d]
             xcm[b, d] += dtv * vcm[b, d]
         _kick_rotation(b, torque, quat, conjqm, ex, ey, ez, tflag, 2.0 * dtf)
-        no_squish_rotate(3, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(2, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(1, conjqm[b], quat[b], inertia[b], dtv)
-        no_squish_rotate(2, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(3, conjqm[b], quat[b], inertia[b], dtq)
-        axes_from_quaternion(quat[b], ex[b], ey[b], ez[b])
+        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(1, conjqm, quat, inertia, b, dtv)
+        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+        axes_from_quaternion(quat, b, ex, ey, ez)
         _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
 
 
@@ -94,11 +93,10 @@ def no_squish_final(vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, i
 def conjugate_momenta(angmom, quat, ex, ey, ez, conjqm):
     """p = 2 S(q) (0, L_body) from the space-frame angular momentum."""
     for b in range(angmom.shape[0]):
-        m = angmom[b]
-        mbody = (ex[b, 0] * m[0] + ex[b, 1] * m[1] + ex[b, 2] * m[2],
-                 ey[b, 0] * m[0] + ey[b, 1] * m[1] + ey[b, 2] * m[2],
-                 ez[b, 0] * m[0] + ez[b, 1] * m[1] + ez[b, 2] * m[2])
-        p = quaternion_times_vector(quat[b], mbody)
+        m0, m1, m2 = angmom[b, 0], angmom[b, 1], angmom[b, 2]
+        p = quaternion_times_vector(quat, b, ex[b, 0] * m0 + ex[b, 1] * m1 + ex[b, 2] * m2,
+                                    ey[b, 0] * m0 + ey[b, 1] * m1 + ey[b, 2] * m2,
+                                    ez[b, 0] * m0 + ez[b, 1] * m1 + ez[b, 2] * m2)
         for c in range(4):
             conjqm[b, c] = 2.0 * p[c]
 

@@ -71,12 +71,12 @@ def nvt_initial(xcm, vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, 
         _kick_rotation(b, torque, quat, conjqm, ex, ey, ez, tflag, 2.0 * dtf)
         for c in range(4):
             conjqm[b, c] *= scale_r
-        no_squish_rotate(3, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(2, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(1, conjqm[b], quat[b], inertia[b], dtv)
-        no_squish_rotate(2, conjqm[b], quat[b], inertia[b], dtq)
-        no_squish_rotate(3, conjqm[b], quat[b], inertia[b], dtq)
-        axes_from_quaternion(quat[b], ex[b], ey[b], ez[b])
+        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(1, conjqm, quat, inertia, b, dtv)
+        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+        axes_from_quaternion(quat, b, ex, ey, ez)
         _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
         akin_r += angmom[b, 0] * omega[b, 0] + angmom[b, 1] * omega[b, 1] + angmom[b, 2] * omega[b, 2]
     return akin_t, akin_r
