@@ -16,7 +16,8 @@ group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the coun
 spheres under fix nve, all falling under fix gravity along a slanted vector, 5000 steps. A third,
 ``plane``: a 2-d box (fix enforce2d) with a triangle, a dimer and a dimer of particles near the two x
 faces (image flags 0: the body spans the box, as LAMMPS reads it) pushed by fix addforce, one with its torque off (torque 2 off off on keeps z, as 2d needs),
-beside a free particle, 3000 steps.
+beside a free particle, 3000 steps. A fourth, ``infile``: the clumps with masses, inertia tensors,
+velocities and angular momenta from plugins/fix_rigid/tests/data/rigid_bodies.txt.
 """
 
 import sys
@@ -79,6 +80,7 @@ thermo_modify format float %20.15g
 thermo 500
 run 5000
 """
+INFILE = CLUMPS.replace("fix 1 all rigid/nve group 2 a b", "fix 1 all rigid/nve group 2 a b infile rigid_bodies.txt")
 PLANE = """units lj
 dimension 2
 atom_style atomic
@@ -154,6 +156,7 @@ def main():
               for style, extra in STYLES.items()}
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
+    tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))
     write_blocks(DATA / "rigid_lj.txt", tables)
 
 

@@ -50,8 +50,13 @@ Syntax::
   keywords apply in order, the last setting of a body winning.
 - ``reinit yes|no``: set the bodies up again from the particles at every run (yes, the default) or at
   the first only.
+- ``infile FILE``: mass, centre of mass, inertia tensor (about the centre of mass, box axes), velocity,
+  angular momentum and image flags of some bodies, instead of the values from their particles (for
+  overlapping spheres, say): a count, then lines ``ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz
+  vxcm vycm vzcm lx ly lz ixcm iycm izcm`` (ID: 1 for single, the group's number, or the molecule id);
+  # comments. As LAMMPS: bodies the file leaves out start at rest, and bodies are set up once.
 - The thermostat and barostat keywords (langevin, iso, aniso, x, y, z, couple, pchain, dilate; temp and
-  tparam belong to ``rigid/nvt``), infile, mol and gravity are refused by name: not implemented yet.
+  tparam belong to ``rigid/nvt``), mol and gravity are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -65,6 +70,7 @@ Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); Richa
 in Evans, Mol. Phys. 34, 317 (1977) and Kamberaj, Low and Neal, J. Chem. Phys. 122, 224114 (2005).
 """
 
+from pathlib import Path
 from typing import Literal
 
 import numpy as np
@@ -83,7 +89,9 @@ OnOff = Literal["on", "off"]
 EPSILON = 1e-7
 TOLERANCE = 1e-6
 NOT_YET = ("langevin", "temp", "iso", "aniso", "x", "y", "z", "couple", "tparam", "pchain", "dilate",
-           "infile", "mol", "gravity")
+           "mol", "gravity")
+IMAGE_LIMIT = 2 ** 30        # the particles' image flags are int32
+INFILE_COLUMNS = "ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz vxcm vycm vzcm lx ly lz ixcm iycm izcm"
 
 
 def body_range(word, nbody, what):
@@ -146,6 +154,7 @@ class FixRigid(Fix):
         force: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         reinit: Literal["yes", "no"] = keyword("yes")
+        infile: str | None = keyword(None)
 
     @classmethod
     def parse(cls, words):
@@ -221,6 +230,7 @@ class FixRigid(Fix):
         self.set_up = 0
         self.dof_cache = {}
         self.atom_arrays = None
+        self.from_file = self._read_infile(sim) if args.infile is not None else {}
         sim.info(f"fix {id}: {nb} rigid bodies with {int(self.nrigid.sum())} particles")
 
     def _assign(self, sim, body):
@@ -231,6 +241,7 @@ class FixRigid(Fix):
         style = self.args.bodystyle
         if style == "single":
             body[members] = 0
+            self.body_ids = np.array([1])
             return 1
         if style == "molecule":
             if not p.has("molecule"):
@@ -239,6 +250,7 @@ class FixRigid(Fix):
             mol = p.molecule[:n]
             ids = np.unique(sim.comm.allgather_rows(np.unique(mol[members])))
             body[members] = np.searchsorted(ids, mol[members])
+            self.body_ids = ids
             return len(ids)
         names = self.args.groups[1:]
         owner = np.full(n, -1, dtype=np.int64)
@@ -256,7 +268,69 @@ class FixRigid(Fix):
             raise ScriptError(f"fix {self.id}: particle {clash[0]} is in two bodies: group {names[clash[1]]} "
                               f"(body {clash[1] + 1}) and group {names[clash[2]]} (body {clash[2] + 1})")
         body[:] = owner
+        self.body_ids = np.arange(1, len(names) + 1)
         return len(names)
+
+    def _read_infile(self, sim):
+        """The bodies' values of ``infile FILE`` (LAMMPS's format: a count, then one line per body:
+        ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz vxcm vycm vzcm lx ly lz ixcm iycm izcm; blank
+        lines and # comments ignored): {body index: row}, read on rank 0, checked line by line."""
+        path = Path(sim.resolve(self.args.infile))
+        found, problem = {}, None
+        if sim.comm.is_root:
+            try:
+                found = self._parse_infile(path)
+            except ScriptError as error:
+                problem = str(error)
+            except OSError as error:
+                problem = f"infile {self.args.infile}: cannot read it ({error.strerror or error})"
+        found, problem = sim.comm.bcast((found, problem))
+        if problem:
+            raise ScriptError(problem)
+        return found
+
+    def _parse_infile(self, path):
+        where = f"infile {path}"
+        try:
+            text = path.read_bytes().decode("utf-8")
+        except UnicodeDecodeError as error:
+            raise ScriptError(f"{where}: not a text file (byte {error.start}: {error.reason})") from None
+        lines = [(k, line.split("#")[0].split()) for k, line in enumerate(text.splitlines(), 1)]
+        lines = [(k, words) for k, words in lines if words]
+        if not lines:
+            raise ScriptError(f"{where}: no count of bodies")
+        k, words = lines[0]
+        if len(words) != 1 or not words[0].isdigit():
+            raise ScriptError(f"{where}:{k}: the first line is the number of bodies that follow (got {' '.join(words)})")
+        count = int(words[0])
+        if len(lines) - 1 != count:
+            raise ScriptError(f"{where}: {count} bodies announced, {len(lines) - 1} lines follow")
+        index = {int(i): b for b, i in enumerate(self.body_ids)}
+        found = {}
+        for k, words in lines[1:]:
+            if len(words) != 20:
+                raise ScriptError(f"{where}:{k}: {len(words)} values; a line is {INFILE_COLUMNS}")
+            try:
+                ident = int(words[0])
+                values = [float(w) for w in words[1:17]]
+                images = [int(w) for w in words[17:]]
+            except ValueError:
+                raise ScriptError(f"{where}:{k}: not numbers: {' '.join(words)} ({INFILE_COLUMNS})") from None
+            if ident not in index:
+                raise ScriptError(f"{where}:{k}: no body {ident} in fix {self.id} (its bodies: "
+                                  f"{self.body_ids[0]}..{self.body_ids[-1]})")
+            if any(abs(i) > IMAGE_LIMIT for i in images):
+                raise ScriptError(f"{where}:{k}: image flags {' '.join(words[17:])} beyond +-{IMAGE_LIMIT}")
+            if not all(np.isfinite(values)) or values[0] <= 0:
+                raise ScriptError(f"{where}:{k}: masstotal must be > 0 and every value finite "
+                                  f"(got {' '.join(words[1:17])})")
+            ixx, iyy, izz, ixy, ixz, iyz = values[4:10]
+            moments = np.linalg.eigvalsh([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+            if moments[0] < -1e-12 * abs(moments[-1]):
+                raise ScriptError(f"{where}:{k}: the inertia tensor of body {ident} has a negative principal "
+                                  f"moment ({moments[0]:.6g}); it is not a body's")
+            found[index[ident]] = values + images
+        return found
 
     def _check_other_fixes(self, sim, body):
         p = sim.particles
@@ -312,10 +386,15 @@ class FixRigid(Fix):
         self.masstotal[:] = sums[:, 3]
         self.xcm[:] = sums[:, :3] / self.masstotal[:, None]
         self.image_body[:] = 0
+        for b, row in self.from_file.items():
+            self.masstotal[b], self.xcm[b], self.image_body[b] = row[0], row[1:4], row[16:19]
         bodies.remap_centres(self.xcm, self.image_body, np.asarray(sim.box.lo, dtype=np.float64),
                              np.asarray(sim.box.hi, dtype=np.float64), length, periodic)
         tensor = np.asarray(sim.comm.sum(bodies.inertia_sums(x, image, body, type_, mass, rmass, radius, length,
                                                              self.xcm, self.image_body, n, nb)))
+        for b, row in self.from_file.items():
+            ixx, iyy, izz, ixy, ixz, iyz = row[4:10]
+            tensor[b] = (ixx, iyy, izz, iyz, ixz, ixy)
         t = tensor
         matrices = np.stack([t[:, [0, 5, 4]], t[:, [5, 1, 3]], t[:, [4, 3, 2]]], axis=1)
         moments, vectors = np.linalg.eigh(matrices)          # ascending, as LAMMPS's jacobi
@@ -334,15 +413,23 @@ class FixRigid(Fix):
         relative = np.abs(check[:, :3] - moments) / np.where(zero, 1.0, moments)
         bad = np.where(zero, np.abs(check[:, :3]) > TOLERANCE, relative > TOLERANCE)
         bad |= np.abs(check[:, 3:]) > TOLERANCE * moments.sum(axis=1, keepdims=True) / 3.0
+        bad[list(self.from_file)] = False       # the file's values need not be the particles'
         if bad.any():
             b = int(np.flatnonzero(bad.any(axis=1))[0])
             raise ScriptError(f"fix {self.id}: body {b + 1} has bad principal moments of inertia "
                               f"({', '.join(f'{m:.6g}' for m in moments[b])}; recomputed in the body frame: "
                               f"{', '.join(f'{c:.6g}' for c in check[b, :3])})")
-        momenta = np.asarray(sim.comm.sum(bodies.momenta(x, v, omega_atom, image, body, type_, mass, rmass, radius,
-                                                         length, self.xcm, self.image_body, n, nb)))
-        self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
-        self.angmom[:] = momenta[:, 3:]
+        if self.args.infile is None:
+            momenta = np.asarray(sim.comm.sum(bodies.momenta(x, v, omega_atom, image, body, type_, mass, rmass,
+                                                             radius, length, self.xcm, self.image_body, n, nb)))
+            self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
+            self.angmom[:] = momenta[:, 3:]
+        else:
+            # LAMMPS's: with a file, bodies it does not list start at rest
+            self.vcm[:] = 0.0
+            self.angmom[:] = 0.0
+            for b, row in self.from_file.items():
+                self.vcm[b], self.angmom[b] = row[10:13], row[13:16]
         if sim.dimension == 2:
             # 2d bodies move in the plane and turn about z only (LAMMPS's fix enforce2d on bodies)
             self.vcm[:, 2] = 0.0
@@ -354,7 +441,8 @@ class FixRigid(Fix):
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
-        if self.args.reinit == "yes" or not self.set_up:
+        # a file's values hold for the first run only (LAMMPS: infile sets reinit no)
+        if (self.args.reinit == "yes" and self.args.infile is None) or not self.set_up:
             self.setup_bodies(sim)
         # a linear body does not turn about its line in 3d; in 2d it turns about z all the same
         nlinear = int(np.count_nonzero((self.inertia == 0.0).any(axis=1))) if sim.dimension == 3 else 0

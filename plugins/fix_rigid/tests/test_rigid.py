@@ -231,7 +231,7 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
 @pytest.mark.parametrize("line, message", [
     ("fix 1 all rigid single langevin 1 1 1 4", "keyword langevin of fix rigid is not implemented yet"),
     ("fix 1 all rigid/nve molecule temp 1 1 1", "keyword temp of fix rigid/nve is not implemented yet"),
-    ("fix 1 all rigid single infile bodies.txt", "keyword infile of fix rigid is not implemented yet"),
+    ("fix 1 all rigid single mol water", "keyword mol of fix rigid is not implemented yet"),
     ("fix 1 all rigid single reinit maybe", "reinit must be one of"),
     ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),
     ("fix 1 all rigid single torque 1*x on on on", "torque: body '1\\*x' is not a number or a range"),
@@ -329,3 +329,37 @@ def test_reinit(tmp_path, reinit, expected):
     sim.command("velocity all set 0 0 0\nrun 0")
     after = 0.5 * float((sim.v ** 2).sum())
     assert after == pytest.approx(before if expected is None else expected, rel=1e-12, abs=1e-15)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("", "no count of bodies"),
+    ("# only a comment\n1 2\n", ":2: the first line is the number of bodies that follow \\(got 1 2\\)"),
+    ("2\n1 " + "1 " * 18 + "0\n", "2 bodies announced, 1 lines follow"),
+    ("1\n1 1 2 3\n", ":2: 4 values; a line is ID masstotal"),
+    ("1\n2 " + "1 " * 18 + "0\n", ":2: no body 2 in fix 1 \\(its bodies: 1..1\\)"),
+    ("1\n1 0 " + "1 " * 17 + "0\n", ":2: masstotal must be > 0"),
+    ("1\n1 nan " + "1 " * 17 + "0\n", ":2: masstotal must be > 0 and every value finite"),
+    ("1\n1 x " + "1 " * 17 + "0\n", ":2: not numbers"),
+    ("1\n1 1 0 0 0 1 1 1 0 0 0 0 0 0 0 0 0 0 -9223372036854775809 0\n", ":2: image flags 0 -9223372036854775809 0 beyond"),
+    ("1\n1 1 0 0 0 1 1 1 0 0 0 0 0 0 0 0 0 \xf4\x90 0 0\n", "not a text file"),
+    ("1\n1 1 0 0 0 1 1 -1 0 0 0 0 0 0 0 0 0 0 0 0\n", ":2: the inertia tensor of body 1 has a negative principal moment"),
+])
+def test_bad_infile_is_one_line(tmp_path, text, message):
+    (tmp_path / "bodies.txt").write_bytes(text.encode("latin-1"))
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3)
+    with pytest.raises(ScriptError, match=message):
+        sim.command(f"fix 1 all rigid single infile {tmp_path / 'bodies.txt'}")
+    with pytest.raises(ScriptError, match="cannot read it"):
+        sim.command(f"fix 1 all rigid single infile {tmp_path / 'missing.txt'}")
+
+
+def test_infile_mass_slows_the_body_under_a_force(tmp_path):
+    """The file's mass, not the particles' (6), is what a force accelerates: twice the mass, half the
+    velocity gain; the body's other values as the particles give them."""
+    (tmp_path / "bodies.txt").write_text("1\n1 12 0 0 0 " + " ".join(map(str, MOMENTS)) + " 0 0 0 0 0 0 0 0 0 0 0 0\n")
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f", setup=f"""
+        fix 2 all test/torque 0 0 0 0.6 0 0
+        fix 1 all rigid single infile {tmp_path / 'bodies.txt'}
+        run 1000
+        """)
+    assert sim.fixes["1"].vcm[0] == pytest.approx([0.6 / 12 * 1000 * 0.005, 0, 0], rel=1e-12, abs=1e-15)

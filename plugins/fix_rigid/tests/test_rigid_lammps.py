@@ -96,6 +96,8 @@ thermo 500
 run 3000
 """
 
+INFILE = CLUMPS.replace("fix 1 all rigid/nve group 2 a b", "fix 1 all rigid/nve group 2 a b infile rigid_bodies.txt")
+
 
 def reference(style):
     tables, name = {}, None
@@ -131,13 +133,15 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
 
 
-@pytest.mark.parametrize("scene", ["clumps", "plane"])
-def test_clumps_and_2d_bodies_match_lammps(pdps_cli, scene):
+@pytest.mark.parametrize("scene", ["clumps", "plane", "infile"])
+def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     """Clumps of finite-size spheres (their own inertia, 6 degrees of freedom each) beside free
     spheres, falling under gravity; 2-d bodies (3 degrees of freedom each, one spanning the box
     with image flags 0, one with its torque off) under a constant force: temperature, pressure and the bodies'
-    values (f_1: their temperature, with 2d's components) as LAMMPS's."""
-    done = pdps_cli(CLUMPS if scene == "clumps" else PLANE, "-log", "none")
+    values (f_1: their temperature, with 2d's components) as LAMMPS's; the clumps again with masses,
+    inertia and motion from an infile."""
+    shutil.copy(DATA / "rigid_bodies.txt", tmp_path)
+    done = pdps_cli({"clumps": CLUMPS, "plane": PLANE, "infile": INFILE}[scene], "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
     lammps = reference(scene)
