@@ -390,6 +390,8 @@ class FixRigid(Fix):
             self.masstotal[b], self.xcm[b], self.image_body[b] = row[0], row[1:4], row[16:19]
         bodies.remap_centres(self.xcm, self.image_body, np.asarray(sim.box.lo, dtype=np.float64),
                              np.asarray(sim.box.hi, dtype=np.float64), length, periodic)
+        if not self.set_up:
+            self._warn_spanning(sim, x, image, body, length, periodic)
         tensor = np.asarray(sim.comm.sum(bodies.inertia_sums(x, image, body, type_, mass, rmass, radius, length,
                                                              self.xcm, self.image_body, n, nb)))
         for b, row in self.from_file.items():
@@ -436,6 +438,27 @@ class FixRigid(Fix):
             self.angmom[:, :2] = 0.0
         self.set_up += 1
         self.dof_cache = {}
+
+    def _warn_spanning(self, sim, x, image, body, length, periodic):
+        """A body wider than half a periodic box was most likely given inconsistent image flags
+        (LAMMPS takes it as it is, and so does pdps): say so once."""
+        n = sim.particles.nlocal
+        mine = np.flatnonzero(body[:n] >= 0)
+        b = body[mine]
+        unwrapped = x[mine] + (image[mine] - self.image_body[b]) * length
+        highest = np.full((self.nbody, 3), -np.inf)
+        lowest = np.full((self.nbody, 3), np.inf)
+        np.maximum.at(highest, b, unwrapped)
+        np.minimum.at(lowest, b, unwrapped)
+        highest = sim.comm.allgather_rows(highest[None]).max(axis=0)
+        lowest = sim.comm.allgather_rows(lowest[None]).min(axis=0)
+        width = highest - lowest
+        spanning = (width > 0.5 * length) & periodic
+        if spanning.any():
+            k, d = (int(i) for i in np.argwhere(spanning)[0])
+            sim.warn(f"fix {self.id}: body {self.body_ids[k]} is {width[k, d]:.6g} wide along {'xyz'[d]}, more "
+                     f"than half the periodic box ({length[d]:g}): are its particles' image flags those of one "
+                     "whole body?")
 
     def init_run(self, sim):
         self.dtv = sim.dt

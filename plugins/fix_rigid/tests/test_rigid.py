@@ -363,3 +363,12 @@ def test_infile_mass_slows_the_body_under_a_force(tmp_path):
         run 1000
         """)
     assert sim.fixes["1"].vcm[0] == pytest.approx([0.6 / 12 * 1000 * 0.005, 0, 0], rel=1e-12, abs=1e-15)
+
+
+def test_a_body_wider_than_half_the_box_is_warned_about(tmp_path):
+    """Two particles near opposite faces with image flags 0 make a body 19 wide in a box of 20 (as
+    LAMMPS reads it too): a warning asks whether the image flags are right; a whole body gets none."""
+    sim = build(tmp_path, [[-9.5, 0, 0], [9.5, 0, 0], [0, 0, 0], [0, 1, 0]], lo=(-10,) * 3, hi=(10,) * 3,
+                setup="group pair id 1 2\ngroup near id 3 4\nfix 1 all rigid group 2 pair near\nrun 0")
+    assert sim.warnings == ["fix 1: body 1 is 19 wide along x, more than half the periodic box (20): are its "
+                            "particles' image flags those of one whole body?"]
