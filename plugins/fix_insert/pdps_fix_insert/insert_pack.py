@@ -38,12 +38,12 @@ import numpy as np
 from pdps_core.api import ScriptError
 
 from .insertion import FixInsert, number, whole_number
-from .region_volume import clipped_extent, region_points, region_volume, surface_clearance
+from .region_volume import InRegion, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")
 
 
-class FixInsertPack(FixInsert):
+class FixInsertPack(InRegion, FixInsert):
     name = "insert/pack"
     usage = ("fix ID GROUP insert/pack seed S distributiontemplate DIST [keywords] region REGION "
              "volumefraction_region VF | particles_in_region N | mass_in_region M [ntry_mc N]")
@@ -91,12 +91,3 @@ class FixInsertPack(FixInsert):
         whole = math.floor(expected)
         odds = np.random.default_rng([self.seed, sim.step, 1]).random()
         return whole + (1 if odds < expected - whole else 0)
-
-    def extent(self, sim):
-        return clipped_extent(self.region, sim.box)
-
-    def draw_points(self, rng, n):
-        return region_points(self.region, self.sim.box, rng, n)
-
-    def clearance(self, points, reach):
-        return surface_clearance(self.region, points, reach)

@@ -29,7 +29,7 @@ import math
 from pdps_core.api import ScriptError
 
 from .insertion import FixInsert, number, whole_number
-from .region_volume import clipped_extent, region_points, surface_clearance
+from .region_volume import InRegion
 
 RATE_ARITY = {"nparticles": 1, "mass": 1, "particlerate": 1, "massrate": 1}
 
@@ -73,7 +73,7 @@ def rate_count(fix, sim):
     return count
 
 
-class FixInsertRateRegion(FixInsert):
+class FixInsertRateRegion(InRegion, FixInsert):
     name = "insert/rate/region"
     usage = ("fix ID GROUP insert/rate/region seed S distributiontemplate DIST nparticles N|INF | mass M|INF "
              "particlerate R | massrate R insert_every N region REGION [keywords]")
@@ -92,12 +92,3 @@ class FixInsertRateRegion(FixInsert):
 
     def wanted(self, sim):
         return rate_count(self, sim)
-
-    def extent(self, sim):
-        return clipped_extent(self.region, sim.box)
-
-    def draw_points(self, rng, n):
-        return region_points(self.region, self.sim.box, rng, n)
-
-    def clearance(self, points, reach):
-        return surface_clearance(self.region, points, reach)

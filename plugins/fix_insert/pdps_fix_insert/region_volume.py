@@ -47,3 +47,17 @@ def surface_clearance(region, points, reach):
     rows, distance, _, _ = region.surface_contacts(points, reach)
     np.minimum.at(out, np.asarray(rows, dtype=np.int64), np.asarray(distance, dtype=np.float64))
     return out
+
+
+class InRegion:
+    """The insertion volume of a region-based insertion fix (``self.region``): its extent in the box,
+    uniform points in it, distances to its surface."""
+
+    def extent(self, sim):
+        return clipped_extent(self.region, sim.box)
+
+    def draw_points(self, rng, n):
+        return region_points(self.region, self.sim.box, rng, n)
+
+    def clearance(self, points, reach):
+        return surface_clearance(self.region, points, reach)

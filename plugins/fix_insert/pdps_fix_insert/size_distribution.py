@@ -28,18 +28,10 @@ import numpy as np
 
 from pdps_core.api import ScriptError
 
+from .insertion import number
+
 # words after the style name: radius styles take number|mass first
 ARITY = {"constant": 1, "uniform": 2, "gaussian": 2, "lognormal": 2}
-
-
-def _number(word, what):
-    try:
-        value = float(word)
-    except ValueError:
-        raise ScriptError(f"{what} must be a number (got {word})") from None
-    if not math.isfinite(value):
-        raise ScriptError(f"{what} must be a finite number (got {word})")
-    return value
 
 
 @dataclass(frozen=True)
@@ -62,7 +54,7 @@ class Distribution:
             basis, rest = rest[0], rest[1:]
             if basis not in ("number", "mass"):
                 raise ScriptError(f"{what} {style}: expected number or mass (got {basis})")
-        values = [_number(w, f"{what} {style}") for w in rest]
+        values = [number(w, f"{what} {style}") for w in rest]
         a, b = (values + [0.0])[:2]
         if style == "constant" and a <= 0:
             raise ScriptError(f"{what} constant must be > 0 (got {rest[0]})")
