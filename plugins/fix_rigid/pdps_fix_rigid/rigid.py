@@ -39,7 +39,8 @@ the three image flags of the centre of mass, as LAMMPS's global array.
 
 Syntax::
 
-    fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG] [reinit yes|no]
+    fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
+        [reinit yes|no] [infile FILE]
 
 - BODYSTYLE ``single``: the whole group is one body; ``molecule``: one body per molecule id in the
   group (the id 0 too); ``group N G1 ... GN``: one body per group, its particles those of the fix
@@ -143,7 +144,7 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
 class FixRigid(Fix):
     name = "rigid"
     usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN [force M XFLAG YFLAG ZFLAG] "
-             "[torque M XFLAG YFLAG ZFLAG]")
+             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE]")
     can_virial = True
     virial_default = True
     not_yet = NOT_YET

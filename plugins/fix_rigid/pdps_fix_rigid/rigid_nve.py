@@ -22,6 +22,7 @@ Everything else (body styles, force and torque flags, degrees of freedom, virial
 Syntax::
 
     fix ID GROUP rigid/nve BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
+        [reinit yes|no] [infile FILE]
 
 Example::
 

@@ -17,7 +17,7 @@ sum_k (N_f,k k_B T eta_1 + k_B T eta_k + Q_k eta_dot_k^2 / 2) over both chains.
 Syntax::
 
     fix ID GROUP rigid/nvt BODYSTYLE [ARGS] temp TSTART TSTOP TDAMP [tparam TCHAIN TITER TORDER]
-        [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG] [reinit yes|no]
+        [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE]
 
 - ``temp``: the target temperature at the run's start and end (temperature) and the damping time
   TDAMP (time); required.
