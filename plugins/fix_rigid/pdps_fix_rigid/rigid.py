@@ -379,6 +379,15 @@ class FixRigid(Fix):
             i = int(np.flatnonzero(stray.any(axis=1))[0])
             message = (f"fix {self.id}: particle {int(p.tag[i])} of a rigid body has a non-zero image flag "
                        "in a non-periodic dimension")
+        # particles deleted since the fix was defined (delete_atoms, lost ones) change the bodies
+        counts = np.bincount(body[:n][mine], minlength=nb).astype(np.int64)
+        self.nrigid = np.asarray(sim.comm.sum(counts), dtype=np.int64)
+        lonely = np.flatnonzero(self.nrigid <= 1)
+        if lonely.size:
+            b = int(lonely[0])
+            raise ScriptError(f"fix {self.id}: body {self.body_ids[b]} has {self.nrigid[b]} particle(s) left; a "
+                              "rigid body needs at least 2 (particles deleted since the fix was defined? "
+                              "define the fix again)")
         masses = mass[type_[:n][mine]] if len(rmass) == 0 else rmass[:n][mine]
         if not np.all(np.isfinite(masses)) or np.any(masses <= 0):
             message = message or f"fix {self.id}: every particle of a rigid body needs a positive mass"

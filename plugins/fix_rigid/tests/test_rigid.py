@@ -372,3 +372,17 @@ def test_a_body_wider_than_half_the_box_is_warned_about(tmp_path):
                 setup="group pair id 1 2\ngroup near id 3 4\nfix 1 all rigid group 2 pair near\nrun 0")
     assert sim.warnings == ["fix 1: body 1 is 19 wide along x, more than half the periodic box (20): are its "
                             "particles' image flags those of one whole body?"]
+
+
+def test_a_body_emptied_between_runs_is_one_line(tmp_path):
+    x = np.vstack([OCTAHEDRON, OCTAHEDRON[:3] + 4.0])
+    sim = build(tmp_path, x, lo=(-10,) * 3, hi=(10,) * 3, setup="""
+        group a id 1:6
+        group b id 7:9
+        fix 1 all rigid group 2 a b
+        run 10
+        group gone id 7 8
+        delete_atoms group gone
+        """)
+    with pytest.raises(ScriptError, match=r"fix 1: body 2 has 1 particle\(s\) left; a rigid body needs at least 2"):
+        sim.command("run 10")
