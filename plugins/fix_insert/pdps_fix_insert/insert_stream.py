@@ -16,11 +16,14 @@ radius behind the face: a point of the face (triangles by area) minus :math:`(uL
 \hat{\mathbf{n}}`, u uniform on [0, 1). As in LIGGGHTS, exactly one of ``insert_every`` and
 ``extrude_length`` is given and fixes the other: :math:`L = D\,\Delta t\,|\mathbf{v}_n|` with
 ``duration`` D (default insert_every, D <= insert_every), or insert_every = :math:`\lfloor L /
-(\Delta t\,|\mathbf{v}_n|)\rfloor`; L must be at least 3 times the largest radius. Until it reaches the face
-a particle flies straight at :math:`\mathbf{v}_n` whatever acts on it (its force and torque are
-zeroed after every force computation and its velocity reset at the end of the step: LIGGGHTS's
-release), so the mass crossing the face per unit time is the inserted rate once the first particles
-arrive. ``vel uniform|gaussian`` and ``all_in yes`` are refused.
+(\Delta t\,|\mathbf{v}_n|)\rfloor`; L must be at least 3 times the largest radius. Until it reaches
+the face a particle flies straight at :math:`\mathbf{v}_n`, with no spin, whatever acts on it: at the
+end of every step its position is put back where that flight has carried it from its insertion, and
+its force and torque are zeroed (LIGGGHTS's ``end_of_step``); on reaching the face it takes the
+velocity it was inserted with (``vel constant``, or drawn by ``vel uniform|gaussian`` at the
+insertion, from the same stream as its position) and the ``omega`` given, and is free from then on.
+So the mass crossing the face per unit time is the inserted rate once the first particles arrive.
+``all_in yes`` is refused.
 
 The counts per insertion follow the rate's line as for insert/rate/region (insert_rate_region.py:
 never a whole particle off the rate). Placement and ranks: insertion.py. (LIGGGHTS draws each
@@ -44,23 +47,33 @@ from .insertion import FixInsert, number, whole_number
 from .insert_rate_region import RATE_ARITY, rate_count, read_rate
 
 
+# columns of the per-particle flight record: release time (0: free), insertion time, insertion
+# position (3), velocity and angular velocity to take at the face (3 + 3)
+RELEASE, INSERTED, START, VELOCITY, SPIN, FLIGHT_WIDTH = 0, 1, 2, 5, 8, 11
+
+
 @njit(cache=True)
-def hold_in_flight(release, time, f, torque):
-    """Zero the force and torque of the particles not yet released (release time after ``time``)."""
-    for i in range(len(release)):
-        if release[i] > time:
+def fly(record, time, x, v, omega, f, torque, v_normal):
+    """LIGGGHTS's release at the face: a particle in flight is where the insertion velocity's normal
+    part has carried it, moving at it, with no spin, force or torque; on reaching the face it takes
+    the velocity and spin it was inserted with, and is free from then on."""
+    for i in range(record.shape[0]):
+        release = record[i, RELEASE]
+        if release <= 0.0:
+            continue
+        if time < release:
+            flown = time - record[i, INSERTED]
             for d in range(3):
+                x[i, d] = record[i, START + d] + v_normal[d] * flown
+                v[i, d] = v_normal[d]
+                omega[i, d] = 0.0
                 f[i, d] = 0.0
                 torque[i, d] = 0.0
-
-
-@njit(cache=True)
-def keep_flying(release, time, v, omega, velocity):
-    for i in range(len(release)):
-        if release[i] > time:
+        else:
             for d in range(3):
-                v[i, d] = velocity[d]
-                omega[i, d] = 0.0
+                v[i, d] = record[i, VELOCITY + d]
+                omega[i, d] = record[i, SPIN + d]
+            record[i, RELEASE] = 0.0
 
 
 class FixInsertStream(FixInsert):
@@ -93,8 +106,8 @@ class FixInsertStream(FixInsert):
             self.duration = whole_number(given["duration"][0], "duration", low=1)
             if self.duration > self.every:
                 raise ScriptError(f"duration must not exceed insert_every (got {self.duration} > {self.every})")
-        if "vel" not in given or self.velocity_style != "constant":
-            raise ScriptError("insert/stream needs vel constant VX VY VZ (the particles cross the face at it)")
+        if "vel" not in given:
+            raise ScriptError("insert/stream needs vel constant|uniform|gaussian: the particles cross the face at it")
         if self.all_in:
             raise ScriptError("all_in yes is not supported by insert/stream")
         normals = self.face.face_normal
@@ -106,12 +119,12 @@ class FixInsertStream(FixInsert):
             raise ScriptError(f"the insertion velocity projected on the face normal is {along:.3g}, less "
                               "than 1e-3 (LIGGGHTS): no particle would cross the face")
         self.normal = normal
-        self.velocity_mean = along * normal           # LIGGGHTS's v_normal: what the particles get
+        self.v_normal = along * normal                # LIGGGHTS's v_normal: the particles' flight
         self.speed = along
         read_rate(self, given, every_needed=False)
         self.wanted_so_far = 0
-        self.release_name = f"release_{self.id}"
-        sim.particles.request(self.release_name, ghost=False)
+        self.flight_name = f"flight_{self.id}"
+        sim.particles.request(self.flight_name, width=FLIGHT_WIDTH, ghost=False)
 
     def setup(self, sim):
         largest = self.distribution.max_radius
@@ -174,15 +187,17 @@ class FixInsertStream(FixInsert):
         super()._insert(sim, count)
         p = sim.particles
         if p.nlocal > before:       # rank 0, which added them in the order they were placed
-            flight = self.pool_depth[self.placed_rows] / self.speed
-            p.arrays[self.release_name][before:p.nlocal] = sim.time + flight
-
-    def post_force(self, sim):
-        p = sim.particles
-        n = p.nlocal
-        hold_in_flight(p.arrays[self.release_name][:n], sim.time, p.f, p.torque)
+            new = slice(before, p.nlocal)
+            record = p.arrays[self.flight_name]
+            record[new, RELEASE] = sim.time + self.pool_depth[self.placed_rows] / self.speed
+            record[new, INSERTED] = sim.time
+            record[new, START:START + 3] = p.x[new]
+            record[new, VELOCITY:VELOCITY + 3] = p.v[new]
+            record[new, SPIN:SPIN + 3] = p.omega[new]
+            p.v[new] = self.v_normal
+            p.omega[new] = 0.0
 
     def end_of_step(self, sim):
         p = sim.particles
         n = p.nlocal
-        keep_flying(p.arrays[self.release_name][:n], sim.time, p.v, p.omega, self.velocity_mean)
+        fly(p.arrays[self.flight_name][:n], sim.time, p.x, p.v, p.omega, p.f, p.torque, self.v_normal)

@@ -245,3 +245,28 @@ def test_stream_without_extrude_length_fills_what_one_interval_of_flight_empties
     with pytest.raises(ScriptError, match=r"must not provide both 'insert_every' and 'extrude_length' \(LIGGGHTS\)"):
         sim.command("fix s2 all insert/stream seed 3 distributiontemplate pdd1 nparticles 5 massrate 1 "
                     "insert_every 10 vel constant 0 0 -1 insertion_face inface extrude_length 0.01")
+
+
+def test_stream_particles_fly_at_v_normal_then_take_their_velocity_and_spin(make_sim, tmp_path):
+    """LIGGGHTS's release: in flight a particle is exactly where v_n has carried it (gravity defined
+    after the fix changes nothing), with no spin; at the face it takes the full insertion velocity
+    (tangential part included) and omega."""
+    (tmp_path / "face.stl").write_text(FACE)
+    sim = make_sim(dialect="liggghts")
+    script = STREAM.replace("vel constant 0. 0. -1.0", "vel constant 0.3 0. -1.0 omega constant 0 0 7")
+    sim.command(script + "fix g all gravity 9.81 vector 0 0 -1\nrun 1")
+    p = sim.particles
+    start = {int(t): p.x[k].copy() for k, t in enumerate(p.tag[:p.nlocal])}
+    t0 = sim.time
+    sim.command("run 1000")
+    p = sim.particles
+    flying = p.x[:p.nlocal, 2] > 0.15
+    assert flying.any() and (~flying).any()
+    for k in np.flatnonzero(flying):
+        expected = start[int(p.tag[k])] + np.array([0.0, 0.0, -1.0]) * (sim.time - t0)
+        np.testing.assert_allclose(p.x[k], expected, rtol=0, atol=1e-15)
+        assert p.omega[k].tolist() == [0.0, 0.0, 0.0]
+    # released without contact: the insertion velocity (gravity has pulled on it since) and the spin
+    released = np.flatnonzero(~flying & (p.x[:p.nlocal, 2] > 0.14))
+    assert len(released)
+    assert np.allclose(p.v[released, 0], 0.3) and np.allclose(p.omega[released], [0.0, 0.0, 7.0])
