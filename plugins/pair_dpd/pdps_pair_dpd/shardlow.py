@@ -54,12 +54,13 @@ two runs meant to be independent samples would share their noise. A XOR with a l
 rather than seed + 1, because seed + 1 is the seed a user is likely to type for the next run.
 
 Order of the sweep, the same on any number of ranks (and parallel on several): the box is cut into
-a global grid of cells at least the cutoff wide, n per axis (n even, or 1 along a periodic axis
-shorter than 4 cutoffs). A pair's two particles lie in the same or neighbouring cells, so every
+a global grid of cells at least the cutoff wide, n per axis (at most 32; n even, or 1 along a periodic
+axis shorter than 4 cutoffs). A pair's two particles lie in the same or neighbouring cells, so every
 pair belongs to one *block* of 2 x 2 x 2 cells, the one whose lowest cell along each axis holds one
 of them. Blocks are swept colour by colour (the parity of the block's cell along x, y and z: 8
 colours, 4 in 2-d); two blocks of one colour share no particle, so their order does not matter, and
-within a block the pairs are swept in the order of their (lower, higher) particle ids. Each rank
+within a block the pairs are swept in the order of their (lower, higher) particle ids (the two
+periodic images of one pair in a box shorter than two cutoffs by their separations). Each rank
 sweeps the blocks whose first cell's centre lies in its sub-domain: the pairs of its half list go
 to the block's rank, and before each colour every particle's owner sends its velocity where that
 colour's block of the particle is swept and takes the result back. (LAMMPS sweeps sub-box by
@@ -207,6 +208,22 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
 
 
 @njit(cache=True)
+def _after(qa, qb, qs, a0, a1, s0, s1, s2):
+    """Pair q comes after pair (a0, a1) in a block: by ids, then, for the same two particles met
+    through two periodic images (a box shorter than two cutoffs), by their separation, whose
+    components differ by a box length there, so round-off cannot swap them on other ranks."""
+    if qa != a0:
+        return qa > a0
+    if qb != a1:
+        return qb > a1
+    if qs[0] != s0:
+        return qs[0] > s0
+    if qs[1] != s1:
+        return qs[1] > s1
+    return qs[2] > s2
+
+
+@njit(cache=True)
 def sweep_order(key, ends, ids, separation, nkeys):
     """The pairs in sweep order, as copies: by key (colour, then block: a stable counting sort that
     writes each pair to its place, reading the pairs in memory order), then within a key by their
@@ -236,7 +253,7 @@ def sweep_order(key, ends, ids, separation, nkeys):
             e0, e1 = sorted_ends[p, 0], sorted_ends[p, 1]
             s0, s1, s2 = sorted_separation[p, 0], sorted_separation[p, 1], sorted_separation[p, 2]
             q = p - 1
-            while q >= lo and (sorted_ids[q, 0] > a0 or (sorted_ids[q, 0] == a0 and sorted_ids[q, 1] > a1)):
+            while q >= lo and _after(sorted_ids[q, 0], sorted_ids[q, 1], sorted_separation[q], a0, a1, s0, s1, s2):
                 sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = sorted_ids[q, 0], sorted_ids[q, 1]
                 sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = sorted_ends[q, 0], sorted_ends[q, 1]
                 for d in range(3):
@@ -294,6 +311,7 @@ def check_fix_order(sim):
                       "(e.g. fix 2 all nve)")
 
 
+MAX_CELLS = 32
 CELL = "shardlow_cell"        # each particle's sweep cell, its owner's, copied to ghosts
 
 
@@ -317,7 +335,9 @@ class FixShardlow(Fix):
         periodic = np.array([box.periodic[d] and d < sim.dimension for d in range(3)], dtype=np.bool_)
         ncell = np.ones(3, dtype=np.int64)
         for d in range(sim.dimension):
-            count = int(box.length[d] // float(pair.cut.max()))
+            # cells at least the cutoff wide, at most MAX_CELLS a side: the sweep's sort and the block
+            # table grow with the blocks, and a few dozen a side leave every rank many
+            count = min(int(box.length[d] // float(pair.cut.max())), MAX_CELLS)
             if periodic[d]:
                 count = 1 if count < 4 else count - count % 2
             ncell[d] = max(count, 1)
