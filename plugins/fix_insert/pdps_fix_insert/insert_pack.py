@@ -38,7 +38,7 @@ import numpy as np
 from pdps_core.api import ScriptError
 
 from .insertion import FixInsert, number, whole_number
-from .region_volume import InRegion, region_volume
+from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")
 
@@ -53,7 +53,7 @@ class FixInsertPack(InRegion, FixInsert):
     def read_style(self, sim, given):
         if "region" not in given:
             raise ScriptError(f"missing keyword region; usage: {self.usage}")
-        self.region = sim.region(given["region"][0])
+        self.region = insertion_region(sim, given["region"][0])
         targets = [t for t in TARGETS if t in given]
         if len(targets) != 1:
             raise ScriptError("give exactly one of volumefraction_region, particles_in_region, mass_in_region "
@@ -69,6 +69,8 @@ class FixInsertPack(InRegion, FixInsert):
             if self.target == "mass_in_region" and not self.amount > 0:
                 raise ScriptError(f"mass_in_region must be > 0 (got {word})")
         self.ntry_mc = whole_number(given["ntry_mc"][0], "ntry_mc", low=1000) if "ntry_mc" in given else 100_000
+        if self.ntry_mc > 100_000_000:
+            raise ScriptError(f"ntry_mc must be at most 100000000 (got {given['ntry_mc'][0]})")
         self.volume = None
 
     def wanted(self, sim):

@@ -29,7 +29,7 @@ import math
 from pdps_core.api import ScriptError
 
 from .insertion import FixInsert, number, whole_number
-from .region_volume import InRegion
+from .region_volume import InRegion, insertion_region
 
 RATE_ARITY = {"nparticles": 1, "mass": 1, "particlerate": 1, "massrate": 1}
 
@@ -83,7 +83,7 @@ class FixInsertRateRegion(InRegion, FixInsert):
     def read_style(self, sim, given):
         if "region" not in given:
             raise ScriptError(f"missing keyword region; usage: {self.usage}")
-        self.region = sim.region(given["region"][0])
+        self.region = insertion_region(sim, given["region"][0])
         read_rate(self, given)
         self.wanted_so_far = 0
 

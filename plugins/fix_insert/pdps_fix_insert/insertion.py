@@ -48,6 +48,7 @@ def _velocity_words(rest):
         raise ScriptError(f"vel must be constant, uniform or gaussian (got {style or 'nothing'})")
     return 1 + VELOCITY_STYLES[style]
 POOL_LIMIT = 4_000_000       # candidate positions drawn per insertion at most
+MAX_AT_ONCE = 10_000_000     # particles one insertion may add
 
 
 # ---- words ---------------------------------------------------------------------------------------
@@ -189,6 +190,8 @@ class FixInsert(Fix):
 
     # ---- schedule ----
     def setup(self, sim):
+        if sim.fixes.get(self.distribution.id) is not self.distribution:
+            raise ScriptError(f"fix {self.id}: its distributiontemplate {self.distribution.id} has been unfixed")
         if sim.particle_style != "sphere":
             raise ScriptError(f"fix {self.name} needs spheres (atom_style granular or sphere; got "
                               f"{sim.particle_style})")
@@ -209,6 +212,9 @@ class FixInsert(Fix):
         if self.next_reneighbor != sim.step:
             return
         count = max(int(self.wanted(sim)), 0)
+        if count > MAX_AT_ONCE:
+            raise ScriptError(f"fix {self.id} ({self.name}) would insert {count:.3g} particles at step {sim.step}, "
+                              f"more than {MAX_AT_ONCE:,} at once: check its target or rate")
         self.events += 1
         self._insert(sim, count)
         if self.every is None or self.finished:

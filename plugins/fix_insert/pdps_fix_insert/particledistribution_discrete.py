@@ -50,9 +50,10 @@ class FixParticleDistributionDiscrete(Fix):
             raise ScriptError(f"expected SEED and N; usage: {self.usage}")
         self.seed = whole_number(words[0], "seed", low=1)
         count = whole_number(words[1], "number of templates", low=1)
+        if len(words) - 2 != 2 * count:
+            raise ScriptError(f"expected {min(count, 10 ** 6)} template/fraction pairs (got {len(words) - 2} "
+                              "words after N)")
         pairs = words[2:]
-        if len(pairs) != 2 * count:
-            raise ScriptError(f"expected {count} template/fraction pairs (got {len(pairs)} words after N)")
         self.templates, fractions = [], []
         for name, word in zip(pairs[::2], pairs[1::2]):
             template = sim.fixes.get(name)

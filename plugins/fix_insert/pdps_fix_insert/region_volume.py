@@ -5,6 +5,15 @@ import numpy as np
 from pdps_core.api import ScriptError
 
 
+def insertion_region(sim, name):
+    """The region named, refused with side out (its extent is the inside's, not the volume inserted into)."""
+    region = sim.region(name)
+    if region.side_out:
+        raise ScriptError(f"region {name} has side out: insertion needs a region whose inside is the "
+                          "insertion volume")
+    return region
+
+
 def clipped_extent(region, box):
     lo, hi = region.extent()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)

@@ -17,8 +17,9 @@ probability_distribution), with their moments.
   SIGMA``, ``lognormal MU SIGMA``.
 
 Moments (:math:`\langle r^3\rangle` for the expected volume, the mean density for the expected mass)
-are integrated over the cut support (Simpson's rule, 4,000 intervals: exact to round-off for these
-smooth densities), so a cut Gaussian's expected mass is the one its draws average to.
+are integrated over the cut support (Simpson's rule in :math:`\ln r`, 4,000 intervals: to 1e-10 of
+the closed forms for lognormals up to sigma = 2 and uniform mass up to B/A = 1000), so a cut
+Gaussian's expected mass is the one its draws average to.
 """
 
 import math
@@ -71,7 +72,17 @@ class Distribution:
                                   "number, or lognormal mass")
             if a - 3.0 * b <= 0:
                 raise ScriptError(f"{what} gaussian: mu - 3 sigma must be > 0 (got {a:g} - 3 x {b:g})")
-        return cls(style, basis, a, b)
+        made = cls(style, basis, a, b)
+        try:
+            lo, hi = made.support()
+            fine = 0.0 < lo <= hi < 1e100 and math.isfinite(made.mean_of(3))
+        except OverflowError:
+            fine = False
+        if not fine:
+            shown = " ".join(words)
+            hint = " (mu and sigma are those of ln of the value)" if style == "lognormal" else ""
+            raise ScriptError(f"{what} {shown}: the values would not be finite numbers below 1e100{hint}")
+        return made
 
     @staticmethod
     def word_count(words, radius):
@@ -105,15 +116,18 @@ class Distribution:
         return np.exp(-0.5 * ((np.log(r) - self._log_mean()) / self.b) ** 2) / r
 
     def mean_of(self, power):
-        """The mean of value**power over the number distribution."""
+        """The mean of value**power over the number distribution: Simpson's rule in u = ln r
+        (dr = r du), where a lognormal is a Gaussian and r^-3 an exponential, so that wide
+        distributions (sigma 2, or B/A = 1000) are integrated as accurately as narrow ones."""
         if self.style == "constant":
             return self.a ** power
         lo, hi = self.support()
-        r = np.linspace(lo, hi, 4001)
+        u = np.linspace(math.log(lo), math.log(hi), 4001)
+        r = np.exp(u)
         weight = np.full(4001, 2.0)
         weight[1::2] = 4.0
         weight[0] = weight[-1] = 1.0
-        f = self.density(r) * weight
+        f = self.density(r) * r * weight
         return float(np.sum(f * r ** power) / np.sum(f))
 
     def draw(self, rng, n):

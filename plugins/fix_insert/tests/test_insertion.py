@@ -191,6 +191,17 @@ def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
     ("fix d2 all particledistribution/discrete 1 2 pts1 0.5",
      "expected 2 template/fraction pairs (got 2 words after N)"),
     ("fix d2 all particledistribution/discrete 1.5 1 pts1 1.0", "seed must be a whole number (got 1.5)"),
+    ("fix d2 all particledistribution/discrete 1 1e30 pts1 1.0", "expected 1000000 template/fraction pairs (got 2 words after N)"),
+    ("fix t2 all particletemplate/sphere 1 atom_type 1 density lognormal 2500 0.1 radius constant 0.001",
+     "density lognormal 2500 0.1: the values would not be finite numbers below 1e100 (mu and sigma are those "
+     "of ln of the value)"),
+    ("fix t2 all particletemplate/sphere 1 atom_type 1 density constant 1 radius constant 1e200",
+     "radius constant 1e200: the values would not be finite numbers below 1e100"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc volumefraction_region 0.2 ntry_mc 1e13",
+     "ntry_mc must be at most 100000000 (got 1e13)"),
+    ("region out block -0.01 0.01 -0.01 0.01 0 0.01 side out units box\n"
+     "fix ins all insert/pack seed 1 distributiontemplate pdd1 region out particles_in_region 5",
+     "region out has side out: insertion needs a region whose inside is the insertion volume"),
 ])
 def test_bad_insertion_lines(make_sim, line, message):
     sim = make_sim(dialect="liggghts")
@@ -270,3 +281,10 @@ def test_stream_particles_fly_at_v_normal_then_take_their_velocity_and_spin(make
     released = np.flatnonzero(~flying & (p.x[:p.nlocal, 2] > 0.14))
     assert len(released)
     assert np.allclose(p.v[released, 0], 0.3) and np.allclose(p.omega[released], [0.0, 0.0, 7.0])
+
+
+def test_an_unfixed_distribution_is_refused_at_the_run(make_sim):
+    sim = make_sim(dialect="liggghts")
+    sim.command(PACK.format(n=5) + "unfix pdd1")
+    with pytest.raises(ScriptError, match="fix ins: its distributiontemplate pdd1 has been unfixed"):
+        sim.command("run 1")
