@@ -21,7 +21,7 @@ import tempfile
 
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError
+from pdps_core.api import Dump, ScriptError, SimulationError
 
 
 def _check_format(fmt):
@@ -155,13 +155,14 @@ class TextDump(Dump):
                 with open(path, "w") as handle:
                     handle.write("".join(header) + rows)
             except OSError as exc:
-                raise ScriptError(f"cannot open dump file {path}: {exc.strerror}") from None
+                # found by rank 0 alone, which writes: a SimulationError stops every rank, not only this one
+                raise SimulationError(f"cannot open dump file {path}: {exc.strerror}") from None
             return
         if self.handle is None:
             try:
                 self.handle = open(self.path, "a" if self.append else "w")
             except OSError as exc:
-                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+                raise SimulationError(f"cannot open dump file {self.path}: {exc.strerror}") from None
         self.handle.write("".join(header) + rows)
         self.handle.flush()
 
