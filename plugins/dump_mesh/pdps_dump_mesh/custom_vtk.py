@@ -29,7 +29,8 @@ from .vtk import DumpVTK, series_json
 VECTORS = {"v": ("vx", "vy", "vz"), "f": ("fx", "fy", "fz"), "omega": ("omegax", "omegay", "omegaz"),
            "torque": ("tqx", "tqy", "tqz"), "image": ("ix", "iy", "iz")}
 SCALARS = ("id", "type", "mass", "radius", "diameter")
-POSITIONS = ("x", "y", "z", "xu", "yu", "zu", "xs", "ys", "zs")
+POSITIONS = ("x", "y", "z")
+OTHER_POSITIONS = ("xu", "yu", "zu", "xs", "ys", "zs")
 COMPONENT = {word: (name, k) for name, words in VECTORS.items() for k, word in enumerate(words)}
 
 
@@ -56,6 +57,9 @@ class DumpCustomVTK(MeshDump):
                                   "custom/vtk in pdps; use dump custom for them")
             if word in POSITIONS:
                 continue
+            if word in OTHER_POSITIONS:
+                raise ScriptError(f"custom/vtk: {word}: the points are the wrapped positions x y z; write unwrapped "
+                                  "or scaled ones with dump custom")
             if word in SCALARS:
                 self.columns.append((word, word, None))
             elif word in COMPONENT:

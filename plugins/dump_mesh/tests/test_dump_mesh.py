@@ -350,6 +350,8 @@ def test_custom_vtk_writes_the_listed_values(tmp_path, make_sim):
         sim.command("dump 2 all custom/vtk 3 q_*.vtk id c_ke")
     with pytest.raises(ScriptError, match="custom/vtk: unknown attribute colour"):
         sim.command("dump 3 all custom/vtk 3 q_*.vtk id colour")
+    with pytest.raises(ScriptError, match="custom/vtk: xu: the points are the wrapped positions x y z"):
+        sim.command("dump 4 all custom/vtk 3 q_*.vtk id xu yu zu")
 
 
 @pytest.mark.parametrize("style", ["vtk", "custom/vtk"])
