@@ -17,6 +17,12 @@ LIGGGHTS_LEGACY_MODELS = {
 }
 
 
+# model settings a 2.x line may carry after its style (LIGGGHTS's note on the 3.x syntax change), and
+# for walls after the geometry too: they go where today's spelling wants them, after the model
+LIGGGHTS_MODEL_SETTINGS = ("rolling_friction", "cohesion", "tangential_damping", "limitForce",
+                           "absolute_damping", "viscous")
+
+
 def _liggghts_legacy(sim, style, rest, wall=False):
     """(style, words) with a LIGGGHTS 2.x granular spelling read as today's, else as given."""
     if getattr(sim.dialect, "name", None) != "liggghts":
@@ -25,11 +31,24 @@ def _liggghts_legacy(sim, style, rest, wall=False):
     model = LIGGGHTS_LEGACY_MODELS.get(base)
     if model is None or (wall and base == style):
         return style, rest
-    if not wall and rest:              # coefficients given: LAMMPS's style of that name
+    rest = list(rest)
+    if not wall:
+        if rest and rest[0] not in LIGGGHTS_MODEL_SETTINGS:
+            return style, rest         # coefficients given: LAMMPS's style of that name
+        return "gran", model + rest
+    if rest and rest[0] == "type":
+        rest = ["primitive"] + rest    # 2.x: wall/gran/hooke/history type 1 xplane -0.5
+    if not rest or rest[0] not in ("mesh", "primitive"):
         return style, rest
-    if wall and rest and rest[0] not in ("mesh", "primitive"):
-        return style, rest
-    return ("wall/gran" if wall else "gran"), model + list(rest)
+    settings, geometry, k = [], [], 0
+    while k < len(rest):
+        if rest[k] in LIGGGHTS_MODEL_SETTINGS and k + 1 < len(rest):
+            settings += rest[k:k + 2]
+            k += 2
+        else:
+            geometry.append(rest[k])
+            k += 1
+    return "wall/gran", model + settings + geometry
 
 
 @command("pair_style")
