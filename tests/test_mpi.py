@@ -270,3 +270,21 @@ def test_molecule_exclusions_give_the_same_run_on_1_and_2_ranks(tmp_path):
     assert len(table) == 11                           # steps 0 to 100
     # printed with 15 digits: sums over ranks differ in the last two
     assert sum(again, []) == pytest.approx(sum(table, []), rel=1e-12)
+
+
+def test_max_and_min_of_arrays_are_taken_element_by_element(tmp_path):
+    """The plugin guide lets styles reduce arrays: max and min of a numpy array over ranks, element
+    by element (they raised on one rank and hung the other)."""
+    (tmp_path / "reduce.py").write_text(textwrap.dedent("""
+        import numpy as np
+        from pdps_core.comm.mpi import MPIComm
+        c = MPIComm()
+        a = np.array([1.0, 5.0, -2.0]) * (c.rank + 1)
+        high, low = c.max(a), c.min(a)
+        if c.rank == 0:
+            print(high.tolist(), low.tolist())
+    """))
+    done = subprocess.run([str(MPIEXEC), "-n", "2", sys.executable, "reduce.py"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[0] == "[2.0, 10.0, -2.0] [1.0, 5.0, -4.0]"

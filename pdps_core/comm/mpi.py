@@ -387,10 +387,20 @@ class MPIComm:
         return self.world.allreduce(value, op=self.MPI.SUM)
 
     def max(self, value):
-        return self.world.allreduce(value, op=self.MPI.MAX)
+        return self._reduce(value, self.MPI.MAX)
 
     def min(self, value):
-        return self.world.allreduce(value, op=self.MPI.MIN)
+        return self._reduce(value, self.MPI.MIN)
+
+    def _reduce(self, value, op):
+        """Numbers by mpi4py's object reduction; numpy arrays element by element (its object MAX and
+        MIN compare whole arrays, which raised on one rank and left the others waiting)."""
+        if isinstance(value, np.ndarray):
+            data = np.ascontiguousarray(value)
+            out = np.empty_like(data)
+            self.world.Allreduce(data, out, op=op)
+            return out
+        return self.world.allreduce(value, op=op)
 
     def gather_rows(self, rows):
         """All ranks' rows on rank 0 (None elsewhere), in rank order."""
