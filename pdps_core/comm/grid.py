@@ -6,8 +6,10 @@ which keeps the ghost layer (and so the communication) smallest.
 """
 
 import itertools
+import math
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
 
@@ -36,6 +38,26 @@ def choose_grid(nprocs, lengths, dimension=3, fixed=(None, None, None)):
     return best
 
 
+@njit(cache=True)
+def rank_of_position(x, i, lo, length, grid):
+    """The rank whose sub-domain holds particle i's position (wrapped into the box): the one rule for
+    ownership, which migration (comm/mpi.py) and Decomposition.owner both use."""
+    rank = 0
+    stride = 1
+    for d in range(3):
+        cell = int(math.floor((x[i, d] - lo[d]) / length[d] * grid[d]))
+        cell = min(max(cell, 0), grid[d] - 1)
+        rank += cell * stride
+        stride *= grid[d]
+    return rank
+
+
+@njit(cache=True)
+def _owners(x, lo, length, grid, out):
+    for i in range(x.shape[0]):
+        out[i] = rank_of_position(x, i, lo, length, grid)
+
+
 class Decomposition:
     """Sub-domain bounds and the owner rank of any position."""
 
@@ -55,6 +77,8 @@ class Decomposition:
 
     def owner(self, x):
         """Rank owning each position (n x 3), positions already wrapped into the box."""
-        cell = np.floor((x - self.box.lo) / self.box.length * self.grid).astype(np.int64)
-        cell = np.clip(cell, 0, self.grid - 1)
-        return cell[:, 0] + self.grid[0] * (cell[:, 1] + self.grid[1] * cell[:, 2])
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        out = np.empty(len(x), dtype=np.int64)
+        _owners(x, np.asarray(self.box.lo, dtype=np.float64), np.asarray(self.box.length, dtype=np.float64),
+                self.grid, out)
+        return out

@@ -22,7 +22,7 @@ from numba import njit
 
 from ..errors import SimulationError
 from ..state.finite import first_non_finite
-from .grid import Decomposition, choose_grid
+from .grid import Decomposition, choose_grid, rank_of_position
 
 
 @njit(cache=True)
@@ -76,17 +76,10 @@ def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, 
 @njit(cache=True)
 def _leavers(x, nlocal, lo, length, grid, me, gone, index, dest):
     """Owned particles now in another rank's sub-domain (positions wrapped into the box): flagged in
-    ``gone``, listed with their new owner in ``index, dest``; returns how many. The owner is
-    Decomposition.owner's, computed alike."""
+    ``gone``, listed with their new owner in ``index, dest``; returns how many."""
     m = 0
     for i in range(nlocal):
-        rank = 0
-        stride = 1
-        for d in range(3):
-            cell = int(math.floor((x[i, d] - lo[d]) / length[d] * grid[d]))
-            cell = min(max(cell, 0), grid[d] - 1)
-            rank += cell * stride
-            stride *= grid[d]
+        rank = rank_of_position(x, i, lo, length, grid)
         if rank == me:
             gone[i] = 0
         else:
