@@ -4,12 +4,18 @@ virial) and the bodies' temperature f_1 over 10^4 steps (and clumps of spheres u
 benchmarks/lammps_references/rigid.py into tests/data/rigid_lj.txt; the same thermo on 1 and 2 ranks."""
 
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pdps_core.testing import run_ranks, thermo_rows
+
+# the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
+# test runs what LAMMPS ran
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from rigid import CLUMPS, INFILE, PLANE, STYLES  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 SCRIPT = """units lj
@@ -26,77 +32,6 @@ thermo 100
 run {steps}
 """
 
-CLUMPS = """units lj
-atom_style sphere
-region box block -10 10 -10 10 -10 10
-create_box 1 box
-create_atoms 1 single 0 0 0
-create_atoms 1 single 0.8 0 0
-create_atoms 1 single 0.3 0.6 0.1
-create_atoms 1 single 4 4 4
-create_atoms 1 single 4.9 4 4
-create_atoms 1 single -5 -5 -5
-create_atoms 1 single -5 5 -5
-create_atoms 1 single 5 -5 -5
-set atom 1 diameter 1.0
-set atom 2 diameter 0.8
-set atom 3 diameter 1.2
-set atom 4 diameter 1.0
-set atom 5 diameter 0.6
-set atom 6*8 diameter 1.0
-set atom * density 1.5
-group free id 6:8
-group a id 1:3
-group b id 4:5
-velocity all set 0.1 0.2 0.3
-group g id 2 5
-velocity g set 0.5 -0.3 0.2
-group h id 3
-velocity h set -0.5 -0.3 0.9
-fix 1 all rigid/nve group 2 a b
-fix 3 free nve
-fix 2 all gravity 1.0 vector 0.3 -0.5 -1
-thermo_style custom step temp ke press f_1 f_1[2][1] f_1[1][6]
-thermo_modify format float %20.15g
-thermo 500
-run 5000
-"""
-
-PLANE = """units lj
-dimension 2
-atom_style atomic
-boundary p p p
-region box block -10 10 -10 10 -0.5 0.5
-create_box 1 box
-create_atoms 1 single 0 0 0
-create_atoms 1 single 1 0 0
-create_atoms 1 single 0.3 0.8 0
-create_atoms 1 single 3 3 0
-create_atoms 1 single 3.9 3.1 0
-create_atoms 1 single 9.5 2 0
-create_atoms 1 single -9.5 2.4 0
-create_atoms 1 single -5 -5 0
-mass 1 1.0
-group a id 1:3
-group b id 4:5
-group c id 6:7
-group free id 8
-velocity all set 0.1 0.2 0
-group g id 2 5 6
-velocity g set 0.5 -0.3 0
-group h id 3
-velocity h set -0.5 -0.3 0
-fix 1 all rigid group 3 a b c torque 2 off off on
-fix 3 free nve
-fix 4 all addforce 0.1 -0.05 0
-fix 5 all enforce2d
-thermo_style custom step temp ke press f_1 f_1[3][1] f_1[1][12]
-thermo_modify format float %20.15g
-thermo 500
-run 3000
-"""
-
-INFILE = CLUMPS.replace("fix 1 all rigid/nve group 2 a b", "fix 1 all rigid/nve group 2 a b infile rigid_bodies.txt")
 
 
 def reference(style):
@@ -110,7 +45,7 @@ def reference(style):
     return np.array(tables[style])
 
 
-EXTRA = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
+EXTRA = STYLES
 
 
 @pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt"])
