@@ -473,7 +473,10 @@ class Fix(Style):
 
     ``energy`` and ``virial`` are called after ``post_force`` on steps where something reads them
     (``sim.eflag`` / ``sim.vflag`` are True during that step's force hooks, so a fix can tally only
-    then).
+    then). A fix whose virial is complete only after its ``final_integrate`` (constraint forces, as
+    LAMMPS's fix rigid tallies in set_v) sets ``virial_after = "final_integrate"``: its ``virial`` is
+    then read after every fix's final_integrate (and after ``setup``), before ``end_of_step`` and
+    output; fixes reading ``sim.virial`` within final_integrate (barostats) do not see it.
 
     ``modify_param(sim, keyword, value)``: a ``fix_modify ID keyword value`` other than energy and
     virial (LAMMPS's modify_param); returns True when the fix took it, False for an unknown keyword.
@@ -489,6 +492,7 @@ class Fix(Style):
     can_energy: ClassVar[bool] = False
     can_virial: ClassVar[bool] = False
     virial_default: ClassVar[bool] = False
+    virial_after: ClassVar[str] = "post_force"
     next_reneighbor: int | None = None
 
     def __init__(self, sim, id, group, args):

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError
+from pdps_core.api import Fix, ScriptError, observables, registry
 from pdps_core.testing import build, forces_by_tag, thermo_csv
 
 EPS, RC, L, KT, N = 50.0, 1.0, 10.0, 1.0, 1000
@@ -103,3 +103,33 @@ def test_ideal_gas_between_walls_reads_the_pressure_it_exerts_on_them(tmp_path, 
     expected = N * KT / (h * L * L) if virial == "yes" else N * KT / L ** 3
     assert abs(mean - expected) < 2.0 * error, (mean, expected, error)
     assert error < 0.05 * abs(N * KT / (h * L * L) - N * KT / L ** 3)   # the test tells the two apart
+
+
+# ---- a virial complete only after final_integrate (fix rigid's constraint forces) -----------------
+class LateVirial(Fix):
+    """Sets its virial in setup and final_integrate: w = 3 (step + 1) on each diagonal component."""
+    name = "test/latevirial"
+    can_virial = True
+    virial_default = True
+    virial_after = "final_integrate"
+
+    def setup(self, sim):
+        self.w = 3.0
+
+    def final_integrate(self, sim):
+        self.w = 3.0 * (sim.step + 1)
+
+    def virial(self, sim):
+        return (self.w, self.w, self.w, 0.0, 0.0, 0.0)
+
+
+def test_a_virial_after_final_integrate_enters_the_pressure_of_its_own_step(tmp_path):
+    """Particles at rest, no pair style: press = w / V, w the value final_integrate set this step
+    (read after post_force it would be the step before's)."""
+    registry.register("fix", LateVirial.name, LateVirial)
+    sim = build(tmp_path, [[1.0, 1.0, 1.0], [5.0, 5.0, 5.0]], setup="fix late all test/latevirial\nrun 0")
+    assert observables.pressure(sim) == pytest.approx(3.0 / 1000.0, rel=1e-14)
+    sim.command("thermo 1\nrun 4")
+    assert observables.pressure(sim) == pytest.approx(3.0 * 5 / 1000.0, rel=1e-14)
+    sim.command("fix_modify late virial no\nrun 2")
+    assert observables.pressure(sim) == 0.0

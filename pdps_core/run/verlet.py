@@ -148,6 +148,7 @@ class Verlet:
             self._forces(eflag=True, vflag=True)
             self._call("setup")
             self._fix_contributions()
+            self._fix_contributions("final_integrate")
         finally:
             sim.in_setup = False
         self._check_finite()
@@ -215,14 +216,15 @@ class Verlet:
         if sim.tally_atom:
             sim.tally_step = sim.step
 
-    def _fix_contributions(self):
-        """Fix energies and virials, where switched on, join the pair's (after post_force, when the
-        fixes' forces are known)."""
+    def _fix_contributions(self, stage="post_force"):
+        """Fix energies and virials, where switched on, join the pair's: after post_force, when the
+        fixes' forces are known, or, for a fix whose virial is complete only then (``virial_after =
+        "final_integrate"``: fix rigid's constraint forces of set_v), after final_integrate."""
         sim = self.sim
         for fix in self.contributing:
-            if sim.eflag and fix.thermo_energy:
+            if stage == "post_force" and sim.eflag and fix.thermo_energy:
                 sim.pe += float(fix.energy(sim))
-            if sim.vflag and fix.thermo_virial:
+            if sim.vflag and fix.thermo_virial and fix.virial_after == stage:
                 sim.virial += np.asarray(fix.virial(sim), dtype=np.float64)
 
     def _check_finite(self):
@@ -317,6 +319,7 @@ class Verlet:
             self._fix_contributions()
             self._check_finite()
             self._call("final_integrate")
+            self._fix_contributions("final_integrate")
             self._call("end_of_step")
             sim.output.write(step, last)
             if sim.restart_output is not None:
