@@ -147,6 +147,7 @@ class FixRigid(Fix):
              "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE]")
     can_virial = True
     virial_default = True
+    virial_after = "final_integrate"
     not_yet = NOT_YET
 
     class Args(StyleArgs):
@@ -501,6 +502,7 @@ class FixRigid(Fix):
         self._sum_force_torque(sim)
         omegas(self.angmom, self.ex, self.ey, self.ez, self.inertia, self.omega)
         self.step_virial[:] = 0.0
+        self.final_virial[:] = 0.0
         self._set_v(sim, self.step_virial, True)
         # LAMMPS's estimate of the setup virial: twice the set_v half
         self.step_virial *= 2.0
@@ -526,11 +528,7 @@ class FixRigid(Fix):
         self._sum_force_torque(sim)
         self.advance_final(sim)
         self.final_virial[:] = 0.0
-        tally = sim.vflag and self.thermo_virial
-        self._set_v(sim, self.final_virial, tally)
-        # the core read virial() after post_force, before this half existed: add it where it would be
-        if tally:
-            sim.virial += self.final_virial
+        self._set_v(sim, self.final_virial, sim.vflag and self.thermo_virial)
 
     def pre_neighbor(self, sim):
         self.atom_arrays = None
@@ -540,7 +538,8 @@ class FixRigid(Fix):
 
     # ---- thermo ---------------------------------------------------------------------------------
     def virial(self, sim):
-        return tuple(float(c) for c in self.step_virial)
+        """Both halves of the step's constraint virial (read after final_integrate)."""
+        return tuple(float(c) for c in self.step_virial + self.final_virial)
 
     def dof_removed(self, sim, group):
         if not self.set_up:
