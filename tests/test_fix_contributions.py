@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, ScriptError, observables, registry
+from pdps_core.api import Fix, ScriptError, SimulationError, observables, registry
 from pdps_core.testing import build, forces_by_tag, thermo_csv
 
 EPS, RC, L, KT, N = 50.0, 1.0, 10.0, 1.0, 1000
@@ -133,3 +133,35 @@ def test_a_virial_after_final_integrate_enters_the_pressure_of_its_own_step(tmp_
     assert observables.pressure(sim) == pytest.approx(3.0 * 5 / 1000.0, rel=1e-14)
     sim.command("fix_modify late virial no\nrun 2")
     assert observables.pressure(sim) == 0.0
+
+
+# ---- degrees of freedom a fix removes -------------------------------------------------------------
+class Constrain(Fix):
+    """Removes ``removed`` degrees of freedom from every group (a stand-in for constraints)."""
+    name = "test/constrain"
+    removed = 0
+
+    def dof_removed(self, sim, group):
+        return self.removed
+
+
+@pytest.mark.parametrize("removed, dof", [(0, 3), (3, 0)])
+def test_degrees_of_freedom_are_dn_less_d_less_what_fixes_remove(tmp_path, removed, dof):
+    registry.register("fix", Constrain.name, Constrain)
+    sim = build(tmp_path, [[1.0, 1.0, 1.0], [5.0, 5.0, 5.0]], setup="fix c all test/constrain")
+    sim.fixes["c"].removed = removed
+    assert observables.degrees_of_freedom(sim) == dof
+
+
+def test_fewer_than_zero_degrees_of_freedom_is_an_error_as_in_lammps(tmp_path):
+    """LAMMPS's compute temp stops with "Temperature compute degrees of freedom < 0" (a rigid dimer
+    of spheres: 6 - 3 - 6 = -3); an empty group has none and no error."""
+    registry.register("fix", Constrain.name, Constrain)
+    sim = build(tmp_path, [[1.0, 1.0, 1.0], [5.0, 5.0, 5.0]],
+                setup="fix c all test/constrain\ngroup nobody id 99\nthermo_style custom step temp")
+    sim.fixes["c"].removed = 6
+    with pytest.raises(SimulationError) as caught:
+        sim.command("run 0")
+    assert str(caught.value) == ("<command>:1: run: temperature of group all: degrees of freedom < 0 (3 x 2 particles "
+                                 "- 3 - 6 removed by fix c (test/constrain) 6 = -3)")
+    assert observables.degrees_of_freedom(sim, "nobody") == 0

@@ -14,6 +14,8 @@ form is what a LAMMPS user compares against. Sums run over owned particles and t
 import numpy as np
 from numba import njit
 
+from ..errors import SimulationError
+
 NO_RMASS = np.zeros(0)
 
 
@@ -55,11 +57,20 @@ def kinetic_energy(sim, group="all"):
 
 
 def degrees_of_freedom(sim, group="all"):
-    """d N - d, less what fixes remove (constraints, rigid bodies: ``Fix.dof_removed``)."""
+    """d N - d, less what fixes remove (constraints, rigid bodies: ``Fix.dof_removed``). Fewer than
+    0 for a group with particles is an error, as LAMMPS's compute temp ("Temperature compute degrees
+    of freedom < 0"): the fixes remove more than the group has; an empty group has 0."""
     d = sim.dimension
-    removed = sum(int(fix.dof_removed(sim, group)) for fix in sim.fixes.values()
-                  if hasattr(fix, "dof_removed"))
-    return max(d * count(sim, group) - d - removed, 0)
+    removing = [(fix, int(fix.dof_removed(sim, group))) for fix in sim.fixes.values()
+                if hasattr(fix, "dof_removed")]
+    members = count(sim, group)
+    removed = sum(n for _, n in removing)
+    dof = d * members - d - removed
+    if dof < 0 and members > 0:
+        fixes = ", ".join(f"fix {fix.id} ({fix.name}) {n}" for fix, n in removing if n)
+        raise SimulationError(f"temperature of group {group}: degrees of freedom < 0 ({d} x {members} particles "
+                              f"- {d} - {removed} removed by {fixes or 'no fix'} = {dof})")
+    return max(dof, 0)
 
 
 def temperature(sim, group="all"):
