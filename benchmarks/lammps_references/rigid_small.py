@@ -1,0 +1,114 @@
+"""Record what LAMMPS prints for fix rigid/small, rigid/nve/small and rigid/nvt/small (temp 0.5 0.4 1.0) on
+many small bodies of Lennard-Jones particles, the reference plugins/fix_rigid/tests/test_rigid_small_lammps.py
+compares pdps with.
+
+    python benchmarks/lammps_references/rigid_small.py [LMP]
+
+The scene (written here, deterministic, no random start in either program): 27 bodies of 3 to 5
+Lennard-Jones particles (molecule ids, atom_style molecular), randomly oriented on a 3x3x3 grid in a
+periodic box of 12 sigma, no two particles of different bodies closer than 1.05, one body straddling
+the x and y boundaries (image flags in the data file), with random particle velocities of spread 1
+(made rigid by each program's body setup: the bodies drift a few sigma over the run, across the
+periodic boundaries and, on 2 ranks, the sub-domain boundary) and interactions within a body
+excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100 steps over 10^4
+steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_small_lj.txt; the data
+file is plugins/fix_rigid/tests/data/rigid_small_lj.data.
+"""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
+STYLES = {"rigid/small": "", "rigid/nve/small": "", "rigid/nvt/small": " temp 0.5 0.4 1.0"}
+SCRIPT = """units lj
+atom_style molecular
+read_data rigid_small_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+timestep 0.001
+fix 1 all {style} molecule{extra}
+thermo_style custom step temp epair ke etotal press {columns}
+thermo_modify format float %20.15g
+thermo 100
+run {steps}
+"""
+# f_1: the bodies' temperature (rigid/small), LAMMPS's energy of rigid/nh/small (rigid/nve/small; rigid/nvt/small,
+# extensive, with the chains' energy)
+COLUMNS = {"rigid/small": "f_1", "rigid/nve/small": "f_1", "rigid/nvt/small": "f_1 ecouple econserve"}
+LENGTH = 12.0
+GRID = 3
+
+
+def centres():
+    spacing = LENGTH / GRID
+    points = [np.array([i, j, k]) * spacing + 0.5 * spacing for i in range(GRID) for j in range(GRID)
+              for k in range(GRID)]
+    points[0] = np.array([0.2, 11.9, 2.0])       # across the x and y boundaries
+    return points
+
+
+def body(rng, count):
+    """``count`` points within 1.3 of their centroid, no two closer than 0.95, randomly turned (the
+    draw of rigid.py's bodies; kept here so this scene does not change with that recorder)."""
+    while True:
+        points = rng.uniform(-1.0, 1.0, size=(count, 3))
+        distances = np.linalg.norm(points[:, None] - points[None], axis=2)[np.triu_indices(count, 1)]
+        if distances.min() > 0.95 and np.linalg.norm(points - points.mean(axis=0), axis=1).max() < 1.3:
+            return points - points.mean(axis=0)
+
+
+def periodic_gap(a, b):
+    """Smallest distance between the points of a and b under the periodic box."""
+    d = a[:, None] - b[None]
+    d -= LENGTH * np.round(d / LENGTH)
+    return np.linalg.norm(d, axis=2).min()
+
+
+def write_data(path):
+    rng = np.random.default_rng(20261124)
+    placed = []
+    for mol, centre in enumerate(centres(), start=1):
+        while True:
+            points = body(rng, 3 + mol % 3) + centre
+            if all(periodic_gap(points, other) > 1.05 for other in placed):
+                break
+        placed.append(points)
+    rows = []
+    tag = 0
+    for mol, points in enumerate(placed, start=1):
+        for point in points:
+            tag += 1
+            image = np.floor(point / LENGTH).astype(int)
+            rows.append((tag, mol, point - image * LENGTH, image, rng.normal(0.0, 1.0, size=3)))
+    lines = [f"fix rigid/small reference scene: {len(placed)} LJ bodies (benchmarks/lammps_references/rigid_small.py)",
+             "", f"{len(rows)} atoms", "1 atom types", "",
+             f"0 {LENGTH} xlo xhi", f"0 {LENGTH} ylo yhi", f"0 {LENGTH} zlo zhi", "", "Masses", "", "1 1.0", "",
+             "Atoms # molecular", ""]
+    lines += [f"{t} {m} 1 {x[0]:.17g} {x[1]:.17g} {x[2]:.17g} {i[0]} {i[1]} {i[2]}" for t, m, x, i, _ in rows]
+    lines += ["", "Velocities", ""]
+    lines += [f"{t} {v[0]:.17g} {v[1]:.17g} {v[2]:.17g}" for t, _, _, _, v in rows]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def script(style, steps=10000):
+    return SCRIPT.format(style=style, extra=STYLES[style], columns=COLUMNS[style], steps=steps)
+
+
+def main():
+    lmp = sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp")
+    DATA.mkdir(parents=True, exist_ok=True)
+    data = DATA / "rigid_small_lj.data"
+    write_data(data)
+    tables = {style: thermo_lines(run_lammps(lmp, script(style), [data], label=style)) for style in STYLES}
+    write_blocks(DATA / "rigid_small_lj.txt", tables)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,56 @@
+"""fix rigid/small, rigid/nve/small and rigid/nvt/small against LAMMPS (22 Jul 2025) on 27 small bodies of
+Lennard-Jones particles drifting across the periodic boundaries (one straddling x and y at the start):
+temperature, total energy, pressure (the constraint virial) and f_1 over 10^4 steps, recorded by
+benchmarks/lammps_references/rigid_small.py into tests/data/rigid_small_lj.txt; the same thermo on 1 and
+2 ranks, bodies crossing the ranks' boundary."""
+
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.testing import run_ranks, thermo_rows
+
+# the recorder's own scene and settings, so the test runs what LAMMPS ran
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
+from rigid_small import script  # noqa: E402
+
+DATA = Path(__file__).with_name("data")
+STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
+
+
+@pytest.mark.parametrize("style", STYLES)
+def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    done = pdps_cli(script(style), "-log", "none")
+    assert done.returncode == 0, done.stderr
+    ours = np.array(thermo_rows(done.stdout))
+    lammps = read_blocks(DATA / "rigid_small_lj.txt")[style]
+    assert ours.shape == lammps.shape
+    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
+    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
+    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
+    print(f"{style}: largest relative difference from LAMMPS over 1e4 steps: temp {temp:.1e}, "
+          f"etotal {etotal:.1e}, press {press:.1e} (of its largest value)")
+    assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits
+    assert press < 1e-5
+    # f_1: the bodies' temperature (rigid/small), the Hamiltonian's kinetic part (+ the chains' energy)
+    assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
+    if style == "rigid/nvt/small":
+        # ecouple and econserve (etotal + ecouple)
+        assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
+
+
+@pytest.mark.parametrize("style", STYLES)
+def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
+    """On 2 ranks bodies are owned by the rank of their owner particle, cross the ranks' boundary
+    and the periodic ones, and have particles on both ranks: the same thermo as on one."""
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    text = script(style, steps=3000)
+    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
+    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    assert one.shape == two.shape == (31, 9 if style == "rigid/nvt/small" else 7)
+    assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
