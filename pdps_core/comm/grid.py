@@ -75,6 +75,14 @@ class Decomposition:
         lo, length = self.box.lo, self.box.length
         return lo + length * c / self.grid, lo + length * (c + 1) / self.grid
 
+    def all_bounds(self):
+        """(lo, hi) of every rank's sub-domain, nprocs x 3 each."""
+        rank = np.arange(self.nprocs)
+        px, py, _ = self.grid
+        c = np.stack([rank % px, (rank // px) % py, rank // (px * py)], axis=1)
+        lo, length = np.asarray(self.box.lo, dtype=np.float64), np.asarray(self.box.length, dtype=np.float64)
+        return lo + length * c / self.grid, lo + length * (c + 1) / self.grid
+
     def owner(self, x):
         """Rank owning each position (n x 3), positions already wrapped into the box."""
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)

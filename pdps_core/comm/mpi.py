@@ -26,17 +26,34 @@ from .grid import Decomposition, choose_grid, rank_of_position
 
 
 @njit(cache=True)
-def ghost_sends(x, nlocal, sublo, subhi, cutghost, length, periodic, me, two_d, ranks, index, shift):
-    """(rank, particle, image shift) of every ghost this rank must send, in rank order: particle i,
-    displaced by a whole number of box lengths along periodic axes, inside rank r's sub-domain grown
-    by cutghost. Written into the buffers ``ranks, index, shift``; returns how many, or -1 when the
-    buffers are too small."""
+def _near_faces(x, nlocal, lo, hi, reach, two_d, near):
+    """Owned particles within ``reach`` of a face of this rank's sub-domain [lo, hi) (or outside it),
+    written into ``near``; returns how many. Only these can be anyone's ghost: a particle farther
+    from every face is farther than ``reach`` from every other sub-domain and periodic image."""
+    m = 0
+    dims = 2 if two_d else 3
+    for i in range(nlocal):
+        for d in range(dims):
+            if x[i, d] - lo[d] <= reach or hi[d] - x[i, d] <= reach:
+                near[m] = i
+                m += 1
+                break
+    return m
+
+
+@njit(cache=True)
+def ghost_sends(x, candidates, sublo, subhi, cutghost, length, periodic, me, two_d, ranks, index, shift):
+    """(rank, particle, image shift) of every ghost this rank must send, in rank order: particle i
+    (of ``candidates``), displaced by a whole number of box lengths along periodic axes, inside rank
+    r's sub-domain grown by cutghost. Written into the buffers ``ranks, index, shift``; returns how
+    many, or -1 when the buffers are too small."""
     capacity = len(ranks)
     k_lo = np.zeros(3, dtype=np.int64)
     k_hi = np.zeros(3, dtype=np.int64)
     m = 0
     for r in range(sublo.shape[0]):
-        for i in range(nlocal):
+        for c in range(len(candidates)):
+            i = candidates[c]
             empty = False
             for d in range(3):
                 lo = sublo[r, d] - cutghost
@@ -134,8 +151,11 @@ class MPIComm:
         self._ghost_rows = (np.zeros(0), np.zeros(0))       # borders' send and receive rows
         self._ghost_rank = self._ghost_index = np.zeros(0, dtype=np.int64)
         self._ghost_shift = np.zeros((0, 3))
+        self._near = np.zeros(0, dtype=np.int64)             # owned particles near a face
         self._gone = np.zeros(0, dtype=np.uint8)             # exchange's flags and lists
         self._leave_index = self._leave_dest = np.zeros(0, dtype=np.int64)
+        self._exchange_counts = np.zeros((self.nprocs, 2), dtype=np.int64)     # (rows, error flag)
+        self._exchange_received = np.zeros((self.nprocs, 2), dtype=np.int64)
 
     @property
     def is_root(self):
@@ -184,22 +204,28 @@ class MPIComm:
                     p.keep(np.flatnonzero(~gone))
             except SimulationError as exc:
                 message, count = exc.template, exc.count
-        self.agree(message, count)
         n = p.nlocal
         if len(self._gone) < n:
             size = n + n // 4 + 16
             self._gone = np.empty(size, dtype=np.uint8)
             self._leave_index, self._leave_dest = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
-        d = self.decomposition
-        m = _leavers(p.x, n, box.lo, box.length, d.grid, self.rank, self._gone, self._leave_index,
-                     self._leave_dest)
+        m = 0
+        if message is None:
+            m = _leavers(p.x, n, box.lo, box.length, self.decomposition.grid, self.rank, self._gone,
+                         self._leave_index, self._leave_dest)
         dest = self._leave_dest[:m]
+        # the counts to every rank carry this rank's error flag: one collective finds both
+        counts = self._exchange_counts
+        counts[:, 0] = np.bincount(dest, minlength=self.nprocs)
+        counts[:, 1] = message is not None
+        self.world.Alltoall(counts, self._exchange_received)
+        if self._exchange_received[:, 1].any():
+            self.agree(message, count)
         order = self._leave_index[:m][np.argsort(dest, kind="stable")]
-        counts = np.bincount(dest, minlength=self.nprocs)
         rows = p.pack(order)
         if m:
             p.remove(self._gone[:n])
-        arrived = self._alltoall_rows(rows, counts)
+        arrived = self._alltoall_rows(rows, counts[:, 0], self._exchange_received[:, 0])
         if len(arrived):
             p.append_owned(arrived)
 
@@ -210,12 +236,16 @@ class MPIComm:
         nlocal = p.nlocal
         m = 0
         if cutghost > 0:
-            bounds = [self.decomposition.bounds(r) for r in range(self.nprocs)]
-            sublo = np.array([b[0] for b in bounds])
-            subhi = np.array([b[1] for b in bounds])
+            sublo, subhi = self.decomposition.all_bounds()
             periodic = np.array(box.periodic, dtype=np.bool_)
+            if len(self._near) < nlocal:
+                self._near = np.empty(nlocal + nlocal // 4 + 16, dtype=np.int64)
+            # a margin of round-off: the test below decides, this one only skips the certain
+            reach = cutghost + 1e-9 * float(np.max(box.length))
+            near = self._near[:_near_faces(p.x, nlocal, sublo[self.rank], subhi[self.rank], reach,
+                                           box.dimension == 2, self._near)]
             while True:
-                m = ghost_sends(p.x, nlocal, sublo, subhi, cutghost, box.length, periodic, self.rank,
+                m = ghost_sends(p.x, near, sublo, subhi, cutghost, box.length, periodic, self.rank,
                                 box.dimension == 2, self._ghost_rank, self._ghost_index, self._ghost_shift)
                 if m >= 0:
                     break

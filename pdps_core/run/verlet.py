@@ -248,6 +248,10 @@ class Verlet:
         sim = self.sim
         distance, i = sim.neighbor.moved
         half_box = 0.5 * float(sim.box.length[: sim.dimension].min())
+        # every rank knows the largest move of all (the rebuild decision's maximum): the ranks
+        # agree on a message only when there is one, not with a collective on every rebuild
+        if sim.neighbor.moved_at_build <= half_box:
+            return
         message = None
         if distance > half_box and i >= 0:
             message = (f"particle {int(sim.particles.tag[i])} moved {distance:.3g} since the last neighbor "
