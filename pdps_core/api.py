@@ -95,6 +95,7 @@ CONTRACT = {
         "omega": "(nall, 3) when requested", "torque": "(nall, 3) when requested",
         "molecule": "(nall,) int64 molecule ids (0: none), with particle_style molecular, bond, angle, full",
         "q": "(nall,) charges, with particle_style charge, full",
+        "body_mass": "(nall,) when a fix of rigid bodies provides it (sphere styles): the mass of each particle's body, 0 for particles in none; granular contacts take it for the effective mass (LAMMPS's mass_rigid)",
         "arrays": "{name: array} of every per-atom array, custom ones included",
         "request": "request(name, width=, dtype=, default=, ghost=): allocate a per-atom array (ghost=False: ghosts do not carry it)",
         "has": "has(name): whether a per-atom array exists",
