@@ -97,7 +97,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args
-from pdps_granular_contact import lammps_classic
+from pdps_granular_contact import contact_models, lammps_classic
 from pdps_granular_contact.lammps_classic import NullableFloat
 
 FAR = 1.0e20                    # a NULL plane, as LAMMPS's BIG
@@ -151,7 +151,7 @@ def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, ma
 
 
 @njit(cache=True)
-def wall_gran_forces(x, v, omega, radius, rmass, f, torque, near, count, wallstyle, lo,
+def wall_gran_forces(x, v, omega, radius, rmass, body_mass, f, torque, near, count, wallstyle, lo,
                      hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
                      limit_damping, dt, update, history, d, n, vw, vtr, tangential):
     """Wall forces and torques on the particles ``near[:count]``. ``spin``: surface speed of a
@@ -200,7 +200,8 @@ def wall_gran_forces(x, v, omega, radius, rmass, f, torque, near, count, wallsty
         vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
         vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
         shear = history[i] if with_history else history[0]
-        fn = lammps_classic.classic_contact(model, True, radius[i] - r, r_eff, n, v_n, vtr, rmass[i], kn, kt,
+        m_eff = contact_models.contact_mass(rmass, body_mass, i)
+        fn = lammps_classic.classic_contact(model, True, radius[i] - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
                                             gamma_n, gamma_t, xmu, limit_damping, update, dt, shear,
                                             tangential)
         for k in range(3):
@@ -332,7 +333,8 @@ class FixWallGran(Fix):
         else:
             lo, hi, velocity, spin = self.lo, self.hi, self._still, 0.0
         history = a[self.spring] if self.spring else self._no_history
-        wall_gran_forces(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["f"], a["torque"], self._near,
+        wall_gran_forces(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
+                         a.get("body_mass", contact_models.NO_BODY_MASS), a["f"], a["torque"], self._near,
                          self._count, self.wallstyle, lo, hi, self.cylinder, velocity, spin, self.model,
                          self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, sim.dt,
                          update, history, *self._scratch)

@@ -34,9 +34,22 @@ place, and returns :math:`F_n`.
 
 import math
 
+import numpy as np
 from numba import njit
 
 HERTZ_DAMPING = 2.0 * math.sqrt(5.0 / 6.0)
+# body_mass where no fix provides it
+NO_BODY_MASS = np.zeros(0)
+
+
+@njit(cache=True, inline="always")
+def contact_mass(rmass, body_mass, i):
+    """The mass particle i brings to a contact's effective mass: its rigid body's where a fix of
+    rigid bodies provides ``body_mass`` and i is in a body (> 0), else its own (LAMMPS's pair gran/*,
+    pair granular and fix wall/gran with mass_rigid from fix rigid's extract("masstotal"))."""
+    if len(body_mass) > 0 and body_mass[i] > 0.0:
+        return body_mass[i]
+    return rmass[i]
 
 
 @njit(cache=True)

@@ -175,7 +175,7 @@ def first_coincident(x, radius, offsets, neighbors, nlocal):
 
 
 @njit(cache=True)
-def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, offsets, neighbors,
+def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag, owner, offsets, neighbors,
                     nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
                     log_pairs, log_force, logged, n, vrel, shear, force):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
@@ -205,7 +205,9 @@ def contact_compute(x, v, omega, radius, rmass, f, torque, type_, tag, owner, of
                 continue
             tj = type_[j]
             contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel)
-            m_star = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
+            m_i = contact_models.contact_mass(rmass, body_mass, i)
+            m_j = contact_models.contact_mass(rmass, body_mass, j)
+            m_star = m_i * m_j / (m_i + m_j)
             slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
@@ -392,7 +394,8 @@ class GranularPair(Pair):
         a = p.arrays
         if self._law is None:
             self._law = self.law_table()
-        return contact_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["f"], a["torque"], a["type"],
+        return contact_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
+                               a.get("body_mass", contact_models.NO_BODY_MASS), a["f"], a["torque"], a["type"],
                                a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.hertz, self._law,
                                sim.dt, update, self.args.limit_damping, partner, values, touched,
                                *self.contact_log(nlist), *self._scratch)

@@ -87,7 +87,7 @@ def store_spring(history, owner, i, j, slot_i, slot_j, shear):
 
 
 @njit(cache=True)
-def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offsets, neighbors, nlocal,
+def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, owner, offsets, neighbors, nlocal,
                  model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
                  partner, history, touched, n, vtr, shear, tangential):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
@@ -124,11 +124,13 @@ def gran_compute(x, v, omega, radius, rmass, mask, f, torque, tag, owner, offset
             vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
             vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
             vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-            m_eff = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
+            m_i = contact_models.contact_mass(rmass, body_mass, i)
+            m_j = contact_models.contact_mass(rmass, body_mass, j)
+            m_eff = m_i * m_j / (m_i + m_j)
             if mask[i] & freeze_bit:
-                m_eff = rmass[j]
+                m_eff = m_j
             if mask[j] & freeze_bit:
-                m_eff = rmass[i]
+                m_eff = m_i
             slot_i, slot_j = -1, -1
             if with_history:
                 slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
@@ -298,7 +300,8 @@ class PairGran(Pair):
         touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
         offsets, neighbors = nlist.offsets, nlist.neighbors
         a = p.arrays
-        bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["mask"], a["f"], a["torque"],
+        bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
+                           a.get("body_mass", contact_models.NO_BODY_MASS), a["mask"], a["f"], a["torque"],
                            a["tag"], owner, offsets, neighbors, p.nlocal, self.model, self.kn, self.kt,
                            self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, self.freeze_bit,
                            sim.dt, update, partner, values, touched, *self._scratch)
