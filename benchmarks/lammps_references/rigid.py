@@ -17,7 +17,10 @@ spheres under fix nve, all falling under fix gravity along a slanted vector, 500
 ``plane``: a 2-d box (fix enforce2d) with a triangle, a dimer and a dimer of particles near the two x
 faces (image flags 0: the body spans the box, as LAMMPS reads it) pushed by fix addforce, one with its torque off (torque 2 off off on keeps z, as 2d needs),
 beside a free particle, 3000 steps. A fourth, ``infile``: the clumps with masses, inertia tensors,
-velocities and angular momenta from plugins/fix_rigid/tests/data/rigid_bodies.txt.
+velocities and angular momenta from plugins/fix_rigid/tests/data/rigid_bodies.txt. A fifth,
+``collide``: three clumps of 2 to 4 spheres and two free spheres falling onto a wall/gran floor and
+onto each other through gran/hooke/history, 3000 steps: contacts of a clump take the body's mass for
+their effective mass (LAMMPS's mass_rigid in pair gran/* and fix wall/gran).
 """
 
 import sys
@@ -114,6 +117,51 @@ thermo_modify format float %20.15g
 thermo 500
 run 3000
 """
+COLLIDE = """units lj
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 6 0 6 0 12
+create_box 1 box
+create_atoms 1 single 3.0 3.0 1.0
+create_atoms 1 single 3.7 3.1 1.0
+create_atoms 1 single 2.8 3.2 2.3
+create_atoms 1 single 3.4 2.7 2.5
+create_atoms 1 single 3.2 3.5 2.9
+create_atoms 1 single 3.3 3.0 4.0
+create_atoms 1 single 3.9 3.2 4.3
+create_atoms 1 single 3.5 3.6 4.6
+create_atoms 1 single 3.1 3.4 4.9
+create_atoms 1 single 2.0 2.2 3.6
+create_atoms 1 single 4.4 4.0 5.8
+set atom 1*2 diameter 1.0
+set atom 3*5 diameter 0.8
+set atom 6*9 diameter 0.7
+set atom 10*11 diameter 0.9
+set atom * density 1.2
+group a id 1:2
+group b id 3:5
+group c id 6:9
+group free id 10:11
+velocity a set 0.2 -0.1 -0.5
+velocity b set -0.1 0.2 -1.0
+velocity c set 0.1 0.0 -1.5
+velocity free set 0.4 0.3 -0.8
+neigh_modify exclude group a a
+neigh_modify exclude group b b
+neigh_modify exclude group c c
+pair_style gran/hooke/history 20000.0 NULL 30.0 NULL 0.5 1
+pair_coeff * *
+timestep 0.0002
+fix 1 all rigid/nve group 3 a b c
+fix 2 free nve/sphere
+fix 3 all gravity 5.0 vector 0 0 -1
+fix 4 all wall/gran hooke/history 20000.0 NULL 30.0 NULL 0.5 1 zplane 0.0 NULL
+thermo_style custom step f_1 f_1[1][3] f_1[2][3] f_1[3][3] f_1[1][4] f_1[2][5] f_1[3][6] f_1[1][10] f_1[2][11] f_1[3][12]
+thermo_modify format float %20.15g
+thermo 100
+run 3000
+"""
 
 
 def body(rng, count):
@@ -157,6 +205,7 @@ def main():
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))
+    tables["collide"] = thermo_lines(run_lammps(lmp, COLLIDE, label="collide"))
     write_blocks(DATA / "rigid_lj.txt", tables)
 
 

@@ -29,7 +29,10 @@ the line is 0; 2N - 3 in 2d; a finite-size sphere counts 6 to start with). The c
 enter the pressure (LAMMPS's virial of fix rigid, on by default; ``fix_modify ID virial no`` drops
 it): f_c = m (v_new - v_old) / (dt/2) - f on each particle of a body, half of r (x) f_c from each
 half of the step. Forces between particles of one body do not move it: exclude them with
-``neigh_modify exclude molecule/intra GROUP`` (or ``exclude group``) to save their cost.
+``neigh_modify exclude molecule/intra GROUP`` (or ``exclude group``) to save their cost. With
+finite-size spheres (clumps), each particle's ``body_mass`` is its body's mass: granular contacts
+(pair gran/*, dem/lsd, dem/hertz, fix wall/gran) take it for their effective mass, as LAMMPS's pair
+gran and fix wall/gran take fix rigid's masstotal.
 
 Body temperature (``f_ID``, intensive): sum (M V^2 + sum_k I_k omega_k^2) / (N_free k_B), N_free the
 force and torque components left on, less 1 per linear body in 3d (LAMMPS subtracts it from its
@@ -192,6 +195,9 @@ class FixRigid(Fix):
         self.displace_name = f"rigid_displace_{id}"
         body = p.request(self.body_name, dtype=np.int64, default=-1, ghost=False)
         p.request(self.displace_name, width=3, ghost=False)
+        if p.has("rmass"):
+            # granular contacts take a clump's mass for their effective mass (LAMMPS's mass_rigid)
+            p.request("body_mass")
         n = p.nlocal
         body[:] = -1
         self.nbody = self._assign(sim, body[:n])
@@ -399,6 +405,8 @@ class FixRigid(Fix):
         self.image_body[:] = 0
         for b, row in self.from_file.items():
             self.masstotal[b], self.xcm[b], self.image_body[b] = row[0], row[1:4], row[16:19]
+        if p.has("body_mass"):
+            p.arrays["body_mass"][:n][mine] = self.masstotal[body[:n][mine]]
         bodies.remap_centres(self.xcm, self.image_body, np.asarray(sim.box.lo, dtype=np.float64),
                              np.asarray(sim.box.hi, dtype=np.float64), length, periodic)
         if not self.set_up:

@@ -3,6 +3,8 @@ inertia, their contact torques in the body's) fall under gravity onto a wall/gra
 gran/hooke/history contacts, contacts within a clump excluded. They settle without interpenetrating,
 and 2 ranks run what 1 runs (to round-off through the first impacts; the settled bed alike after)."""
 
+import math
+
 import numpy as np
 import pytest
 
@@ -123,3 +125,63 @@ def test_two_ranks_run_what_one_runs(runs):
     heights = [float(runs[ranks][3][:, 2].mean()) for ranks in (1, 2)]
     print(f"settled bed's mean height: {heights[0]:.4f} (1 rank), {heights[1]:.4f} (2 ranks)")
     assert heights[1] == pytest.approx(heights[0], rel=0.05)
+
+
+# ---- contacts between clumps take the bodies' masses -------------------------------------------------
+HEAD_ON = """units lj
+atom_style sphere
+boundary f p p
+comm_modify vel yes
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 single {a1} 5 5
+create_atoms 1 single {a2} 5 5
+set atom * diameter 1.0 density 1.9098593171027440
+group a id 1:2
+velocity a set -0.5 0 0
+neigh_modify exclude group a a
+{second}
+timestep 0.00001
+fix 1 all rigid/nve group {nbody} {groups}
+{contact}
+thermo_style custom step f_1
+run {steps}
+"""
+KN, GAMMA_N = 2000.0, 19.1
+
+
+def restitution(m_eff, body_mass):
+    """A linear spring kn with dashpot m_eff gamma_n on a relative coordinate of inertia body_mass:
+    body_mass d'' = -kn d - m_eff gamma_n d', which ends (d = 0) after half a damped period with
+    the rebound speed e times the impact speed, e = exp(-zeta pi / omega_d)."""
+    zeta = 0.5 * GAMMA_N * m_eff / body_mass
+    omega_d = math.sqrt(KN / body_mass - zeta * zeta)
+    return math.exp(-zeta * math.pi / omega_d)
+
+
+@pytest.mark.parametrize("target", ["clump", "wall"])
+def test_a_clump_bounces_with_the_restitution_of_its_body_mass(make_sim, target):
+    """Dimers of unit-mass spheres (body mass 2) meet head-on along their axis through gran/hooke
+    (a second dimer coming the other way: effective mass 2 x 2 / 4 = 1, inertia of the relative
+    motion 1) or wall/gran hooke (effective mass 2): the rebound speed is e times the impact speed,
+    e from the body masses (LAMMPS's mass_rigid), 0.503 and 0.370, where the particles' masses would
+    give 0.714 and 0.619. LAMMPS 22 Jul 2025 prints the same rebound speeds to all 15 digits
+    (0.251622820266156 and 0.184801197332536); the analytic e holds to the step on which the contact ends: the dashpot stops within
+    one step, gamma_n dt / (2 e) = 2.6e-4 of the rebound at most."""
+    if target == "clump":
+        script = HEAD_ON.format(a1=5.25, a2=5.75, nbody=2, groups="a b", steps=20000, second=(
+            "create_atoms 1 single 4.2 5 5\ncreate_atoms 1 single 3.7 5 5\n"
+            "set atom 3*4 diameter 1.0 density 1.9098593171027440\n"
+            "group b id 3:4\nvelocity b set 0.5 0 0\nneigh_modify exclude group b b"),
+            contact=f"pair_style gran/hooke {KN} NULL {GAMMA_N} NULL 0.5 0\npair_coeff * *")
+        expected, particles = restitution(1.0, 1.0), restitution(0.5, 1.0)
+    else:
+        script = HEAD_ON.format(a1=0.55, a2=1.05, nbody=1, groups="a", steps=25000, second="",
+                                contact=f"fix 2 all wall/gran hooke {KN} NULL {GAMMA_N} NULL 0.5 0 xplane 0.0 NULL")
+        expected, particles = restitution(2.0, 2.0), restitution(1.0, 2.0)
+    sim = make_sim()
+    sim.command(script)
+    rebound = float(sim.fixes["1"].vcm[0, 0]) / 0.5
+    print(f"{target}: e = {rebound:.6f}, analytic for the body mass {expected:.6f} "
+          f"({rebound / expected - 1:.1e}), for the particles' mass {particles:.6f}")
+    assert rebound == pytest.approx(expected, rel=3e-4)

@@ -15,7 +15,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from rigid import CLUMPS, INFILE, PLANE, STYLES  # noqa: E402
+from rigid import CLUMPS, COLLIDE, INFILE, PLANE, STYLES  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 SCRIPT = """units lj
@@ -68,15 +68,18 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
 
 
-@pytest.mark.parametrize("scene", ["clumps", "plane", "infile"])
+@pytest.mark.parametrize("scene", ["clumps", "plane", "infile", "collide"])
 def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     """Clumps of finite-size spheres (their own inertia, 6 degrees of freedom each) beside free
     spheres, falling under gravity; 2-d bodies (3 degrees of freedom each, one spanning the box
     with image flags 0, one with its torque off) under a constant force: temperature, pressure and the bodies'
     values (f_1: their temperature, with 2d's components) as LAMMPS's; the clumps again with masses,
-    inertia and motion from an infile."""
+    inertia and motion from an infile; clumps and free spheres colliding with one another and a
+    wall/gran floor, each contact of a clump with its body's mass in the effective mass (LAMMPS's
+    mass_rigid; 2e-7 of each column's largest value over 3000 steps, round-off amplified through
+    the contacts from step 2200 on)."""
     shutil.copy(DATA / "rigid_bodies.txt", tmp_path)
-    done = pdps_cli({"clumps": CLUMPS, "plane": PLANE, "infile": INFILE}[scene], "-log", "none")
+    done = pdps_cli({"clumps": CLUMPS, "plane": PLANE, "infile": INFILE, "collide": COLLIDE}[scene], "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
     lammps = reference(scene)
