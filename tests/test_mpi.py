@@ -8,6 +8,7 @@ import subprocess
 import sys
 import textwrap
 
+import numpy as np
 import pytest
 
 from pdps_core.testing import bench_data as write_bench_data
@@ -207,6 +208,37 @@ def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
     outputs = {ranks: thermo(run(tmp_path, script, ranks).stdout) for ranks in (1, 2, 4)}
     assert len(outputs[1]) == 6
     assert outputs[1] == outputs[2] == outputs[4]
+
+
+def test_shardlow_in_a_box_thinner_than_two_cutoffs_sweeps_alike_on_1_2_and_4_ranks(tmp_path):
+    """Along z (1.5 cutoffs) many pairs meet through two periodic images, swept by the component of
+    their separation a box length apart. Deciding by round-off in the others (which differs between
+    ranks) parted 1 and 2 ranks by 1e-7 in the temperature at step 5 and 1e-3 at step 40."""
+    script = """
+        region box block 0 8 0 8 0 1.5
+        create_box 1 box
+        mass 1 1
+        create_particle 1 random_no_overlap 288 box 0.0 7
+        pair_style dpd/fdt 1.0 1.0 4321
+        pair_coeff * * 25.0 4.5 1.0
+        velocity all create 1.0 5 gaussian
+        fix 1 all shardlow
+        fix 2 all nve
+        timestep 0.04
+        thermo 5
+        thermo_style custom step temp press
+        thermo_modify format float %.15g
+        run 40
+    """
+    outputs = {}
+    for ranks in (1, 2, 4):
+        result = run(tmp_path, script, ranks)
+        assert result.returncode == 0, result.stderr
+        outputs[ranks] = np.array([[float(w) for w in line.split()] for line in thermo(result.stdout)])
+    assert outputs[1].shape == (9, 3)
+    for ranks in (2, 4):
+        # chaos grows round-off from 1e-16 to about 1e-14 over 40 steps
+        assert np.allclose(outputs[ranks], outputs[1], rtol=1e-10, atol=0), ranks
 
 
 SWEEP_SHARES = """

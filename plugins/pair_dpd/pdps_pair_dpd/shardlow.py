@@ -60,7 +60,8 @@ pair belongs to one *block* of 2 x 2 x 2 cells, the one whose lowest cell along 
 of them. Blocks are swept colour by colour (the parity of the block's cell along x, y and z: 8
 colours, 4 in 2-d); two blocks of one colour share no particle, so their order does not matter, and
 within a block the pairs are swept in the order of their (lower, higher) particle ids (the two
-periodic images of one pair in a box shorter than two cutoffs by their separations). Each rank
+periodic images of one pair in a box shorter than two cutoffs by the component of their separation
+along which they lie a box length apart, never by round-off in the others). Each rank
 sweeps the blocks whose first cell's centre lies in its sub-domain: the pairs of its half list go
 to the block's rank, and before each colour every particle's owner sends its velocity where that
 colour's block of the particle is swept and takes the result back. (LAMMPS sweeps sub-box by
@@ -208,27 +209,29 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
 
 
 @njit(cache=True)
-def _after(qa, qb, qs, a0, a1, s0, s1, s2):
+def _after(qa, qb, qs, a0, a1, s0, s1, s2, apart):
     """Pair q comes after pair (a0, a1) in a block: by ids, then, for the same two particles met
-    through two periodic images (a box shorter than two cutoffs), by their separation, whose
-    components differ by a box length there, so round-off cannot swap them on other ranks."""
+    through two periodic images (a box shorter than two cutoffs), by their separation along the
+    first axis where the images lie a box length apart (more than ``apart``). The images' other
+    components are equal but for round-off, which differs between ranks: they must not decide."""
     if qa != a0:
         return qa > a0
     if qb != a1:
         return qb > a1
-    if qs[0] != s0:
+    if abs(qs[0] - s0) > apart:
         return qs[0] > s0
-    if qs[1] != s1:
+    if abs(qs[1] - s1) > apart:
         return qs[1] > s1
     return qs[2] > s2
 
 
 @njit(cache=True)
-def sweep_order(key, ends, ids, separation, nkeys):
+def sweep_order(key, ends, ids, separation, nkeys, apart):
     """The pairs in sweep order, as copies: by key (colour, then block: a stable counting sort that
     writes each pair to its place, reading the pairs in memory order), then within a key by their
-    tags (a block holds a few dozen pairs: insertion sort). Returns the sorted ends, tags and
-    separations, and where each key's pairs start."""
+    tags (a block holds a few dozen pairs: insertion sort), two images of one pair by the component
+    of their separation that differs by more than ``apart`` (half the shortest periodic box
+    length). Returns the sorted ends, tags and separations, and where each key's pairs start."""
     m = len(key)
     first = np.zeros(nkeys + 1, dtype=np.int64)
     for k in range(m):
@@ -253,7 +256,8 @@ def sweep_order(key, ends, ids, separation, nkeys):
             e0, e1 = sorted_ends[p, 0], sorted_ends[p, 1]
             s0, s1, s2 = sorted_separation[p, 0], sorted_separation[p, 1], sorted_separation[p, 2]
             q = p - 1
-            while q >= lo and _after(sorted_ids[q, 0], sorted_ids[q, 1], sorted_separation[q], a0, a1, s0, s1, s2):
+            while q >= lo and _after(sorted_ids[q, 0], sorted_ids[q, 1], sorted_separation[q], a0, a1, s0, s1, s2,
+                                     apart):
                 sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = sorted_ids[q, 0], sorted_ids[q, 1]
                 sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = sorted_ends[q, 0], sorted_ends[q, 1]
                 for d in range(3):
@@ -355,7 +359,7 @@ class FixShardlow(Fix):
         sweep = (pair.cut, pair.gamma, pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
         if comm.nprocs == 1:
             self.pairs_swept = len(ends)
-            ends, ids, separation, _ = sweep_order(keys, ends, ids, separation, 8 * nblocks)
+            ends, ids, separation, _ = sweep_order(keys, ends, ids, separation, 8 * nblocks, self._apart(sim))
             sweep_pairs(p.v, inv_mass, p.type, ends, ids, separation, 0, len(ends), *sweep)
             return
         self._sweep_in_parallel(sim, ends, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
@@ -395,7 +399,8 @@ class FixShardlow(Fix):
             types[numbers[m_local:, column]] = incoming[:, 5 + column].astype(types.dtype)
             inverse[numbers[m_local:, column]] = incoming[:, 7 + column]
         self.pairs_swept = len(ids)          # this rank's share of the step's sweep
-        numbers, ids, separation, first = sweep_order(keys, numbers, ids, separation, 8 * nblocks)
+        numbers, ids, separation, first = sweep_order(keys, numbers, ids, separation, 8 * nblocks,
+                                                       self._apart(sim))
         # velocities travel: each owner sends a particle's velocity, with its itinerary (the rank of
         # each colour's block), to where the first colour sweeps it; after each colour it moves on
         # to the next colour's rank, and after the last back home. Most never leave their owner.
@@ -426,6 +431,14 @@ class FixShardlow(Fix):
                 sweep_pairs(velocities, inverse, types, numbers, ids, separation, first[c * nblocks],
                             first[(c + 1) * nblocks], *sweep)
         p.v[:n] = velocities[:n]
+
+    @staticmethod
+    def _apart(sim):
+        """Half the shortest periodic box length: two images of a pair differ by at least a box
+        length in some component of their separation, round-off by far less."""
+        box = sim.box
+        lengths = [box.length[d] for d in range(sim.dimension) if box.periodic[d]]
+        return 0.5 * float(min(lengths)) if lengths else math.inf
 
     def _block_ranks(self, sim, ncell):
         """The rank sweeping each block: the one whose sub-domain holds the centre of the block's
