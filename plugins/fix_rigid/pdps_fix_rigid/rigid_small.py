@@ -259,7 +259,7 @@ class FixRigidSmall(Fix):
             p.request(self.state_name, width=STATE)
             p.request(self.sums_name, width=6)
         members = sim.groups.select(sim, group)
-        self.nbody = int(sim.comm.sum(len(np.unique(p.molecule[: p.nlocal][members]))))
+        self.nbody = 0              # counted when the bodies are set up
         if sim.comm.sum(int(members.sum())) == 0:
             raise ScriptError(f"fix {id}: no particles in group {group} to make rigid bodies of")
         self._check_other_fixes(sim, members)
@@ -358,7 +358,7 @@ class FixRigidSmall(Fix):
             columns.append(a["radius"][members][:, None])
         if spinning:
             columns.append(a["omega"][members])
-        rows = np.hstack(columns) if len(members) else np.zeros((0, 9 + spheres + 3 * spinning))
+        rows = np.hstack(columns) if len(members) else np.zeros((0, 10 + spheres + 3 * spinning))
         ranks = (p.molecule[members] % sim.comm.nprocs).astype(np.int64)
         received, came_from = sim.comm.send_rows(rows, ranks)
         answers, problem, extent = self._bodies_of(sim, received, spheres, spinning, length, periodic)
