@@ -140,19 +140,14 @@ def _block_axis(ca, cb, n, periodic):
 
 @njit(cache=True)
 def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets, neighbors, nlocal, cut, ncell,
-                  periodic, block_rank, me):
+                  periodic, block_rank, me, ends, ids, separation, key, away, away_rank):
     """The pairs this rank's half list holds within the cutoff, both particles in the group, split by
-    the rank sweeping their block. Those swept here: the ``owner`` row of each end (the lower tag's
-    first; -1 for a particle owned by another rank), their tags, the separation from the higher- to
-    the lower-tag particle, the sweep key (colour, then block). Those swept elsewhere: rows (lower
-    tag, higher tag, separation (3), types (2), inverse masses (2), key) and their rank."""
-    total = offsets[nlocal]
-    ends = np.empty((total, 2), dtype=np.int64)
-    ids = np.empty((total, 2), dtype=np.int64)
-    separation = np.empty((total, 3))
-    key = np.empty(total, dtype=np.int64)
-    away = np.empty((0, 10))
-    away_rank = np.empty(0, dtype=np.int64)
+    the rank sweeping their block. Those swept here, written into ``ends, ids, separation, key``
+    (at least as long as the list): the ``owner`` row of each end (the lower tag's first; -1 for a
+    particle owned by another rank), their tags, the separation from the higher- to the lower-tag
+    particle, the sweep key (colour, then block). Those swept elsewhere: rows (lower tag, higher
+    tag, separation (3), types (2), inverse masses (2), key) and their rank, into ``away,
+    away_rank``, grown here when too short. Returns (pairs here, away, away_rank, pairs away)."""
     nblocks = ncell[0] * ncell[1] * ncell[2]
     m = 0
     sent = 0
@@ -205,7 +200,7 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
             separation[m, 2] = sign * delz
             key[m] = sweep_key
             m += 1
-    return ends[:m], ids[:m], separation[:m], key[:m], away[:sent], away_rank[:sent]
+    return m, away, away_rank, sent
 
 
 @njit(cache=True)
@@ -226,29 +221,30 @@ def _after(qa, qb, qs, a0, a1, s0, s1, s2, apart):
 
 
 @njit(cache=True)
-def sweep_order(key, ends, ids, separation, nkeys, apart):
-    """The pairs in sweep order, as copies: by key (colour, then block: a stable counting sort that
-    writes each pair to its place, reading the pairs in memory order), then within a key by their
-    tags (a block holds a few dozen pairs: insertion sort), two images of one pair by the component
-    of their separation that differs by more than ``apart`` (half the shortest periodic box
-    length). Returns the sorted ends, tags and separations, and where each key's pairs start."""
+def sweep_order(key, ends, ids, separation, nkeys, apart, sorted_ends, sorted_ids, sorted_separation, first):
+    """The pairs in sweep order, written into ``sorted_ends, sorted_ids, sorted_separation``: by key
+    (colour, then block: a stable counting sort that writes each pair to its place, reading the
+    pairs in memory order), then within a key by their tags (a block holds a few dozen pairs:
+    insertion sort), two images of one pair by the component of their separation that differs by
+    more than ``apart`` (half the shortest periodic box length). ``first`` (nkeys + 1) gets where
+    each key's pairs start."""
     m = len(key)
-    first = np.zeros(nkeys + 1, dtype=np.int64)
+    first[:] = 0
     for k in range(m):
         first[key[k] + 1] += 1
     for k in range(nkeys):
         first[k + 1] += first[k]
-    sorted_ends = np.empty_like(ends)
-    sorted_ids = np.empty_like(ids)
-    sorted_separation = np.empty_like(separation)
-    fill = first[:-1].copy()
     for k in range(m):
-        slot = fill[key[k]]
-        fill[key[k]] = slot + 1
+        slot = first[key[k]]
+        first[key[k]] = slot + 1
         sorted_ends[slot, 0], sorted_ends[slot, 1] = ends[k, 0], ends[k, 1]
         sorted_ids[slot, 0], sorted_ids[slot, 1] = ids[k, 0], ids[k, 1]
         for d in range(3):
             sorted_separation[slot, d] = separation[k, d]
+    # each key's start moved to the next key's: shift back
+    for k in range(nkeys, 0, -1):
+        first[k] = first[k - 1]
+    first[0] = 0
     for c in range(nkeys):
         lo, hi = first[c], first[c + 1]
         for p in range(lo + 1, hi):
@@ -266,7 +262,6 @@ def sweep_order(key, ends, ids, separation, nkeys, apart):
             sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = a0, a1
             sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = e0, e1
             sorted_separation[q + 1, 0], sorted_separation[q + 1, 1], sorted_separation[q + 1, 2] = s0, s1, s2
-    return sorted_ends, sorted_ids, sorted_separation, first
 
 
 @njit(cache=True)
@@ -352,18 +347,52 @@ class FixShardlow(Fix):
         nlist = sim.pair_list
         table = self._block_ranks(sim, ncell)
         owner = comm.owners(p)
-        inv_mass = 1.0 / (p.rmass[:everyone] if p.has("rmass") else sim.mass[p.type[:everyone]])
-        ends, ids, separation, keys, outgoing, rank = collect_pairs(
+        inv_mass = self._inverse_masses(sim, everyone)
+        buffers = self._pair_buffers(nlist.offsets[n], 8 * nblocks + 1)
+        ends, ids, separation, keys = buffers[:4]
+        m, self._away, self._away_rank, sent = collect_pairs(
             p.x, p.type, p.tag, cell, owner, inv_mass, p.mask, sim.groups.bit(self.group), nlist.offsets,
-            nlist.neighbors, n, pair.cut, ncell, periodic, table, comm.rank)
+            nlist.neighbors, n, pair.cut, ncell, periodic, table, comm.rank, ends, ids, separation, keys,
+            self._away, self._away_rank)
+        ends, ids, separation, keys = ends[:m], ids[:m], separation[:m], keys[:m]
         sweep = (pair.cut, pair.gamma, pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
         if comm.nprocs == 1:
-            self.pairs_swept = len(ends)
-            ends, ids, separation, _ = sweep_order(keys, ends, ids, separation, 8 * nblocks, self._apart(sim))
-            sweep_pairs(p.v, inv_mass, p.type, ends, ids, separation, 0, len(ends), *sweep)
+            self.pairs_swept = m
+            sorted_ends, sorted_ids, sorted_separation, first = buffers[4:]
+            sweep_order(keys, ends, ids, separation, 8 * nblocks, self._apart(sim), sorted_ends, sorted_ids,
+                        sorted_separation, first)
+            sweep_pairs(p.v, inv_mass, p.type, sorted_ends, sorted_ids, sorted_separation, 0, m, *sweep)
             return
-        self._sweep_in_parallel(sim, ends, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
-                                table, sweep)
+        self._sweep_in_parallel(sim, ends, ids, separation, keys, self._away[:sent], self._away_rank[:sent],
+                                inv_mass, ncell, periodic, table, sweep)
+
+    def _pair_buffers(self, pairs, nfirst):
+        """The pair arrays of the sweep, kept between steps and grown by a quarter when too short:
+        (ends, ids, separation, key) as collected, their sorted copies, and the key starts."""
+        kept = getattr(self, "_buffers", None)
+        if kept is None or len(kept[0]) < pairs or len(kept[7]) < nfirst:
+            size = max(pairs + pairs // 4 + 64, len(kept[0]) if kept is not None else 0)
+            kept = (np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
+                    np.empty((size, 3)), np.empty(size, dtype=np.int64),
+                    np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
+                    np.empty((size, 3)), np.empty(nfirst, dtype=np.int64))
+            self._buffers = kept
+            if getattr(self, "_away", None) is None:
+                self._away, self._away_rank = np.empty((64, 10)), np.empty(64, dtype=np.int64)
+        return kept[:7] + (kept[7][:nfirst],)
+
+    def _inverse_masses(self, sim, count):
+        """1/m of owned particles and ghosts, in a kept array."""
+        p = sim.particles
+        if len(getattr(self, "_inv_mass", ())) < count:
+            self._inv_mass = np.empty(count + count // 4 + 16)
+        out = self._inv_mass[:count]
+        if p.has("rmass"):
+            np.divide(1.0, p.rmass[:count], out=out)
+        else:
+            np.take(sim.mass, p.type[:count], out=out)
+            np.divide(1.0, out, out=out)
+        return out
 
     def _sweep_in_parallel(self, sim, local, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
                            table, sweep):
@@ -399,8 +428,11 @@ class FixShardlow(Fix):
             types[numbers[m_local:, column]] = incoming[:, 5 + column].astype(types.dtype)
             inverse[numbers[m_local:, column]] = incoming[:, 7 + column]
         self.pairs_swept = len(ids)          # this rank's share of the step's sweep
-        numbers, ids, separation, first = sweep_order(keys, numbers, ids, separation, 8 * nblocks,
-                                                       self._apart(sim))
+        sorted_numbers, sorted_ids, sorted_separation, first = self._pair_buffers(len(ids), 8 * nblocks + 1)[4:]
+        sweep_order(keys, numbers, ids, separation, 8 * nblocks, self._apart(sim), sorted_numbers, sorted_ids,
+                    sorted_separation, first)
+        m = len(ids)
+        numbers, ids, separation = sorted_numbers[:m], sorted_ids[:m], sorted_separation[:m]
         # velocities travel: each owner sends a particle's velocity, with its itinerary (the rank of
         # each colour's block), to where the first colour sweeps it; after each colour it moves on
         # to the next colour's rank, and after the last back home. Most never leave their owner.
