@@ -161,3 +161,21 @@ def test_owner_out_of_ghost_reach_is_one_line(tmp_path):
     assert "particle 3 cannot find its body's owner particle 2" in done.stderr
     assert "use comm_modify cutoff" in done.stderr
     assert "Traceback" not in done.stderr
+
+
+@pytest.mark.parametrize("style, extra", [("rigid/small", ""), ("rigid/nve/small", ""),
+                                          ("rigid/nvt/small", " temp 0.5 0.5 1.0")])
+def test_restart_goes_on_as_the_straight_run(tmp_path, style, extra):
+    """A run of 400 steps, and one of 200 written to a restart file, read back and run 200 more: the
+    bodies are set up again from the particles (as LAMMPS's rigid/small: its restart files carry no
+    body), rigid/nvt/small's chains come back from the file; the same particles to round-off."""
+    from pdps_core.testing import restart_round_trip
+    setup = SCENE.format(data=DATA / "rigid_small_lj.data") + f"fix 1 all {style} molecule{extra}\n"
+    straight, resumed = restart_round_trip(tmp_path, setup, 200, 200)
+    a, b = straight.particles, resumed.particles
+    order_a, order_b = np.argsort(a.tag[: a.nlocal]), np.argsort(b.tag[: b.nlocal])
+    assert b.x[: b.nlocal][order_b] == pytest.approx(a.x[: a.nlocal][order_a], abs=1e-9)
+    assert b.v[: b.nlocal][order_b] == pytest.approx(a.v[: a.nlocal][order_a], abs=1e-9)
+    if style == "rigid/nvt/small":
+        assert resumed.fixes["1"].eta_dot_t == pytest.approx(straight.fixes["1"].eta_dot_t, abs=1e-12)
+        assert resumed.fixes["1"].eta_r == pytest.approx(straight.fixes["1"].eta_r, abs=1e-12)
