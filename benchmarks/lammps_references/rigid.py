@@ -9,7 +9,9 @@ periodic box of 12 sigma, one of them straddling the x and y boundaries (image f
 file), with random particle velocities (made rigid by each program's body setup) and interactions
 within a body excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100 steps
 over 10^4 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_lj.txt; the data
-file is plugins/fix_rigid/tests/data/rigid_lj.data.
+file is plugins/fix_rigid/tests/data/rigid_lj.data. The same for rigid and rigid/nve with ``langevin 0.0
+0.0 2.0 428984``: the Langevin drag on the bodies' translation and rotation without noise, the one
+deterministic run of that keyword (its noise is LAMMPS's Marsaglia generator's, pdps's a counter-based one).
 
 A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
 group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
@@ -34,6 +36,8 @@ from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
 STYLES = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
+# the langevin keyword with T = 0: its drag alone, deterministic (no noise to draw), LAMMPS's to round-off
+DRAG = " langevin 0.0 0.0 2.0 428984"
 SCRIPT = """units lj
 atom_style molecular
 read_data rigid_lj.data
@@ -202,6 +206,9 @@ def main():
     write_data(data)
     tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra), [data], label=style))
               for style, extra in STYLES.items()}
+    for style in ("rigid", "rigid/nve"):
+        tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG), [data],
+                                                          label=f"{style} drag"))
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))

@@ -43,7 +43,7 @@ the three image flags of the centre of mass, as LAMMPS's global array.
 Syntax::
 
     fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
-        [reinit yes|no] [infile FILE]
+        [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
 
 - BODYSTYLE ``single``: the whole group is one body; ``molecule``: one body per molecule id in the
   group (the id 0 too); ``group N G1 ... GN``: one body per group, its particles those of the fix
@@ -59,14 +59,30 @@ Syntax::
   overlapping spheres, say): a count, then lines ``ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz
   vxcm vycm vzcm lx ly lz ixcm iycm izcm`` (ID: 1 for single, the group's number, or the molecule id);
   # comments. As LAMMPS: bodies the file leaves out start at rest, and bodies are set up once.
-- The thermostat and barostat keywords (langevin, iso, aniso, x, y, z, couple, pchain, dilate; temp and
-  tparam belong to ``rigid/nvt``), mol and gravity are refused by name: not implemented yet.
+- ``langevin TSTART TSTOP TPERIOD SEED`` (rigid and rigid/nve; LAMMPS refuses it with rigid/nvt): a
+  Langevin thermostat on the bodies, LAMMPS's, at a target T ramped from TSTART to TSTOP over the run
+  (temperature, >= 0; 0 gives the drag alone), damping time TPERIOD (time, > 0). Each step adds to
+  the force on body b and, about each principal axis k, to its torque
+
+  .. math::
+
+      -\frac{M_b}{T_p} \mathbf{V}_b + \sqrt{\frac{24 k_B T M_b}{T_p \Delta t}}\,(\mathbf{u} - \tfrac12),
+      \qquad -\frac{I_k}{T_p} \omega_k + \sqrt{\frac{24 k_B T I_k}{T_p \Delta t}}\,(u'_k - \tfrac12),
+
+  u uniform in (0, 1) from the counter-based generator keyed by (SEED, step, body number): the same
+  on any number of ranks, not LAMMPS's Marsaglia numbers (its drag alone, T = 0, is LAMMPS's to
+  round-off). Forces are divided by ftm2v as LAMMPS's; in 2d only the in-plane force and the torque
+  about z.
+- ``temp`` and ``tparam`` belong to ``rigid/nvt`` (refused here, as LAMMPS does). The barostat
+  keywords (iso, aniso, x, y, z, couple, pchain, dilate), mol and gravity are refused by name: not
+  implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
 Examples::
 
     fix 1 clump rigid single
+    fix 1 clump rigid single force 1 off off on langevin 1.0 1.0 1.0 428984
     fix 1 polychains rigid molecule force 1*5 off off off force 6*10 off off on
     fix 2 fluid rigid group 3 clump1 clump2 clump3 torque * off off off
 
@@ -74,13 +90,14 @@ Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); Richa
 in Evans, Mol. Phys. 34, 317 (1977) and Kamberaj, Low and Neal, J. Chem. Phys. 122, 224114 (2005).
 """
 
+import math
 from pathlib import Path
 from typing import Literal
 
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args, particle_uniforms
 
 from . import bodies
 from .quaternion import axes_from_quaternion, omega_from_angmom, quaternion_from_axes, richardson
@@ -92,8 +109,12 @@ OnOff = Literal["on", "off"]
 # moments recomputed in the body frame must match to TOLERANCE
 EPSILON = 1e-7
 TOLERANCE = 1e-6
-NOT_YET = ("langevin", "temp", "iso", "aniso", "x", "y", "z", "couple", "tparam", "pchain", "dilate",
-           "mol", "gravity")
+NOT_YET = ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate", "mol", "gravity")
+# keywords LAMMPS refuses for a style (Illegal fix command), and why
+NOSE_HOOVER_ONLY = "only fix rigid/nvt and rigid/npt take it (LAMMPS's page: not rigid or rigid/nve)"
+# the langevin noise's streams of the counter-based generator, keyed by (seed, step, body number)
+TRANSLATION_STREAM = 4
+ROTATION_STREAM = 5
 IMAGE_LIMIT = 2 ** 30        # the particles' image flags are int32
 INFILE_COLUMNS = "ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz vxcm vycm vzcm lx ly lz ixcm iycm izcm"
 
@@ -139,6 +160,38 @@ def richardson_final(vcm, fcm, angmom, torque, omega, ex, ey, ez, inertia, masst
 
 
 @njit(cache=True)
+def langevin_body_forces(vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target, t_period, dt, boltz,
+                         mvv2e, ftm2v, planar, langextra):
+    """LAMMPS's Langevin force and torque on each body (rows: fx fy fz tx ty tz): -M V / Tperiod plus
+    sqrt(24 k_B T M / (Tperiod dt)) (u - 1/2) on the centre of mass, and about each principal axis k
+    -I_k w_k / Tperiod plus sqrt(24 k_B T I_k / (Tperiod dt)) (u - 1/2), w_k the angular velocity
+    in the body frame; u uniform in (0, 1), keyed by (seed, step, body number). In 2d only fx, fy
+    and tz."""
+    tsqrt = math.sqrt(t_target)
+    noise = tsqrt * math.sqrt(24.0 * boltz / t_period / dt / mvv2e) / ftm2v
+    drag = -1.0 / t_period / ftm2v
+    for b in range(vcm.shape[0]):
+        u0, u1, u2, _ = particle_uniforms(key, step, b + 1, TRANSLATION_STREAM)
+        root = math.sqrt(masstotal[b])
+        langextra[b, 0] = drag * masstotal[b] * vcm[b, 0] + root * noise * (u0 - 0.5)
+        langextra[b, 1] = drag * masstotal[b] * vcm[b, 1] + root * noise * (u1 - 0.5)
+        langextra[b, 2] = drag * masstotal[b] * vcm[b, 2] + root * noise * (u2 - 0.5)
+        r0, r1, r2, _ = particle_uniforms(key, step, b + 1, ROTATION_STREAM)
+        w0 = ex[b, 0] * omega[b, 0] + ex[b, 1] * omega[b, 1] + ex[b, 2] * omega[b, 2]
+        w1 = ey[b, 0] * omega[b, 0] + ey[b, 1] * omega[b, 1] + ey[b, 2] * omega[b, 2]
+        w2 = ez[b, 0] * omega[b, 0] + ez[b, 1] * omega[b, 1] + ez[b, 2] * omega[b, 2]
+        t0 = inertia[b, 0] * drag * w0 + math.sqrt(inertia[b, 0]) * noise * (r0 - 0.5)
+        t1 = inertia[b, 1] * drag * w1 + math.sqrt(inertia[b, 1]) * noise * (r1 - 0.5)
+        t2 = inertia[b, 2] * drag * w2 + math.sqrt(inertia[b, 2]) * noise * (r2 - 0.5)
+        for d in range(3):
+            langextra[b, 3 + d] = ex[b, d] * t0 + ey[b, d] * t1 + ez[b, d] * t2
+        if planar:
+            langextra[b, 2] = 0.0
+            langextra[b, 3] = 0.0
+            langextra[b, 4] = 0.0
+
+
+@njit(cache=True)
 def omegas(angmom, ex, ey, ez, inertia, omega):
     for b in range(angmom.shape[0]):
         omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
@@ -147,11 +200,12 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
 class FixRigid(Fix):
     name = "rigid"
     usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN [force M XFLAG YFLAG ZFLAG] "
-             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE]")
+             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]")
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
     not_yet = NOT_YET
+    refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY}
 
     class Args(StyleArgs):
         bodystyle: Literal["single", "molecule", "group"] = param()
@@ -160,6 +214,7 @@ class FixRigid(Fix):
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
+        langevin: tuple[float, float, float, int] | None = keyword(None)
 
     @classmethod
     def parse(cls, words):
@@ -171,6 +226,8 @@ class FixRigid(Fix):
                 raise ScriptError(f"bodystyle group needs a number of groups N, then N group ids "
                                   f"(got {words[1]})") from None
         for word in words[start:]:
+            if word in cls.refused:
+                raise ScriptError(f"keyword {word} of fix {cls.name}: {cls.refused[word]}")
             if word in cls.not_yet:
                 implemented = [name for name, info in cls.Args.model_fields.items()
                                if name not in ("bodystyle", "groups")]
@@ -184,6 +241,14 @@ class FixRigid(Fix):
                                   f"{' '.join(args.groups) or 'nothing'})")
         elif args.groups:
             raise ScriptError(f"bodystyle {args.bodystyle} takes no arguments (got {' '.join(args.groups)})")
+        if args.langevin is not None:
+            start, stop, period, seed = args.langevin
+            if not (start >= 0 and stop >= 0 and math.isfinite(start) and math.isfinite(stop)):
+                raise ScriptError(f"langevin: Tstart and Tstop must be >= 0 (got {start:g} {stop:g})")
+            if not (period > 0 and math.isfinite(period)):
+                raise ScriptError(f"langevin: Tperiod must be > 0 (got {period:g})")
+            if not 0 < seed < 2 ** 63:
+                raise ScriptError(f"langevin: the seed must be a positive integer (got {seed})")
         return args
 
     # ---- bodies ---------------------------------------------------------------------------------
@@ -235,6 +300,7 @@ class FixRigid(Fix):
         self.sums = np.zeros((nb, 6))
         self.step_virial = np.zeros(6)
         self.final_virial = np.zeros(6)
+        self.langextra = np.zeros((nb, 6))
         self.set_up = 0
         self.dof_cache = {}
         self.atom_arrays = None
@@ -499,6 +565,19 @@ class FixRigid(Fix):
         total = sim.comm.sum(self.sums)
         self.fcm[:] = total[:, :3]
         self.torque[:] = total[:, 3:]
+        if self.args.langevin is not None and not sim.in_setup:
+            self._langevin(sim)
+            self.fcm += self.langextra[:, :3]
+            self.torque += self.langextra[:, 3:]
+
+    def _langevin(self, sim):
+        """The Langevin force and torque of this step (LAMMPS applies them from post_force on the
+        bodies' motion after the first half step; nothing changes that motion before final_integrate,
+        so they are drawn here). The target T ramps from Tstart to Tstop over the run."""
+        start, stop, period, seed = self.args.langevin
+        langevin_body_forces(self.vcm, self.omega, self.ex, self.ey, self.ez, self.inertia, self.masstotal,
+                             sim.random_key(seed), sim.step, sim.ramp(start, stop), period, sim.dt, sim.units.boltz,
+                             sim.units.mvv2e, sim.units.ftm2v, sim.dimension == 2, self.langextra)
 
     def _set_v(self, sim, virial, tally):
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)

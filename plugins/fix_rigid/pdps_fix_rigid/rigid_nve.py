@@ -22,7 +22,7 @@ Everything else (body styles, force and torque flags, degrees of freedom, virial
 Syntax::
 
     fix ID GROUP rigid/nve BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
-        [reinit yes|no] [infile FILE]
+        [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
 
 Example::
 
@@ -105,7 +105,7 @@ def conjugate_momenta(angmom, quat, ex, ey, ez, conjqm):
 class FixRigidNVE(FixRigid):
     name = "rigid/nve"
     usage = ("fix ID GROUP rigid/nve single|molecule|group N G1 .. GN [force M XFLAG YFLAG ZFLAG] "
-             "[torque M XFLAG YFLAG ZFLAG]")
+             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

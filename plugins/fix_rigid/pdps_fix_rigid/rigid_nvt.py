@@ -124,7 +124,9 @@ class FixRigidNVT(FixRigidNVE):
     usage = ("fix ID GROUP rigid/nvt single|molecule|group N G1 .. GN temp TSTART TSTOP TDAMP "
              "[tparam TCHAIN TITER TORDER] [force M X Y Z] [torque M X Y Z] [reinit yes|no]")
     extensive = True
-    not_yet = tuple(word for word in NOT_YET if word not in ("temp", "tparam"))
+    not_yet = NOT_YET
+    refused = {"langevin": "fix rigid/nvt thermostats with temp; langevin is for rigid and rigid/nve "
+                           "(LAMMPS's page: it cannot be used with rigid/nvt)"}
 
     class Args(FixRigid.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")

@@ -229,8 +229,16 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
 
 
 @pytest.mark.parametrize("line, message", [
-    ("fix 1 all rigid single langevin 1 1 1 4", "keyword langevin of fix rigid is not implemented yet"),
-    ("fix 1 all rigid/nve molecule temp 1 1 1", "keyword temp of fix rigid/nve is not implemented yet"),
+    ("fix 1 all rigid/nvt single temp 1 1 1 langevin 1 1 1 4", "keyword langevin of fix rigid/nvt: fix rigid/nvt "
+     "thermostats with temp; langevin is for rigid and rigid/nve"),
+    ("fix 1 all rigid/nve molecule temp 1 1 1", r"keyword temp of fix rigid/nve: only fix rigid/nvt and rigid/npt take "
+     r"it \(LAMMPS's page: not rigid or rigid/nve\)"),
+    ("fix 1 all rigid single tparam 3 1 3", "keyword tparam of fix rigid: only fix rigid/nvt and rigid/npt"),
+    ("fix 1 all rigid single langevin 1 1 0 4", r"langevin: Tperiod must be > 0 \(got 0\)"),
+    ("fix 1 all rigid single langevin 1 1 nan 4", r"langevin must be a finite number \(got nan\)"),
+    ("fix 1 all rigid single langevin 1 1 1 0", r"langevin: the seed must be a positive integer \(got 0\)"),
+    ("fix 1 all rigid/nve single langevin -1 1 1 4", r"langevin: Tstart and Tstop must be >= 0 \(got -1 1\)"),
+    ("fix 1 all rigid single langevin 1 1 1", "langevin"),
     ("fix 1 all rigid single mol water", "keyword mol of fix rigid is not implemented yet"),
     ("fix 1 all rigid single reinit maybe", "reinit must be one of"),
     ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),

@@ -15,7 +15,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from rigid import CLUMPS, COLLIDE, INFILE, PLANE, STYLES  # noqa: E402
+from rigid import CLUMPS, COLLIDE, DRAG, INFILE, PLANE, STYLES  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 SCRIPT = """units lj
@@ -48,10 +48,13 @@ def reference(style):
 EXTRA = STYLES
 
 
-@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt"])
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt", "rigid drag", "rigid/nve drag"])
 def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style):
+    """Each style; ``drag``: with langevin at T = 0, the Langevin drag -M V / Tperiod and -I_k w_k /
+    Tperiod on each body alone (no noise, so LAMMPS's run is deterministic)."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    done = pdps_cli(SCRIPT.format(style=style, extra=EXTRA[style], steps=10000), "-log", "none")
+    extra = DRAG if style.endswith(" drag") else EXTRA[style]
+    done = pdps_cli(SCRIPT.format(style=style.split()[0], extra=extra, steps=10000), "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
     lammps = reference(style)
@@ -90,10 +93,12 @@ def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     assert worst.max() < 1e-5
 
 
-@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt"])
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt", "rigid/nve langevin"])
 def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
+    """Each style; with langevin the noise is keyed by (seed, step, body), so 2 ranks draw what 1 draws."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    script = SCRIPT.format(style=style, extra=EXTRA[style], steps=2000)
+    extra = " langevin 0.6 0.4 1.0 4928" if style.endswith(" langevin") else EXTRA[style]
+    script = SCRIPT.format(style=style.split()[0], extra=extra, steps=2000)
     one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
     two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
     assert one.shape == two.shape == (21, 9)
