@@ -196,6 +196,13 @@ def count_members(atom2body, chosen, extended, nlocal, sums):
         sums[b, 1 if extended[i] else 0] += 1.0
 
 
+@njit(cache=True)
+def axes_of(quat, ex, ey, ez, count):
+    """Principal axes of bodies 0..count-1 from their quaternions."""
+    for b in range(count):
+        axes_from_quaternion(quat, b, ex, ey, ez)
+
+
 def principal_axes(tensor):
     """Principal moments (ascending, below EPSILON of the largest set to 0) and right-handed axes of
     inertia tensors given as (xx, yy, zz, yz, xz, xy) rows; quaternions of the axes."""
@@ -424,8 +431,7 @@ class FixRigidSmall(Fix):
                                      zero_body_image, count, nb)
         inertia, quat = principal_axes(tensor)
         ex, ey, ez = np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros((nb, 3))
-        for b in range(nb):
-            axes_from_quaternion(quat, b, ex, ey, ez)
+        axes_of(quat, ex, ey, ez, nb)
         displace = np.zeros((count, 3))
         check = bodies.body_frame(xu, zero_image, body, no_types, NO_ARRAY, m, radius, length, xcm, zero_body_image,
                                   ex, ey, ez, displace, count, nb)
@@ -525,8 +531,7 @@ class FixRigidSmall(Fix):
         bodies.remap_centres(self.xcm[:nl], self.image_body[:nl], np.asarray(sim.box.lo, dtype=np.float64),
                              np.asarray(sim.box.hi, dtype=np.float64), np.asarray(sim.box.length, dtype=np.float64),
                              np.asarray(sim.box.periodic, dtype=np.bool_))
-        for b in range(nl):
-            axes_from_quaternion(self.quat, b, self.ex, self.ey, self.ez)
+        axes_of(self.quat, self.ex, self.ey, self.ez, nl)
         omegas(self.angmom[:nl], self.ex[:nl], self.ey[:nl], self.ez[:nl], self.inertia[:nl], self.omega[:nl])
         self.compact = True
         self.atom_arrays = None
