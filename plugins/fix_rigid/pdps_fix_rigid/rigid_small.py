@@ -79,8 +79,9 @@ NOT_YET = ("langevin", "infile", "mol", "temp", "tparam", "iso", "aniso", "x", "
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
 RECORD = 25
-# what ghost copies of a body need each step: xcm vcm omega ex ey ez image
-STATE = 21
+# what ghost copies of a body need after the first half step (xcm vcm omega quat image) and after the
+# second (vcm omega)
+STATE, MOTION = 16, 6
 
 
 @njit(cache=True)
@@ -130,32 +131,45 @@ def number_bodies(tag, bodytag, atom2row, nlocal, nall, body_of_row, atom2body, 
 
 
 @njit(cache=True)
-def pack_state(first, last, body_rows, xcm, vcm, omega, ex, ey, ez, image_body, state):
-    """Bodies first..last-1 into their owners' rows of ``state``."""
+def pack_state(first, last, body_rows, xcm, vcm, omega, quat, image_body, state):
+    """Bodies first..last-1 into their owners' rows of ``state``: xcm vcm omega quat image (16), or,
+    with ``state`` 6 wide, vcm omega."""
+    motion_only = state.shape[1] == 6
     for b in range(first, last):
         r = body_rows[b]
+        if motion_only:
+            for d in range(3):
+                state[r, d] = vcm[b, d]
+                state[r, 3 + d] = omega[b, d]
+            continue
         for d in range(3):
             state[r, d] = xcm[b, d]
             state[r, 3 + d] = vcm[b, d]
             state[r, 6 + d] = omega[b, d]
-            state[r, 9 + d] = ex[b, d]
-            state[r, 12 + d] = ey[b, d]
-            state[r, 15 + d] = ez[b, d]
-            state[r, 18 + d] = image_body[b, d]
+            state[r, 13 + d] = image_body[b, d]
+        for c in range(4):
+            state[r, 9 + c] = quat[b, c]
 
 
 @njit(cache=True)
-def unpack_state(first, last, body_rows, xcm, vcm, omega, ex, ey, ez, image_body, state):
+def unpack_state(first, last, body_rows, xcm, vcm, omega, quat, ex, ey, ez, image_body, state):
+    """pack_state's inverse; the axes follow from the quaternion, as on the owner's rank."""
+    motion_only = state.shape[1] == 6
     for b in range(first, last):
         r = body_rows[b]
+        if motion_only:
+            for d in range(3):
+                vcm[b, d] = state[r, d]
+                omega[b, d] = state[r, 3 + d]
+            continue
         for d in range(3):
             xcm[b, d] = state[r, d]
             vcm[b, d] = state[r, 3 + d]
             omega[b, d] = state[r, 6 + d]
-            ex[b, d] = state[r, 9 + d]
-            ey[b, d] = state[r, 12 + d]
-            ez[b, d] = state[r, 15 + d]
-            image_body[b, d] = int(state[r, 18 + d])
+            image_body[b, d] = int(state[r, 13 + d])
+        for c in range(4):
+            quat[b, c] = state[r, 9 + c]
+        axes_from_quaternion(quat, b, ex, ey, ez)
 
 
 @njit(cache=True)
@@ -262,8 +276,10 @@ class FixRigidSmall(Fix):
         self.parallel = sim.comm.nprocs > 1
         if self.parallel:
             self.state_name = f"rigid_small_state_{id}"
+            self.motion_name = f"rigid_small_motion_{id}"
             self.sums_name = f"rigid_small_sums_{id}"
             p.request(self.state_name, width=STATE)
+            p.request(self.motion_name, width=MOTION)
             p.request(self.sums_name, width=6)
         members = sim.groups.select(sim, group)
         self.nbody = 0              # counted when the bodies are set up
@@ -538,17 +554,18 @@ class FixRigidSmall(Fix):
         self._share(sim)
 
     # ---- communication of bodies (only with more than one rank) -----------------------------------
-    def _share(self, sim):
-        """Ghost bodies take their owners' current position, velocity and axes."""
+    def _share(self, sim, motion_only=False):
+        """Ghost bodies take their owners' current position, orientation and motion (velocities
+        only, after the second half step)."""
         if not self.parallel:
             return
         p = sim.particles
-        state = p.arrays[self.state_name]
+        name = self.motion_name if motion_only else self.state_name
+        state = p.arrays[name]
         nl, total = self.nlocal_body, self.nlocal_body + self.nghost_body
-        pack_state(0, nl, self.body_rows, self.xcm, self.vcm, self.omega, self.ex, self.ey, self.ez, self.image_body,
-                   state)
-        sim.comm.forward_comm(p, (self.state_name,))
-        unpack_state(nl, total, self.body_rows, self.xcm, self.vcm, self.omega, self.ex, self.ey, self.ez,
+        pack_state(0, nl, self.body_rows, self.xcm, self.vcm, self.omega, self.quat, self.image_body, state)
+        sim.comm.forward_comm(p, (name,))
+        unpack_state(nl, total, self.body_rows, self.xcm, self.vcm, self.omega, self.quat, self.ex, self.ey, self.ez,
                      self.image_body, state)
 
     def _collect(self, sim, sums):
@@ -614,7 +631,7 @@ class FixRigidSmall(Fix):
         self._sum_force_torque(sim)
         nl = self.nlocal_body
         omegas(self.angmom[:nl], self.ex[:nl], self.ey[:nl], self.ez[:nl], self.inertia[:nl], self.omega[:nl])
-        self._share(sim)
+        self._share(sim, motion_only=True)
         self.step_virial[:] = 0.0
         self.final_virial[:] = 0.0
         self._set_v(sim, self.step_virial, True)
@@ -642,7 +659,7 @@ class FixRigidSmall(Fix):
     def final_integrate(self, sim):
         self._sum_force_torque(sim)
         self.advance_final(sim)
-        self._share(sim)
+        self._share(sim, motion_only=True)
         self.final_virial[:] = 0.0
         self._set_v(sim, self.final_virial, sim.vflag and self.thermo_virial)
 
