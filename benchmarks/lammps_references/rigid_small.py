@@ -12,7 +12,9 @@ the x and y boundaries (image flags in the data file), with random particle velo
 periodic boundaries and, on 2 ranks, the sub-domain boundary) and interactions within a body
 excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100 steps over 10^4
 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_small_lj.txt; the data
-file is plugins/fix_rigid/tests/data/rigid_small_lj.data.
+file is plugins/fix_rigid/tests/data/rigid_small_lj.data. Two more scenes, ``free`` and ``plane``: a dimer
+(a linear body) and a triangle pushed across the periodic x boundary by fix addforce, in 3d and in 2d,
+2000 steps of each style.
 """
 
 import sys
@@ -44,6 +46,38 @@ run {steps}
 COLUMNS = {"rigid/small": "f_1", "rigid/nve/small": "f_1", "rigid/nvt/small": "f_1 ecouple econserve"}
 LENGTH = 12.0
 GRID = 3
+# a dimer (a linear body: 5 degrees of freedom in 3d) and a triangle pushed across the periodic x boundary
+# by fix addforce,
+# no pair style (comm_modify cutoff: LAMMPS wants ghosts that span a body all the same), 2000 steps;
+# the same in 2d (fix enforce2d; LAMMPS's f_ID counts 6 per body there too)
+FREE = """units lj
+{dimension}atom_style molecular
+region box block 0 20 0 20 {zbox}
+create_box 1 box
+mass 1 1.0
+create_atoms 1 single 5 5 {z[0]}
+create_atoms 1 single 6 5 {z[0]}
+create_atoms 1 single 18.5 10 {z[1]}
+create_atoms 1 single 19.5 10 {z[1]}
+create_atoms 1 single 18.8 11 {z[2]}
+set atom 1*2 mol 1
+set atom 3*5 mol 2
+velocity all set 0.1 0.2 {vz[0]}
+group g id 2 4
+velocity g set 0.5 -0.3 {vz[1]}
+group h id 5
+velocity h set -0.5 -0.3 {vz[2]}
+comm_modify cutoff 3.0
+fix 1 all {{style}} molecule{{extra}}
+fix 2 all addforce 0.1 -0.05 {vz[3]}
+{enforce}thermo_style custom step temp ke press f_1
+thermo_modify format float %20.15g
+thermo 200
+run 2000
+"""
+PLANE = FREE.format(dimension="dimension 2\n", zbox="-0.5 0.5", z=(0, 0, 0), vz=(0, 0, 0, 0),
+                    enforce="fix 3 all enforce2d\n")
+FREE = FREE.format(dimension="", zbox="0 20", z=(5, 10, 10.4), vz=(0.3, 0.2, 0.9, 0.02), enforce="")
 
 
 def centres():
@@ -107,6 +141,10 @@ def main():
     data = DATA / "rigid_small_lj.data"
     write_data(data)
     tables = {style: thermo_lines(run_lammps(lmp, script(style), [data], label=style)) for style in STYLES}
+    for style in STYLES:
+        extra = STYLES[style]
+        tables[f"free {style}"] = thermo_lines(run_lammps(lmp, FREE.format(style=style, extra=extra), label=style))
+        tables[f"plane {style}"] = thermo_lines(run_lammps(lmp, PLANE.format(style=style, extra=extra), label=style))
     write_blocks(DATA / "rigid_small_lj.txt", tables)
 
 

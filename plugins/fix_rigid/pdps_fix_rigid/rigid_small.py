@@ -35,8 +35,9 @@ The ghost cutoff (pair cutoff plus skin, or ``comm_modify cutoff``) must reach f
 its farthest particle; the set-up prints that distance, and a particle that cannot see its owner
 stops the run with a line naming it.
 
-``f_ID``: the bodies' temperature, sum (M V^2 + sum_k I_k omega_k^2) / (N_f k_B), N_f = 6 per body (3
-in 2d) less one per linear body (intensive), as LAMMPS's rigid/small. There is no per-body global
+``f_ID``: the bodies' temperature, sum (M V^2 + sum_k I_k omega_k^2) / (N_f k_B), N_f = 6 per body less
+one per linear body in 3d (intensive), as LAMMPS's rigid/small counts them (6 in 2d as well, where a
+body has 3: its temperature there reads half its particles'). There is no per-body global
 array (LAMMPS's rigid/small has none): ``compute rigid/local`` gives the bodies' values.
 
 Syntax::
@@ -705,14 +706,14 @@ class FixRigidSmall(Fix):
         return translation, float((inertia * wbody ** 2).sum())
 
     def scalar(self, sim):
-        """The bodies' temperature: 6 degrees of freedom each (3 in 2d), less one per linear body."""
+        """The bodies' temperature: 6 degrees of freedom each, less one per linear body in 3d (LAMMPS's
+        count, in 2d too: a 2d body's reads half its particles')."""
         if not self.set_up or not self.compact:
             return 0.0
         translation, rotation = self._kinetic()
         nl = self.nlocal_body
+        free = 6 * self.nbody
         if sim.dimension == 3:
-            free = 6 * self.nbody - int(sim.comm.sum(int(np.count_nonzero((self.inertia[:nl] == 0.0).any(axis=1)))))
-        else:
-            free = 3 * self.nbody
+            free -= int(sim.comm.sum(int(np.count_nonzero((self.inertia[:nl] == 0.0).any(axis=1)))))
         total = float(sim.comm.sum(translation + rotation))
         return total * sim.units.mvv2e / (free * sim.units.boltz) if free > 0 else 0.0

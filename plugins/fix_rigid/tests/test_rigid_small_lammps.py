@@ -16,7 +16,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
-from rigid_small import script  # noqa: E402
+from rigid_small import FREE, PLANE, STYLES as EXTRA, script  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
@@ -54,3 +54,22 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
     assert one.shape == two.shape == (31, 9 if style == "rigid/nvt/small" else 7)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
+
+
+@pytest.mark.parametrize("scene", ["free", "plane"])
+@pytest.mark.parametrize("style", STYLES)
+def test_linear_and_2d_bodies_match_lammps(pdps_cli, scene, style):
+    """A dimer (linear: 5 degrees of freedom in 3d) and a triangle pushed across the periodic x
+    boundary by fix addforce, in 3d and in 2d (fix enforce2d): temperature, kinetic energy,
+    pressure and f_1 (LAMMPS's count: 6 a body less its linear ones in 3d, 6 a body in 2d) over
+    2000 steps."""
+    text = {"free": FREE, "plane": PLANE}[scene].format(style=style, extra=EXTRA[style])
+    done = pdps_cli(text, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    ours = np.array(thermo_rows(done.stdout))
+    lammps = read_blocks(DATA / "rigid_small_lj.txt")[f"{scene} {style}"]
+    assert ours.shape == lammps.shape == (11, 5)
+    scale = np.abs(lammps[:, 1:]).max(axis=0)
+    worst = (np.abs(ours[:, 1:] - lammps[:, 1:]) / scale).max()
+    print(f"{scene} {style}: largest difference from LAMMPS, relative to each column's largest value: {worst:.1e}")
+    assert worst < 1e-5
