@@ -140,8 +140,9 @@ class FixRigidNVTSmall(FixRigidNVESmall):
 
     def advance_final(self, sim):
         xcm, vcm, fcm, angmom, torque, omega, quat, ex, ey, ez, inertia, masstotal, fflag, tflag = self._local()
-        nvt_final(vcm, fcm, angmom, torque, omega, quat, self.conjqm[: self.nlocal_body], ex, ey, ez, inertia, masstotal,
-                  fflag, tflag, self.dtf, math.exp(-self.dtq * self.eta_dot_t[0]), math.exp(-self.dtq * self.eta_dot_r[0]))
+        nvt_final(vcm, fcm, angmom, torque, omega, quat, self.conjqm[: self.nlocal_body], ex, ey, ez, inertia,
+                  masstotal, fflag, tflag, self.dtf, math.exp(-self.dtq * self.eta_dot_t[0]),
+                  math.exp(-self.dtq * self.eta_dot_r[0]))
 
     def scalar(self, sim):
         energy = super().scalar(sim)

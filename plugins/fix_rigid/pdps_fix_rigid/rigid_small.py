@@ -699,8 +699,8 @@ class FixRigidSmall(Fix):
         """Twice the local bodies' translational and rotational kinetic energies (mass velocity^2)."""
         nl = self.nlocal_body
         translation = float((self.masstotal[:nl] * (self.vcm[:nl] ** 2).sum(axis=1)).sum())
-        projected = np.stack([np.einsum("bd,bd->b", axis[:nl], self.angmom[:nl]) for axis in (self.ex, self.ey, self.ez)],
-                             1)
+        angmom = self.angmom[:nl]
+        projected = np.stack([np.einsum("bd,bd->b", axis[:nl], angmom) for axis in (self.ex, self.ey, self.ez)], 1)
         inertia = self.inertia[:nl]
         wbody = np.divide(projected, inertia, out=np.zeros_like(projected), where=inertia != 0.0)
         return translation, float((inertia * wbody ** 2).sum())
