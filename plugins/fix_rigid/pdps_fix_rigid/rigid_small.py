@@ -80,6 +80,13 @@ NOT_YET = ("langevin", "infile", "mol", "temp", "tparam", "iso", "aniso", "x", "
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
 RECORD = 25
+# per-body arrays (local bodies first, then ghost copies of bodies owned elsewhere): width, type
+BODY_ARRAYS = {"masstotal": (0, np.float64), "xcm": (3, np.float64), "vcm": (3, np.float64), "fcm": (3, np.float64),
+               "torque": (3, np.float64), "angmom": (3, np.float64), "omega": (3, np.float64),
+               "inertia": (3, np.float64), "ex": (3, np.float64), "ey": (3, np.float64), "ez": (3, np.float64),
+               "image_body": (3, np.int64), "quat": (4, np.float64), "conjqm": (4, np.float64),
+               "fflag": (3, np.float64), "tflag": (3, np.float64), "nrigid": (0, np.int64), "sums": (6, np.float64),
+               "body_rows": (0, np.int64), "owner_tag": (0, np.int64)}
 # what ghost copies of a body need after the first half step (xcm vcm omega quat image) and after the
 # second (vcm omega)
 STATE, MOTION = 16, 6
@@ -129,6 +136,26 @@ def number_bodies(tag, bodytag, atom2row, nlocal, nall, body_of_row, atom2body, 
         r = atom2row[i]
         atom2body[i] = body_of_row[r] if r >= 0 else -1
     return local, count - local
+
+
+@njit(cache=True)
+def place_bodies(tag, nlocal, owner_tag, nbody, atom2row, rowmap, body_rows, body_of_row, atom2body):
+    """One rank: the bodies keep their places in the arrays; their owners' rows (-1 for an owner no
+    longer here) and each owned particle's body, after particles were reordered."""
+    for r in range(nlocal):
+        rowmap[tag[r]] = r
+        body_of_row[r] = -1
+    for b in range(nbody):
+        owner = owner_tag[b]
+        r = rowmap[owner] if owner < len(rowmap) else -1
+        body_rows[b] = r
+        if r >= 0:
+            body_of_row[r] = b
+    for i in range(nlocal):
+        r = atom2row[i]
+        atom2body[i] = body_of_row[r] if r >= 0 else -1
+    for r in range(nlocal):
+        rowmap[tag[r]] = -1
 
 
 @njit(cache=True)
@@ -273,9 +300,10 @@ class FixRigidSmall(Fix):
         self.record_name = f"rigid_small_record_{id}"
         p.request(self.tag_name, dtype=np.int64, default=0, ghost=False)
         p.request(self.displace_name, width=3, ghost=False)
-        p.request(self.record_name, width=RECORD, ghost=False)
+        # on one rank bodies never move between ranks: no per-particle record, no ghost bodies
         self.parallel = sim.comm.nprocs > 1
         if self.parallel:
+            p.request(self.record_name, width=RECORD, ghost=False)
             self.state_name = f"rigid_small_state_{id}"
             self.motion_name = f"rigid_small_motion_{id}"
             self.sums_name = f"rigid_small_sums_{id}"
@@ -297,7 +325,7 @@ class FixRigidSmall(Fix):
         self.step_virial = np.zeros(6)
         self.final_virial = np.zeros(6)
         self.set_up = 0
-        self.compact = False        # the bodies' arrays hold the records (after pre_neighbor)
+        self.compact = False        # the bodies' arrays and each particle's body are current (after pre_neighbor)
         self.atom_arrays = None
         self.maxextent = 0.0
         self.dof_cache = {}
@@ -329,13 +357,7 @@ class FixRigidSmall(Fix):
             return
         size = max(count, int(1.5 * self.capacity) + 16)
         old = self.capacity
-        for name, width, dtype in (("masstotal", 0, np.float64), ("xcm", 3, np.float64), ("vcm", 3, np.float64),
-                                   ("fcm", 3, np.float64), ("torque", 3, np.float64), ("angmom", 3, np.float64),
-                                   ("omega", 3, np.float64), ("inertia", 3, np.float64), ("ex", 3, np.float64),
-                                   ("ey", 3, np.float64), ("ez", 3, np.float64), ("image_body", 3, np.int64),
-                                   ("quat", 4, np.float64), ("conjqm", 4, np.float64), ("fflag", 3, np.float64),
-                                   ("tflag", 3, np.float64), ("nrigid", 0, np.int64), ("sums", 6, np.float64),
-                                   ("body_rows", 0, np.int64)):
+        for name, (width, dtype) in BODY_ARRAYS.items():
             shape = (size, width) if width else (size,)
             fresh = np.zeros(shape, dtype=dtype)
             if old:
@@ -394,7 +416,14 @@ class FixRigidSmall(Fix):
         bodytag[index] = back[:, 1].astype(np.int64)
         a[self.displace_name][index] = back[:, 2:5]
         owners = back[:, 5] > 0.0
-        a[self.record_name][index[owners]] = back[owners, 6:]
+        if self.parallel:
+            a[self.record_name][index[owners]] = back[owners, 6:]
+        else:
+            count = int(owners.sum())
+            self._allocate(count)
+            self._load(back[owners, 6:], count)
+            self.owner_tag[:count] = back[owners, 1].astype(np.int64)
+            self.nlocal_body = count
         extent = float(sim.comm.max(extent))
         count = int(sim.comm.sum(int(owners.sum())))
         atoms = int(sim.comm.sum(len(index)))
@@ -488,8 +517,9 @@ class FixRigidSmall(Fix):
 
     # ---- bodies between the per-atom records and the compact arrays -------------------------------
     def _to_records(self, sim):
-        """The local bodies back onto their owners' rows (before particles migrate or reorder)."""
-        if not self.compact:
+        """The local bodies back onto their owners' rows (before particles migrate or reorder; on one
+        rank they stay in their arrays)."""
+        if not self.compact or not self.parallel:
             return
         nl = self.nlocal_body
         rows = self.body_rows[:nl]
@@ -524,27 +554,27 @@ class FixRigidSmall(Fix):
         message = None
         if missing:
             i = int(np.flatnonzero(self.atom2row[:n] == -2)[0])
+            where = (f"among this rank's particles and ghosts at step {sim.step}: lost, or the ghost cutoff does not "
+                     f"span the body (its extent was {self.maxextent:.6g} at set-up; use comm_modify cutoff)"
+                     if self.parallel else f"at step {sim.step}: it was lost")
             message = (f"fix {self.id}: particle {int(tag[i])} cannot find its body's owner particle "
-                       f"{int(bodytag[i])} among this rank's particles and ghosts at step {sim.step}: the ghost "
-                       f"cutoff must exceed the body's extent ({self.maxextent:.6g} at set-up); use comm_modify "
-                       "cutoff")
+                       f"{int(bodytag[i])} {where}")
         sim.comm.agree(message)
-        # at most: the owners here, and one ghost body per owned particle whose owner is a ghost
-        self._allocate(int(np.count_nonzero(bodytag[:n] == tag[:n])) + int(np.count_nonzero(self.atom2row[:n] >= n)))
-        nl, ng = number_bodies(tag, bodytag, self.atom2row, n, nall, self.body_of_row, self.atom2body,
-                               self.body_rows)
-        self.nlocal_body, self.nghost_body = nl, ng
-        rows = self.body_rows[:nl]
-        record = a[self.record_name]
-        self.masstotal[:nl] = record[rows, MASS]
-        self.xcm[:nl] = record[rows, XCM:XCM + 3]
-        self.vcm[:nl] = record[rows, VCM:VCM + 3]
-        self.angmom[:nl] = record[rows, ANGMOM:ANGMOM + 3]
-        self.quat[:nl] = record[rows, QUAT:QUAT + 4]
-        self.inertia[:nl] = record[rows, INERTIA:INERTIA + 3]
-        self.image_body[:nl] = record[rows, IMAGE:IMAGE + 3].astype(np.int64)
-        self.conjqm[:nl] = record[rows, CONJQM:CONJQM + 4]
-        self.nrigid[:nl] = record[rows, NRIGID].astype(np.int64)
+        if self.parallel:
+            # at most: the owners here, and one ghost body per owned particle whose owner is a ghost
+            owners = int(np.count_nonzero(bodytag[:n] == tag[:n]))
+            self._allocate(owners + int(np.count_nonzero(self.atom2row[:n] >= n)))
+            nl, ng = number_bodies(tag, bodytag, self.atom2row, n, nall, self.body_of_row, self.atom2body,
+                                   self.body_rows)
+            self.nlocal_body, self.nghost_body = nl, ng
+            self._load(a[self.record_name][self.body_rows[:nl]], nl)
+            self.owner_tag[:nl] = tag[self.body_rows[:nl]]
+        else:
+            nl = self.nlocal_body
+            place_bodies(tag, n, self.owner_tag, nl, self.atom2row, self.rowmap, self.body_rows, self.body_of_row,
+                         self.atom2body)
+            if np.any(self.body_rows[:nl] < 0):
+                nl = self._drop_lost_bodies(sim)
         bodies.remap_centres(self.xcm[:nl], self.image_body[:nl], np.asarray(sim.box.lo, dtype=np.float64),
                              np.asarray(sim.box.hi, dtype=np.float64), np.asarray(sim.box.length, dtype=np.float64),
                              np.asarray(sim.box.periodic, dtype=np.bool_))
@@ -553,6 +583,32 @@ class FixRigidSmall(Fix):
         self.compact = True
         self.atom_arrays = None
         self._share(sim)
+
+    def _load(self, records, count):
+        """Bodies 0..count-1 from their records (rows of RECORD values)."""
+        self.masstotal[:count] = records[:, MASS]
+        self.xcm[:count] = records[:, XCM:XCM + 3]
+        self.vcm[:count] = records[:, VCM:VCM + 3]
+        self.angmom[:count] = records[:, ANGMOM:ANGMOM + 3]
+        self.quat[:count] = records[:, QUAT:QUAT + 4]
+        self.inertia[:count] = records[:, INERTIA:INERTIA + 3]
+        self.image_body[:count] = records[:, IMAGE:IMAGE + 3].astype(np.int64)
+        self.conjqm[:count] = records[:, CONJQM:CONJQM + 4]
+        self.nrigid[:count] = records[:, NRIGID].astype(np.int64)
+
+    def _drop_lost_bodies(self, sim):
+        """One rank: bodies whose every particle was lost (their owner among them) leave the arrays."""
+        nl = self.nlocal_body
+        keep = np.flatnonzero(self.body_rows[:nl] >= 0)
+        for name in BODY_ARRAYS:
+            values = getattr(self, name)
+            values[: len(keep)] = values[keep]
+        self.nlocal_body = self.nbody = len(keep)
+        self.body_of_row[:] = -1
+        self.body_of_row[self.body_rows[: len(keep)]] = np.arange(len(keep))
+        rows = self.atom2row[: sim.particles.nlocal]
+        self.atom2body[: len(rows)] = np.where(rows >= 0, self.body_of_row[np.maximum(rows, 0)], -1)
+        return len(keep)
 
     # ---- communication of bodies (only with more than one rank) -----------------------------------
     def _share(self, sim, motion_only=False):

@@ -179,3 +179,23 @@ def test_restart_goes_on_as_the_straight_run(tmp_path, style, extra):
     if style == "rigid/nvt/small":
         assert resumed.fixes["1"].eta_dot_t == pytest.approx(straight.fixes["1"].eta_dot_t, abs=1e-12)
         assert resumed.fixes["1"].eta_r == pytest.approx(straight.fixes["1"].eta_r, abs=1e-12)
+
+
+def test_lost_bodies(tmp_path):
+    """Bodies pushed out of a closed box (thermo_modify lost ignore): a dimer whose two particles
+    are both lost leaves the fix (one body left, its rows alone in compute rigid/local); a triangle
+    whose owner particle is lost first while the others remain stops the run with a line naming
+    both."""
+    x = np.array([[5, 5, 5], [6, 5, 5], [10, 10, 10], [11, 10, 10], [10.3, 11, 10.4]])
+    path = molecular_data(tmp_path / "lost.data", x, [1, 1, 2, 2, 2])
+    text = (f"units lj\natom_style molecular\nboundary f f f\nread_data {path}\nthermo_modify lost ignore\n"
+            "group dimer molecule 1\ngroup triangle molecule 2\nfix 1 all rigid/small molecule\n"
+            "compute 1 all rigid/local 1 mass\n")
+    sim = simulation(text + "fix 2 dimer addforce 5.0 0 0\nrun 1000")
+    fix = sim.fixes["1"]
+    assert sim.particles.nlocal == 3 and fix.nbody == fix.nlocal_body == 1
+    assert list(sim.computes["1"].local(sim)) == [3.0]
+    sim = simulation(text + "fix 2 triangle addforce 5.0 0 0")
+    with pytest.raises(SimulationError, match="fix 1: particle 3 cannot find its body's owner particle 5 at step "
+                                              r"\d+: it was lost"):
+        sim.command("run 1000")
