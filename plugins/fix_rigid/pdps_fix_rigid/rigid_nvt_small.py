@@ -20,8 +20,8 @@ Syntax::
 
 - ``temp``: target temperature at the run's start and end (temperature) and damping time TDAMP
   (time); required.
-- ``tparam``: chain length TCHAIN (default 10), TITER iterations (1) and the order TORDER, 3 or 5
-  (3).
+- ``tparam``: chain length TCHAIN (default 10), TITER iterations (1), each at most 1000, and the
+  order TORDER, 3 or 5 (3).
 
 Everything else is fix ``rigid/small``'s (``pdps doc fix rigid/small``).
 
@@ -44,6 +44,8 @@ from .rigid_nve_small import FixRigidNVESmall
 from .rigid_nvt import FixRigidNVT, chain_step, nvt_final, nvt_initial
 from .rigid_small import NOT_YET
 
+CHAIN_LIMIT = 1000
+
 
 class FixRigidNVTSmall(FixRigidNVESmall):
     name = "rigid/nvt/small"
@@ -65,8 +67,10 @@ class FixRigidNVTSmall(FixRigidNVESmall):
         if start <= 0 or stop <= 0 or damp <= 0:
             raise ScriptError(f"temp: TSTART, TSTOP and TDAMP must be > 0 (got {start:g} {stop:g} {damp:g})")
         chain, titer, order = args.tparam
-        if chain < 1 or titer < 1 or order not in (3, 5):
-            raise ScriptError(f"tparam: TCHAIN and TITER must be >= 1 and TORDER 3 or 5 (got {chain} {titer} {order})")
+        # longer chains or more iterations than CHAIN_LIMIT buy nothing and would exhaust memory or time
+        if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
+            raise ScriptError(f"tparam: TCHAIN and TITER must be 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
+                              f"(got {chain} {titer} {order})")
         return args
 
     def __init__(self, sim, id, group, args):
