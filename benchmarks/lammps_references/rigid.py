@@ -12,6 +12,9 @@ over 10^4 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/
 file is plugins/fix_rigid/tests/data/rigid_lj.data. The same for rigid and rigid/nve with ``langevin 0.0
 0.0 2.0 428984``: the Langevin drag on the bodies' translation and rotation without noise, the one
 deterministic run of that keyword (its noise is LAMMPS's Marsaglia generator's, pdps's a counter-based one).
+And rigid/npt and rigid/nph (BAROSTATS: iso, aniso with a ramped target and other chain settings, x and z
+coupled with a dilate group) on these bodies, 5000 or 10^4 steps: temperature, pressure, volume, box
+lengths, f_1, ecouple and econserve.
 
 A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
 group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
@@ -36,6 +39,31 @@ from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
 STYLES = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
+# rigid/npt and rigid/nph on the same bodies: name -> (style and keywords, steps)
+BAROSTATS = {
+    "rigid/npt iso": ("rigid/npt molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0", 10000),
+    "rigid/npt aniso": ("rigid/npt molecule temp 0.5 0.4 1.0 aniso 0.05 0.08 2.0 tparam 5 2 5 pchain 4", 5000),
+    "rigid/nph iso": ("rigid/nph molecule iso 0.05 0.05 2.0", 10000),
+    "rigid/nph xz": ("rigid/nph molecule x 0.05 0.05 2.0 z 0.05 0.05 2.0 couple xz dilate low", 5000),
+}
+# LAMMPS's fix rigid puts a body's centre back into the box (its image flags) only when neighbor lists are
+# built, and the virial of its thermostatted constraint forces depends on that image; pdps builds them
+# every step the box changes: LAMMPS does so too with check no, and pdps runs the script without that line
+BAROSTAT_SCRIPT = """units lj
+atom_style molecular
+read_data rigid_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+neigh_modify every 1 delay 0 check no
+group low molecule <= 4
+timestep 0.001
+fix 1 all {fix}
+thermo_style custom step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve
+thermo_modify format float %20.15g
+thermo 100
+run {steps}
+"""
 # the langevin keyword with T = 0: its drag alone, deterministic (no noise to draw), LAMMPS's to round-off
 DRAG = " langevin 0.0 0.0 2.0 428984"
 SCRIPT = """units lj
@@ -209,6 +237,8 @@ def main():
     for style in ("rigid", "rigid/nve"):
         tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG), [data],
                                                           label=f"{style} drag"))
+    for name, (fix, steps) in BAROSTATS.items():
+        tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))

@@ -73,9 +73,9 @@ Syntax::
   on any number of ranks, not LAMMPS's Marsaglia numbers (its drag alone, T = 0, is LAMMPS's to
   round-off). Forces are divided by ftm2v as LAMMPS's; in 2d only the in-plane force and the torque
   about z.
-- ``temp`` and ``tparam`` belong to ``rigid/nvt`` (refused here, as LAMMPS does). The barostat
-  keywords (iso, aniso, x, y, z, couple, pchain, dilate), mol and gravity are refused by name: not
-  implemented yet.
+- ``temp`` and ``tparam`` belong to ``rigid/nvt`` and ``rigid/npt``, the barostat keywords (iso,
+  aniso, x, y, z, couple, pchain, dilate) to ``rigid/nph`` and ``rigid/npt``: refused here, as LAMMPS
+  does. mol and gravity are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -109,9 +109,11 @@ OnOff = Literal["on", "off"]
 # moments recomputed in the body frame must match to TOLERANCE
 EPSILON = 1e-7
 TOLERANCE = 1e-6
-NOT_YET = ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate", "mol", "gravity")
+NOT_YET = ("mol", "gravity")
 # keywords LAMMPS refuses for a style (Illegal fix command), and why
 NOSE_HOOVER_ONLY = "only fix rigid/nvt and rigid/npt take it (LAMMPS's page: not rigid or rigid/nve)"
+BAROSTAT_ONLY = "only fix rigid/nph and rigid/npt take it (as LAMMPS)"
+BAROSTAT_REFUSED = {word: BAROSTAT_ONLY for word in ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")}
 # the langevin noise's streams of the counter-based generator, keyed by (seed, step, body number)
 TRANSLATION_STREAM = 4
 ROTATION_STREAM = 5
@@ -205,7 +207,7 @@ class FixRigid(Fix):
     virial_default = True
     virial_after = "final_integrate"
     not_yet = NOT_YET
-    refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY}
+    refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY} | BAROSTAT_REFUSED
 
     class Args(StyleArgs):
         bodystyle: Literal["single", "molecule", "group"] = param()
@@ -605,6 +607,11 @@ class FixRigid(Fix):
 
     def initial_integrate(self, sim):
         self.advance_initial(sim)
+        self.place_particles(sim)
+
+    def place_particles(self, sim):
+        """Particle positions and velocities from the bodies (LAMMPS's set_xv), with the first half
+        of the step's constraint virial."""
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)
         self.step_virial[:] = 0.0
         bodies.set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, self.xcm, self.vcm,

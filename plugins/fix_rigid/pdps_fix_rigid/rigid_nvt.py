@@ -42,7 +42,7 @@ from numba import njit
 from pdps_core.api import ScriptError, keyword
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
-from .rigid import EPSILON, NOT_YET, FixRigid
+from .rigid import BAROSTAT_REFUSED, EPSILON, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 
 
@@ -126,7 +126,7 @@ class FixRigidNVT(FixRigidNVE):
     extensive = True
     not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt thermostats with temp; langevin is for rigid and rigid/nve "
-                           "(LAMMPS's page: it cannot be used with rigid/nvt)"}
+                           "(LAMMPS's page: it cannot be used with rigid/nvt)"} | BAROSTAT_REFUSED
 
     class Args(FixRigid.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")

@@ -322,7 +322,8 @@ def test_rigid_nvt_needs_temp(tmp_path):
         sim.command("fix 1 all rigid/nvt single")
     with pytest.raises(ScriptError, match="tparam: TCHAIN and TITER must be >= 1 and TORDER 3 or 5"):
         sim.command("fix 1 all rigid/nvt single temp 1 1 1 tparam 3 1 4")
-    with pytest.raises(ScriptError, match="keyword iso of fix rigid/nvt is not implemented yet"):
+    with pytest.raises(ScriptError, match=r"keyword iso of fix rigid/nvt: only fix rigid/nph and rigid/npt take it "
+                                          r"\(as LAMMPS\)"):
         sim.command("fix 1 all rigid/nvt single temp 1 1 1 iso 1 1 1")
 
 
