@@ -114,3 +114,34 @@ def test_the_fix_must_be_a_rigid_fix(tmp_path):
         sim.computes["2"].local(sim)
     with pytest.raises(ScriptError, match="compute 3: fix none is not defined"):
         sim.computes["3"].local(sim)
+
+
+def test_the_same_rows_on_one_and_two_ranks(tmp_path):
+    """27 bodies drifting across ranks for 1000 steps (the LAMMPS scene of rigid/small): the rows
+    dump local gathers, sorted by owner id, are those of one rank."""
+    import shutil
+
+    from pdps_core.testing import run_ranks
+    shutil.copy(Path(__file__).with_name("data") / "rigid_small_lj.data", tmp_path)
+    script = """units lj
+atom_style molecular
+read_data rigid_small_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+timestep 0.001
+fix rb all rigid/nve/small molecule
+compute 1 all rigid/local rb id mol mass xu yu zu vx vy vz quatw quati quatj quatk tqx tqy tqz
+dump 1 all local 1000 rows.{ranks} COLUMNS
+run 1000
+""".replace("COLUMNS", " ".join(f"c_1[{k}]" for k in range(1, 17)))
+    tables = {}
+    for ranks in (1, 2):
+        run_ranks(script.format(ranks=ranks), ranks, tmp_path)
+        lines = (tmp_path / f"rows.{ranks}").read_text().splitlines()
+        last = len(lines) - 1 - lines[::-1].index("ITEM: NUMBER OF ENTRIES")
+        count = int(lines[last + 1])
+        rows = np.array([[float(w) for w in line.split()] for line in lines[last + 7:last + 7 + count]])
+        tables[ranks] = rows[np.argsort(rows[:, 0])]
+    assert tables[1].shape == tables[2].shape == (27, 16)
+    assert tables[2] == pytest.approx(tables[1], rel=1e-10, abs=1e-12)
