@@ -639,6 +639,8 @@ class FixRigidSmall(Fix):
 
     # ---- a run -----------------------------------------------------------------------------------
     def init_run(self, sim):
+        # a rigid fix defined after this one does not look for this one's bodies
+        self._check_other_fixes(sim, sim.groups.select(sim, self.group))
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt

@@ -145,6 +145,12 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
     with pytest.raises(ScriptError, match=r"particle 2 is in two bodies: molecule 1 of fix 2 and a body of fix 1 "
                                           r"\(rigid\)"):
         sim.command("fix 2 all rigid/small molecule")
+    # the other way round: found when the run starts
+    sim = simulation(f"units lj\natom_style molecular\nread_data {path}\ngroup pair id 2:3\n"
+                     "fix 1 all rigid/small molecule\nfix 2 pair rigid single")
+    with pytest.raises(ScriptError, match=r"particle 2 is in two bodies: molecule 1 of fix 1 and a body of fix 2 "
+                                          r"\(rigid\)"):
+        sim.command("run 0")
 
 
 def test_owner_out_of_ghost_reach_is_one_line(tmp_path):
