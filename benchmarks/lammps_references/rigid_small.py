@@ -14,7 +14,8 @@ excluded (neigh_modify exclude molecule/intra all). Thermo (15 digits) every 100
 steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_small_lj.txt; the data
 file is plugins/fix_rigid/tests/data/rigid_small_lj.data. Two more scenes, ``free`` and ``plane``: a dimer
 (a linear body) and a triangle pushed across the periodic x boundary by fix addforce, in 3d and in 2d,
-2000 steps of each style.
+2000 steps of each style; ``infile``: the free scene with the bodies' values from
+plugins/fix_rigid/tests/data/rigid_small_bodies.txt.
 """
 
 import sys
@@ -78,6 +79,15 @@ run 2000
 PLANE = FREE.format(dimension="dimension 2\n", zbox="-0.5 0.5", z=(0, 0, 0), vz=(0, 0, 0, 0),
                     enforce="fix 3 all enforce2d\n")
 FREE = FREE.format(dimension="", zbox="0 20", z=(5, 10, 10.4), vz=(0.3, 0.2, 0.9, 0.02), enforce="")
+# the free scene with the bodies' values from a file (infile): the dimer's centre of mass given outside the
+# box with the image flag that brings it back, the triangle a heavier body with its own inertia tensor,
+# velocity and angular momentum
+INFILE = FREE.replace("molecule{extra}", "molecule{extra} infile rigid_small_bodies.txt")
+BODIES = """# ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz vxcm vycm vzcm lx ly lz ixcm iycm izcm
+2
+1 2.0 -14.5 5 5 0 0.5 0.5 0 0 0 -0.05 0.4 -0.05 0 -0.15 0.1 1 0 0
+2 6.0 18.9 10.3 10.1 1.0 2.0 3.0 0.1 -0.2 0.05 0.3 -0.1 0.2 0.1 -0.2 0.5 0 0 0
+"""
 
 
 def centres():
@@ -140,11 +150,14 @@ def main():
     DATA.mkdir(parents=True, exist_ok=True)
     data = DATA / "rigid_small_lj.data"
     write_data(data)
+    (DATA / "rigid_small_bodies.txt").write_text(BODIES)
     tables = {style: thermo_lines(run_lammps(lmp, script(style), [data], label=style)) for style in STYLES}
     for style in STYLES:
         extra = STYLES[style]
         tables[f"free {style}"] = thermo_lines(run_lammps(lmp, FREE.format(style=style, extra=extra), label=style))
         tables[f"plane {style}"] = thermo_lines(run_lammps(lmp, PLANE.format(style=style, extra=extra), label=style))
+        tables[f"infile {style}"] = thermo_lines(run_lammps(lmp, INFILE.format(style=style, extra=extra),
+                                                            [DATA / "rigid_small_bodies.txt"], label=style))
     write_blocks(DATA / "rigid_small_lj.txt", tables)
 
 

@@ -13,7 +13,7 @@ rotational one, as LAMMPS computes it; a moment below 1e-6 counts 0).
 
 Syntax::
 
-    fix ID GROUP rigid/nve/small molecule [reinit yes|no]
+    fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE]
 
 Example::
 
@@ -49,7 +49,7 @@ def hamiltonian_kinetic(masstotal, vcm, quat, conjqm, inertia, nbody):
 
 class FixRigidNVESmall(FixRigidSmall):
     name = "rigid/nve/small"
-    usage = "fix ID GROUP rigid/nve/small molecule [reinit yes|no]"
+    usage = "fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE]"
 
     def setup(self, sim):
         super().setup(sim)

@@ -16,7 +16,7 @@ sum_k (N_f,k k_B T eta_1 + k_B T eta_k + Q_k eta_dot_k^2 / 2) over both chains.
 Syntax::
 
     fix ID GROUP rigid/nvt/small molecule temp TSTART TSTOP TDAMP [tparam TCHAIN TITER TORDER]
-        [reinit yes|no]
+        [reinit yes|no] [infile FILE]
 
 - ``temp``: target temperature at the run's start and end (temperature) and damping time TDAMP
   (time); required.
@@ -50,7 +50,7 @@ CHAIN_LIMIT = 1000
 class FixRigidNVTSmall(FixRigidNVESmall):
     name = "rigid/nvt/small"
     usage = ("fix ID GROUP rigid/nvt/small molecule temp TSTART TSTOP TDAMP [tparam TCHAIN TITER TORDER] "
-             "[reinit yes|no]")
+             "[reinit yes|no] [infile FILE]")
     extensive = True
     not_yet = tuple(word for word in NOT_YET if word not in ("temp", "tparam"))
 

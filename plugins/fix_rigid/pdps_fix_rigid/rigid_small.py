@@ -42,14 +42,19 @@ array (LAMMPS's rigid/small has none): ``compute rigid/local`` gives the bodies'
 
 Syntax::
 
-    fix ID GROUP rigid/small molecule [reinit yes|no]
+    fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE]
 
 - ``molecule``: one body per molecule id among the group's particles (LAMMPS's only bodystyle for
   rigid/small); the particles need molecule ids (atom_style molecular, bond, angle or full).
 - ``reinit yes|no``: set the bodies up again from the particles at every run (yes) or at the first
   only.
-- LAMMPS's other keywords (langevin, infile, mol, temp, tparam, iso, aniso, x, y, z, couple,
-  pchain, dilate, gravity) are refused by name: not implemented yet.
+- ``infile FILE``: mass, centre of mass, inertia tensor (about the centre of mass, box axes),
+  velocity, angular momentum and the centre of mass's image flags of some bodies instead of the
+  values from their particles, in fix rigid's format (``pdps doc fix rigid``; ID the molecule id).
+  As LAMMPS's rigid/small: bodies the file leaves out take everything from their particles, their
+  motion included (fix rigid starts them at rest), and bodies are set up at the first run only.
+- LAMMPS's other keywords (langevin, mol, temp, tparam, iso, aniso, x, y, z, couple, pchain,
+  dilate, gravity) are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -62,6 +67,8 @@ Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); the i
 references are fix rigid's and rigid/nve's.
 """
 
+from pathlib import Path
+from types import SimpleNamespace
 from typing import Literal
 
 import numpy as np
@@ -75,7 +82,7 @@ from .rigid import EPSILON, TOLERANCE, FixRigid, omegas, richardson_final, richa
 
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
-NOT_YET = ("langevin", "infile", "mol", "temp", "tparam", "iso", "aniso", "x", "y", "z", "couple", "pchain",
+NOT_YET = ("langevin", "mol", "temp", "tparam", "iso", "aniso", "x", "y", "z", "couple", "pchain",
            "dilate", "gravity")
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
@@ -262,7 +269,7 @@ def principal_axes(tensor):
 
 class FixRigidSmall(Fix):
     name = "rigid/small"
-    usage = "fix ID GROUP rigid/small molecule [reinit yes|no]"
+    usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE]"
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
@@ -271,6 +278,7 @@ class FixRigidSmall(Fix):
     class Args(StyleArgs):
         bodystyle: Literal["molecule"] = param()
         reinit: Literal["yes", "no"] = keyword("yes")
+        infile: str | None = keyword(None)
 
     @classmethod
     def parse(cls, words):
@@ -315,6 +323,7 @@ class FixRigidSmall(Fix):
         if sim.comm.sum(int(members.sum())) == 0:
             raise ScriptError(f"fix {id}: no particles in group {group} to make rigid bodies of")
         self._check_other_fixes(sim, members)
+        self.from_file = self._read_infile(sim, members) if args.infile is not None else {}
         self.capacity = 0
         self._allocate(16)
         self.nlocal_body = self.nghost_body = 0
@@ -350,6 +359,25 @@ class FixRigidSmall(Fix):
             where = f"molecule {int(p.molecule[i])}" if i >= 0 else "a molecule"
             raise ScriptError(f"particle {tag} is in two bodies: {where} of fix {self.id} and a body of fix "
                               f"{other.id} ({other.name})")
+
+    def _read_infile(self, sim, members):
+        """``infile FILE``: {molecule id: LAMMPS's 19 values of the body}, read and checked as fix rigid
+        reads it (its parser, told the molecule ids of the group's bodies)."""
+        mol = sim.particles.molecule[: sim.particles.nlocal][members]
+        ids = np.unique(sim.comm.allgather_rows(np.unique(mol)))
+        reader = SimpleNamespace(id=self.id, body_ids=ids)
+        found, problem = {}, None
+        if sim.comm.is_root:
+            try:
+                found = FixRigid._parse_infile(reader, Path(sim.resolve(self.args.infile)))
+            except ScriptError as error:
+                problem = str(error)
+            except OSError as error:
+                problem = f"infile {self.args.infile}: cannot read it ({error.strerror or error})"
+        found, problem = sim.comm.bcast((found, problem))
+        if problem:
+            raise ScriptError(problem)
+        return {int(ids[index]): np.asarray(row, dtype=np.float64) for index, row in found.items()}
 
     def _allocate(self, count):
         """Room for ``count`` bodies (local and ghost), values kept."""
@@ -471,10 +499,18 @@ class FixRigidSmall(Fix):
         zero_body_image = np.zeros((nb, 3), dtype=np.int64)
         no_types = np.zeros(count, dtype=np.int32)
         sums = bodies.mass_and_centre(xu, zero_image, body, no_types, NO_ARRAY, m, length, count, nb)
-        masstotal = sums[:, 3]
+        masstotal = sums[:, 3].copy()
         xcm = sums[:, :3] / masstotal[:, None]
+        # infile: LAMMPS's values (centre of mass with its image flags) instead of the particles'
+        listed = [(b, self.from_file[int(ident)]) for b, ident in enumerate(ids) if int(ident) in self.from_file]
+        for b, row in listed:
+            masstotal[b] = row[0]
+            xcm[b] = row[1:4] + row[16:19] * length
         tensor = bodies.inertia_sums(xu, zero_image, body, no_types, NO_ARRAY, m, radius, length, xcm,
                                      zero_body_image, count, nb)
+        for b, row in listed:
+            ixx, iyy, izz, ixy, ixz, iyz = row[4:10]
+            tensor[b] = (ixx, iyy, izz, iyz, ixz, ixy)
         inertia, quat = principal_axes(tensor)
         ex, ey, ez = np.zeros((nb, 3)), np.zeros((nb, 3)), np.zeros((nb, 3))
         axes_of(quat, ex, ey, ez, nb)
@@ -485,6 +521,7 @@ class FixRigidSmall(Fix):
         relative = np.abs(check[:, :3] - inertia) / np.where(zero, 1.0, inertia)
         bad = np.where(zero, np.abs(check[:, :3]) > TOLERANCE, relative > TOLERANCE)
         bad |= np.abs(check[:, 3:]) > TOLERANCE * inertia.sum(axis=1, keepdims=True) / 3.0
+        bad[[b for b, _ in listed]] = False      # the file's values need not be the particles'
         if bad.any():
             b = int(np.flatnonzero(bad.any(axis=1))[0])
             return answers, (f"fix {self.id}: body of molecule {int(ids[b])} has bad principal moments of inertia "
@@ -493,6 +530,10 @@ class FixRigidSmall(Fix):
                                  radius, length, xcm, zero_body_image, count, nb)
         vcm = momenta[:, :3] / masstotal[:, None]
         angmom = momenta[:, 3:].copy()
+        # as LAMMPS's rigid/small: bodies the file leaves out move as their particles do
+        for b, row in listed:
+            vcm[b] = row[10:13]
+            angmom[b] = row[13:16]
         if sim.dimension == 2:
             vcm[:, 2] = 0.0
             angmom[:, :2] = 0.0
@@ -644,7 +685,8 @@ class FixRigidSmall(Fix):
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
-        if self.args.reinit == "yes" or not self.set_up:
+        # a file's values hold for the first run only (as fix rigid's infile)
+        if (self.args.reinit == "yes" and self.args.infile is None) or not self.set_up:
             self.setup_bodies(sim)
         else:
             self._to_records(sim)

@@ -110,7 +110,9 @@ def test_bodies_straddling_the_box_are_whole_and_owned_once(tmp_path):
 @pytest.mark.parametrize("line, message", [
     ("fix 1 all rigid/small single", "fix rigid/small takes bodystyle molecule only"),
     ("fix 1 all rigid/small molecule langevin 1 1 1 5", "keyword langevin of fix rigid/small is not implemented yet"),
-    ("fix 1 all rigid/small molecule infile bodies.txt", "keyword infile of fix rigid/small is not implemented yet"),
+    ("fix 1 all rigid/small molecule mol water", "keyword mol of fix rigid/small is not implemented yet"),
+    ("fix 1 all rigid/small molecule infile nowhere.txt", "infile nowhere.txt: cannot read it"),
+    ("fix 1 all rigid/small molecule infile BODIES", r"BODIES:3: no body 5 in fix 1 \(its bodies: 1..2\)"),
     ("fix 1 all rigid/small molecule force 1 off off off", "force"),
     ("fix 1 all rigid/small molecule reinit maybe", "reinit"),
     ("fix 1 all rigid/nvt/small molecule", "fix rigid/nvt/small needs temp TSTART TSTOP TDAMP"),
@@ -122,6 +124,9 @@ def test_bodies_straddling_the_box_are_whole_and_owned_once(tmp_path):
 ])
 def test_bad_input_is_one_line(tmp_path, line, message):
     path = molecular_data(tmp_path / "two.data", np.array([[1, 1, 1], [2, 1, 1], [5, 5, 5], [5, 6, 5]]), [1, 1, 2, 2])
+    bodies = tmp_path / "bodies.txt"
+    bodies.write_text("# a body the fix does not have\n1\n5 2.0 1.5 1 1 0 0.5 0.5 0 0 0 0 0 0 0 0 0 0 0 0\n")
+    line, message = line.replace("BODIES", str(bodies)), message.replace("BODIES", str(bodies))
     sim = simulation(f"units lj\natom_style molecular\nread_data {path}")
     with pytest.raises(ScriptError, match=message):
         sim.command(line)

@@ -16,7 +16,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
-from rigid_small import FREE, PLANE, STYLES as EXTRA, script  # noqa: E402
+from rigid_small import FREE, INFILE, PLANE, STYLES as EXTRA, script  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
@@ -56,14 +56,16 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
 
 
-@pytest.mark.parametrize("scene", ["free", "plane"])
+@pytest.mark.parametrize("scene", ["free", "plane", "infile"])
 @pytest.mark.parametrize("style", STYLES)
-def test_linear_and_2d_bodies_match_lammps(pdps_cli, scene, style):
+def test_linear_2d_and_infile_bodies_match_lammps(pdps_cli, tmp_path, scene, style):
     """A dimer (linear: 5 degrees of freedom in 3d) and a triangle pushed across the periodic x
-    boundary by fix addforce, in 3d and in 2d (fix enforce2d): temperature, kinetic energy,
-    pressure and f_1 (LAMMPS's count: 6 a body less its linear ones in 3d, 6 a body in 2d) over
-    2000 steps."""
-    text = {"free": FREE, "plane": PLANE}[scene].format(style=style, extra=EXTRA[style])
+    boundary by fix addforce, in 3d and in 2d (fix enforce2d), and in 3d with the bodies' masses,
+    centres of mass (one given with an image flag), inertia tensors and motion from an infile:
+    temperature, kinetic energy, pressure and f_1 (LAMMPS's count: 6 a body less its linear ones in
+    3d, 6 a body in 2d) over 2000 steps."""
+    shutil.copy(DATA / "rigid_small_bodies.txt", tmp_path)
+    text = {"free": FREE, "plane": PLANE, "infile": INFILE}[scene].format(style=style, extra=EXTRA[style])
     done = pdps_cli(text, "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
