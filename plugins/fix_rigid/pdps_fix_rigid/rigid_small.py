@@ -22,11 +22,12 @@ What differs is where a body lives. The rigid variant keeps every body on every 
 over all ranks each step; here a body belongs to the particle nearest the centre of its bounding box
 (unwrapped; the lower id on a tie), the body's *owner*, and to the rank owning that particle. The
 body's record (mass, centre of mass and its image flags, velocity, angular momentum, quaternion,
-principal moments) travels with the owner when it migrates between ranks. Particles of the body on
-the owner's rank and on its neighbours find the body through the owner's ghost copy: each step the
-owner's rank sends the body's position, velocity and axes to the ghost copies, and the particles'
-force and torque sums come back onto the owner (LAMMPS's forward and reverse communication of
-bodies). Nothing is summed over all ranks but totals for thermo, so the cost grows with the bodies
+principal moments) travels with the owner when it migrates between ranks (on one rank the bodies
+stay in their arrays and only their owners' rows are found again after particles are sorted).
+Particles of the body on the owner's rank and on its neighbours find the body through the owner's
+ghost copy: each step the owner's rank sends the body's position, orientation and velocities to the
+ghost copies, and the particles' force and torque sums come back onto the owner (LAMMPS's forward
+and reverse communication of bodies). Nothing is summed over all ranks but totals for thermo, so the cost grows with the bodies
 a rank holds. Bodies are set up at a run's start (``reinit yes``, the default; ``no``: at the first
 run only) from the particles, their properties computed on the rank the molecule id hashes to and
 sent back (LAMMPS's rendezvous).
