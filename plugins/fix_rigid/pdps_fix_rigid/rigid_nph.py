@@ -1,6 +1,6 @@
 r"""Fix ``rigid/nph``: the rigid bodies of fix ``rigid/nve`` at constant pressure, with the barostat of
 Kamberaj, Low and Neal as LAMMPS's fix rigid/nph (the equations, the box change and the conserved
-quantity: pdps_fix_rigid.rigid_nh's docstring). The barostat's masses take the
+quantity, the text rigid/npt shares, from rigid_nh, follow the example). The barostat's masses take the
 temperature of all particles at the run's start (1 in lj units, 300 otherwise, where that is 0).
 
 Syntax::
@@ -24,7 +24,9 @@ Example::
 
 from pdps_core.api import ScriptError
 
-from .rigid_nh import FixRigidNH
+from .rigid_nh import FixRigidNH, __doc__ as BAROSTAT
+
+__doc__ += "\n" + BAROSTAT
 
 
 class FixRigidNPH(FixRigidNH):

@@ -1,8 +1,7 @@
 r"""Fix ``rigid/npt``: the rigid bodies of fix ``rigid/nve`` at constant temperature and pressure, with
 the Nose-Hoover chains of fix ``rigid/nvt`` on their translation and rotation and the barostat of
-Kamberaj, Low and Neal, as LAMMPS's fix rigid/npt. The equations of the barostat, the box change,
-the pressure it reads and the conserved quantity (f_ID, ecouple) are in pdps_fix_rigid.rigid_nh's
-docstring, which both styles share.
+Kamberaj, Low and Neal, as LAMMPS's fix rigid/npt. The barostat, the box change, the pressure it
+reads and f_ID/ecouple (the text both styles share, from rigid_nh) follow the examples.
 
 Syntax::
 
@@ -22,7 +21,9 @@ Examples::
 
 from pdps_core.api import ScriptError
 
-from .rigid_nh import FixRigidNH
+from .rigid_nh import FixRigidNH, __doc__ as BAROSTAT
+
+__doc__ += "\n" + BAROSTAT
 
 
 class FixRigidNPT(FixRigidNH):

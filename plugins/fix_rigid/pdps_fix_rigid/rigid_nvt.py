@@ -45,6 +45,9 @@ from .quaternion import axes_from_quaternion, no_squish_rotate
 from .rigid import BAROSTAT_REFUSED, EPSILON, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 
+# longest chain and most iterations a step: beyond, each step's chain work would stall a run
+CHAIN_LIMIT = 1000
+
 
 @njit(cache=True, inline="always")
 def maclaurin(x):
@@ -141,8 +144,8 @@ class FixRigidNVT(FixRigidNVE):
         if start <= 0 or stop <= 0 or damp <= 0:
             raise ScriptError(f"temp: TSTART, TSTOP and TDAMP must be > 0 (got {start:g} {stop:g} {damp:g})")
         chain, titer, order = args.tparam
-        if chain < 1 or titer < 1 or order not in (3, 5):
-            raise ScriptError(f"tparam: TCHAIN and TITER must be >= 1 and TORDER 3 or 5 "
+        if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
+            raise ScriptError(f"tparam: TCHAIN and TITER must be from 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
                               f"(got {chain} {titer} {order})")
         return args
 

@@ -320,7 +320,7 @@ def test_rigid_nvt_needs_temp(tmp_path):
     sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3)
     with pytest.raises(ScriptError, match="fix rigid/nvt needs temp TSTART TSTOP TDAMP"):
         sim.command("fix 1 all rigid/nvt single")
-    with pytest.raises(ScriptError, match="tparam: TCHAIN and TITER must be >= 1 and TORDER 3 or 5"):
+    with pytest.raises(ScriptError, match="tparam: TCHAIN and TITER must be from 1 to 1000 and TORDER 3 or 5"):
         sim.command("fix 1 all rigid/nvt single temp 1 1 1 tparam 3 1 4")
     with pytest.raises(ScriptError, match=r"keyword iso of fix rigid/nvt: only fix rigid/nph and rigid/npt take it "
                                           r"\(as LAMMPS\)"):

@@ -132,7 +132,10 @@ run 24000
     ("fix 1 all rigid/nph single x 1 1 1 couple xy", "couple xy: every coupled axis needs a pressure"),
     ("fix 1 all rigid/nph single x 1 1 1 y 2 2 1 couple xy", "couple xy: coupled axes need the same PSTART PSTOP PDAMP"),
     ("fix 1 all rigid/nph single z 1 1 1", "fix rigid/nph cannot change the non-periodic z length"),
-    ("fix 1 all rigid/nph single iso 1 1 1 pchain 0", r"pchain: the barostat chain needs at least 1 thermostat"),
+    ("fix 1 all rigid/nph single iso 1 1 1 pchain 0", r"pchain: the barostat chain needs 1 to 1000 thermostats"),
+    ("fix 1 all rigid/nph single iso 1 1 1 pchain 100000000", r"pchain: the barostat chain needs 1 to 1000"),
+    ("fix 1 all rigid/npt single temp 1 1 1 iso 1 1 1 tparam 3 100000000 3", r"tparam: TCHAIN and TITER must be "
+     r"from 1 to 1000"),
     ("fix 1 all rigid/nph single iso 1 1 1 langevin 1 1 1 5", "keyword langevin of fix rigid/nph: fix rigid/nph and "
      "rigid/npt take no langevin"),
     ("fix 1 all rigid/nve single iso 1 1 1", r"keyword iso of fix rigid/nve: only fix rigid/nph and rigid/npt take it"),
