@@ -14,7 +14,8 @@ file is plugins/fix_rigid/tests/data/rigid_lj.data. The same for rigid and rigid
 deterministic run of that keyword (its noise is LAMMPS's Marsaglia generator's, pdps's a counter-based one).
 And rigid/npt and rigid/nph (BAROSTATS: iso, aniso with a ramped target and other chain settings, x and z
 coupled with a dilate group) on these bodies, 5000 or 10^4 steps: temperature, pressure, volume, box
-lengths, f_1, ecouple and econserve.
+lengths, f_1, ecouple and econserve. ``custom``: bodystyle custom v_b, four bodies of two molecules each
+(b = ceil(mol/2)), 5000 steps.
 
 A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
 group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
@@ -63,6 +64,21 @@ thermo_style custom step temp epair ke etotal press vol lx ly lz f_1 ecouple eco
 thermo_modify format float %20.15g
 thermo 100
 run {steps}
+"""
+# bodystyle custom: bodies of two molecules each, from an atom-style variable
+CUSTOM = """units lj
+atom_style molecular
+read_data rigid_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+variable b atom ceil(mol/2)
+timestep 0.001
+fix 1 all rigid custom v_b
+thermo_style custom step temp epair etotal press f_1 f_1[3][1]
+thermo_modify format float %20.15g
+thermo 500
+run 5000
 """
 # the langevin keyword with T = 0: its drag alone, deterministic (no noise to draw), LAMMPS's to round-off
 DRAG = " langevin 0.0 0.0 2.0 428984"
@@ -239,6 +255,7 @@ def main():
                                                           label=f"{style} drag"))
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
+    tables["custom"] = thermo_lines(run_lammps(lmp, CUSTOM, [data], label="custom"))
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))

@@ -47,7 +47,10 @@ Syntax::
 
 - BODYSTYLE ``single``: the whole group is one body; ``molecule``: one body per molecule id in the
   group (the id 0 too); ``group N G1 ... GN``: one body per group, its particles those of the fix
-  group in Gk. A particle in two bodies is an error naming both.
+  group in Gk; ``custom i_NAME`` or ``custom v_NAME``: one body per value of a per-particle integer
+  property NAME (a fix property/atom's) or of an atom-style variable NAME (truncated to an integer),
+  numbered as LAMMPS's, value - (smallest value in the group) + 1 (the IDs of an infile). A particle
+  in two bodies is an error naming both.
 - ``force M xflag yflag zflag`` (``on``/``off``): which components of the force move body M (all on
   by default; in 2d z is off); ``torque M ...`` likewise for the torque (x and y off in 2d). M is a
   body number from 1 or a range as LAMMPS writes it: ``*``, ``*n``, ``n*``, ``m*n``. Repeated
@@ -85,6 +88,7 @@ Examples::
     fix 1 clump rigid single force 1 off off on langevin 1.0 1.0 1.0 428984
     fix 1 polychains rigid molecule force 1*5 off off off force 6*10 off off on
     fix 2 fluid rigid group 3 clump1 clump2 clump3 torque * off off off
+    fix 3 clumps rigid/nve custom v_clump
 
 Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); Richardson iteration as
 in Evans, Mol. Phys. 34, 317 (1977) and Kamberaj, Low and Neal, J. Chem. Phys. 122, 224114 (2005).
@@ -118,6 +122,7 @@ BAROSTAT_REFUSED = {word: BAROSTAT_ONLY for word in ("iso", "aniso", "x", "y", "
 TRANSLATION_STREAM = 4
 ROTATION_STREAM = 5
 IMAGE_LIMIT = 2 ** 30        # the particles' image flags are int32
+BODY_ID_LIMIT = 2 ** 31 - 1  # bodystyle custom's values, LAMMPS's int
 INFILE_COLUMNS = "ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz vxcm vycm vzcm lx ly lz ixcm iycm izcm"
 
 
@@ -201,7 +206,7 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
 
 class FixRigid(Fix):
     name = "rigid"
-    usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN [force M XFLAG YFLAG ZFLAG] "
+    usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN|custom i_NAME|v_NAME [force M XFLAG YFLAG ZFLAG] "
              "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]")
     can_virial = True
     virial_default = True
@@ -210,7 +215,7 @@ class FixRigid(Fix):
     refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY} | BAROSTAT_REFUSED
 
     class Args(StyleArgs):
-        bodystyle: Literal["single", "molecule", "group"] = param()
+        bodystyle: Literal["single", "molecule", "group", "custom"] = param()
         groups: list[str] = param(default_factory=list)
         force: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
@@ -241,6 +246,10 @@ class FixRigid(Fix):
             if count < 1 or len(args.groups) != count + 1:
                 raise ScriptError(f"bodystyle group needs N >= 1 and N group ids (got "
                                   f"{' '.join(args.groups) or 'nothing'})")
+        elif args.bodystyle == "custom":
+            if len(args.groups) != 1 or not args.groups[0].startswith(("i_", "v_")) or len(args.groups[0]) < 3:
+                raise ScriptError(f"bodystyle custom needs one i_NAME (a per-particle integer property) or v_NAME "
+                                  f"(an atom-style variable) (got {' '.join(args.groups) or 'nothing'})")
         elif args.groups:
             raise ScriptError(f"bodystyle {args.bodystyle} takes no arguments (got {' '.join(args.groups)})")
         if args.langevin is not None:
@@ -319,11 +328,13 @@ class FixRigid(Fix):
             body[members] = 0
             self.body_ids = np.array([1])
             return 1
-        if style == "molecule":
-            if not p.has("molecule"):
-                raise ScriptError(f"fix {self.id}: bodystyle molecule needs molecule ids (atom_style molecular, "
-                                  f"bond, angle or full; particle style here: {sim.particle_style})")
-            mol = p.molecule[:n]
+        if style in ("molecule", "custom"):
+            mol = self._molecule_ids(sim, members) if style == "custom" else None
+            if style == "molecule":
+                if not p.has("molecule"):
+                    raise ScriptError(f"fix {self.id}: bodystyle molecule needs molecule ids (atom_style molecular, "
+                                      f"bond, angle or full; particle style here: {sim.particle_style})")
+                mol = p.molecule[:n]
             ids = np.unique(sim.comm.allgather_rows(np.unique(mol[members])))
             body[members] = np.searchsorted(ids, mol[members])
             self.body_ids = ids
@@ -346,6 +357,35 @@ class FixRigid(Fix):
         body[:] = owner
         self.body_ids = np.arange(1, len(names) + 1)
         return len(names)
+
+    def _molecule_ids(self, sim, members):
+        """bodystyle custom: LAMMPS's body ids from a per-particle integer property (i_NAME) or an
+        atom-style variable (v_NAME, truncated to an integer): value - (smallest value in the group) + 1
+        for the group's particles, 0 for the others."""
+        p = sim.particles
+        n = p.nlocal
+        source = self.args.groups[0]
+        name = source[2:]
+        if source.startswith("i_"):
+            if not p.has(name) or p.arrays[name].ndim != 1:
+                raise ScriptError(f"fix {self.id}: bodystyle custom {source}: no per-particle property {name} "
+                                  "with one value per particle")
+            values = np.asarray(p.arrays[name][:n], dtype=np.float64)
+            if np.any(values[members] != np.round(values[members])):
+                raise ScriptError(f"fix {self.id}: bodystyle custom {source}: property {name} holds values that "
+                                  "are not integers")
+        else:
+            if name not in sim.variables:
+                raise ScriptError(f"fix {self.id}: bodystyle custom {source}: variable {name} is not defined")
+            values = np.trunc(np.asarray(sim.variables.atom_values(name), dtype=np.float64))
+        chosen = values[members]
+        if not np.all(np.isfinite(chosen)) or np.any(np.abs(chosen) > BODY_ID_LIMIT):
+            raise ScriptError(f"fix {self.id}: bodystyle custom {source}: values must be integers within "
+                              f"+-{BODY_ID_LIMIT}")
+        smallest = sim.comm.min(float(chosen.min()) if len(chosen) else math.inf)
+        ids = np.zeros(n, dtype=np.int64)
+        ids[members] = (chosen - smallest + 1).astype(np.int64)
+        return ids
 
     def _read_infile(self, sim):
         """The bodies' values of ``infile FILE`` (LAMMPS's format: a count, then one line per body:

@@ -395,3 +395,49 @@ def test_a_body_emptied_between_runs_is_one_line(tmp_path):
         """)
     with pytest.raises(ScriptError, match=r"fix 1: body 2 has 1 particle\(s\) left; a rigid body needs at least 2"):
         sim.command("run 10")
+
+
+def test_custom_bodystyle_takes_body_ids_from_a_property_or_a_variable(tmp_path):
+    """Two tetrahedra of the octahedron's corners split by a per-particle property (3 and 7: bodies 1 and
+    5 by LAMMPS's value - smallest + 1) or by an atom-style variable (truncated: 1.9 and 2.2 -> 1 and 2):
+    the same two bodies as bodystyle group, with the same motion under a force; only the group's particles."""
+    setup = """
+        group left id 1 3 5
+        group right id 2 4 6
+        velocity all set 0.1 -0.2 0.3
+        velocity left set -0.3 0.1 0.2
+        fix push all addforce 0.2 0.0 -0.1
+        """
+    runs = {}
+    for style in ("group 2 left right", "custom i_flag", "custom v_b"):
+        sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, setup=setup + """
+            fix p all property/atom flag scalar no no no 7
+            set group left property/atom flag 3
+            variable b atom 1.9+0.3*(id%2==0)
+            """)
+        sim.command(f"fix 1 all rigid {style}\nthermo_style custom step f_1\nrun 200")
+        fix = sim.fixes["1"]
+        runs[style] = (fix.xcm.copy(), fix.vcm.copy(), fix.angmom.copy())
+        if style == "custom i_flag":
+            assert list(fix.body_ids) == [1, 5]
+        if style == "custom v_b":
+            assert list(fix.body_ids) == [1, 2]
+    for style in ("custom i_flag", "custom v_b"):
+        for ours, theirs in zip(runs[style], runs["group 2 left right"]):
+            assert ours == pytest.approx(theirs, rel=1e-13, abs=1e-14)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix 1 all rigid custom", "bodystyle custom needs one i_NAME"),
+    ("fix 1 all rigid custom flag", "bodystyle custom needs one i_NAME"),
+    ("fix 1 all rigid custom v_a v_b", "bodystyle custom needs one i_NAME"),
+    ("fix 1 all rigid custom v_nope", "bodystyle custom v_nope: variable nope is not defined"),
+    ("fix 1 all rigid custom i_nope", "bodystyle custom i_nope: no per-particle property nope"),
+    ("fix 1 all rigid custom i_half", "bodystyle custom i_half: property half holds values that are not integers"),
+    ("fix 1 all rigid custom v_huge", r"bodystyle custom v_huge: values must be integers within \+-2147483647"),
+])
+def test_bad_custom_bodystyle_is_one_line(tmp_path, line, message):
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3,
+                setup="fix p all property/atom half scalar no no no 0.5\nvariable huge atom 1e12*id")
+    with pytest.raises(ScriptError, match=message):
+        sim.command(line)
