@@ -30,7 +30,7 @@ from .script.lexer import logical_lines, read_text, split_words, strip_comment, 
 from .script.variables import Variables
 from .state import limits
 from .state.groups import Groups
-from .state.particles import Particles
+from .state.particles import Particles, substyles
 from .state.units import UNITS
 from .styles import VariableRef
 
@@ -125,6 +125,12 @@ class Simulation:
     @property
     def neighbor(self):
         return self.neighbors
+
+    @property
+    def particle_styles(self):
+        """The particle styles in effect: (particle_style,), or the sub-styles of hybrid, so that
+        ``"sphere" in sim.particle_styles`` holds for ``hybrid sphere molecular`` too."""
+        return substyles(self.particle_style)
 
     # ---- numpy views of the owned particles -------------------------------------------------------
     @property

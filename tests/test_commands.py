@@ -677,7 +677,7 @@ class TestParticleStyle:
 
     def test_errors(self, sim):
         fails(sim, "particle_style ellipsoid", "particle_style",
-              "particle style must be one of atomic, sphere, charge, molecular, bond, angle, full (got ellipsoid)")
+              "particle style must be one of atomic, sphere, charge, molecular, bond, angle, full, hybrid (got ellipsoid)")
         fails(sim, box() + "particle_style sphere", "particle_style",
               "particle_style must come before the simulation box is created")
 

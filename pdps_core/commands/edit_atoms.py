@@ -34,7 +34,7 @@ from ..errors import ScriptError
 from ..random import particle_uniforms
 from ..random_park import park_reset_coord, park_uniform
 from ..state import limits
-from ..state.particles import PARTICLE_STYLES
+from ..state.particles import style_columns
 from . import command
 from .words import choice, count, integer, number, type_range, yes_no
 
@@ -449,7 +449,7 @@ def write_data(sim, args):
             raise ScriptError(f"unknown write_data keyword {args[k]}")
     p = sim.particles
     n = p.nlocal
-    sphere = sim.particle_style == "sphere"
+    sphere = "sphere" in sim.particle_styles
     values = {"id": p.tag[:n], "type": p.type[:n], "x": p.x[:n, 0], "y": p.x[:n, 1], "z": p.x[:n, 2]}
     if sphere:
         volume = _volume(sim, p.radius[:n])
@@ -458,11 +458,13 @@ def write_data(sim, args):
     for name in ("molecule", "q"):
         if p.has(name):
             values[name] = p.arrays[name][:n]
-    names = PARTICLE_STYLES[sim.particle_style][1]
+    names = style_columns(sim.particle_style)
     whole = {"id", "type", "molecule"}
     columns = [values[name].astype(np.float64) for name in names]
     atoms = sim.comm.gather_rows(np.column_stack(columns + list(p.image[:n].T.astype(np.float64))))
-    velocities = sim.comm.gather_rows(np.column_stack([p.tag[:n].astype(np.float64), p.v[:n]]))
+    # spheres' lines carry their angular velocity too, as LAMMPS writes them
+    spin = [p.omega[:n]] if sphere else []
+    velocities = sim.comm.gather_rows(np.column_stack([p.tag[:n].astype(np.float64), p.v[:n]] + spin))
     if not sim.comm.is_root:
         return
     atoms = atoms[np.argsort(atoms[:, 0])]
@@ -474,12 +476,12 @@ def write_data(sim, args):
     if not sphere:
         lines += ["", "Masses", ""]
         lines += [f"{t} {float(sim.type_mass[t])!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.type_mass[t])]
-    lines += ["", f"Atoms # {sim.particle_style}", ""]
+    lines += ["", f"Atoms # {sim.particle_style.split()[0]}", ""]
     for row in atoms.tolist():
         numbers = [f"{int(v)}" if name in whole else repr(v) for name, v in zip(names, row)]
         lines.append(" ".join(numbers + [f"{int(v)}" for v in row[-3:]]))
     lines += ["", "Velocities", ""]
-    lines += [f"{int(row[0])} {row[1]!r} {row[2]!r} {row[3]!r}" for row in velocities.tolist()]
+    lines += [" ".join([f"{int(row[0])}"] + [repr(v) for v in row[1:]]) for row in velocities.tolist()]
     path = sim.resolve(args[0])
     try:
         with open(path, "w") as handle:

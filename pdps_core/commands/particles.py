@@ -18,7 +18,7 @@ SPHERE_KEYWORDS = ("diameter", "density")
 def _sphere_values(sim, keywords, ptype=None):
     """Per-particle radius and rmass for particle_style sphere (diameter 1, density 1 by default);
     in the PDPS dialect a mass the mass command gave type ``ptype`` holds instead of the density's."""
-    if sim.particle_style != "sphere":
+    if "sphere" not in sim.particle_styles:
         if keywords:
             raise ScriptError(f"{next(iter(keywords))} needs particle_style sphere")
         return {}
@@ -233,11 +233,16 @@ def mass(sim, args):
     sim.require_box("mass")
     lo, hi = type_range(args[0], sim.ntypes)
     value = number(args[1], "mass", low=0.0, strict_low=True)
-    if sim.particle_style == "sphere" and sim.dialect.name != "pdps":
+    lammps_spheres = "sphere" in sim.particle_styles and sim.dialect.name != "pdps"
+    if lammps_spheres and sim.particle_style == "sphere":
         raise ScriptError(f"cannot set a per-type mass for atom_style sphere (LAMMPS's rule): each particle's "
                           f"mass comes from its diameter and density (set type {args[0]} density RHO)")
     sim.type_mass[lo:hi + 1] = value
-    if sim.particle_style == "sphere":
+    if lammps_spheres:
+        # LAMMPS's hybrid of sphere and a per-type-mass style takes the mass and uses the spheres' own
+        sim.warn(f"mass {args[0]} {args[1]}: atom_style {sim.particle_style} uses each sphere's own mass "
+                 "(diameter and density), not the type's, as LAMMPS does")
+    elif "sphere" in sim.particle_styles:
         p = sim.particles
         rows = (p.type[: p.nlocal] >= lo) & (p.type[: p.nlocal] <= hi)
         p.rmass[: p.nlocal][rows] = value
@@ -397,11 +402,13 @@ def read_data(sim, args):
         sim.pair.coeff(i, j, coeff)
     for t, value in data.masses.items():
         sim.type_mass[t] = value
+    if data.masses and "sphere" in sim.particle_styles:
+        sim.warn(f"read_data {args[0]}: Masses are kept for the types, but atom_style {sim.particle_style} "
+                 "uses each sphere's own mass (diameter and density), as LAMMPS does")
     p = sim.particles
     extra = dict(data.per_atom)
-    if sim.particle_style == "sphere":
-        extra = {"radius": 0.5 * data.diameter,
-                 "rmass": _data_mass(sim, 0.5 * data.diameter, data.density)}
+    if "sphere" in sim.particle_styles:
+        extra.update(radius=0.5 * data.diameter, rmass=_data_mass(sim, 0.5 * data.diameter, data.density))
     start = p.nlocal
     p.add(data.x, data.types, **extra)
     p.tag[start:] = data.tags
@@ -409,6 +416,8 @@ def read_data(sim, args):
     p.next_tag = int(data.tags.max()) + 1 if len(data.tags) else p.next_tag
     if data.velocities is not None:
         p.v[start:] = data.velocities
+    if data.angular_velocities is not None:
+        p.omega[start:] = data.angular_velocities
     sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Read {len(data.tags)} particles from {args[0]}")

@@ -6,7 +6,7 @@ import numpy as np
 from ..errors import ScriptError
 from ..run.shrink_wrap import BOUNDARY_STYLES
 from ..state import limits
-from ..state.particles import PARTICLE_STYLES
+from ..state.particles import PARTICLE_STYLES, style_properties, substyles
 from ..state.units import UNITS
 from . import command
 from .words import choice, count, integer, number, type_range, yes_no
@@ -141,12 +141,21 @@ def _exclusions(sim, args, usage):
 
 @command("particle_style", "atom_style")
 def particle_style(sim, args):
-    """``particle_style STYLE``; LIGGGHTS's ``atom_style granular`` is its sphere style."""
-    count(args, 1, "particle_style " + "|".join(PARTICLE_STYLES))
+    """``particle_style STYLE`` or ``particle_style hybrid STYLE1 STYLE2 ...`` (LAMMPS's atom_style
+    hybrid: the per-atom values of every sub-style, e.g. ``hybrid sphere molecular`` for spheres with
+    molecule ids); LIGGGHTS's ``atom_style granular`` is its sphere style."""
+    usage = "particle_style " + "|".join(PARTICLE_STYLES) + " or particle_style hybrid STYLE1 STYLE2 ..."
+    if args[:1] != ["hybrid"]:
+        count(args, 1, usage)
     _before_box(sim, "particle_style")
-    style = "sphere" if args[0] == "granular" else choice(args[0], "particle style", tuple(PARTICLE_STYLES))
-    sim.particle_style = style
-    sim.particles.request_all(PARTICLE_STYLES[style][0])
+    if args[0] != "hybrid":
+        choice("sphere" if args[0] == "granular" else args[0], "particle style", tuple(PARTICLE_STYLES) + ("hybrid",))
+    try:
+        styles = substyles(" ".join(args))
+    except ValueError as exc:
+        raise ScriptError(f"{exc}; usage: {usage}") from None
+    sim.particle_style = " ".join(("hybrid",) + styles) if args[0] == "hybrid" else styles[0]
+    sim.particles.request_all(style_properties(sim.particle_style))
 
 
 @command("processors")

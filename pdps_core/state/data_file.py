@@ -5,7 +5,10 @@
     Atoms # charge:     id type q x y z [ix iy iz]
     Atoms # molecular:  id molecule type x y z [ix iy iz]   (bond and angle alike)
     Atoms # full:       id molecule type q x y z [ix iy iz]
-    Velocities:         id vx vy vz  (sphere: id vx vy vz wx wy wz; the angular part is ignored here)
+    Atoms # hybrid:     id type x y z, then each sub-style's other columns [ix iy iz]
+                        (hybrid sphere molecular: id type x y z diameter density molecule)
+    Velocities:         id vx vy vz  (sphere, hybrid with sphere: id vx vy vz wx wy wz, the angular
+                        velocity; id vx vy vz alone leaves it 0)
     Pair Coeffs:        I coefficients...      (as pair_coeff I I ..., needs a pair_style first)
     PairIJ Coeffs:      I J coefficients...    (as pair_coeff I J ...)
 
@@ -21,10 +24,9 @@ import numpy as np
 
 from ..errors import ScriptError
 from . import limits
-from .particles import PARTICLE_STYLES
+from .particles import style_columns, substyles
 from ..script.lexer import read_text
 
-COLUMNS = {style: columns for style, (_, columns) in PARTICLE_STYLES.items()}
 SECTIONS = ("Masses", "Atoms", "Velocities")
 # pair coefficients, applied by read_data as pair_coeff lines (I I ... or I J ...)
 PAIR_SECTIONS = ("Pair Coeffs", "PairIJ Coeffs")
@@ -50,6 +52,7 @@ class DataFile:
     per_atom: dict = field(default_factory=dict)       # molecule, q: what the style's columns add
     skipped: dict = field(default_factory=dict)        # "bonds": 12, ...: topology read past
     pair_coeffs: list = field(default_factory=list)    # (line number, [I, J, coefficient words...])
+    angular_velocities: np.ndarray = None               # spheres' wx wy wz from Velocities
 
 
 def read_data_file(path, particle_style):
@@ -62,7 +65,8 @@ def read_data_file(path, particle_style):
     natoms, ntypes = None, None
     lo, hi = np.zeros(3), np.ones(3)
     masses, atoms, velocities, skipped, pair_coeffs = {}, [], {}, {}, []
-    columns = COLUMNS[particle_style]
+    columns = style_columns(particle_style)
+    spheres = "sphere" in substyles(particle_style)
     molecular = "molecule" in columns
     section, i = None, 1          # line 1 is a title
     while i < len(lines):
@@ -91,7 +95,7 @@ def read_data_file(path, particle_style):
                 fail(number, f"unsupported section {text} (sections read: {', '.join(SECTIONS)})")
             section = head
             hint = re.search(r"#\s*(\w+)", raw)
-            if head == "Atoms" and hint and hint.group(1) != particle_style:
+            if head == "Atoms" and hint and hint.group(1) != particle_style.split()[0]:
                 fail(number, f"Atoms are '{hint.group(1)}' but particle_style is {particle_style}"
                              f" (set particle_style {hint.group(1)} before read_data)")
             continue
@@ -150,7 +154,9 @@ def read_data_file(path, particle_style):
                 if len(words) < 4:
                     fail(number, f"expected id vx vy vz (got {len(words)} values)")
                 tag = int(words[0])
-                value = [float(w) for w in words[1:4]]
+                # spheres' lines go on with their angular velocity, as LAMMPS writes them
+                value = [float(w) for w in words[1:7 if spheres and len(words) >= 7 else 4]]
+                value += [0.0] * (6 - len(value))
                 if not np.isfinite(value).all():
                     fail(number, f"non-finite velocity: {text}")
                 if tag in velocities:
@@ -210,14 +216,16 @@ def read_data_file(path, particle_style):
         if tags[k] in seen:
             fail(number, f"atom id {tags[k]} appears twice in Atoms (first on line {seen[tags[k]]})")
         seen[tags[k]] = number
-    v = None
+    v = omega = None
     if velocities:
-        v = np.zeros((n, 3))
+        v, omega = np.zeros((n, 3)), np.zeros((n, 3))
         index = {int(t): k for k, t in enumerate(tags)}
         for tag, (number, value) in velocities.items():
             if tag not in index:
                 fail(number, f"Velocities name atom {tag}, which is not in Atoms")
-            v[index[tag]] = value
+            v[index[tag]], omega[index[tag]] = value[:3], value[3:]
+        if not spheres:
+            omega = None
     try:
         limits.check_box(lo, hi, "box")
     except ScriptError as exc:
@@ -235,4 +243,4 @@ def read_data_file(path, particle_style):
         if not all(1 <= int(w) <= ntypes for w in words[:2]):
             fail(number, f"pair coefficients for types {words[0]} {words[1]} out of range 1..{ntypes}")
     return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped,
-                    pair_coeffs)
+                    pair_coeffs, omega)

@@ -63,6 +63,52 @@ PARTICLE_STYLES = {
 }
 
 
+POSITION_COLUMNS = ("id", "type", "x", "y", "z")
+
+
+def substyles(style):
+    """The particle styles a ``particle_style`` value stands for: itself, or for ``hybrid S1 S2 ...``
+    (LAMMPS's atom_style hybrid) its sub-styles, LIGGGHTS's ``granular`` read as sphere. ValueError
+    says what is wrong."""
+    words = style.split()
+    named = tuple("sphere" if w == "granular" else w for w in words[1:] if words[0] == "hybrid")
+    if not words or (words[0] != "hybrid" and len(words) != 1):
+        raise ValueError(f"a particle style is one word or hybrid S1 S2 ... (got {style!r})")
+    if words[0] != "hybrid":
+        name = "sphere" if words[0] == "granular" else words[0]
+        if name not in PARTICLE_STYLES:
+            raise ValueError(f"unknown particle style {words[0]} (known: {', '.join(PARTICLE_STYLES)}, hybrid)")
+        return (name,)
+    if not named:
+        raise ValueError("hybrid needs one or more particle styles, e.g. hybrid sphere molecular")
+    for name in named:
+        if name not in PARTICLE_STYLES:
+            raise ValueError(f"unknown particle style {name} in hybrid (known: {', '.join(PARTICLE_STYLES)})")
+    if len(set(named)) < len(named):
+        raise ValueError(f"a particle style appears twice in hybrid {' '.join(named)}")
+    return named
+
+
+def style_properties(style):
+    """The per-atom arrays the style adds to the core ones (the union of its sub-styles')."""
+    names = []
+    for name in substyles(style):
+        names += [p for p in PARTICLE_STYLES[name][0] if p not in names]
+    return tuple(names)
+
+
+def style_columns(style):
+    """The columns of an Atoms line: the style's own, or for hybrid LAMMPS's order: id type x y z,
+    then each sub-style's other columns in turn, a column two sub-styles share once."""
+    subs = substyles(style)
+    if style.split()[0] != "hybrid":
+        return PARTICLE_STYLES[subs[0]][1]
+    columns = list(POSITION_COLUMNS)
+    for name in subs:
+        columns += [c for c in PARTICLE_STYLES[name][1] if c not in columns]
+    return tuple(columns)
+
+
 @njit(cache=True)
 def _gather_columns(values, index, rows, column):
     """rows[k, column:column + width] = values[index[k]]: one property of the particles ``index``

@@ -56,7 +56,7 @@ from ..styles import StyleArgs, registry
 from . import limits
 from .box import Box
 from .groups import Groups
-from .particles import CORE, PARTICLE_STYLES, Particles, Property
+from .particles import CORE, Particles, Property, style_properties, substyles
 from .units import UNITS
 
 FORMAT = "pdps-restart"
@@ -380,6 +380,14 @@ def _array(arrays, name, shape, finite=True, kinds="fiu"):
     return values
 
 
+def _known_style(style):
+    try:
+        substyles(style)
+    except ValueError:
+        return False
+    return True
+
+
 def validate(header, arrays):
     """Every value restore() uses, checked before any is: a damaged or hand-edited file is one line
     naming the field, never a crash or a run on garbage."""
@@ -391,7 +399,7 @@ def validate(header, arrays):
     _field(header, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
            "three booleans")
     ntypes = _field(header, "ntypes", int, lambda t: 1 <= t <= limits.MAX_TYPES, f"from 1 to {limits.MAX_TYPES}")
-    _field(header, "particle_style", str, lambda s: s in PARTICLE_STYLES, f"one of {', '.join(PARTICLE_STYLES)}")
+    _field(header, "particle_style", str, _known_style, "a particle style or hybrid S1 S2 ...")
     _field(header, "lattice", bool)
     _field(header, "step", int, lambda n: 0 <= n <= limits.MAX_STEP, f"from 0 to {limits.MAX_STEP}")
     _field(header, "time", number, None, "a finite number")
@@ -514,7 +522,7 @@ def restore(sim, header, arrays):
     sim.particle_style = header["particle_style"]
     sim.lattice = _lattice(header, arrays)
     sim.particles = _particles(header["particles"], arrays)
-    missing = [name for name in PARTICLE_STYLES[sim.particle_style][0] if not sim.particles.has(name)]
+    missing = [name for name in style_properties(sim.particle_style) if not sim.particles.has(name)]
     if missing:
         raise ValueError(f"particle_style {sim.particle_style} needs the per-atom arrays {', '.join(missing)}")
     groups = Groups()

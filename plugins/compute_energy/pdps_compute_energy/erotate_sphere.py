@@ -29,7 +29,7 @@ class ComputeERotateSphere(Compute):
     extensive = True
 
     def __init__(self, sim, id, group, args):
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError("compute erotate/sphere needs particle_style sphere (radius, rmass, omega)")
         super().__init__(sim, id, group, args)
 

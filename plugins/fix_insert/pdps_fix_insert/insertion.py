@@ -192,7 +192,7 @@ class FixInsert(Fix):
     def setup(self, sim):
         if sim.fixes.get(self.distribution.id) is not self.distribution:
             raise ScriptError(f"fix {self.id}: its distributiontemplate {self.distribution.id} has been unfixed")
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError(f"fix {self.name} needs spheres (atom_style granular or sphere; got "
                               f"{sim.particle_style})")
         if self.set_property is not None and not sim.particles.has(self.set_property[0]):

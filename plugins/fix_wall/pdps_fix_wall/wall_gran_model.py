@@ -185,7 +185,7 @@ class FixWallGranModel(Fix):
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
         words = list(args.words)

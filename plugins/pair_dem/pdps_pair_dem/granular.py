@@ -250,7 +250,7 @@ class GranularPair(Pair):
     # ---- start of a run ---------------------------------------------------------------------------
     def init(self, ntypes):
         sim = self.sim
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError(f"pair {self.name} needs particle_style sphere "
                               "(per-particle radius, mass and rotation)")
         self.open_history()

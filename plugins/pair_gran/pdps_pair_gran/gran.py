@@ -199,7 +199,7 @@ class PairGran(Pair):
 
     def init(self, ntypes):
         sim = self.sim
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError(f"pair {self.name} needs atom_style sphere (per-particle radius, mass "
                               "and rotation)")
         if self.model != lammps_classic.HOOKE:

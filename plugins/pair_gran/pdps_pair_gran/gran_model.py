@@ -275,7 +275,7 @@ class PairGranModel(PairGran):
 
     def init(self, ntypes):
         sim = self.sim
-        if sim.particle_style != "sphere":
+        if "sphere" not in sim.particle_styles:
             raise ScriptError(f"pair {self.name} needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
         self.models[6] = sim.dimension
