@@ -531,7 +531,8 @@ class Compute(Style):
     # stress/atom (the core then allocates it and has the pair style fill it on those steps)
     peratom_tally: ClassVar[bool] = False
     # a total over particles (LAMMPS's extscalar): thermo divides it by the particle count when it
-    # normalises energies (lj units), as LAMMPS does; variables read it as it is
+    # normalises energies (lj units), as LAMMPS does; variables read it as it is. A style whose array
+    # (ID[i][j]) is not, where its scalar is, sets extensive_array = False (LAMMPS's extarray)
     extensive: ClassVar[bool] = False
 
     def __init__(self, sim, id, group, args):

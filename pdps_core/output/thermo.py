@@ -333,7 +333,10 @@ class Thermo:
                 read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
                 value = read(ident, indices)
                 style = (self.sim.computes if word[0] == "c" else self.sim.fixes).get(ident)
-                if getattr(style, "extensive", False):
+                extensive = getattr(style, "extensive", False)
+                if len(indices) == 2:
+                    extensive = getattr(style, "extensive_array", extensive)
+                if extensive:
                     value /= _normalise(self.sim)
                 out.append(value)
             else:
