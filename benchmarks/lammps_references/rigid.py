@@ -15,7 +15,8 @@ deterministic run of that keyword (its noise is LAMMPS's Marsaglia generator's, 
 And rigid/npt and rigid/nph (BAROSTATS: iso, aniso with a ramped target and other chain settings, x and z
 coupled with a dilate group) on these bodies, 5000 or 10^4 steps: temperature, pressure, volume, box
 lengths, f_1, ecouple and econserve. ``custom``: bodystyle custom v_b, four bodies of two molecules each
-(b = ceil(mol/2)), 5000 steps.
+(b = ceil(mol/2)), 5000 steps. ``plane nph``: the 2-d bodies under rigid/nph iso (x and y), with the
+bodies' array f_1[i][j] in thermo (not normalised by the particle count where f_1 is).
 
 A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
 group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
@@ -210,6 +211,11 @@ thermo_modify format float %20.15g
 thermo 100
 run 3000
 """
+# the 2-d bodies under rigid/nph (iso: x and y coupled), the bodies' array in thermo
+PLANE_NPH = (PLANE.replace("fix 1 all rigid group 3 a b c torque 2 off off on",
+                           "fix 1 all rigid/nph group 3 a b c iso 0.05 0.05 1.0\nneigh_modify every 1 delay 0 check no")
+             .replace("thermo_style custom step temp ke press f_1 f_1[3][1] f_1[1][12]",
+                      "thermo_style custom step temp ke press vol f_1 f_1[3][1] f_1[2][5] ecouple"))
 
 
 def body(rng, count):
@@ -256,6 +262,9 @@ def main():
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
     tables["custom"] = thermo_lines(run_lammps(lmp, CUSTOM, [data], label="custom"))
+    # LAMMPS warns at every neighbor list build of this scene without a pair style (communication cutoff 0)
+    tables["plane nph"] = [row for row in thermo_lines(run_lammps(lmp, PLANE_NPH, label="plane nph"))
+                           if row[0] != "WARNING:"]
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))
     tables["plane"] = thermo_lines(run_lammps(lmp, PLANE, label="plane"))
     tables["infile"] = thermo_lines(run_lammps(lmp, INFILE, [DATA / "rigid_bodies.txt"], label="infile"))

@@ -170,6 +170,7 @@ class FixRigidNH(FixRigidNVE):
     refused = {"langevin": "fix rigid/nph and rigid/npt take no langevin (LAMMPS's page: rigid and rigid/nve "
                            "only)"}
     extensive = True
+    extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
     virial_after = "final_integrate"
 
     class Args(FixRigid.Args):

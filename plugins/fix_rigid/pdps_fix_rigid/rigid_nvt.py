@@ -127,6 +127,7 @@ class FixRigidNVT(FixRigidNVE):
     usage = ("fix ID GROUP rigid/nvt single|molecule|group N G1 .. GN temp TSTART TSTOP TDAMP "
              "[tparam TCHAIN TITER TORDER] [force M X Y Z] [torque M X Y Z] [reinit yes|no]")
     extensive = True
+    extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
     not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt thermostats with temp; langevin is for rigid and rigid/nve "
                            "(LAMMPS's page: it cannot be used with rigid/nvt)"} | BAROSTAT_REFUSED
