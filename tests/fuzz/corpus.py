@@ -97,6 +97,12 @@ DATA_SCRIPTS = {
               "fix g all gravity 1.0 vector 0 0 -1\nfix 1 all nve/sphere\ntimestep 0.001\n"
               "thermo 5\nthermo_style custom step atoms ke press\n"
               "dump 1 all custom 5 dump.fuzz id type x y z radius\nrun 10\n",
+    "hybrid": "atom_style hybrid sphere molecular\nboundary p p f\nread_data data.fuzz\n"
+              "pair_style gran/hooke/history 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+              "fix w all wall/gran hooke/history 2000 NULL 50 NULL 0.5 1 zplane 0 4\n"
+              "fix g all gravity 1.0 vector 0 0 -1\nfix 1 all rigid/small molecule\ntimestep 0.001\n"
+              "thermo 5\nthermo_style custom step atoms pe\n"
+              "dump 1 all custom 5 dump.fuzz id mol x y z radius omegax\nrun 10\nwrite_data out.data\n",
     "full": "atom_style full\nread_data data.fuzz\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
             "group first molecule 1\nneigh_modify exclude molecule/intra all exclude molecule/inter first\n"
             "fix 1 all nve\ntimestep 0.002\nthermo 5\nthermo_style custom step atoms pe ke press\n"
@@ -184,6 +190,32 @@ Velocities
 1 0.1 0.0 0.0
 4 -0.2 0.1 0.0
 """
+CLUMPS = """two clumps of spheres with spin (atom_style hybrid sphere molecular)
+
+5 atoms
+1 atom types
+
+0 3 xlo xhi
+0 3 ylo yhi
+0 4 zlo zhi
+
+Atoms # hybrid
+
+1 1 0.6 0.5 0.6 1.0 1.0 1 0 0 0
+2 1 1.2 0.5 0.6 1.0 1.0 1 0 0 0
+3 1 1.5 1.5 1.8 1.0 1.0 2 0 0 0
+4 1 2.1 1.5 1.8 1.0 1.0 2 0 0 0
+5 1 1.8 2.0 1.8 0.8 1.0 2 0 0 0
+
+Velocities
+
+1 0 0 0 0 0 0
+2 0 0 0 0 0 0
+3 0.1 0 -0.2 0 0 1
+4 0.1 0 -0.2 0 0 1
+5 0.1 0 -0.2 0 0 1
+"""
+
 SPHERES = """spheres in a box with a fixed floor
 
 6 atoms
@@ -238,6 +270,8 @@ def data_seeds(folder):
     seeds.append(Seed("spheres", {SCRIPT: DATA_SCRIPTS["sphere"].encode(), DATA: SPHERES.encode()},
                       target=DATA))
     seeds.append(Seed("molecules", {SCRIPT: DATA_SCRIPTS["full"].encode(), DATA: MOLECULES.encode()},
+                      target=DATA))
+    seeds.append(Seed("clumps", {SCRIPT: DATA_SCRIPTS["hybrid"].encode(), DATA: CLUMPS.encode()},
                       target=DATA))
     seeds.append(Seed("pair_coeffs", {SCRIPT: DATA_SCRIPTS["lj_coeffs"].encode(), DATA: PAIR_COEFFS.encode()},
                       target=DATA))
