@@ -513,6 +513,12 @@ class Fix(Style):
         """The largest radius of particles of type ``type_`` this fix will insert (0: none)."""
         return 0.0
 
+    def extract(self, name):
+        """A named value other styles may read (LAMMPS's Fix::extract), or None where this fix has
+        none: fix gravity's "gvec" is its acceleration (3 floats), which fix rigid's gravity keyword
+        applies to its bodies' masses."""
+        return None
+
 
 class Compute(Style):
     """A compute: a global value read as ``c_ID`` (scalar), ``c_ID[i]`` (vector) or ``c_ID[i][j]``
