@@ -91,6 +91,10 @@ class FixGravity(Fix):
         self.direction = direction(args.style, args.values, sim.dimension)
         self.acceleration = tuple(float(c) for c in args.magnitude * self.direction)
 
+    def extract(self, name):
+        """"gvec": the acceleration (3,), as LAMMPS's fix gravity gives it to fix rigid's gravity keyword."""
+        return self.acceleration if name == "gvec" else None
+
     def setup(self, sim):
         self.post_force(sim)
 
