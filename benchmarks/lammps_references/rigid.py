@@ -16,7 +16,8 @@ And rigid/npt and rigid/nph (BAROSTATS: iso, aniso with a ramped target and othe
 coupled with a dilate group) on these bodies, 5000 or 10^4 steps: temperature, pressure, volume, box
 lengths, f_1, ecouple and econserve. ``custom``: bodystyle custom v_b, four bodies of two molecules each
 (b = ceil(mol/2)), 5000 steps. ``plane nph``: the 2-d bodies under rigid/nph iso (x and y), with the
-bodies' array f_1[i][j] in thermo (not normalised by the particle count where f_1 is).
+bodies' array f_1[i][j] in thermo (not normalised by the particle count where f_1 is). ``infile gravity``:
+the infile clumps pulled by fix rigid's gravity keyword (their file masses), fix gravity on the free spheres.
 
 A second scene, ``clumps``: two clumps of overlapping finite-size spheres (atom_style sphere, bodystyle
 group: their own 2/5 m R^2 in the inertia, 6 degrees of freedom each in the count) and three free
@@ -211,6 +212,9 @@ thermo_modify format float %20.15g
 thermo 100
 run 3000
 """
+# the infile clumps pulled by the gravity keyword (their file masses), fix gravity on the free spheres only
+INFILE_GRAVITY = (INFILE.replace("infile rigid_bodies.txt", "infile rigid_bodies.txt gravity 2")
+                  .replace("fix 2 all gravity", "fix 2 free gravity"))
 # the 2-d bodies under rigid/nph (iso: x and y coupled), the bodies' array in thermo
 PLANE_NPH = (PLANE.replace("fix 1 all rigid group 3 a b c torque 2 off off on",
                            "fix 1 all rigid/nph group 3 a b c iso 0.05 0.05 1.0\nneigh_modify every 1 delay 0 check no")
@@ -263,6 +267,8 @@ def main():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
     tables["custom"] = thermo_lines(run_lammps(lmp, CUSTOM, [data], label="custom"))
     # LAMMPS warns at every neighbor list build of this scene without a pair style (communication cutoff 0)
+    tables["infile gravity"] = thermo_lines(run_lammps(lmp, INFILE_GRAVITY, [DATA / "rigid_bodies.txt"],
+                                                       label="infile gravity"))
     tables["plane nph"] = [row for row in thermo_lines(run_lammps(lmp, PLANE_NPH, label="plane nph"))
                            if row[0] != "WARNING:"]
     tables["clumps"] = thermo_lines(run_lammps(lmp, CLUMPS, label="clumps"))

@@ -43,7 +43,7 @@ the three image flags of the centre of mass, as LAMMPS's global array.
 Syntax::
 
     fix ID GROUP rigid BODYSTYLE [ARGS] [force M XFLAG YFLAG ZFLAG] [torque M XFLAG YFLAG ZFLAG]
-        [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
+        [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED] [gravity FIX_ID]
 
 - BODYSTYLE ``single``: the whole group is one body; ``molecule``: one body per molecule id in the
   group (the id 0 too); ``group N G1 ... GN``: one body per group, its particles those of the fix
@@ -76,9 +76,12 @@ Syntax::
   on any number of ranks, not LAMMPS's Marsaglia numbers (its drag alone, T = 0, is LAMMPS's to
   round-off). Forces are divided by ftm2v as LAMMPS's; in 2d only the in-plane force and the torque
   about z.
+- ``gravity FIX_ID``: each body's centre of mass feels M g, g the acceleration of fix gravity FIX_ID
+  (LAMMPS's): for bodies whose mass comes from an infile, with that fix's group holding none of their
+  particles (else both act). Without it a gravity fix acts on the particles (a warning with infile).
 - ``temp`` and ``tparam`` belong to ``rigid/nvt`` and ``rigid/npt``, the barostat keywords (iso,
   aniso, x, y, z, couple, pchain, dilate) to ``rigid/nph`` and ``rigid/npt``: refused here, as LAMMPS
-  does. mol and gravity are refused by name: not implemented yet.
+  does, and ``mol`` (rigid/small's).
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -113,11 +116,12 @@ OnOff = Literal["on", "off"]
 # moments recomputed in the body frame must match to TOLERANCE
 EPSILON = 1e-7
 TOLERANCE = 1e-6
-NOT_YET = ("mol", "gravity")
+NOT_YET = ()
 # keywords LAMMPS refuses for a style (Illegal fix command), and why
 NOSE_HOOVER_ONLY = "only fix rigid/nvt and rigid/npt take it (LAMMPS's page: not rigid or rigid/nve)"
 BAROSTAT_ONLY = "only fix rigid/nph and rigid/npt take it (as LAMMPS)"
 BAROSTAT_REFUSED = {word: BAROSTAT_ONLY for word in ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")}
+MOL_REFUSED = {"mol": "only fix rigid/small and its variants take it (as LAMMPS)"}
 # the langevin noise's streams of the counter-based generator, keyed by (seed, step, body number)
 TRANSLATION_STREAM = 4
 ROTATION_STREAM = 5
@@ -207,12 +211,13 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
 class FixRigid(Fix):
     name = "rigid"
     usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN|custom i_NAME|v_NAME [force M XFLAG YFLAG ZFLAG] "
-             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]")
+             "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED] "
+             "[gravity FIX_ID]")
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
     not_yet = NOT_YET
-    refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY} | BAROSTAT_REFUSED
+    refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY} | BAROSTAT_REFUSED | MOL_REFUSED
 
     class Args(StyleArgs):
         bodystyle: Literal["single", "molecule", "group", "custom"] = param()
@@ -222,6 +227,7 @@ class FixRigid(Fix):
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
         langevin: tuple[float, float, float, int] | None = keyword(None)
+        gravity: str | None = keyword(None)
 
     @classmethod
     def parse(cls, words):
@@ -312,6 +318,7 @@ class FixRigid(Fix):
         self.step_virial = np.zeros(6)
         self.final_virial = np.zeros(6)
         self.langextra = np.zeros((nb, 6))
+        self.gvec = None
         self.set_up = 0
         self.dof_cache = {}
         self.atom_arrays = None
@@ -587,7 +594,25 @@ class FixRigid(Fix):
                      f"than half the periodic box ({length[d]:g}): are its particles' image flags those of one "
                      "whole body?")
 
+    def _gravity(self, sim):
+        """The acceleration of the fix the gravity keyword names (LAMMPS's extract("gvec")), or None;
+        LAMMPS's warning where bodies whose masses come from a file fall under a gravity fix without it."""
+        name = self.args.gravity
+        if name is None:
+            if self.args.infile is not None and any(fix.extract("gvec") is not None for fix in sim.fixes.values()):
+                sim.warn(f"fix {self.id}: gravity may not be correctly applied to rigid bodies if they consist of "
+                         "overlapped particles (the infile's masses; use the gravity keyword, as LAMMPS says)")
+            return None
+        fix = sim.fixes.get(name)
+        if fix is None:
+            raise ScriptError(f"fix {self.id}: cannot find fix gravity ID {name}")
+        gvec = fix.extract("gvec")
+        if gvec is None:
+            raise ScriptError(f"fix {self.id}: gravity fix ID {name} is not a gravity fix style ({fix.name})")
+        return np.asarray(gvec, dtype=np.float64)
+
     def init_run(self, sim):
+        self.gvec = self._gravity(sim)
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
@@ -611,6 +636,8 @@ class FixRigid(Fix):
             self._langevin(sim)
             self.fcm += self.langextra[:, :3]
             self.torque += self.langextra[:, 3:]
+        if self.gvec is not None:
+            self.fcm += self.masstotal[:, None] * self.gvec
 
     def _langevin(self, sim):
         """The Langevin force and torque of this step (LAMMPS applies them from post_force on the

@@ -67,7 +67,7 @@ from numba import njit
 from pdps_core.api import ScriptError, keyword, observables
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
-from .rigid import EPSILON, NOT_YET, FixRigid
+from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, maclaurin
 
@@ -168,7 +168,7 @@ class FixRigidNH(FixRigidNVE):
     """Fix rigid/nve with the barostat (and, with ``temp``, the thermostat) of LAMMPS's fix rigid/nh."""
     not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nph and rigid/npt take no langevin (LAMMPS's page: rigid and rigid/nve "
-                           "only)"}
+                           "only)"} | MOL_REFUSED
     extensive = True
     extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
     virial_after = "final_integrate"

@@ -42,7 +42,7 @@ from numba import njit
 from pdps_core.api import ScriptError, keyword
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
-from .rigid import BAROSTAT_REFUSED, EPSILON, NOT_YET, FixRigid
+from .rigid import BAROSTAT_REFUSED, EPSILON, MOL_REFUSED, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 
 # longest chain and most iterations a step: beyond, each step's chain work would stall a run
@@ -130,7 +130,7 @@ class FixRigidNVT(FixRigidNVE):
     extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
     not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt thermostats with temp; langevin is for rigid and rigid/nve "
-                           "(LAMMPS's page: it cannot be used with rigid/nvt)"} | BAROSTAT_REFUSED
+                           "(LAMMPS's page: it cannot be used with rigid/nvt)"} | BAROSTAT_REFUSED | MOL_REFUSED
 
     class Args(FixRigid.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")

@@ -239,7 +239,8 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
     ("fix 1 all rigid single langevin 1 1 1 0", r"langevin: the seed must be a positive integer \(got 0\)"),
     ("fix 1 all rigid/nve single langevin -1 1 1 4", r"langevin: Tstart and Tstop must be >= 0 \(got -1 1\)"),
     ("fix 1 all rigid single langevin 1 1 1", "langevin"),
-    ("fix 1 all rigid single mol water", "keyword mol of fix rigid is not implemented yet"),
+    ("fix 1 all rigid single mol water", r"keyword mol of fix rigid: only fix rigid/small and its variants take it"),
+    ("fix 1 all rigid/npt single temp 1 1 1 iso 1 1 1 mol water", r"keyword mol of fix rigid/npt: only fix rigid/small"),
     ("fix 1 all rigid single reinit maybe", "reinit must be one of"),
     ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),
     ("fix 1 all rigid single torque 1*x on on on", "torque: body '1\\*x' is not a number or a range"),
@@ -441,3 +442,38 @@ def test_bad_custom_bodystyle_is_one_line(tmp_path, line, message):
                 setup="fix p all property/atom half scalar no no no 0.5\nvariable huge atom 1e12*id")
     with pytest.raises(ScriptError, match=message):
         sim.command(line)
+
+
+def test_the_gravity_keyword_pulls_each_body_by_its_mass(tmp_path):
+    """gravity FIX_ID adds M g to each body's force (LAMMPS's): with an infile's mass of 12 for particles
+    of 6, the body still falls with g (fix gravity on its particles would give it g / 2), and f_ID's
+    force column reads -M g from the set-up on (LAMMPS's numbers: the recorder's scene infile gravity)."""
+    (tmp_path / "bodies.txt").write_text("1\n1 12 0 0 0 " + " ".join(map(str, MOMENTS)) + " 0 0 0 0 0 0 0 0 0 0 0 0\n")
+    runs = {}
+    for keyword in ("gravity down", ""):
+        group = "none" if keyword else "all"
+        sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, boundary="f f f", setup=f"""
+            group none empty
+            fix down {group} gravity 0.5 vector 0 0 -1
+            fix 1 all rigid single infile {tmp_path / 'bodies.txt'} {keyword}
+            run 0
+            """)
+        assert sim.fixes["1"].fcm[0] == pytest.approx([0, 0, -0.5 * (12 if keyword else 6)], abs=1e-14)
+        sim.command("run 1000")
+        runs[keyword] = (sim.fixes["1"].vcm[0, 2], sim.warnings)
+    assert runs["gravity down"][0] == pytest.approx(-0.5 * 1000 * 0.005, rel=1e-12)
+    assert runs[""][0] == pytest.approx(-0.5 * 0.5 * 1000 * 0.005, rel=1e-12)
+    assert runs["gravity down"][1] == []
+    assert runs[""][1] == ["fix 1: gravity may not be correctly applied to rigid bodies if they consist of overlapped "
+                           "particles (the infile's masses; use the gravity keyword, as LAMMPS says)"] * 2
+
+
+@pytest.mark.parametrize("setup, message", [
+    ("fix 1 all rigid single gravity nope", "fix 1: cannot find fix gravity ID nope"),
+    ("fix f all addforce 1 0 0\nfix 1 all rigid single gravity f", "fix 1: gravity fix ID f is not a gravity fix style "
+     r"\(addforce\)"),
+])
+def test_a_gravity_keyword_without_a_gravity_fix_is_one_line(tmp_path, setup, message):
+    sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, setup=setup)
+    with pytest.raises(ScriptError, match=message):
+        sim.command("run 0")

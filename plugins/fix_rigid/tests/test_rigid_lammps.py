@@ -15,7 +15,8 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from rigid import BAROSTAT_SCRIPT, BAROSTATS, CLUMPS, COLLIDE, CUSTOM, DRAG, INFILE, PLANE, PLANE_NPH, STYLES  # noqa: E402
+from rigid import (BAROSTAT_SCRIPT, BAROSTATS, CLUMPS, COLLIDE, CUSTOM, DRAG, INFILE, INFILE_GRAVITY, PLANE,  # noqa: E402
+                   PLANE_NPH, STYLES)
 
 DATA = Path(__file__).with_name("data")
 SCRIPT = """units lj
@@ -93,7 +94,7 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, scene):
     assert worst.max() < 1e-5
 
 
-@pytest.mark.parametrize("scene", ["clumps", "plane", "infile", "collide", "custom", "plane nph"])
+@pytest.mark.parametrize("scene", ["clumps", "plane", "infile", "collide", "custom", "plane nph", "infile gravity"])
 def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     """Clumps of finite-size spheres (their own inertia, 6 degrees of freedom each) beside free
     spheres, falling under gravity; 2-d bodies (3 degrees of freedom each, one spanning the box
@@ -103,10 +104,12 @@ def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     wall/gran floor, each contact of a clump with its body's mass in the effective mass (LAMMPS's
     mass_rigid; 2e-7 of each column's largest value over 3000 steps, round-off amplified through
     the contacts from step 2200 on); bodystyle custom v_NAME, bodies of two molecules each; the 2-d
-    bodies under rigid/nph (x and y coupled), their array f_1[i][j] not normalised where f_1 is."""
+    bodies under rigid/nph (x and y coupled), their array f_1[i][j] not normalised where f_1 is; the
+    infile clumps pulled by the gravity keyword."""
     shutil.copy(DATA / "rigid_bodies.txt", tmp_path)
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
     scripts = {"clumps": CLUMPS, "plane": PLANE, "infile": INFILE, "collide": COLLIDE, "custom": CUSTOM,
+               "infile gravity": INFILE_GRAVITY,
                "plane nph": PLANE_NPH.replace("neigh_modify every 1 delay 0 check no\n", "")}
     done = pdps_cli(scripts[scene], "-log", "none")
     assert done.returncode == 0, done.stderr
