@@ -309,6 +309,10 @@ class FixRigidSmall(Fix):
         self.record_name = f"rigid_small_record_{id}"
         p.request(self.tag_name, dtype=np.int64, default=0, ghost=False)
         p.request(self.displace_name, width=3, ghost=False)
+        if p.has("rmass"):
+            # granular contacts take a clump's mass for their effective mass (LAMMPS's mass_rigid,
+            # which pair gran/* and fix wall/gran read from rigid/small as from rigid)
+            p.request("body_mass")
         # on one rank bodies never move between ranks: no per-particle record, no ghost bodies
         self.parallel = sim.comm.nprocs > 1
         if self.parallel:
@@ -443,14 +447,17 @@ class FixRigidSmall(Fix):
         bodytag[:n] = 0
         index = back[:, 0].astype(np.int64)
         bodytag[index] = back[:, 1].astype(np.int64)
+        if p.has("body_mass"):
+            a["body_mass"][:n] = 0.0
+            a["body_mass"][index] = back[:, 6 + RECORD]
         a[self.displace_name][index] = back[:, 2:5]
         owners = back[:, 5] > 0.0
         if self.parallel:
-            a[self.record_name][index[owners]] = back[owners, 6:]
+            a[self.record_name][index[owners]] = back[owners, 6:6 + RECORD]
         else:
             count = int(owners.sum())
             self._allocate(count)
-            self._load(back[owners, 6:], count)
+            self._load(back[owners, 6:6 + RECORD], count)
             self.owner_tag[:count] = back[owners, 1].astype(np.int64)
             self.nlocal_body = count
         extent = float(sim.comm.max(extent))
@@ -467,10 +474,10 @@ class FixRigidSmall(Fix):
 
     def _bodies_of(self, sim, rows, spheres, spinning, length, periodic):
         """The bodies of the particle rows this rank received: (answers, problem, max extent); an
-        answer row per particle: its index on its rank, owner id, displacement (3), 1 for the owner
-        and the body's record."""
+        answer row per particle: its index on its rank, owner id, displacement (3), 1 for the owner,
+        the body's record (owners' rows only) and the body's mass."""
         count = len(rows)
-        answers = np.zeros((count, 6 + RECORD))
+        answers = np.zeros((count, 7 + RECORD))
         if count == 0:
             return answers, None, 0.0
         tag, mol, xu, m, v = rows[:, 1], rows[:, 2], rows[:, 3:6], rows[:, 6], rows[:, 7:10]
@@ -554,7 +561,8 @@ class FixRigidSmall(Fix):
         answers[:, 1] = owner_tag[body]
         answers[:, 2:5] = displace
         answers[first, 5] = 1.0
-        answers[first, 6:] = record
+        answers[first, 6:6 + RECORD] = record
+        answers[:, 6 + RECORD] = masstotal[body]
         return answers, None, extent
 
     # ---- bodies between the per-atom records and the compact arrays -------------------------------
