@@ -1,0 +1,42 @@
+r"""Compute ``erotate/rigid``: the rotational kinetic energy of the rigid bodies of a fix rigid or
+rigid/small (or their variants), LAMMPS's compute erotate/rigid:
+
+.. math::
+
+    E = \sum_B \tfrac12 \sum_{k=1}^3 I_{B,k}\, \omega_{B,k}^2
+
+in energy units (times ``mvv2e``): I_{B,k} the body's principal moments of inertia, omega_{B,k} its
+angular velocity about each principal axis (module body_energies; spheres of a clump add their own
+2/5 m R^2 to the moments, as the fix counts them). The group is not used (LAMMPS's neither). A global
+scalar, extensive: thermo prints it divided by the particle count when it normalises energies (lj
+units).
+
+Syntax::
+
+    compute ID GROUP erotate/rigid FIX_ID
+
+Example::
+
+    fix 1 all rigid single
+    compute rot all erotate/rigid 1
+    thermo_style custom step ke c_rot
+"""
+
+from pdps_core.api import Compute, StyleArgs, param
+
+from .body_energies import rigid_fix, rotational
+
+
+class ComputeERotateRigid(Compute):
+    name = "erotate/rigid"
+    usage = "compute ID GROUP erotate/rigid FIX_ID"
+    extensive = True
+
+    class Args(StyleArgs):
+        fix_id: str = param()
+
+    def init_run(self, sim):
+        rigid_fix(sim, self, self.args.fix_id)
+
+    def scalar(self, sim):
+        return rotational(sim, rigid_fix(sim, self, self.args.fix_id)) * sim.units.mvv2e
