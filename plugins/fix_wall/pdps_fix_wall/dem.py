@@ -3,7 +3,8 @@ and Coulomb friction (PDPS manual 2.2.8.5).
 
 A particle i of radius :math:`R_i` at distance :math:`d` from a wall surface, with unit normal
 :math:`\mathbf{n}` from the surface to its centre, overlaps the wall by :math:`\delta = R_i - d > 0`.
-The wall is body j of infinite mass and radius (so :math:`m^* = m_i`); with the relative velocity of
+The wall is body j of infinite mass and radius (so :math:`m^* = m_i`, the mass of i's rigid body where a
+fix rigid makes i part of one, as pair dem/lsd's); with the relative velocity of
 the contact points :math:`\mathbf{v} = \mathbf{v}_i + \boldsymbol\omega_i\times(-R_i\mathbf{n})`,
 :math:`v_n = \mathbf{v}\cdot\mathbf{n}`, :math:`\mathbf{v}_t = \mathbf{v} - v_n\mathbf{n}` and the
 tangential spring :math:`\boldsymbol\xi` (grown by :math:`\mathbf{v}_t\Delta t` over the contact, kept
@@ -68,6 +69,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, observables
+from pdps_granular_contact import contact_models
 
 from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
                            particle_wall_contacts, read_numbers)
@@ -76,7 +78,7 @@ ELEMENT_BITS = 32           # history key = wall number << 32 | element id on th
 
 
 @njit(cache=True)
-def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, v, omega,
+def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, body_mass, v, omega,
                     f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu, per_mass,
                     e_star, g_star, beta, dt, update, used, slots, contact_force):
     """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``
@@ -86,7 +88,8 @@ def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach
     for k in range(len(chosen)):
         i = chosen[k]
         ok = particle_wall_contacts(i, offsets[k], offsets[k + 1], distance, normal, key,
-                                    wall_velocity, reach[i], mass[i], v, omega, f, torque, rotation,
+                                    wall_velocity, reach[i], contact_models.contact_mass(mass, body_mass, i), v,
+                                    omega, f, torque, rotation,
                                     partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
                                     g_star, beta, dt, update, used, slots[offsets[k]:], n, rel, force,
                                     spring, contact_force, TRANSFER_COS)
@@ -219,7 +222,8 @@ class FixWallDEM(Fix):
         torque = a["torque"] if rotation else a["f"]
         mass = a["rmass"] if "rmass" in a else observables.masses(sim)
         bad = dem_wall_forces(near, self._offsets, distance, normal, key.astype(np.int64, copy=False),
-                              self._still, self.reach(sim), mass, a["v"], omega, a["f"], torque, rotation,
+                              self._still, self.reach(sim), mass, a.get("body_mass", contact_models.NO_BODY_MASS),
+                              a["v"], omega, a["f"], torque, rotation,
                               self.history.partner, self.history.values, *self.law.kernel_args(),
                               sim.dt, update, self._used, self._slots, self._contact_force)
         if bad >= 0:
