@@ -159,11 +159,12 @@ def restitution(m_eff, body_mass):
     return math.exp(-zeta * math.pi / omega_d)
 
 
-@pytest.mark.parametrize("target", ["clump", "wall"])
+@pytest.mark.parametrize("target", ["clump", "wall", "dem wall"])
 def test_a_clump_bounces_with_the_restitution_of_its_body_mass(make_sim, target):
     """Dimers of unit-mass spheres (body mass 2) meet head-on along their axis through gran/hooke
     (a second dimer coming the other way: effective mass 2 x 2 / 4 = 1, inertia of the relative
-    motion 1) or wall/gran hooke (effective mass 2): the rebound speed is e times the impact speed,
+    motion 1), wall/gran hooke (effective mass 2) or wall/dem's restitution form (e = 0.5 asked for
+    the body's mass; 0.61 for a particle's): the rebound speed is e times the impact speed,
     e from the body masses (LAMMPS's mass_rigid), 0.503 and 0.370, where the particles' masses would
     give 0.714 and 0.619. LAMMPS 22 Jul 2025 prints the same rebound speeds to all 15 digits
     (0.251622820266156 and 0.184801197332536); the analytic e holds to the step on which the contact ends: the dashpot stops within
@@ -175,10 +176,19 @@ def test_a_clump_bounces_with_the_restitution_of_its_body_mass(make_sim, target)
             "group b id 3:4\nvelocity b set 0.5 0 0\nneigh_modify exclude group b b"),
             contact=f"pair_style gran/hooke {KN} NULL {GAMMA_N} NULL 0.5 0\npair_coeff * *")
         expected, particles = restitution(1.0, 1.0), restitution(0.5, 1.0)
-    else:
+    elif target == "wall":
         script = HEAD_ON.format(a1=0.55, a2=1.05, nbody=1, groups="a", steps=25000, second="",
                                 contact=f"fix 2 all wall/gran hooke {KN} NULL {GAMMA_N} NULL 0.5 0 xplane 0.0 NULL")
         expected, particles = restitution(2.0, 2.0), restitution(1.0, 2.0)
+    else:
+        # wall/dem's restitution form: C_n = 2 zeta sqrt(kn m*) for e = 0.5, m* the body's mass 2
+        script = HEAD_ON.format(a1=0.55, a2=1.05, nbody=1, groups="a", steps=25000, second="",
+                                contact=f"region inside block 0 10 0 10 0 10\nfix 2 all wall/dem lsd region inside 0.5 {KN} 0.0")
+        zeta = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
+        damping = 2.0 * zeta * math.sqrt(KN * 1.0)          # what a particle's mass of 1 would give
+        expected = 0.5
+        omega = math.sqrt(KN / 2.0 - (damping / 4.0) ** 2)
+        particles = math.exp(-damping / 4.0 * math.pi / omega)
     sim = make_sim()
     sim.command(script)
     rebound = float(sim.fixes["1"].vcm[0, 0]) / 0.5
