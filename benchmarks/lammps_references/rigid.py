@@ -15,7 +15,8 @@ deterministic run of that keyword (its noise is LAMMPS's Marsaglia generator's, 
 And rigid/npt and rigid/nph (BAROSTATS: iso, aniso with a ramped target and other chain settings, x and z
 coupled with a dilate group) on these bodies, 5000 or 10^4 steps: temperature, pressure, volume, box
 lengths, f_1, ecouple and econserve. ``custom``: bodystyle custom v_b, four bodies of two molecules each
-(b = ceil(mol/2)), 5000 steps. ``plane nph``: the 2-d bodies under rigid/nph iso (x and y), with the
+(b = ceil(mol/2)), 5000 steps. ``mixed``: four bodies under rigid/npt (dilate all) among the other
+molecules' particles, free under fix nvt, 5000 steps. ``plane nph``: the 2-d bodies under rigid/nph iso (x and y), with the
 bodies' array f_1[i][j] in thermo (not normalised by the particle count where f_1 is). ``infile gravity``:
 the infile clumps pulled by fix rigid's gravity keyword (their file masses), fix gravity on the free spheres.
 
@@ -66,6 +67,25 @@ thermo_style custom step temp epair ke etotal press vol lx ly lz f_1 ecouple eco
 thermo_modify format float %20.15g
 thermo 100
 run {steps}
+"""
+# the bodies of molecules 1-4 under rigid/npt (dilate all) among free particles under fix nvt (the page's
+# first way to barostat a mixture)
+MIXED = """units lj
+atom_style molecular
+read_data rigid_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+neigh_modify every 1 delay 0 check no
+group low molecule <= 4
+group high subtract all low
+timestep 0.001
+fix 1 low rigid/npt molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0 dilate all
+fix 2 high nvt temp 0.5 0.5 0.5
+thermo_style custom step temp epair ke etotal press vol f_1 ecouple econserve
+thermo_modify format float %20.15g
+thermo 500
+run 5000
 """
 # bodystyle custom: bodies of two molecules each, from an atom-style variable
 CUSTOM = """units lj
@@ -266,6 +286,7 @@ def main():
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
     tables["custom"] = thermo_lines(run_lammps(lmp, CUSTOM, [data], label="custom"))
+    tables["mixed"] = thermo_lines(run_lammps(lmp, MIXED, [data], label="mixed"))
     # LAMMPS warns at every neighbor list build of this scene without a pair style (communication cutoff 0)
     tables["infile gravity"] = thermo_lines(run_lammps(lmp, INFILE_GRAVITY, [DATA / "rigid_bodies.txt"],
                                                        label="infile gravity"))
