@@ -67,7 +67,7 @@ from numba import njit
 from pdps_core.api import ScriptError, keyword, observables
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
-from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
+from .rigid import EPSILON, MOL_REFUSED, NO_ARRAY, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, maclaurin
 
@@ -432,7 +432,7 @@ class FixRigidNH(FixRigidNVE):
             self.p_current[:] = ((dof * self.boltz * temperature + virial[:d].sum()) / (d * volume) * self.nktv2p)
             return
         p = sim.particles
-        kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else np.zeros(0), p.nlocal, self.ke_tensor)
+        kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_ARRAY, p.nlocal, self.ke_tensor)
         kinetic = np.asarray(sim.comm.sum(self.ke_tensor)) * self.mvv2e
         tensor = (kinetic + virial) / volume * self.nktv2p
         if d == 2:
