@@ -285,7 +285,9 @@ class Neighbor:
         lists = self.perpetual
         if not lists:
             return
-        direct = bin(self.history).count("1") >= DIRECT_AT
+        # the cell loops know no exclusions: a scene with neigh_modify exclude keeps its lists
+        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules)
+        direct = bin(self.history).count("1") >= DIRECT_AT and not excluding
         binned = None
         for nlist in lists:
             going_direct = direct and nlist.direct_ok and not nlist.direct
