@@ -52,6 +52,20 @@ def test_write_data_reads_back(tmp_path, monkeypatch):
     np.testing.assert_allclose(again.particles.radius[:2], sim.particles.radius[:2], rtol=1e-15)
 
 
+@pytest.mark.parametrize("order, mass", [
+    # LAMMPS 22 Jul 2025 on this script prints these masses: set diameter keeps the mass, set density
+    # sets it from the present diameter (1.2 x 4/3 pi 0.25^3 = 0.0785398)
+    ("density 1.2\nset atom 1 diameter 0.5", 1.2 * 4.0 / 3.0 * np.pi * 0.5 ** 3),
+    ("diameter 0.5\nset atom 1 density 1.2", 1.2 * 4.0 / 3.0 * np.pi * 0.25 ** 3),
+])
+def test_set_diameter_keeps_the_mass_as_lammps(order, mass):
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("atom_style sphere\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\ncreate_atoms 1 single 1 1 1\n"
+                f"set atom 1 {order}")
+    assert sim.particles.radius[0] == 0.25
+    assert sim.particles.rmass[0] == pytest.approx(mass, rel=1e-15)
+
+
 @pytest.mark.parametrize("line, message", [
     ("set type 1 colour 2", "unknown set keyword colour (supported: type, type/fraction, x, y, z, vx, vy, vz, "
                             "mass, diameter, density, image, omega, charge, mol, property/atom, property/peratom)"),

@@ -10,8 +10,8 @@ and ``write_data`` that writes them.
     write_data FILE [nocoeff] [nofix] [nolabelmap] [pair ii|ij]
 
 As in LAMMPS: ``set`` IDs of style atom and type take ranges (``1*10``); ``mass`` sets per-particle
-masses (spheres) and ``diameter``/``density`` a sphere's radius and mass (density times its
-volume); ``type/fraction`` decides each particle from LAMMPS's Park-Miller generator seeded from
+masses (spheres), ``diameter`` a sphere's radius (its mass stays, as LAMMPS's set diameter leaves it)
+and ``density`` its mass (density times its volume at its present diameter); ``type/fraction`` decides each particle from LAMMPS's Park-Miller generator seeded from
 its coordinates, so the same particles change on any number of ranks. ``delete_atoms ... compress
 yes`` (the default) renumbers the ids 1..N in storage order after LAMMPS's way of deleting (the last
 particle moves into each deleted one's slot), so a serial script gets LAMMPS's ids; ``overlap`` takes the particles in id
@@ -160,9 +160,8 @@ def _set_one(sim, key, values, selected):
         elif key == "diameter":
             if np.any(np.asarray(value) < limits.MIN_SIZE):
                 raise ScriptError(f"diameter must be >= {limits.MIN_SIZE:g} (got {values[0]})")
-            density = p.rmass[rows] / _volume(sim, p.radius[rows])
+            # the radius alone: LAMMPS's set diameter keeps the mass (set density after it sets that)
             p.radius[rows] = 0.5 * np.asarray(value)
-            p.rmass[rows] = density * _volume(sim, p.radius[rows])
         else:
             p.rmass[rows] = np.asarray(value) * _volume(sim, p.radius[rows])
         return len(rows)
