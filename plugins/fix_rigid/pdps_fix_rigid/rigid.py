@@ -178,28 +178,58 @@ def langevin_body_forces(vcm, omega, ex, ey, ez, inertia, masstotal, key, step, 
     -I_k w_k / Tperiod plus sqrt(24 k_B T I_k / (Tperiod dt)) (u - 1/2), w_k the angular velocity
     in the body frame; u uniform in (0, 1), keyed by (seed, step, body number). In 2d only fx, fy
     and tz."""
-    tsqrt = math.sqrt(t_target)
-    noise = tsqrt * math.sqrt(24.0 * boltz / t_period / dt / mvv2e) / ftm2v
-    drag = -1.0 / t_period / ftm2v
     for b in range(vcm.shape[0]):
-        u0, u1, u2, _ = particle_uniforms(key, step, b + 1, TRANSLATION_STREAM)
-        root = math.sqrt(masstotal[b])
-        langextra[b, 0] = drag * masstotal[b] * vcm[b, 0] + root * noise * (u0 - 0.5)
-        langextra[b, 1] = drag * masstotal[b] * vcm[b, 1] + root * noise * (u1 - 0.5)
-        langextra[b, 2] = drag * masstotal[b] * vcm[b, 2] + root * noise * (u2 - 0.5)
-        r0, r1, r2, _ = particle_uniforms(key, step, b + 1, ROTATION_STREAM)
-        w0 = ex[b, 0] * omega[b, 0] + ex[b, 1] * omega[b, 1] + ex[b, 2] * omega[b, 2]
-        w1 = ey[b, 0] * omega[b, 0] + ey[b, 1] * omega[b, 1] + ey[b, 2] * omega[b, 2]
-        w2 = ez[b, 0] * omega[b, 0] + ez[b, 1] * omega[b, 1] + ez[b, 2] * omega[b, 2]
-        t0 = inertia[b, 0] * drag * w0 + math.sqrt(inertia[b, 0]) * noise * (r0 - 0.5)
-        t1 = inertia[b, 1] * drag * w1 + math.sqrt(inertia[b, 1]) * noise * (r1 - 0.5)
-        t2 = inertia[b, 2] * drag * w2 + math.sqrt(inertia[b, 2]) * noise * (r2 - 0.5)
-        for d in range(3):
-            langextra[b, 3 + d] = ex[b, d] * t0 + ey[b, d] * t1 + ez[b, d] * t2
-        if planar:
-            langextra[b, 2] = 0.0
-            langextra[b, 3] = 0.0
-            langextra[b, 4] = 0.0
+        langevin_one_body(b, b + 1, vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target, t_period, dt,
+                          boltz, mvv2e, ftm2v, planar, langextra)
+
+
+@njit(cache=True)
+def langevin_keyed_forces(body_keys, vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target, t_period, dt,
+                          boltz, mvv2e, ftm2v, planar, langextra):
+    """langevin_body_forces for bodies 0..len(body_keys)-1, body b's noise keyed by body_keys[b] (fix
+    rigid/small: its owner particle's id, which no number of ranks changes)."""
+    for b in range(body_keys.shape[0]):
+        langevin_one_body(b, body_keys[b], vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target,
+                          t_period, dt, boltz, mvv2e, ftm2v, planar, langextra)
+
+
+@njit(cache=True)
+def langevin_one_body(b, body_key, vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target, t_period, dt,
+                      boltz, mvv2e, ftm2v, planar, langextra):
+    """Row b of langextra (langevin_body_forces), the noise drawn for (key, step, body_key)."""
+    noise = math.sqrt(t_target) * math.sqrt(24.0 * boltz / t_period / dt / mvv2e) / ftm2v
+    drag = -1.0 / t_period / ftm2v
+    u0, u1, u2, _ = particle_uniforms(key, step, body_key, TRANSLATION_STREAM)
+    root = math.sqrt(masstotal[b])
+    langextra[b, 0] = drag * masstotal[b] * vcm[b, 0] + root * noise * (u0 - 0.5)
+    langextra[b, 1] = drag * masstotal[b] * vcm[b, 1] + root * noise * (u1 - 0.5)
+    langextra[b, 2] = drag * masstotal[b] * vcm[b, 2] + root * noise * (u2 - 0.5)
+    r0, r1, r2, _ = particle_uniforms(key, step, body_key, ROTATION_STREAM)
+    w0 = ex[b, 0] * omega[b, 0] + ex[b, 1] * omega[b, 1] + ex[b, 2] * omega[b, 2]
+    w1 = ey[b, 0] * omega[b, 0] + ey[b, 1] * omega[b, 1] + ey[b, 2] * omega[b, 2]
+    w2 = ez[b, 0] * omega[b, 0] + ez[b, 1] * omega[b, 1] + ez[b, 2] * omega[b, 2]
+    t0 = inertia[b, 0] * drag * w0 + math.sqrt(inertia[b, 0]) * noise * (r0 - 0.5)
+    t1 = inertia[b, 1] * drag * w1 + math.sqrt(inertia[b, 1]) * noise * (r1 - 0.5)
+    t2 = inertia[b, 2] * drag * w2 + math.sqrt(inertia[b, 2]) * noise * (r2 - 0.5)
+    for d in range(3):
+        langextra[b, 3 + d] = ex[b, d] * t0 + ey[b, d] * t1 + ez[b, d] * t2
+    if planar:
+        langextra[b, 2] = 0.0
+        langextra[b, 3] = 0.0
+        langextra[b, 4] = 0.0
+
+
+def check_langevin(langevin):
+    """The langevin keyword's values (Tstart Tstop Tperiod seed), one line for a bad one."""
+    if langevin is None:
+        return
+    start, stop, period, seed = langevin
+    if not (start >= 0 and stop >= 0 and math.isfinite(start) and math.isfinite(stop)):
+        raise ScriptError(f"langevin: Tstart and Tstop must be >= 0 (got {start:g} {stop:g})")
+    if not (period > 0 and math.isfinite(period)):
+        raise ScriptError(f"langevin: Tperiod must be > 0 (got {period:g})")
+    if not 0 < seed < 2 ** 63:
+        raise ScriptError(f"langevin: the seed must be a positive integer (got {seed})")
 
 
 @njit(cache=True)
@@ -258,14 +288,7 @@ class FixRigid(Fix):
                                   f"(an atom-style variable) (got {' '.join(args.groups) or 'nothing'})")
         elif args.groups:
             raise ScriptError(f"bodystyle {args.bodystyle} takes no arguments (got {' '.join(args.groups)})")
-        if args.langevin is not None:
-            start, stop, period, seed = args.langevin
-            if not (start >= 0 and stop >= 0 and math.isfinite(start) and math.isfinite(stop)):
-                raise ScriptError(f"langevin: Tstart and Tstop must be >= 0 (got {start:g} {stop:g})")
-            if not (period > 0 and math.isfinite(period)):
-                raise ScriptError(f"langevin: Tperiod must be > 0 (got {period:g})")
-            if not 0 < seed < 2 ** 63:
-                raise ScriptError(f"langevin: the seed must be a positive integer (got {seed})")
+        check_langevin(args.langevin)
         return args
 
     # ---- bodies ---------------------------------------------------------------------------------

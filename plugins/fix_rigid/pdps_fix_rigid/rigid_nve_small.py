@@ -4,7 +4,8 @@ momentum p = 2 S(q) (0, L_body)), as LAMMPS's fix rigid/nve/small: V and p take 
 the body-frame torque, X a full step, and the free rotation is split into exact rotations about the
 principal axes (3, 2 for dt/2, 1 for dt, 2, 3 for dt/2). ``pdps doc fix rigid/nve`` says more.
 
-Bodies, their owners and communication, degrees of freedom and the virial are fix ``rigid/small``'s
+Bodies, their owners and communication, degrees of freedom, the virial and the langevin keyword are
+fix ``rigid/small``'s
 (``pdps doc fix rigid/small``).
 
 ``f_ID``: LAMMPS's scalar of rigid/nve/small, the kinetic part of Kamberaj et al.'s Hamiltonian,
@@ -13,7 +14,7 @@ rotational one, as LAMMPS computes it; a moment below 1e-6 counts 0).
 
 Syntax::
 
-    fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE]
+    fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
 
 Example::
 
@@ -49,7 +50,8 @@ def hamiltonian_kinetic(masstotal, vcm, quat, conjqm, inertia, nbody):
 
 class FixRigidNVESmall(FixRigidSmall):
     name = "rigid/nve/small"
-    usage = "fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE]"
+    usage = ("fix ID GROUP rigid/nve/small molecule [reinit yes|no] [infile FILE] "
+             "[langevin TSTART TSTOP TPERIOD SEED]")
 
     def setup(self, sim):
         super().setup(sim)

@@ -53,6 +53,8 @@ class FixRigidNVTSmall(FixRigidNVESmall):
              "[reinit yes|no] [infile FILE]")
     extensive = True
     not_yet = tuple(word for word in NOT_YET if word not in ("temp", "tparam"))
+    refused = {"langevin": "fix rigid/nvt/small thermostats with temp; langevin is for rigid/small and "
+                           "rigid/nve/small (as LAMMPS)"}
 
     class Args(FixRigidNVESmall.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")

@@ -43,7 +43,7 @@ array (LAMMPS's rigid/small has none): ``compute rigid/local`` gives the bodies'
 
 Syntax::
 
-    fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE]
+    fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
 
 - ``molecule``: one body per molecule id among the group's particles (LAMMPS's only bodystyle for
   rigid/small); the particles need molecule ids (atom_style molecular, bond, angle or full).
@@ -54,8 +54,14 @@ Syntax::
   values from their particles, in fix rigid's format (``pdps doc fix rigid``; ID the molecule id).
   As LAMMPS's rigid/small: bodies the file leaves out take everything from their particles, their
   motion included (fix rigid starts them at rest), and bodies are set up at the first run only.
-- LAMMPS's other keywords (langevin, mol, temp, tparam, iso, aniso, x, y, z, couple, pchain,
-  dilate, gravity) are refused by name: not implemented yet.
+- ``langevin TSTART TSTOP TPERIOD SEED`` (rigid/small and rigid/nve/small; LAMMPS refuses it with
+  rigid/nvt/small): fix rigid's Langevin thermostat on each body (``pdps doc fix rigid``): drag
+  -M V / TPERIOD and -I_k w_k / TPERIOD about each principal axis plus uniform noise, target T ramped
+  from TSTART to TSTOP (temperature, >= 0; 0 gives the drag alone), TPERIOD (time, > 0). A body's
+  noise is keyed by (SEED, step, the id of its owner particle), so it is the same on any number of
+  ranks (not LAMMPS's numbers, which depend on the rank; its drag alone is LAMMPS's to round-off).
+- LAMMPS's other keywords (mol, temp, tparam, iso, aniso, x, y, z, couple, pchain, dilate,
+  gravity) are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -79,11 +85,12 @@ from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_arg
 
 from . import bodies
 from .quaternion import axes_from_quaternion, quaternion_from_axes
-from .rigid import EPSILON, TOLERANCE, FixRigid, omegas, richardson_final, richardson_initial
+from .rigid import (EPSILON, TOLERANCE, FixRigid, check_langevin, langevin_keyed_forces, omegas, richardson_final,
+                    richardson_initial)
 
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
-NOT_YET = ("langevin", "mol", "temp", "tparam", "iso", "aniso", "x", "y", "z", "couple", "pchain",
+NOT_YET = ("mol", "temp", "tparam", "iso", "aniso", "x", "y", "z", "couple", "pchain",
            "dilate", "gravity")
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
@@ -94,7 +101,7 @@ BODY_ARRAYS = {"masstotal": (0, np.float64), "xcm": (3, np.float64), "vcm": (3, 
                "inertia": (3, np.float64), "ex": (3, np.float64), "ey": (3, np.float64), "ez": (3, np.float64),
                "image_body": (3, np.int64), "quat": (4, np.float64), "conjqm": (4, np.float64),
                "fflag": (3, np.float64), "tflag": (3, np.float64), "nrigid": (0, np.int64), "sums": (6, np.float64),
-               "body_rows": (0, np.int64), "owner_tag": (0, np.int64)}
+               "body_rows": (0, np.int64), "owner_tag": (0, np.int64), "langextra": (6, np.float64)}
 # what ghost copies of a body need after the first half step (xcm vcm omega quat image) and after the
 # second (vcm omega)
 STATE, MOTION = 16, 6
@@ -270,31 +277,37 @@ def principal_axes(tensor):
 
 class FixRigidSmall(Fix):
     name = "rigid/small"
-    usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE]"
+    usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]"
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
     not_yet = NOT_YET
+    refused = {}
 
     class Args(StyleArgs):
         bodystyle: Literal["molecule"] = param()
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
+        langevin: tuple[float, float, float, int] | None = keyword(None)
 
     @classmethod
     def parse(cls, words):
         for word in words[1:]:
+            if word in cls.refused:
+                raise ScriptError(f"keyword {word} of fix {cls.name}: {cls.refused[word]}")
             if word in cls.not_yet:
                 raise ScriptError(f"keyword {word} of fix {cls.name} is not implemented yet "
                                   f"(implemented: {', '.join(cls.implemented())})")
         if words and words[0] in ("single", "group", "custom"):
             raise ScriptError(f"fix {cls.name} takes bodystyle molecule only (as LAMMPS's; got {words[0]}): "
                               "fix rigid has the others")
-        return parse_args(cls.Args, words, cls.usage)
+        args = parse_args(cls.Args, words, cls.usage)
+        check_langevin(args.langevin)
+        return args
 
     @classmethod
     def implemented(cls):
-        return [name for name in cls.Args.model_fields if name != "bodystyle"]
+        return [name for name in cls.Args.model_fields if name != "bodystyle" and name not in cls.refused]
 
     # ---- set-up ----------------------------------------------------------------------------------
     def __init__(self, sim, id, group, args):
@@ -723,6 +736,19 @@ class FixRigidSmall(Fix):
                             self.sums)
         self._collect(sim, self.sums)
         split_sums(self.nlocal_body, self.sums, self.fcm, self.torque)
+        if self.args.langevin is not None and not sim.in_setup:
+            self._langevin(sim)
+
+    def _langevin(self, sim):
+        """The local bodies' Langevin force and torque of this step, added to their sums (LAMMPS's
+        apply_langevin_thermostat, from the motion after the first half step, as fix rigid's)."""
+        nl = self.nlocal_body
+        start, stop, period, seed = self.args.langevin
+        langevin_keyed_forces(self.owner_tag[:nl], self.vcm, self.omega, self.ex, self.ey, self.ez, self.inertia,
+                              self.masstotal, sim.random_key(seed), sim.step, sim.ramp(start, stop), period, sim.dt,
+                              sim.units.boltz, sim.units.mvv2e, sim.units.ftm2v, sim.dimension == 2, self.langextra)
+        self.fcm[:nl] += self.langextra[:nl, :3]
+        self.torque[:nl] += self.langextra[:nl, 3:]
 
     def _set_v(self, sim, virial, tally):
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)

@@ -1,4 +1,4 @@
-"""The langevin keyword of fix rigid and rigid/nve: each body feels -M V / Tperiod plus a random force on
+"""The langevin keyword of fix rigid, rigid/nve, rigid/small and rigid/nve/small: each body feels -M V / Tperiod plus a random force on
 its centre of mass and -I_k w_k / Tperiod plus a random torque about each principal axis, so free
 bodies come to the target temperature in translation and in rotation separately. Its drag alone (T =
 0) is compared with LAMMPS in test_rigid_lammps.py; here the noise: block averages of each part's
@@ -16,7 +16,8 @@ NBODY = 64
 
 
 class BodySampler(Fix):
-    """Every 10 steps: sum M V^2 and sum_k I_k w_k^2 of fix 1's bodies (twice their kinetic energies)."""
+    """Every 10 steps: sum M V^2 and sum_k I_k w_k^2 of fix 1's bodies (twice their kinetic energies; one
+    rank: a rigid/small fix holds them all)."""
     name = "test/bodysampler"
 
     def __init__(self, sim, id, group, args):
@@ -27,9 +28,11 @@ class BodySampler(Fix):
         if sim.step % 10:
             return
         rigid = sim.fixes["1"]
-        translation = float((rigid.masstotal[:, None] * rigid.vcm ** 2).sum())
-        body_omega = np.stack([np.einsum("bd,bd->b", axis, rigid.omega) for axis in (rigid.ex, rigid.ey, rigid.ez)], 1)
-        rotation = float((rigid.inertia * body_omega ** 2).sum())
+        n = getattr(rigid, "nlocal_body", len(rigid.masstotal))
+        translation = float((rigid.masstotal[:n, None] * rigid.vcm[:n] ** 2).sum())
+        body_omega = np.stack([np.einsum("bd,bd->b", axis[:n], rigid.omega[:n])
+                               for axis in (rigid.ex, rigid.ey, rigid.ez)], 1)
+        rotation = float((rigid.inertia[:n] * body_omega ** 2).sum())
         self.samples.append((translation, rotation))
 
 
@@ -50,7 +53,7 @@ def triangles(path):
     path.write_text("\n".join(lines) + "\n")
 
 
-@pytest.mark.parametrize("style", ["rigid", "rigid/nve"])
+@pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/small", "rigid/nve/small"])
 def test_free_bodies_come_to_the_target_temperature_in_translation_and_rotation(make_sim, tmp_path, style):
     """64 free triangles from rest, langevin 1.5 1.5 1.0: after 20 Tperiod, 100 time units of samples
     in 10 blocks of 10 (20 times the kinetic energies' correlation time Tperiod/2): each part's mean

@@ -16,6 +16,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
+from rigid import DRAG  # noqa: E402
 from rigid_small import FREE, INFILE, PLANE, STYLES as EXTRA, script  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
@@ -44,6 +45,57 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
         assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
 
 
+# fix rigid's LAMMPS scene (test_rigid_lammps.py), for the langevin keyword's drag
+RIGID_SCRIPT = """units lj
+atom_style molecular
+read_data rigid_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+timestep 0.001
+fix 1 all {style} molecule{extra}
+thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
+thermo_modify format float %20.15g
+thermo 100
+run 10000
+"""
+
+
+def rigid_reference(name):
+    return read_blocks(DATA / "rigid_lj.txt")[name]
+
+
+@pytest.mark.parametrize("small, rigid", [("rigid/small", "rigid"), ("rigid/nve/small", "rigid/nve")])
+def test_langevin_drag_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, small, rigid):
+    """langevin 0.0 0.0 2.0 SEED: the Langevin drag alone (no noise at T = 0) on each body's
+    translation and rotation about its principal axes, applied by the rank owning the body. Compared
+    with LAMMPS's fix rigid and rigid/nve under the same keyword on fix rigid's scene (LAMMPS: the
+    small variants give the same answers): LAMMPS's own rigid/small adds its Langevin array to the
+    bodies' forces at the run's set-up before anything was written to it (22 Jul 2025: uninitialised
+    memory; on the rigid/small recorder's scene one body's coordinates were NaN after one step of a
+    20-step run), so its runs are no reference. Temperature and total energy to 5 significant
+    digits over 10^4 steps, the bodies' temperature (f_1 of rigid/small; rigid/nve/small's f_1 is
+    another quantity) and pressure too."""
+    shutil.copy(DATA / "rigid_lj.data", tmp_path)
+    done = pdps_cli(RIGID_SCRIPT.format(style=small, extra=DRAG).replace(" f_1 ecouple econserve", " f_1"),
+                    "-log", "none")
+    assert done.returncode == 0, done.stderr
+    ours = np.array(thermo_rows(done.stdout))
+    lammps = rigid_reference(f"{rigid} drag")[:, :7]
+    assert ours.shape == lammps.shape == (101, 7)
+    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
+    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
+    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
+    print(f"{small} drag against LAMMPS's {rigid} drag over 1e4 steps: temp {temp:.1e}, etotal {etotal:.1e}, "
+          f"press {press:.1e} (of its largest value)")
+    # the drag does its work: the particles' temperature falls by more than half over the run
+    assert lammps[-1, 1] < 0.5 * lammps[0, 1]
+    assert temp < 1e-5 and etotal < 1e-5
+    assert press < 1e-5
+    if small == "rigid/small":
+        assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
+
+
 @pytest.mark.parametrize("style", STYLES)
 def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     """On 2 ranks bodies are owned by the rank of their owner particle, cross the ranks' boundary
@@ -54,6 +106,23 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
     assert one.shape == two.shape == (31, 9 if style == "rigid/nvt/small" else 7)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
+
+
+@pytest.mark.parametrize("style", ["rigid/small", "rigid/nve/small"])
+def test_langevin_noise_is_the_same_on_one_and_two_ranks(tmp_path, style):
+    """langevin at T = 1 (noise keyed by the id of each body's owner particle, not by a body number a
+    rank gives it): the same thermo on 2 ranks as on one while the bodies cross the ranks' boundary;
+    and the noise acts (the run ends far from the drag-free run's temperature)."""
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    plain = script(style, steps=3000)
+    text = plain.replace(f"{style} molecule\n", f"{style} molecule langevin 1.0 1.0 0.5 428984\n")
+    assert text != plain
+    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
+    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    free = np.array(thermo_rows(run_ranks(plain, 1, tmp_path).stdout))
+    assert one.shape == two.shape == (31, 7)
+    assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
+    assert abs(one[-1, 1] - free[-1, 1]) > 0.05
 
 
 @pytest.mark.parametrize("scene", ["free", "plane", "infile"])
