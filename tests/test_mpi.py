@@ -241,6 +241,66 @@ def test_shardlow_in_a_box_thinner_than_two_cutoffs_sweeps_alike_on_1_2_and_4_ra
         assert np.allclose(outputs[ranks], outputs[1], rtol=1e-10, atol=0), ranks
 
 
+def test_comm_modify_cutoff_gives_ghosts_without_a_pair_style(tmp_path):
+    """A scene with no pair style makes no ghosts unless comm_modify cutoff asks for them (LAMMPS makes
+    them then too): fix rigid/small's bodies reach their particles on the other rank through them.
+    Before, the cutoff was ignored without lists, and this 2-d scene of the reviewer stopped on 2
+    ranks with 'cannot find its body's owner particle'."""
+    script = """
+        units lj
+        dimension 2
+        atom_style molecular
+        region box block 0 20 0 20 -0.5 0.5
+        create_box 1 box
+        mass 1 1.0
+        create_atoms 1 single 5 5 0
+        create_atoms 1 single 6 5 0
+        create_atoms 1 single 18.5 10 0
+        create_atoms 1 single 19.5 10 0
+        create_atoms 1 single 18.8 11 0
+        set atom 1*2 mol 1
+        set atom 3*5 mol 2
+        velocity all set 0.1 0.2 0
+        comm_modify cutoff 3.0
+        fix 1 all rigid/small molecule
+        fix 2 all addforce 0.1 -0.05 0
+        fix 3 all enforce2d
+        thermo_style custom step temp ke
+        thermo_modify format float %.15g
+        thermo 200
+        run 2000
+    """
+    outputs = {}
+    for ranks in (1, 2, 4):
+        result = run(tmp_path, script, ranks)
+        assert result.returncode == 0, result.stderr
+        rows = [line.split() for line in thermo(result.stdout)]
+        outputs[ranks] = np.array([[float(w) for w in row] for row in rows if len(row) == 3 and row[0].isdigit()])
+    assert outputs[1].shape == (11, 3)
+    for ranks in (2, 4):
+        assert np.allclose(outputs[ranks], outputs[1], rtol=1e-12, atol=1e-15), ranks
+
+
+def test_degrees_of_freedom_below_zero_is_one_line_on_two_ranks(tmp_path):
+    """Every rank counts the same totals and stops alike: one line, no abort messages (the reviewer saw
+    it twice, with MPI_Abort lines, when each rank reported it as its own)."""
+    script = """
+        atom_style sphere
+        region box block 0 10 0 10 0 10
+        create_box 1 box
+        create_atoms 1 single 4.8 5 5
+        create_atoms 1 single 5.6 5 5
+        fix 1 all rigid single
+        thermo_style custom step temp
+        run 10
+    """
+    result = run(tmp_path, script, 2)
+    assert result.returncode == 1
+    assert result.stderr.strip().splitlines() == [
+        "ERROR: in.test:9: run: temperature of group all: degrees of freedom < 0 (3 x 2 particles - 3 - 6 removed "
+        "by fix 1 (rigid) 6 = -3)"]
+
+
 SWEEP_SHARES = """
 import sys
 import numpy as np

@@ -188,9 +188,10 @@ class Neighbor:
 
     def ghost_cutoff(self):
         """How far beyond the box ghosts are made: cutghost, or LAMMPS's ``comm_modify cutoff`` when
-        that is larger (and there are lists to use them)."""
-        reach = self.cutghost()
-        return max(reach, self.comm_cutoff) if reach > 0 else 0.0
+        that is larger. A script that sets it gets ghosts without any list too (fix rigid/small's
+        bodies reach their particles on other ranks through them, as in LAMMPS); without either,
+        none are made."""
+        return max(self.cutghost(), self.comm_cutoff)
 
     # ---- rebuild decision ---------------------------------------------------------------------
     def decide(self, particles, comm):
