@@ -68,8 +68,11 @@ def degrees_of_freedom(sim, group="all"):
     dof = d * members - d - removed
     if dof < 0 and members > 0:
         fixes = ", ".join(f"fix {fix.id} ({fix.name}) {n}" for fix, n in removing if n)
-        raise SimulationError(f"temperature of group {group}: degrees of freedom < 0 ({d} x {members} particles "
-                              f"- {d} - {removed} removed by {fixes or 'no fix'} = {dof})")
+        error = SimulationError(f"temperature of group {group}: degrees of freedom < 0 ({d} x {members} particles "
+                                f"- {d} - {removed} removed by {fixes or 'no fix'} = {dof})")
+        # every rank counts the same global totals and stops here alike: one line, not one per rank
+        error.agreed = True
+        raise error
     return max(dof, 0)
 
 
