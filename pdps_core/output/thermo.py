@@ -72,7 +72,10 @@ def keyword_value(sim, name, indices=()):
         return sim.output.thermo.temperature()
     if name == "press":
         return sim.output.thermo.pressure()
-    if name in ("pe", "epair", "econserve", "etotal", "enthalpy", "ke"):
+    if name == "epair":
+        # the pair style's energy alone, as LAMMPS's (pe adds the fixes' of fix_modify energy yes)
+        return obs.pair_energy(sim) / _normalise(sim)
+    if name in ("pe", "econserve", "etotal", "enthalpy", "ke"):
         total = 0.0
         if name != "ke":
             total += obs.potential_energy(sim)
