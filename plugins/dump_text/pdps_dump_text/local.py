@@ -6,10 +6,13 @@ Syntax::
     dump ID GROUP local N FILE ATTRIBUTE ...
 
 ATTRIBUTE: ``index`` (the row's number in the frame, from 1), ``c_ID`` (the only column of a
-compute's local data) or ``c_ID[k]`` (its column k, counted from the dialect's first index: 1 in
-LAMMPS's and LIGGGHTS's, 0 in PDPS's). Every compute named must give the same number of rows (they
-describe the same contacts). Computes with local data: ``wall/gran/local``. The group is not used
-(each compute has its own). Each frame::
+compute's local data), ``c_ID[k]`` (its column k, counted from the dialect's first index: 1 in
+LAMMPS's and LIGGGHTS's, 0 in PDPS's) or ``c_ID[*]`` (all its columns, named one by one in the
+header, as LAMMPS expands them). Every compute named must give the same number of rows (they
+describe the same contacts or bodies). Computes with local data: ``wall/gran/local``,
+``pair/gran/local``, ``rigid/local``. The group is not used (each compute has its own). A ``*`` in
+the file name writes each frame to a file of its own, the ``*`` replaced by the step (LAMMPS's
+wildcard); ``%`` (one file per processor) is refused. Each frame::
 
     ITEM: TIMESTEP / step / ITEM: NUMBER OF ENTRIES / n / ITEM: BOX BOUNDS ... / 3 lines lo hi /
     ITEM: ENTRIES index c_walls[1] ... / n rows
@@ -22,18 +25,21 @@ Example::
     dump contacts all local 1000 contacts.txt index c_walls[1] c_walls[2] c_walls[3] c_walls[7]
 """
 
+import os
 import re
+import tempfile
 
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError, StyleArgs, param
+from pdps_core.api import Dump, ScriptError, SimulationError, StyleArgs, param
 
-REFERENCE = re.compile(r"^c_([^\[\]]+)(?:\[(\d+)\])?$")
+REFERENCE = re.compile(r"^c_([^\[\]]+)(?:\[(\d+|\*)\])?$")
+EVERY_COLUMN = "*"
 
 
 class DumpLocal(Dump):
     name = "local"
-    usage = "dump ID GROUP local N FILE index|c_ID|c_ID[k] ..."
+    usage = "dump ID GROUP local N FILE index|c_ID|c_ID[k]|c_ID[*] ..."
 
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
@@ -51,22 +57,35 @@ class DumpLocal(Dump):
                 continue
             match = REFERENCE.match(word)
             if match is None:
-                raise ScriptError(f"attribute must be index, c_ID or c_ID[k] (got {word})")
-            column = None if match.group(2) is None else sim.dialect_index(int(match.group(2)), word)
+                raise ScriptError(f"attribute must be index, c_ID, c_ID[k] or c_ID[*] (got {word})")
+            column = match.group(2)
+            if column is not None and column != EVERY_COLUMN:
+                column = sim.dialect_index(int(column), word)
             self.attributes.append((word, match.group(1), column))
         self.path = args.file
         self.handle = None
+        if "%" in self.path:
+            raise ScriptError(f"per-processor dump files (% in {self.path}) are not supported: pdps writes "
+                              "one file per frame")
+        self.per_frame = "*" in self.path
         if sim.comm.is_root:
             try:
-                open(self.path, "a").close()
+                # checked now, written at the first frame
+                if self.per_frame:
+                    with tempfile.NamedTemporaryFile(dir=os.path.dirname(self.path) or ".", prefix=".pdps-probe-"):
+                        pass
+                else:
+                    open(self.path, "a").close()
             except OSError as exc:
                 raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
 
     def _columns(self, sim):
-        cache, columns, rows = {}, [], None
+        """The frame's columns (None for index), their header names and the row count."""
+        cache, columns, names, rows = {}, [], [], None
         for word, ident, column in self.attributes:
             if ident is None:
                 columns.append(None)
+                names.append(word)
                 continue
             if ident not in cache:
                 compute = sim.computes.get(ident)
@@ -86,35 +105,50 @@ class DumpLocal(Dump):
                     raise ScriptError(f"dump {self.id}: compute {ident} has {values.shape[1]} columns: "
                                       f"name one as c_{ident}[k]")
                 columns.append(values[:, 0])
+                names.append(word)
+            elif column == EVERY_COLUMN:
+                first = 0 if sim.dialect.name == "pdps" else 1      # the dialect's first index
+                columns += [values[:, k] for k in range(values.shape[1])]
+                names += [f"c_{ident}[{k + first}]" for k in range(values.shape[1])]
             elif not 0 <= column < values.shape[1]:
                 raise ScriptError(f"dump {self.id}: {word} is out of range (compute {ident} has "
                                   f"{values.shape[1]} columns)")
             else:
                 columns.append(values[:, column])
-        rows = rows or 0
-        return [np.arange(rows, dtype=np.float64) if c is None else c for c in columns], rows
+                names.append(word)
+        return columns, names, rows or 0
 
     def write(self, sim):
-        columns, rows = self._columns(sim)
+        columns, names, rows = self._columns(sim)
+        index = [k for k, c in enumerate(columns) if c is None]
+        columns = [np.zeros(rows) if c is None else c for c in columns]
         local = np.column_stack(columns) if columns else np.zeros((rows, 0))
-        table = sim.comm.gather_rows(local.reshape(rows, len(self.attributes)))
+        table = sim.comm.gather_rows(local.reshape(rows, len(columns)))
         if not sim.comm.is_root:
             return
-        for k, (word, ident, _) in enumerate(self.attributes):
-            if ident is None:
-                table[:, k] = np.arange(1, len(table) + 1)
+        for k in index:
+            table[:, k] = np.arange(1, len(table) + 1)
         box = sim.box
         header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ENTRIES\n{len(table)}\n",
                   f"ITEM: BOX BOUNDS {box.bounds_label()}\n"]
         header += ["%-1.16e %-1.16e\n" % (lo, hi) for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
-        header.append(f"ITEM: ENTRIES {' '.join(word for word, _, _ in self.attributes)}\n")
-        formats = ["%d" if ident is None else "%.16g" for _, ident, _ in self.attributes]
+        header.append(f"ITEM: ENTRIES {' '.join(names)}\n")
+        formats = ["%d" if k in index else "%.16g" for k in range(len(columns))]
         body = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist()) if len(table) else ""
+        if self.per_frame:
+            path = self.path.replace("*", str(sim.step))
+            try:
+                with open(path, "w") as handle:
+                    handle.write("".join(header) + body)
+            except OSError as exc:
+                # found by rank 0 alone, which writes: a SimulationError stops every rank
+                raise SimulationError(f"cannot open dump file {path}: {exc.strerror}") from None
+            return
         if self.handle is None:
             try:
                 self.handle = open(self.path, "w")
             except OSError as exc:
-                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+                raise SimulationError(f"cannot open dump file {self.path}: {exc.strerror}") from None
         self.handle.write("".join(header) + body)
         self.handle.flush()
 

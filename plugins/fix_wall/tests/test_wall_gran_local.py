@@ -105,7 +105,7 @@ def test_keywords_come_in_liggghts_order_and_dump_local_writes_them(tmp_path):
     ("compute bad all wall/gran/local heatFlux", "heatFlux is not supported"),
     ("compute bad all wall/gran/local speed", "unknown keyword speed"),
     ("dump d all local 10 {tmp}/x.txt", "dump local needs at least one attribute"),
-    ("dump d all local 10 {tmp}/x.txt v_a", "attribute must be index, c_ID or c_ID[k] (got v_a)"),
+    ("dump d all local 10 {tmp}/x.txt v_a", "attribute must be index, c_ID, c_ID[k] or c_ID[*] (got v_a)"),
 ])
 def test_bad_words(tmp_path, line, message):
     sim = make_box(MATERIAL, box="-4 4 -4 4 -4 4", particle_style="sphere", boundary="f f f")
