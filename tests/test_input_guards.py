@@ -323,7 +323,7 @@ def set_field(path, value):
     (set_field(["neighbor", "last_sort"], [[1]]), "field last_sort must be a step or null (got [[1]])"),
     (set_field(["step"], -4), "field step must be from 0 to 9223372036854775807 (got -4)"),
     (set_field(["particles", "nlocal"], float("inf")), "field nlocal must be a particle count (got inf)"),
-    (set_field(["particle_style"], "ellipsoid"), "field particle_style must be one of atomic, sphere, charge, molecular, bond, angle, full (got 'ellipsoid')"),
+    (set_field(["particle_style"], "ellipsoid"), "field particle_style must be a particle style or hybrid S1 S2 ... (got 'ellipsoid')"),
     (set_field(["ntypes"], 0), "field ntypes must be from 1 to 200 (got 0)"),
     (set_field(["fixes", 0, "group"], {"a": 1}), "field group must be a name (got {'a': 1})"),
     (set_field(["fixes", 0, "group"], "nowhere"), "fixes '1' uses group 'nowhere', which the file does not define"),
