@@ -342,3 +342,17 @@ def test_read_data_pair_coeff_errors(tmp_path, setup, text, message):
     with pytest.raises(ScriptError, match=re.escape(message)) as caught:
         sim.command(f"read_data {tmp_path / 'pairs.data'}")
     assert sim.box is None, caught.value
+
+
+# ---- create_atoms on shrink-wrapped faces -------------------------------------------------------------
+@pytest.mark.parametrize("boundary, count", [
+    # what LAMMPS 22 Jul 2025 creates for this script: sites on an s face are made (the box then wraps
+    # around them), on p, f and m faces not (review: pdps made 108 for s p p)
+    ("p p p", 108), ("f p p", 108), ("m p p", 108), ("s p p", 126), ("fs p p", 126), ("sf p p", 108),
+    ("p s m", 126), ("s s p", 147), ("s s s", 172),
+])
+def test_create_atoms_makes_the_sites_on_shrink_wrapped_faces_as_lammps(boundary, count):
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(f"units lj\nboundary {boundary}\nlattice fcc 0.8442\nregion box block 0 3 0 3 0 3\n"
+                "create_box 1 box\ncreate_atoms 1 box")
+    assert sim.particles.nlocal == count

@@ -10,8 +10,10 @@ defaults for created spheres).
 Lattice sites are those of the lattice command: integer cells from the origin (not from the box or
 region corner), each with the lattice's basis, kept when inside the box as LAMMPS keeps them (a site
 on a periodic box's upper face is the image of the one on its lower face, and is not created twice;
-LAMMPS shifts both faces down by 1e-6 of the box length) and, for ``region``, inside the region (its
-``side`` counted).
+LAMMPS shifts both faces down by 1e-6 of the box length; a shrink-wrapped face without minimum, s,
+moves out by that much, so that sites on it are made, as LAMMPS 22 Jul 2025 makes them: an fcc block
+of 3 cells makes 108 sites with p or f or m along x, 126 with s) and, for ``region``, inside the region
+(its ``side`` counted).
 
 ``random N SEED REGION`` in the LAMMPS dialect places the particles LAMMPS (22 Jul 2025) places, on
 any number of ranks: its Park-Miller generator seeded with SEED and warmed up by 30 uniforms draws
@@ -341,10 +343,14 @@ def lattice_sites(sim, region=None):
             lo, hi = np.maximum(lo, rlo), np.minimum(hi, rhi)
         except ScriptError:
             pass        # a region with no extent: the box's sites, tested one by one
-    # the box faces as LAMMPS shifts them (periodic: the lower one down, the upper one down twice)
+    # the box faces as LAMMPS shifts them (periodic: the lower one down, the upper one down twice;
+    # shrink-wrapped without a minimum, s: the lower one down, the upper one up twice, so that sites
+    # on them are made and the box wraps around them; fixed and m: where they are)
     eps = EPSILON * box.length
-    face_lo = box.lo - np.where(box.periodic, eps, 0.0)
-    face_hi = box.hi - np.where(box.periodic, 2.0 * eps, 0.0)
+    shrink_lo = np.array([word[0] == "s" for word in sim.periodicity])
+    shrink_hi = np.array([word[-1] == "s" for word in sim.periodicity])
+    face_lo = box.lo - np.where(box.periodic | shrink_lo, eps, 0.0)
+    face_hi = box.hi - np.where(box.periodic, 2.0 * eps, 0.0) + np.where(shrink_hi, 2.0 * eps, 0.0)
     # the cells whose sites may fall in [lo, hi]: the corners' cell coordinates, widened by one
     corners = np.array([[(lo, hi)[i][0], (lo, hi)[j][1], (lo, hi)[k][2]]
                         for i in (0, 1) for j in (0, 1) for k in (0, 1)])
