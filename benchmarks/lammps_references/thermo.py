@@ -20,7 +20,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
 OUT = ROOT / "tests" / "data" / "lammps" / "thermo.txt"
 KEYWORDS = ("step elapsed elaplong dt time atoms temp press pe ke etotal enthalpy evdwl ecoul epair ebond "
-            "elong vol density lx ly lz xlo xhi ylo yhi zlo zhi fmax fnorm")
+            "elong vol density lx ly lz xlo xhi ylo yhi zlo zhi fmax fnorm pxx pyy pzz pxy pxz pyz")
 # lj_fix_energy: a wall/lj93 fix whose energy joins pe (fix_modify energy yes) but not epair or evdwl
 CASES = {"lj": "", "lj_norm_no": "thermo_modify norm no", "metal": None,
          "lj_fix_energy": "fix 2 all wall/lj93 zlo -0.5 1.0 1.0 2.5 zhi 7.43 1.0 1.0 2.5 units box\n"

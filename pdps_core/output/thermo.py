@@ -33,10 +33,13 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
            "econserve": "Econserve", "vol": "Volume", "density": "Density", "lx": "Lx", "ly": "Ly",
            "lz": "Lz", "xlo": "Xlo", "xhi": "Xhi", "ylo": "Ylo", "yhi": "Yhi", "zlo": "Zlo", "zhi": "Zhi",
            "xy": "Xy", "xz": "Xz", "yz": "Yz", "fmax": "Fmax", "fnorm": "Fnorm", "nbuild": "Nbuild",
-           "ndanger": "Ndanger"}
+           "ndanger": "Ndanger", "pxx": "Pxx", "pyy": "Pyy", "pzz": "Pzz", "pxy": "Pxy", "pxz": "Pxz",
+           "pyz": "Pyz"}
+PRESSURE_TENSOR = ("pxx", "pyy", "pzz", "pxy", "pxz", "pyz")
 INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger"}
 ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve"}
-NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"}}
+NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"},
+         **{name: {"virial"} for name in PRESSURE_TENSOR}}
 ABSENT = {"ecoul", "ebond", "eangle", "edihed", "eimp", "emol", "elong", "xy", "xz", "yz"}
 REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((\[\d+\])*)$")
 BOUNDS = {"xlo": (0, 0), "xhi": (1, 0), "ylo": (0, 1), "yhi": (1, 1), "zlo": (0, 2), "zhi": (1, 2)}
@@ -72,6 +75,9 @@ def keyword_value(sim, name, indices=()):
         return sim.output.thermo.temperature()
     if name == "press":
         return sim.output.thermo.pressure()
+    if name in PRESSURE_TENSOR:
+        # LAMMPS's: the thermo temperature group's kinetic tensor (all, or thermo_modify temp's)
+        return float(obs.pressure_tensor(sim, sim.output.thermo.temp_group())[PRESSURE_TENSOR.index(name)])
     if name == "epair":
         # the pair style's energy alone, as LAMMPS's (pe adds the fixes' of fix_modify energy yes)
         return obs.pair_energy(sim) / _normalise(sim)
@@ -209,6 +215,12 @@ class Thermo:
         if self.temp_id is not None:
             return float(self.sim.compute_value(self.temp_id))
         return obs.temperature(self.sim)
+
+    def temp_group(self):
+        """The group of the thermo temperature (thermo_modify temp's compute, or all): pxx ... pyz
+        take its kinetic tensor, sum m v_a v_b."""
+        compute = self.sim.computes.get(self.temp_id) if self.temp_id is not None else None
+        return getattr(compute, "group", "all") if compute is not None else "all"
 
     def pressure(self):
         if self.press_id is not None:

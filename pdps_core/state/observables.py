@@ -34,6 +34,22 @@ def _kinetic_sum(v, type_, mass, rmass, mask, bit, n):
     return total, members
 
 
+@njit(cache=True)
+def _kinetic_tensor(v, type_, mass, rmass, mask, bit, n, out):
+    """out = sum of m v_a v_b (xx yy zz xy xz yz) over the first n particles whose mask has ``bit``."""
+    out[:] = 0.0
+    with_rmass = len(rmass) > 0
+    for i in range(n):
+        if mask[i] & bit:
+            m = rmass[i] if with_rmass else mass[type_[i]]
+            out[0] += m * v[i, 0] * v[i, 0]
+            out[1] += m * v[i, 1] * v[i, 1]
+            out[2] += m * v[i, 2] * v[i, 2]
+            out[3] += m * v[i, 0] * v[i, 1]
+            out[4] += m * v[i, 0] * v[i, 2]
+            out[5] += m * v[i, 1] * v[i, 2]
+
+
 def masses(sim, selection=slice(None)):
     """Mass of each owned particle: per-particle ``rmass`` when present, else the type's mass."""
     p = sim.particles
@@ -107,6 +123,20 @@ def pressure(sim, temp=None, temp_group="all"):
     dof = degrees_of_freedom(sim, temp_group)
     return (dof * sim.units.boltz * temp + virial_trace(sim)) / (sim.dimension * sim.box.volume) \
         * sim.units.nktv2p
+
+
+def pressure_tensor(sim, temp_group="all"):
+    """The pressure tensor (xx yy zz xy xz yz), as LAMMPS's compute pressure vector: the kinetic tensor
+    sum m v_a v_b of ``temp_group`` plus the virial tensor, over the volume (the tail correction on
+    the diagonal)."""
+    sim.require_virial()
+    p = sim.particles
+    kinetic = np.zeros(6)
+    _kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_RMASS, p.mask,
+                    sim.groups.bit(temp_group), p.nlocal, kinetic)
+    total = np.asarray(sim.comm.sum(kinetic * sim.units.mvv2e + np.asarray(sim.virial, dtype=np.float64)))
+    total[:3] += tail_corrections(sim)[1]
+    return total / sim.box.volume * sim.units.nktv2p
 
 
 def potential_energy(sim):
