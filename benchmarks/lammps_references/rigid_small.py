@@ -15,7 +15,10 @@ steps of dt = 0.001 for each style, into plugins/fix_rigid/tests/data/rigid_smal
 file is plugins/fix_rigid/tests/data/rigid_small_lj.data. Two more scenes, ``free`` and ``plane``: a dimer
 (a linear body) and a triangle pushed across the periodic x boundary by fix addforce, in 3d and in 2d,
 2000 steps of each style; ``infile``: the free scene with the bodies' values from
-plugins/fix_rigid/tests/data/rigid_small_bodies.txt.
+plugins/fix_rigid/tests/data/rigid_small_bodies.txt. BAROSTATS: rigid/npt/small and rigid/nph/small on
+the 27 LJ bodies (iso; aniso with a ramped target and pchain; x and z coupled with a dilate
+group), neighbor lists built every step (BAROSTAT_SCRIPT says why): temperature, pressure, volume, box
+lengths, f_1, ecouple and econserve every 100 steps.
 """
 
 import sys
@@ -45,6 +48,35 @@ run {steps}
 # f_1: the bodies' temperature (rigid/small), LAMMPS's energy of rigid/nh/small (rigid/nve/small; rigid/nvt/small,
 # extensive, with the chains' energy)
 COLUMNS = {"rigid/small": "f_1", "rigid/nve/small": "f_1", "rigid/nvt/small": "f_1 ecouple econserve"}
+BAROSTATS = {
+    "rigid/npt/small iso": ("all rigid/npt/small molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0", 5000),
+    "rigid/nph/small aniso": ("all rigid/nph/small molecule aniso 0.05 0.08 2.0 pchain 4", 5000),
+    "rigid/npt/small xz": ("all rigid/npt/small molecule temp 0.5 0.4 1.0 x 0.05 0.05 2.0 z 0.05 0.05 2.0 couple xz "
+                           "dilate low", 3000),
+    # another fix's box change carries rigid/small's bodies: rigid/small on molecules 14-27 and fix rigid/nph on
+    # the others (LAMMPS wants rigid fixes before a box-changing one); f_1 rigid/small's bodies' temperature
+    "rigid/nph carries rigid/small": ("high rigid/small molecule\nfix 2 low rigid/nph molecule iso 0.05 0.05 2.0",
+                                      3000),
+}
+# LAMMPS puts a body's centre back into the box (its image flags) only when neighbor lists are built, and
+# the virial of its scaled bodies depends on that image (fix rigid's recorder, rigid.py); with check no it
+# does so every step, as pdps does whenever the box changes; pdps runs the script without that line
+BAROSTAT_SCRIPT = """units lj
+atom_style molecular
+read_data rigid_small_lj.data
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+neigh_modify exclude molecule/intra all
+neigh_modify every 1 delay 0 check no
+group low molecule <= 13
+group high molecule > 13
+timestep 0.001
+fix 1 {fix}
+thermo_style custom step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve
+thermo_modify format float %20.15g
+thermo 100
+run {steps}
+"""
 LENGTH = 12.0
 GRID = 3
 # a dimer (a linear body: 5 degrees of freedom in 3d) and a triangle pushed across the periodic x boundary
@@ -152,6 +184,8 @@ def main():
     write_data(data)
     (DATA / "rigid_small_bodies.txt").write_text(BODIES)
     tables = {style: thermo_lines(run_lammps(lmp, script(style), [data], label=style)) for style in STYLES}
+    for name, (fix, steps) in BAROSTATS.items():
+        tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
     for style in STYLES:
         extra = STYLES[style]
         tables[f"free {style}"] = thermo_lines(run_lammps(lmp, FREE.format(style=style, extra=extra), label=style))

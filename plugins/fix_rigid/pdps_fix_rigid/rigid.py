@@ -721,6 +721,14 @@ class FixRigid(Fix):
                              np.asarray(sim.box.periodic, dtype=np.bool_))
 
     # ---- thermo ---------------------------------------------------------------------------------
+    def box_carried_centres(self):
+        """The bodies' centres of mass, which a box change scales (every rank has them all)."""
+        return self.xcm
+
+    def box_carried(self, sim):
+        """After a box change moved the centres: the box lengths are read again."""
+        self.atom_arrays = None
+
     def virial(self, sim):
         """Both halves of the step's constraint virial (read after final_integrate)."""
         return tuple(float(c) for c in self.step_virial + self.final_virial)

@@ -17,8 +17,8 @@ epsilon_dot_a / g_f. Each half step scales the bodies' velocities along a by exp
 chains' own exp(-dt/2 eta_dot_1) with ``temp``; the centres of mass move by V_a dt exp(dt/4
 epsilon_dot_a) sinh(dt/4 epsilon_dot_a) / (dt/4 epsilon_dot_a). The box changes by exp(dt/4
 epsilon_dot_a) about its centre twice a step, before and after the particles are placed on their
-bodies: the centres of mass of every fix rigid's bodies, and the particles of the ``dilate`` group,
-keep their fractional coordinates. A chain of PCHAIN thermostats (masses d^2 k_B T / omega_max^2
+bodies: the centres of mass of every rigid fix's bodies (rigid/small's too), and the particles of the
+``dilate`` group, keep their fractional coordinates. A chain of PCHAIN thermostats (masses d^2 k_B T / omega_max^2
 for the first, k_B T / omega_max^2 for the others) acts on the barostat's kinetic energy, advanced
 with the Yoshida-Suzuki weights of ``tparam`` after the bodies' first half step. T is the target
 temperature of ``temp`` (rigid/npt), else the temperature of all particles at the run's start (1 in
@@ -26,8 +26,8 @@ lj units, 300 otherwise, where that is 0) (rigid/nph).
 
 P_a is LAMMPS's compute pressure of all particles with their temperature compute: the scalar
 (N_dof k_B T + sum_a W_aa) / (d V) for ``iso`` (and ``couple xyz``), the diagonal (sum m v_a^2 + W_aa)
-/ V otherwise, averaged over the coupled axes; W includes the bodies' constraint virial of the whole
-step. P_hydro is the mean target of the barostatted axes, ramped from PSTART to PSTOP over the run.
+/ V otherwise, averaged over the coupled axes; W includes the constraint virial of the whole step of
+every rigid fix (LAMMPS wants the others defined before a box-changing fix). P_hydro is the mean target of the barostatted axes, ramped from PSTART to PSTOP over the run.
 
 ``f_ID`` (extensive) and thermo ``ecouple``: LAMMPS's compute_scalar, fix rigid/nvt's (the bodies'
 temperature, the chains' energy) plus sum_a W epsilon_dot_a^2 / (2 d_p) + P_0 V (P_0 the mean of the
@@ -64,7 +64,7 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError, keyword, observables
+from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
 from .rigid import EPSILON, MOL_REFUSED, NO_ARRAY, NOT_YET, FixRigid
@@ -164,26 +164,49 @@ def kinetic_tensor(v, type_, mass, rmass, nlocal, out):
 BAROSTAT_WORDS = ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")
 
 
-class FixRigidNH(FixRigidNVE):
-    """Fix rigid/nve with the barostat (and, with ``temp``, the thermostat) of LAMMPS's fix rigid/nh."""
-    not_yet = NOT_YET
-    refused = {"langevin": "fix rigid/nph and rigid/npt take no langevin (LAMMPS's page: rigid and rigid/nve "
-                           "only)"} | MOL_REFUSED
+class BarostatArgs(StyleArgs):
+    """The keywords of the barostat and its thermostat, added to a rigid fix's own (``Args(Base.Args,
+    BarostatArgs)``)."""
+    temp: tuple[float, float, float] | None = keyword(None, unit="temperature")
+    tparam: tuple[int, int, int] = keyword((10, 1, 3))
+    iso: Triple = keyword(None, unit="pressure")
+    aniso: Triple = keyword(None, unit="pressure")
+    x: Triple = keyword(None, unit="pressure")
+    y: Triple = keyword(None, unit="pressure")
+    z: Triple = keyword(None, unit="pressure")
+    couple: Literal["none", "xyz", "xy", "yz", "xz"] | None = keyword(None)
+    pchain: int = keyword(10)
+    dilate: str = keyword("all")
+
+
+def rigid_centres(sim):
+    """(fix, the centres of mass of the bodies it moves on this rank) for every fix of rigid bodies:
+    fix rigid's (all bodies, every rank) and rigid/small's (the bodies this rank owns)."""
+    found = []
+    for fix in sim.fixes.values():
+        centres = fix.box_carried_centres() if hasattr(fix, "box_carried_centres") else None
+        if centres is not None:
+            found.append((fix, centres))
+    return found
+
+
+class NoseHooverBarostat:
+    """LAMMPS's fix rigid/nh on the bodies of a rigid fix (fix rigid/nve's or rigid/nve/small's, the
+    class after this one in the style's bases): the barostat and, with ``temp``, the thermostat. The
+    fix gives its bodies through ``_nh_bodies`` (this rank's) and sums over ranks with ``_nh_sum``."""
     extensive = True
     extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
     virial_after = "final_integrate"
 
-    class Args(FixRigid.Args):
-        temp: tuple[float, float, float] | None = keyword(None, unit="temperature")
-        tparam: tuple[int, int, int] = keyword((10, 1, 3))
-        iso: Triple = keyword(None, unit="pressure")
-        aniso: Triple = keyword(None, unit="pressure")
-        x: Triple = keyword(None, unit="pressure")
-        y: Triple = keyword(None, unit="pressure")
-        z: Triple = keyword(None, unit="pressure")
-        couple: Literal["none", "xyz", "xy", "yz", "xz"] | None = keyword(None)
-        pchain: int = keyword(10)
-        dilate: str = keyword("all")
+    def _nh_bodies(self):
+        """xcm vcm fcm angmom torque omega quat conjqm ex ey ez inertia masstotal fflag tflag of the bodies
+        this rank integrates."""
+        return (self.xcm, self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.quat, self.conjqm,
+                self.ex, self.ey, self.ez, self.inertia, self.masstotal, self.fflag, self.tflag)
+
+    def _nh_sum(self, sim, values):
+        """Sums over the bodies of all ranks from this rank's sums (fix rigid: every rank has them all)."""
+        return values
 
     @classmethod
     def parse(cls, words):
@@ -264,6 +287,7 @@ class FixRigidNH(FixRigidNVE):
         self.scale_t, self.drift = np.ones(3), np.ones(3)
         self.ke_tensor = np.zeros(3)
         self.akin_t = self.akin_r = 0.0
+        self.nf_t = self.nf_r = self.g_f = 0
 
     # ---- per run ------------------------------------------------------------------------------------
     def needs(self, step):
@@ -277,13 +301,6 @@ class FixRigidNH(FixRigidNVE):
             if any(self.p_flag[d] for d in getattr(fix, "deformed_axes", ())):
                 raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same box length")
         self.boltz, self.mvv2e, self.nktv2p = sim.units.boltz, sim.units.mvv2e, sim.units.nktv2p
-        d = sim.dimension
-        self.nf_t = d * self.nbody
-        if d == 3:
-            self.nf_r = 3 * self.nbody - int(np.count_nonzero(np.abs(self.inertia) < EPSILON))
-        else:
-            self.nf_r = self.nbody - int(np.count_nonzero(np.abs(self.inertia[:, 2]) < EPSILON))
-        self.g_f = self.nf_t + self.nf_r
         chain, titer, order = self.args.tparam
         if order == 3:
             w0 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
@@ -297,10 +314,27 @@ class FixRigidNH(FixRigidNVE):
         if self.pstat and self.vol0 == 0.0:
             self.vol0 = float(sim.box.volume)
 
+    def _count_freedom(self, sim):
+        """LAMMPS's compute_dof: d per body translating; 3 per body less its zero moments rotating (1 per
+        body in 2d, 0 for a zero moment about z); all ranks' bodies (rigid/small's exist on each rank
+        from the set-up's first neighbor list build on)."""
+        d = sim.dimension
+        inertia = self._nh_bodies()[11]
+        nbody = len(inertia)
+        if d == 3:
+            rotating = 3 * nbody - int(np.count_nonzero(np.abs(inertia) < EPSILON))
+        else:
+            rotating = nbody - int(np.count_nonzero(np.abs(inertia[:, 2]) < EPSILON))
+        self.nf_t, self.nf_r = (int(c) for c in self._nh_sum(sim, np.array([d * nbody, rotating], dtype=np.int64)))
+        self.g_f = self.nf_t + self.nf_r
+
     def setup(self, sim):
         super().setup(sim)
-        self.akin_t = float((self.masstotal * np.einsum("bd,bd->b", self.vcm, self.vcm)).sum())
-        self.akin_r = float(np.einsum("bd,bd->", self.angmom, self.omega))
+        self._count_freedom(sim)
+        _, vcm, _, angmom, _, omega, *_, masstotal, _, _ = self._nh_bodies()
+        akin = np.array([float((masstotal * np.einsum("bd,bd->b", vcm, vcm)).sum()),
+                         float(np.einsum("bd,bd->", angmom, omega))])
+        self.akin_t, self.akin_r = (float(c) for c in self._nh_sum(sim, akin))
         if self.tstat:
             self.t_target = sim.ramp(self.args.temp[0], self.args.temp[1])
         elif self.pstat:
@@ -341,10 +375,8 @@ class FixRigidNH(FixRigidNVE):
             for d in range(3):
                 x = self.dtq * self.epsilon_dot[d]
                 self.drift[d] = self.dtv * math.exp(x) * maclaurin(x)
-        self.akin_t, self.akin_r = nh_initial(self.xcm, self.vcm, self.fcm, self.angmom, self.torque, self.omega,
-                                              self.quat, self.conjqm, self.ex, self.ey, self.ez, self.inertia,
-                                              self.masstotal, self.fflag, self.tflag, self.dtv, self.dtf, self.dtq,
-                                              self.scale_t, scale_r, self.drift)
+        akin = nh_initial(*self._nh_bodies(), self.dtv, self.dtf, self.dtq, self.scale_t, scale_r, self.drift)
+        self.akin_t, self.akin_r = (float(c) for c in self._nh_sum(sim, np.array(akin)))
         titer = self.args.tparam[1]
         if self.tstat:
             self.t_target = sim.ramp(self.args.temp[0], self.args.temp[1])
@@ -377,9 +409,9 @@ class FixRigidNH(FixRigidNVE):
 
     def advance_final(self, sim):
         scale_r = self._scales()
-        self.akin_t, self.akin_r = nh_final(self.vcm, self.fcm, self.angmom, self.torque, self.omega, self.quat,
-                                            self.conjqm, self.ex, self.ey, self.ez, self.inertia, self.masstotal,
-                                            self.fflag, self.tflag, self.dtf, self.scale_t, scale_r)
+        xcm, *bodies = self._nh_bodies()
+        akin = nh_final(*bodies, self.dtf, self.scale_t, scale_r)
+        self.akin_t, self.akin_r = (float(c) for c in self._nh_sum(sim, np.array(akin)))
 
     def final_integrate(self, sim):
         super().final_integrate(sim)
@@ -419,12 +451,17 @@ class FixRigidNH(FixRigidNVE):
     def _pressure(self, sim):
         """LAMMPS's compute pressure of all particles now (iso: its scalar; else its diagonal), the
         coupled axes averaged, into p_current; the virial is the forces' and, while on, this step's
-        constraint virial of the bodies."""
+        constraint virial of every fix of rigid bodies."""
         d = sim.dimension
         volume = float(sim.box.volume)
         virial = np.asarray(sim.comm.sum(np.asarray(sim.virial[:3], dtype=np.float64)))
-        if self.thermo_virial:
-            virial = virial + np.asarray(sim.comm.sum(self.step_virial[:3] + self.final_virial[:3]))
+        # the constraint virials of this fix and of the rigid fixes before it, complete after their
+        # final_integrate, join the others' only after every fix's (LAMMPS's compute pressure has them)
+        constraints = np.zeros(3)
+        for fix in sim.fixes.values():
+            if fix.thermo_virial and fix.virial_after == "final_integrate":
+                constraints += np.asarray(fix.virial(sim), dtype=np.float64)[:3]
+        virial = virial + np.asarray(sim.comm.sum(constraints))
         virial = virial + observables.tail_corrections(sim)[1]
         if self.iso:
             temperature = observables.temperature(sim, "all")
@@ -443,7 +480,7 @@ class FixRigidNH(FixRigidNVE):
             self.p_current[coupled] = tensor[coupled].mean()
 
     def _remap(self, sim):
-        """Half the step's box change about the box's centre: body centres (of every fix rigid) and the
+        """Half the step's box change about the box's centre: body centres (of every rigid fix) and the
         dilate group's particles keep their fractional coordinates (LAMMPS's remap and deform)."""
         self.epsilon += self.dtq * self.epsilon_dot
         box = sim.box
@@ -454,16 +491,19 @@ class FixRigidNH(FixRigidNVE):
             factor = math.exp(self.dtq * self.epsilon_dot[d])
             lo[d] = (lo[d] - centre) * factor + centre
             hi[d] = (hi[d] - centre) * factor + centre
-        rigid = [fix for fix in sim.fixes.values() if isinstance(fix, FixRigid)]
-        fractions = [(fix.xcm - box.lo) * (1.0 / length) for fix in rigid]
+        rigid = rigid_centres(sim)
+        fractions = [(centres - box.lo) * (1.0 / length) for _, centres in rigid]
         sim.change_box(lo, hi, remap=self.args.dilate)
-        for fix, fraction in zip(rigid, fractions):
-            fix.xcm[:] = box.length * fraction + box.lo
-            fix.atom_arrays = None
+        for (fix, centres), fraction in zip(rigid, fractions):
+            centres[:] = box.length * fraction + box.lo
+            fix.box_carried(sim)
 
     # ---- thermo and restart files -------------------------------------------------------------------
+    def _nh_base_scalar(self, sim):
+        return FixRigid.scalar(self, sim)
+
     def scalar(self, sim):
-        energy = FixRigid.scalar(self, sim)
+        energy = self._nh_base_scalar(sim)
         if not hasattr(self, "boltz"):
             return energy
         kt = self.boltz * self.t_target
@@ -491,3 +531,13 @@ class FixRigidNH(FixRigidNVE):
             if saved.shape == getattr(self, name).shape:
                 getattr(self, name)[:] = saved
         self.vol0 = float(state.get("vol0", 0.0))
+
+
+class FixRigidNH(NoseHooverBarostat, FixRigidNVE):
+    """Fix rigid/nve with the barostat (and, with ``temp``, the thermostat) of LAMMPS's fix rigid/nh."""
+    not_yet = NOT_YET
+    refused = {"langevin": "fix rigid/nph and rigid/npt take no langevin (LAMMPS's page: rigid and rigid/nve "
+                           "only)"} | MOL_REFUSED
+
+    class Args(FixRigid.Args, BarostatArgs):
+        pass

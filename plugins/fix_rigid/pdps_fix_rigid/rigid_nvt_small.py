@@ -42,7 +42,7 @@ from pdps_core.api import ScriptError, keyword
 from .rigid import EPSILON
 from .rigid_nve_small import FixRigidNVESmall
 from .rigid_nvt import FixRigidNVT, chain_step, nvt_final, nvt_initial
-from .rigid_small import NOT_YET
+from .rigid_small import BAROSTAT_REFUSED, NOT_YET
 
 CHAIN_LIMIT = 1000
 
@@ -52,9 +52,9 @@ class FixRigidNVTSmall(FixRigidNVESmall):
     usage = ("fix ID GROUP rigid/nvt/small molecule temp TSTART TSTOP TDAMP [tparam TCHAIN TITER TORDER] "
              "[reinit yes|no] [infile FILE]")
     extensive = True
-    not_yet = tuple(word for word in NOT_YET if word not in ("temp", "tparam"))
+    not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt/small thermostats with temp; langevin is for rigid/small and "
-                           "rigid/nve/small (as LAMMPS)"}
+                           "rigid/nve/small (as LAMMPS)"} | BAROSTAT_REFUSED
 
     class Args(FixRigidNVESmall.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")

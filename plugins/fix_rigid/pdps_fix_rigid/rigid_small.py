@@ -60,8 +60,9 @@ Syntax::
   from TSTART to TSTOP (temperature, >= 0; 0 gives the drag alone), TPERIOD (time, > 0). A body's
   noise is keyed by (SEED, step, the id of its owner particle), so it is the same on any number of
   ranks (not LAMMPS's numbers, which depend on the rank; its drag alone is LAMMPS's to round-off).
-- LAMMPS's other keywords (mol, temp, tparam, iso, aniso, x, y, z, couple, pchain, dilate,
-  gravity) are refused by name: not implemented yet.
+- ``temp`` and ``tparam`` belong to rigid/nvt/small and rigid/npt/small, the barostat keywords (iso,
+  aniso, x, y, z, couple, pchain, dilate) to rigid/nph/small and rigid/npt/small: refused here, as
+  LAMMPS does. ``mol`` and ``gravity`` are refused by name: not implemented yet.
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
@@ -90,8 +91,11 @@ from .rigid import (EPSILON, TOLERANCE, FixRigid, check_langevin, langevin_keyed
 
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
-NOT_YET = ("mol", "temp", "tparam", "iso", "aniso", "x", "y", "z", "couple", "pchain",
-           "dilate", "gravity")
+NOT_YET = ("mol", "gravity")
+# keywords LAMMPS refuses for a style of the family (Illegal fix command)
+THERMOSTAT_ONLY = "only fix rigid/nvt/small and rigid/npt/small take it (as LAMMPS)"
+BAROSTAT_ONLY = "only fix rigid/nph/small and rigid/npt/small take it (as LAMMPS)"
+BAROSTAT_REFUSED = {word: BAROSTAT_ONLY for word in ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")}
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
 RECORD = 25
@@ -282,7 +286,7 @@ class FixRigidSmall(Fix):
     virial_default = True
     virial_after = "final_integrate"
     not_yet = NOT_YET
-    refused = {}
+    refused = {"temp": THERMOSTAT_ONLY, "tparam": THERMOSTAT_ONLY} | BAROSTAT_REFUSED
 
     class Args(StyleArgs):
         bodystyle: Literal["molecule"] = param()
@@ -786,6 +790,11 @@ class FixRigidSmall(Fix):
     def initial_integrate(self, sim):
         self.advance_initial(sim)
         self._share(sim)
+        self.place_particles(sim)
+
+    def place_particles(self, sim):
+        """Each body's particles on it (positions and velocities from its centre, orientation and
+        motion), the first half of the step's constraint virial."""
         x, v, f, image, body, displace, type_, mass, rmass, radius, omega_atom, _, length = self._atoms(sim)
         self.step_virial[:] = 0.0
         bodies.set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length, self.xcm, self.vcm,
@@ -798,6 +807,18 @@ class FixRigidSmall(Fix):
         self._share(sim, motion_only=True)
         self.final_virial[:] = 0.0
         self._set_v(sim, self.final_virial, sim.vflag and self.thermo_virial)
+
+    # ---- a box change (a barostat's) carries the bodies ----------------------------------------------
+    def box_carried_centres(self):
+        """The centres of mass of the bodies this rank owns, which a box change scales (None before the
+        bodies exist)."""
+        return self.xcm[: self.nlocal_body] if self.compact else None
+
+    def box_carried(self, sim):
+        """After a box change moved the centres: the ghost copies take them, the box lengths are read
+        again."""
+        self.atom_arrays = None
+        self._share(sim)
 
     # ---- thermo ----------------------------------------------------------------------------------
     def virial(self, sim):

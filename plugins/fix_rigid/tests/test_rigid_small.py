@@ -125,7 +125,11 @@ def test_bodies_straddling_the_box_are_whole_and_owned_once(tmp_path):
     ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 1 4", "tparam: TCHAIN and TITER must be 1 to 1000"),
     ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 9223372036854775807 1 3", "TCHAIN and TITER must be 1 to"),
     ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 100000000 3", "TCHAIN and TITER must be 1 to 1000"),
-    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 iso 1 1 1", "keyword iso of fix rigid/nvt/small is not"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 iso 1 1 1", "keyword iso of fix rigid/nvt/small: only fix "
+     "rigid/nph/small and rigid/npt/small take it"),
+    ("fix 1 all rigid/small molecule temp 1 1 1", "keyword temp of fix rigid/small: only fix rigid/nvt/small and "
+     "rigid/npt/small take it"),
+    ("fix 1 all rigid/nve/small molecule tparam 3 1 3", "keyword tparam of fix rigid/nve/small: only fix"),
 ])
 def test_bad_input_is_one_line(tmp_path, line, message):
     path = molecular_data(tmp_path / "two.data", np.array([[1, 1, 1], [2, 1, 1], [5, 5, 5], [5, 6, 5]]), [1, 1, 2, 2])

@@ -1,0 +1,101 @@
+"""fix rigid/npt/small and rigid/nph/small (LAMMPS's fix rigid/nh/small) against LAMMPS (22 Jul 2025) on 27
+small bodies of Lennard-Jones particles (iso; aniso with a ramped target and pchain; x and z coupled with
+a dilate group) and fix rigid/nph's box change carrying rigid/small's bodies, recorded by
+benchmarks/lammps_references/rigid_small.py into tests/data/rigid_small_lj.txt; 1 and 2 ranks; bad input."""
+
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import ScriptError
+from pdps_core.testing import run_ranks, thermo_rows
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
+from rigid_small import BAROSTAT_SCRIPT, BAROSTATS  # noqa: E402
+
+DATA = Path(__file__).with_name("data")
+COLUMNS = "step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve".split()
+# LAMMPS's script builds neighbor lists every step (the recorder says why); pdps re-images the bodies'
+# centres whenever the box changes and runs it without that line
+EVERY_STEP = "neigh_modify every 1 delay 0 check no\n"
+
+
+def run_scene(pdps_cli, tmp_path, name, steps=None):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    fix, length = BAROSTATS[name]
+    text = BAROSTAT_SCRIPT.format(fix=fix, steps=steps or length).replace(EVERY_STEP, "")
+    done = pdps_cli(text, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    return np.array(thermo_rows(done.stdout))
+
+
+@pytest.mark.parametrize("name", list(BAROSTATS))
+def test_barostats_match_lammps(pdps_cli, tmp_path, name):
+    """Temperature, pressure, volume, box lengths, f_1, ecouple and econserve as LAMMPS's, each column
+    relative to its largest value, over the first 1000 steps and over the whole run."""
+    ours = run_scene(pdps_cli, tmp_path, name)
+    lammps = read_blocks(DATA / "rigid_small_lj.txt")[name]
+    assert ours.shape == lammps.shape
+    scale = np.abs(lammps[:, 1:]).max(axis=0)
+    differences = np.abs(ours[:, 1:] - lammps[:, 1:]) / scale
+    early = differences[:11].max()
+    worst = differences.max(axis=0)
+    print(f"{name}: largest difference from LAMMPS, of each column's largest value: {early:.1e} over 1000 steps, "
+          + ", ".join(f"{c} {w:.1e}" for c, w in zip(COLUMNS[1:], worst)) + f" over {int(lammps[-1, 0])}")
+    assert early < 1e-5
+    assert worst.max() < 1e-5
+
+
+@pytest.mark.parametrize("name", ["rigid/npt/small iso", "rigid/nph/small aniso", "rigid/nph carries rigid/small"])
+def test_same_thermo_on_one_and_two_ranks(tmp_path, name):
+    """Bodies owned on either rank, crossing the ranks' boundary while the box shrinks: the kinetic
+    sums, degrees of freedom and pressure the barostat reads are all ranks', so 2 ranks run as one."""
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    fix, _ = BAROSTATS[name]
+    text = BAROSTAT_SCRIPT.format(fix=fix, steps=1500).replace(EVERY_STEP, "")
+    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
+    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    assert one.shape == two.shape == (16, 13)
+    assert one[-1, 6] < 0.99 * one[0, 6]          # the box did change
+    assert two == pytest.approx(one, rel=1e-10, abs=1e-12)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("fix 1 all rigid/nph/small molecule", "fix rigid/nph/small needs a pressure: iso, aniso, x, y or z"),
+    ("fix 1 all rigid/npt/small molecule iso 1 1 1", "fix rigid/npt/small needs temp TSTART TSTOP TDAMP and a"),
+    ("fix 1 all rigid/npt/small molecule temp 1 1 1", "fix rigid/npt/small needs temp TSTART TSTOP TDAMP and a"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 temp 1 1 1", "keyword temp of fix rigid/nph/small: fix "
+     "rigid/nph/small controls no temperature"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 tparam 3 1 3", "keyword tparam of fix rigid/nph/small: only "
+     "fix rigid/nvt/small and rigid/npt/small take it"),
+    ("fix 1 all rigid/npt/small molecule temp 1 1 1 iso 1 1 1 langevin 1 1 1 5", "keyword langevin of fix "
+     "rigid/npt/small: fix rigid/nph/small and rigid/npt/small take no langevin"),
+    ("fix 1 all rigid/nph/small molecule iso -1 1 1", r"iso: target pressures of fix rigid/nph/small cannot be < 0"),
+    ("fix 1 all rigid/nph/small molecule x 1 1 0", r"x: PDAMP must be > 0 \(got 0\)"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 pchain 0", "pchain: the barostat chain needs 1 to 1000"),
+    ("fix 1 all rigid/npt/small molecule temp 1 1 1 iso 1 1 1 tparam 3 2000 3", "tparam: TCHAIN and TITER must be"),
+    ("fix 1 all rigid/nph/small molecule x 1 1 1 y 2 2 1 couple xy", "couple xy: coupled axes need the same"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 couple banana", "couple"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 mol water", "keyword mol of fix rigid/nph/small is not implemented"),
+    ("fix 1 all rigid/nph/small single iso 1 1 1", "fix rigid/nph/small takes bodystyle molecule only"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 iso 1 1 1", "keyword iso of fix rigid/nvt/small: only fix "
+     "rigid/nph/small and rigid/npt/small take it"),
+])
+def test_bad_input_is_one_line(make_sim, tmp_path, line, message):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    sim = make_sim()
+    sim.command(f"units lj\natom_style molecular\nread_data {tmp_path / 'rigid_small_lj.data'}")
+    with pytest.raises(ScriptError, match=message):
+        sim.command(line)
+
+
+def test_non_periodic_axis_is_refused(make_sim, tmp_path):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    sim = make_sim()
+    sim.command(f"units lj\natom_style molecular\nboundary p p f\nread_data {tmp_path / 'rigid_small_lj.data'}")
+    with pytest.raises(ScriptError, match="fix rigid/nph/small cannot change the non-periodic z length"):
+        sim.command("fix 1 all rigid/nph/small molecule iso 1 1 1")
