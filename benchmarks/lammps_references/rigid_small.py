@@ -17,7 +17,9 @@ file is plugins/fix_rigid/tests/data/rigid_small_lj.data. Two more scenes, ``fre
 2000 steps of each style; ``infile``: the free scene with the bodies' values from
 plugins/fix_rigid/tests/data/rigid_small_bodies.txt. BAROSTATS: rigid/npt/small and rigid/nph/small on
 the 27 LJ bodies (iso; aniso with a ramped target and pchain; x and z coupled with a dilate
-group), neighbor lists built every step (BAROSTAT_SCRIPT says why): temperature, pressure, volume, box
+group; fix rigid/nph on some bodies, whose box change carries rigid/small's others; fix_modify temp
+and press naming computes of group high, also for fix rigid/nph), neighbor lists built every step
+(BAROSTAT_SCRIPT says why): temperature, pressure, volume, box
 lengths, f_1, ecouple and econserve every 100 steps.
 """
 
@@ -57,6 +59,12 @@ BAROSTATS = {
     # the others (LAMMPS wants rigid fixes before a box-changing one); f_1 rigid/small's bodies' temperature
     "rigid/nph carries rigid/small": ("high rigid/small molecule\nfix 2 low rigid/nph molecule iso 0.05 0.05 2.0",
                                       3000),
+    # fix_modify temp|press: the barostat's pressure (and rigid/nph's barostat temperature) from the named computes
+    "rigid/nph/small temp": ("all rigid/nph/small molecule aniso 0.05 0.05 2.0\ncompute t2 high temp\n"
+                             "fix_modify 1 temp t2", 3000),
+    "rigid/npt/small press": ("all rigid/npt/small molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0\ncompute t2 high temp\n"
+                              "compute p2 all pressure t2\nfix_modify 1 press p2", 3000),
+    "rigid/nph temp": ("all rigid/nph molecule iso 0.05 0.05 2.0\ncompute t2 high temp\nfix_modify 1 temp t2", 3000),
 }
 # LAMMPS puts a body's centre back into the box (its image flags) only when neighbor lists are built, and
 # the virial of its scaled bodies depends on that image (fix rigid's recorder, rigid.py); with check no it

@@ -27,7 +27,8 @@ lj units, 300 otherwise, where that is 0) (rigid/nph).
 P_a is LAMMPS's compute pressure of all particles with their temperature compute: the scalar
 (N_dof k_B T + sum_a W_aa) / (d V) for ``iso`` (and ``couple xyz``), the diagonal (sum m v_a^2 + W_aa)
 / V otherwise, averaged over the coupled axes; W includes the constraint virial of the whole step of
-every rigid fix (LAMMPS wants the others defined before a box-changing fix). P_hydro is the mean target of the barostatted axes, ramped from PSTART to PSTOP over the run.
+every rigid fix (LAMMPS wants the others defined before a box-changing fix). P_hydro is the mean
+target of the barostatted axes, ramped from PSTART to PSTOP over the run.
 
 ``f_ID`` (extensive) and thermo ``ecouple``: LAMMPS's compute_scalar, fix rigid/nvt's (the bodies'
 temperature, the chains' energy) plus sum_a W epsilon_dot_a^2 / (2 d_p) + P_0 V (P_0 the mean of the
@@ -51,6 +52,11 @@ Keywords (LAMMPS's fix rigid page)::
     tparam TCHAIN TITER TORDER       chain lengths, iterations and order 3|5 (10 1 3)
     temp TSTART TSTOP TDAMP          rigid/npt only
 
+``fix_modify ID temp CTEMP`` and ``fix_modify ID press CPRESS`` (LAMMPS's): the pressure the barostat
+reads takes its kinetic part from the temperature compute CTEMP's group (and its temperature), or is
+that of the pressure compute CPRESS with its own temperature compute; rigid/nph's barostat
+temperature is CTEMP's at the run's start.
+
 Every barostatted axis must be periodic; coupled axes need the same settings; no z in 2d.
 
 References: H. Kamberaj, R. J. Low and M. P. Neal, J. Chem. Phys. 122, 224114 (2005); G. J. Martyna,
@@ -72,6 +78,7 @@ from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, maclaurin
 
 Triple = tuple[float, float, float] | None
+NO_CHOICE = np.zeros(0, dtype=np.bool_)
 COUPLED = {"xyz": (0, 1, 2), "xy": (0, 1), "yz": (1, 2), "xz": (0, 2), "none": ()}
 
 
@@ -151,11 +158,15 @@ def barostat_chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
 
 
 @njit(cache=True)
-def kinetic_tensor(v, type_, mass, rmass, nlocal, out):
-    """sum m v_a^2 over the owned particles, per axis (LAMMPS's compute temp vector's diagonal)."""
+def kinetic_tensor(v, type_, mass, rmass, nlocal, chosen, out):
+    """sum m v_a^2 over the owned particles (those ``chosen``, when it is not empty), per axis (LAMMPS's
+    compute temp vector's diagonal)."""
     out[:] = 0.0
     with_rmass = len(rmass) > 0
+    every = len(chosen) == 0
     for i in range(nlocal):
+        if not every and not chosen[i]:
+            continue
         m = rmass[i] if with_rmass else mass[type_[i]]
         for d in range(3):
             out[d] += m * v[i, d] * v[i, d]
@@ -288,6 +299,7 @@ class NoseHooverBarostat:
         self.ke_tensor = np.zeros(3)
         self.akin_t = self.akin_r = 0.0
         self.nf_t = self.nf_r = self.g_f = 0
+        self.temp_id = self.press_id = None     # fix_modify temp / press: computes named instead of group all's
 
     # ---- per run ------------------------------------------------------------------------------------
     def needs(self, step):
@@ -297,6 +309,12 @@ class NoseHooverBarostat:
         super().init_run(sim)
         if self.args.dilate != "all":
             sim.require_group(self.args.dilate)
+        # the computes fix_modify named must still be there (uncompute)
+        if self.temp_id is not None:
+            self._defined(sim, self.temp_id, "temperature")
+        temp_id = self._pressure_temperature(sim)       # checks fix_modify press's compute too
+        if temp_id is not None:
+            self._defined(sim, temp_id, "temperature")
         for fix in sim.fixes.values():
             if any(self.p_flag[d] for d in getattr(fix, "deformed_axes", ())):
                 raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same box length")
@@ -338,7 +356,7 @@ class NoseHooverBarostat:
         if self.tstat:
             self.t_target = sim.ramp(self.args.temp[0], self.args.temp[1])
         elif self.pstat:
-            t0 = observables.temperature(sim, "all")
+            t0 = sim.compute_value(self.temp_id) if self.temp_id is not None else observables.temperature(sim, "all")
             self.t_target = t0 if t0 != 0.0 else (1.0 if sim.units.name == "lj" else 300.0)
         if self.pstat:
             self._pressure(sim)
@@ -463,13 +481,17 @@ class NoseHooverBarostat:
                 constraints += np.asarray(fix.virial(sim), dtype=np.float64)[:3]
         virial = virial + np.asarray(sim.comm.sum(constraints))
         virial = virial + observables.tail_corrections(sim)[1]
+        temp_id = self._pressure_temperature(sim)
+        group = self._defined(sim, temp_id, "temperature").group if temp_id is not None else "all"
         if self.iso:
-            temperature = observables.temperature(sim, "all")
-            dof = observables.degrees_of_freedom(sim, "all")
+            temperature = sim.compute_value(temp_id) if temp_id is not None else observables.temperature(sim, "all")
+            dof = observables.degrees_of_freedom(sim, group)
             self.p_current[:] = ((dof * self.boltz * temperature + virial[:d].sum()) / (d * volume) * self.nktv2p)
             return
         p = sim.particles
-        kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_ARRAY, p.nlocal, self.ke_tensor)
+        chosen = sim.groups.select(sim, group) if group != "all" else NO_CHOICE
+        kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_ARRAY, p.nlocal, chosen,
+                       self.ke_tensor)
         kinetic = np.asarray(sim.comm.sum(self.ke_tensor)) * self.mvv2e
         tensor = (kinetic + virial) / volume * self.nktv2p
         if d == 2:
@@ -478,6 +500,37 @@ class NoseHooverBarostat:
         coupled = list(COUPLED[self.pcouple])
         if coupled:
             self.p_current[coupled] = tensor[coupled].mean()
+
+    def _pressure_temperature(self, sim):
+        """The temperature compute of the pressure the barostat reads: fix_modify press's compute's own,
+        else fix_modify temp's (LAMMPS points its pressure compute at it), else None (group all)."""
+        if self.press_id is not None:
+            return self._defined(sim, self.press_id, "pressure").args.temperature
+        return self.temp_id
+
+    # ---- fix_modify temp CTEMP, press CPRESS (LAMMPS's modify_param) ----------------------------------
+    def modify_param(self, sim, keyword, value):
+        if keyword not in ("temp", "press"):
+            return super().modify_param(sim, keyword, value)
+        style, what = ("temp", "temperature") if keyword == "temp" else ("pressure", "pressure")
+        compute = self._defined(sim, value, what)
+        if compute.name != style:
+            raise ScriptError(f"{keyword}: compute {value} ({compute.name}) is not a {style} compute, so it gives no "
+                              f"{what}")
+        if keyword == "temp":
+            self.temp_id = value
+            if compute.group != "all":
+                sim.warn(f"fix {self.id} {self.name}: temperature compute {value} is of group {compute.group}, not "
+                         "all (LAMMPS's fix_modify warns so too)")
+        else:
+            self.press_id = value
+        return True
+
+    def _defined(self, sim, ident, what):
+        compute = sim.computes.get(ident)
+        if compute is None:
+            raise ScriptError(f"compute {ident} is not defined ({what} of fix {self.id} {self.name})")
+        return compute
 
     def _remap(self, sim):
         """Half the step's box change about the box's centre: body centres (of every rigid fix) and the

@@ -1,6 +1,7 @@
 """fix rigid/npt/small and rigid/nph/small (LAMMPS's fix rigid/nh/small) against LAMMPS (22 Jul 2025) on 27
 small bodies of Lennard-Jones particles (iso; aniso with a ramped target and pchain; x and z coupled with
-a dilate group) and fix rigid/nph's box change carrying rigid/small's bodies, recorded by
+a dilate group), fix rigid/nph's box change carrying rigid/small's bodies, and fix_modify temp and press
+(naming computes of a group of half the bodies) for these and fix rigid/nph, recorded by
 benchmarks/lammps_references/rigid_small.py into tests/data/rigid_small_lj.txt; 1 and 2 ranks; bad input."""
 
 import shutil
@@ -50,7 +51,8 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, name):
     assert worst.max() < 1e-5
 
 
-@pytest.mark.parametrize("name", ["rigid/npt/small iso", "rigid/nph/small aniso", "rigid/nph carries rigid/small"])
+@pytest.mark.parametrize("name", ["rigid/npt/small iso", "rigid/nph/small aniso", "rigid/nph carries rigid/small",
+                                  "rigid/nph/small temp"])
 def test_same_thermo_on_one_and_two_ranks(tmp_path, name):
     """Bodies owned on either rank, crossing the ranks' boundary while the box shrinks: the kinetic
     sums, degrees of freedom and pressure the barostat reads are all ranks', so 2 ranks run as one."""
@@ -99,3 +101,31 @@ def test_non_periodic_axis_is_refused(make_sim, tmp_path):
     sim.command(f"units lj\natom_style molecular\nboundary p p f\nread_data {tmp_path / 'rigid_small_lj.data'}")
     with pytest.raises(ScriptError, match="fix rigid/nph/small cannot change the non-periodic z length"):
         sim.command("fix 1 all rigid/nph/small molecule iso 1 1 1")
+
+
+@pytest.mark.parametrize("lines, message", [
+    ("fix_modify 1 temp nope", r"compute nope is not defined \(temperature of fix 1 rigid/nph/small\)"),
+    ("compute p2 all pressure\nfix_modify 1 temp p2", "temp: compute p2 \\(pressure\\) is not a temp "
+     "compute, so it gives no temperature"),
+    ("compute t2 high temp\nfix_modify 1 press t2", r"press: compute t2 \(temp\) is not a pressure compute"),
+    ("compute t2 high temp\nfix_modify 1 temp t2\nuncompute t2\nrun 1", r"compute t2 is not defined \(temperature of "
+     "fix 1 rigid/nph/small\\)"),
+    ("compute t2 high temp\ncompute p2 all pressure t2\nfix_modify 1 press p2\nuncompute p2\nrun 1",
+     r"compute p2 is not defined \(pressure of fix 1 rigid/nph/small\)"),
+])
+def test_fix_modify_bad_computes_are_one_line(make_sim, tmp_path, lines, message):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    sim = make_sim()
+    sim.command(f"units lj\natom_style molecular\nread_data {tmp_path / 'rigid_small_lj.data'}\n"
+                "group high molecule > 13\nfix 1 all rigid/nph/small molecule iso 0.05 0.05 2.0")
+    with pytest.raises(ScriptError, match=message):
+        sim.command(lines)
+
+
+def test_fix_modify_temp_is_not_taken_by_fixes_without_a_barostat(make_sim, tmp_path):
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    sim = make_sim()
+    sim.command(f"units lj\natom_style molecular\nread_data {tmp_path / 'rigid_small_lj.data'}\n"
+                "fix 1 all rigid/small molecule\ncompute t2 all temp")
+    with pytest.raises(ScriptError, match="unknown keyword temp"):
+        sim.command("fix_modify 1 temp t2")
