@@ -19,8 +19,8 @@ plugins/fix_rigid/tests/data/rigid_small_bodies.txt. BAROSTATS: rigid/npt/small 
 the 27 LJ bodies (iso; aniso with a ramped target and pchain; x and z coupled with a dilate
 group; fix rigid/nph on some bodies, whose box change carries rigid/small's others; fix_modify temp
 and press naming computes of group high, also for fix rigid/nph), neighbor lists built every step
-(BAROSTAT_SCRIPT says why): temperature, pressure, volume, box
-lengths, f_1, ecouple and econserve every 100 steps.
+(BAROSTAT_SCRIPT says why): temperature, pressure, volume, box lengths, f_1, ecouple and econserve every
+100 steps; ``plane rigid/nph/small``: the 2-d plane scene under rigid/nph/small iso, 2000 steps.
 """
 
 import sys
@@ -119,6 +119,11 @@ run 2000
 PLANE = FREE.format(dimension="dimension 2\n", zbox="-0.5 0.5", z=(0, 0, 0), vz=(0, 0, 0, 0),
                     enforce="fix 3 all enforce2d\n")
 FREE = FREE.format(dimension="", zbox="0 20", z=(5, 10, 10.4), vz=(0.3, 0.2, 0.9, 0.02), enforce="")
+# the plane scene under rigid/nph/small iso (x and y): 2-d bodies and the barostat, LAMMPS run with check no
+# (BAROSTAT_SCRIPT says why; pdps runs it without)
+PLANE_NPH = PLANE.format(style="rigid/nph/small", extra=" iso 0.01 0.01 1.0").replace(
+    "thermo_style custom step temp ke press f_1", "thermo_style custom step temp ke press vol f_1 ecouple")
+EVERY_STEP = "comm_modify cutoff 3.0\n"
 # the free scene with the bodies' values from a file (infile): the dimer's centre of mass given outside the
 # box with the image flag that brings it back, the triangle a heavier body with its own inertia tensor,
 # velocity and angular momentum
@@ -194,6 +199,8 @@ def main():
     tables = {style: thermo_lines(run_lammps(lmp, script(style), [data], label=style)) for style in STYLES}
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))
+    tables["plane rigid/nph/small"] = thermo_lines(run_lammps(
+        lmp, PLANE_NPH.replace(EVERY_STEP, EVERY_STEP + "neigh_modify every 1 delay 0 check no\n"), label="plane nph"))
     for style in STYLES:
         extra = STYLES[style]
         tables[f"free {style}"] = thermo_lines(run_lammps(lmp, FREE.format(style=style, extra=extra), label=style))

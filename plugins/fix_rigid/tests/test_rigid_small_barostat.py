@@ -16,7 +16,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
-from rigid_small import BAROSTAT_SCRIPT, BAROSTATS  # noqa: E402
+from rigid_small import BAROSTAT_SCRIPT, BAROSTATS, PLANE_NPH  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 COLUMNS = "step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve".split()
@@ -129,3 +129,47 @@ def test_fix_modify_temp_is_not_taken_by_fixes_without_a_barostat(make_sim, tmp_
                 "fix 1 all rigid/small molecule\ncompute t2 all temp")
     with pytest.raises(ScriptError, match="unknown keyword temp"):
         sim.command("fix_modify 1 temp t2")
+
+
+def test_restart_goes_on_as_a_second_run(tmp_path):
+    """rigid/npt/small run 200 steps, written to a restart file, read back and run 200 more, against
+    the same two runs in one simulation (each run's set-up gives the strain rate its half kick, in
+    LAMMPS as here, so a straight run of 400 is another run): the chains and strain rates come back
+    from the file, the bodies from the particles; the same particles and box to round-off."""
+    from pdps_core.testing import Simulation
+    shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
+    setup = (f"units lj\natom_style molecular\nread_data {tmp_path / 'rigid_small_lj.data'}\npair_style lj/cut 2.5\n"
+             "pair_coeff * * 1.0 1.0\nneigh_modify exclude molecule/intra all\ntimestep 0.001\n"
+             "fix 1 all rigid/npt/small molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0 pchain 3\nrun 200\n")
+    path = tmp_path / "npt.restart"
+    straight = Simulation(screen=False, log=None)
+    straight.command(setup + "run 200")
+    before = Simulation(screen=False, log=None)
+    before.command(setup + f"write_restart {path}")
+    resumed = Simulation(screen=False, log=None)
+    # neighbor exclusions are not in restart files: the script gives them again
+    resumed.command(f"read_restart {path}\nneigh_modify exclude molecule/intra all\nrun 200")
+    a, b = straight.particles, resumed.particles
+    order_a, order_b = np.argsort(a.tag[: a.nlocal]), np.argsort(b.tag[: b.nlocal])
+    assert b.x[: b.nlocal][order_b] == pytest.approx(a.x[: a.nlocal][order_a], abs=1e-9)
+    assert b.v[: b.nlocal][order_b] == pytest.approx(a.v[: a.nlocal][order_a], abs=1e-9)
+    assert resumed.box.length == pytest.approx(straight.box.length, abs=1e-10)
+    fix_a, fix_b = straight.fixes["1"], resumed.fixes["1"]
+    assert np.all(fix_a.epsilon_dot != 0.0)
+    for name in ("epsilon_dot", "eta_dot_b", "eta_dot_t", "eta_r"):
+        assert getattr(fix_b, name) == pytest.approx(getattr(fix_a, name), abs=1e-12)
+
+
+def test_two_dimensional_bodies_match_lammps(pdps_cli, tmp_path):
+    """A dimer and a triangle pushed across the periodic x boundary in 2d (fix enforce2d) under
+    rigid/nph/small iso (x and y coupled; 1 degree of freedom of rotation a body): temperature,
+    kinetic energy, pressure, area, f_1 and ecouple as LAMMPS's over 2000 steps."""
+    done = pdps_cli(PLANE_NPH, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    ours = np.array(thermo_rows(done.stdout))
+    lammps = read_blocks(DATA / "rigid_small_lj.txt")["plane rigid/nph/small"]
+    assert ours.shape == lammps.shape == (11, 7)
+    assert lammps[-1, 4] < 0.8 * lammps[0, 4]        # the box did shrink
+    worst = (np.abs(ours[:, 1:] - lammps[:, 1:]) / np.abs(lammps[:, 1:]).max(axis=0)).max()
+    print(f"plane rigid/nph/small: largest difference from LAMMPS, of each column's largest value: {worst:.1e}")
+    assert worst < 1e-5
