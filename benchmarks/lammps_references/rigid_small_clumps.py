@@ -24,31 +24,8 @@ from lammps_run import run_lammps_file  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "plugins" / "fix_rigid" / "tests" / "data" / "rigid_small_clumps.txt"
 STYLES = ("rigid/small", "rigid/nve/small")
-DATA = """two clumps of spheres with spin (atom_style hybrid sphere molecular)
-
-5 atoms
-1 atom types
-
-0 3 xlo xhi
-0 3 ylo yhi
-0 4 zlo zhi
-
-Atoms # hybrid
-
-1 1 0.6 0.5 0.6 1.0 1.0 1 0 0 0
-2 1 1.2 0.5 0.6 1.0 1.0 1 0 0 0
-3 1 1.5 1.5 1.8 1.0 1.0 2 0 0 0
-4 1 2.1 1.5 1.8 1.0 1.0 2 0 0 0
-5 1 1.8 2.0 1.8 0.8 1.0 2 0 0 0
-
-Velocities
-
-1 0 0 0 0 0 0
-2 0 0 0 0 0 0
-3 0.1 0 -0.2 0 0 1
-4 0.1 0 -0.2 0 0 1
-5 0.1 0 -0.2 0 0 1
-"""
+# the data file (spins in its Velocities); the fuzz suite's clumps seed reads it too
+DATA = (ROOT / "plugins" / "fix_rigid" / "tests" / "data" / "clumps.data").read_text()
 SCRIPT = """atom_style hybrid sphere molecular
 boundary p p f
 comm_modify vel yes

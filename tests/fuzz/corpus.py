@@ -190,31 +190,8 @@ Velocities
 1 0.1 0.0 0.0
 4 -0.2 0.1 0.0
 """
-CLUMPS = """two clumps of spheres with spin (atom_style hybrid sphere molecular)
-
-5 atoms
-1 atom types
-
-0 3 xlo xhi
-0 3 ylo yhi
-0 4 zlo zhi
-
-Atoms # hybrid
-
-1 1 0.6 0.5 0.6 1.0 1.0 1 0 0 0
-2 1 1.2 0.5 0.6 1.0 1.0 1 0 0 0
-3 1 1.5 1.5 1.8 1.0 1.0 2 0 0 0
-4 1 2.1 1.5 1.8 1.0 1.0 2 0 0 0
-5 1 1.8 2.0 1.8 0.8 1.0 2 0 0 0
-
-Velocities
-
-1 0 0 0 0 0 0
-2 0 0 0 0 0 0
-3 0.1 0 -0.2 0 0 1
-4 0.1 0 -0.2 0 0 1
-5 0.1 0 -0.2 0 0 1
-"""
+# two clumps of spheres with spin (atom_style hybrid sphere molecular), as the rigid/small clumps test has them
+CLUMPS = (PROJECT / "plugins" / "fix_rigid" / "tests" / "data" / "clumps.data").read_text()
 
 SPHERES = """spheres in a box with a fixed floor
 

@@ -14,7 +14,7 @@ each body on the rank owning it, whose sums are added over the ranks.
 
 import numpy as np
 
-from pdps_core.api import ScriptError
+from pdps_core.api import Compute, ScriptError, StyleArgs, param
 
 from .rigid import FixRigid
 from .rigid_small import FixRigidSmall
@@ -57,3 +57,19 @@ def rotational(sim, fix):
         total += float(np.sum(np.divide(projected * projected, moment, out=np.zeros(n), where=moment > 0.0)))
     local = 0.5 * total
     return sim.comm.sum(local) if spread else local
+
+
+class BodyEnergyCompute(Compute):
+    """A global scalar, extensive, of the bodies of fix FIX_ID: ``energy(sim, fix)`` (mass
+    velocity^2) times mvv2e. ke/rigid and erotate/rigid name their energy."""
+    extensive = True
+    energy = None
+
+    class Args(StyleArgs):
+        fix_id: str = param()
+
+    def init_run(self, sim):
+        rigid_fix(sim, self, self.args.fix_id)
+
+    def scalar(self, sim):
+        return type(self).energy(sim, rigid_fix(sim, self, self.args.fix_id)) * sim.units.mvv2e

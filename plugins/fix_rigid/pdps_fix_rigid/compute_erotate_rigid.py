@@ -22,21 +22,10 @@ Example::
     thermo_style custom step ke c_rot
 """
 
-from pdps_core.api import Compute, StyleArgs, param
-
-from .body_energies import rigid_fix, rotational
+from .body_energies import BodyEnergyCompute, rotational
 
 
-class ComputeERotateRigid(Compute):
+class ComputeERotateRigid(BodyEnergyCompute):
     name = "erotate/rigid"
     usage = "compute ID GROUP erotate/rigid FIX_ID"
-    extensive = True
-
-    class Args(StyleArgs):
-        fix_id: str = param()
-
-    def init_run(self, sim):
-        rigid_fix(sim, self, self.args.fix_id)
-
-    def scalar(self, sim):
-        return rotational(sim, rigid_fix(sim, self, self.args.fix_id)) * sim.units.mvv2e
+    energy = staticmethod(rotational)

@@ -21,21 +21,10 @@ Example::
     thermo_style custom step c_trans c_rot
 """
 
-from pdps_core.api import Compute, StyleArgs, param
-
-from .body_energies import rigid_fix, translational
+from .body_energies import BodyEnergyCompute, translational
 
 
-class ComputeKERigid(Compute):
+class ComputeKERigid(BodyEnergyCompute):
     name = "ke/rigid"
     usage = "compute ID GROUP ke/rigid FIX_ID"
-    extensive = True
-
-    class Args(StyleArgs):
-        fix_id: str = param()
-
-    def init_run(self, sim):
-        rigid_fix(sim, self, self.args.fix_id)
-
-    def scalar(self, sim):
-        return translational(sim, rigid_fix(sim, self, self.args.fix_id)) * sim.units.mvv2e
+    energy = staticmethod(translational)
