@@ -73,12 +73,11 @@ from numba import njit
 from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 
 from .quaternion import axes_from_quaternion, no_squish_rotate
-from .rigid import EPSILON, MOL_REFUSED, NO_ARRAY, NOT_YET, FixRigid
+from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, maclaurin
 
 Triple = tuple[float, float, float] | None
-NO_CHOICE = np.zeros(0, dtype=np.bool_)
 COUPLED = {"xyz": (0, 1, 2), "xy": (0, 1), "yz": (1, 2), "xz": (0, 2), "none": ()}
 
 
@@ -155,21 +154,6 @@ def barostat_chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
                 eta_dot[k] = eta_dot[k] * (s * s) + wdti2[j] * f_eta[k] * s * maclaurin(x)
                 f_eta[k + 1] = (q[k] * eta_dot[k] * eta_dot[k] - kt) / q[k + 1]
             eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
-
-
-@njit(cache=True)
-def kinetic_tensor(v, type_, mass, rmass, nlocal, chosen, out):
-    """sum m v_a^2 over the owned particles (those ``chosen``, when it is not empty), per axis (LAMMPS's
-    compute temp vector's diagonal)."""
-    out[:] = 0.0
-    with_rmass = len(rmass) > 0
-    every = len(chosen) == 0
-    for i in range(nlocal):
-        if not every and not chosen[i]:
-            continue
-        m = rmass[i] if with_rmass else mass[type_[i]]
-        for d in range(3):
-            out[d] += m * v[i, d] * v[i, d]
 
 
 BAROSTAT_WORDS = ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")
@@ -296,7 +280,6 @@ class NoseHooverBarostat:
         self.vol0 = 0.0
         self.t_target = a.temp[0] if self.tstat else 1.0
         self.scale_t, self.drift = np.ones(3), np.ones(3)
-        self.ke_tensor = np.zeros(3)
         self.akin_t = self.akin_r = 0.0
         self.nf_t = self.nf_r = self.g_f = 0
         self.temp_id = self.press_id = None     # fix_modify temp / press: computes named instead of group all's
@@ -472,28 +455,24 @@ class NoseHooverBarostat:
         constraint virial of every fix of rigid bodies."""
         d = sim.dimension
         volume = float(sim.box.volume)
-        virial = np.asarray(sim.comm.sum(np.asarray(sim.virial[:3], dtype=np.float64)))
         # the constraint virials of this fix and of the rigid fixes before it, complete after their
         # final_integrate, join the others' only after every fix's (LAMMPS's compute pressure has them)
         constraints = np.zeros(3)
         for fix in sim.fixes.values():
             if fix.thermo_virial and fix.virial_after == "final_integrate":
                 constraints += np.asarray(fix.virial(sim), dtype=np.float64)[:3]
-        virial = virial + np.asarray(sim.comm.sum(constraints))
-        virial = virial + observables.tail_corrections(sim)[1]
+        constraints = np.asarray(sim.comm.sum(constraints))
         temp_id = self._pressure_temperature(sim)
         group = self._defined(sim, temp_id, "temperature").group if temp_id is not None else "all"
         if self.iso:
+            virial = np.asarray(sim.comm.sum(np.asarray(sim.virial[:3], dtype=np.float64))) + constraints
+            virial = virial + observables.tail_corrections(sim)[1]
             temperature = sim.compute_value(temp_id) if temp_id is not None else observables.temperature(sim, "all")
             dof = observables.degrees_of_freedom(sim, group)
             self.p_current[:] = ((dof * self.boltz * temperature + virial[:d].sum()) / (d * volume) * self.nktv2p)
             return
-        p = sim.particles
-        chosen = sim.groups.select(sim, group) if group != "all" else NO_CHOICE
-        kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_ARRAY, p.nlocal, chosen,
-                       self.ke_tensor)
-        kinetic = np.asarray(sim.comm.sum(self.ke_tensor)) * self.mvv2e
-        tensor = (kinetic + virial) / volume * self.nktv2p
+        # the kinetic tensor of the temperature's group and the forces' virial (core), then the constraints'
+        tensor = observables.pressure_tensor(sim, group)[:3] + constraints / volume * self.nktv2p
         if d == 2:
             tensor[2] = 0.0
         self.p_current[:] = tensor
