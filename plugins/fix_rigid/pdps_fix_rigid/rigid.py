@@ -74,7 +74,9 @@ Syntax::
 
   u uniform in (0, 1) from the counter-based generator keyed by (SEED, step, body number): the same
   on any number of ranks, not LAMMPS's Marsaglia numbers (its drag alone, T = 0, is LAMMPS's to
-  round-off). Forces are divided by ftm2v as LAMMPS's; in 2d only the in-plane force and the torque
+  round-off). The rotational u' - 1/2 are a box-frame uniform vector projected on the principal
+  axes: the covariance of LAMMPS's draws, and a torque sqrt(I) (u - 1/2) that no choice of axes
+  (their signs, or any axes of equal moments, which round-off decides) changes. Forces are divided by ftm2v as LAMMPS's; in 2d only the in-plane force and the torque
   about z.
 - ``gravity FIX_ID``: each body's centre of mass feels M g, g the acceleration of fix gravity FIX_ID
   (LAMMPS's): for bodies whose mass comes from an infile, with that fix's group holding none of their
@@ -175,9 +177,9 @@ def langevin_body_forces(vcm, omega, ex, ey, ez, inertia, masstotal, key, step, 
                          mvv2e, ftm2v, planar, langextra):
     """LAMMPS's Langevin force and torque on each body (rows: fx fy fz tx ty tz): -M V / Tperiod plus
     sqrt(24 k_B T M / (Tperiod dt)) (u - 1/2) on the centre of mass, and about each principal axis k
-    -I_k w_k / Tperiod plus sqrt(24 k_B T I_k / (Tperiod dt)) (u - 1/2), w_k the angular velocity
-    in the body frame; u uniform in (0, 1), keyed by (seed, step, body number). In 2d only fx, fy
-    and tz."""
+    -I_k w_k / Tperiod plus sqrt(24 k_B T I_k / (Tperiod dt)) (u - 1/2)_k, w_k the angular velocity
+    in the body frame, (u - 1/2)_k the projection on axis k of a box-frame vector; u uniform in (0, 1),
+    keyed by (seed, step, body number). In 2d only fx, fy and tz."""
     for b in range(vcm.shape[0]):
         langevin_one_body(b, b + 1, vcm, omega, ex, ey, ez, inertia, masstotal, key, step, t_target, t_period, dt,
                           boltz, mvv2e, ftm2v, planar, langextra)
@@ -204,13 +206,20 @@ def langevin_one_body(b, body_key, vcm, omega, ex, ey, ez, inertia, masstotal, k
     langextra[b, 0] = drag * masstotal[b] * vcm[b, 0] + root * noise * (u0 - 0.5)
     langextra[b, 1] = drag * masstotal[b] * vcm[b, 1] + root * noise * (u1 - 0.5)
     langextra[b, 2] = drag * masstotal[b] * vcm[b, 2] + root * noise * (u2 - 0.5)
-    r0, r1, r2, _ = particle_uniforms(key, step, body_key, ROTATION_STREAM)
+    # the rotational noise is drawn in the box frame and projected on the principal axes: the same
+    # covariance (k_B T I / Tperiod dt) as LAMMPS's draws about each axis, but the torque it gives,
+    # sqrt(I) u, is one whatever sign or (for equal moments) choice of axes round-off makes
+    u0, u1, u2, _ = particle_uniforms(key, step, body_key, ROTATION_STREAM)
+    n0, n1, n2 = u0 - 0.5, u1 - 0.5, u2 - 0.5
+    r0 = ex[b, 0] * n0 + ex[b, 1] * n1 + ex[b, 2] * n2
+    r1 = ey[b, 0] * n0 + ey[b, 1] * n1 + ey[b, 2] * n2
+    r2 = ez[b, 0] * n0 + ez[b, 1] * n1 + ez[b, 2] * n2
     w0 = ex[b, 0] * omega[b, 0] + ex[b, 1] * omega[b, 1] + ex[b, 2] * omega[b, 2]
     w1 = ey[b, 0] * omega[b, 0] + ey[b, 1] * omega[b, 1] + ey[b, 2] * omega[b, 2]
     w2 = ez[b, 0] * omega[b, 0] + ez[b, 1] * omega[b, 1] + ez[b, 2] * omega[b, 2]
-    t0 = inertia[b, 0] * drag * w0 + math.sqrt(inertia[b, 0]) * noise * (r0 - 0.5)
-    t1 = inertia[b, 1] * drag * w1 + math.sqrt(inertia[b, 1]) * noise * (r1 - 0.5)
-    t2 = inertia[b, 2] * drag * w2 + math.sqrt(inertia[b, 2]) * noise * (r2 - 0.5)
+    t0 = inertia[b, 0] * drag * w0 + math.sqrt(inertia[b, 0]) * noise * r0
+    t1 = inertia[b, 1] * drag * w1 + math.sqrt(inertia[b, 1]) * noise * r1
+    t2 = inertia[b, 2] * drag * w2 + math.sqrt(inertia[b, 2]) * noise * r2
     for d in range(3):
         langextra[b, 3 + d] = ex[b, d] * t0 + ey[b, d] * t1 + ez[b, d] * t2
     if planar:
