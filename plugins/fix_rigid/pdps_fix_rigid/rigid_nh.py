@@ -75,7 +75,7 @@ from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 from .quaternion import axes_from_quaternion, no_squish_rotate
 from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
-from .rigid_nvt import CHAIN_LIMIT, chain_step, maclaurin
+from .rigid_nvt import CHAIN_LIMIT, chain_step, check_tparam, maclaurin
 
 Triple = tuple[float, float, float] | None
 COUPLED = {"xyz": (0, 1, 2), "xy": (0, 1), "yz": (1, 2), "xz": (0, 2), "none": ()}
@@ -206,10 +206,7 @@ class NoseHooverBarostat:
     @classmethod
     def parse(cls, words):
         args = super().parse(words)
-        chain, titer, order = args.tparam
-        if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
-            raise ScriptError(f"tparam: TCHAIN and TITER must be from 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
-                              f"(got {chain} {titer} {order})")
+        check_tparam(args.tparam)
         if not 1 <= args.pchain <= CHAIN_LIMIT:
             raise ScriptError(f"pchain: the barostat chain needs 1 to {CHAIN_LIMIT} thermostats (got {args.pchain})")
         if args.temp is not None:

@@ -122,6 +122,34 @@ def chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
             eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
 
 
+def check_tparam(tparam):
+    """tparam TCHAIN TITER TORDER as LAMMPS takes them; longer chains or more iterations than
+    CHAIN_LIMIT buy nothing and would exhaust memory or time."""
+    chain, titer, order = tparam
+    if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
+        raise ScriptError(f"tparam: TCHAIN and TITER must be from 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
+                          f"(got {chain} {titer} {order})")
+
+
+def check_thermostat(name, args):
+    """The thermostat of an nvt form: temp given and positive, tparam within its limits."""
+    if args.temp is None:
+        raise ScriptError(f"fix {name} needs temp TSTART TSTOP TDAMP")
+    start, stop, damp = args.temp
+    if start <= 0 or stop <= 0 or damp <= 0:
+        raise ScriptError(f"temp: TSTART, TSTOP and TDAMP must be > 0 (got {start:g} {stop:g} {damp:g})")
+    check_tparam(args.tparam)
+
+
+def start_chains(fix, args):
+    """The translational and rotational Nose-Hoover chains of a thermostatted fix, at rest."""
+    chain = args.tparam[0]
+    fix.eta_t, fix.eta_r = np.zeros(chain), np.zeros(chain)
+    fix.eta_dot_t, fix.eta_dot_r = np.zeros(chain), np.zeros(chain)
+    fix.f_eta_t, fix.f_eta_r = np.zeros(chain), np.zeros(chain)
+    fix.q_t, fix.q_r = np.zeros(chain), np.zeros(chain)
+    fix.t_target = args.temp[0]
+
 class FixRigidNVT(FixRigidNVE):
     name = "rigid/nvt"
     usage = ("fix ID GROUP rigid/nvt single|molecule|group N G1 .. GN temp TSTART TSTOP TDAMP "
@@ -139,25 +167,12 @@ class FixRigidNVT(FixRigidNVE):
     @classmethod
     def parse(cls, words):
         args = super().parse(words)
-        if args.temp is None:
-            raise ScriptError(f"fix {cls.name} needs temp TSTART TSTOP TDAMP")
-        start, stop, damp = args.temp
-        if start <= 0 or stop <= 0 or damp <= 0:
-            raise ScriptError(f"temp: TSTART, TSTOP and TDAMP must be > 0 (got {start:g} {stop:g} {damp:g})")
-        chain, titer, order = args.tparam
-        if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
-            raise ScriptError(f"tparam: TCHAIN and TITER must be from 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
-                              f"(got {chain} {titer} {order})")
+        check_thermostat(cls.name, args)
         return args
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        chain = args.tparam[0]
-        self.eta_t, self.eta_r = np.zeros(chain), np.zeros(chain)
-        self.eta_dot_t, self.eta_dot_r = np.zeros(chain), np.zeros(chain)
-        self.f_eta_t, self.f_eta_r = np.zeros(chain), np.zeros(chain)
-        self.q_t, self.q_r = np.zeros(chain), np.zeros(chain)
-        self.t_target = args.temp[0]
+        start_chains(self, args)
 
     def init_run(self, sim):
         super().init_run(sim)

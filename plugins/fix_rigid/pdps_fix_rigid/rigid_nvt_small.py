@@ -37,14 +37,12 @@ import math
 
 import numpy as np
 
-from pdps_core.api import ScriptError, keyword
+from pdps_core.api import keyword
 
 from .rigid import EPSILON
 from .rigid_nve_small import FixRigidNVESmall
-from .rigid_nvt import FixRigidNVT, chain_step, nvt_final, nvt_initial
+from .rigid_nvt import FixRigidNVT, chain_step, check_thermostat, nvt_final, nvt_initial, start_chains
 from .rigid_small import BAROSTAT_REFUSED, NOT_YET
-
-CHAIN_LIMIT = 1000
 
 
 class FixRigidNVTSmall(FixRigidNVESmall):
@@ -63,26 +61,12 @@ class FixRigidNVTSmall(FixRigidNVESmall):
     @classmethod
     def parse(cls, words):
         args = super().parse(words)
-        if args.temp is None:
-            raise ScriptError(f"fix {cls.name} needs temp TSTART TSTOP TDAMP")
-        start, stop, damp = args.temp
-        if start <= 0 or stop <= 0 or damp <= 0:
-            raise ScriptError(f"temp: TSTART, TSTOP and TDAMP must be > 0 (got {start:g} {stop:g} {damp:g})")
-        chain, titer, order = args.tparam
-        # longer chains or more iterations than CHAIN_LIMIT buy nothing and would exhaust memory or time
-        if not (1 <= chain <= CHAIN_LIMIT and 1 <= titer <= CHAIN_LIMIT) or order not in (3, 5):
-            raise ScriptError(f"tparam: TCHAIN and TITER must be 1 to {CHAIN_LIMIT} and TORDER 3 or 5 "
-                              f"(got {chain} {titer} {order})")
+        check_thermostat(cls.name, args)
         return args
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        chain = args.tparam[0]
-        self.eta_t, self.eta_r = np.zeros(chain), np.zeros(chain)
-        self.eta_dot_t, self.eta_dot_r = np.zeros(chain), np.zeros(chain)
-        self.f_eta_t, self.f_eta_r = np.zeros(chain), np.zeros(chain)
-        self.q_t, self.q_r = np.zeros(chain), np.zeros(chain)
-        self.t_target = args.temp[0]
+        start_chains(self, args)
         self.nf_t = self.nf_r = 0
         self.akin = np.zeros(2)
 

@@ -122,9 +122,9 @@ def test_bodies_straddling_the_box_are_whole_and_owned_once(tmp_path):
     ("fix 1 all rigid/small molecule reinit maybe", "reinit"),
     ("fix 1 all rigid/nvt/small molecule", "fix rigid/nvt/small needs temp TSTART TSTOP TDAMP"),
     ("fix 1 all rigid/nvt/small molecule temp 1 1 0", "temp: TSTART, TSTOP and TDAMP must be > 0"),
-    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 1 4", "tparam: TCHAIN and TITER must be 1 to 1000"),
-    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 9223372036854775807 1 3", "TCHAIN and TITER must be 1 to"),
-    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 100000000 3", "TCHAIN and TITER must be 1 to 1000"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 1 4", "tparam: TCHAIN and TITER must be from 1 to 1000"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 9223372036854775807 1 3", "TCHAIN and TITER must be from 1 to"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 tparam 3 100000000 3", "TCHAIN and TITER must be from 1 to 1000"),
     ("fix 1 all rigid/nvt/small molecule temp 1 1 1 iso 1 1 1", "keyword iso of fix rigid/nvt/small: only fix "
      "rigid/nph/small and rigid/npt/small take it"),
     ("fix 1 all rigid/small molecule temp 1 1 1", "keyword temp of fix rigid/small: only fix rigid/nvt/small and "
