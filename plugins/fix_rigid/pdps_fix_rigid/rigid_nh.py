@@ -72,9 +72,8 @@ from numba import njit
 
 from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 
-from .quaternion import axes_from_quaternion, no_squish_rotate
 from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
-from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation
+from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation, free_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, check_tparam, maclaurin
 
 Triple = tuple[float, float, float] | None
@@ -100,13 +99,7 @@ def nh_initial(xcm, vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, i
         _kick_rotation(b, torque, quat, conjqm, ex, ey, ez, tflag, 2.0 * dtf)
         for c in range(4):
             conjqm[b, c] *= scale_r
-        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(1, conjqm, quat, inertia, b, dtv)
-        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
-        axes_from_quaternion(quat, b, ex, ey, ez)
-        _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
+        free_rotation(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega, dtv, dtq)
         akin_r += angmom[b, 0] * omega[b, 0] + angmom[b, 1] * omega[b, 1] + angmom[b, 2] * omega[b, 2]
     return akin_t, akin_r
 

@@ -61,6 +61,19 @@ def _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega):
     omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
 
 
+@njit(cache=True, inline="always")
+def free_rotation(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega, dtv, dtq):
+    """Body b's free rotation over a step (NO_SQUISH: axes 3, 2 for dt/2, 1 for dt, 2, 3 for dt/2),
+    then its axes, angular momentum and angular velocity from (p, q)."""
+    no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+    no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+    no_squish_rotate(1, conjqm, quat, inertia, b, dtv)
+    no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
+    no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
+    axes_from_quaternion(quat, b, ex, ey, ez)
+    _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
+
+
 @njit(cache=True)
 def no_squish_initial(xcm, vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, inertia, masstotal,
                       fflag, tflag, dtv, dtf, dtq):
@@ -70,13 +83,7 @@ def no_squish_initial(xcm, vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey
             vcm[b, d] += dtfm * fcm[b, d] * fflag[b, d]
             xcm[b, d] += dtv * vcm[b, d]
         _kick_rotation(b, torque, quat, conjqm, ex, ey, ez, tflag, 2.0 * dtf)
-        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(1, conjqm, quat, inertia, b, dtv)
-        no_squish_rotate(2, conjqm, quat, inertia, b, dtq)
-        no_squish_rotate(3, conjqm, quat, inertia, b, dtq)
-        axes_from_quaternion(quat, b, ex, ey, ez)
-        _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
+        free_rotation(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega, dtv, dtq)
 
 
 @njit(cache=True)
