@@ -42,7 +42,7 @@ def test_remove_leaves_lammps_order_and_every_array_consistent():
         assert np.array_equal(p.x, x[kept])
 
 
-def test_ghost_rows_carry_neighbour_values_and_zero_the_summed_ones():
+def test_ghost_blocks_carry_neighbour_values_and_zero_the_summed_ones():
     p = Particles()
     p.request("radius")
     p.request("torque")
@@ -54,14 +54,20 @@ def test_ghost_rows_carry_neighbour_values_and_zero_the_summed_ones():
     p.image[:] = 2
     # x, v, tag, type, mask, radius: 3 + 3 + 1 + 1 + 1 + 1 values; f, torque and image stay home
     assert p.row_width(ghost=True) == 10
-    shift = np.array([[10.0, 0.0, 0.0], [0.0, -10.0, 0.0]])
-    rows = p.pack(np.array([3, 1]), ghost=True, shift=shift)
+    # three ghosts: one for rank 0, none for rank 1, two for rank 2
+    shift = np.array([[10.0, 0.0, 0.0], [0.0, -10.0, 0.0], [0.0, 0.0, 10.0]])
+    counts = np.array([1, 0, 2])
+    values = np.full(3 * 10, np.nan)
+    p.pack_ghosts(np.array([3, 1, 0]), counts, values, shift)
+    # rank 2's share: both x rows, then both v rows, then tags, types, masks, radii
+    assert values[10:16].tolist() == [3.0, -6.0, 5.0, 0.0, 1.0, 12.0]
+    assert values[22:].tolist() == [2.0, 1.0, 2.0, 1.0, 5.0, 3.0, 0.2, 0.1]
     p.f[:] = 4.0
-    p.set_ghost_rows(rows)
-    assert p.nghost == 2
-    assert np.array_equal(p.x[4:], [[19.0, 10.0, 11.0], [3.0, -6.0, 5.0]])
-    assert p.tag[4:].tolist() == [4, 2] and p.type[4:].tolist() == [2, 2]
-    assert p.mask[4:].tolist() == [17, 5] and p.radius[4:].tolist() == [0.4, 0.2]
+    p.set_ghost_blocks(values, counts)
+    assert p.nghost == 3
+    assert np.array_equal(p.x[4:], [[19.0, 10.0, 11.0], [3.0, -6.0, 5.0], [0.0, 1.0, 12.0]])
+    assert p.tag[4:].tolist() == [4, 2, 1] and p.type[4:].tolist() == [2, 2, 1]
+    assert p.mask[4:].tolist() == [17, 5, 3] and p.radius[4:].tolist() == [0.4, 0.2, 0.1]
     assert not p.f[4:].any() and not p.torque[4:].any() and not p.image[4:].any()
     # a migrating particle takes everything with it
     p.append_owned(p.pack(np.array([2])))

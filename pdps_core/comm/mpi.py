@@ -26,57 +26,65 @@ from .grid import Decomposition, choose_grid, rank_of_position
 
 
 @njit(cache=True)
-def _near_faces(x, nlocal, lo, hi, reach, two_d, near):
+def _near_faces(x, nlocal, lo, hi, reach, dims, near):
     """Owned particles within ``reach`` of a face of this rank's sub-domain [lo, hi) (or outside it),
     written into ``near``; returns how many. Only these can be anyone's ghost: a particle farther
-    from every face is farther than ``reach`` from every other sub-domain and periodic image."""
+    from every face is farther than ``reach`` from every other sub-domain and periodic image.
+    Branch-free: every index is written, the count advances only for a near one."""
     m = 0
-    dims = 2 if two_d else 3
     for i in range(nlocal):
+        inner = np.inf
         for d in range(dims):
-            if x[i, d] - lo[d] <= reach or hi[d] - x[i, d] <= reach:
-                near[m] = i
-                m += 1
-                break
+            inner = min(inner, min(x[i, d] - lo[d], hi[d] - x[i, d]))
+        near[m] = i
+        m += inner <= reach
     return m
 
 
 @njit(cache=True)
-def ghost_sends(x, candidates, sublo, subhi, cutghost, length, periodic, me, two_d, ranks, index, shift):
+def _image_range(x, lo, hi, length, periodic, few):
+    """(first, last) k with lo <= x + k length < hi along one axis (first > last: none). ``few``:
+    the grown sub-domain is at most three box lengths wide and x is in the box, so k is -1, 0 or 1
+    and comparisons decide it; otherwise (a box thinner than the ghost cutoff) by division."""
+    if not periodic:
+        return (0, 0) if lo <= x < hi else (1, 0)
+    if few:
+        first = -1 if x - length >= lo else (0 if x >= lo else 1)
+        last = 1 if x + length < hi else (0 if x < hi else -1)
+        return first, last
+    return math.ceil((lo - x) / length), math.ceil((hi - x) / length) - 1
+
+
+@njit(cache=True)
+def ghost_sends(x, candidates, sublo, subhi, cutghost, length, periodic, me, two_d, few, ranks, index,
+                shift, counts):
     """(rank, particle, image shift) of every ghost this rank must send, in rank order: particle i
     (of ``candidates``), displaced by a whole number of box lengths along periodic axes, inside rank
-    r's sub-domain grown by cutghost. Written into the buffers ``ranks, index, shift``; returns how
-    many, or -1 when the buffers are too small."""
+    r's sub-domain grown by cutghost. Written into the buffers ``ranks, index, shift``, with the
+    count for every rank in ``counts``; returns how many, or -1 when the buffers are too small."""
     capacity = len(ranks)
-    k_lo = np.zeros(3, dtype=np.int64)
-    k_hi = np.zeros(3, dtype=np.int64)
     m = 0
     for r in range(sublo.shape[0]):
+        counts[r] = 0
         for c in range(len(candidates)):
             i = candidates[c]
-            empty = False
-            for d in range(3):
-                lo = sublo[r, d] - cutghost
-                hi = subhi[r, d] + cutghost
-                if two_d and d == 2:
-                    k_lo[d] = 0
-                    k_hi[d] = 0
-                elif periodic[d]:
-                    # images x + k L with lo <= x + k L < hi
-                    k_lo[d] = math.ceil((lo - x[i, d]) / length[d])
-                    k_hi[d] = math.ceil((hi - x[i, d]) / length[d]) - 1
-                    if k_lo[d] > k_hi[d]:
-                        empty = True
-                else:
-                    k_lo[d] = 0
-                    k_hi[d] = 0
-                    if not (lo <= x[i, d] < hi):
-                        empty = True
-            if empty:
+            kx0, kx1 = _image_range(x[i, 0], sublo[r, 0] - cutghost, subhi[r, 0] + cutghost, length[0],
+                                    periodic[0], few[0])
+            if kx0 > kx1:
                 continue
-            for kx in range(k_lo[0], k_hi[0] + 1):
-                for ky in range(k_lo[1], k_hi[1] + 1):
-                    for kz in range(k_lo[2], k_hi[2] + 1):
+            ky0, ky1 = _image_range(x[i, 1], sublo[r, 1] - cutghost, subhi[r, 1] + cutghost, length[1],
+                                    periodic[1], few[1])
+            if ky0 > ky1:
+                continue
+            kz0, kz1 = 0, 0
+            if not two_d:
+                kz0, kz1 = _image_range(x[i, 2], sublo[r, 2] - cutghost, subhi[r, 2] + cutghost,
+                                        length[2], periodic[2], few[2])
+                if kz0 > kz1:
+                    continue
+            for kx in range(kx0, kx1 + 1):
+                for ky in range(ky0, ky1 + 1):
+                    for kz in range(kz0, kz1 + 1):
                         if r == me and kx == 0 and ky == 0 and kz == 0:
                             continue
                         if m >= capacity:
@@ -87,25 +95,41 @@ def ghost_sends(x, candidates, sublo, subhi, cutghost, length, periodic, me, two
                         shift[m, 1] = ky * length[1]
                         shift[m, 2] = kz * length[2]
                         m += 1
+                        counts[r] += 1
     return m
 
 
 @njit(cache=True)
-def _leavers(x, nlocal, lo, length, grid, me, gone, index, dest):
+def _leavers(x, nlocal, lo, length, grid, me, gone, dest, counts, start, order):
     """Owned particles now in another rank's sub-domain (positions wrapped into the box): flagged in
-    ``gone``, listed with their new owner in ``index, dest``; returns how many."""
+    ``gone``, counted by new owner in ``counts`` and listed in ``order`` grouped by new owner (in
+    particle order within each group); returns how many. ``dest`` (twice the particles) and
+    ``start`` (one per rank) are scratch."""
+    counts[:] = 0
     m = 0
     for i in range(nlocal):
         rank = rank_of_position(x, i, lo, length, grid)
-        if rank == me:
-            gone[i] = 0
-        else:
-            gone[i] = 1
-            index[m] = i
+        gone[i] = rank != me
+        if rank != me:
+            order[m] = i
             dest[m] = rank
+            counts[rank] += 1
             m += 1
+    # a stable counting sort of the leavers by destination, through ``dest`` as scratch
+    if m:
+        total = 0
+        for r in range(len(counts)):
+            start[r] = total
+            total += counts[r]
+        for k in range(m):
+            rank = dest[k]
+            dest[k] = start[rank]
+            start[rank] += 1
+        placed = dest[m:2 * m]
+        for k in range(m):
+            placed[dest[k]] = order[k]
+        order[:m] = placed
     return m
-
 
 
 _NO_SHIFT = np.zeros((0, 3))
@@ -139,12 +163,11 @@ class MPIComm:
         self.nprocs = self.world.Get_size()
         self.decomposition = None
         self.grid_request = (None, None, None)
-        self._send = []          # per destination rank: (local indices, shift rows)
         self._send_index = np.zeros(0, dtype=np.int64)
         self._send_shift = np.zeros((0, 3))
         self._send_counts = np.zeros(self.nprocs, dtype=np.int64)
         self._recv_counts = np.zeros(self.nprocs, dtype=np.int64)
-        self._self_ghost = np.zeros(0, dtype=np.int64)
+        self._bounds = None         # borders' geometry: (its key, what _geometry gives)
         self._layouts = {}          # ghost row layouts by width, for the current ghosts
         self._owners = None
         self._send_buffer = self._recv_buffer = self._back_buffer = np.zeros(0)
@@ -200,7 +223,7 @@ class MPIComm:
         if bad < 0:
             try:
                 gone = box.wrap(x, p.image, p.tag, step, box.lost)
-                if gone.any():
+                if gone is not None:
                     p.keep(np.flatnonzero(~gone))
             except SimulationError as exc:
                 message, count = exc.template, exc.count
@@ -208,21 +231,20 @@ class MPIComm:
         if len(self._gone) < n:
             size = n + n // 4 + 16
             self._gone = np.empty(size, dtype=np.uint8)
-            self._leave_index, self._leave_dest = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
+            self._leave_index, self._leave_dest = np.empty(size, dtype=np.int64), np.empty(2 * size, dtype=np.int64)
+        # the counts to every rank carry this rank's error flag: one collective finds both
+        counts = self._exchange_counts
         m = 0
         if message is None:
             m = _leavers(p.x, n, box.lo, box.length, self.decomposition.grid, self.rank, self._gone,
-                         self._leave_index, self._leave_dest)
-        dest = self._leave_dest[:m]
-        # the counts to every rank carry this rank's error flag: one collective finds both
-        counts = self._exchange_counts
-        counts[:, 0] = np.bincount(dest, minlength=self.nprocs)
+                         self._leave_dest, counts[:, 0], self._exchange_received[:, 0], self._leave_index)
+        else:
+            counts[:, 0] = 0
         counts[:, 1] = message is not None
         self.world.Alltoall(counts, self._exchange_received)
         if self._exchange_received[:, 1].any():
             self.agree(message, count)
-        order = self._leave_index[:m][np.argsort(dest, kind="stable")]
-        rows = p.pack(order)
+        rows = p.pack(self._leave_index[:m])
         if m:
             p.remove(self._gone[:n])
         arrived = self._alltoall_rows(rows, counts[:, 0], self._exchange_received[:, 0])
@@ -234,60 +256,73 @@ class MPIComm:
         p = particles
         p.clear_ghosts()
         nlocal = p.nlocal
+        counts = self._send_counts
+        counts[:] = 0
         m = 0
         if cutghost > 0:
-            sublo, subhi = self.decomposition.all_bounds()
-            periodic = np.array(box.periodic, dtype=np.bool_)
+            # the box may change in place (barostats, fix deform): its bounds are part of the key
+            key = (self.decomposition, cutghost, box.lo.tobytes(), box.hi.tobytes())
+            if self._bounds is None or self._bounds[0] != key:
+                self._bounds = (key,) + self._geometry(box, cutghost)
+            _, sublo, subhi, periodic, few, reach = self._bounds
             if len(self._near) < nlocal:
                 self._near = np.empty(nlocal + nlocal // 4 + 16, dtype=np.int64)
-            # a margin of round-off: the test below decides, this one only skips the certain
-            reach = cutghost + 1e-9 * float(np.max(box.length))
-            near = self._near[:_near_faces(p.x, nlocal, sublo[self.rank], subhi[self.rank], reach,
-                                           box.dimension == 2, self._near)]
+            dims = 2 if box.dimension == 2 else 3
+            near = self._near[:_near_faces(p.x, nlocal, sublo[self.rank], subhi[self.rank], reach, dims,
+                                           self._near)]
             while True:
-                m = ghost_sends(p.x, near, sublo, subhi, cutghost, box.length, periodic, self.rank,
-                                box.dimension == 2, self._ghost_rank, self._ghost_index, self._ghost_shift)
+                m = ghost_sends(p.x, near, sublo, subhi, cutghost, box.length, periodic, self.rank, dims == 2,
+                                few, self._ghost_rank, self._ghost_index, self._ghost_shift, counts)
                 if m >= 0:
                     break
                 size = 2 * len(self._ghost_rank) + nlocal + 64
                 self._ghost_rank = np.empty(size, dtype=np.int64)
                 self._ghost_index = np.empty(size, dtype=np.int64)
                 self._ghost_shift = np.empty((size, 3))
-        ranks, index, shift = self._ghost_rank[:m], self._ghost_index[:m], self._ghost_shift[:m]
-        counts = np.bincount(ranks, minlength=self.nprocs).astype(np.int64)
-        starts = np.concatenate([[0], np.cumsum(counts)])
-        self._send = [(index[starts[r]:starts[r + 1]], shift[starts[r]:starts[r + 1]])
-                      for r in range(self.nprocs)]
+        index, shift = self._ghost_index[:m], self._ghost_shift[:m]
         self._send_index = index
         self._send_shift = shift
-        self._send_counts = counts
         self._layouts = {}
         self._owners = None
         width = p.row_width(ghost=True)
         send, receive = self._ghost_rows
         if send.size < m * width:
             send = np.empty(int(1.25 * m * width) + 64)
-        rows = p.pack(index, out=send[:m * width].reshape(m, width), ghost=True, shift=shift)
-        self._recv_counts = np.empty(self.nprocs, dtype=np.int64)
+        p.pack_ghosts(index, counts, send, shift)
         self.world.Alltoall(counts, self._recv_counts)
         total = int(self._recv_counts.sum())
         if receive.size < total * width:
             receive = np.empty(int(1.25 * total * width) + 64)
         self._ghost_rows = (send, receive)
-        received = receive[:total * width].reshape(total, width)
-        self._alltoallv(rows, counts * width, received, self._recv_counts * width)
-        p.set_ghost_rows(received)
-        # ghosts this rank sent to itself (periodic self-images), for owners()
-        start = int(self._recv_counts[: self.rank].sum())
-        self._self_ghost = np.full(p.nghost, -1, dtype=np.int64)
-        own_index, _ = self._send[self.rank]
-        self._self_ghost[start:start + len(own_index)] = own_index
+        send_counts, send_displ, recv_counts, recv_displ = self._layout(width)
+        self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
+                             [receive, (recv_counts, recv_displ), self.MPI.DOUBLE])
+        p.set_ghost_blocks(receive, self._recv_counts)
+
+    def _geometry(self, box, cutghost):
+        """What borders needs of the sub-domains, fixed while the box and the ghost cutoff are: every
+        rank's bounds, the periodic axes, the axes where a particle in the box has at most the images
+        -1, 0, 1 within reach (the cutoff under half the box), and the reach of the face test."""
+        sublo, subhi = self.decomposition.all_bounds()
+        periodic = np.array(box.periodic, dtype=np.bool_)
+        few = np.array([cutghost < 0.5 * length for length in box.length], dtype=np.bool_)
+        # a margin of round-off: ghost_sends decides, the face test only skips the certain
+        reach = cutghost + 1e-9 * float(np.max(box.length))
+        return sublo, subhi, periodic, few, reach
 
     def owners(self, particles):
         """Owned index of every local particle; ghosts owned by another rank map to -1. Kept until
         the ghosts are made again."""
-        if self._owners is None or len(self._owners) != particles.nlocal + len(self._self_ghost):
-            self._owners = np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self._self_ghost])
+        n = particles.nlocal + int(self._recv_counts.sum())
+        if self._owners is None or len(self._owners) != n:
+            owners = np.full(n, -1, dtype=np.int64)
+            owners[:particles.nlocal] = np.arange(particles.nlocal)
+            # the ghosts this rank sent to itself (periodic self-images) arrive in its own slot
+            sent = self._send_counts[: self.rank].sum()
+            received = particles.nlocal + self._recv_counts[: self.rank].sum()
+            own = self._send_counts[self.rank]
+            owners[received:received + own] = self._send_index[sent:sent + own]
+            self._owners = owners
         return self._owners
 
     def _layout(self, width):

@@ -131,7 +131,7 @@ class SerialComm:
             raise SimulationError(
                 f"particle {int(p.tag[i])} has a non-finite position {tuple(x[i])} at step {step}")
         gone = box.wrap(x, p.image, p.tag, step, box.lost)
-        if gone.any():
+        if gone is not None:
             p.keep(np.flatnonzero(~gone))
 
     def borders(self, particles, box, cutghost):

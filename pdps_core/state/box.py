@@ -16,18 +16,22 @@ from ..errors import SimulationError
 
 
 @njit(cache=True)
-def _wrap_axis(x, image, n, d, lo, hi):
-    """Periodic axis d: positions moved back into [lo, hi) by whole lengths, image flags counting."""
-    length = hi - lo
+def _wrap_periodic(x, image, n, lo, hi, periodic):
+    """Along the periodic axes, positions moved back into [lo, hi) by whole lengths, image flags
+    counting; every axis in one pass over the particles."""
     for i in range(n):
-        shift = math.floor((x[i, d] - lo) / length)
-        if shift != 0:
-            x[i, d] -= shift * length
-            image[i, d] += np.int32(shift)
-            # floor() rounding can leave x == hi; hi belongs to the next image
-            if x[i, d] >= hi:
-                x[i, d] = lo
-                image[i, d] += 1
+        for d in range(3):
+            if not periodic[d] or lo[d] <= x[i, d] < hi[d]:
+                continue
+            length = hi[d] - lo[d]
+            shift = math.floor((x[i, d] - lo[d]) / length)
+            if shift != 0:
+                x[i, d] -= shift * length
+                image[i, d] += np.int32(shift)
+                # floor() rounding can leave x == hi; hi belongs to the next image
+                if x[i, d] >= hi[d]:
+                    x[i, d] = lo[d]
+                    image[i, d] += 1
 
 
 @njit(cache=True)
@@ -43,6 +47,7 @@ class Box:
         self.lo = np.asarray(lo, dtype=np.float64)
         self.hi = np.asarray(hi, dtype=np.float64)
         self.periodic = tuple(bool(p) for p in periodic)
+        self._periodic_axes = np.array(self.periodic, dtype=np.bool_)     # for the numba kernels
         self.lost = "error"             # LAMMPS's thermo_modify lost: error, warn or ignore
         self.dimension = dimension
 
@@ -74,17 +79,17 @@ class Box:
         """Bring owned particles back into the box. One that has left through a fixed face raises
         (``lost="error"``, the default and the PDPS manual's rule) or, with LAMMPS's
         ``thermo_modify lost warn|ignore``, is returned in the mask of lost rows for the caller to
-        delete."""
-        gone = np.zeros(len(x), dtype=bool)
+        delete (None when no particle is lost)."""
+        if any(self.periodic):
+            _wrap_periodic(x, image, len(x), self.lo, self.hi, self._periodic_axes)
+        gone = None
         for d in range(3):
-            if self.periodic[d]:
-                _wrap_axis(x, image, len(x), d, self.lo[d], self.hi[d])
-            elif _inside_axis(x, len(x), d, self.lo[d], self.hi[d]):
+            if self.periodic[d] or _inside_axis(x, len(x), d, self.lo[d], self.hi[d]):
                 continue
             else:
                 out = (x[:, d] < self.lo[d]) | (x[:, d] > self.hi[d]) | ~np.isfinite(x[:, d])
                 if out.any() and lost != "error":
-                    gone |= out
+                    gone = out if gone is None else gone | out
                     continue
                 if out.any():
                     i = int(np.flatnonzero(out)[0])

@@ -120,6 +120,66 @@ def _gather_columns(values, index, rows, column):
 
 
 @njit(cache=True)
+def _gather_blocks(values, index, shift, counts, column, width, out):
+    """One property of the ghosts ``index`` into the flat buffer ``out``, laid out by destination:
+    ``counts[r]`` ghosts for rank r, their rows of ``width`` values each stored property by
+    property (this one a contiguous block ``column`` values into each row's share), plus ``shift``
+    (positions of periodic images) if given. Vectors and scalars have loops of their own: a loop
+    over a width known only at run time is several times slower."""
+    w = values.shape[1]
+    shifted = len(shift) > 0
+    row = 0
+    for r in range(len(counts)):
+        block = out[row * width + counts[r] * column:]
+        if w == 3 and shifted:
+            for k in range(counts[r]):
+                i = index[row + k]
+                block[3 * k] = values[i, 0] + shift[row + k, 0]
+                block[3 * k + 1] = values[i, 1] + shift[row + k, 1]
+                block[3 * k + 2] = values[i, 2] + shift[row + k, 2]
+        elif w == 3:
+            for k in range(counts[r]):
+                i = index[row + k]
+                block[3 * k] = values[i, 0]
+                block[3 * k + 1] = values[i, 1]
+                block[3 * k + 2] = values[i, 2]
+        elif w == 1:
+            for k in range(counts[r]):
+                block[k] = values[index[row + k], 0]
+        else:
+            for k in range(counts[r]):
+                for d in range(w):
+                    block[k * w + d] = values[index[row + k], d]
+        row += counts[r]
+
+
+@njit(cache=True)
+def _scatter_blocks(buffer, counts, column, width, values, start):
+    """The inverse of _gather_blocks: values[start + row] from the block of each source's share."""
+    w = values.shape[1]
+    row = 0
+    for r in range(len(counts)):
+        block = buffer[row * width + counts[r] * column:]
+        first = start + row
+        if w == 3:
+            for k in range(counts[r]):
+                values[first + k, 0] = block[3 * k]
+                values[first + k, 1] = block[3 * k + 1]
+                values[first + k, 2] = block[3 * k + 2]
+        elif w == 1:
+            for k in range(counts[r]):
+                values[first + k, 0] = block[k]
+        else:
+            for k in range(counts[r]):
+                for d in range(w):
+                    values[first + k, d] = block[k * w + d]
+        row += counts[r]
+
+
+_NO_SHIFT = np.zeros((0, 3))
+
+
+@njit(cache=True)
 def _scatter_columns(rows, column, values, start):
     """values[start + k] = rows[k, column:column + width], each value cast to the property's type."""
     for k in range(rows.shape[0]):
@@ -337,31 +397,51 @@ class Particles:
         """Values in a particle's row: every property, or (``ghost``) those ghosts carry."""
         return sum(p.width for p in self.properties.values() if p.ghost or not ghost)
 
-    def pack(self, index, out=None, ghost=False, shift=None):
-        """Rows of the per-atom values of the particles ``index``, in property order (every rank
-        requests properties in script order, so the layout agrees between ranks): all of them, or
-        (``ghost``) those ghosts carry, with positions displaced by ``shift`` (periodic images).
-        Written into ``out`` (rows x row_width) when given."""
-        width = self.row_width(ghost)
-        rows = np.empty((len(index), width)) if out is None else out
+    def pack(self, index):
+        """Rows of every per-atom value of the particles ``index`` (migration), in property order
+        (every rank requests properties in script order, so the layout agrees between ranks)."""
+        rows = np.empty((len(index), self.row_width()))
         column = 0
         for name, prop in self.properties.items():
-            if ghost and not prop.ghost:
-                continue
             _gather_columns(_columns(self.arrays[name]), index, rows, column)
             column += prop.width
-        if shift is not None:
-            rows[:, :3] += shift          # x is the first property
         return rows
 
-    def _place_rows(self, rows, start, ghost):
+    def pack_ghosts(self, index, counts, out, shift):
+        """The values ghosts carry of the particles ``index`` (``counts[r]`` of them for rank r, in
+        rank order), positions displaced by ``shift``, into the flat float64 buffer ``out``: rank
+        r's share is its ghosts' values property by property (each a contiguous block), so that
+        set_ghost_blocks places them with contiguous reads."""
+        width = self.row_width(ghost=True)
+        column = 0
+        for name, prop in self.properties.items():
+            if prop.ghost:
+                _gather_blocks(_columns(self.arrays[name]), index, shift if name == "x" else _NO_SHIFT,
+                               counts, column, width, out)
+                column += prop.width
+
+    def set_ghost_blocks(self, values, counts):
+        """Replace the ghosts by those received from each rank (``counts[r]`` from rank r) as
+        pack_ghosts lays them out."""
+        self.clear_ghosts()
+        n, start = int(counts.sum()), self.nlocal
+        self._reserve(start + n)
+        width = self.row_width(ghost=True)
         column = 0
         for name, prop in self.properties.items():
             store = self._store[name]
-            if ghost and not prop.ghost:
-                store[start:start + len(rows)] = 0
+            if not prop.ghost:
+                store[start:start + n] = 0
                 continue
-            _scatter_columns(rows, column, _columns(store), start)
+            _scatter_blocks(values, counts, column, width, _columns(store), start)
+            column += prop.width
+        self.nghost = n
+        self._views()
+
+    def _place_rows(self, rows, start):
+        column = 0
+        for name, prop in self.properties.items():
+            _scatter_columns(rows, column, _columns(self._store[name]), start)
             column += prop.width
 
     def append_owned(self, rows):
@@ -369,17 +449,8 @@ class Particles:
         self.clear_ghosts()
         n, start = len(rows), self.nlocal
         self._reserve(start + n)
-        self._place_rows(rows, start, ghost=False)
+        self._place_rows(rows, start)
         self.nlocal += n
-        self._views()
-
-    def set_ghost_rows(self, rows):
-        """Replace the ghosts by particles received as ghost rows (``pack(..., ghost=True)``)."""
-        self.clear_ghosts()
-        n, start = len(rows), self.nlocal
-        self._reserve(start + n)
-        self._place_rows(rows, start, ghost=True)
-        self.nghost = n
         self._views()
 
     # ---- lookup ---------------------------------------------------------------------------------
