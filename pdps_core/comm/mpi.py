@@ -136,23 +136,59 @@ _NO_SHIFT = np.zeros((0, 3))
 
 
 @njit(cache=True)
-def _pack_rows(array, index, shift, out):
-    """Rows ``index`` of ``array`` into the flat buffer ``out``, plus ``shift`` (positions) if given."""
+def _copy_rows(array, index, shift, first, last, out, start):
+    """out[start + k - first] = array[index[k]] (+ shift[k]) for k in [first, last), rows of the
+    flat buffer ``out``; vectors of three have a loop of their own (a loop over a width known only
+    at run time is several times slower)."""
     width = array.shape[1]
     shifted = len(shift) > 0
-    for k in range(len(index)):
+    for k in range(first, last):
         i = index[k]
-        for d in range(width):
-            out[k * width + d] = array[i, d] + (shift[k, d] if shifted else 0.0)
+        row = (start + k - first) * width
+        if width == 3:
+            out[row] = array[i, 0] + (shift[k, 0] if shifted else 0.0)
+            out[row + 1] = array[i, 1] + (shift[k, 1] if shifted else 0.0)
+            out[row + 2] = array[i, 2] + (shift[k, 2] if shifted else 0.0)
+        else:
+            for d in range(width):
+                out[row + d] = array[i, d] + (shift[k, d] if shifted else 0.0)
 
 
 @njit(cache=True)
-def _add_rows(array, index, rows):
-    """array[index[k]] += rows[k] (ghost forces summed onto their owners)."""
-    for k in range(len(index)):
+def _pack_rows(array, index, shift, out, own_first, own_count, own_out):
+    """Rows ``index`` of ``array`` (plus ``shift``, positions) into the flat buffer ``out``, except
+    rows own_first .. own_first + own_count, this rank's images of its own particles, written
+    straight into ``own_out`` (the ghost rows they become): they need no message."""
+    own_last = own_first + own_count
+    _copy_rows(array, index, shift, 0, own_first, out, 0)
+    _copy_rows(array, index, shift, own_first, own_last, own_out, 0)
+    _copy_rows(array, index, shift, own_last, len(index), out, own_last)
+
+
+@njit(cache=True)
+def _add_range(array, index, rows, first, last, start):
+    width = array.shape[1]
+    for k in range(first, last):
         i = index[k]
-        for d in range(array.shape[1]):
-            array[i, d] += rows[k, d]
+        row = start + k - first
+        if width == 3:
+            array[i, 0] += rows[row, 0]
+            array[i, 1] += rows[row, 1]
+            array[i, 2] += rows[row, 2]
+        else:
+            for d in range(width):
+                array[i, d] += rows[row, d]
+
+
+@njit(cache=True)
+def _add_rows(array, index, rows, own_first, own_count, own_rows):
+    """array[index[k]] += rows[k] (ghost forces summed onto their owners), the rows own_first ..
+    own_first + own_count (this rank's own images) read from ``own_rows`` (its ghost rows): in
+    the order of k throughout, so the sums are the same however the rows arrived."""
+    own_last = own_first + own_count
+    _add_range(array, index, rows, 0, own_first, 0)
+    _add_range(array, index, own_rows, own_first, own_last, 0)
+    _add_range(array, index, rows, own_last, len(index), own_last)
 
 class MPIComm:
     def __init__(self, world=None):
@@ -325,16 +361,26 @@ class MPIComm:
             self._owners = owners
         return self._owners
 
-    def _layout(self, width):
+    def _layout(self, width, own=True):
         """Send and receive counts and displacements (in values) of ghost rows of ``width`` values,
-        fixed between rebuilds."""
-        layout = self._layouts.get(width)
+        fixed between rebuilds; without this rank's images of its own particles (``own=False``),
+        which forward and reverse communication copy directly."""
+        layout = self._layouts.get((width, own))
         if layout is None:
             send, recv = self._send_counts * width, self._recv_counts * width
             layout = (send, np.concatenate([[0], np.cumsum(send)[:-1]]),
                       recv, np.concatenate([[0], np.cumsum(recv)[:-1]]))
-            self._layouts[width] = layout
+            if not own:
+                layout[0][self.rank] = layout[2][self.rank] = 0
+            self._layouts[width, own] = layout
         return layout
+
+    def _own_images(self):
+        """(first row among those sent, first ghost row, how many) of this rank's images of its own
+        particles: sent to itself, they arrive in its own slot of the ghost rows."""
+        me = self.rank
+        return (int(self._send_counts[:me].sum()), int(self._recv_counts[:me].sum()),
+                int(self._send_counts[me]))
 
     def _buffers(self, width):
         """Send and receive buffers for rows of ``width`` values, kept between steps."""
@@ -356,11 +402,13 @@ class MPIComm:
                 continue
             width = array.shape[1]
             send, recv = self._buffers(width)
-            send_counts, send_displ, recv_counts, recv_displ = self._layout(width)
-            _pack_rows(array, index, self._send_shift if name == "x" else _NO_SHIFT, send)
+            send_counts, send_displ, recv_counts, recv_displ = self._layout(width, own=False)
             ghosts = array[p.nlocal:]
             # the ghost rows of a row-major per-atom array are one block: received in place
             target = ghosts.reshape(-1) if ghosts.flags.c_contiguous else recv
+            sent_first, ghost_first, own = self._own_images()
+            _pack_rows(array, index, self._send_shift if name == "x" else _NO_SHIFT, send, sent_first, own,
+                       target[ghost_first * width:(ghost_first + own) * width])
             self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
                                  [target, (recv_counts, recv_displ), self.MPI.DOUBLE])
             if target is recv:
@@ -385,11 +433,14 @@ class MPIComm:
             if array.dtype != np.float64:
                 ghosts = ghosts.astype(np.float64)
             # back from every ghost to its owner: the forward layout reversed
-            recv_counts, recv_displ, send_counts, send_displ = self._layout(width)
+            recv_counts, recv_displ, send_counts, send_displ = self._layout(width, own=False)
             back = self._reverse_buffer(len(index) * width)
-            self.world.Alltoallv([np.ascontiguousarray(ghosts).reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],
+            ghosts = np.ascontiguousarray(ghosts)
+            self.world.Alltoallv([ghosts.reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],
                                  [back, (recv_counts, recv_displ), self.MPI.DOUBLE])
-            _add_rows(array.reshape(len(array), width), index, back.reshape(len(index), width))
+            sent_first, ghost_first, own = self._own_images()
+            _add_rows(array.reshape(len(array), width), index, back.reshape(len(index), width), sent_first,
+                      own, ghosts[ghost_first:ghost_first + own])
 
     def _reverse_buffer(self, size):
         if len(self._back_buffer) < size:
