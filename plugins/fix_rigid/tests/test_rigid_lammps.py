@@ -93,7 +93,15 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, scene):
                "temp epair ke etotal press vol lx ly lz f_1 ecouple econserve").split()
     print(f"{scene}: largest difference from LAMMPS over {steps} steps, relative to each column's largest value: "
           + ", ".join(f"{name} {w:.1e}" for name, w in zip(columns, worst)))
-    assert worst.max() < 1e-5
+    # the bodies' motion is chaotic: the two programs' round-off (1e-15 at the start) grows tenfold
+    # every 700 steps or so, and how it starts depends on the CPU (numba compiles for the host's:
+    # rigid/npt iso ends 8.3e-6 from LAMMPS on an AMD EPYC and 1.4e-5 on an Intel Xeon, where LAMMPS
+    # prints what it printed on the EPYC). Up to step 5000 the round-off is still small, so this part
+    # is compared tightly; the rest is compared loosely.
+    early = ours[:, 0] <= 5000
+    early_worst = (np.abs(ours[early, 1:] - lammps[early, 1:]) / scale).max()
+    assert early_worst < 1e-8
+    assert worst.max() < 1e-4
 
 
 @pytest.mark.parametrize("scene", ["clumps", "plane", "infile", "collide", "custom", "plane nph", "infile gravity"])
