@@ -156,6 +156,7 @@ class Verlet:
     def _reneighbor(self):
         sim, particles = self.sim, self.sim.particles
         t0 = time.perf_counter()
+        sim.neighbor.choose_skin(sim.box)
         if sim.neighbors.sort_due(sim.step):
             particles.keep(sim.neighbors.spatial_order(particles, sim.box, sim.step))
         sim.comm.borders(particles, sim.box, sim.neighbor.ghost_cutoff())

@@ -143,7 +143,7 @@ def _pair_record(pair, states):
 
 
 def _neighbor_record(neighbor, particles, arrays, resumable=True):
-    record = {"skin": neighbor.skin, "style": neighbor.style, "every": neighbor.every,
+    record = {"skin": neighbor.requested_skin, "style": neighbor.style, "every": neighbor.every,
               "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
               "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
               "dangerous": neighbor.dangerous, "one": neighbor.one, "history": neighbor.history,
@@ -634,6 +634,7 @@ def _neighbor(record, arrays, particles):
         lists = [(kind, arrays[f"neighbor/cutoff{k}"].copy()) for k, kind in enumerate(built["kinds"])]
         neighbor.built_with = (float(built["skin"]), lists, arrays["neighbor/lo"].copy(),
                                arrays["neighbor/hi"].copy(), tuple(bool(p) for p in built["periodic"]))
+        neighbor.use_built_skin()
         neighbor.mark_current(particles)      # saved while current: the next run resumes them
     return neighbor
 

@@ -582,6 +582,7 @@ class MeshContacts:
         self.nlocal_built = -1
         self.tags_built = np.zeros(0, dtype=np.int64)
         self.x_built = np.zeros((0, 3))
+        self.skin_built = None
 
     def setup(self):
         self.builds = 0
@@ -598,7 +599,8 @@ class MeshContacts:
         p = sim.particles
         mesh = self.surface
         half_skin = 0.5 * sim.neighbor.skin
-        if not self.stale and len(chosen) == len(self.x_built):
+        # the skin widens in direct mode: lists made with a narrower one are made again
+        if not self.stale and len(chosen) == len(self.x_built) and sim.neighbor.skin == self.skin_built:
             moved = largest_move_sq(p.arrays["x"], chosen, self.x_built)
             shifted = (largest_move_sq(mesh.vertices, self.all_vertices, self.vertices_built)
                        if mesh.moving else 0.0)
@@ -631,6 +633,7 @@ class MeshContacts:
         np.cumsum(counts[near], out=self.offsets[1:])
         self.all_vertices = np.arange(len(mesh.vertices), dtype=np.int64)
         self.x_built = x
+        self.skin_built = skin
         self.vertices_built = mesh.vertices.copy()
         self.stale = False
         self.builds += 1
