@@ -53,11 +53,12 @@ DIRECT_AT = 14
 # sort says otherwise): a fluid whose lists live one step also diffuses fast, and the cell loops read
 # partners in cell order (dpd_gw's cell loop 17.7 ms 300 steps after a sort, 12.0 ms right after one).
 DIRECT_SORT_EVERY = 100
-# In direct mode the skin is one cutoff (unless the script's is wider): it only keeps the ghosts
-# valid, and a wider one trades rebuilds (a migration and a ghost exchange) for ghosts to copy at
-# every step. dpd_gw (cutoff 1, skin 0.3, dt 0.04): 301 rebuilds in 300 steps -> 112, Comm 0.38 ->
-# 0.25 s on one rank and 0.49 -> 0.36 s on two (0.6 cutoffs: 158 rebuilds; 1.5: 85, no faster).
-DIRECT_SKIN = 1.0
+# In direct mode the skin is half a cutoff (unless the script's is wider): it only keeps the ghosts
+# valid, and a wider one trades rebuilds (a migration and a ghost exchange) for ghosts to copy and
+# hold. dpd_gw (cutoff 1, skin 0.3, dt 0.04), 300 steps: 301 rebuilds -> 163, Comm 0.37 -> 0.26 s on
+# one rank and 0.48 -> 0.35 s on two; a whole cutoff (112 rebuilds) is no faster and holds 8,000 more
+# ghosts (peak memory growth from dpd_water to dpd_gw 285 -> 296 bytes a particle; 411 with a cutoff).
+DIRECT_SKIN = 0.5
 NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
 
 
