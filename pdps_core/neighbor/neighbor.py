@@ -167,11 +167,16 @@ class Neighbor:
         """Called before each build, ghosts included: the skin the coming build uses. In direct mode
         the list is made again at every step anyway and the skin only keeps the ghosts valid, so a
         wider one (``direct_skin``) rebuilds less often, at the price of more ghosts to copy."""
-        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules)
         lists = self.perpetual
-        direct = (bool(lists) and all(r.direct_ok for r in lists) and not excluding and self.check
-                  and self.skin_trial is None and bin(self.history).count("1") >= DIRECT_AT)
+        direct = (self._direct_due() and bool(lists) and all(r.direct_ok for r in lists) and self.check
+                  and self.skin_trial is None)
         self._skin = self.direct_skin(box) if direct else self.requested_skin
+
+    def _direct_due(self):
+        """Direct mode for the lists that allow it at the coming build: nearly every recent decision
+        rebuilt, and no exclusions (the cell loops know none: such a scene keeps its lists)."""
+        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules)
+        return bin(self.history).count("1") >= DIRECT_AT and not excluding
 
     def use_built_skin(self):
         """The skin of the last build in effect again until the next one (a restart read in direct
@@ -341,9 +346,7 @@ class Neighbor:
         lists = self.perpetual
         if not lists:
             return
-        # the cell loops know no exclusions: a scene with neigh_modify exclude keeps its lists
-        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules)
-        direct = bin(self.history).count("1") >= DIRECT_AT and not excluding
+        direct = self._direct_due()
         binned = None
         for nlist in lists:
             going_direct = direct and nlist.direct_ok and not nlist.direct
