@@ -74,7 +74,10 @@ class NeighborList:
 
     Direct mode (``direct``, for a list requested with ``direct_ok``, when the lists are rebuilt at
     nearly every step): the pair style computes forces from the cell bins ``cells`` made at every
-    step, and the list itself is built only if something reads ``offsets`` or ``neighbors``."""
+    step, and the list itself is built only if something reads ``offsets`` or ``neighbors``.
+
+    ``version`` grows by one at every build: a style that keeps something made from the list (the
+    row of each entry, say) makes it again when the version it was made from is not the list's."""
 
     def __init__(self, kind, cutoff, occasional=False, groupbit=0xFFFFFFFF, direct_ok=False):
         self.kind = kind
@@ -90,6 +93,7 @@ class NeighborList:
         self._offsets = np.zeros(1, dtype=np.int64)
         self._neighbors = np.zeros(0, dtype=NEIGHBOR_INDEX)
         self._pending = None        # builds the list when it is read (direct mode)
+        self.version = 0            # one more at every build: what a style derived from the list is stale
 
     def _current(self):
         if self._pending is not None:
@@ -113,6 +117,7 @@ class NeighborList:
     @neighbors.setter
     def neighbors(self, value):
         self._neighbors = value
+        self.version += 1
 
     @property
     def half_list(self):

@@ -150,7 +150,10 @@ def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, ma
     return count
 
 
-@njit(cache=True)
+# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
+# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
+# here allocates
+@njit(cache=True, _nrt=False)
 def wall_gran_forces(x, v, omega, radius, rmass, body_mass, f, torque, near, count, wallstyle, lo,
                      hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
                      limit_damping, dt, update, history, d, n, vw, vtr, tangential):

@@ -42,14 +42,15 @@ HERTZ_DAMPING = 2.0 * math.sqrt(5.0 / 6.0)
 NO_BODY_MASS = np.zeros(0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def contact_mass(rmass, body_mass, i):
     """The mass particle i brings to a contact's effective mass: its rigid body's where a fix of
     rigid bodies provides ``body_mass`` and i is in a body (> 0), else its own (LAMMPS's pair gran/*,
     pair granular and fix wall/gran with mass_rigid from fix rigid's extract("masstotal"))."""
-    if len(body_mass) > 0 and body_mass[i] > 0.0:
-        return body_mass[i]
-    return rmass[i]
+    body = body_mass[i] if len(body_mass) > 0 else 0.0
+    # no inline="always" and no early return: either left array reference counting (atomic,
+    # out-of-line calls) in the callers' pair loops
+    return body if body > 0.0 else rmass[i]
 
 
 @njit(cache=True)

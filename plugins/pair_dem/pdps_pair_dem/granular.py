@@ -174,7 +174,10 @@ def first_coincident(x, radius, offsets, neighbors, nlocal):
     return -1, -1
 
 
-@njit(cache=True)
+# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
+# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
+# here allocates
+@njit(cache=True, _nrt=False)
 def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag, owner, offsets, neighbors,
                     nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
                     log_pairs, log_force, logged, n, vrel, shear, force):

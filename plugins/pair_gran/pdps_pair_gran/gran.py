@@ -87,74 +87,101 @@ def store_spring(history, owner, i, j, slot_i, slot_j, shear):
 
 
 @njit(cache=True)
-def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, owner, offsets, neighbors, nlocal,
-                 model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
+def entry_rows(offsets, nlocal, rows):
+    """The owned particle i of every entry of a CSR list (``rows[k]`` for ``neighbors[k]``)."""
+    for i in range(nlocal):
+        for k in range(offsets[i], offsets[i + 1]):
+            rows[k] = i
+
+
+@njit(cache=True)
+def touching_pairs(x, radius, rows, neighbors, npairs, touching):
+    """The list entries whose spheres overlap, in list order, into ``touching``; returns how many.
+    Most listed pairs do not touch: one flat loop over the entries, without a branch, finds the few
+    that do (a loop per particle mispredicts its exit for most particles, which have two or three
+    entries), and ``gran_compute`` does their contacts."""
+    m = 0
+    for k in range(npairs):
+        i = rows[k]
+        j = neighbors[k]
+        delx = x[i, 0] - x[j, 0]
+        dely = x[i, 1] - x[j, 1]
+        delz = x[i, 2] - x[j, 2]
+        rsq = delx * delx + dely * dely + delz * delz
+        radsum = radius[i] + radius[j]
+        touching[m] = k
+        # coincident centres have no normal (LAMMPS divides by zero): no force
+        m += 0 if (rsq >= radsum * radsum) | (rsq == 0.0) else 1
+    return m
+
+
+# Without numba's reference counting (_nrt=False): the contact helpers store into arrays under
+# branches, and numba then keeps an atomic, out-of-line increment and decrement of every array they
+# take around each call (numba issue #2350), three quarters of a contact's cost (gran_box: 37 ->
+# 13 us a step). Nothing here allocates, which is what the counting is for.
+@njit(cache=True, _nrt=False)
+def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, owner, rows, neighbors, touching,
+                 ntouching, model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
                  partner, history, touched, n, vtr, shear, tangential):
-    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full. ``n``, ``vtr``, ``shear``, ``tangential`` (3 each): one contact's
-    normal, sliding velocity, spring and tangential force."""
+    """Contact forces and torques of the touching list entries (``touching_pairs``); returns -1, or
+    the tag of a particle whose contact slots are full. ``n``, ``vtr``, ``shear``, ``tangential``
+    (3 each): one contact's normal, sliding velocity, spring and tangential force."""
     with_history = model != lammps_classic.HOOKE
     shear[:] = 0.0
-    for i in range(nlocal):
-        xi0 = x[i, 0]
-        xi1 = x[i, 1]
-        xi2 = x[i, 2]
+    for h in range(ntouching):
+        i = rows[touching[h]]
+        j = neighbors[touching[h]]
         radi = radius[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            delx = xi0 - x[j, 0]
-            dely = xi1 - x[j, 1]
-            delz = xi2 - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            radsum = radi + radius[j]
-            if rsq >= radsum * radsum or rsq == 0.0:
-                # coincident centres have no normal (LAMMPS divides by zero): no force
-                continue
-            r = math.sqrt(rsq)
-            n[0] = delx / r
-            n[1] = dely / r
-            n[2] = delz / r
-            vr0 = v[i, 0] - v[j, 0]
-            vr1 = v[i, 1] - v[j, 1]
-            vr2 = v[i, 2] - v[j, 2]
-            v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-            w0 = radi * omega[i, 0] + radius[j] * omega[j, 0]
-            w1 = radi * omega[i, 1] + radius[j] * omega[j, 1]
-            w2 = radi * omega[i, 2] + radius[j] * omega[j, 2]
-            vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-            vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-            vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-            m_i = contact_models.contact_mass(rmass, body_mass, i)
-            m_j = contact_models.contact_mass(rmass, body_mass, j)
-            m_eff = m_i * m_j / (m_i + m_j)
-            if mask[i] & freeze_bit:
-                m_eff = m_j
-            if mask[j] & freeze_bit:
-                m_eff = m_i
-            slot_i, slot_j = -1, -1
-            if with_history:
-                slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-                if update and (slot_i < 0 or slot_j < 0):
-                    return tag[i] if slot_i < 0 else tag[j]
-            r_eff = radi * radius[j] / radsum
-            fn = lammps_classic.classic_contact(model, False, radsum - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
-                                                gamma_n, gamma_t, xmu, limit_damping, update, dt,
-                                                shear, tangential)
-            if with_history and slot_i >= 0:
-                store_spring(history, owner, i, j, slot_i, slot_j, shear)
-            cx = n[1] * tangential[2] - n[2] * tangential[1]
-            cy = n[2] * tangential[0] - n[0] * tangential[2]
-            cz = n[0] * tangential[1] - n[1] * tangential[0]
-            for d in range(3):
-                force = fn * n[d] + tangential[d]
-                f[i, d] += force
-                f[j, d] -= force
-            torque[i, 0] -= radi * cx
-            torque[i, 1] -= radi * cy
-            torque[i, 2] -= radi * cz
-            torque[j, 0] -= radius[j] * cx
-            torque[j, 1] -= radius[j] * cy
-            torque[j, 2] -= radius[j] * cz
+        delx = x[i, 0] - x[j, 0]
+        dely = x[i, 1] - x[j, 1]
+        delz = x[i, 2] - x[j, 2]
+        rsq = delx * delx + dely * dely + delz * delz
+        radsum = radi + radius[j]
+        r = math.sqrt(rsq)
+        n[0] = delx / r
+        n[1] = dely / r
+        n[2] = delz / r
+        vr0 = v[i, 0] - v[j, 0]
+        vr1 = v[i, 1] - v[j, 1]
+        vr2 = v[i, 2] - v[j, 2]
+        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
+        w0 = radi * omega[i, 0] + radius[j] * omega[j, 0]
+        w1 = radi * omega[i, 1] + radius[j] * omega[j, 1]
+        w2 = radi * omega[i, 2] + radius[j] * omega[j, 2]
+        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
+        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
+        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
+        m_i = contact_models.contact_mass(rmass, body_mass, i)
+        m_j = contact_models.contact_mass(rmass, body_mass, j)
+        m_eff = m_i * m_j / (m_i + m_j)
+        if mask[i] & freeze_bit:
+            m_eff = m_j
+        if mask[j] & freeze_bit:
+            m_eff = m_i
+        slot_i, slot_j = -1, -1
+        if with_history:
+            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
+            if update and (slot_i < 0 or slot_j < 0):
+                return tag[i] if slot_i < 0 else tag[j]
+        r_eff = radi * radius[j] / radsum
+        fn = lammps_classic.classic_contact(model, False, radsum - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
+                                            gamma_n, gamma_t, xmu, limit_damping, update, dt,
+                                            shear, tangential)
+        if with_history and slot_i >= 0:
+            store_spring(history, owner, i, j, slot_i, slot_j, shear)
+        cx = n[1] * tangential[2] - n[2] * tangential[1]
+        cy = n[2] * tangential[0] - n[0] * tangential[2]
+        cz = n[0] * tangential[1] - n[1] * tangential[0]
+        for d in range(3):
+            force = fn * n[d] + tangential[d]
+            f[i, d] += force
+            f[j, d] -= force
+        torque[i, 0] -= radi * cx
+        torque[i, 1] -= radi * cy
+        torque[i, 2] -= radi * cz
+        torque[j, 0] -= radius[j] * cx
+        torque[j, 1] -= radius[j] * cy
+        torque[j, 2] -= radius[j] * cz
     return -1
 
 
@@ -192,6 +219,7 @@ class PairGran(Pair):
         super().__init__(sim, args)
         self.history = None
         self._touched = None
+        self._rows = self._touching = self._rows_of = None
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
@@ -298,11 +326,13 @@ class PairGran(Pair):
         else:
             partner, values, capacity = self._no_history
         touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
-        offsets, neighbors = nlist.offsets, nlist.neighbors
         a = p.arrays
+        rows, touching = self.entry_rows(nlist, p.nlocal)
+        npairs = int(nlist.offsets[p.nlocal])
+        ntouching = touching_pairs(a["x"], a["radius"], rows, nlist.neighbors, npairs, touching)
         bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
                            a.get("body_mass", contact_models.NO_BODY_MASS), a["mask"], a["f"], a["torque"],
-                           a["tag"], owner, offsets, neighbors, p.nlocal, self.model, self.kn, self.kt,
+                           a["tag"], owner, rows, nlist.neighbors, touching, ntouching, self.model, self.kn, self.kt,
                            self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, self.freeze_bit,
                            sim.dt, update, partner, values, touched, *self._scratch)
         if self.history is not None and bad < 0 and update:
@@ -314,6 +344,19 @@ class PairGran(Pair):
             raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "
                                   f"raise max_contacts of pair_style {self.name}")
         self.energy = 0.0
+
+    def entry_rows(self, nlist, nlocal):
+        """The particle of every list entry (made again when the list was rebuilt) and room for the
+        touching entries; both grow only with the list."""
+        npairs = int(nlist.offsets[nlocal])
+        if self._rows is None or len(self._rows) < npairs:
+            size = max(npairs + npairs // 4, 64)
+            self._rows, self._touching = np.empty(size, dtype=np.int32), np.empty(size, dtype=np.int32)
+            self._rows_of = None
+        if self._rows_of != (nlist, nlist.version):
+            entry_rows(nlist.offsets, nlocal, self._rows)
+            self._rows_of = (nlist, nlist.version)
+        return self._rows, self._touching
 
     def touched_flags(self, rows, capacity):
         """Which slots a contact touched this step; free_stale clears what it set, so the flags are

@@ -115,7 +115,10 @@ def store_history(history, owner, i, j, slot_i, slot_j, hist):
             history[jo, width * slot_j + d] = -hist[d]
 
 
-@njit(cache=True)
+# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
+# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
+# here allocates
+@njit(cache=True, _nrt=False)
 def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                        nlocal, models, table, charvel, nktv2p, freeze_bit, dt, update, partner, history,
                        touched, n, vtr, wr, hist, force, tangential, roll):

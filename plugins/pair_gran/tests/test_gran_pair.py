@@ -6,6 +6,8 @@ import math
 import numpy as np
 import pytest
 
+from pdps_core.api import Fix, registry
+
 M1 = 1.9098593171027440      # density of a sphere of diameter 1 and mass 1
 HOOKE = "200000.0 NULL 50.0 NULL 0.5 1"
 
@@ -181,3 +183,58 @@ def test_coarse_timestep_is_warned(scene):
     assert sim.pair.timestep_limits(sim)["contact"] == pytest.approx(t_c, rel=1e-12)
     assert warnings == [f"pair gran/hooke/history: timestep 0.001 is more than the shortest contact "
                         f"({t_c:.3g}) / 10: collisions lose restitution; use timestep <= {t_c / 10:.3g}"]
+
+
+class HookeForcesOfEveryPair(Fix):
+    """After the pair forces of every step: the largest difference between the forces on the owned
+    particles and gran/hooke's (HOOKE, spheres of diameter 1 and mass 1, the box 6 wide) summed over
+    every pair by minimum image, and whether the list was rebuilt at this step."""
+    name = "test/hooke_every_pair"
+
+    def init_run(self, sim):
+        self.errors, self.rebuilt, self.contacts = [], [], []
+
+    def post_force(self, sim):
+        p = sim.particles
+        x, v, w = p.x[: p.nlocal], p.v[: p.nlocal], p.omega[: p.nlocal]
+        delta = x[:, None, :] - x[None, :, :]
+        delta -= 6.0 * np.round(delta / 6.0)
+        r = np.sqrt((delta ** 2).sum(axis=2))
+        np.fill_diagonal(r, np.inf)
+        touching = r < 1.0
+        n = delta / r[..., None]
+        vr = v[:, None, :] - v[None, :, :]
+        v_n = (vr * n).sum(axis=2)
+        vtr = vr - v_n[..., None] * n - np.cross(0.5 * (w[:, None, :] + w[None, :, :]), n)
+        fn = 200000.0 * (1.0 - r) - 0.5 * 50.0 * v_n
+        speed = np.linalg.norm(vtr, axis=2)
+        ft = np.minimum(0.5 * np.abs(fn), 0.5 * 25.0 * speed) / np.where(speed > 0.0, speed, 1.0)
+        force = np.where(touching[..., None], fn[..., None] * n - ft[..., None] * vtr, 0.0)
+        self.errors.append(float(np.abs(p.f[: p.nlocal] - force.sum(axis=1)).max() / 200000.0))
+        self.rebuilt.append(sim.neighbors.ago == 0)
+        self.contacts.append(int(touching.sum()) // 2)
+
+
+def test_forces_of_every_contact_at_every_step_across_rebuilds(scene):
+    """A hot gas of 100 spheres whose lists are rebuilt every few steps (pair gran keeps the particle
+    of every list entry between builds): at every step the forces are gran/hooke's over every pair
+    of the box, computed afresh by minimum image."""
+    registry.register("fix", "test/hooke_every_pair", HookeForcesOfEveryPair)
+    rng = np.random.default_rng(5)
+    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
+             + rng.uniform(-0.02, 0.02, (100, 3)))
+    spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
+               for site in sites]
+    sim = scene(f"gran/hooke {HOOKE}", spheres, box="0 6 0 6 0 6", extra="""
+        timestep 0.0004
+        neighbor 0.1 bin
+        neigh_modify delay 0 every 1 check yes
+        fix 1 all nve/sphere
+        fix check all test/hooke_every_pair
+        """)
+    sim.command("run 400")
+    check = sim.fixes["check"]
+    print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}, "
+          f"largest error {max(check.errors):.2e} of kn")
+    assert sum(check.rebuilt) > 20 and sum(check.contacts) > 400
+    assert max(check.errors) < 1e-12
