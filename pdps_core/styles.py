@@ -449,6 +449,8 @@ class PairLaw(Pair):
                 self.law_state(sim))
         if tally:
             self.energy = self._loops[(nlist.half_list, "tally")](*args, p.arrays[TALLY])
+        elif len(self.cutsq) == 2:      # one particle type
+            self.energy = self._loops[(nlist.half_list, bool(eflag), "one type")](*args)
         else:
             self.energy = self._loops[(nlist.half_list, bool(eflag))](*args)
 
