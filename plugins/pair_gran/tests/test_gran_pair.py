@@ -238,3 +238,49 @@ def test_forces_of_every_contact_at_every_step_across_rebuilds(scene):
           f"largest error {max(check.errors):.2e} of kn")
     assert sum(check.rebuilt) > 20 and sum(check.contacts) > 400
     assert max(check.errors) < 1e-12
+
+
+class ContactsHeld(Fix):
+    """At the end of every step: whether the contact slots hold exactly this step's touching pairs
+    (found afresh by minimum image, the box 6 wide), each on both spheres."""
+    name = "test/contacts_held"
+
+    def init_run(self, sim):
+        self.exact, self.contacts = [], []
+
+    def end_of_step(self, sim):
+        p = sim.particles
+        n, tag = p.nlocal, p.tag[: p.nlocal]
+        delta = p.x[:n, None, :] - p.x[None, :n, :]
+        delta -= 6.0 * np.round(delta / 6.0)
+        np.fill_diagonal(delta[..., 0], 10.0)
+        i, j = np.nonzero((delta ** 2).sum(axis=2) < 1.0)
+        touching = set(zip(tag[i].tolist(), tag[j].tolist()))
+        partner = sim.pair.history.partner[:n]
+        held = {(int(tag[r]), int(key)) for r, s in zip(*np.nonzero(partner >= 0)) for key in [partner[r, s]]}
+        self.exact.append(held == touching)
+        self.contacts.append(len(touching) // 2)
+
+
+def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene):
+    """gran/hooke/history forgets a contact at the end of the step its spheres came apart: in a hot
+    gas whose lists are rebuilt every few steps (between builds only the rows that held or made a
+    contact are swept), the slots hold at every step exactly the pairs that touch."""
+    registry.register("fix", "test/contacts_held", ContactsHeld)
+    rng = np.random.default_rng(6)
+    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
+             + rng.uniform(-0.02, 0.02, (100, 3)))
+    spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
+               for site in sites]
+    sim = scene(f"gran/hooke/history {HOOKE}", spheres, box="0 6 0 6 0 6", extra="""
+        timestep 0.0004
+        neighbor 0.1 bin
+        neigh_modify delay 0 every 1 check yes
+        fix 1 all nve/sphere
+        fix check all test/contacts_held
+        """)
+    sim.command("run 400")
+    check = sim.fixes["check"]
+    print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}")
+    assert sim.neighbors.builds > 20 and sum(check.contacts) > 400
+    assert all(check.exact)
