@@ -441,18 +441,18 @@ class PairLaw(Pair):
         p = sim.particles
         atom = tuple(p.arrays[name] for name in self.law_atom)
         tally = getattr(sim, "tally_atom", False)
+        # one particle type: the loop that reads its pair's cutoff and coefficients once
+        one_type = ("one type",) if len(self.cutsq) == 2 else ()
         if nlist.direct and not tally:
-            self.energy = self._loops[("cells", bool(eflag))](p.x, p.f, p.type, p.nlocal, self.cutsq, self.coeff_table,
-                                                              atom, self.law_state(sim), *nlist.cells)
+            self.energy = self._loops[("cells", bool(eflag), *one_type)](
+                p.x, p.f, p.type, p.nlocal, self.cutsq, self.coeff_table, atom, self.law_state(sim), *nlist.cells)
             return
         args = (p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq, self.coeff_table, atom,
                 self.law_state(sim))
         if tally:
             self.energy = self._loops[(nlist.half_list, "tally")](*args, p.arrays[TALLY])
-        elif len(self.cutsq) == 2:      # one particle type
-            self.energy = self._loops[(nlist.half_list, bool(eflag), "one type")](*args)
         else:
-            self.energy = self._loops[(nlist.half_list, bool(eflag))](*args)
+            self.energy = self._loops[(nlist.half_list, bool(eflag), *one_type)](*args)
 
 
 class Fix(Style):
