@@ -185,6 +185,24 @@ def test_coarse_timestep_is_warned(scene):
                         f"({t_c:.3g}) / 10: collisions lose restitution; use timestep <= {t_c / 10:.3g}"]
 
 
+def hot_gas(scene, style, check, seed):
+    """100 spheres (d 1, m 1) near the sites of a lattice of spacing 1.2 in a periodic box 6 wide,
+    with Gaussian velocities of deviation 8 (lists rebuilt every few steps at timestep 0.0004, skin
+    0.1), pair ``style`` with HOOKE's constants and the fix ``check`` on all."""
+    rng = np.random.default_rng(seed)
+    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
+             + rng.uniform(-0.02, 0.02, (100, 3)))
+    spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
+               for site in sites]
+    return scene(f"{style} {HOOKE}", spheres, box="0 6 0 6 0 6", extra=f"""
+        timestep 0.0004
+        neighbor 0.1 bin
+        neigh_modify delay 0 every 1 check yes
+        fix 1 all nve/sphere
+        fix check all {check}
+        """)
+
+
 class HookeForcesOfEveryPair(Fix):
     """After the pair forces of every step: the largest difference between the forces on the owned
     particles and gran/hooke's (HOOKE, spheres of diameter 1 and mass 1, the box 6 wide) summed over
@@ -220,18 +238,7 @@ def test_forces_of_every_contact_at_every_step_across_rebuilds(scene):
     of every list entry between builds): at every step the forces are gran/hooke's over every pair
     of the box, computed afresh by minimum image."""
     registry.register("fix", "test/hooke_every_pair", HookeForcesOfEveryPair)
-    rng = np.random.default_rng(5)
-    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
-             + rng.uniform(-0.02, 0.02, (100, 3)))
-    spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
-               for site in sites]
-    sim = scene(f"gran/hooke {HOOKE}", spheres, box="0 6 0 6 0 6", extra="""
-        timestep 0.0004
-        neighbor 0.1 bin
-        neigh_modify delay 0 every 1 check yes
-        fix 1 all nve/sphere
-        fix check all test/hooke_every_pair
-        """)
+    sim = hot_gas(scene, "gran/hooke", "test/hooke_every_pair", seed=5)
     sim.command("run 400")
     check = sim.fixes["check"]
     print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}, "
@@ -267,18 +274,7 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene):
     gas whose lists are rebuilt every few steps (between builds only the rows that held or made a
     contact are swept), the slots hold at every step exactly the pairs that touch."""
     registry.register("fix", "test/contacts_held", ContactsHeld)
-    rng = np.random.default_rng(6)
-    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
-             + rng.uniform(-0.02, 0.02, (100, 3)))
-    spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
-               for site in sites]
-    sim = scene(f"gran/hooke/history {HOOKE}", spheres, box="0 6 0 6 0 6", extra="""
-        timestep 0.0004
-        neighbor 0.1 bin
-        neigh_modify delay 0 every 1 check yes
-        fix 1 all nve/sphere
-        fix check all test/contacts_held
-        """)
+    sim = hot_gas(scene, "gran/hooke/history", "test/contacts_held", seed=6)
     sim.command("run 400")
     check = sim.fixes["check"]
     print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}")
