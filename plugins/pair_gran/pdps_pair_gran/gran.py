@@ -355,7 +355,7 @@ class PairGran(Pair):
             partner, values, capacity = self._no_history
         touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
         a = p.arrays
-        rows, touching = self.entry_rows(nlist, p.nlocal)
+        rows, touching = self.list_rows(nlist, p.nlocal)
         npairs = int(nlist.offsets[p.nlocal])
         ntouching = touching_pairs(a["x"], a["radius"], rows, nlist.neighbors, npairs, touching)
         bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
@@ -375,7 +375,7 @@ class PairGran(Pair):
                                   f"raise max_contacts of pair_style {self.name}")
         self.energy = 0.0
 
-    def entry_rows(self, nlist, nlocal):
+    def list_rows(self, nlist, nlocal):
         """The particle of every list entry (made again when the list was rebuilt) and room for the
         touching entries; both grow only with the list."""
         npairs = int(nlist.offsets[nlocal])
