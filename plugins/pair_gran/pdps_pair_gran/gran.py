@@ -355,8 +355,7 @@ class PairGran(Pair):
             partner, values, capacity = self._no_history
         touched = self.touched_flags(p.nall if self.history is not None else 1, capacity)
         a = p.arrays
-        rows, touching = self.list_rows(nlist, p.nlocal)
-        npairs = int(nlist.offsets[p.nlocal])
+        rows, touching, npairs = self.list_rows(nlist, p.nlocal)
         ntouching = touching_pairs(a["x"], a["radius"], rows, nlist.neighbors, npairs, touching)
         bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
                            a.get("body_mass", contact_models.NO_BODY_MASS), a["mask"], a["f"], a["torque"],
@@ -376,8 +375,8 @@ class PairGran(Pair):
         self.energy = 0.0
 
     def list_rows(self, nlist, nlocal):
-        """The particle of every list entry (made again when the list was rebuilt) and room for the
-        touching entries; both grow only with the list."""
+        """The particle of every list entry (made again when the list was rebuilt), room for the
+        touching entries (both grow only with the list) and the number of entries."""
         npairs = int(nlist.offsets[nlocal])
         if self._rows is None or len(self._rows) < npairs:
             size = max(npairs + npairs // 4, 64)
@@ -386,7 +385,7 @@ class PairGran(Pair):
         if self._rows_of != (nlist, nlist.version):
             entry_rows(nlist.offsets, nlocal, self._rows)
             self._rows_of = (nlist, nlist.version)
-        return self._rows, self._touching
+        return self._rows, self._touching, npairs
 
     def forget_stale(self, sim, nlist, owner, touched, rows, touching, ntouching):
         """Forget the contacts this step did not see. On one rank between two list builds only the
