@@ -134,5 +134,6 @@ CONTRACT = {
                   "atom_values": "atom_values(name): an atom-style v_NAME, one float per owned particle (nlocal,)"},
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
              "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",
-             "contacts": "contacts(sim, group) (pair gran): this moment's contacts, rows i, j, forces, history"},
+             "contacts": "contacts(sim, group) (pair gran): this moment's contacts, rows i, j, forces, history",
+             "virial": "six values a style on a full list sets on vflag steps (sum r.f misses its ghosts)"},
 }

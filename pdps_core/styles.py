@@ -235,7 +235,8 @@ class Pair(Style):
     the cutoff of one type pair, from ``self.resolved[(i, j)]``: the pair's explicit or mixed
     coefficients) and ``compute``. The core builds the ``neighbor_list`` kind they ask
     for with the cutoffs ``init_one`` returned, sums ghost forces back (newton on), and derives the
-    virial from sum(x * f) over owned and ghost particles when asked for it.
+    virial from sum(x * f) over owned and ghost particles when asked for it (on a half list; a style
+    on a full list sets ``virial``).
     """
     kind = "pair"
     Coeff: ClassVar[type[StyleArgs]] = StyleArgs
@@ -243,6 +244,11 @@ class Pair(Style):
     neighbor_list: ClassVar[str] = "half"
     # fills the per-particle tally (energy, virial) on the steps ``sim.tally_atom`` asks for it
     peratom_tally: ClassVar[bool] = False
+    # On a full list (each pair seen from both particles, no force on ghosts) sum r.f misses every
+    # pair across a periodic or rank boundary, so a style on one sets ``virial`` itself in compute
+    # on vflag steps (LAMMPS's no_virial_fdotr_compute): xx, yy, zz, xy, xz, yz of its pairs on this
+    # rank (energy units), half of r_ij f_ij for each listed pair.
+    virial = None
 
     def __init__(self, sim, args):
         self.sim = sim
@@ -371,7 +377,8 @@ class PairLaw(Pair):
     The core calls the law for every pair with ``r < cutoff`` and ``r >= 1e-10`` (coincident
     particles have no direction and are skipped), applies Newton's third law on a half list (or
     the force on i only on a full list, ``neighbor_list = "full"``), and tallies energy only on
-    steps that read it; the virial comes from sum(r . f) as for every pair style. The tables are
+    steps that read it; the virial comes from sum(r . f) on a half list, pair by pair on a full one
+    (ghosts there get no force, so sum(r . f) would miss the pairs across a boundary). The tables are
     ``self.coeff_table`` ((ntypes+1, ntypes+1, len(params)), symmetric) and ``self.cutsq``.
 
     When the neighbor list would be rebuilt at nearly every step (DPD at its usual time steps), the
@@ -449,10 +456,23 @@ class PairLaw(Pair):
             return
         args = (p.x, p.f, p.type, nlist.offsets, nlist.neighbors, p.nlocal, self.cutsq, self.coeff_table, atom,
                 self.law_state(sim))
-        if tally:
-            self.energy = self._loops[(nlist.half_list, "tally")](*args, p.arrays[TALLY])
+        if tally or (vflag and not nlist.half_list):
+            rows = p.arrays[TALLY] if tally else self._virial_rows(p.nlocal)
+            self.energy = self._loops[(nlist.half_list, "tally")](*args, rows)
+            if not nlist.half_list:
+                self.virial = rows[:p.nlocal, 1:7].sum(axis=0)
         else:
             self.energy = self._loops[(nlist.half_list, bool(eflag), *one_type)](*args)
+
+
+    def _virial_rows(self, nlocal):
+        """Zeroed per-particle rows of the full-list tally loop, kept between steps: on a full list the
+        virial is the sum of its columns 1-6."""
+        rows = getattr(self, "_rows", None)
+        if rows is None or len(rows) < nlocal:
+            rows = self._rows = np.zeros((nlocal + nlocal // 4 + 16, 7))
+        rows[:nlocal] = 0.0
+        return rows
 
 
 class Fix(Style):

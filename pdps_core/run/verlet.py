@@ -197,8 +197,17 @@ class Verlet:
         if sim.pair is not None:
             t0 = time.perf_counter()
             sim.pair.energy = 0.0
+            full_list = sim.pair.neighbor_list != "half"
+            if vflag and full_list:
+                sim.pair.virial = None
             sim.pair.compute(sim, sim.pair_list, eflag, vflag)
-            if vflag:
+            if vflag and full_list:
+                if sim.pair.virial is None:
+                    raise SimulationError(f"pair style {sim.pair.name} uses a full neighbor list and set no "
+                                          f"virial at step {sim.step} (a style on a full list tallies it: "
+                                          "Pair.virial)")
+                sim.virial[:] = sim.pair.virial
+            elif vflag:
                 x, f = particles.x, particles.f
                 sim.virial[:] = (np.einsum("ij,ij->j", x, f).tolist()
                                  + [float(x[:, 0] @ f[:, 1]), float(x[:, 0] @ f[:, 2]),

