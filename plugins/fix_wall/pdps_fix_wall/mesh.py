@@ -439,40 +439,38 @@ def tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, 
 PDPS_LAWS, LIGGGHTS_LAWS = 0, 1
 
 
-@njit(cache=True)
+def mesh_scratch(most, slots):
+    """The rows mesh_wall_forces works in, for particles with up to ``most`` candidate triangles and
+    ``slots`` history slots each: made outside the kernel, which then allocates nothing."""
+    return (np.empty(most, dtype=np.int64), np.empty((most, 3)), np.empty(most), np.empty(most, dtype=np.bool_),
+            np.empty(most, dtype=np.bool_), np.empty(most), np.empty((most, 3)), np.empty(most, dtype=np.int64),
+            np.empty((most, 3)), np.empty((most, 3)), np.empty((most, 3)), np.empty(slots, dtype=np.bool_),
+            np.empty(most, dtype=np.int64), np.empty((1, 3)), np.empty(3), np.empty(3), np.empty(3), np.empty(3),
+            np.empty(liggghts.HISTORY_WIDTH), np.empty(3), np.empty(3), np.empty(3))
+
+
+# _nrt=False: without numba's reference counting. Its helpers take array views and store under
+# branches, where numba keeps an atomic incref and decref of every array around each call (numba
+# issue #2350): in examples/hopper at step 20,000 (1,394 particles near the mesh, 3,499 candidate
+# triangles, 35 contacts) a call took 1,294 us with it, 261 without. Nothing here allocates: the
+# scratch rows come in.
+@njit(cache=True, _nrt=False)
 def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
                      mass, v, omega, f, torque, rotation, partner, values, family, model, laws,
                      models, table, charvel, nktv2p, wall_type, dt, update, velocity, spin, pivot,
                      belt, conveyor, tally, reference, face_force, mesh_torque, wear_k, face_wear,
-                     face_area, transfer_cos, log, logged):
+                     face_area, transfer_cos, log, logged, scratch):
     """Contacts of the chosen particles with their candidate triangles (module docstring), then the
     forces: with ``family`` PDPS_LAWS the lsd/hertz law of each particle's type (``model``,
     ``laws``: rows of ``wall_contact.LAW_COLUMNS``), with LIGGGHTS_LAWS LIGGGHTS's models
     (``models``, ``table``, ``charvel``, ``nktv2p``; the mesh's material ``wall_type``; contacts
     logged into ``log`` as wall_contact.liggghts_wall_contacts does). With ``tally`` the forces on
     the wall are summed per triangle into ``face_force``, their torque about ``reference`` into
-    ``mesh_torque`` and the wear into ``face_wear`` (tally_wall_forces). Returns -1, or the index
-    of a particle whose contact history overflowed."""
-    most = 1
-    for k in range(len(chosen)):
-        most = max(most, offsets[k + 1] - offsets[k])
-    tri = np.empty(most, dtype=np.int64)
-    point = np.empty((most, 3))
-    gap = np.empty(most)
-    on_face = np.empty(most, dtype=np.bool_)
-    keep = np.empty(most, dtype=np.bool_)
-    distance = np.empty(most)
-    normal = np.empty((most, 3))
-    key = np.empty(most, dtype=np.int64)
-    touch = np.empty((most, 3))
-    wall_velocity = np.empty((most, 3))
-    contact_force = np.empty((most, 3))
-    used = np.empty(partner.shape[1], dtype=np.bool_)
-    slots = np.empty(most, dtype=np.int64)
-    probe = np.empty((1, 3))
-    n, rel, force, spring = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
-    hist = np.empty(liggghts.HISTORY_WIDTH)
-    tangential, roll, wr = np.empty(3), np.empty(3), np.empty(3)
+    ``mesh_torque`` and the wear into ``face_wear`` (tally_wall_forces). ``scratch``: mesh_scratch
+    for the most candidates of a particle. Returns -1, or the index of a particle whose contact
+    history overflowed."""
+    (tri, point, gap, on_face, keep, distance, normal, key, touch, wall_velocity, contact_force, used, slots,
+     probe, n, rel, force, spring, hist, tangential, roll, wr) = scratch
     for k in range(len(chosen)):
         i = chosen[k]
         r = radius[i]
@@ -583,6 +581,8 @@ class MeshContacts:
         self.tags_built = np.zeros(0, dtype=np.int64)
         self.x_built = np.zeros((0, 3))
         self.skin_built = None
+        self.most = 0                   # the most candidate triangles of a visited particle
+        self._scratch = mesh_scratch(0, 0)
 
     def setup(self):
         self.builds = 0
@@ -631,6 +631,7 @@ class MeshContacts:
         self.near = chosen[near]
         self.offsets = np.zeros(len(self.near) + 1, dtype=np.int64)
         np.cumsum(counts[near], out=self.offsets[1:])
+        self.most = int(counts.max()) if len(counts) else 0
         self.all_vertices = np.arange(len(mesh.vertices), dtype=np.int64)
         self.x_built = x
         self.skin_built = skin
@@ -647,6 +648,14 @@ class MeshContacts:
             self.tags_built = p.tag[self.chosen].copy()
         self._rebuild_if_needed(sim, self.chosen, p.radius)
         return self.near, self.offsets, self.candidates
+
+    def scratch(self):
+        """mesh_scratch for the particles visited now and the history's slots (numba checks no
+        bounds: rows for fewer candidates than a particle has would be overrun)."""
+        slots = self.history.partner.shape[1]
+        if len(self._scratch[0]) < self.most or len(self._scratch[11]) != slots:
+            self._scratch = mesh_scratch(self.most + self.most // 4 + 4, slots)
+        return self._scratch
 
     def forces(self, sim, laws, update, tally=None):
         """Wall forces on the group's particles with ``laws`` = (model, per-type law table);
@@ -669,7 +678,7 @@ class MeshContacts:
                                self.history.values, PDPS_LAWS, model, table, *NO_LIGGGHTS_LAW,
                                sim.dt, update, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
                                mesh.conveyor, tally is not None, *(NO_TALLY if tally is None else tally),
-                               mesh.transfer_cos, *NO_LOG)
+                               mesh.transfer_cos, *NO_LOG, self.scratch())
         if bad >= 0:
             self.history.overflowed(p.tag[bad])
 

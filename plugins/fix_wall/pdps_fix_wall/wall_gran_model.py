@@ -383,7 +383,7 @@ class FixWallGranModel(Fix):
                                    self.charvel, sim.units.nktv2p, mesh.material_type, sim.dt, update,
                                    mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
                                    tally is not None, *(NO_TALLY if tally is None else tally), mesh.transfer_cos,
-                                   rows, logged)
+                                   rows, logged, contacts.scratch())
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs.append((number, rows[:logged[0]]))
