@@ -125,24 +125,28 @@ def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance
     return True
 
 
-@njit(cache=True)
+def primitive_scratch(slots):
+    """The rows liggghts_primitive_forces works in, for ``slots`` history slots a particle: made
+    outside the kernel, which then allocates nothing."""
+    return (np.empty(1), np.empty((1, 3)), np.empty((1, 3)), np.zeros(1, dtype=np.int64), np.empty((1, 3)),
+            np.empty((1, 3)), np.empty(slots, dtype=np.bool_), np.empty(1, dtype=np.int64),
+            np.empty(liggghts.HISTORY_WIDTH), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3),
+            np.empty(3))
+
+
+# _nrt=False: no reference counting of the arrays liggghts_wall_contacts takes (it stores under
+# branches, where numba keeps an atomic incref and decref of each around every call: numba issue
+# #2350): examples/liggghts, steps 8,000-10,000 (its zcylinder shell), 151 -> 45 us a step.
+# Nothing here allocates.
+@njit(cache=True, _nrt=False)
 def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, rmass, ptype,
                               wallstyle, position, cylinder, shear, spin, wall_type, models, table,
-                              charvel, nktv2p, dt, update, partner, values, log, logged):
+                              charvel, nktv2p, dt, update, partner, values, log, logged, scratch):
     """The primitive wall's forces on the particles ``near[:count_near]``, logged as
-    liggghts_wall_contacts does. Returns -1, or the index of a particle whose contact history
-    overflowed."""
-    distance = np.empty(1)
-    touch = np.empty((1, 3))
-    normal = np.empty((1, 3))
-    key = np.zeros(1, dtype=np.int64)
-    wall_velocity = np.empty((1, 3))
-    contact_force = np.empty((1, 3))
-    used = np.empty(partner.shape[1], dtype=np.bool_)
-    slots = np.empty(1, dtype=np.int64)
-    hist = np.empty(liggghts.HISTORY_WIDTH)
-    force, tangential, roll = np.empty(3), np.empty(3), np.empty(3)
-    n, vtr, wr = np.empty(3), np.empty(3), np.empty(3)
+    liggghts_wall_contacts does (``scratch``: primitive_scratch). Returns -1, or the index of a
+    particle whose contact history overflowed."""
+    (distance, touch, normal, key, wall_velocity, contact_force, used, slots, hist, force, tangential, roll, n, vtr,
+     wr) = scratch
     for k in range(count_near):
         i = near[k]
         count = 1 if primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance,
@@ -205,6 +209,7 @@ class FixWallGranModel(Fix):
                               for mesh in self.meshes]
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
+        self._primitive_rows = None
         self._not_logged = np.zeros(1, dtype=np.int64)
 
     # ---- script words ----
@@ -350,6 +355,13 @@ class FixWallGranModel(Fix):
         scratch = {"f": np.zeros_like(p.f), "torque": np.zeros_like(p.torque)}
         return self._forces(sim, update=False, log=True, scratch=scratch)
 
+    def _scratch(self, history):
+        """primitive_scratch for the history's slots, made again if their number changed."""
+        slots = history.partner.shape[1]
+        if self._primitive_rows is None or len(self._primitive_rows[6]) != slots:
+            self._primitive_rows = primitive_scratch(slots)
+        return self._primitive_rows
+
     def _forces(self, sim, update, log=False, scratch=None):
         p = sim.particles
         f, torque = (scratch["f"], scratch["torque"]) if scratch else (p.f, p.torque)
@@ -362,7 +374,7 @@ class FixWallGranModel(Fix):
             rows, logged = self._log_buffer(self._count if (log or self.store) else 0)
             bad = liggghts_primitive_forces(self._near, self._count, *common, self.wallstyle, self.position,
                                             self.cylinder, self.shear, self.spin, self.wall_type, *law,
-                                            history.partner, values, rows, logged)
+                                            history.partner, values, rows, logged, self._scratch(history))
             if bad >= 0:
                 history.overflowed(p.tag[bad])
             logs = [(0, rows[:logged[0]])]
