@@ -407,6 +407,7 @@ class PairLaw(Pair):
             self.coeff_table[i, j, :len(values)] = self.coeff_table[j, i, :len(values)] = values
         self.cutsq = cut * cut
         self._loops = None
+        self._full_list_rows = None
         return cut
 
     @property
@@ -464,13 +465,12 @@ class PairLaw(Pair):
         else:
             self.energy = self._loops[(nlist.half_list, bool(eflag), *one_type)](*args)
 
-
     def _virial_rows(self, nlocal):
         """Zeroed per-particle rows of the full-list tally loop, kept between steps: on a full list the
         virial is the sum of its columns 1-6."""
-        rows = getattr(self, "_rows", None)
-        if rows is None or len(rows) < nlocal:
-            rows = self._rows = np.zeros((nlocal + nlocal // 4 + 16, 7))
+        if self._full_list_rows is None or len(self._full_list_rows) < nlocal:
+            self._full_list_rows = np.zeros((nlocal + nlocal // 4 + 16, 7))
+        rows = self._full_list_rows
         rows[:nlocal] = 0.0
         return rows
 

@@ -582,7 +582,7 @@ class MeshContacts:
         self.x_built = np.zeros((0, 3))
         self.skin_built = None
         self.most = 0                   # the most candidate triangles of a visited particle
-        self._scratch = mesh_scratch(0, 0)
+        self._scratch, self._scratch_for = None, (0, 0)       # mesh_scratch and its (most, slots)
 
     def setup(self):
         self.builds = 0
@@ -653,8 +653,9 @@ class MeshContacts:
         """mesh_scratch for the particles visited now and the history's slots (numba checks no
         bounds: rows for fewer candidates than a particle has would be overrun)."""
         slots = self.history.partner.shape[1]
-        if len(self._scratch[0]) < self.most or len(self._scratch[11]) != slots:
-            self._scratch = mesh_scratch(self.most + self.most // 4 + 4, slots)
+        if self._scratch is None or self._scratch_for[0] < self.most or self._scratch_for[1] != slots:
+            most = self.most + self.most // 4 + 4
+            self._scratch, self._scratch_for = mesh_scratch(most, slots), (most, slots)
         return self._scratch
 
     def forces(self, sim, laws, update, tally=None):

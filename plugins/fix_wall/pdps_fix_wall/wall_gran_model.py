@@ -209,7 +209,7 @@ class FixWallGranModel(Fix):
                               for mesh in self.meshes]
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
-        self._primitive_rows = None
+        self._primitive_rows, self._primitive_slots = None, 0      # primitive_scratch, for that many slots
         self._not_logged = np.zeros(1, dtype=np.int64)
 
     # ---- script words ----
@@ -358,8 +358,8 @@ class FixWallGranModel(Fix):
     def _scratch(self, history):
         """primitive_scratch for the history's slots, made again if their number changed."""
         slots = history.partner.shape[1]
-        if self._primitive_rows is None or len(self._primitive_rows[6]) != slots:
-            self._primitive_rows = primitive_scratch(slots)
+        if self._primitive_rows is None or self._primitive_slots != slots:
+            self._primitive_rows, self._primitive_slots = primitive_scratch(slots), slots
         return self._primitive_rows
 
     def _forces(self, sim, update, log=False, scratch=None):
