@@ -75,24 +75,50 @@ LOOP = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps w
 STAGES = ("Pair", "Neigh", "Comm", "Modify", "Output", "Other")
 
 
+def anonymous_kb(pid):
+    """RssAnon (kB) of a process and its descendants (those still running)."""
+    total, pending = 0, [pid]
+    while pending:
+        current = pending.pop()
+        try:
+            with open(f"/proc/{current}/status") as handle:
+                total += next(int(line.split()[1]) for line in handle if line.startswith("RssAnon:"))
+            for task in os.listdir(f"/proc/{current}/task"):
+                with open(f"/proc/{current}/task/{task}/children") as handle:
+                    pending += [int(child) for child in handle.read().split()]
+        except (OSError, StopIteration, ValueError):
+            continue
+    return total
+
+
 def run(command, cwd, env=None):
-    """Run a command; return its output, the peak resident set (MB) of its process tree and the CPU
-    seconds its processes took per second of wall time.
+    """Run a command; return its output, the peak resident set (MB) of its process tree, the CPU
+    seconds its processes took per second of wall time, and the largest anonymous resident memory
+    (MB) of the tree seen by sampling every 20 ms.
 
     Linux counts a parent's resident set at fork into the child's peak: this script imports neither
-    numpy nor pdps, so that what it holds (about 15 MB) stays below every figure it measures.
+    numpy nor pdps, so that what it holds (about 15 MB) stays below every figure it measures. The
+    resident set also counts the pages of shared libraries a process touched, and how many of
+    libllvmlite's are resident moves with the page cache (section "Reading these figures"); the
+    anonymous memory (heap, stacks, private mappings) does not.
     """
     with tempfile.TemporaryFile("w+") as out:
         start = time.perf_counter()
         process = subprocess.Popen(command, cwd=cwd, env=env, stdout=out, stderr=subprocess.STDOUT, text=True)
-        _, status, usage = os.wait4(process.pid, 0)
+        anonymous = 0
+        while True:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                break
+            anonymous = max(anonymous, anonymous_kb(process.pid))
+            time.sleep(0.02)
         wall = time.perf_counter() - start
         process.returncode = os.waitstatus_to_exitcode(status)
         out.seek(0)
         text = out.read()
     if process.returncode != 0:
         sys.exit(f"bench: {' '.join(map(str, command))} failed ({process.returncode}):\n{text[-3000:]}")
-    return text, usage.ru_maxrss / 1024, (usage.ru_utime + usage.ru_stime) / wall
+    return text, usage.ru_maxrss / 1024, (usage.ru_utime + usage.ru_stime) / wall, anonymous / 1024
 
 
 def pdps_command(script, ranks):
@@ -125,17 +151,17 @@ def measure(program, scene, kind, steps, ranks, data):
     variables = ["-var", "scenes", str(data), "-var", "out", str(data), "-var", "nsteps", str(steps),
                  "-var", "navg", str(steps // 2), "-log", "none"]
     if program == "pdps":
-        text, peak, cpu = run(pdps_command(script, ranks) + variables, data)
+        text, peak, cpu, anonymous = run(pdps_command(script, ranks) + variables, data)
         stages = pdps_stages(text)
     else:
-        text, peak, cpu = run(lammps_command(script, ranks) + variables, data)
+        text, peak, cpu, anonymous = run(lammps_command(script, ranks) + variables, data)
         stages = lammps_stages(text)
     loop = LOOP.search(text)
     if loop is None:
         sys.exit(f"bench: no Loop time line from {program} on {scene}:\n{text[-3000:]}")
     seconds, nsteps, particles = float(loop.group(1)), int(loop.group(3)), int(loop.group(4))
     return {"rate": particles * nsteps / seconds, "loop": seconds, "particles": particles, "peak": peak,
-            "stages": stages, "cpu": cpu / ranks}
+            "anonymous": anonymous, "stages": stages, "cpu": cpu / ranks}
 
 
 def median_run(runs):
@@ -184,14 +210,16 @@ KERNEL = "import numba\n\n\n@numba.njit(cache=True)\ndef one(x):\n    return x +
 
 
 def memory_floor(work):
-    """Peak resident set (MB) of what every pdps run is built on, each in a process of its own."""
+    """Peak resident set and anonymous memory (MB) of what every pdps run is built on, each in a
+    process of its own."""
     folder = work / "floor"
     folder.mkdir(exist_ok=True)
     (folder / "kernel.py").write_text(KERNEL)
     peaks = {}
     for label, code in FLOOR:
         for _ in range(2):  # the first run of the kernel compiles it into numba's cache
-            _, peaks[label], _ = run([sys.executable, "-c", code, str(folder)], folder)
+            _, peak, _, anonymous = run([sys.executable, "-c", code, str(folder)], folder)
+            peaks[label] = (peak, anonymous)
     return peaks
 
 
@@ -249,11 +277,12 @@ def report(results, warm, fresh, floor, info, runs):
     for (scene, ranks), (_, _, pdps, lammps) in results.items():
         cells = [f"{pdps['stages'].get(s, 0):.3g} / {lammps['stages'].get(s, 0):.3g}" for s in STAGES]
         lines.append(f"| {scene} | {ranks} | " + " | ".join(cells) + " |")
-    lines += ["", "### Memory (peak resident set of the one-rank runs)", "",
-              "| scene | particles | pdps | LAMMPS |", "|---|---|---|---|"]
+    lines += ["", "### Memory (peak resident set of the one-rank runs; anonymous memory beside it)", "",
+              "| scene | particles | pdps | LAMMPS | pdps, anonymous | LAMMPS, anonymous |", "|---|---|---|---|---|---|"]
     for (scene, ranks), (_, _, pdps, lammps) in results.items():
         if ranks == 1:
-            lines.append(f"| {scene} | {pdps['particles']:,} | {pdps['peak']:.0f} MB | {lammps['peak']:.0f} MB |")
+            lines.append(f"| {scene} | {pdps['particles']:,} | {pdps['peak']:.0f} MB | {lammps['peak']:.0f} MB | "
+                         f"{pdps['anonymous']:.0f} MB | {lammps['anonymous']:.0f} MB |")
     if ("dpd_water", 1) in results and ("dpd_gw", 1) in results:
         water, gw = results[("dpd_water", 1)][2:], results[("dpd_gw", 1)][2:]
         per = [(g["peak"] - w["peak"]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
@@ -262,14 +291,22 @@ def report(results, warm, fresh, floor, info, runs):
                   f"{per[1]:.0f} (target: no more than LAMMPS, {verdict(per[0] <= per[1])}). Fixed cost (the peak "
                   f"at zero particles on that line): {fixed[0]:.0f} MB for pdps, {fixed[1]:.0f} MB for LAMMPS "
                   f"(target: at most {TARGET_FIXED_MB} MB, {verdict(fixed[0] <= TARGET_FIXED_MB)})."]
+        per = [(g["anonymous"] - w["anonymous"]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
+        fixed = [w["anonymous"] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
+        lines += ["", f"The same from anonymous memory (heap and private mappings, sampled every 20 ms; not "
+                  f"the shared libraries' pages, which move with the page cache, and for LAMMPS its launcher "
+                  f"processes included): pdps grows by {per[0]:.0f} bytes per particle, LAMMPS by {per[1]:.0f}; "
+                  f"fixed cost {fixed[0]:.0f} MB for pdps, {fixed[1]:.0f} MB for LAMMPS."]
     if ("no_pair", 1) in results:
         pdps, lammps = results[("no_pair", 1)][2:]
         lines += ["", f"A script with no pair style (in.no_pair): {pdps['peak']:.0f} MB in pdps, "
                   f"{lammps['peak']:.0f} MB in LAMMPS (target: at most {TARGET_FIXED_MB} MB, "
-                  f"{verdict(pdps['peak'] <= TARGET_FIXED_MB)})."]
+                  f"{verdict(pdps['peak'] <= TARGET_FIXED_MB)}); anonymous memory {pdps['anonymous']:.0f} MB and "
+                  f"{lammps['anonymous']:.0f} MB."]
     if floor:
-        lines += ["", "What every run is built on (peak resident set of a process that does only this):", "",
-                  "| process | peak |", "|---|---|"] + [f"| {label} | {peak:.0f} MB |" for label, peak in floor.items()]
+        lines += ["", "What every run is built on (peak resident set of a process that does only this, and its "
+                  "anonymous memory):", "", "| process | peak | anonymous |", "|---|---|---|"]
+        lines += [f"| {label} | {peak:.0f} MB | {anonymous:.0f} MB |" for label, (peak, anonymous) in floor.items()]
     if warm is not None:
         lines += ["", "### Start-up (examples/water.in, process start to its first thermo line)", "",
                   f"- warm (a second run): {warm:.2f} s (target {TARGET_WARM_S} s, {verdict(warm <= TARGET_WARM_S)})",
