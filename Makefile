@@ -29,8 +29,9 @@ fuzz: $(STAMP)
 	PDPS_FUZZ_CASES=$(FUZZ_CASES) PDPS_FUZZ_MPI=200 PDPS_FUZZ_KILLS=100 PDPS_FUZZ_REPORT=$(FUZZ_REPORT) \
 		$(VENV)/bin/python -m pytest tests/fuzz/test_fuzz.py tests/fuzz/test_kill.py -p no:cacheprovider
 
-# pdps beside LAMMPS (../shared/bench/lmp) on LAMMPS's own scenes, back to back, median of three runs:
-# throughput, time per stage, peak memory, start-up; the table goes into docs/performance.md.
+# pdps beside LAMMPS (../shared/bench/lmp, or $$PDPS_LAMMPS_BENCH/lmp) on LAMMPS's own scenes, back to
+# back, median of three runs: throughput, time per stage, peak and anonymous memory, start-up; the
+# table goes into docs/performance.md. Only this target needs LAMMPS; test and the CI do not.
 bench: $(STAMP)
 	$(VENV)/bin/python benchmarks/bench.py
 
