@@ -5,11 +5,13 @@ contact its force computation saw; at the end of the step the contacts it did no
 came apart) are forgotten. Each particle's open slots are kept first in its row, so that sweep reads
 a row only up to its first free slot: most particles touch nothing, and a step costs one read per
 particle rather than one per slot. Between two list builds on one rank, a pair style that knows the
-rows it touched sweeps only those and the rows that kept contacts (``free_stale_of``). The core's
+rows it touched sweeps only those and the rows that kept contacts (``HeldRows``, ``free_stale_of``:
+pair gran's styles from their touching list entries, pair dem's from their contact log). The core's
 ``open_slot`` fills the first free slot, which keeps the rows packed; ``pack_slots`` packs rows
 written by anything else (a restart file, an older run) at the start of a run.
 """
 
+import numpy as np
 from numba import njit
 
 
@@ -93,3 +95,65 @@ def pack_slots(partner, history, nall):
                 for h in range(width):
                     history[i, count * width + h] = history[i, s * width + h]
             count += 1
+
+
+@njit(cache=True)
+def rows_holding(partner, nlocal, held):
+    """The owned rows with an open contact slot (slots are packed: the first one tells) into
+    ``held``; returns how many."""
+    n = 0
+    for i in range(nlocal):
+        if partner[i, 0] >= 0:
+            held[n] = i
+            n += 1
+    return n
+
+
+@njit(cache=True)
+def contact_rows(pairs, npairs, owner, fresh):
+    """The rows whose contact slots the contacts (i, j) of ``pairs`` used: i, and j's owner (j where
+    it has none), two per contact into ``fresh``."""
+    for h in range(npairs):
+        j = pairs[h, 1]
+        fresh[2 * h] = pairs[h, 0]
+        fresh[2 * h + 1] = owner[j] if owner[j] >= 0 else j
+
+
+class HeldRows:
+    """The end-of-step sweep of a pair style's contact slots: on one rank between two builds of the
+    list, only the rows that kept contacts after the last step and the rows touched now can hold a
+    contact, so only those are swept (``sweep_of``, when ``ready``); otherwise every row is
+    (``sweep_all``), and the rows keeping contacts are noted for the next step. ::
+
+        if held.ready(sim, nlist):
+            held.sweep_of(partner, values, touched, fresh, nfresh)     # fresh: the rows touched now
+        else:
+            held.sweep_all(sim, nlist, partner, values, touched)
+    """
+
+    def __init__(self):
+        self.rows = np.empty(0, dtype=np.int64)
+        self.count = 0
+        self._mark = np.zeros(0, dtype=np.bool_)
+        self._of = None         # (list, its version) the rows are valid for
+
+    def invalidate(self):
+        """The next sweep reads every row (the slots changed outside a step: setup, an error)."""
+        self._of = None
+
+    def ready(self, sim, nlist):
+        return sim.comm.nprocs == 1 and self._of == (nlist, nlist.version)
+
+    def sweep_of(self, partner, values, touched, fresh, nfresh):
+        """Forget the contacts this step did not see; ``fresh[:nfresh]`` are the rows it touched."""
+        self.count = free_stale_of(partner, values, touched, self.rows, self.count, fresh, nfresh, self._mark)
+
+    def sweep_all(self, sim, nlist, partner, values, touched):
+        p = sim.particles
+        free_stale(partner, values, touched, p.nlocal, p.nall)
+        if sim.comm.nprocs == 1:
+            if len(self.rows) < p.nlocal:
+                self.rows = np.empty(p.nlocal + p.nlocal // 4, dtype=np.int64)
+                self._mark = np.zeros(len(self.rows), dtype=np.bool_)
+            self.count = rows_holding(partner, p.nlocal, self.rows)
+            self._of = (nlist, nlist.version)

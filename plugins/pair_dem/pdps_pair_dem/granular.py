@@ -42,7 +42,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import free_stale, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, contact_rows, pack_slots
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -249,6 +249,7 @@ class GranularPair(Pair):
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self._log_pairs = None
         self._logged = np.zeros(1, dtype=np.int64)
+        self.held, self._fresh = HeldRows(), np.empty(0, dtype=np.int64)
 
     # ---- start of a run ---------------------------------------------------------------------------
     def init(self, ntypes):
@@ -339,7 +340,9 @@ class GranularPair(Pair):
         if bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
-                free_stale(partner, values, touched, p.nlocal, p.nall)
+                self.forget_stale(sim, nlist, owner, touched)
+        if not update or bad >= 0:
+            self.held.invalidate()
         if bad >= 0:
             touched[:] = False
             raise SimulationError(f"particle {bad} has more than {history.capacity} contacts at step "
@@ -347,6 +350,20 @@ class GranularPair(Pair):
         # contact forces are dissipative: no potential energy is reported (the elastic part is not
         # a potential once friction slides), as LAMMPS's granular pair styles
         self.energy = 0.0
+
+    def forget_stale(self, sim, nlist, owner, touched):
+        """Forget the contacts this step did not see: on one rank between two list builds a sweep of
+        the rows that kept contacts and those of this step's contacts (the contact log), instead of
+        every particle's row (HeldRows)."""
+        partner, values = self.history.partner, self.history.values
+        if not self.held.ready(sim, nlist):
+            self.held.sweep_all(sim, nlist, partner, values, touched)
+            return
+        ncontacts = int(self._logged[0])
+        if len(self._fresh) < 2 * len(self._log_pairs):
+            self._fresh = np.empty(2 * len(self._log_pairs), dtype=np.int64)
+        contact_rows(self._log_pairs, ncontacts, owner, self._fresh)
+        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ncontacts)
 
     def warn_coincident(self, sim, nlist):
         """Spheres whose centres coincide have no contact normal, so they exert no force on each

@@ -41,7 +41,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, lammps_classic
-from pdps_granular_contact.contact_slots import free_stale, free_stale_of, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, pack_slots
 
 HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
@@ -125,18 +125,6 @@ def touched_rows(rows, neighbors, touching, ntouching, owner, fresh):
         j = neighbors[k]
         fresh[2 * h] = rows[k]
         fresh[2 * h + 1] = owner[j] if owner[j] >= 0 else j
-
-
-@njit(cache=True)
-def rows_holding(partner, nlocal, held):
-    """The owned rows with an open contact slot (slots are packed: the first one tells) into
-    ``held``; returns how many."""
-    n = 0
-    for i in range(nlocal):
-        if partner[i, 0] >= 0:
-            held[n] = i
-            n += 1
-    return n
 
 
 # Without numba's reference counting (_nrt=False): the contact helpers store into arrays under
@@ -244,10 +232,8 @@ class PairGran(Pair):
         self.history = None
         self._touched = None
         self._rows = self._touching = self._rows_of = None
-        # rows that kept contacts after the last step, valid for the list build _held_of
-        self._held, self._fresh = np.empty(0, dtype=np.int64), np.empty(0, dtype=np.int64)
-        self._mark = np.zeros(0, dtype=np.bool_)
-        self._nheld, self._held_of = 0, None
+        self.held = HeldRows()
+        self._fresh = np.empty(0, dtype=np.int64)
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
@@ -367,7 +353,7 @@ class PairGran(Pair):
             if bad < 0:
                 self.forget_stale(sim, nlist, owner, touched, rows, touching, ntouching)
         if not update or bad >= 0:
-            self._held_of = None
+            self.held.invalidate()
         if bad >= 0:
             touched[:] = False
             raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "
@@ -388,24 +374,17 @@ class PairGran(Pair):
         return self._rows, self._touching, npairs
 
     def forget_stale(self, sim, nlist, owner, touched, rows, touching, ntouching):
-        """Forget the contacts this step did not see. On one rank between two list builds only the
-        rows that kept contacts last step and those touched now can hold one: a sweep of those
-        instead of every particle's row (gran_box: 15 -> 2 us a step)."""
-        p, partner, values = sim.particles, self.history.partner, self.history.values
-        if sim.comm.nprocs == 1 and self._held_of == (nlist, nlist.version):
-            if len(self._fresh) < 2 * ntouching:
-                self._fresh = np.empty(2 * len(touching), dtype=np.int64)
-            touched_rows(rows, nlist.neighbors, touching, ntouching, owner, self._fresh)
-            self._nheld = free_stale_of(partner, values, touched, self._held, self._nheld, self._fresh,
-                                        2 * ntouching, self._mark)
+        """Forget the contacts this step did not see: on one rank between two list builds a sweep of
+        the rows that kept contacts and those the touching entries used (HeldRows), instead of every
+        particle's row (gran_box: 15 -> 2 us a step)."""
+        partner, values = self.history.partner, self.history.values
+        if not self.held.ready(sim, nlist):
+            self.held.sweep_all(sim, nlist, partner, values, touched)
             return
-        free_stale(partner, values, touched, p.nlocal, p.nall)
-        if sim.comm.nprocs == 1:
-            if len(self._held) < p.nlocal:
-                self._held = np.empty(p.nlocal + p.nlocal // 4, dtype=np.int64)
-                self._mark = np.zeros(len(self._held), dtype=np.bool_)
-            self._nheld = rows_holding(partner, p.nlocal, self._held)
-            self._held_of = (nlist, nlist.version)
+        if len(self._fresh) < 2 * ntouching:
+            self._fresh = np.empty(2 * len(touching), dtype=np.int64)
+        touched_rows(rows, nlist.neighbors, touching, ntouching, owner, self._fresh)
+        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ntouching)
 
     def touched_flags(self, rows, capacity):
         """Which slots a contact touched this step; free_stale clears what it set, so the flags are

@@ -75,7 +75,7 @@ from numba import njit
 
 from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, liggghts
-from pdps_granular_contact.contact_slots import free_stale, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, pack_slots
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
@@ -121,10 +121,12 @@ def store_history(history, owner, i, j, slot_i, slot_j, hist):
 @njit(cache=True, _nrt=False)
 def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                        nlocal, models, table, charvel, nktv2p, freeze_bit, dt, update, partner, history,
-                       touched, n, vtr, wr, hist, force, tangential, roll):
+                       touched, touching, ntouching, n, vtr, wr, hist, force, tangential, roll):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full. The last seven arrays are one contact's scratch (3 each; ``hist``
-    HISTORY_WIDTH)."""
+    contact slots are full. The list entries of the contacts, in list order, go into ``touching``
+    and their number into ``ntouching[0]`` (for the end-of-step sweep). The last seven arrays are
+    one contact's scratch (3 each; ``hist`` HISTORY_WIDTH)."""
+    m = 0
     for i in range(nlocal):
         xi0 = x[i, 0]
         xi1 = x[i, 1]
@@ -167,6 +169,8 @@ def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, 
             slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
+            touching[m] = k
+            m += 1
             liggghts.liggghts_contact(models, False, table, type_[i], type_[j], r, radi, radius[j], rmass[i],
                                       rmass[j], m_eff, n, v_n, vtr, wr, charvel, nktv2p, dt, update, hist,
                                       force, tangential, roll)
@@ -184,6 +188,7 @@ def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, 
             torque[j, 0] += roll[0] - arm_j * cx
             torque[j, 1] += roll[1] - arm_j * cy
             torque[j, 2] += roll[2] - arm_j * cz
+    ntouching[0] = m
     return -1
 
 
@@ -268,6 +273,9 @@ class PairGranModel(PairGran):
         Pair.__init__(self, sim, args)
         self.history = None
         self._touched = None
+        self._rows = self._touching = self._rows_of = None
+        self.held, self._fresh = HeldRows(), np.empty(0, dtype=np.int64)
+        self._ntouching = np.zeros(1, dtype=np.int64)
         self._scratch = tuple(np.zeros(3) for _ in range(3))
         self._contact = (np.zeros(liggghts.HISTORY_WIDTH),) + tuple(np.zeros(3) for _ in range(3))
         self.models = np.array([liggghts.NORMAL_MODELS[args.model], liggghts.TANGENTIAL_MODELS[args.tangential],
@@ -361,16 +369,19 @@ class PairGranModel(PairGran):
         if not update:
             pack_slots(partner, values, p.nall)
         touched = self.touched_flags(p.nall, capacity)
+        rows, touching, _ = self.list_rows(nlist, p.nlocal)
         a = p.arrays
         bad = gran_model_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["type"], a["mask"], a["f"],
                                  a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.models,
                                  self.table, self.charvel, sim.units.nktv2p, self.freeze_bit, sim.dt, update,
-                                 partner, values, touched, self._scratch[0], self._scratch[1], self._scratch[2],
-                                 *self._contact)
+                                 partner, values, touched, touching, self._ntouching, self._scratch[0],
+                                 self._scratch[1], self._scratch[2], *self._contact)
         if bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
-                free_stale(partner, values, touched, p.nlocal, p.nall)
+                self.forget_stale(sim, nlist, owner, touched, rows, touching, int(self._ntouching[0]))
+        if not update or bad >= 0:
+            self.held.invalidate()
         if bad >= 0:
             touched[:] = False
             raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "

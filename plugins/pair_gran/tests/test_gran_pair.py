@@ -185,16 +185,17 @@ def test_coarse_timestep_is_warned(scene):
                         f"({t_c:.3g}) / 10: collisions lose restitution; use timestep <= {t_c / 10:.3g}"]
 
 
-def hot_gas(scene, style, check, seed):
+def hot_gas(scene, style, check, seed, pair=None, material=""):
     """100 spheres (d 1, m 1) near the sites of a lattice of spacing 1.2 in a periodic box 6 wide,
     with Gaussian velocities of deviation 8 (lists rebuilt every few steps at timestep 0.0004, skin
-    0.1), pair ``style`` with HOOKE's constants and the fix ``check`` on all."""
+    0.1), pair ``style`` with HOOKE's constants (or the pair_style words ``pair``, with the fixes of
+    ``material``) and the fix ``check`` on all."""
     rng = np.random.default_rng(seed)
     sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
              + rng.uniform(-0.02, 0.02, (100, 3)))
     spheres = [(1, 1.0, M1, tuple(map(float, site)), tuple(map(float, rng.normal(0.0, 8.0, 3))), (0, 0, 0))
                for site in sites]
-    return scene(f"{style} {HOOKE}", spheres, box="0 6 0 6 0 6", extra=f"""
+    return scene(pair or f"{style} {HOOKE}", spheres, box="0 6 0 6 0 6", extra=material + f"""
         timestep 0.0004
         neighbor 0.1 bin
         neigh_modify delay 0 every 1 check yes
@@ -269,12 +270,24 @@ class ContactsHeld(Fix):
         self.contacts.append(len(touching) // 2)
 
 
-def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene):
-    """gran/hooke/history forgets a contact at the end of the step its spheres came apart: in a hot
-    gas whose lists are rebuilt every few steps (between builds only the rows that held or made a
-    contact are swept), the slots hold at every step exactly the pairs that touch."""
+# LIGGGHTS's Hertz law with a spring, rolling friction and cohesion (pair gran model's own kernel)
+LIGGGHTS_PAIR = "gran model hertz tangential history rolling_friction cdt cohesion sjkr"
+LIGGGHTS_MATERIAL = ("fix m1 all property/global youngsModulus peratomtype 5.e6\n"
+                     "fix m2 all property/global poissonsRatio peratomtype 0.45\n"
+                     "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5\n"
+                     "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5\n"
+                     "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 0.1\n"
+                     "fix m6 all property/global cohesionEnergyDensity peratomtypepair 1 1000.0\n")
+
+
+@pytest.mark.parametrize("pair, material", [(None, ""), (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL)],
+                         ids=["gran/hooke/history", "gran model"])
+def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene, pair, material):
+    """gran/hooke/history and gran model forget a contact at the end of the step its spheres came
+    apart: in a hot gas whose lists are rebuilt every few steps (between builds only the rows that
+    held or made a contact are swept), the slots hold at every step exactly the pairs that touch."""
     registry.register("fix", "test/contacts_held", ContactsHeld)
-    sim = hot_gas(scene, "gran/hooke/history", "test/contacts_held", seed=6)
+    sim = hot_gas(scene, "gran/hooke/history", "test/contacts_held", seed=6, pair=pair, material=material)
     sim.command("run 400")
     check = sim.fixes["check"]
     print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}")
