@@ -233,6 +233,35 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
 
 
 @njit(cache=True)
+def largest_displacement_sq(x, xhold, nlocal):
+    """The largest squared displacement since the last build (the rebuild decision, at every step):
+    four running maxima, so that a particle's comparison need not wait for the last one's."""
+    w0 = w1 = w2 = w3 = 0.0
+    quads = nlocal - nlocal % 4
+    for i in range(0, quads, 4):
+        r = _displacement_sq(x, xhold, i)
+        w0 = r if r > w0 else w0
+        r = _displacement_sq(x, xhold, i + 1)
+        w1 = r if r > w1 else w1
+        r = _displacement_sq(x, xhold, i + 2)
+        w2 = r if r > w2 else w2
+        r = _displacement_sq(x, xhold, i + 3)
+        w3 = r if r > w3 else w3
+    for i in range(quads, nlocal):
+        r = _displacement_sq(x, xhold, i)
+        w0 = r if r > w0 else w0
+    return max(max(w0, w1), max(w2, w3))
+
+
+@njit(cache=True, inline="always")
+def _displacement_sq(x, xhold, i):
+    dx = x[i, 0] - xhold[i, 0]
+    dy = x[i, 1] - xhold[i, 1]
+    dz = x[i, 2] - xhold[i, 2]
+    return dx * dx + dy * dy + dz * dz
+
+
+@njit(cache=True)
 def max_displacement_sq(x, xhold, nlocal):
     """(largest squared displacement since the last build, index of the particle that made it)."""
     worst = 0.0

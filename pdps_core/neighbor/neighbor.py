@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import ScriptError
 from ..state import limits
 from .skin_trial import SkinTrial
-from .kernels import bin_into, bin_particles, build_list, extent, max_displacement_sq
+from .kernels import bin_into, bin_particles, build_list, extent, largest_displacement_sq, max_displacement_sq
 
 ONE_DEFAULT = 2000
 # Rows of neighbors in a list: 32 bits (half the memory and the bandwidth of 64; a rank holds fewer
@@ -137,7 +137,6 @@ class Neighbor:
         self.builds = 0
         self.dangerous = 0
         self.overrun = 0.0          # largest move beyond the whole skin between builds, this run
-        self.moved = (0.0, -1)      # (largest move since the last build, owned index), at the last decision
         self.moved_everywhere = 0.0  # the largest move over all ranks since the last build (inf: not measured)
         self.sort_every = 1000
         self.sort_set = False       # atom_modify sort given: its interval holds in direct mode too
@@ -262,14 +261,20 @@ class Neighbor:
         self.history = ((self.history << 1) | int(rebuild_at_requested)) & HISTORY_MASK
         return rebuild
 
+    def moved(self, particles):
+        """(largest move of this rank's particles since the last build, its owned index): for naming
+        a particle that ran away, so only looked for then."""
+        if self.xhold is None:
+            return 0.0, -1
+        local_sq, who = max_displacement_sq(particles.x, self.xhold, len(self.xhold))
+        return float(np.sqrt(local_sq)), who
+
     def _decide(self, particles, comm):
         self.ago += 1
         if self.ago < self.delay or self.ago % self.every:
             self.moved_everywhere = np.inf
             return False, False
-        local_sq, who = max_displacement_sq(particles.x, self.xhold, len(self.xhold))
-        self.moved = (float(np.sqrt(local_sq)), who)          # this rank's, for naming a particle
-        moved_sq = comm.max(local_sq)                          # every rank decides alike
+        moved_sq = comm.max(largest_displacement_sq(particles.x, self.xhold, len(self.xhold)))
         self.moved_everywhere = float(np.sqrt(moved_sq))
         if self.check:
             limit = 0.5 * self.skin

@@ -16,6 +16,7 @@ import time
 
 import numpy as np
 import pluggy
+from numba import njit
 
 from ..errors import ScriptError, SimulationError
 from ..state import limits
@@ -24,6 +25,13 @@ from ..styles import TALLY
 from .hookspec import HOOKS, TimestepSpec
 from .shrink_wrap import shrink_wrap
 from .timers import timed_hooks
+
+
+@njit(cache=True)
+def _clear(values):
+    """values[...] = 0 (force_clear): a numba call costs half numpy's assignment on a few thousand
+    rows (gran_box's forces and torques: 8.4 -> 5.1 us a step)."""
+    values[:] = 0.0
 
 
 def _implements(style, hook):
@@ -190,9 +198,10 @@ class Verlet:
         sim.tally_atom = bool(self.tally_atom) and (sim.eflag or sim.vflag)
         if sim.tally_atom:
             particles.arrays[TALLY][:] = 0.0
-        particles.f[:] = 0.0
-        if particles.has("torque"):
-            particles.torque[:] = 0.0
+        arrays = particles.arrays
+        _clear(arrays["f"])
+        if "torque" in arrays:
+            _clear(arrays["torque"])
         self._call("pre_force")
         if sim.pair is not None:
             t0 = time.perf_counter()
@@ -256,12 +265,12 @@ class Verlet:
         """A particle that crossed half the box between two neighbor decisions has no meaningful
         trajectory left (its pairs and its image are guesses): stop rather than print garbage."""
         sim = self.sim
-        distance, i = sim.neighbor.moved
         half_box = 0.5 * float(sim.box.length[: sim.dimension].min())
         # every rank knows the largest move of all (the rebuild decision's maximum): the ranks
         # agree on a message only when there is one, not with a collective on every rebuild
         if sim.neighbor.moved_at_build <= half_box:
             return
+        distance, i = sim.neighbor.moved(sim.particles)
         message = None
         if distance > half_box and i >= 0:
             message = (f"particle {int(sim.particles.tag[i])} moved {distance:.3g} since the last neighbor "
