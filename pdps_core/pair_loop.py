@@ -163,13 +163,10 @@ CELL_LOOP = '''
 
 @njit(cache=True)
 def {name}(x, f, type_, nlocal, cutsq, coeff, atom, state, cell, start, ghost_start, order, slot,
-           owned_rows, ghost_rows, inner_lo, inner_hi):
+           owned_rows, ghost_rows, inner_lo, inner_hi, run_begin, run_end, hits):
     """{doc}"""
     energy = 0.0
     n_owned = 1 + len(owned_rows)
-    run_begin = np.empty(n_owned + len(ghost_rows), dtype=np.int64)
-    run_end = np.empty_like(run_begin)
-    hits = np.empty(1024, dtype=np.int64)
 {prologue}    for i in range(nlocal):
 {type_i}        ci = cell[i]
         xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
@@ -188,6 +185,7 @@ def {name}(x, f, type_, nlocal, cutsq, coeff, atom, state, cell, start, ghost_st
                 run_end[s] = ghost_start[ci + ghost_rows[s - n_owned, 1] + 1]
             candidates += run_end[s] - run_begin[s]
         if candidates > len(hits):
+            # a bin denser than the caller's buffer foresaw (Neighbor.direct_scratch)
             hits = np.empty(2 * candidates, dtype=np.int64)
         # first pass: the partners within the cutoff, gathered without branches (a third of the
         # tests would be mispredicted); second pass: their forces

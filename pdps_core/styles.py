@@ -696,12 +696,39 @@ class Region(Style):
         LAMMPS's extent, to which create_atoms random narrows its tries."""
         return self.bounds()
 
-    def surface_contacts(self, x, reach):
+    def surface_contacts(self, x, reach, out=None):
         """Where the region's surface is within ``reach`` of the points ``x`` (n x 3), for walls:
         (indices of the points, their distances to the surface, unit normals pointing from the
-        surface to the point, surface element ids). Several rows per point are allowed (one per
-        face touched)."""
+        surface to the point, surface element ids), in the order of the points. Several rows per
+        point are allowed (one per face touched). With ``out`` (a SurfaceContacts a wall keeps) the
+        rows are written into its buffers and the arrays returned are views of them, so a wall that
+        asks at every step allocates nothing."""
         raise ScriptError(f"region {self.id} ({self.name}) cannot act as a wall")
+
+
+class SurfaceContacts:
+    """Buffers for ``Region.surface_contacts(x, reach, out)``, grown when a call needs more rows
+    (a quarter more than asked, so a slowly growing count does not grow them at every step)."""
+
+    def __init__(self):
+        self.index = np.empty(0, dtype=np.int64)
+        self.distance = np.empty(0)
+        self.normal = np.empty((0, 3))
+        self.element = np.empty(0, dtype=np.int64)
+
+    def room(self, rows):
+        """(index, distance, normal, element) with room for at least ``rows`` rows."""
+        if len(self.index) < rows:
+            size = rows + rows // 4 + 16
+            self.index = np.empty(size, dtype=np.int64)
+            self.distance = np.empty(size)
+            self.normal = np.empty((size, 3))
+            self.element = np.empty(size, dtype=np.int64)
+        return self.index, self.distance, self.normal, self.element
+
+    def rows(self, count):
+        """The first ``count`` rows written, as surface_contacts returns them."""
+        return self.index[:count], self.distance[:count], self.normal[:count], self.element[:count]
 
 
 BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,

@@ -96,6 +96,15 @@ def _periodic_images(x, nlocal, lo, hi, cutghost, periodic, source, shift):
     return n - nlocal
 
 
+@njit(cache=True)
+def _owner_rows(nlocal, source, owners):
+    """owners = 0 .. nlocal-1, then the owned particle each ghost copies."""
+    for i in range(nlocal):
+        owners[i] = i
+    for k in range(len(source)):
+        owners[nlocal + k] = source[k]
+
+
 def _ghost_estimate(nlocal, box, cutghost, periodic):
     """Room for the ghosts of a uniform fluid, a tenth more: the layer of width cutghost around the
     box along its periodic axes, at the particles' density."""
@@ -121,6 +130,7 @@ class SerialComm:
         self._source = np.zeros(0, dtype=np.int64)      # buffers the ghosts' lists are written into
         self._shift = np.zeros((0, 3))
         self._owners = None
+        self._owner_rows = np.zeros(0, dtype=np.int64)     # kept between rebuilds
 
     def exchange(self, particles, box, step):
         p = particles
@@ -160,8 +170,12 @@ class SerialComm:
         """Owned index of every particle, owned or ghost (ghost -> the particle it copies). On one
         rank every ghost's owner is local; the MPI version maps only its own ghosts. Kept until the
         ghosts are made again."""
-        if self._owners is None or len(self._owners) != particles.nlocal + len(self.ghost_source):
-            self._owners = np.concatenate([np.arange(particles.nlocal, dtype=np.int64), self.ghost_source])
+        n = particles.nlocal + len(self.ghost_source)
+        if self._owners is None or len(self._owners) != n:
+            if len(self._owner_rows) < n:
+                self._owner_rows = np.empty(n + n // 4 + 16, dtype=np.int64)
+            self._owners = self._owner_rows[:n]
+            _owner_rows(particles.nlocal, self.ghost_source, self._owners)
         return self._owners
 
     def send_rows(self, rows, ranks):

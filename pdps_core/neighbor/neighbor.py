@@ -59,6 +59,9 @@ DIRECT_SORT_EVERY = 100
 # one rank and 0.48 -> 0.35 s on two; a whole cutoff (112 rebuilds) is no faster and holds 8,000 more
 # ghosts (peak memory growth from dpd_water to dpd_gw 285 -> 296 bytes a particle; 411 with a cutoff).
 DIRECT_SKIN = 0.5
+# Room for one particle's candidate partners in the cell loops (the particles of its stencil's bins;
+# about 100 in dense LJ or DPD): a denser bin makes the loop allocate more for that call
+DIRECT_PARTNERS = 1024
 NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
 
 
@@ -149,6 +152,9 @@ class Neighbor:
         self._cell = self._order = self._slot = self._start = self._ghost_start = np.zeros(0, dtype=BIN_INDEX)
         self._last_grid = {}
         self._direct = {name: np.zeros(0, dtype=BIN_INDEX) for name in ("cell", "start", "ghost_start", "order", "slot")}
+        # the cell loops' scratch (pdps_core.pair_loop): runs of a stencil, partners of one particle
+        self._direct.update(run_begin=np.zeros(0, dtype=np.int64), run_end=np.zeros(0, dtype=np.int64),
+                            hits=np.empty(DIRECT_PARTNERS, dtype=np.int64))
         self.history = 0            # the last rebuild decisions, one bit each (1: rebuilt)
         self.skin_trial = None      # neighbor auto: a SkinTrial until it has chosen
         self.moved_at_build = 0.0   # the largest move since the last build seen at a rebuild (the trial's)
@@ -392,8 +398,9 @@ class Neighbor:
         bins = self._direct
         ncells = int(np.prod(nbins))
         if len(bins["start"]) < ncells + 1:
-            bins["start"] = np.empty(ncells + 1, dtype=BIN_INDEX)
-            bins["ghost_start"] = np.empty(ncells + 1, dtype=BIN_INDEX)
+            size = ncells + ncells // 4 + 16
+            bins["start"] = np.empty(size, dtype=BIN_INDEX)
+            bins["ghost_start"] = np.empty(size, dtype=BIN_INDEX)
         if len(bins["cell"]) < p.nall:
             size = int(1.25 * p.nall) + 16
             bins["cell"], bins["order"] = np.empty(size, dtype=BIN_INDEX), np.empty(size, dtype=BIN_INDEX)
@@ -408,8 +415,13 @@ class Neighbor:
         inner_lo, inner_hi = owned_lo_hi[0] + margin, owned_lo_hi[1] - margin
         if box.dimension == 2:
             inner_lo[2], inner_hi[2] = -np.inf, np.inf
-        return (bins["cell"], bins["start"], bins["ghost_start"], bins["order"], bins["slot"],
-                self._stencil(grid, cut, True), self._stencil(grid, cut, "above"), inner_lo, inner_hi)
+        owned_rows, ghost_rows = self._stencil(grid, cut, True), self._stencil(grid, cut, "above")
+        # the cell loops' scratch: the runs of one particle's stencil and its partners within the cutoff
+        runs = 1 + len(owned_rows) + len(ghost_rows)
+        if len(bins["run_begin"]) < runs:
+            bins["run_begin"], bins["run_end"] = np.empty(runs, dtype=np.int64), np.empty(runs, dtype=np.int64)
+        return (bins["cell"], bins["start"], bins["ghost_start"], bins["order"], bins["slot"], owned_rows,
+                ghost_rows, inner_lo, inner_hi, bins["run_begin"], bins["run_end"], bins["hits"])
 
     def build_occasional(self, nlist, particles, box, step):
         """Build an occasional list now, from the current positions of owned particles and ghosts
@@ -430,8 +442,10 @@ class Neighbor:
         lo, binsize, nbins, keep_off = grid
         ncells = int(np.prod(nbins))
         if len(self._start) < ncells + 1:
-            self._start = np.empty(ncells + 1, dtype=BIN_INDEX)
-            self._ghost_start = np.empty(ncells + 1, dtype=BIN_INDEX)
+            # a quarter more: a grid that follows the particles along a fixed boundary grows often
+            size = ncells + ncells // 4 + 16
+            self._start = np.empty(size, dtype=BIN_INDEX)
+            self._ghost_start = np.empty(size, dtype=BIN_INDEX)
         if len(self._cell) < p.nall:
             size = int(1.25 * p.nall) + 16
             self._cell, self._order = np.empty(size, dtype=BIN_INDEX), np.empty(size, dtype=BIN_INDEX)

@@ -385,7 +385,8 @@ class Particles:
         for name, prop in self.properties.items():
             store = self._store[name]
             if prop.ghost:
-                np.take(store[:self.nlocal], source, axis=0, out=store[self.nlocal:self.nlocal + n])
+                # mode clip: numpy's default (raise) copies through a buffer as large as the output
+                np.take(store[:self.nlocal], source, axis=0, out=store[self.nlocal:self.nlocal + n], mode="clip")
             else:
                 store[self.nlocal:self.nlocal + n] = 0
         self._store["x"][self.nlocal:self.nlocal + n] += shift

@@ -68,7 +68,7 @@ Example (PDPS manual)::
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, observables
+from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, observables
 from pdps_granular_contact import contact_models
 
 from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
@@ -99,6 +99,32 @@ def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach
         if not ok:
             return i
     return -1
+
+
+@njit(cache=True)
+def merge_contacts(index_a, distance_a, normal_a, key_a, index_b, distance_b, normal_b, element_b, wall_b,
+                   index, distance, normal, key):
+    """The contacts a (with their history keys) and those of wall number ``wall_b`` (element ids),
+    both in point order, merged in point order, a's first at a point (as a stable sort of a then
+    b); b's keys become wall_b << ELEMENT_BITS | element. Returns how many rows."""
+    na, nb = len(index_a), len(index_b)
+    ka = kb = 0
+    for m in range(na + nb):
+        if kb >= nb or (ka < na and index_a[ka] <= index_b[kb]):
+            index[m] = index_a[ka]
+            distance[m] = distance_a[ka]
+            key[m] = key_a[ka]
+            for d in range(3):
+                normal[m, d] = normal_a[ka, d]
+            ka += 1
+        else:
+            index[m] = index_b[kb]
+            distance[m] = distance_b[kb]
+            key[m] = (wall_b << ELEMENT_BITS) + element_b[kb]
+            for d in range(3):
+                normal[m, d] = normal_b[kb, d]
+            kb += 1
+    return na + nb
 
 
 @njit(cache=True)
@@ -155,11 +181,15 @@ class FixWallDEM(Fix):
         self.cutoff = cutoff
         self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
         self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0
+        # positions of the near particles and their contacts' offsets, in buffers kept between rebuilds
+        self._x_near_rows, self._offset_rows = np.empty((0, 3)), np.empty(1, dtype=np.int64)
         self._cutoffs = np.empty(0)
         self._still, self._slots = np.zeros((0, 3)), np.empty(0, dtype=np.int64)
         self._contact_force = np.empty((0, 3))
         self._used = np.empty(self.history.capacity, dtype=np.bool_)
         self._vectors = tuple(np.empty(3) for _ in range(4))      # dem_wall_forces' n, rel, force, spring
+        self._rows = [SurfaceContacts() for _ in self.regions]    # each region's contacts of a step
+        self._merged = (SurfaceContacts(), SurfaceContacts())      # merge_contacts' results, in turn
 
     def setup(self, sim):
         chosen = np.flatnonzero(sim.groups.select(sim, self.group))
@@ -192,30 +222,29 @@ class FixWallDEM(Fix):
         self._farthest = float(reach[chosen].max()) if len(chosen) else 0.0
         x = p.x[chosen]
         flags = np.zeros(len(chosen), dtype=np.bool_)
-        for region in self.regions:
-            flags[region.surface_contacts(x, self._farthest + sim.neighbor.skin)[0]] = True
+        for region, out in zip(self.regions, self._rows):
+            flags[region.surface_contacts(x, self._farthest + sim.neighbor.skin, out)[0]] = True
         forget_far(self.history.partner, chosen, flags)
         self._near = chosen[flags]
-        self._x_near = np.empty((len(self._near), 3))
-        self._offsets = np.empty(len(self._near) + 1, dtype=np.int64)
+        n = len(self._near)
+        if len(self._x_near_rows) < n:
+            self._x_near_rows = np.empty((n + n // 4 + 16, 3))
+            self._offset_rows = np.empty(len(self._x_near_rows) + 1, dtype=np.int64)
+        self._x_near, self._offsets = self._x_near_rows[:n], self._offset_rows[:n + 1]
 
     def _forces(self, sim, update):
         p = sim.particles
         a = p.arrays
         near, x = self._near, self._x_near
-        np.take(a["x"], near, axis=0, out=x)
-        parts = [region.surface_contacts(x, self._farthest) for region in self.regions]
-        if len(parts) == 1:
-            index, distance, normal, key = parts[0]
-            normal = np.ascontiguousarray(normal)
-        else:
-            index = np.concatenate([part[0] for part in parts])
-            order = np.argsort(index, kind="stable")
-            index = index[order]
-            distance = np.concatenate([part[1] for part in parts])[order]
-            normal = np.ascontiguousarray(np.concatenate([part[2] for part in parts])[order])
-            key = np.concatenate([(np.int64(w) << ELEMENT_BITS) + part[3]
-                                  for w, part in enumerate(parts)])[order]
+        # mode clip: numpy's default (raise) buffers the output to keep it whole on a bad index
+        np.take(a["x"], near, axis=0, out=x, mode="clip")
+        parts = [region.surface_contacts(x, self._farthest, out) for region, out in zip(self.regions, self._rows)]
+        index, distance, normal, key = parts[0]
+        for wall in range(1, len(parts)):
+            merged = self._merged[wall % 2]
+            count = merge_contacts(index, distance, normal, key, *parts[wall], wall,
+                                   *merged.room(len(index) + len(parts[wall][0])))
+            index, distance, normal, key = merged.rows(count)
         contact_offsets(index, len(near), self._offsets)
         if len(self._still) < len(index):
             self._still = np.zeros((2 * len(index), 3))

@@ -169,6 +169,26 @@ def test_polygon_edge_contact_and_two_walls_add_up(scene):
     np.testing.assert_array_equal(f, 0.0)
 
 
+@pytest.mark.parametrize("order", [(0, 1), (1, 0)])
+def test_two_spheres_in_a_closed_cylinder_each_feel_their_own_wall(scene, order):
+    """One sphere rests on the bottom cap of a closed cylinder, the other against its curved wall:
+    each feels k_n times its own overlap along its own wall's normal, whichever comes first (the
+    cylinder's contacts must come in the order of the points)."""
+    sim = scene()
+    positions = [(0.0, 0.0, 0.4), (1.7, 0.0, 2.0)]
+    expected = [KN * 0.1 * np.array([0.0, 0.0, 1.0]), KN * 0.2 * np.array([-1.0, 0.0, 0.0])]
+    for k in order:
+        x, y, z = positions[k]
+        sim.command(f"create_particle 1 single {x} {y} {z} diameter 1 density 1")
+    sim.command(f"""
+        region can cylinder z 0 0 2 0 4
+        fix w all wall/dem lsd region can {E} {KN} 0 0 0 0 0.5
+        run 0
+    """)
+    for tag, k in enumerate(order, 1):
+        np.testing.assert_allclose(sim.f[sim.particles.index_of_tag(tag)], expected[k], rtol=1e-12)
+
+
 def test_sliding_sphere_starts_rolling_at_five_sevenths_of_its_speed(scene):
     """A sphere put on the floor sliding at v0 without spin: friction mu m g slows it and spins it up
     until it rolls, at v = 5/7 v0 with omega R = v, after t = 2 v0 / (7 mu g) (torque on the

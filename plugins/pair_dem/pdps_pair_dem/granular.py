@@ -249,7 +249,7 @@ class GranularPair(Pair):
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self._log_pairs = None
         self._logged = np.zeros(1, dtype=np.int64)
-        self.held, self._fresh = HeldRows(), np.empty(0, dtype=np.int64)
+        self.held = HeldRows()
 
     # ---- start of a run ---------------------------------------------------------------------------
     def init(self, ntypes):
@@ -360,8 +360,6 @@ class GranularPair(Pair):
             self.held.sweep_all(sim, nlist, partner, values, touched)
             return
         ncontacts = int(self._logged[0])
-        if len(self._fresh) < 2 * len(self._log_pairs):
-            self._fresh = np.empty(2 * len(self._log_pairs), dtype=np.int64)
         contact_rows(self._log_pairs, ncontacts, owner, self._fresh)
         self.held.sweep_of(partner, values, touched, self._fresh, 2 * ncontacts)
 
@@ -398,6 +396,7 @@ class GranularPair(Pair):
         if self._log_pairs is None or len(self._log_pairs) < size:
             self._log_pairs = np.empty((size, 2), dtype=np.int64)
             self._log_force = np.empty((size, 3))
+            self._fresh = np.empty(2 * size, dtype=np.int32)      # the rows of each logged contact
         self._logged[0] = 0
         return self._log_pairs, self._log_force, self._logged
 

@@ -390,7 +390,7 @@ class FixShardlow(Fix):
         if p.has("rmass"):
             np.divide(1.0, p.rmass[:count], out=out)
         else:
-            np.take(sim.mass, p.type[:count], out=out)
+            np.take(sim.mass, p.type[:count], out=out, mode="clip")       # clip: no buffered copy
             np.divide(1.0, out, out=out)
         return out
 

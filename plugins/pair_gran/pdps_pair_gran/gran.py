@@ -233,7 +233,6 @@ class PairGran(Pair):
         self._touched = None
         self._rows = self._touching = self._rows_of = None
         self.held = HeldRows()
-        self._fresh = np.empty(0, dtype=np.int64)
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
@@ -367,6 +366,8 @@ class PairGran(Pair):
         if self._rows is None or len(self._rows) < npairs:
             size = max(npairs + npairs // 4, 64)
             self._rows, self._touching = np.empty(size, dtype=np.int32), np.empty(size, dtype=np.int32)
+            # the two rows of every touching entry, for the end-of-step sweep (forget_stale)
+            self._fresh = np.empty(2 * size, dtype=np.int32)
             self._rows_of = None
         if self._rows_of != (nlist, nlist.version):
             entry_rows(nlist.offsets, nlocal, self._rows)
@@ -381,8 +382,6 @@ class PairGran(Pair):
         if not self.held.ready(sim, nlist):
             self.held.sweep_all(sim, nlist, partner, values, touched)
             return
-        if len(self._fresh) < 2 * ntouching:
-            self._fresh = np.empty(2 * len(touching), dtype=np.int64)
         touched_rows(rows, nlist.neighbors, touching, ntouching, owner, self._fresh)
         self.held.sweep_of(partner, values, touched, self._fresh, 2 * ntouching)
 

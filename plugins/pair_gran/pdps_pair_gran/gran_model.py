@@ -274,7 +274,7 @@ class PairGranModel(PairGran):
         self.history = None
         self._touched = None
         self._rows = self._touching = self._rows_of = None
-        self.held, self._fresh = HeldRows(), np.empty(0, dtype=np.int64)
+        self.held = HeldRows()
         self._ntouching = np.zeros(1, dtype=np.int64)
         self._scratch = tuple(np.zeros(3) for _ in range(3))
         self._contact = (np.zeros(liggghts.HISTORY_WIDTH),) + tuple(np.zeros(3) for _ in range(3))

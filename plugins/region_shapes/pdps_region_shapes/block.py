@@ -37,7 +37,7 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Region, RegionArgs, ScriptError, param
+from pdps_core.api import Region, RegionArgs, ScriptError, SurfaceContacts, param
 
 HUGE = 1e300
 
@@ -48,15 +48,11 @@ EXTERIOR = 6        # element id of a contact from outside (face, edge or corner
 
 
 @njit(cache=True)
-def block_contacts(x, lo, hi, reach):
-    """Contacts of points x with the block's surface closer than reach (see the module docstring)."""
-    n = x.shape[0]
-    index = np.empty(6 * n, dtype=np.int64)
-    distance = np.empty(6 * n)
-    normal = np.zeros((6 * n, 3))
-    element = np.empty(6 * n, dtype=np.int64)
+def block_contacts(x, lo, hi, reach, index, distance, normal, element):
+    """Contacts of points x with the block's surface closer than reach (see the module docstring),
+    written into the buffers (room for 6 rows a point); returns how many."""
     m = 0
-    for p in range(n):
+    for p in range(x.shape[0]):
         inside = True
         for d in range(3):
             if x[p, d] < lo[d] or x[p, d] > hi[d]:
@@ -68,25 +64,25 @@ def block_contacts(x, lo, hi, reach):
                     if gap < reach:
                         index[m] = p
                         distance[m] = gap
+                        for e in range(3):
+                            normal[m, e] = 0.0
                         normal[m, d] = 1.0 if side == 0 else -1.0
                         element[m] = 2 * d + side
                         m += 1
         else:
-            gap_sq = 0.0
-            delta = np.empty(3)
-            for d in range(3):
-                closest = min(max(x[p, d], lo[d]), hi[d])
-                delta[d] = x[p, d] - closest
-                gap_sq += delta[d] * delta[d]
-            gap = math.sqrt(gap_sq)
+            dx = x[p, 0] - min(max(x[p, 0], lo[0]), hi[0])
+            dy = x[p, 1] - min(max(x[p, 1], lo[1]), hi[1])
+            dz = x[p, 2] - min(max(x[p, 2], lo[2]), hi[2])
+            gap = math.sqrt(dx * dx + dy * dy + dz * dz)
             if gap < reach:
                 index[m] = p
                 distance[m] = gap
-                for d in range(3):
-                    normal[m, d] = delta[d] / gap
+                normal[m, 0] = dx / gap
+                normal[m, 1] = dy / gap
+                normal[m, 2] = dz / gap
                 element[m] = EXTERIOR
                 m += 1
-    return index[:m], distance[:m], normal[:m], element[:m]
+    return m
 
 
 class RegionBlock(Region):
@@ -147,6 +143,7 @@ class RegionBlock(Region):
     def extent(self):
         return self.lo.copy(), self.hi.copy()
 
-    def surface_contacts(self, x, reach):
+    def surface_contacts(self, x, reach, out=None):
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
-        return block_contacts(x, self.lo, self.hi, float(reach))
+        out = out if out is not None else SurfaceContacts()
+        return out.rows(block_contacts(x, self.lo, self.hi, float(reach), *out.room(6 * len(x))))

@@ -16,9 +16,10 @@ LAMMPS scales them. Points on the surface are inside. Example::
 import math
 
 import numpy as np
+from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Region, RegionArgs, ScriptError, param
+from pdps_core.api import Region, RegionArgs, ScriptError, SurfaceContacts, param
 
 HUGE = 1e300
 OTHER = {"x": (1, 2), "y": (0, 2), "z": (0, 1)}
@@ -34,6 +35,44 @@ def bound(value, name):
     if not math.isfinite(number):
         raise ValueError(f"{name} must be a number, INF, -INF or EDGE (got {value})")
     return value
+
+
+@njit(cache=True)
+def cylinder_contacts(x, axis, a, b, c1, c2, radius, lo, hi, lo_cap, hi_cap, reach, index, distance, normal,
+                      element):
+    """RegionCylinder.surface_contacts into the buffers (room for 3 rows a point); returns how many."""
+    m = 0
+    for p in range(x.shape[0]):
+        along = x[p, axis]
+        if along < lo or along > hi:
+            continue
+        d1 = x[p, a] - c1
+        d2 = x[p, b] - c2
+        rho = math.sqrt(d1 * d1 + d2 * d2)
+        if abs(rho - radius) < reach and rho > 0.0:
+            side = -1.0 if rho < radius else 1.0       # towards the axis from inside
+            index[m] = p
+            distance[m] = abs(rho - radius)
+            normal[m, axis] = 0.0
+            normal[m, a] = side * d1 / rho
+            normal[m, b] = side * d2 / rho
+            element[m] = 0
+            m += 1
+        if rho > radius:
+            continue
+        for cap in range(2):
+            if not (lo_cap if cap == 0 else hi_cap):
+                continue
+            gap = along - lo if cap == 0 else hi - along
+            if gap < reach:
+                index[m] = p
+                distance[m] = gap
+                normal[m, a] = 0.0
+                normal[m, b] = 0.0
+                normal[m, axis] = 1.0 if cap == 0 else -1.0
+                element[m] = 1 + cap
+                m += 1
+    return m
 
 
 class RegionCylinder(Region):
@@ -83,37 +122,15 @@ class RegionCylinder(Region):
         along = x[:, self.axis]
         return (np.sqrt(d1 * d1 + d2 * d2) <= self.radius) & (along >= self.lo) & (along <= self.hi)
 
-    def surface_contacts(self, x, reach):
+    def surface_contacts(self, x, reach, out=None):
         """Points within reach of the curved wall (from inside or outside, along the cylinder's length)
         or of a finite end cap (from inside): element 0 the curved wall, 1 the lo cap, 2 the hi cap."""
-        x = np.asarray(x, dtype=np.float64).reshape(-1, 3)
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        out = out if out is not None else SurfaceContacts()
         a, b = self.across
-        d1, d2 = x[:, a] - self.c[0], x[:, b] - self.c[1]
-        rho = np.sqrt(d1 * d1 + d2 * d2)
-        along = x[:, self.axis]
-        within = (along >= self.lo) & (along <= self.hi)
-        rows, gaps, normals, elements = [], [], [], []
-        wall = np.flatnonzero(within & (np.abs(rho - self.radius) < reach) & (rho > 0))
-        outward = np.zeros((len(wall), 3))
-        outward[:, a], outward[:, b] = d1[wall] / rho[wall], d2[wall] / rho[wall]
-        inside = rho[wall] < self.radius
-        rows.append(wall)
-        gaps.append(np.abs(rho[wall] - self.radius))
-        normals.append(np.where(inside[:, None], -outward, outward))
-        elements.append(np.zeros(len(wall), dtype=np.int64))
-        for element, end, sign in ((1, self.lo, 1.0), (2, self.hi, -1.0)):
-            if abs(end) >= HUGE:
-                continue
-            gap = sign * (along - end)
-            cap = np.flatnonzero(within & (rho <= self.radius) & (gap < reach))
-            normal = np.zeros((len(cap), 3))
-            normal[:, self.axis] = sign
-            rows.append(cap)
-            gaps.append(gap[cap])
-            normals.append(normal)
-            elements.append(np.full(len(cap), element, dtype=np.int64))
-        return (np.concatenate(rows), np.concatenate(gaps), np.concatenate(normals),
-                np.concatenate(elements))
+        return out.rows(cylinder_contacts(x, self.axis, a, b, self.c[0], self.c[1], self.radius, self.lo, self.hi,
+                                          abs(self.lo) < HUGE, abs(self.hi) < HUGE, float(reach),
+                                          *out.room(3 * len(x))))
 
     def bounds(self):
         if abs(self.lo) >= HUGE or abs(self.hi) >= HUGE:

@@ -13,8 +13,9 @@ cannot make a box, and a lattice filled through it takes the box's sites. Exampl
 """
 
 import numpy as np
+from numba import njit
 
-from pdps_core.api import Region, RegionArgs, ScriptError, param
+from pdps_core.api import Region, RegionArgs, ScriptError, SurfaceContacts, param
 
 
 class RegionPlane(Region):
@@ -44,9 +45,25 @@ class RegionPlane(Region):
         p, n = self.point, self.normal
         return (x[:, 0] - p[0]) * n[0] + (x[:, 1] - p[1]) * n[1] + (x[:, 2] - p[2]) * n[2] >= 0.0
 
-    def surface_contacts(self, x, reach):
-        x = np.asarray(x, dtype=np.float64).reshape(-1, 3)
-        h = (x - self.point) @ self.normal
-        index = np.flatnonzero(np.abs(h) < reach)
-        normal = np.where((h[index] >= 0)[:, None], self.normal, -self.normal)
-        return index, np.abs(h[index]), normal, np.zeros(len(index), dtype=np.int64)
+    def surface_contacts(self, x, reach, out=None):
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        out = out if out is not None else SurfaceContacts()
+        return out.rows(plane_contacts(x, self.point, self.normal, float(reach), *out.room(len(x))))
+
+
+@njit(cache=True)
+def plane_contacts(x, point, unit, reach, index, distance, normal, element):
+    """Points within reach of the plane (from either side, the normal towards the point), written
+    into the buffers (room for one row a point); returns how many."""
+    m = 0
+    for p in range(x.shape[0]):
+        height = (x[p, 0] - point[0]) * unit[0] + (x[p, 1] - point[1]) * unit[1] + (x[p, 2] - point[2]) * unit[2]
+        if abs(height) < reach:
+            side = 1.0 if height >= 0.0 else -1.0
+            index[m] = p
+            distance[m] = abs(height)
+            for d in range(3):
+                normal[m, d] = side * unit[d]
+            element[m] = 0
+            m += 1
+    return m

@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Region, ScriptError, StyleArgs
+from pdps_core.api import Region, ScriptError, StyleArgs, SurfaceContacts
 
 
 @njit(cache=True)
@@ -52,21 +52,18 @@ def inside_polygon(a, b, corners):
 
 
 @njit(cache=True)
-def polygon_contacts(x, points, normal, u_axis, v_axis, corners, reach):
-    """Contacts of points x with the polygon closer than reach (see the module docstring)."""
-    n = x.shape[0]
+def polygon_contacts(x, points, normal, u_axis, v_axis, corners, reach, index, distance, direction, element):
+    """Contacts of points x with the polygon closer than reach (see the module docstring), written
+    into the buffers (room for one row a point); returns how many."""
     k = points.shape[0]
-    index = np.empty(n, dtype=np.int64)
-    distance = np.empty(n)
-    direction = np.empty((n, 3))
     m = 0
-    rel = np.empty(3)
-    for p in range(n):
-        for d in range(3):
-            rel[d] = x[p, d] - points[0, d]
-        height = rel[0] * normal[0] + rel[1] * normal[1] + rel[2] * normal[2]
-        a = rel[0] * u_axis[0] + rel[1] * u_axis[1] + rel[2] * u_axis[2]
-        b = rel[0] * v_axis[0] + rel[1] * v_axis[1] + rel[2] * v_axis[2]
+    for p in range(x.shape[0]):
+        r0 = x[p, 0] - points[0, 0]
+        r1 = x[p, 1] - points[0, 1]
+        r2 = x[p, 2] - points[0, 2]
+        height = r0 * normal[0] + r1 * normal[1] + r2 * normal[2]
+        a = r0 * u_axis[0] + r1 * u_axis[1] + r2 * u_axis[2]
+        b = r0 * v_axis[0] + r1 * v_axis[1] + r2 * v_axis[2]
         if inside_polygon(a, b, corners):
             gap = abs(height)
             side = 1.0 if height >= 0.0 else -1.0
@@ -97,8 +94,9 @@ def polygon_contacts(x, points, normal, u_axis, v_axis, corners, reach):
         if gap < reach:
             index[m] = p
             distance[m] = gap
+            element[m] = 0
             m += 1
-    return index[:m], distance[:m], direction[:m], np.zeros(m, dtype=np.int64)
+    return m
 
 
 class RegionPolygon(Region):
@@ -141,7 +139,8 @@ class RegionPolygon(Region):
         rel = self.points - self.points[0]
         self.corners = np.column_stack([rel @ self.u_axis, rel @ self.v_axis])
 
-    def surface_contacts(self, x, reach):
+    def surface_contacts(self, x, reach, out=None):
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
-        return polygon_contacts(x, self.points, self.normal, self.u_axis, self.v_axis, self.corners,
-                                float(reach))
+        out = out if out is not None else SurfaceContacts()
+        return out.rows(polygon_contacts(x, self.points, self.normal, self.u_axis, self.v_axis, self.corners,
+                                         float(reach), *out.room(len(x))))

@@ -12,9 +12,12 @@ them). Points on the surface are inside. Example::
     group inner region ball
 """
 
-import numpy as np
+import math
 
-from pdps_core.api import Region, RegionArgs, ScriptError, param
+import numpy as np
+from numba import njit
+
+from pdps_core.api import Region, RegionArgs, ScriptError, SurfaceContacts, param
 
 
 class RegionSphere(Region):
@@ -40,16 +43,32 @@ class RegionSphere(Region):
     def bounds(self):
         return self.centre - self.radius, self.centre + self.radius
 
-    def surface_contacts(self, x, reach):
+    def surface_contacts(self, x, reach, out=None):
         """Points within reach of the sphere's surface, from inside or outside (one contact each)."""
-        x = np.asarray(x, dtype=np.float64).reshape(-1, 3)
-        d = x - self.centre
-        r = np.sqrt(np.einsum("ij,ij->i", d, d))
-        gap = np.abs(r - self.radius)
-        index = np.flatnonzero((gap < reach) & (r > 0))
         if self.radius <= 0:
             raise ScriptError(f"region {self.id}: a sphere of radius 0 cannot act as a wall")
-        outward = d[index] / r[index, None]
-        inside = r[index] < self.radius
-        normal = np.where(inside[:, None], -outward, outward)
-        return index, gap[index], normal, np.zeros(len(index), dtype=np.int64)
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        out = out if out is not None else SurfaceContacts()
+        return out.rows(sphere_contacts(x, self.centre, self.radius, float(reach), *out.room(len(x))))
+
+
+@njit(cache=True)
+def sphere_contacts(x, centre, radius, reach, index, distance, normal, element):
+    """Points within reach of the sphere's surface (not at its centre), the normal towards the point,
+    written into the buffers (room for one row a point); returns how many."""
+    m = 0
+    for p in range(x.shape[0]):
+        d0 = x[p, 0] - centre[0]
+        d1 = x[p, 1] - centre[1]
+        d2 = x[p, 2] - centre[2]
+        r = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        if abs(r - radius) < reach and r > 0.0:
+            side = -1.0 if r < radius else 1.0
+            index[m] = p
+            distance[m] = abs(r - radius)
+            normal[m, 0] = side * d0 / r
+            normal[m, 1] = side * d1 / r
+            normal[m, 2] = side * d2 / r
+            element[m] = 0
+            m += 1
+    return m

@@ -1,0 +1,155 @@
+"""A timestep between two neighbor list builds allocates nothing (issue 12: no allocation inside the
+step, no numpy temporaries over the particles): every array a step uses is kept and grown in place.
+
+Measured with tracemalloc, which sees numpy's arrays and numba's (its runtime allocates through
+Python's raw allocator): a fix defined before every other resets the peak of traced memory at
+initial_integrate, one defined after every other reads it at end_of_step. What a step leaves on top
+of where it started is Python's own small objects (floats, tuples, frames: 1-3 KB measured); a
+temporary over the 2,000-4,000 particles of these scenes would be 16 KB or more (one float each).
+Steps that rebuild the lists may allocate (ghosts, lists and wall candidates grow, particles are
+re-sorted); they are told apart and left out.
+"""
+
+import tracemalloc
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Fix, Simulation
+from pdps_core.testing import register_styles
+
+# Python's own objects in one step (measured: 1.3-2.7 KB on the scenes below); a float per
+# particle is 16 KB at 2,000 particles
+STEP_LIMIT = 6 * 1024
+
+
+class OpenStep(Fix):
+    """Defined first: resets tracemalloc's peak as the step starts."""
+    name = "test/alloc_open"
+
+    def initial_integrate(self, sim):
+        tracemalloc.reset_peak()
+        self.start = tracemalloc.get_traced_memory()[0]
+
+
+class CloseStep(Fix):
+    """Defined last: the step's peak of traced memory above its start, and whether it rebuilt."""
+    name = "test/alloc_close"
+
+    def init_run(self, sim):
+        self.steps = []
+
+    def end_of_step(self, sim):
+        peak = tracemalloc.get_traced_memory()[1]
+        self.steps.append((sim.neighbors.ago == 0, peak - sim.fixes["open"].start))
+
+
+class EveryStepAllocates(Fix):
+    """A fix that makes a temporary over the owned particles at every step (the negative control)."""
+    name = "test/alloc_temporary"
+
+    def post_force(self, sim):
+        sim.f[:] += np.zeros(sim.nlocal)[:, None]
+
+
+SPHERES = """
+particle_style  sphere
+units           lj
+boundary        p p f
+region          box block 0 16 0 16 0 12
+create_box      1 box
+lattice         spacing x 1.05 y 1.05 z 1.05
+region          fill block 0 16 0 16 0.45 8.5
+create_particle 1 region fill diameter 1.0 density 1.9098593
+neighbor        0.2 bin
+neigh_modify    delay 0 every 1 check yes
+timestep        0.0002
+"""
+
+SCENES = {
+    # LAMMPS's granular pair and wall with LIGGGHTS-style gravity: gran_box's styles
+    "gran/hooke/history, wall/gran": SPHERES + """
+fix             open all test/alloc_open
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 1
+pair_coeff      * *
+fix             grav all gravity 1.0 vector 0 0 -1
+fix             w all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 12.0
+fix             1 all nve/sphere
+""",
+    # PDPS's DEM pair and walls: a block floor and a polygon shelf (two regions: their contacts merged)
+    "dem/lsd, wall/dem": SPHERES + """
+fix             open all test/alloc_open
+pair_style      dem/lsd 0.5 1.0
+pair_coeff      * * 200000.0 25.0 57142.857 12.5 0.5
+fix             grav all gravity 1.0 vector 0 0 -1
+region          floor block -1 17 -1 17 0 12
+region          shelf polygon p1 2 2 4 p2 8 2 4 p3 8 8 4 p4 2 8 4
+fix             walls all wall/dem lsd region floor region shelf 0.5 200000.0 50.0 57142.857 25.0 0.5 0.5
+fix             1 all nve/sphere
+""",
+    # a DPD fluid whose lists live one step: forces from the cell bins (direct mode)
+    "dpd, direct mode": """
+units           lj
+region          box block 0 10 0 10 0 10
+create_box      1 box
+create_particle 1 random 3000 4567 box
+mass            1 1.0
+pair_style      dpd 1.0 1.0 34387
+pair_coeff      * * 25.0 4.5 1.0
+neighbor        0.3 bin
+neigh_modify    delay 0 every 1 check yes
+velocity        all create 1.0 4928459
+comm_modify     vel yes
+timestep        0.04
+fix             open all test/alloc_open
+fix             1 all nve
+""",
+    # LAMMPS's in.lj: lj/cut on a half list rebuilt every 20 steps
+    "lj/cut": """
+units           lj
+lattice         fcc 0.8442
+region          box block 0 10 0 10 0 10
+create_box      1 box
+create_particle 1 box
+mass            1 1.0
+velocity        all create 3.0 87287
+pair_style      lj/cut 2.5
+pair_coeff      1 1 1.0 1.0 2.5
+neighbor        0.3 bin
+neigh_modify    every 20 delay 0 check no
+fix             open all test/alloc_open
+fix             1 all nve
+""",
+}
+
+
+def step_allocations(script, warm=100, steps=200):
+    """(peaks of the steps that built no list, peaks of those that did), in bytes, over ``steps``
+    steps after ``warm`` (arrays sized by the first steps, kernels loaded)."""
+    register_styles(OpenStep, CloseStep, EveryStepAllocates)
+    sim = Simulation(screen=False, log=None)
+    sim.command(script + "fix close all test/alloc_close\nthermo 0\n")
+    sim.command(f"run {warm}")
+    tracemalloc.start()
+    try:
+        sim.command(f"run {steps}")
+    finally:
+        tracemalloc.stop()
+    steps = sim.fixes["close"].steps
+    return [peak for built, peak in steps if not built], [peak for built, peak in steps if built]
+
+
+@pytest.mark.parametrize("scene", SCENES)
+def test_a_step_between_list_builds_allocates_nothing(scene):
+    plain, built = step_allocations(SCENES[scene])
+    print(f"{scene}: {len(plain)} steps without a build, largest {max(plain) / 1024:.1f} KB; "
+          f"{len(built)} builds, largest {max(built, default=0) / 1024:.1f} KB")
+    assert len(plain) >= 50
+    assert max(plain) < STEP_LIMIT
+
+
+def test_a_temporary_over_the_particles_is_seen():
+    """The negative control: a fix adding np.zeros(nlocal) at every step is measured above the limit."""
+    script = SCENES["lj/cut"].replace("fix             1 all nve", "fix 1 all nve\nfix t all test/alloc_temporary")
+    plain, _ = step_allocations(script, warm=10, steps=40)
+    assert min(plain) > 4 * STEP_LIMIT
