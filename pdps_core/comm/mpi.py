@@ -460,11 +460,25 @@ class MPIComm:
         """The rank whose sub-domain holds each point (inside the box)."""
         return self.decomposition.owner(np.asarray(points, dtype=np.float64).reshape(-1, 3))
 
-    def reverse_rows(self, rows):
+    def reverse_rows(self, rows, ghosts=None):
         """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,
-        for values a style merges itself rather than sums."""
-        back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
-        return self._send_index, back
+        for values a style merges itself rather than sums. ``ghosts``: the rows are those of these
+        ghosts only (their indices among the ghosts, ascending); by default one row a ghost."""
+        if ghosts is None:
+            back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
+            return self._send_index, back
+        # ghosts arrive in blocks by the rank that sent them, each in the order of its _send_index:
+        # a ghost's place in its block names the owned particle there
+        ends = np.cumsum(self._recv_counts)
+        source = np.searchsorted(ends, ghosts, side="right")
+        counts = np.bincount(source, minlength=self.nprocs)
+        message = np.empty((len(ghosts), rows.shape[1] + 1))
+        message[:, 0] = ghosts - (ends - self._recv_counts)[source]
+        message[:, 1:] = rows
+        received, senders = self._alltoall_rows(message, counts, return_counts=True)
+        first_sent = np.cumsum(self._send_counts) - self._send_counts
+        place = np.repeat(first_sent, senders) + received[:, 0].astype(np.int64)
+        return self._send_index[place], received[:, 1:]
 
     # ---- collectives --------------------------------------------------------------------------
     def _alltoall_rows(self, rows, counts, recv_counts=None, return_counts=False):

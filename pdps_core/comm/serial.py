@@ -186,9 +186,10 @@ class SerialComm:
     def rank_of(self, points):
         return np.zeros(len(points), dtype=np.int64)
 
-    def reverse_rows(self, rows):
-        """Rows of ghost values, with the owned index each ghost copies."""
-        return self.ghost_source, rows
+    def reverse_rows(self, rows, ghosts=None):
+        """Rows of ghost values (of the ghosts ``ghosts``, or of every ghost), with the owned index
+        each ghost copies."""
+        return (self.ghost_source if ghosts is None else self.ghost_source[ghosts]), rows
 
     def forward_comm(self, particles, names=("x",)):
         p = particles

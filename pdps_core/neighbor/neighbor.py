@@ -141,6 +141,7 @@ class Neighbor:
         self.dangerous = 0
         self.overrun = 0.0          # largest move beyond the whole skin between builds, this run
         self.moved_everywhere = 0.0  # the largest move over all ranks since the last build (inf: not measured)
+        self._moved_sq = np.zeros(1)
         self.sort_every = 1000
         self.sort_set = False       # atom_modify sort given: its interval holds in direct mode too
         self.last_sort = None
@@ -280,7 +281,10 @@ class Neighbor:
         if self.ago < self.delay or self.ago % self.every:
             self.moved_everywhere = np.inf
             return False, False
-        moved_sq = comm.max(largest_displacement_sq(particles.x, self.xhold, len(self.xhold)))
+        # every rank decides alike; an array is reduced by MPI's own reduction (4 us), a Python
+        # float by mpi4py's pickled one (17 us), at every step
+        self._moved_sq[0] = largest_displacement_sq(particles.x, self.xhold, len(self.xhold))
+        moved_sq = float(comm.max(self._moved_sq)[0])
         self.moved_everywhere = float(np.sqrt(moved_sq))
         if self.check:
             limit = 0.5 * self.skin

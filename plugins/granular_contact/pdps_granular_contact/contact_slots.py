@@ -14,6 +14,8 @@ written by anything else (a restart file, an older run) at the start of a run.
 import numpy as np
 from numba import njit
 
+from pdps_core.api import open_slot
+
 
 @njit(cache=True)
 def forget_untouched(partner, history, touched, i):
@@ -157,3 +159,77 @@ class HeldRows:
                 self._mark = np.zeros(len(self.rows), dtype=np.bool_)
             self.count = rows_holding(partner, p.nlocal, self.rows)
             self._of = (nlist, nlist.version)
+
+
+@njit(cache=True)
+def remote_touched_ghosts(touched, owner, nlocal, nall, ghosts):
+    """The ghosts (indices among the ghosts, ascending) owned on another rank with a slot touched
+    this step, into ``ghosts``; returns how many."""
+    m = 0
+    for i in range(nlocal, nall):
+        if owner[i] >= 0:
+            continue
+        for s in range(touched.shape[1]):
+            if touched[i, s]:
+                ghosts[m] = i - nlocal
+                m += 1
+                break
+    return m
+
+
+@njit(cache=True)
+def pack_mirrors(touched, partner, history, nlocal, ghosts, count, rows):
+    """Row k of ``rows``: (touched flags, partner tags, values) of ghost ``ghosts[k]``."""
+    capacity = partner.shape[1]
+    for k in range(count):
+        i = nlocal + ghosts[k]
+        for s in range(capacity):
+            rows[k, s] = 1.0 if touched[i, s] else 0.0
+            rows[k, capacity + s] = partner[i, s]
+        for h in range(history.shape[1]):
+            rows[k, 2 * capacity + h] = history[i, h]
+
+
+@njit(cache=True)
+def merge_mirrors(partner, history, touched, index, rows, capacity):
+    """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
+    is (touched flags, partner tags, values) of one ghost. Returns a row with no free slot, or -1."""
+    width = history.shape[1] // capacity
+    for r in range(len(index)):
+        i = index[r]
+        for k in range(capacity):
+            if rows[r, k] > 0.5:
+                key = np.int64(rows[r, capacity + k])
+                slot = open_slot(partner, history, i, key, width)
+                if slot < 0:
+                    return i
+                touched[i, slot] = True
+                for d in range(width):
+                    history[i, width * slot + d] = rows[r, 2 * capacity + width * k + d]
+    return -1
+
+
+class Mirrors:
+    """A contact's values are kept on both particles (i's in its row, the mirror in j's owner's row).
+    When j is a ghost of a particle owned on another rank, its mirror was written into the ghost's
+    row: ``collect`` sends the rows of the ghosts touched this step back to their owners, only those
+    (a granular step touches few), in buffers kept between steps."""
+
+    def __init__(self):
+        self._ghosts = np.empty(0, dtype=np.int64)
+        self._rows = np.empty((0, 0))
+
+    def collect(self, sim, history, owner, touched):
+        """Returns -1, or the tag of a particle left with no free slot."""
+        if sim.comm.nprocs == 1:
+            return -1
+        p = sim.particles
+        width = 2 * history.capacity + history.values.shape[1]
+        if len(self._ghosts) < p.nghost or self._rows.shape[1] != width:
+            size = p.nghost + p.nghost // 4 + 16
+            self._ghosts, self._rows = np.empty(size, dtype=np.int64), np.empty((size, width))
+        count = remote_touched_ghosts(touched, owner, p.nlocal, p.nall, self._ghosts)
+        pack_mirrors(touched, history.partner, history.values, p.nlocal, self._ghosts, count, self._rows)
+        index, back = sim.comm.reverse_rows(self._rows[:count], self._ghosts[:count])
+        bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
+        return -1 if bad < 0 else int(p.tag[bad])

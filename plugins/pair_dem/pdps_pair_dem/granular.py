@@ -42,7 +42,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import HeldRows, contact_rows, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, contact_rows, pack_slots
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -90,7 +90,7 @@ def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
             shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
         return slot, -1
     # the mirror goes to j's owner; one on another rank gets it through j's ghost row, sent
-    # back after the pair loop (merge_mirrors)
+    # back after the pair loop (contact_slots.Mirrors)
     jo = owner[j] if owner[j] >= 0 else j
     slot_i = open_slot(partner, history, i, tag[j], 3)
     slot_j = open_slot(partner, history, jo, tag[i], 3)
@@ -127,24 +127,6 @@ def apply_contact(f, torque, i, j, n, force, arm_i, arm_j):
     torque[j, 0] -= arm_j * cx
     torque[j, 1] -= arm_j * cy
     torque[j, 2] -= arm_j * cz
-
-
-@njit(cache=True)
-def merge_mirrors(partner, history, touched, index, rows, capacity):
-    """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
-    is (touched flags, partner tags, values) of one ghost. Returns a tag with no free slot, or -1."""
-    for r in range(len(index)):
-        i = index[r]
-        for k in range(capacity):
-            if rows[r, k] > 0.5:
-                key = np.int64(rows[r, capacity + k])
-                slot = open_slot(partner, history, i, key, 3)
-                if slot < 0:
-                    return i
-                touched[i, slot] = True
-                for d in range(3):
-                    history[i, 3 * slot + d] = rows[r, 2 * capacity + 3 * k + d]
-    return -1
 
 
 @njit(cache=True)
@@ -249,7 +231,7 @@ class GranularPair(Pair):
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self._log_pairs = None
         self._logged = np.zeros(1, dtype=np.int64)
-        self.held = HeldRows()
+        self.held, self.mirrors = HeldRows(), Mirrors()
 
     # ---- start of a run ---------------------------------------------------------------------------
     def init(self, ntypes):
@@ -378,16 +360,7 @@ class GranularPair(Pair):
 
     def collect_mirrors(self, sim, owner, touched):
         """Send springs written into rows of ghosts owned elsewhere back to their owners."""
-        if sim.comm.nprocs == 1:
-            return -1
-        p, history = sim.particles, self.history
-        ghosts = slice(p.nlocal, p.nall)
-        remote = (owner[ghosts] < 0)[:, None]
-        rows = np.hstack([touched[ghosts] & remote, history.partner[ghosts],
-                          history.values[ghosts]]).astype(np.float64)
-        index, back = sim.comm.reverse_rows(rows)
-        bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
-        return -1 if bad < 0 else int(p.tag[bad])
+        return self.mirrors.collect(sim, self.history, owner, touched)
 
     def contact_log(self, nlist):
         """Buffers the kernel fills with the contacts of this force computation (one per list pair

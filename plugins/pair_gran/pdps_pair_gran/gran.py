@@ -41,7 +41,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, lammps_classic
-from pdps_granular_contact.contact_slots import HeldRows, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 
 HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
@@ -197,25 +197,6 @@ def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, ow
     return -1
 
 
-@njit(cache=True)
-def merge_mirrors(partner, history, touched, index, rows, capacity):
-    """Springs written into ghost rows on other ranks, now back on their owners ``index``: each row
-    is (touched flags, partner tags, values) of one ghost. Returns a row with no free slot, or -1."""
-    width = history.shape[1] // capacity
-    for r in range(len(index)):
-        i = index[r]
-        for k in range(capacity):
-            if rows[r, k] > 0.5:
-                key = np.int64(rows[r, capacity + k])
-                slot = open_slot(partner, history, i, key, width)
-                if slot < 0:
-                    return i
-                touched[i, slot] = True
-                for d in range(width):
-                    history[i, width * slot + d] = rows[r, 2 * capacity + width * k + d]
-    return -1
-
-
 class PairGran(Pair):
     """Base of the classic granular styles: spheres with radius, per-particle mass and rotation,
     ghosts carrying v and omega; ``model`` is the law (lammps_classic.HOOKE, ...)."""
@@ -232,7 +213,7 @@ class PairGran(Pair):
         self.history = None
         self._touched = None
         self._rows = self._touching = self._rows_of = None
-        self.held = HeldRows()
+        self.held, self.mirrors = HeldRows(), Mirrors()
         self._scratch = tuple(np.zeros(3) for _ in range(4))
         self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
@@ -394,13 +375,4 @@ class PairGran(Pair):
 
     def collect_mirrors(self, sim, owner, touched):
         """Send springs written into rows of ghosts owned elsewhere back to their owners."""
-        if sim.comm.nprocs == 1:
-            return -1
-        p, history = sim.particles, self.history
-        ghosts = slice(p.nlocal, p.nall)
-        remote = (owner[ghosts] < 0)[:, None]
-        rows = np.hstack([touched[ghosts] & remote, history.partner[ghosts],
-                          history.values[ghosts]]).astype(np.float64)
-        index, back = sim.comm.reverse_rows(rows)
-        bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
-        return -1 if bad < 0 else int(p.tag[bad])
+        return self.mirrors.collect(sim, self.history, owner, touched)

@@ -75,7 +75,7 @@ from numba import njit
 
 from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, liggghts
-from pdps_granular_contact.contact_slots import HeldRows, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
@@ -274,7 +274,7 @@ class PairGranModel(PairGran):
         self.history = None
         self._touched = None
         self._rows = self._touching = self._rows_of = None
-        self.held = HeldRows()
+        self.held, self.mirrors = HeldRows(), Mirrors()
         self._ntouching = np.zeros(1, dtype=np.int64)
         self._scratch = tuple(np.zeros(3) for _ in range(3))
         self._contact = (np.zeros(liggghts.HISTORY_WIDTH),) + tuple(np.zeros(3) for _ in range(3))
