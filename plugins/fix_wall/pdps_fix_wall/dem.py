@@ -65,6 +65,8 @@ Example (PDPS manual)::
     fix 2 all wall/dem lsd region wall1 region wall2 0.85 3000 28.6527 571.43 15.82634 0.4 0.5
 """
 
+import inspect
+
 import numpy as np
 from numba import njit
 
@@ -189,6 +191,8 @@ class FixWallDEM(Fix):
         self._used = np.empty(self.history.capacity, dtype=np.bool_)
         self._vectors = tuple(np.empty(3) for _ in range(4))      # dem_wall_forces' n, rel, force, spring
         self._rows = [SurfaceContacts() for _ in self.regions]    # each region's contacts of a step
+        # a region style written before surface_contacts took buffers (out) is called without
+        self._takes_out = ["out" in inspect.signature(type(r).surface_contacts).parameters for r in self.regions]
         self._merged = (SurfaceContacts(), SurfaceContacts())      # merge_contacts' results, in turn
 
     def setup(self, sim):
@@ -222,8 +226,8 @@ class FixWallDEM(Fix):
         self._farthest = float(reach[chosen].max()) if len(chosen) else 0.0
         x = p.x[chosen]
         flags = np.zeros(len(chosen), dtype=np.bool_)
-        for region, out in zip(self.regions, self._rows):
-            flags[region.surface_contacts(x, self._farthest + sim.neighbor.skin, out)[0]] = True
+        for wall in range(len(self.regions)):
+            flags[self._surface(wall, x, self._farthest + sim.neighbor.skin)[0]] = True
         forget_far(self.history.partner, chosen, flags)
         self._near = chosen[flags]
         n = len(self._near)
@@ -232,13 +236,23 @@ class FixWallDEM(Fix):
             self._offset_rows = np.empty(len(self._x_near_rows) + 1, dtype=np.int64)
         self._x_near, self._offsets = self._x_near_rows[:n], self._offset_rows[:n + 1]
 
+    def _surface(self, wall, x, reach):
+        """Region number ``wall``'s contacts with the points x, in point order, in its buffers."""
+        region = self.regions[wall]
+        if self._takes_out[wall]:
+            return region.surface_contacts(x, reach, self._rows[wall])
+        index, distance, normal, element = region.surface_contacts(x, reach)
+        order = np.argsort(index, kind="stable")
+        return (np.asarray(index, dtype=np.int64)[order], np.asarray(distance, dtype=np.float64)[order],
+                np.ascontiguousarray(normal, dtype=np.float64)[order], np.asarray(element, dtype=np.int64)[order])
+
     def _forces(self, sim, update):
         p = sim.particles
         a = p.arrays
         near, x = self._near, self._x_near
         # mode clip: numpy's default (raise) buffers the output to keep it whole on a bad index
         np.take(a["x"], near, axis=0, out=x, mode="clip")
-        parts = [region.surface_contacts(x, self._farthest, out) for region, out in zip(self.regions, self._rows)]
+        parts = [self._surface(wall, x, self._farthest) for wall in range(len(self.regions))]
         index, distance, normal, key = parts[0]
         for wall in range(1, len(parts)):
             merged = self._merged[wall % 2]

@@ -261,7 +261,40 @@ class Lump(Region):
         return np.zeros(len(x), dtype=bool)
 
 
-register_styles(Lump)
+class OldFloor(Region):
+    """A region written to the contract before surface_contacts took buffers: the plane z = 0,
+    touched from above, its rows given last point first."""
+    name = "test/wall_old_floor"
+
+    class Args(StyleArgs):
+        pass
+
+    def inside(self, x):
+        return np.asarray(x)[:, 2] <= 0.0
+
+    def surface_contacts(self, x, reach):
+        index = np.flatnonzero(np.asarray(x)[:, 2] < reach)[::-1]
+        normal = np.zeros((len(index), 3))
+        normal[:, 2] = 1.0
+        return index, np.asarray(x)[index, 2], normal, np.zeros(len(index), dtype=np.int64)
+
+
+register_styles(Lump, OldFloor)
+
+
+def test_a_region_written_before_surface_buffers_still_makes_a_wall(scene):
+    """A region style whose surface_contacts takes no buffers, and gives its rows in any order, is
+    called without them: each sphere feels k_n times its own overlap."""
+    sim = scene()
+    sim.command(f"""
+        create_particle 1 single 0 0 0.4 diameter 1 density 1
+        create_particle 1 single 2 0 0.3 diameter 1 density 1
+        region floor test/wall_old_floor
+        fix w all wall/dem lsd region floor {E} {KN} 0 0 0 0 0.5
+        run 0
+    """)
+    for tag, overlap in ((1, 0.1), (2, 0.2)):
+        np.testing.assert_allclose(sim.f[sim.particles.index_of_tag(tag)], [0.0, 0.0, KN * overlap], rtol=1e-12)
 
 
 @pytest.mark.parametrize("words, message", [
