@@ -409,6 +409,31 @@ class Record(Fix):
         return np.array([row[particle] for row in getattr(self, key)])
 
 
+class ContactsHeld(Fix):
+    """``fix ID all test/contacts_held``, for a granular pair style on one rank in a periodic cube
+    of edge ``EDGE``: at the end of every step, whether the pair's contact slots hold exactly the
+    pairs of spheres that touch (found afresh by minimum image, each pair on both spheres), in
+    ``exact``, and how many pairs touch, in ``contacts``."""
+    name = "test/contacts_held"
+    EDGE = 6.0
+
+    def init_run(self, sim):
+        self.exact, self.contacts = [], []
+
+    def end_of_step(self, sim):
+        p = sim.particles
+        n, tag, radius = p.nlocal, p.tag[: p.nlocal], p.radius[: p.nlocal]
+        delta = p.x[:n, None, :] - p.x[None, :n, :]
+        delta -= self.EDGE * np.round(delta / self.EDGE)
+        np.fill_diagonal(delta[..., 0], 2.0 * self.EDGE)
+        i, j = np.nonzero((delta ** 2).sum(axis=2) < (radius[:, None] + radius[None, :]) ** 2)
+        touching = set(zip(tag[i].tolist(), tag[j].tolist()))
+        partner = sim.pair.history.partner[:n]
+        held = {(int(tag[r]), int(partner[r, s])) for r, s in zip(*np.nonzero(partner >= 0))}
+        self.exact.append(held == touching)
+        self.contacts.append(len(touching) // 2)
+
+
 # ---- fixtures (registered as a pytest plugin by pdps-core) -------------------------------------
 @pytest.fixture
 def make_sim(tmp_path, monkeypatch):

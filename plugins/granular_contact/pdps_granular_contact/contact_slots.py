@@ -8,7 +8,9 @@ particle rather than one per slot. Between two list builds on one rank, a pair s
 rows it touched sweeps only those and the rows that kept contacts (``HeldRows``, ``free_stale_of``:
 pair gran's styles from their touching list entries, pair dem's from their contact log). The core's
 ``open_slot`` fills the first free slot, which keeps the rows packed; ``pack_slots`` packs rows
-written by anything else (a restart file, an older run) at the start of a run.
+written by anything else (a restart file, an older run) at the start of a run. On several ranks a
+contact's mirror written into the row of a ghost owned elsewhere goes back to its owner after the
+force computation (``Mirrors``).
 """
 
 import numpy as np

@@ -4,8 +4,7 @@ spring across periodic faces, neighbor rebuilds and re-sorting; static friction;
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix
-from pdps_core.testing import register_styles, sphere_mass, unwrapped
+from pdps_core.testing import ContactsHeld, register_styles, sphere_mass, unwrapped
 
 PAIRS = {"lsd": ("dem/lsd 0.3 1.0", ["* * kn 1000 e 0.7 mu 0.3"]),
          "hertz": ("dem/hertz", ["* * 2.0e5 0.3 0.7 0.3"])}
@@ -180,28 +179,6 @@ def test_a_sphere_spinning_on_another_is_braked_by_sliding_friction(dem, style, 
     assert spin[-1] > 0.5
 
 
-class ContactsHeld(Fix):
-    """At the end of every step: whether the contact slots hold exactly this step's touching pairs
-    (found afresh by minimum image, spheres of diameter 1 in a box 6 wide), each on both spheres."""
-    name = "test/dem/contacts_held"
-
-    def init_run(self, sim):
-        self.exact, self.contacts = [], []
-
-    def end_of_step(self, sim):
-        p = sim.particles
-        n, tag = p.nlocal, p.tag[: p.nlocal]
-        delta = p.x[:n, None, :] - p.x[None, :n, :]
-        delta -= 6.0 * np.round(delta / 6.0)
-        np.fill_diagonal(delta[..., 0], 10.0)
-        i, j = np.nonzero((delta ** 2).sum(axis=2) < 1.0)
-        touching = set(zip(tag[i].tolist(), tag[j].tolist()))
-        partner = sim.pair.history.partner[:n]
-        held = {(int(tag[r]), int(partner[r, s])) for r, s in zip(*np.nonzero(partner >= 0))}
-        self.exact.append(held == touching)
-        self.contacts.append(len(touching) // 2)
-
-
 @pytest.mark.parametrize("pair, coeff", [("dem/lsd 0.3 1.0", "* * kn 200000 e 0.7 mu 0.3"),
                                          ("dem/hertz", "* * 5.0e7 0.3 0.7 0.3")])
 def test_contact_slots_hold_exactly_the_contacts_of_each_step(dem, pair, coeff):
@@ -216,7 +193,7 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step(dem, pair, coeff):
              + 0.6 + rng.uniform(-0.02, 0.02, (100, 3)))
     sim = dem.spheres(pair, [coeff], [(1, *site, 1.0, 1.0) for site in sites], box="0 6 0 6 0 6",
                       extra=("timestep 0.0004\nneighbor 0.1 bin\nneigh_modify delay 0 every 1 check yes\n"
-                             "fix move all test/nve_sphere\nfix check all test/dem/contacts_held"))
+                             "fix move all test/nve_sphere\nfix check all test/contacts_held"))
     for tag in range(1, 101):
         dem.set_motion(sim, tag, v=tuple(rng.normal(0.0, 8.0, 3)))
     sim.command("run 400")

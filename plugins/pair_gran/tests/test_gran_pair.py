@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Fix, registry
+from pdps_core.testing import ContactsHeld, register_styles
 
 M1 = 1.9098593171027440      # density of a sphere of diameter 1 and mass 1
 HOOKE = "200000.0 NULL 50.0 NULL 0.5 1"
@@ -248,28 +249,6 @@ def test_forces_of_every_contact_at_every_step_across_rebuilds(scene):
     assert max(check.errors) < 1e-12
 
 
-class ContactsHeld(Fix):
-    """At the end of every step: whether the contact slots hold exactly this step's touching pairs
-    (found afresh by minimum image, the box 6 wide), each on both spheres."""
-    name = "test/contacts_held"
-
-    def init_run(self, sim):
-        self.exact, self.contacts = [], []
-
-    def end_of_step(self, sim):
-        p = sim.particles
-        n, tag = p.nlocal, p.tag[: p.nlocal]
-        delta = p.x[:n, None, :] - p.x[None, :n, :]
-        delta -= 6.0 * np.round(delta / 6.0)
-        np.fill_diagonal(delta[..., 0], 10.0)
-        i, j = np.nonzero((delta ** 2).sum(axis=2) < 1.0)
-        touching = set(zip(tag[i].tolist(), tag[j].tolist()))
-        partner = sim.pair.history.partner[:n]
-        held = {(int(tag[r]), int(key)) for r, s in zip(*np.nonzero(partner >= 0)) for key in [partner[r, s]]}
-        self.exact.append(held == touching)
-        self.contacts.append(len(touching) // 2)
-
-
 # LIGGGHTS's Hertz law with a spring, rolling friction and cohesion (pair gran model's own kernel)
 LIGGGHTS_PAIR = "gran model hertz tangential history rolling_friction cdt cohesion sjkr"
 LIGGGHTS_MATERIAL = ("fix m1 all property/global youngsModulus peratomtype 5.e6\n"
@@ -286,7 +265,7 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene, pair, mater
     """gran/hooke/history and gran model forget a contact at the end of the step its spheres came
     apart: in a hot gas whose lists are rebuilt every few steps (between builds only the rows that
     held or made a contact are swept), the slots hold at every step exactly the pairs that touch."""
-    registry.register("fix", "test/contacts_held", ContactsHeld)
+    register_styles(ContactsHeld)
     sim = hot_gas(scene, "gran/hooke/history", "test/contacts_held", seed=6, pair=pair, material=material)
     sim.command("run 400")
     check = sim.fixes["check"]
