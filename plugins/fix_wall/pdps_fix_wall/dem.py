@@ -268,7 +268,7 @@ class FixWallDEM(Fix):
         omega = a["omega"] if rotation else a["v"]
         torque = a["torque"] if rotation else a["f"]
         mass = a["rmass"] if "rmass" in a else observables.masses(sim)
-        bad = dem_wall_forces(near, self._offsets, distance, normal, key.astype(np.int64, copy=False),
+        bad = dem_wall_forces(near, self._offsets, distance, normal, key,
                               self._still, self.reach(sim), mass, a.get("body_mass", contact_models.NO_BODY_MASS),
                               a["v"], omega, a["f"], torque, rotation,
                               self.history.partner, self.history.values, *self.law.kernel_args(),
