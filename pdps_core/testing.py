@@ -410,10 +410,11 @@ class Record(Fix):
 
 
 class ContactsHeld(Fix):
-    """``fix ID all test/contacts_held``, for a granular pair style on one rank in a periodic cube
-    of edge ``EDGE``: at the end of every step, whether the pair's contact slots hold exactly the
-    pairs of spheres that touch (found afresh by minimum image, each pair on both spheres), in
-    ``exact``, and how many pairs touch, in ``contacts``."""
+    """``fix ID all test/contacts_held``, for a granular pair style in a periodic cube of edge
+    ``EDGE``, on any number of ranks: at the end of every step, whether the owned particles' contact
+    slots hold exactly the pairs of spheres that touch (found afresh by minimum image over every
+    rank's spheres, each pair on both spheres), in ``exact``, and how many pairs touch, in
+    ``contacts`` (the same on every rank)."""
     name = "test/contacts_held"
     EDGE = 6.0
 
@@ -422,16 +423,56 @@ class ContactsHeld(Fix):
 
     def end_of_step(self, sim):
         p = sim.particles
-        n, tag, radius = p.nlocal, p.tag[: p.nlocal], p.radius[: p.nlocal]
-        delta = p.x[:n, None, :] - p.x[None, :n, :]
+        n, comm = p.nlocal, sim.comm
+        owned = comm.allgather_rows(np.column_stack([p.tag[:n], p.radius[:n], p.x[:n]]))
+        tag, radius, x = owned[:, 0].astype(np.int64), owned[:, 1], owned[:, 2:]
+        delta = x[:, None, :] - x[None, :, :]
         delta -= self.EDGE * np.round(delta / self.EDGE)
         np.fill_diagonal(delta[..., 0], 2.0 * self.EDGE)
         i, j = np.nonzero((delta ** 2).sum(axis=2) < (radius[:, None] + radius[None, :]) ** 2)
         touching = set(zip(tag[i].tolist(), tag[j].tolist()))
         partner = sim.pair.history.partner[:n]
-        held = {(int(tag[r]), int(partner[r, s])) for r, s in zip(*np.nonzero(partner >= 0))}
-        self.exact.append(held == touching)
+        rows, slots = np.nonzero(partner >= 0)
+        pairs = comm.allgather_rows(np.column_stack([p.tag[:n][rows], partner[rows, slots]]).reshape(-1, 2))
+        held = set(map(tuple, pairs.astype(np.int64).tolist()))
+        self.exact.append(held == touching and len(pairs) == len(held))
         self.contacts.append(len(touching) // 2)
+
+
+_CONTACTS_HELD_DRIVER = """
+import sys
+import numpy as np
+from pdps_core.simulation import Simulation
+from pdps_core.testing import ContactsHeld, register_styles
+register_styles(ContactsHeld)
+sim = Simulation(screen=False, log=None, dialect=sys.argv[1])
+sim.file("in.setup")
+p = sim.particles
+velocities = np.load("velocities.npy")
+p.v[: p.nlocal] = velocities[p.tag[: p.nlocal] - 1]
+sim.command("fix contacts_held all test/contacts_held")
+sim.command("run " + sys.argv[2])
+check = sim.fixes["contacts_held"]
+if sim.comm.is_root:
+    np.save("held.npy", np.array([all(check.exact), sim.neighbors.builds, sum(check.contacts)]))
+"""
+
+
+def contacts_held_on_ranks(script, velocities, steps, nprocs, cwd, dialect="lammps"):
+    """Run ``script`` (text: the spheres and their pair style, no run), the particles given
+    ``velocities`` (by tag), for ``steps`` steps on ``nprocs`` ranks with fix test/contacts_held
+    (``ContactsHeld``, a periodic cube of edge 6); returns (whether the slots held exactly the
+    touching pairs at every step, list builds, touching pairs summed over the steps)."""
+    cwd = Path(cwd)
+    (cwd / "in.setup").write_text(textwrap.dedent(script))
+    (cwd / "driver.py").write_text(_CONTACTS_HELD_DRIVER)
+    np.save(cwd / "velocities.npy", np.asarray(velocities, dtype=np.float64))
+    done = subprocess.run([mpiexec(), "-n", str(nprocs), sys.executable, "driver.py", dialect, str(steps)],
+                          cwd=cwd, capture_output=True, text=True, timeout=600)
+    if done.returncode != 0:
+        pytest.fail(f"mpiexec -n {nprocs} driver.py failed: {done.stderr.strip()}")
+    exact, builds, contacts = np.load(cwd / "held.npy")
+    return bool(exact), int(builds), int(contacts)
 
 
 # ---- fixtures (registered as a pytest plugin by pdps-core) -------------------------------------

@@ -11,6 +11,10 @@ sub-domain. The interface is the serial one:
   sub-domain thinner than the cutoff still gets every ghost it needs (no multi-hop relay).
 - ``forward_comm`` / ``reverse_comm``: ghost values refreshed from owners / ghost forces summed back.
 
+Migration and the ghost counts are collectives (Alltoall); the ghost values themselves, at borders,
+at every step and back to the owners, travel point to point between the ranks that share ghosts, so
+a rank whose ghosts are all its own periodic images (or that holds nothing) waits for no one.
+
 Errors found on one rank (a lost particle, a non-finite force) are agreed on collectively with
 ``agree`` so that every rank stops with the same one-line message and none hangs.
 """
@@ -133,6 +137,8 @@ def _leavers(x, nlocal, lo, length, grid, me, gone, dest, counts, start, order):
 
 
 _NO_SHIFT = np.zeros((0, 3))
+_GHOST_TAG = 17         # point-to-point ghost messages (forward, reverse, borders, rows to owners)
+_COUNT_TAG = 18
 
 
 @njit(cache=True)
@@ -215,6 +221,9 @@ class MPIComm:
         self._leave_index = self._leave_dest = np.zeros(0, dtype=np.int64)
         self._exchange_counts = np.zeros((self.nprocs, 2), dtype=np.int64)     # (rows, error flag)
         self._exchange_received = np.zeros((self.nprocs, 2), dtype=np.int64)
+        self._requests = []
+        self._own = (0, 0, 0)
+        self._ghost_owners, self._ghost_takers = [], []
 
     @property
     def is_root(self):
@@ -326,14 +335,44 @@ class MPIComm:
             send = np.empty(int(1.25 * m * width) + 64)
         p.pack_ghosts(index, counts, send, shift)
         self.world.Alltoall(counts, self._recv_counts)
+        me = self.rank
+        self._own = (int(counts[:me].sum()), int(self._recv_counts[:me].sum()), int(counts[me]))
+        # the ranks this one shares ghosts with: those that sent it ghosts, those it sent ghosts to
+        self._ghost_owners = [r for r in range(self.nprocs) if r != me and self._recv_counts[r]]
+        self._ghost_takers = [r for r in range(self.nprocs) if r != me and counts[r]]
         total = int(self._recv_counts.sum())
         if receive.size < total * width:
             receive = np.empty(int(1.25 * total * width) + 64)
         self._ghost_rows = (send, receive)
         send_counts, send_displ, recv_counts, recv_displ = self._layout(width)
-        self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
-                             [receive, (recv_counts, recv_displ), self.MPI.DOUBLE])
+        self._neighbour_blocks(send, send_counts, send_displ, receive, recv_counts, recv_displ)
         p.set_ghost_blocks(receive, self._recv_counts)
+
+    def _neighbour_blocks(self, send, send_counts, send_displ, receive, recv_counts, recv_displ):
+        """Blocks of doubles to and from the ranks that share ghosts with this one, as Alltoallv lays
+        them out (``*_counts``, ``*_displ`` in values), point to point: a rank talks to its
+        neighbours only, and not at all when it shares no ghost with another rank (a rank whose
+        ghosts are all its own periodic images, an empty rank). This rank's own block is left to
+        the caller, which copies it directly."""
+        me = self.rank
+        if self._ghost_owners or self._ghost_takers:
+            requests = self._requests
+            requests.clear()
+            double = self.MPI.DOUBLE
+            for r in range(self.nprocs):
+                if r != me and recv_counts[r]:
+                    first = recv_displ[r]
+                    requests.append(self.world.Irecv([receive[first:first + recv_counts[r]], double], r,
+                                                     _GHOST_TAG))
+            for r in range(self.nprocs):
+                if r != me and send_counts[r]:
+                    first = send_displ[r]
+                    requests.append(self.world.Isend([send[first:first + send_counts[r]], double], r,
+                                                     _GHOST_TAG))
+            self.MPI.Request.Waitall(requests)
+        if send_counts[me]:
+            first, into = send_displ[me], recv_displ[me]
+            receive[into:into + send_counts[me]] = send[first:first + send_counts[me]]
 
     def _geometry(self, box, cutghost):
         """What borders needs of the sub-domains, fixed while the box and the ghost cutoff are: every
@@ -377,10 +416,8 @@ class MPIComm:
 
     def _own_images(self):
         """(first row among those sent, first ghost row, how many) of this rank's images of its own
-        particles: sent to itself, they arrive in its own slot of the ghost rows."""
-        me = self.rank
-        return (int(self._send_counts[:me].sum()), int(self._recv_counts[:me].sum()),
-                int(self._send_counts[me]))
+        particles: sent to itself, they arrive in its own slot of the ghost rows (set by borders)."""
+        return self._own
 
     def _buffers(self, width):
         """Send and receive buffers for rows of ``width`` values, kept between steps."""
@@ -409,8 +446,7 @@ class MPIComm:
             sent_first, ghost_first, own = self._own_images()
             _pack_rows(array, index, self._send_shift if name == "x" else _NO_SHIFT, send, sent_first, own,
                        target[ghost_first * width:(ghost_first + own) * width])
-            self.world.Alltoallv([send, (send_counts, send_displ), self.MPI.DOUBLE],
-                                 [target, (recv_counts, recv_displ), self.MPI.DOUBLE])
+            self._neighbour_blocks(send, send_counts, send_displ, target, recv_counts, recv_displ)
             if target is recv:
                 ghosts[...] = recv.reshape(p.nghost, width)
 
@@ -436,8 +472,7 @@ class MPIComm:
             recv_counts, recv_displ, send_counts, send_displ = self._layout(width, own=False)
             back = self._reverse_buffer(len(index) * width)
             ghosts = np.ascontiguousarray(ghosts)
-            self.world.Alltoallv([ghosts.reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],
-                                 [back, (recv_counts, recv_displ), self.MPI.DOUBLE])
+            self._neighbour_blocks(ghosts.reshape(-1), send_counts, send_displ, back, recv_counts, recv_displ)
             sent_first, ghost_first, own = self._own_images()
             _add_rows(array.reshape(len(array), width), index, back.reshape(len(index), width), sent_first,
                       own, ghosts[ghost_first:ghost_first + own])
@@ -467,6 +502,8 @@ class MPIComm:
         if ghosts is None:
             back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
             return self._send_index, back
+        if not (len(ghosts) or self._ghost_owners or self._ghost_takers):
+            return self._send_index[:0], np.empty((0, rows.shape[1]))
         # ghosts arrive in blocks by the rank that sent them, each in the order of its _send_index:
         # a ghost's place in its block names the owned particle there
         ends = np.cumsum(self._recv_counts)
@@ -475,10 +512,36 @@ class MPIComm:
         message = np.empty((len(ghosts), rows.shape[1] + 1))
         message[:, 0] = ghosts - (ends - self._recv_counts)[source]
         message[:, 1:] = rows
-        received, senders = self._alltoall_rows(message, counts, return_counts=True)
+        received, senders = self._rows_to_owners(message, counts)
         first_sent = np.cumsum(self._send_counts) - self._send_counts
         place = np.repeat(first_sent, senders) + received[:, 0].astype(np.int64)
         return self._send_index[place], received[:, 1:]
+
+    def _rows_to_owners(self, rows, counts):
+        """Rows of ghost values to the ranks that own the ghosts (``counts`` per rank, in rank
+        order), point to point: a rank sends to the ranks its ghosts came from and hears from those
+        it sent ghosts to, a count and then the rows; one sharing no ghost with another rank sends
+        and waits for nothing. Returns (rows received, in rank order; how many from each rank)."""
+        me, world, MPI = self.rank, self.world, self.MPI
+        owners, askers = self._ghost_owners, self._ghost_takers
+        incoming = np.zeros(self.nprocs, dtype=np.int64)
+        incoming[me] = counts[me]
+        requests = [world.Irecv([incoming[r:r + 1], MPI.INT64_T], r, _COUNT_TAG) for r in askers]
+        requests += [world.Isend([counts[r:r + 1], MPI.INT64_T], r, _COUNT_TAG) for r in owners]
+        if requests:
+            MPI.Request.Waitall(requests)
+        width = rows.shape[1]
+        received = np.empty((int(incoming.sum()), width))
+        ends, sent = np.cumsum(incoming), np.cumsum(counts)
+        requests = [world.Irecv([received[ends[r] - incoming[r]:ends[r]], MPI.DOUBLE], r, _GHOST_TAG)
+                    for r in askers if incoming[r]]
+        requests += [world.Isend([rows[sent[r] - counts[r]:sent[r]], MPI.DOUBLE], r, _GHOST_TAG)
+                     for r in owners if counts[r]]
+        if requests:
+            MPI.Request.Waitall(requests)
+        if counts[me]:
+            received[ends[me] - incoming[me]:ends[me]] = rows[sent[me] - counts[me]:sent[me]]
+        return received, incoming
 
     # ---- collectives --------------------------------------------------------------------------
     def _alltoall_rows(self, rows, counts, recv_counts=None, return_counts=False):

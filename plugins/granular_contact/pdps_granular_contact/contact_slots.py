@@ -4,8 +4,8 @@ A pair style marks, in ``touched`` (one flag per slot of ``pdps_core.api.Contact
 contact its force computation saw; at the end of the step the contacts it did not see (the spheres
 came apart) are forgotten. Each particle's open slots are kept first in its row, so that sweep reads
 a row only up to its first free slot: most particles touch nothing, and a step costs one read per
-particle rather than one per slot. Between two list builds on one rank, a pair style that knows the
-rows it touched sweeps only those and the rows that kept contacts (``HeldRows``, ``free_stale_of``:
+particle rather than one per slot. Between two list builds, a pair style that knows the rows it
+touched sweeps only those and the rows that kept contacts (``HeldRows``, ``free_stale_of``:
 pair gran's styles from their touching list entries, pair dem's from their contact log). The core's
 ``open_slot`` fills the first free slot, which keeps the rows packed; ``pack_slots`` packs rows
 written by anything else (a restart file, an older run) at the start of a run. On several ranks a
@@ -58,17 +58,20 @@ def free_stale(partner, history, touched, nlocal, nall):
 
 
 @njit(cache=True, _nrt=False)
-def free_stale_of(partner, history, touched, held, nheld, fresh, nfresh, mark):
-    """free_stale for the rows that can hold a contact, on one rank between two list builds: the
-    ``nheld`` rows ``held`` that kept contacts after the last step and the ``nfresh`` rows
-    ``fresh`` this step touched (repeats allowed). Leaves in ``held`` the rows keeping contacts and
-    returns their number; ``mark`` (one flag per row, all False) is left all False."""
+def free_stale_of(partner, history, touched, held, nheld, fresh, nfresh, merged, mark):
+    """free_stale for the rows that can hold a contact, between two list builds: the ``nheld`` rows
+    ``held`` that kept contacts after the last step, the ``nfresh`` rows ``fresh`` this step's
+    force computation touched and the rows ``merged`` that mirrors from other ranks touched
+    (repeats allowed). Leaves in ``held`` the rows keeping contacts and returns their number;
+    ``mark`` (one flag per row, all False) is left all False. A ghost row among them loses its
+    untouched slots too, where free_stale only clears its flags: a ghost's slots carry nothing
+    from one step to the next (forces read the owned particle's), only room for mirrors."""
     n = 0
     for c in range(nheld):
         mark[held[c]] = True
         n += 1
-    for c in range(nfresh):
-        r = fresh[c]
+    for c in range(nfresh + len(merged)):
+        r = fresh[c] if c < nfresh else merged[c - nfresh]
         if not mark[r]:
             mark[r] = True
             held[n] = r
@@ -124,13 +127,15 @@ def contact_rows(pairs, npairs, owner, fresh):
 
 
 class HeldRows:
-    """The end-of-step sweep of a pair style's contact slots: on one rank between two builds of the
-    list, only the rows that kept contacts after the last step and the rows touched now can hold a
-    contact, so only those are swept (``sweep_of``, when ``ready``); otherwise every row is
-    (``sweep_all``), and the rows keeping contacts are noted for the next step. ::
+    """The end-of-step sweep of a pair style's contact slots: between two builds of the list, only
+    the rows that kept contacts after the last step and the rows touched now can hold a contact, so
+    only those are swept (``sweep_of``, when ``ready``); otherwise every row is (``sweep_all``), and
+    the rows keeping contacts are noted for the next step. The rows touched now are those of this
+    step's contacts (a ghost owned elsewhere among them) and, on several ranks, the owned rows its
+    mirrors came back to (``Mirrors.merged``). ::
 
-        if held.ready(sim, nlist):
-            held.sweep_of(partner, values, touched, fresh, nfresh)     # fresh: the rows touched now
+        if held.ready(nlist):
+            held.sweep_of(partner, values, touched, fresh, nfresh, mirrors.merged)
         else:
             held.sweep_all(sim, nlist, partner, values, touched)
     """
@@ -145,22 +150,24 @@ class HeldRows:
         """The next sweep reads every row (the slots changed outside a step: setup, an error)."""
         self._of = None
 
-    def ready(self, sim, nlist):
-        return sim.comm.nprocs == 1 and self._of == (nlist, nlist.version)
+    def ready(self, nlist):
+        return self._of == (nlist, nlist.version)
 
-    def sweep_of(self, partner, values, touched, fresh, nfresh):
-        """Forget the contacts this step did not see; ``fresh[:nfresh]`` are the rows it touched."""
-        self.count = free_stale_of(partner, values, touched, self.rows, self.count, fresh, nfresh, self._mark)
+    def sweep_of(self, partner, values, touched, fresh, nfresh, merged):
+        """Forget the contacts this step did not see; ``fresh[:nfresh]`` are the rows its contacts
+        touched, ``merged`` those its mirrors from other ranks did."""
+        self.count = free_stale_of(partner, values, touched, self.rows, self.count, fresh, nfresh, merged,
+                                   self._mark)
 
     def sweep_all(self, sim, nlist, partner, values, touched):
         p = sim.particles
         free_stale(partner, values, touched, p.nlocal, p.nall)
-        if sim.comm.nprocs == 1:
-            if len(self.rows) < p.nlocal:
-                self.rows = np.empty(p.nlocal + p.nlocal // 4, dtype=np.int64)
-                self._mark = np.zeros(len(self.rows), dtype=np.bool_)
-            self.count = rows_holding(partner, p.nlocal, self.rows)
-            self._of = (nlist, nlist.version)
+        # rows swept later: owned ones, and ghosts owned elsewhere that a contact touches
+        if len(self.rows) < p.nall:
+            self.rows = np.empty(p.nall + p.nall // 4, dtype=np.int64)
+            self._mark = np.zeros(len(self.rows), dtype=np.bool_)
+        self.count = rows_holding(partner, p.nlocal, self.rows)
+        self._of = (nlist, nlist.version)
 
 
 @njit(cache=True)
@@ -220,6 +227,7 @@ class Mirrors:
     def __init__(self):
         self._ghosts = np.empty(0, dtype=np.int64)
         self._rows = np.empty((0, 0))
+        self.merged = np.empty(0, dtype=np.int64)      # the owned rows the last collect wrote into
 
     def collect(self, sim, history, owner, touched):
         """Returns -1, or the tag of a particle left with no free slot."""
@@ -233,5 +241,6 @@ class Mirrors:
         count = remote_touched_ghosts(touched, owner, p.nlocal, p.nall, self._ghosts)
         pack_mirrors(touched, history.partner, history.values, p.nlocal, self._ghosts, count, self._rows)
         index, back = sim.comm.reverse_rows(self._rows[:count], self._ghosts[:count])
+        self.merged = index
         bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
         return -1 if bad < 0 else int(p.tag[bad])

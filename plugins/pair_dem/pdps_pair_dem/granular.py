@@ -334,16 +334,16 @@ class GranularPair(Pair):
         self.energy = 0.0
 
     def forget_stale(self, sim, nlist, owner, touched):
-        """Forget the contacts this step did not see: on one rank between two list builds a sweep of
+        """Forget the contacts this step did not see: between two list builds a sweep of
         the rows that kept contacts and those of this step's contacts (the contact log), instead of
         every particle's row (HeldRows)."""
         partner, values = self.history.partner, self.history.values
-        if not self.held.ready(sim, nlist):
+        if not self.held.ready(nlist):
             self.held.sweep_all(sim, nlist, partner, values, touched)
             return
         ncontacts = int(self._logged[0])
         contact_rows(self._log_pairs, ncontacts, owner, self._fresh)
-        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ncontacts)
+        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ncontacts, self.mirrors.merged)
 
     def warn_coincident(self, sim, nlist):
         """Spheres whose centres coincide have no contact normal, so they exert no force on each

@@ -356,15 +356,15 @@ class PairGran(Pair):
         return self._rows, self._touching, npairs
 
     def forget_stale(self, sim, nlist, owner, touched, rows, touching, ntouching):
-        """Forget the contacts this step did not see: on one rank between two list builds a sweep of
+        """Forget the contacts this step did not see: between two list builds a sweep of
         the rows that kept contacts and those the touching entries used (HeldRows), instead of every
         particle's row (gran_box: 15 -> 2 us a step)."""
         partner, values = self.history.partner, self.history.values
-        if not self.held.ready(sim, nlist):
+        if not self.held.ready(nlist):
             self.held.sweep_all(sim, nlist, partner, values, touched)
             return
         touched_rows(rows, nlist.neighbors, touching, ntouching, owner, self._fresh)
-        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ntouching)
+        self.held.sweep_of(partner, values, touched, self._fresh, 2 * ntouching, self.mirrors.merged)
 
     def touched_flags(self, rows, capacity):
         """Which slots a contact touched this step; free_stale clears what it set, so the flags are

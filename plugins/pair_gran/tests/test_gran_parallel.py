@@ -5,7 +5,7 @@ sides and merged back on their owners (as LAMMPS's reverse communication of hist
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, thermo_rows
+from pdps_core.testing import contacts_held_on_ranks, run_ranks, thermo_rows
 
 
 def bed(path, n_side=(12, 6, 4), seed=11):
@@ -90,3 +90,61 @@ def test_liggghts_model_with_rolling_spring_and_cohesion_on_1_and_2_ranks(tmp_pa
     assert one[:, 0].tolist() == list(range(0, 3001, 500))
     assert not np.allclose(one[-1, 1], one[0, 1])
     assert two == pytest.approx(one, rel=1e-9)
+
+
+LIGGGHTS_PAIR = "gran model hertz tangential history rolling_friction epsd cohesion sjkr"
+LIGGGHTS_MATERIAL = """\
+    fix m1 all property/global youngsModulus peratomtype 5.e7
+    fix m2 all property/global poissonsRatio peratomtype 0.45
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+    fix m5 all property/global coefficientRollingFriction peratomtypepair 1 0.1
+    fix m6 all property/global coefficientRollingViscousDamping peratomtypepair 1 0.3
+    fix m7 all property/global cohesionEnergyDensity peratomtypepair 1 1000.0
+"""
+
+
+def hot_gas(path, seed=6):
+    """100 spheres (d 1, m 1) near the sites of a lattice of spacing 1.2 in a periodic box 6 wide
+    (a data file), and Gaussian velocities of deviation 8 for them."""
+    rng = np.random.default_rng(seed)
+    sites = (np.stack(np.meshgrid(*[np.arange(5)] * 3, indexing="ij"), -1).reshape(-1, 3)[:100] * 1.2
+             + 0.6 + rng.uniform(-0.02, 0.02, (100, 3)))
+    lines = ["gas", "", "100 atoms", "1 atom types", "", "0 6 xlo xhi", "0 6 ylo yhi", "0 6 zlo zhi", "",
+             "Atoms # sphere", ""]
+    lines += [f"{k} 1 1.0 1.9098593171027440 {p[0]!r} {p[1]!r} {p[2]!r}" for k, p in enumerate(sites.tolist(), 1)]
+    path.write_text("\n".join(lines) + "\n")
+    return rng.normal(0.0, 8.0, (100, 3))
+
+
+@pytest.mark.parametrize("pair, material", [("gran/hooke/history 2000000.0 NULL 50.0 NULL 0.5 1", ""),
+                                            (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL)],
+                         ids=["gran/hooke/history", "gran model"])
+def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_2_ranks(tmp_path, pair, material):
+    """On two ranks a contact across the cut keeps its spring on both sides and the mirror written
+    into a ghost goes back to its owner; between list builds only the rows that held a contact, those
+    this step's contacts touched and those the mirrors came back to are swept. In a hot gas cut
+    across x, at every step the owned spheres' slots, over both ranks, hold exactly the pairs that
+    touch. The springs are stiff (a contact lasts a few steps, builds come every seven), so that
+    contacts end between builds: with soft ones every contact outlives a build and a row left
+    unswept would not show."""
+    velocities = hot_gas(tmp_path / "gas.data")
+    script = """\
+        units lj
+        atom_style sphere
+        boundary p p p
+        comm_modify vel yes
+        processors 2 1 1
+        read_data gas.data
+        """ + material + f"""\
+        pair_style {pair}
+        pair_coeff * *
+        timestep 0.0004
+        neighbor 0.1 bin
+        neigh_modify delay 0 every 1 check yes
+        fix 1 all nve/sphere
+        """
+    exact, builds, contacts = contacts_held_on_ranks(script, velocities, 400, 2, tmp_path)
+    print(f"builds {builds}, touching pairs summed over the steps {contacts}")
+    assert builds > 20 and contacts > 400
+    assert exact
