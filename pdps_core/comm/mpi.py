@@ -27,6 +27,7 @@ from numba import njit
 from ..errors import SimulationError
 from ..state.finite import first_non_finite
 from .grid import Decomposition, choose_grid, rank_of_position
+from .serial import forward_to_images, reverse_from_images
 
 
 @njit(cache=True)
@@ -432,6 +433,10 @@ class MPIComm:
     def forward_comm(self, particles, names=("x",)):
         p = particles
         index = self._send_index
+        if not (self._ghost_owners or self._ghost_takers):
+            # every ghost is an image of this rank's own particles, in the order they were sent
+            forward_to_images(p, names, index, self._send_shift)
+            return
         for name in names:
             array = p.arrays[name]
             if array.dtype != np.float64 or array.ndim != 2:
@@ -462,6 +467,9 @@ class MPIComm:
     def reverse_comm(self, particles, names=("f",)):
         p = particles
         index = self._send_index
+        if not (self._ghost_owners or self._ghost_takers):
+            reverse_from_images(p, names, index)
+            return
         for name in names:
             array = p.arrays[name]
             width = 1 if array.ndim == 1 else array.shape[1]

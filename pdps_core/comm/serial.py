@@ -119,6 +119,46 @@ def _vector(array):
     return array.ndim == 2 and array.shape[1] == 3 and array.dtype == np.float64
 
 
+def forward_to_images(particles, names, source, shift):
+    """Ghost values from their owners when every ghost is a periodic image of an owned particle on
+    this rank: ghost g copies particle ``source[g]`` (positions displaced by ``shift[g]``)."""
+    p = particles
+    if not len(source):
+        return
+    pending = None          # a vector waiting for a second one, to copy both in one call
+    for name in names:
+        array = p.arrays[name]
+        if name == "x":
+            _positions_to_ghosts(array, source, shift, p.nlocal)
+        elif _vector(array):
+            if pending is None:
+                pending = array
+            else:
+                _copy_pair_to_ghosts(pending, array, source, p.nlocal)
+                pending = None
+        elif array.ndim == 2:
+            _copy_to_ghosts(array, source, p.nlocal)
+        else:
+            array[p.nlocal:] = array[source]
+    if pending is not None:
+        _copy_to_ghosts(pending, source, p.nlocal)
+
+
+def reverse_from_images(particles, names, source):
+    """Ghost values summed onto their owners, every ghost a periodic image (forward_to_images), in
+    the order of the ghosts."""
+    p = particles
+    if not len(source):
+        return
+    arrays = [p.arrays[name] for name in names]
+    if len(arrays) == 2 and _vector(arrays[0]) and _vector(arrays[1]):
+        _sum_pair_onto_owners(arrays[0], arrays[1], source, p.nlocal)
+        return
+    for array in arrays:
+        # a per-atom scalar (1-d) as a column, as MPIComm.reverse_comm reads it
+        _sum_onto_owners(array.reshape(len(array), -1), source, p.nlocal)
+
+
 class SerialComm:
     nprocs = 1
     rank = 0
@@ -192,39 +232,10 @@ class SerialComm:
         return (self.ghost_source if ghosts is None else self.ghost_source[ghosts]), rows
 
     def forward_comm(self, particles, names=("x",)):
-        p = particles
-        src = self.ghost_source
-        if not len(src):
-            return
-        pending = None          # a vector waiting for a second one, to copy both in one call
-        for name in names:
-            array = p.arrays[name]
-            if name == "x":
-                _positions_to_ghosts(array, src, self.ghost_shift, p.nlocal)
-            elif _vector(array):
-                if pending is None:
-                    pending = array
-                else:
-                    _copy_pair_to_ghosts(pending, array, src, p.nlocal)
-                    pending = None
-            elif array.ndim == 2:
-                _copy_to_ghosts(array, src, p.nlocal)
-            else:
-                array[p.nlocal:] = array[src]
-        if pending is not None:
-            _copy_to_ghosts(pending, src, p.nlocal)
+        forward_to_images(particles, names, self.ghost_source, self.ghost_shift)
 
     def reverse_comm(self, particles, names=("f",)):
-        p = particles
-        if not len(self.ghost_source):
-            return
-        arrays = [p.arrays[name] for name in names]
-        if len(arrays) == 2 and _vector(arrays[0]) and _vector(arrays[1]):
-            _sum_pair_onto_owners(arrays[0], arrays[1], self.ghost_source, p.nlocal)
-            return
-        for array in arrays:
-            # a per-atom scalar (1-d) as a column, as MPIComm.reverse_comm reads it
-            _sum_onto_owners(array.reshape(len(array), -1), self.ghost_source, p.nlocal)
+        reverse_from_images(particles, names, self.ghost_source)
 
     def set_grid(self, fixed):
         """Validated by the processors command: on one rank every factor is 1."""
