@@ -117,26 +117,29 @@ def hot_gas(path, seed=6):
     return rng.normal(0.0, 8.0, (100, 3))
 
 
-@pytest.mark.parametrize("pair, material", [("gran/hooke/history 2000000.0 NULL 50.0 NULL 0.5 1", ""),
-                                            (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL)],
-                         ids=["gran/hooke/history", "gran model"])
-def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_2_ranks(tmp_path, pair, material):
-    """On two ranks a contact across the cut keeps its spring on both sides and the mirror written
+HOOKE_STIFF = "gran/hooke/history 2000000.0 NULL 50.0 NULL 0.5 1"
+
+
+@pytest.mark.parametrize("pair, material, grid", [(HOOKE_STIFF, "", "2 1 1"), (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL, "2 1 1"),
+                                                  (HOOKE_STIFF, "", "2 2 1")],
+                         ids=["gran/hooke/history", "gran model", "gran/hooke/history on 4 ranks"])
+def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_several_ranks(tmp_path, pair, material, grid):
+    """On several ranks a contact across a cut keeps its spring on both sides and the mirror written
     into a ghost goes back to its owner; between list builds only the rows that held a contact, those
     this step's contacts touched and those the mirrors came back to are swept. In a hot gas cut
-    across x, at every step the owned spheres' slots, over both ranks, hold exactly the pairs that
-    touch. The springs are stiff (a contact lasts a few steps, builds come every seven), so that
-    contacts end between builds: with soft ones every contact outlives a build and a row left
-    unswept would not show."""
+    across x (and y on four ranks, where a rank has ghosts from three others), at every step the
+    owned spheres' slots, over all ranks, hold exactly the pairs that touch. The springs are stiff
+    (a contact lasts a few steps, builds come every seven), so that contacts end between builds:
+    with soft ones every contact outlives a build and a row left unswept would not show."""
     velocities = hot_gas(tmp_path / "gas.data")
     script = """\
         units lj
         atom_style sphere
         boundary p p p
         comm_modify vel yes
-        processors 2 1 1
+        processors {grid}
         read_data gas.data
-        """ + material + f"""\
+        """.format(grid=grid) + material + f"""\
         pair_style {pair}
         pair_coeff * *
         timestep 0.0004
@@ -144,7 +147,8 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_2_ranks(tmp_pat
         neigh_modify delay 0 every 1 check yes
         fix 1 all nve/sphere
         """
-    exact, builds, contacts = contacts_held_on_ranks(script, velocities, 400, 2, tmp_path)
+    ranks = int(np.prod([int(n) for n in grid.split()]))
+    exact, builds, contacts = contacts_held_on_ranks(script, velocities, 400, ranks, tmp_path)
     print(f"builds {builds}, touching pairs summed over the steps {contacts}")
     assert builds > 20 and contacts > 400
     assert exact
