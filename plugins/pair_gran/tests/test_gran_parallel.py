@@ -92,8 +92,8 @@ def test_liggghts_model_with_rolling_spring_and_cohesion_on_1_and_2_ranks(tmp_pa
     assert two == pytest.approx(one, rel=1e-9)
 
 
-LIGGGHTS_PAIR = "gran model hertz tangential history rolling_friction epsd cohesion sjkr"
-LIGGGHTS_MATERIAL = """\
+LIGGGHTS_EPSD_PAIR = "gran model hertz tangential history rolling_friction epsd cohesion sjkr"
+LIGGGHTS_EPSD_MATERIAL = """\
     fix m1 all property/global youngsModulus peratomtype 5.e7
     fix m2 all property/global poissonsRatio peratomtype 0.45
     fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
@@ -120,7 +120,7 @@ def hot_gas(path, seed=6):
 HOOKE_STIFF = "gran/hooke/history 2000000.0 NULL 50.0 NULL 0.5 1"
 
 
-@pytest.mark.parametrize("pair, material, grid", [(HOOKE_STIFF, "", "2 1 1"), (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL, "2 1 1"),
+@pytest.mark.parametrize("pair, material, grid", [(HOOKE_STIFF, "", "2 1 1"), (LIGGGHTS_EPSD_PAIR, LIGGGHTS_EPSD_MATERIAL, "2 1 1"),
                                                   (HOOKE_STIFF, "", "2 2 1")],
                          ids=["gran/hooke/history", "gran model", "gran/hooke/history on 4 ranks"])
 def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_several_ranks(tmp_path, pair, material, grid):
