@@ -120,7 +120,8 @@ def hot_gas(path, seed=6):
 HOOKE_STIFF = "gran/hooke/history 2000000.0 NULL 50.0 NULL 0.5 1"
 
 
-@pytest.mark.parametrize("pair, material, grid", [(HOOKE_STIFF, "", "2 1 1"), (LIGGGHTS_EPSD_PAIR, LIGGGHTS_EPSD_MATERIAL, "2 1 1"),
+@pytest.mark.parametrize("pair, material, grid", [(HOOKE_STIFF, "", "2 1 1"),
+                                                  (LIGGGHTS_EPSD_PAIR, LIGGGHTS_EPSD_MATERIAL, "2 1 1"),
                                                   (HOOKE_STIFF, "", "2 2 1")],
                          ids=["gran/hooke/history", "gran model", "gran/hooke/history on 4 ranks"])
 def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_several_ranks(tmp_path, pair, material, grid):
