@@ -7,16 +7,20 @@ initial_integrate, one defined after every other reads it at end_of_step. What a
 of where it started is Python's own small objects (floats, tuples, frames: 1-3 KB measured); a
 temporary over the 2,000-4,000 particles of these scenes would be 16 KB or more (one float each).
 Steps that rebuild the lists may allocate (ghosts, lists and wall candidates grow, particles are
-re-sorted); they are told apart and left out.
+re-sorted); they are told apart and left out. The same scenes run on two ranks as well, where ghosts
+and contact springs travel in messages between the ranks.
 """
 
+import subprocess
+import sys
 import tracemalloc
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pdps_core.api import Fix, Simulation
-from pdps_core.testing import register_styles
+from pdps_core.testing import mpiexec, register_styles
 
 # Python's own objects in one step (measured: 1.3-2.7 KB on the scenes below); a float per
 # particle is 16 KB at 2,000 particles
@@ -153,3 +157,33 @@ def test_a_temporary_over_the_particles_is_seen():
     script = SCENES["lj/cut"].replace("fix             1 all nve", "fix 1 all nve\nfix t all test/alloc_temporary")
     plain, _ = step_allocations(script, warm=10, steps=40)
     assert min(plain) > 4 * STEP_LIMIT
+
+
+# The scenes of this file on two ranks, each rank measuring its own steps: ghosts refreshed and
+# forces summed back through messages, springs of contacts across the cut sent back to their owners.
+RANKS_DRIVER = """
+import sys
+from mpi4py import MPI
+sys.path.insert(0, sys.argv[1])
+from test_step_allocations import SCENES, step_allocations
+world = MPI.COMM_WORLD
+for name, script in SCENES.items():
+    plain, _ = step_allocations(script)
+    for rank, steps, peak in world.gather((world.rank, len(plain), max(plain)), root=0) or []:
+        print(f"{rank}|{name}|{steps}|{peak}", flush=True)
+"""
+
+
+def test_a_step_between_list_builds_allocates_nothing_on_2_ranks(tmp_path):
+    (tmp_path / "driver.py").write_text(RANKS_DRIVER)
+    done = subprocess.run([mpiexec(), "-n", "2", sys.executable, "driver.py", str(Path(__file__).parent)],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stderr
+    measured = [line.split("|") for line in done.stdout.splitlines() if line.count("|") == 3]
+    print("\n".join(f"rank {rank}, {name}: {steps} steps without a build, largest {int(peak) / 1024:.1f} KB"
+                    for rank, name, steps, peak in measured))
+    assert sorted((rank, name) for rank, name, _, _ in measured) == sorted(
+        (str(rank), name) for rank in (0, 1) for name in SCENES)
+    for rank, name, steps, peak in measured:
+        assert int(steps) >= 50
+        assert int(peak) < STEP_LIMIT, (rank, name)

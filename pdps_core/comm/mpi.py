@@ -138,6 +138,14 @@ def _leavers(x, nlocal, lo, length, grid, me, gone, dest, counts, start, order):
 
 
 _NO_SHIFT = np.zeros((0, 3))
+
+
+def _kept(buffer, rows, width):
+    """``buffer``, or a new one a quarter larger when it has fewer than ``rows`` rows or another
+    width (the caller keeps what this returns and uses its first rows)."""
+    if buffer.shape[0] < rows or buffer.shape[1] != width:
+        buffer = np.empty((rows + rows // 4 + 16, width))
+    return buffer
 _GHOST_TAG = 17         # point-to-point ghost messages (forward, reverse, borders, rows to owners)
 _COUNT_TAG = 18
 
@@ -223,6 +231,7 @@ class MPIComm:
         self._exchange_counts = np.zeros((self.nprocs, 2), dtype=np.int64)     # (rows, error flag)
         self._exchange_received = np.zeros((self.nprocs, 2), dtype=np.int64)
         self._requests = []
+        self._rows_out = self._rows_in = np.zeros((0, 0))     # reverse_rows' messages, kept
         self._own = (0, 0, 0)
         self._ghost_owners, self._ghost_takers = [], []
 
@@ -506,7 +515,8 @@ class MPIComm:
     def reverse_rows(self, rows, ghosts=None):
         """Rows of ghost values back to the ranks owning the ghosts: (owned indices, rows) there,
         for values a style merges itself rather than sums. ``ghosts``: the rows are those of these
-        ghosts only (their indices among the ghosts, ascending); by default one row a ghost."""
+        ghosts only (their indices among the ghosts, ascending); by default one row a ghost. With
+        ``ghosts`` the rows returned are valid until the next such call (buffers kept)."""
         if ghosts is None:
             back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
             return self._send_index, back
@@ -517,7 +527,10 @@ class MPIComm:
         ends = np.cumsum(self._recv_counts)
         source = np.searchsorted(ends, ghosts, side="right")
         counts = np.bincount(source, minlength=self.nprocs)
-        message = np.empty((len(ghosts), rows.shape[1] + 1))
+        # messages and what arrives go through buffers kept between calls (a granular step sends
+        # back its touched ghosts' slots: tens of kB)
+        self._rows_out = _kept(self._rows_out, len(ghosts), rows.shape[1] + 1)
+        message = self._rows_out[:len(ghosts)]
         message[:, 0] = ghosts - (ends - self._recv_counts)[source]
         message[:, 1:] = rows
         received, senders = self._rows_to_owners(message, counts)
@@ -538,8 +551,9 @@ class MPIComm:
         requests += [world.Isend([counts[r:r + 1], MPI.INT64_T], r, _COUNT_TAG) for r in owners]
         if requests:
             MPI.Request.Waitall(requests)
-        width = rows.shape[1]
-        received = np.empty((int(incoming.sum()), width))
+        total = int(incoming.sum())
+        self._rows_in = _kept(self._rows_in, total, rows.shape[1])
+        received = self._rows_in[:total]
         ends, sent = np.cumsum(incoming), np.cumsum(counts)
         requests = [world.Irecv([received[ends[r] - incoming[r]:ends[r]], MPI.DOUBLE], r, _GHOST_TAG)
                     for r in askers if incoming[r]]
