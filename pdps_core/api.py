@@ -118,7 +118,7 @@ CONTRACT = {
         "forward_comm": "forward_comm(particles, names): owners' values onto their ghosts",
         "reverse_comm": "reverse_comm(particles, names): ghosts' values summed onto their owners",
         "reverse_rows": "reverse_rows(rows, ghosts=None): ghost rows (of every ghost, or of those named) back to "
-                        "their owners, merged by the style",
+                        "their owners, merged by the style (with ghosts named: valid until the next such call)",
         "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
         "send_rows": "send_rows(rows, ranks): each row to the rank named; returns (rows received, the rank each came from)",
         "rank_of": "rank_of(points): the rank whose sub-domain holds each point (points inside the box)",
