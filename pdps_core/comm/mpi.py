@@ -234,6 +234,7 @@ class MPIComm:
         self._rows_out = self._rows_in = np.zeros((0, 0))     # reverse_rows' messages, kept
         self._own = (0, 0, 0)
         self._ghost_owners, self._ghost_takers = [], []
+        self._shares_ghosts = False     # with any other rank (set by borders)
 
     @property
     def is_root(self):
@@ -350,6 +351,7 @@ class MPIComm:
         # the ranks this one shares ghosts with: those that sent it ghosts, those it sent ghosts to
         self._ghost_owners = [r for r in range(self.nprocs) if r != me and self._recv_counts[r]]
         self._ghost_takers = [r for r in range(self.nprocs) if r != me and counts[r]]
+        self._shares_ghosts = bool(self._ghost_owners or self._ghost_takers)
         total = int(self._recv_counts.sum())
         if receive.size < total * width:
             receive = np.empty(int(1.25 * total * width) + 64)
@@ -365,7 +367,7 @@ class MPIComm:
         ghosts are all its own periodic images, an empty rank). This rank's own block is left to
         the caller, which copies it directly."""
         me = self.rank
-        if self._ghost_owners or self._ghost_takers:
+        if self._shares_ghosts:
             requests = self._requests
             requests.clear()
             double = self.MPI.DOUBLE
@@ -442,7 +444,7 @@ class MPIComm:
     def forward_comm(self, particles, names=("x",)):
         p = particles
         index = self._send_index
-        if not (self._ghost_owners or self._ghost_takers):
+        if not self._shares_ghosts:
             # every ghost is an image of this rank's own particles, in the order they were sent
             forward_to_images(p, names, index, self._send_shift)
             return
@@ -476,7 +478,7 @@ class MPIComm:
     def reverse_comm(self, particles, names=("f",)):
         p = particles
         index = self._send_index
-        if not (self._ghost_owners or self._ghost_takers):
+        if not self._shares_ghosts:
             reverse_from_images(p, names, index)
             return
         for name in names:
@@ -520,7 +522,7 @@ class MPIComm:
         if ghosts is None:
             back = self._alltoall_rows(rows, self._recv_counts, self._send_counts)
             return self._send_index, back
-        if not (len(ghosts) or self._ghost_owners or self._ghost_takers):
+        if not (len(ghosts) or self._shares_ghosts):
             return self._send_index[:0], np.empty((0, rows.shape[1]))
         # ghosts arrive in blocks by the rank that sent them, each in the order of its _send_index:
         # a ghost's place in its block names the owned particle there
@@ -551,18 +553,12 @@ class MPIComm:
         requests += [world.Isend([counts[r:r + 1], MPI.INT64_T], r, _COUNT_TAG) for r in owners]
         if requests:
             MPI.Request.Waitall(requests)
-        total = int(incoming.sum())
-        self._rows_in = _kept(self._rows_in, total, rows.shape[1])
+        total, width = int(incoming.sum()), rows.shape[1]
+        self._rows_in = _kept(self._rows_in, total, width)
         received = self._rows_in[:total]
-        ends, sent = np.cumsum(incoming), np.cumsum(counts)
-        requests = [world.Irecv([received[ends[r] - incoming[r]:ends[r]], MPI.DOUBLE], r, _GHOST_TAG)
-                    for r in askers if incoming[r]]
-        requests += [world.Isend([rows[sent[r] - counts[r]:sent[r]], MPI.DOUBLE], r, _GHOST_TAG)
-                     for r in owners if counts[r]]
-        if requests:
-            MPI.Request.Waitall(requests)
-        if counts[me]:
-            received[ends[me] - incoming[me]:ends[me]] = rows[sent[me] - counts[me]:sent[me]]
+        send, recv = counts * width, incoming * width
+        self._neighbour_blocks(rows.reshape(-1), send, np.cumsum(send) - send, received.reshape(-1), recv,
+                               np.cumsum(recv) - recv)
         return received, incoming
 
     # ---- collectives --------------------------------------------------------------------------
