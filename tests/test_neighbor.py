@@ -306,6 +306,54 @@ def test_direct_mode_widens_the_skin_and_misses_no_pair_between_builds(make_sim,
     assert sim.neighbors.skin == 0.4 == sim.neighbors.requested_skin
 
 
+class ListsBetweenBuilds(Fix):
+    """At the end of every step: the pairs within the cutoff (1, the box 6 wide) by minimum image
+    against those of an occasional full list built then, and of the pair style's list read then, with
+    the steps since the last build."""
+    name = "test/lists_between_builds"
+
+    def init_run(self, sim):
+        self.occasional = sim.request_neighbor_list("full", 1.0, occasional=True)
+        self.agos = []
+
+    def end_of_step(self, sim):
+        p = sim.particles
+        x = p.x[: p.nlocal]
+        delta = x[:, None, :] - x[None, :, :]
+        delta[..., : sim.dimension] -= 6.0 * np.round(delta[..., : sim.dimension] / 6.0)
+        r = np.sqrt((delta ** 2).sum(axis=2))
+        np.fill_diagonal(r, np.inf)
+        expected = np.sort(np.round(r[r < 1.0], 9))
+        full = sim.build_neighbor_list(self.occasional)
+        # a full list holds each pair from both sides, a half list once
+        for nlist, copies in ((full, 1), (sim.pair_list, 2)):
+            rows = np.repeat(np.arange(p.nlocal), np.diff(nlist.offsets[: p.nlocal + 1]))
+            listed = np.linalg.norm(p.x[rows] - p.x[nlist.neighbors[: len(rows)]], axis=1)
+            listed = np.round(listed[listed < 1.0], 9)
+            assert np.array_equal(np.sort(np.tile(listed, copies)), expected), (sim.step, sim.neighbors.ago)
+        self.agos.append(sim.neighbors.ago)
+
+
+@pytest.mark.parametrize("dimension", [3, 2])
+def test_lists_read_between_builds_hold_every_pair_within_the_cutoff(make_sim, dimension):
+    """An occasional list (compute coord/atom's) and a list read in direct mode (fix shardlow reads
+    the pair style's) are built between rebuilds, from the positions of the moment: ghosts made at
+    the last build may by then lie inside the owned particles' bounding box, by up to twice the
+    largest move. Built with a skipped interior that ignored this, they missed pairs near the cutoff
+    (17 of 191,933 in a 31,944-particle DPD fluid)."""
+    registry.register("fix", "test/lists_between_builds", ListsBetweenBuilds)
+    sim = _dpd_fluid(make_sim, 1.0, 100, dimension)
+    sim.command("""
+        pair_coeff * * 10 0
+        neighbor 0.1
+        fix check all test/lists_between_builds
+        run 150
+    """)
+    check = sim.fixes["check"]
+    assert sim.pair_list.direct
+    assert sum(ago > 0 for ago in check.agos) > 60
+
+
 def test_direct_mode_only_where_lists_live_one_step(make_sim):
     """A DPD liquid at T = 0.01 started on a lattice moves so little that its list lives many steps:
     it keeps its list."""

@@ -120,7 +120,7 @@ def bin_into(x, nall, nlocal, lo, binsize, nbins, keep_off, cell, start, ghost_s
 @njit(cache=True)
 def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_start, order, slot,
                owned_rows, ghost_rows, half, two_d, offsets, neighbors, excluded_types, excluded_groups,
-               molecule, excluded_molecules):
+               molecule, excluded_molecules, moved):
     """Neighbors of each owned particle of the group (``mask & groupbit``) within
     cutneighsq[type_i, type_j], into ``offsets`` (nlocal + 1) and ``neighbors``; particles outside the
     group have none. ``owned_rows`` and ``ghost_rows``: the stencil's rows of bins along x, (first,
@@ -129,15 +129,18 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
     searched. Pairs of excluded types (``excluded_types[ti, tj]``), of excluded groups (rows of two
     mask bits, either order) or, for rows (group bit, 1 for intra or 0 for inter) of
     ``excluded_molecules``, pairs of the group in the same molecule (intra) or in different ones
-    (inter) are left out (neigh_modify exclude). Returns the number of pairs, or -1 when ``neighbors`` is too small.
+    (inter) are left out (neigh_modify exclude). ``moved``: the largest move of any particle since
+    the ghosts were made (0 right after). Returns the number of pairs, or -1 when ``neighbors`` is
+    too small.
 
     The pair test is written once, inline: a helper function taking the arrays would cost numba
     reference counting on every candidate (20 times slower, measured)."""
     screen = excluded_groups.shape[0] > 0
     screen_molecules = excluded_molecules.shape[0] > 0
     capacity = len(neighbors)
-    # ghosts lie outside the owned particles' bounding box (outside the box or this rank's part of
-    # it): a particle at least the cutoff inside that box has none to look at
+    # ghosts made now lie outside the owned particles' bounding box (outside the box or this rank's
+    # part of it), and those made earlier outside that box shrunk by twice the largest move since: a
+    # particle at least the cutoff inside it has none to look at
     inner_lo = np.empty(3)
     inner_hi = np.empty(3)
     for d in range(3):
@@ -147,7 +150,7 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
         for d in range(3):
             inner_lo[d] = min(inner_lo[d], x[i, d])
             inner_hi[d] = max(inner_hi[d], x[i, d])
-    reach = np.sqrt(cutneighsq.max())
+    reach = np.sqrt(cutneighsq.max()) + 2.0 * moved
     for d in range(3):
         if two_d and d == 2:
             inner_lo[d], inner_hi[d] = -np.inf, np.inf

@@ -77,7 +77,9 @@ class NeighborList:
 
     Direct mode (``direct``, for a list requested with ``direct_ok``, when the lists are rebuilt at
     nearly every step): the pair style computes forces from the cell bins ``cells`` made at every
-    step, and the list itself is built only if something reads ``offsets`` or ``neighbors``.
+    step, and the list itself is built only if something reads ``offsets`` or ``neighbors``: from
+    that step's bins, the pairs within the cutoff at that step (no skin: it is made again at the next
+    step it is read).
 
     ``version`` grows by one at every build: a style that keeps something made from the list (the
     row of each entry, say) makes it again when the version it was made from is not the list's."""
@@ -369,6 +371,8 @@ class Neighbor:
         direct = self._direct_due()
         binned = None
         for nlist in lists:
+            # a list read in direct mode was made from the bins of its step: none is owed any more
+            nlist._pending = None
             going_direct = direct and nlist.direct_ok and not nlist.direct
             nlist.direct = direct and nlist.direct_ok
             if going_direct:
@@ -389,15 +393,17 @@ class Neighbor:
         for nlist in self.perpetual:
             if nlist.direct:
                 nlist.cells = self._direct_bins(particles, box, nlist)
-                nlist._pending = lambda nlist=nlist, p=particles, box=box: \
-                    self._fill(nlist, p, self._bin(p, box), self.skin)
+                # a list read in direct mode is made for this step only (the next refresh replaces
+                # it): the pairs within the cutoff now, from this step's bins, with no skin
+                nlist._pending = lambda nlist=nlist, p=particles: \
+                    self._fill(nlist, p, self._direct_grid, 0.0, bins=nlist.cells[:5], moved=self.moved_everywhere)
 
     def _direct_bins(self, p, box, nlist):
         """Bins of half the interaction cutoff (no skin: they are made afresh at every step) with
         their stencils and the interior box (where no ghost is within the cutoff), in buffers of
         their own (other lists' builds must not overwrite them)."""
         cut = float(nlist.cutoff.max())
-        grid = self._grid(box, cut, p, cache="direct")
+        grid = self._direct_grid = self._grid(box, cut, p, cache="direct")
         lo, binsize, nbins, keep_off = grid
         bins = self._direct
         ncells = int(np.prod(nbins))
@@ -432,7 +438,7 @@ class Neighbor:
         (pairs within its cutoff, no skin); once per step however often it is asked for."""
         if nlist.built_step == step:
             return nlist
-        self._fill(nlist, particles, self._bin(particles, box), 0.0)
+        self._fill(nlist, particles, self._bin(particles, box), 0.0, moved=self.moved_everywhere)
         nlist.built_step = step
         return nlist
 
@@ -547,7 +553,10 @@ class Neighbor:
         self._excluded_molecules = np.array([[groups.bit(g), kind == "intra"] for g, kind in self.excluded_molecules],
                                             dtype=np.uint32).reshape(-1, 2)
 
-    def _fill(self, nlist, p, grid, skin):
+    def _fill(self, nlist, p, grid, skin, bins=None, moved=0.0):
+        """Build ``nlist`` from particles binned on ``grid``: the lists' bins, or ``bins`` (cell,
+        start, ghost_start, order, slot) binned on that grid. ``moved``: the largest move since the
+        ghosts were made (a list built between rebuilds)."""
         if getattr(self, "_excluded_types", None) is None or self._excluded_types.shape[0] != nlist.cutoff.shape[0]:
             self._excluded_types = np.zeros(nlist.cutoff.shape, dtype=np.bool_)
             self._excluded_groups = np.zeros((0, 2), dtype=np.uint32)
@@ -562,16 +571,17 @@ class Neighbor:
         # LAMMPS's neigh_modify one, taken as a mean: a list that would outgrow it is a mistake
         # (overlapping particles, a typo in a lattice), not something to allocate gigabytes for
         most = self.one * max(p.nlocal, 1)
+        binned = bins if bins is not None else (self._cell, self._start, self._ghost_start, self._order, self._slot)
         if len(nlist.offset_buffer) < p.nlocal + 1:
             nlist.offset_buffer = np.empty(int(1.25 * p.nlocal) + 16, dtype=np.int64)
         offsets = nlist.offset_buffer[:p.nlocal + 1]
         if len(nlist.buffer) == 0:
             nlist.buffer = np.empty(min(self._first_capacity(nlist, p, grid, cutneighsq), most), dtype=NEIGHBOR_INDEX)
         while True:
-            total = build_list(p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, self._cell,
-                               self._start, self._ghost_start, self._order, self._slot, owned_rows, ghost_rows,
+            total = build_list(p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, *binned,
+                               owned_rows, ghost_rows,
                                nlist.half_list, grid[2][2] == 1, offsets, nlist.buffer, self._excluded_types,
-                               self._excluded_groups, molecule, self._excluded_molecules)
+                               self._excluded_groups, molecule, self._excluded_molecules, float(moved))
             if total >= 0:
                 break
             if len(nlist.buffer) >= most:
