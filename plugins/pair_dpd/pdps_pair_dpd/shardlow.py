@@ -147,7 +147,9 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
     particle owned by another rank), their tags, the separation from the higher- to the lower-tag
     particle, the sweep key (colour, then block). Those swept elsewhere: rows (lower tag, higher
     tag, separation (3), types (2), inverse masses (2), key) and their rank, into ``away,
-    away_rank``, grown here when too short. Returns (pairs here, away, away_rank, pairs away)."""
+    away_rank``. Returns (pairs here, pairs away), pairs away -1 when ``away`` is too short (the
+    caller grows it and calls again: arrays replaced inside the loop would cost numba reference
+    counting at every pair)."""
     nblocks = ncell[0] * ncell[1] * ncell[2]
     m = 0
     sent = 0
@@ -176,12 +178,7 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
             rank = block_rank[block]
             if rank != me:
                 if sent == len(away):
-                    grown = np.empty((2 * sent + 64, 10))
-                    grown[:sent] = away[:sent]
-                    away = grown
-                    grown_rank = np.empty(2 * sent + 64, dtype=np.int64)
-                    grown_rank[:sent] = away_rank[:sent]
-                    away_rank = grown_rank
+                    return m, -1
                 row = away[sent]
                 row[0], row[1] = tag[lower], tag[upper]
                 row[2], row[3], row[4] = sign * delx, sign * dely, sign * delz
@@ -200,34 +197,32 @@ def collect_pairs(x, type_, tag, cell, owner, inv_mass, mask, groupbit, offsets,
             separation[m, 2] = sign * delz
             key[m] = sweep_key
             m += 1
-    return m, away, away_rank, sent
+    return m, sent
 
 
 @njit(cache=True)
-def _after(qa, qb, qs, a0, a1, s0, s1, s2, apart):
-    """Pair q comes after pair (a0, a1) in a block: by ids, then, for the same two particles met
-    through two periodic images (a box shorter than two cutoffs), by their separation along the
-    first axis where the images lie a box length apart (more than ``apart``). The images' other
-    components are equal but for round-off, which differs between ranks: they must not decide."""
-    if qa != a0:
-        return qa > a0
-    if qb != a1:
-        return qb > a1
-    if abs(qs[0] - s0) > apart:
-        return qs[0] > s0
-    if abs(qs[1] - s1) > apart:
-        return qs[1] > s1
-    return qs[2] > s2
+def _image_after(q0, q1, q2, s0, s1, s2, apart):
+    """Of two periodic images of one pair (a box shorter than two cutoffs), the one with separation
+    (q0, q1, q2) comes after the one with (s0, s1, s2): by the first axis where they lie a box length
+    apart (more than ``apart``). The other components are equal but for round-off, which differs
+    between ranks: they must not decide."""
+    if abs(q0 - s0) > apart:
+        return q0 > s0
+    if abs(q1 - s1) > apart:
+        return q1 > s1
+    return q2 > s2
 
 
 @njit(cache=True)
 def sweep_order(key, ends, ids, separation, nkeys, apart, sorted_ends, sorted_ids, sorted_separation, first):
     """The pairs in sweep order, written into ``sorted_ends, sorted_ids, sorted_separation``: by key
-    (colour, then block: a stable counting sort that writes each pair to its place, reading the
-    pairs in memory order), then within a key by their tags (a block holds a few dozen pairs:
-    insertion sort), two images of one pair by the component of their separation that differs by
-    more than ``apart`` (half the shortest periodic box length). ``first`` (nkeys + 1) gets where
-    each key's pairs start."""
+    (colour, then block: a stable counting sort, reading the pairs in memory order), then within a
+    key by their ids (a block holds a few dozen pairs: insertion sort), two images of one pair by the
+    component of their separation that differs by more than ``apart`` (half the shortest periodic
+    box length). ``first`` (nkeys + 1) gets where each key's pairs start.
+
+    The insertion sort moves a pair's ids and its index only (kept in ``sorted_ends[:, 0]`` until
+    the pairs are put in their places at the end): three numbers, not seven."""
     m = len(key)
     first[:] = 0
     for k in range(m):
@@ -237,10 +232,8 @@ def sweep_order(key, ends, ids, separation, nkeys, apart, sorted_ends, sorted_id
     for k in range(m):
         slot = first[key[k]]
         first[key[k]] = slot + 1
-        sorted_ends[slot, 0], sorted_ends[slot, 1] = ends[k, 0], ends[k, 1]
+        sorted_ends[slot, 0] = k
         sorted_ids[slot, 0], sorted_ids[slot, 1] = ids[k, 0], ids[k, 1]
-        for d in range(3):
-            sorted_separation[slot, d] = separation[k, d]
     # each key's start moved to the next key's: shift back
     for k in range(nkeys, 0, -1):
         first[k] = first[k - 1]
@@ -248,20 +241,30 @@ def sweep_order(key, ends, ids, separation, nkeys, apart, sorted_ends, sorted_id
     for c in range(nkeys):
         lo, hi = first[c], first[c + 1]
         for p in range(lo + 1, hi):
-            a0, a1 = sorted_ids[p, 0], sorted_ids[p, 1]
-            e0, e1 = sorted_ends[p, 0], sorted_ends[p, 1]
-            s0, s1, s2 = sorted_separation[p, 0], sorted_separation[p, 1], sorted_separation[p, 2]
+            a0, a1, at = sorted_ids[p, 0], sorted_ids[p, 1], sorted_ends[p, 0]
             q = p - 1
-            while q >= lo and _after(sorted_ids[q, 0], sorted_ids[q, 1], sorted_separation[q], a0, a1, s0, s1, s2,
-                                     apart):
-                sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = sorted_ids[q, 0], sorted_ids[q, 1]
-                sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = sorted_ends[q, 0], sorted_ends[q, 1]
-                for d in range(3):
-                    sorted_separation[q + 1, d] = sorted_separation[q, d]
+            while q >= lo:
+                qa, qb = sorted_ids[q, 0], sorted_ids[q, 1]
+                if qa != a0:
+                    after = qa > a0
+                elif qb != a1:
+                    after = qb > a1
+                else:
+                    qt = sorted_ends[q, 0]
+                    after = _image_after(separation[qt, 0], separation[qt, 1], separation[qt, 2],
+                                         separation[at, 0], separation[at, 1], separation[at, 2], apart)
+                if not after:
+                    break
+                sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = qa, qb
+                sorted_ends[q + 1, 0] = sorted_ends[q, 0]
                 q -= 1
             sorted_ids[q + 1, 0], sorted_ids[q + 1, 1] = a0, a1
-            sorted_ends[q + 1, 0], sorted_ends[q + 1, 1] = e0, e1
-            sorted_separation[q + 1, 0], sorted_separation[q + 1, 1], sorted_separation[q + 1, 2] = s0, s1, s2
+            sorted_ends[q + 1, 0] = at
+    for p in range(m):
+        k = sorted_ends[p, 0]
+        sorted_ends[p, 0], sorted_ends[p, 1] = ends[k, 0], ends[k, 1]
+        for d in range(3):
+            sorted_separation[p, d] = separation[k, d]
 
 
 @njit(cache=True)
@@ -283,6 +286,13 @@ def sweep_pairs(v, inv_mass, type_, ends, ids, d, lo, hi, cut, gamma, sigma, dt,
         pair_impulse(v, i, j, ex, ey, ez, explicit_half, inv_mi, inv_mj)
         implicit_half = (s - g * radial_relative_velocity(v, i, j, ex, ey, ez)) * implicit
         pair_impulse(v, i, j, ex, ey, ez, implicit_half, inv_mi, inv_mj)
+
+
+@njit(cache=True)
+def inverse_type_masses(mass, type_, count, out):
+    """out[i] = 1 / mass[type_[i]] for the first ``count`` particles."""
+    for i in range(count):
+        out[i] = 1.0 / mass[type_[i]]
 
 
 def require_dpd_fdt(sim):
@@ -350,10 +360,15 @@ class FixShardlow(Fix):
         inv_mass = self._inverse_masses(sim, everyone)
         buffers = self._pair_buffers(nlist.offsets[n], 8 * nblocks + 1)
         ends, ids, separation, keys = buffers[:4]
-        m, self._away, self._away_rank, sent = collect_pairs(
-            p.x, p.type, p.tag, cell, owner, inv_mass, p.mask, sim.groups.bit(self.group), nlist.offsets,
-            nlist.neighbors, n, pair.cut, ncell, periodic, table, comm.rank, ends, ids, separation, keys,
-            self._away, self._away_rank)
+        offsets, neighbors = nlist.offsets, nlist.neighbors
+        while True:
+            m, sent = collect_pairs(p.x, p.type, p.tag, cell, owner, inv_mass, p.mask, sim.groups.bit(self.group),
+                                    offsets, neighbors, n, pair.cut, ncell, periodic, table, comm.rank, ends, ids,
+                                    separation, keys, self._away, self._away_rank)
+            if sent >= 0:
+                break
+            size = 2 * len(self._away) + 64
+            self._away, self._away_rank = np.empty((size, 10)), np.empty(size, dtype=np.int64)
         ends, ids, separation, keys = ends[:m], ids[:m], separation[:m], keys[:m]
         sweep = (pair.cut, pair.gamma, pair.sigma, sim.dt, sim.random_key(pair.args.seed) ^ SHARDLOW_KEY, sim.step)
         if comm.nprocs == 1:
@@ -390,8 +405,8 @@ class FixShardlow(Fix):
         if p.has("rmass"):
             np.divide(1.0, p.rmass[:count], out=out)
         else:
-            np.take(sim.mass, p.type[:count], out=out, mode="clip")       # clip: no buffered copy
-            np.divide(1.0, out, out=out)
+            # not np.take: it converts the 32-bit types to a temporary of 64-bit indices
+            inverse_type_masses(sim.mass, p.type, count, out)
         return out
 
     def _sweep_in_parallel(self, sim, local, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
