@@ -186,10 +186,15 @@ class PairDPD(PairLaw):
         c = self.resolved[(i, j)]
         cut = c.cutoff if c.cutoff is not None else self.args.cutoff
         kT = self.sim.units.boltz * self.args.temperature
-        sigma = math.sqrt(2.0 * kT * c.gamma)
-        for table, value in ((self.a, c.a), (self.gamma, c.gamma), (self.cut, cut), (self.sigma, sigma)):
+        gamma = self.friction(i, j, c, kT)
+        sigma = math.sqrt(2.0 * kT * gamma)
+        for table, value in ((self.a, c.a), (self.gamma, gamma), (self.cut, cut), (self.sigma, sigma)):
             table[i, j] = table[j, i] = value
-        return cut, (c.a, c.gamma, sigma, cut)
+        return cut, (c.a, gamma, sigma, cut)
+
+    def friction(self, i, j, coeff, kT):
+        """gamma of the type pair from its pair_coeff (the second coefficient here)."""
+        return coeff.gamma
 
     def force_law(self):
         if self.split:

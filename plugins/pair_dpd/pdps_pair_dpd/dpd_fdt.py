@@ -22,12 +22,13 @@ Parameters (units of the run), the same words as ``pair_style dpd``:
 - ``pair_style dpd/fdt T rc seed``: ``T`` temperature of the fluctuation-dissipation theorem
   (>= 0, temperature units), ``rc`` global cutoff (> 0, distance), ``seed`` integer >= 1 (fix
   shardlow derives its noise key from it).
-- ``pair_coeff I J a gamma [rc]``: ``a`` repulsion (force), ``gamma`` friction (>= 0,
-  force/velocity), ``rc`` cutoff of this pair (distance; default the global one).
-
-Unlike LAMMPS, whose dpd/fdt takes ``sigma`` as the second coefficient, pdps takes ``gamma`` here,
-as ``pair_style dpd`` does (sigma = sqrt(2 k_B T gamma)): the two styles read the same pair_coeff
-lines. A LAMMPS script's ``pair_coeff * * 25.0 3.0`` (sigma 3, k_B T 1) is ``25.0 4.5`` here.
+- ``pair_coeff I J a gamma [rc]`` (PDPS dialect): ``a`` repulsion (force), ``gamma`` friction
+  (>= 0, force/velocity), ``rc`` cutoff of this pair (distance; default the global one), the same
+  words as ``pair_style dpd``.
+- ``pair_coeff I J A sigma [rc]`` (LAMMPS dialect, as LAMMPS's dpd/fdt): ``sigma`` the noise
+  amplitude (>= 0, force time^1/2), from which gamma = sigma^2 / (2 k_B T); ``sigma`` > 0 needs
+  ``T`` > 0. A LAMMPS script's ``pair_coeff * * 25.0 3.0`` (k_B T 1) is the PDPS dialect's
+  ``pair_coeff * * 25.0 4.5``.
 
 Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
 
@@ -36,6 +37,8 @@ Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
     fix 1 all shardlow
     fix 2 all nve
 """
+
+from pdps_core.api import ScriptError
 
 from .dpd import PairDPD
 
@@ -58,3 +61,17 @@ class PairDPDfdt(PairDPD):
     def init(self, ntypes, pairs=None):
         self.split = shardlow_defined(self.sim)
         return super().init(ntypes, pairs)
+
+    def friction(self, i, j, coeff, kT):
+        """gamma: pair_coeff's second coefficient in the PDPS dialect; in LAMMPS's, which gives
+        sigma (LAMMPS's PairDPDfdt keeps sigma and its fix shardlow derives gamma from it),
+        sigma^2 / (2 k_B T)."""
+        if self.sim.dialect.name == "pdps":
+            return coeff.gamma
+        sigma = coeff.gamma
+        if sigma == 0.0:
+            return 0.0
+        if kT <= 0.0:
+            raise ScriptError(f"pair_coeff {i} {j}: sigma {sigma:g} needs pair_style dpd/fdt's temperature > 0 "
+                              "(LAMMPS's dpd/fdt takes sigma, and gamma = sigma^2 / (2 k_B T))")
+        return sigma * sigma / (2.0 * kT)

