@@ -380,3 +380,41 @@ def test_max_and_min_of_arrays_are_taken_element_by_element(tmp_path):
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines()[0] == "[2.0, 10.0, -2.0] [1.0, 5.0, -4.0]"
+
+
+SEND_ROWS_DRIVER = """
+import numpy as np
+from pdps_core.comm import world
+comm = world()
+me, size = comm.rank, comm.nprocs
+problems = []
+for width in (3, 14, 3, 10):
+    for count in (0, 5, 40):
+        # row k of rank me: (me, k, ...) to rank (me + k) % size
+        rows = np.array([[me, k] + [me * 1000 + k + 0.5 * d for d in range(width - 2)] for k in range(count)],
+                        dtype=np.float64).reshape(count, width)
+        ranks = np.array([(me + k) % size for k in range(count)], dtype=np.int64)
+        fresh, fresh_from = comm.send_rows(rows, ranks)
+        fresh, fresh_from = fresh.copy(), fresh_from.copy()
+        kept, kept_from = comm.send_rows(rows, ranks, kept=True)
+        if not (np.array_equal(kept, fresh) and np.array_equal(kept_from, fresh_from)):
+            problems.append((width, count, "kept differs"))
+        # every row sent here, once, from the rank it names
+        expected = sorted((r, k) for r in range(size) for k in range(count) if (r + k) % size == me)
+        if sorted(map(tuple, kept[:, :2].astype(int).tolist())) != expected or \\
+                not np.array_equal(kept_from, kept[:, 0].astype(int)):
+            problems.append((width, count, "rows"))
+with open(f"rank{me}.txt", "w") as out:        # a file each: the ranks' prints would interleave
+    out.write("ok" if not problems else repr(problems))
+"""
+
+
+@pytest.mark.parametrize("ranks", [1, 3])
+def test_send_rows_with_kept_buffers_delivers_what_fresh_arrays_do(tmp_path, ranks):
+    """send_rows(rows, ranks, kept=True) (fix shardlow's messages at every step) gives the rows and
+    source ranks of the plain call, for rows of alternating widths and empty messages."""
+    (tmp_path / "driver.py").write_text(SEND_ROWS_DRIVER)
+    done = subprocess.run([str(MPIEXEC), "-n", str(ranks), sys.executable, "driver.py"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert [(tmp_path / f"rank{rank}.txt").read_text() for rank in range(ranks)] == ["ok"] * ranks

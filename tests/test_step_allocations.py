@@ -126,14 +126,11 @@ fix             1 all nve
 """,
 }
 
-# Scenes measured on one rank only: fix shardlow's sweep over several ranks sends pairs and velocities
-# in messages it makes at every step (a job of its own, named in issue 12's notes)
-ONE_RANK_SCENES = {
-    # Shardlow's splitting: the sweep's pairs from the list read in direct mode at every step
-    "dpd/fdt, fix shardlow": SCENES["dpd, direct mode"].replace(
-        "pair_style      dpd 1.0 1.0 34387", "pair_style      dpd/fdt 1.0 1.0 34387").replace(
-        "fix             1 all nve", "fix             1 all shardlow\nfix             2 all nve"),
-}
+# Shardlow's splitting: the sweep's pairs from the list read in direct mode at every step; on several
+# ranks pairs and velocities travel in messages (send_rows with kept buffers)
+SCENES["dpd/fdt, fix shardlow"] = SCENES["dpd, direct mode"].replace(
+    "pair_style      dpd 1.0 1.0 34387", "pair_style      dpd/fdt 1.0 1.0 34387").replace(
+    "fix             1 all nve", "fix             1 all shardlow\nfix             2 all nve")
 
 
 def step_allocations(script, warm=100, steps=200):
@@ -152,9 +149,9 @@ def step_allocations(script, warm=100, steps=200):
     return [peak for built, peak in steps if not built], [peak for built, peak in steps if built]
 
 
-@pytest.mark.parametrize("scene", {**SCENES, **ONE_RANK_SCENES})
+@pytest.mark.parametrize("scene", SCENES)
 def test_a_step_between_list_builds_allocates_nothing(scene):
-    plain, built = step_allocations({**SCENES, **ONE_RANK_SCENES}[scene])
+    plain, built = step_allocations(SCENES[scene])
     print(f"{scene}: {len(plain)} steps without a build, largest {max(plain) / 1024:.1f} KB; "
           f"{len(built)} builds, largest {max(built, default=0) / 1024:.1f} KB")
     assert len(plain) >= 50

@@ -205,6 +205,42 @@ def _add_rows(array, index, rows, own_first, own_count, own_rows):
     _add_range(array, index, own_rows, own_first, own_last, 0)
     _add_range(array, index, rows, own_last, len(index), own_last)
 
+@njit(cache=True)
+def _rows_by_rank(rows, ranks, counts, out):
+    """The rows in the order of the rank each goes to (stable), into ``out``; ``counts`` per rank."""
+    counts[:] = 0
+    for i in range(len(ranks)):
+        counts[ranks[i]] += 1
+    first = 0
+    for r in range(len(counts)):
+        first, counts[r] = first + counts[r], first
+    for i in range(len(ranks)):
+        k = counts[ranks[i]]
+        counts[ranks[i]] = k + 1
+        for d in range(rows.shape[1]):
+            out[k, d] = rows[i, d]
+    # each rank's count moved to the next rank's start: take the starts apart again
+    for r in range(len(counts) - 1, 0, -1):
+        counts[r] -= counts[r - 1]
+
+
+@njit(cache=True)
+def _count_up(out, n):
+    """out[i] = i for i < n."""
+    for i in range(n):
+        out[i] = i
+
+
+@njit(cache=True)
+def _rank_of_each(counts, out):
+    """out[k]: the rank row k came from, ``counts`` rows from each rank in rank order."""
+    k = 0
+    for r in range(len(counts)):
+        for _ in range(counts[r]):
+            out[k] = r
+            k += 1
+
+
 class MPIComm:
     def __init__(self, world=None):
         from mpi4py import MPI
@@ -221,6 +257,7 @@ class MPIComm:
         self._bounds = None         # borders' geometry: (its key, what _geometry gives)
         self._layouts = {}          # ghost row layouts by width, for the current ghosts
         self._owners = None
+        self._owner_rows = np.zeros(0, dtype=np.int64)      # owners' buffer, kept between rebuilds
         self._send_buffer = self._recv_buffer = self._back_buffer = np.zeros(0)
         self._ghost_rows = (np.zeros(0), np.zeros(0))       # borders' send and receive rows
         self._ghost_rank = self._ghost_index = np.zeros(0, dtype=np.int64)
@@ -232,6 +269,10 @@ class MPIComm:
         self._exchange_received = np.zeros((self.nprocs, 2), dtype=np.int64)
         self._requests = []
         self._rows_out = self._rows_in = np.zeros((0, 0))     # reverse_rows' messages, kept
+        # send_rows(..., kept=True): counts and values to and from each rank, the rows, their ranks
+        self._row_counts = tuple(np.zeros(self.nprocs, dtype=np.int64) for _ in range(4))
+        self._kept_rows = {}        # width: (rows sent, rows received)
+        self._received_from = np.zeros(0, dtype=np.int64)
         self._own = (0, 0, 0)
         self._ghost_owners, self._ghost_takers = [], []
         self._shares_ghosts = False     # with any other rank (set by borders)
@@ -402,8 +443,11 @@ class MPIComm:
         the ghosts are made again."""
         n = particles.nlocal + int(self._recv_counts.sum())
         if self._owners is None or len(self._owners) != n:
-            owners = np.full(n, -1, dtype=np.int64)
-            owners[:particles.nlocal] = np.arange(particles.nlocal)
+            if len(self._owner_rows) < n:
+                self._owner_rows = np.empty(n + n // 4 + 16, dtype=np.int64)
+            owners = self._owner_rows[:n]
+            owners[:] = -1
+            _count_up(owners, particles.nlocal)
             # the ghosts this rank sent to itself (periodic self-images) arrive in its own slot
             sent = self._send_counts[: self.rank].sum()
             received = particles.nlocal + self._recv_counts[: self.rank].sum()
@@ -501,14 +545,38 @@ class MPIComm:
             self._back_buffer = np.empty(int(1.25 * size) + 64)
         return self._back_buffer[:size]
 
-    def send_rows(self, rows, ranks):
+    def send_rows(self, rows, ranks, kept=False):
         """Each row (float64) to the rank named in ``ranks``: (rows received, in the order of the
-        ranks that sent them, and the rank each came from)."""
+        ranks that sent them, and the rank each came from). ``kept``: both live in buffers this
+        communicator keeps, valid until its next ``send_rows(..., kept=True)`` (a style sending rows
+        at every step allocates nothing)."""
         rows = np.asarray(rows, dtype=np.float64)       # (n, width), n = len(ranks)
+        if kept:
+            return self._send_kept_rows(rows, np.asarray(ranks, dtype=np.int64))
         order = np.argsort(ranks, kind="stable")
         counts = np.bincount(np.asarray(ranks)[order], minlength=self.nprocs)
         received, sources = self._alltoall_rows(rows[order], counts, return_counts=True)
         return received.reshape(len(received), rows.shape[1]), np.repeat(np.arange(self.nprocs), sources)
+
+    def _send_kept_rows(self, rows, ranks):
+        width = rows.shape[1]
+        counts, recv_counts, send_values, recv_values = self._row_counts
+        # buffers by width: a style may send rows of two widths at every step
+        sent, received = self._kept_rows.get(width, (np.zeros((0, width)), np.zeros((0, width))))
+        sent = _kept(sent, len(rows), width)
+        _rows_by_rank(rows, ranks, counts, sent)
+        self.world.Alltoall(counts, recv_counts)
+        total = int(recv_counts.sum())
+        received = _kept(received, total, width)
+        self._kept_rows[width] = (sent, received)
+        if len(self._received_from) < total:
+            self._received_from = np.empty(total + total // 4 + 16, dtype=np.int64)
+        np.multiply(counts, width, out=send_values)
+        np.multiply(recv_counts, width, out=recv_values)
+        received = received[:total]
+        self._alltoallv(sent[:len(rows)], send_values, received, recv_values)
+        _rank_of_each(recv_counts, self._received_from)
+        return received, self._received_from[:total]
 
     def rank_of(self, points):
         """The rank whose sub-domain holds each point (inside the box)."""

@@ -171,6 +171,7 @@ class SerialComm:
         self._shift = np.zeros((0, 3))
         self._owners = None
         self._owner_rows = np.zeros(0, dtype=np.int64)     # kept between rebuilds
+        self._rank_zero = np.zeros(0, dtype=np.int64)      # send_rows(..., kept=True): every row's rank
 
     def exchange(self, particles, box, step):
         p = particles
@@ -218,10 +219,15 @@ class SerialComm:
             _owner_rows(particles.nlocal, self.ghost_source, self._owners)
         return self._owners
 
-    def send_rows(self, rows, ranks):
-        """On one rank every row stays: (rows, the rank each came from)."""
+    def send_rows(self, rows, ranks, kept=False):
+        """On one rank every row stays: (rows, the rank each came from); ``kept``: the ranks in a
+        kept array (the rows are the caller's own)."""
         rows = np.asarray(rows, dtype=np.float64)       # (n, width), n = len(ranks)
-        return rows, np.zeros(len(rows), dtype=np.int64)
+        if not kept:
+            return rows, np.zeros(len(rows), dtype=np.int64)
+        if len(self._rank_zero) < len(rows):
+            self._rank_zero = np.zeros(len(rows) + len(rows) // 4 + 16, dtype=np.int64)
+        return rows, self._rank_zero[:len(rows)]
 
     def rank_of(self, points):
         return np.zeros(len(points), dtype=np.int64)

@@ -378,20 +378,30 @@ class FixShardlow(Fix):
                         sorted_separation, first)
             sweep_pairs(p.v, inv_mass, p.type, sorted_ends, sorted_ids, sorted_separation, 0, m, *sweep)
             return
-        self._sweep_in_parallel(sim, ends, ids, separation, keys, self._away[:sent], self._away_rank[:sent],
-                                inv_mass, ncell, periodic, table, sweep)
+        self._sweep_in_parallel(sim, m, self._away[:sent], self._away_rank[:sent], inv_mass, ncell, periodic, table,
+                                sweep)
 
-    def _pair_buffers(self, pairs, nfirst):
+    def pre_neighbor(self, sim):
+        """Owned particles moved rows at this build: their order by tag is made now (in the step
+        that builds, which may allocate) rather than at the next sweep."""
+        if sim.comm.nprocs > 1:
+            self._owned_by_tag(sim.particles.tag, sim.particles.nlocal)
+
+    def _pair_buffers(self, pairs, nfirst, keep=0):
         """The pair arrays of the sweep, kept between steps and grown by a quarter when too short:
-        (ends, ids, separation, key) as collected, their sorted copies, and the key starts."""
+        (ends, ids, separation, key) as collected (their first ``keep`` rows kept when they grow),
+        their sorted copies, and the key starts."""
         kept = getattr(self, "_buffers", None)
         if kept is None or len(kept[0]) < pairs or len(kept[7]) < nfirst:
             size = max(pairs + pairs // 4 + 64, len(kept[0]) if kept is not None else 0)
-            kept = (np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
-                    np.empty((size, 3)), np.empty(size, dtype=np.int64),
-                    np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
-                    np.empty((size, 3)), np.empty(nfirst, dtype=np.int64))
-            self._buffers = kept
+            grown = (np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
+                     np.empty((size, 3)), np.empty(size, dtype=np.int64),
+                     np.empty((size, 2), dtype=np.int64), np.empty((size, 2), dtype=np.int64),
+                     np.empty((size, 3)), np.empty(max(nfirst, len(kept[7]) if kept is not None else 0),
+                                                   dtype=np.int64))
+            for old, new in zip(kept[:4] if keep else (), grown):
+                new[:keep] = old[:keep]
+            kept = self._buffers = grown
             if getattr(self, "_away", None) is None:
                 self._away, self._away_rank = np.empty((64, 10)), np.empty(64, dtype=np.int64)
         return kept[:7] + (kept[7][:nfirst],)
@@ -409,75 +419,83 @@ class FixShardlow(Fix):
             inverse_type_masses(sim.mass, p.type, count, out)
         return out
 
-    def _sweep_in_parallel(self, sim, local, ids, separation, keys, outgoing, rank, inv_mass, ncell, periodic,
-                           table, sweep):
+    def _sweep_in_parallel(self, sim, m_local, outgoing, rank, inv_mass, ncell, periodic, table, sweep):
         """Pairs go to the rank sweeping their block; a particle's velocity goes where each colour's
-        block of it is swept and comes back to its owner after the last."""
+        block of it is swept and comes back to its owner after the last.
+
+        Particles are numbered for the sweep: owned rows first, then the particles owned elsewhere
+        (remote ghosts and the partners of pairs sent here), by tag. A velocity travels with its
+        itinerary (the rank of each colour's block): each owner sends it to where the first colour
+        sweeps it; after each colour it moves on to the next colour's rank, and after the last back
+        home. Most never leave their owner."""
         p, comm = sim.particles, sim.comm
-        n = p.nlocal
+        n, me = p.nlocal, comm.rank
         nblocks = int(np.prod(ncell))
-        incoming, _ = comm.send_rows(outgoing, rank)
-        # this rank's pairs: its own, then those sent here. Numbers: owned rows, then the particles
-        # owned elsewhere (remote ghosts and the partners of pairs sent here), by tag
-        m_local = len(local)
-        ids = np.concatenate([ids, incoming[:, 0:2].astype(np.int64)])
-        separation = np.concatenate([separation, incoming[:, 2:5]])
-        keys = np.concatenate([keys, incoming[:, 9].astype(np.int64)])
-        numbers = np.concatenate([local, np.full((len(incoming), 2), -1, dtype=np.int64)])
-        by_tag = np.argsort(p.tag[:n], kind="stable")
-        owned_tags = p.tag[:n][by_tag]
-        tail = numbers[m_local:]
-        slot = _lookup(owned_tags, ids[m_local:].ravel()).reshape(-1, 2)
-        tail[slot >= 0] = by_tag[slot[slot >= 0]]
-        unknown = numbers < 0
-        remote_tags = np.unique(ids[unknown])
-        numbers[unknown] = n + np.searchsorted(remote_tags, ids[unknown])
-        # types and inverse masses of the remote particles: from ghosts, or from the pairs sent here
-        types = np.concatenate([p.type[:n], np.zeros(len(remote_tags), dtype=p.type.dtype)])
-        inverse = np.concatenate([inv_mass[:n], np.zeros(len(remote_tags))])
-        ghost_rows = p.nlocal + np.flatnonzero(comm.owners(p)[n:] < 0)
-        slot = _lookup(remote_tags, p.tag[ghost_rows])
-        types[n + slot[slot >= 0]] = p.type[ghost_rows[slot >= 0]]
-        inverse[n + slot[slot >= 0]] = inv_mass[ghost_rows[slot >= 0]]
-        for column in (0, 1):
-            types[numbers[m_local:, column]] = incoming[:, 5 + column].astype(types.dtype)
-            inverse[numbers[m_local:, column]] = incoming[:, 7 + column]
-        self.pairs_swept = len(ids)          # this rank's share of the step's sweep
-        sorted_numbers, sorted_ids, sorted_separation, first = self._pair_buffers(len(ids), 8 * nblocks + 1)[4:]
-        sweep_order(keys, numbers, ids, separation, 8 * nblocks, self._apart(sim), sorted_numbers, sorted_ids,
-                    sorted_separation, first)
-        m = len(ids)
-        numbers, ids, separation = sorted_numbers[:m], sorted_ids[:m], sorted_separation[:m]
-        # velocities travel: each owner sends a particle's velocity, with its itinerary (the rank of
-        # each colour's block), to where the first colour sweeps it; after each colour it moves on
-        # to the next colour's rank, and after the last back home. Most never leave their owner.
-        route = np.empty((n, 9), dtype=np.int64)
-        itineraries(p.arrays[CELL], n, ncell, periodic, table, comm.rank, route)
-        velocities = np.zeros((n + len(remote_tags), 3))
+        incoming, _ = comm.send_rows(outgoing, rank, kept=True)
+        m = m_local + len(incoming)
+        ends, ids, separation, keys, sorted_ends, sorted_ids, sorted_separation, first = self._pair_buffers(
+            m, 8 * nblocks + 1, keep=m_local)
+        owned_tags, by_tag = self._owned_by_tag(p.tag, n)
+        append_incoming(incoming, m_local, ends, ids, separation, keys, owned_tags, by_tag)
+        remote_tags = self._remote_tags(ends, ids, m)
+        number_remote(ends, ids, m, remote_tags, n)
+        nremote = len(remote_tags)
+        types, inverse, velocities = self._remote_rows(n + nremote)
+        types[:n] = p.type[:n]
+        inverse[:n] = inv_mass[:n]
         velocities[:n] = p.v[:n]
-        # visitors: rows (tag, vx, vy, vz, owner, route[0..8]) of particles owned elsewhere, here now
-        visitors = np.zeros((0, 14))
+        velocities[n:] = 0.0
+        remote_properties(comm.owners(p), p.tag, p.type, inv_mass, n, p.nlocal + p.nghost, incoming, ends, m_local,
+                          remote_tags, types, inverse)
+        self.pairs_swept = m          # this rank's share of the step's sweep
+        sweep_order(keys[:m], ends, ids, separation, 8 * nblocks, self._apart(sim), sorted_ends, sorted_ids,
+                    sorted_separation, first)
+        route = self._rows("_route", (n, 9), np.int64)
+        itineraries(p.arrays[CELL], n, ncell, periodic, table, me, route)
+        visitors, held = getattr(self, "_visitors", None), 0
+        if visitors is None:
+            visitors = self._visitors = np.empty((64, 14))
         for c in range(9):
-            leaving = np.flatnonzero((route[:, c - 1] == comm.rank if c else True) & (route[:, c] != comm.rank))
-            mine_out = np.column_stack([p.tag[:n][leaving], velocities[leaving], np.full(len(leaving), comm.rank),
-                                        route[leaving]])
-            slot = _lookup(remote_tags, visitors[:, 0].astype(np.int64))
-            known = slot >= 0
-            visitors[known, 1:4] = velocities[n + slot[known]]
-            going = visitors[:, 5 + c].astype(np.int64) != comm.rank
-            rows = np.concatenate([mine_out, visitors[going]])
-            arrived, _ = comm.send_rows(rows, rows[:, 5 + c].astype(np.int64))
-            visitors = np.concatenate([visitors[~going], arrived[arrived[:, 4] != comm.rank]])
-            home = arrived[arrived[:, 4] == comm.rank]
-            if len(home):
-                velocities[by_tag[_lookup(owned_tags, home[:, 0].astype(np.int64))]] = home[:, 1:4]
-            slot = _lookup(remote_tags, visitors[:, 0].astype(np.int64))
-            known = slot >= 0
-            velocities[n + slot[known]] = visitors[known, 1:4]
+            out = self._rows("_leaving", (n + held, 14), np.float64)
+            dest = self._rows("_leaving_rank", (n + held,), np.int64)
+            sent, held = leaving_rows(route, velocities, p.tag, n, me, c, visitors, held, remote_tags, out, dest)
+            arrived, _ = comm.send_rows(out[:sent], dest[:sent], kept=True)
+            if len(visitors) < held + len(arrived):
+                grown = np.empty((2 * (held + len(arrived)) + 64, 14))
+                grown[:held] = visitors[:held]
+                visitors = self._visitors = grown
+            held = arrive(arrived, me, visitors, held, velocities, n, owned_tags, by_tag, remote_tags)
             if c < 8:
-                sweep_pairs(velocities, inverse, types, numbers, ids, separation, first[c * nblocks],
+                sweep_pairs(velocities, inverse, types, sorted_ends, sorted_ids, sorted_separation, first[c * nblocks],
                             first[(c + 1) * nblocks], *sweep)
         p.v[:n] = velocities[:n]
+
+    def _rows(self, name, shape, dtype):
+        """A kept array of at least ``shape[0]`` rows (a quarter more when it grows), cut to it."""
+        kept = getattr(self, name, None)
+        if kept is None or len(kept) < shape[0]:
+            kept = np.empty((shape[0] + shape[0] // 4 + 16,) + tuple(shape[1:]), dtype=dtype)
+            setattr(self, name, kept)
+        return kept[:shape[0]]
+
+    def _owned_by_tag(self, tag, n):
+        """(owned tags sorted, the owned row of each): kept while the owned particles are the same
+        ones in the same rows (between neighbor list builds), checked at every step."""
+        kept = getattr(self, "_by_tag", None)
+        if kept is None or len(kept[0]) != n or not same_order(tag, kept[0], kept[1]):
+            by_tag = np.argsort(tag[:n], kind="stable")
+            kept = self._by_tag = (tag[:n][by_tag], by_tag)
+        return kept
+
+    def _remote_tags(self, ends, ids, m):
+        """The tags, sorted and each once, of the pairs' ends owned by other ranks."""
+        scratch = self._rows("_remote_scratch", (2 * m,), np.int64)
+        return scratch[:distinct_remote_tags(ends, ids, m, scratch)]
+
+    def _remote_rows(self, count):
+        """Types, inverse masses and velocities of the particles numbered for the sweep."""
+        return (self._rows("_sweep_types", (count,), np.int32), self._rows("_sweep_inverse", (count,), np.float64),
+                self._rows("_sweep_velocities", (count, 3), np.float64))
 
     @staticmethod
     def _apart(sim):
@@ -499,14 +517,6 @@ class FixShardlow(Fix):
             self._table = sim.comm.rank_of(box.lo + (first + 0.5) * (box.length / ncell))
             self._table_for = state
         return self._table
-
-
-def _lookup(sorted_values, wanted):
-    """Where each wanted value sits in a sorted array, -1 where it is absent."""
-    slot = np.searchsorted(sorted_values, wanted)
-    inside = slot < len(sorted_values)
-    inside[inside] = sorted_values[slot[inside]] == wanted[inside]
-    return np.where(inside, slot, -1)
 
 
 @njit(cache=True)
@@ -536,3 +546,150 @@ def itineraries(cell, n, ncell, periodic, table, me, out):
                 first[d] = k
             out[i, c] = table[first[0] + ncell[0] * (first[1] + ncell[1] * first[2])] if valid else me
         out[i, 8] = me
+
+
+@njit(cache=True)
+def _find(sorted_values, count, value):
+    """Where ``value`` sits in ``sorted_values[:count]``, -1 when absent."""
+    lo, hi = 0, count
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if sorted_values[mid] < value:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo if lo < count and sorted_values[lo] == value else -1
+
+
+@njit(cache=True)
+def same_order(tag, owned_tags, by_tag):
+    """Whether ``by_tag`` still sorts the owned particles' tags into ``owned_tags``."""
+    for k in range(len(by_tag)):
+        if tag[by_tag[k]] != owned_tags[k]:
+            return False
+    return True
+
+
+@njit(cache=True)
+def append_incoming(incoming, m_local, ends, ids, separation, keys, owned_tags, by_tag):
+    """The pairs sent here (rows of collect_pairs' ``away``) after this rank's own: ids, separation,
+    key, and each end's owned row (-1 for a particle owned elsewhere)."""
+    count = len(owned_tags)
+    for r in range(len(incoming)):
+        q = m_local + r
+        for c in range(2):
+            tag = np.int64(incoming[r, c])
+            ids[q, c] = tag
+            slot = _find(owned_tags, count, tag)
+            ends[q, c] = by_tag[slot] if slot >= 0 else -1
+        for d in range(3):
+            separation[q, d] = incoming[r, 2 + d]
+        keys[q] = np.int64(incoming[r, 9])
+
+
+@njit(cache=True)
+def distinct_remote_tags(ends, ids, m, out):
+    """The tags of the ends owned elsewhere (row -1) of the first m pairs, sorted and each once,
+    into ``out``; returns how many."""
+    k = 0
+    for q in range(m):
+        for c in range(2):
+            if ends[q, c] < 0:
+                out[k] = ids[q, c]
+                k += 1
+    out[:k].sort()
+    distinct = 0
+    for i in range(k):
+        if distinct == 0 or out[i] != out[distinct - 1]:
+            out[distinct] = out[i]
+            distinct += 1
+    return distinct
+
+
+@njit(cache=True)
+def number_remote(ends, ids, m, remote_tags, n):
+    """The ends owned elsewhere get the numbers after the owned rows, in the order of their tags."""
+    count = len(remote_tags)
+    for q in range(m):
+        for c in range(2):
+            if ends[q, c] < 0:
+                ends[q, c] = n + _find(remote_tags, count, ids[q, c])
+
+
+@njit(cache=True)
+def remote_properties(owner, tag, type_, inv_mass, n, nall, incoming, ends, m_local, remote_tags, types, inverse):
+    """Type and inverse mass of each particle owned elsewhere: from its ghost here, or from the
+    pairs sent here."""
+    count = len(remote_tags)
+    for g in range(n, nall):
+        if owner[g] < 0:
+            slot = _find(remote_tags, count, tag[g])
+            if slot >= 0:
+                types[n + slot] = type_[g]
+                inverse[n + slot] = inv_mass[g]
+    for r in range(len(incoming)):
+        for c in range(2):
+            number = ends[m_local + r, c]
+            if number >= n:
+                types[number] = np.int32(incoming[r, 5 + c])
+                inverse[number] = incoming[r, 7 + c]
+
+
+@njit(cache=True)
+def leaving_rows(route, velocities, tag, n, me, c, visitors, held, remote_tags, out, dest):
+    """Before colour c (8: home): rows (tag, velocity, owner, route) of the velocities that leave
+    this rank, into ``out`` with their rank in ``dest``: owned particles here until now whose
+    colour-c block another rank sweeps, and visitors (rows like these of particles owned elsewhere)
+    moving on, with the velocity this rank's sweep left them. The visitors that stay are packed at
+    the front. Returns (rows out, visitors held)."""
+    sent = 0
+    for i in range(n):
+        here = c == 0 or route[i, c - 1] == me
+        if here and route[i, c] != me:
+            out[sent, 0] = tag[i]
+            for d in range(3):
+                out[sent, 1 + d] = velocities[i, d]
+            out[sent, 4] = me
+            for k in range(9):
+                out[sent, 5 + k] = route[i, k]
+            dest[sent] = route[i, c]
+            sent += 1
+    count = len(remote_tags)
+    stay = 0
+    for v in range(held):
+        slot = _find(remote_tags, count, np.int64(visitors[v, 0]))
+        if slot >= 0:
+            for d in range(3):
+                visitors[v, 1 + d] = velocities[n + slot, d]
+        going = np.int64(visitors[v, 5 + c])
+        if going != me:
+            out[sent, :] = visitors[v, :]
+            dest[sent] = going
+            sent += 1
+        else:
+            visitors[stay, :] = visitors[v, :]
+            stay += 1
+    return sent, stay
+
+
+@njit(cache=True)
+def arrive(arrived, me, visitors, held, velocities, n, owned_tags, by_tag, remote_tags):
+    """Velocities that came here: an owned particle's back into its row, another's kept as a
+    visitor; every visitor's velocity in its place among the numbered particles. Returns the
+    visitors held."""
+    owned = len(owned_tags)
+    for r in range(len(arrived)):
+        if np.int64(arrived[r, 4]) == me:
+            row = by_tag[_find(owned_tags, owned, np.int64(arrived[r, 0]))]
+            for d in range(3):
+                velocities[row, d] = arrived[r, 1 + d]
+        else:
+            visitors[held, :] = arrived[r, :]
+            held += 1
+    count = len(remote_tags)
+    for v in range(held):
+        slot = _find(remote_tags, count, np.int64(visitors[v, 0]))
+        if slot >= 0:
+            for d in range(3):
+                velocities[n + slot, d] = visitors[v, 1 + d]
+    return held
