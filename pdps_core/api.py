@@ -120,7 +120,7 @@ CONTRACT = {
         "reverse_rows": "reverse_rows(rows, ghosts=None): ghost rows (of every ghost, or of those named) back to "
                         "their owners, merged by the style (with ghosts named: valid until the next such call)",
         "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
-        "send_rows": "send_rows(rows, ranks, kept=False): each row to the rank named; returns (rows received, the rank each came from) (kept=True: in buffers valid until the next such call)",
+        "send_rows": "send_rows(rows, ranks, kept=False): each row to the rank named; returns (rows received, the rank each came from) (kept=True: in buffers valid until the next such call; on one rank the rows given)",
         "rank_of": "rank_of(points): the rank whose sub-domain holds each point (points inside the box)",
     },
     "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},

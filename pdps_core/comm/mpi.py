@@ -219,7 +219,7 @@ def _rows_by_rank(rows, ranks, counts, out):
         counts[ranks[i]] = k + 1
         for d in range(rows.shape[1]):
             out[k, d] = rows[i, d]
-    # each rank's count moved to the next rank's start: take the starts apart again
+    # each rank's running slot ended at the next rank's start: the differences are the counts
     for r in range(len(counts) - 1, 0, -1):
         counts[r] -= counts[r - 1]
 
@@ -272,6 +272,7 @@ class MPIComm:
         # send_rows(..., kept=True): counts and values to and from each rank, the rows, their ranks
         self._row_counts = tuple(np.zeros(self.nprocs, dtype=np.int64) for _ in range(4))
         self._kept_rows = {}        # width: (rows sent, rows received)
+        self._row_displ = (np.zeros(self.nprocs, dtype=np.int64), np.zeros(self.nprocs, dtype=np.int64))
         self._received_from = np.zeros(0, dtype=np.int64)
         self._own = (0, 0, 0)
         self._ghost_owners, self._ghost_takers = [], []
@@ -562,7 +563,11 @@ class MPIComm:
         width = rows.shape[1]
         counts, recv_counts, send_values, recv_values = self._row_counts
         # buffers by width: a style may send rows of two widths at every step
-        sent, received = self._kept_rows.get(width, (np.zeros((0, width)), np.zeros((0, width))))
+        if len(ranks) and (ranks.min() < 0 or ranks.max() >= self.nprocs):
+            raise ValueError(f"send_rows: ranks must lie in 0..{self.nprocs - 1} (got {ranks.min()}..{ranks.max()})")
+        if width not in self._kept_rows:
+            self._kept_rows[width] = (np.zeros((0, width)), np.zeros((0, width)))
+        sent, received = self._kept_rows[width]
         sent = _kept(sent, len(rows), width)
         _rows_by_rank(rows, ranks, counts, sent)
         self.world.Alltoall(counts, recv_counts)
@@ -574,7 +579,7 @@ class MPIComm:
         np.multiply(counts, width, out=send_values)
         np.multiply(recv_counts, width, out=recv_values)
         received = received[:total]
-        self._alltoallv(sent[:len(rows)], send_values, received, recv_values)
+        self._alltoallv(sent[:len(rows)], send_values, received, recv_values, self._row_displ)
         _rank_of_each(recv_counts, self._received_from)
         return received, self._received_from[:total]
 
@@ -645,11 +650,13 @@ class MPIComm:
             return received, recv_counts
         return received
 
-    def _alltoallv(self, send, send_counts, receive, recv_counts):
+    def _alltoallv(self, send, send_counts, receive, recv_counts, displ=None):
         """Doubles to every rank: ``send_counts`` values to each, in rank order, ``recv_counts``
-        from each into ``receive``."""
-        send_displ = np.zeros(self.nprocs, dtype=np.int64)
-        recv_displ = np.zeros(self.nprocs, dtype=np.int64)
+        from each into ``receive``; ``displ``: two arrays of nprocs for the displacements, kept by
+        the caller."""
+        send_displ, recv_displ = displ if displ is not None else (np.zeros(self.nprocs, dtype=np.int64),
+                                                                  np.zeros(self.nprocs, dtype=np.int64))
+        send_displ[0] = recv_displ[0] = 0
         np.cumsum(send_counts[:-1], out=send_displ[1:])
         np.cumsum(recv_counts[:-1], out=recv_displ[1:])
         self.world.Alltoallv([send.reshape(-1), (send_counts, send_displ), self.MPI.DOUBLE],

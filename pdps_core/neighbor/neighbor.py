@@ -79,7 +79,9 @@ class NeighborList:
     nearly every step): the pair style computes forces from the cell bins ``cells`` made at every
     step, and the list itself is built only if something reads ``offsets`` or ``neighbors``: from
     that step's bins, the pairs within the cutoff at that step (no skin: it is made again at the next
-    step it is read).
+    step it is read). Read it before positions move on (fix shardlow reads it at initial_integrate,
+    before the integrator that follows it; computes at output): the bins are those of the step's
+    forces.
 
     ``version`` grows by one at every build: a style that keeps something made from the list (the
     row of each entry, say) makes it again when the version it was made from is not the list's."""

@@ -38,7 +38,9 @@ Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
     fix 2 all nve
 """
 
-from pdps_core.api import ScriptError
+from pydantic import Field
+
+from pdps_core.api import ScriptError, StyleArgs, parse_args
 
 from .dpd import PairDPD
 
@@ -62,16 +64,32 @@ class PairDPDfdt(PairDPD):
         self.split = shardlow_defined(self.sim)
         return super().init(ntypes, pairs)
 
+    class SigmaCoeff(StyleArgs):
+        """LAMMPS's pair_coeff of dpd/fdt (LAMMPS's PairDPDfdt keeps sigma; its fix shardlow derives
+        gamma from it)."""
+        a: float
+        sigma: float = Field(ge=0)
+        cutoff: float | None = Field(default=None, gt=0)
+
+    def parse_coeff(self, words):
+        if self.sim.dialect.name != "pdps":     # LAMMPS's meaning (LIGGGHTS keeps LAMMPS's styles)
+            return parse_args(self.SigmaCoeff, words, "A sigma [cutoff]")
+        return super().parse_coeff(words)
+
+    def mix_coeff(self, ci, cj, rule):
+        if isinstance(ci, self.SigmaCoeff) or isinstance(cj, self.SigmaCoeff):
+            raise ScriptError("pair dpd/fdt with LAMMPS's sigma coefficients does not mix (LAMMPS's does not "
+                              "either): give pair_coeff for every type pair")
+        return super().mix_coeff(ci, cj, rule)
+
     def friction(self, i, j, coeff, kT):
-        """gamma: pair_coeff's second coefficient in the PDPS dialect; in LAMMPS's, which gives
-        sigma (LAMMPS's PairDPDfdt keeps sigma and its fix shardlow derives gamma from it),
-        sigma^2 / (2 k_B T)."""
-        if self.sim.dialect.name == "pdps":
+        """gamma: pair_coeff's second coefficient (PDPS dialect), or sigma^2 / (2 k_B T) from LAMMPS's
+        sigma."""
+        if not isinstance(coeff, self.SigmaCoeff):
             return coeff.gamma
-        sigma = coeff.gamma
-        if sigma == 0.0:
+        if coeff.sigma == 0.0:
             return 0.0
         if kT <= 0.0:
-            raise ScriptError(f"pair_coeff {i} {j}: sigma {sigma:g} needs pair_style dpd/fdt's temperature > 0 "
-                              "(LAMMPS's dpd/fdt takes sigma, and gamma = sigma^2 / (2 k_B T))")
-        return sigma * sigma / (2.0 * kT)
+            raise ScriptError(f"pair_coeff {i} {j}: sigma {coeff.sigma:g} needs pair_style dpd/fdt's temperature "
+                              "> 0 (LAMMPS's dpd/fdt takes sigma, and gamma = sigma^2 / (2 k_B T))")
+        return coeff.sigma * coeff.sigma / (2.0 * kT)

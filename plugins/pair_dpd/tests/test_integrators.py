@@ -439,3 +439,46 @@ def test_dpd_fdt_sigma_needs_a_temperature_in_the_lammps_dialect():
     assert "pair_coeff 1 1: sigma 3 needs pair_style dpd/fdt's temperature > 0" in message
     assert "\n" not in message
     assert _relaxing_gas("lammps", 0.0, 21, T=0.0).pair.gamma[1, 1] == 0.0
+
+
+def test_dpd_fdt_sigma_coefficients_do_not_mix_and_name_sigma():
+    """LAMMPS's dpd/fdt has no mixing rule; a negative sigma is refused by its own name."""
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("""
+        units lj
+        region box block 0 4 0 4 0 4
+        create_box 2 box
+        create_atoms 1 random 20 3 NULL
+        mass * 1.0
+        pair_style dpd/fdt 1.0 1.0 5
+        pair_coeff 1 1 25.0 3.0
+        pair_coeff 2 2 25.0 3.0
+        pair_modify mix arithmetic
+        fix 1 all shardlow
+        fix 2 all nve
+    """)
+    with pytest.raises(ScriptError, match="LAMMPS's sigma coefficients does not mix"):
+        sim.command("run 0")
+    with pytest.raises(ScriptError, match="sigma"):
+        sim.command("pair_coeff 1 2 25.0 -3.0")
+
+
+def test_dpd_fdt_sigma_survives_a_restart_read_in_the_pdps_dialect(tmp_path):
+    """A restart keeps the coefficients' model: LAMMPS's sigma 3 is still gamma 4.5 when a PDPS
+    script reads it (it would be gamma 3 if the number were stored bare)."""
+    writer = Simulation(screen=False, log=None, dialect="lammps")
+    writer.command(f"""
+        units lj
+        region box block 0 5 0 5 0 5
+        create_box 1 box
+        create_atoms 1 random 200 5 NULL
+        mass 1 1.0
+        pair_style dpd/fdt 1.0 1.0 5
+        pair_coeff * * 25.0 3.0
+        {SHARDLOW}
+        run 0
+        write_restart {tmp_path / "fdt.restart"}
+    """)
+    reader = Simulation(screen=False, log=None, dialect="pdps")
+    reader.command(f"read_restart {tmp_path / 'fdt.restart'}\n{SHARDLOW}\nrun 0")
+    assert reader.pair.gamma[1, 1] == pytest.approx(4.5, rel=1e-15)
