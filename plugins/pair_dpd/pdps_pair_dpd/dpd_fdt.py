@@ -27,8 +27,8 @@ Parameters (units of the run), the same words as ``pair_style dpd``:
   words as ``pair_style dpd``.
 - ``pair_coeff I J A sigma [rc]`` (LAMMPS dialect, as LAMMPS's dpd/fdt): ``sigma`` the noise
   amplitude (>= 0, force time^1/2), from which gamma = sigma^2 / (2 k_B T); ``sigma`` > 0 needs
-  ``T`` > 0. A LAMMPS script's ``pair_coeff * * 25.0 3.0`` (k_B T 1) is the PDPS dialect's
-  ``pair_coeff * * 25.0 4.5``.
+  ``T`` > 0; such coefficients do not mix (LAMMPS's dpd/fdt has no mixing rule). A LAMMPS script's
+  ``pair_coeff * * 25.0 3.0`` (k_B T 1) is the PDPS dialect's ``pair_coeff * * 25.0 4.5``.
 
 Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
 
