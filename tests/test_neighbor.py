@@ -258,6 +258,17 @@ def test_exclusions_hold_when_lists_live_one_step(make_sim, exclude):
     assert np.abs(_forces(sim) - excluded).max() < 1e-12 * np.abs(excluded).max()
 
 
+def _minimum_image(sim, length=6.0):
+    """Separations x_i - x_j of the owned particles by minimum image in the periodic box of
+    ``length``, and their distances (inf on the diagonal)."""
+    x = sim.particles.x[: sim.particles.nlocal]
+    delta = x[:, None, :] - x[None, :, :]
+    delta[..., : sim.dimension] -= length * np.round(delta[..., : sim.dimension] / length)
+    r = np.sqrt((delta ** 2).sum(axis=2))
+    np.fill_diagonal(r, np.inf)
+    return delta, r
+
+
 class AllPairForces(Fix):
     """After the pair forces of every step: the largest difference between the forces on the owned
     particles and DPD's conservative force a (1 - r/rc) summed over every pair by minimum image
@@ -269,11 +280,7 @@ class AllPairForces(Fix):
 
     def post_force(self, sim):
         p = sim.particles
-        x = p.x[: p.nlocal]
-        delta = x[:, None, :] - x[None, :, :]
-        delta[..., : sim.dimension] -= 6.0 * np.round(delta[..., : sim.dimension] / 6.0)
-        r = np.sqrt((delta ** 2).sum(axis=2))
-        np.fill_diagonal(r, np.inf)
+        delta, r = _minimum_image(sim)
         magnitude = np.where(r < 1.0, 10.0 * (1.0 - r) / r, 0.0)
         expected = (magnitude[..., None] * delta).sum(axis=1)
         self.errors.append(float(np.abs(p.f[: p.nlocal] - expected).max()))
@@ -318,11 +325,7 @@ class ListsBetweenBuilds(Fix):
 
     def end_of_step(self, sim):
         p = sim.particles
-        x = p.x[: p.nlocal]
-        delta = x[:, None, :] - x[None, :, :]
-        delta[..., : sim.dimension] -= 6.0 * np.round(delta[..., : sim.dimension] / 6.0)
-        r = np.sqrt((delta ** 2).sum(axis=2))
-        np.fill_diagonal(r, np.inf)
+        _, r = _minimum_image(sim)
         expected = np.sort(np.round(r[r < 1.0], 9))
         full = sim.build_neighbor_list(self.occasional)
         # a full list holds each pair from both sides, a half list once
