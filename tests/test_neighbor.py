@@ -287,6 +287,20 @@ class AllPairForces(Fix):
         self.agos.append(sim.neighbors.ago)
 
 
+def _between_builds(make_sim, dimension, check):
+    """150 steps of a DPD fluid in direct mode with the skin 0.1 (the wider direct-mode skin: ghosts
+    made every few steps) and the fix ``check`` watching; (the simulation, the fix)."""
+    registry.register("fix", check.name, check)
+    sim = _dpd_fluid(make_sim, 1.0, 100, dimension)      # the thermostat takes the overlaps' heat away
+    sim.command(f"""
+        pair_coeff * * 10 0
+        neighbor 0.1
+        fix check all {check.name}
+        run 150
+    """)
+    return sim, sim.fixes["check"]
+
+
 @pytest.mark.parametrize("dimension", [3, 2])
 def test_direct_mode_widens_the_skin_and_misses_no_pair_between_builds(make_sim, dimension):
     """In direct mode the list is made at every step and the skin only keeps the ghosts valid: it
@@ -294,15 +308,7 @@ def test_direct_mode_widens_the_skin_and_misses_no_pair_between_builds(make_sim,
     made every few steps instead of every step. At every step, rebuilt or not, the forces are those
     of every pair in the box (particles that crossed a face since the build included: the cell loop's
     interior, where it skips the ghosts, shrinks by twice the largest move)."""
-    registry.register("fix", "test/all_pair_forces", AllPairForces)
-    sim = _dpd_fluid(make_sim, 1.0, 100, dimension)      # the thermostat takes the overlaps' heat away
-    sim.command("""
-        pair_coeff * * 10 0
-        neighbor 0.1
-        fix check all test/all_pair_forces
-        run 150
-    """)
-    check = sim.fixes["check"]
+    sim, check = _between_builds(make_sim, dimension, AllPairForces)
     assert sim.pair_list.direct
     assert sim.neighbors.skin == 0.5 and sim.neighbors.requested_skin == 0.1
     between = [e for e, ago in zip(check.errors, check.agos) if ago > 0]
@@ -344,15 +350,7 @@ def test_lists_read_between_builds_hold_every_pair_within_the_cutoff(make_sim, d
     the last build may by then lie inside the owned particles' bounding box, by up to twice the
     largest move. Built with a skipped interior that ignored this, they missed pairs near the cutoff
     (17 of 191,933 in a 31,944-particle DPD fluid)."""
-    registry.register("fix", "test/lists_between_builds", ListsBetweenBuilds)
-    sim = _dpd_fluid(make_sim, 1.0, 100, dimension)
-    sim.command("""
-        pair_coeff * * 10 0
-        neighbor 0.1
-        fix check all test/lists_between_builds
-        run 150
-    """)
-    check = sim.fixes["check"]
+    sim, check = _between_builds(make_sim, dimension, ListsBetweenBuilds)
     assert sim.pair_list.direct
     assert sum(ago > 0 for ago in check.agos) > 60
 
