@@ -409,9 +409,7 @@ class FixShardlow(Fix):
     def _inverse_masses(self, sim, count):
         """1/m of owned particles and ghosts, in a kept array."""
         p = sim.particles
-        if len(getattr(self, "_inv_mass", ())) < count:
-            self._inv_mass = np.empty(count + count // 4 + 16)
-        out = self._inv_mass[:count]
+        out = self._rows("_inv_mass", (count,), np.float64)
         if p.has("rmass"):
             np.divide(1.0, p.rmass[:count], out=out)
         else:
@@ -549,16 +547,10 @@ def itineraries(cell, n, ncell, periodic, table, me, out):
 
 
 @njit(cache=True)
-def _find(sorted_values, count, value):
-    """Where ``value`` sits in ``sorted_values[:count]``, -1 when absent."""
-    lo, hi = 0, count
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if sorted_values[mid] < value:
-            lo = mid + 1
-        else:
-            hi = mid
-    return lo if lo < count and sorted_values[lo] == value else -1
+def _find(sorted_values, value):
+    """Where ``value`` sits in ``sorted_values``, -1 when absent."""
+    slot = np.searchsorted(sorted_values, value)
+    return slot if slot < len(sorted_values) and sorted_values[slot] == value else -1
 
 
 @njit(cache=True)
@@ -574,13 +566,12 @@ def same_order(tag, owned_tags, by_tag):
 def append_incoming(incoming, m_local, ends, ids, separation, keys, owned_tags, by_tag):
     """The pairs sent here (rows of collect_pairs' ``away``) after this rank's own: ids, separation,
     key, and each end's owned row (-1 for a particle owned elsewhere)."""
-    count = len(owned_tags)
     for r in range(len(incoming)):
         q = m_local + r
         for c in range(2):
             tag = np.int64(incoming[r, c])
             ids[q, c] = tag
-            slot = _find(owned_tags, count, tag)
+            slot = _find(owned_tags, tag)
             ends[q, c] = by_tag[slot] if slot >= 0 else -1
         for d in range(3):
             separation[q, d] = incoming[r, 2 + d]
@@ -609,21 +600,19 @@ def distinct_remote_tags(ends, ids, m, out):
 @njit(cache=True)
 def number_remote(ends, ids, m, remote_tags, n):
     """The ends owned elsewhere get the numbers after the owned rows, in the order of their tags."""
-    count = len(remote_tags)
     for q in range(m):
         for c in range(2):
             if ends[q, c] < 0:
-                ends[q, c] = n + _find(remote_tags, count, ids[q, c])
+                ends[q, c] = n + _find(remote_tags, ids[q, c])
 
 
 @njit(cache=True)
 def remote_properties(owner, tag, type_, inv_mass, n, nall, incoming, ends, m_local, remote_tags, types, inverse):
     """Type and inverse mass of each particle owned elsewhere: from its ghost here, or from the
     pairs sent here."""
-    count = len(remote_tags)
     for g in range(n, nall):
         if owner[g] < 0:
-            slot = _find(remote_tags, count, tag[g])
+            slot = _find(remote_tags, tag[g])
             if slot >= 0:
                 types[n + slot] = type_[g]
                 inverse[n + slot] = inv_mass[g]
@@ -654,10 +643,9 @@ def leaving_rows(route, velocities, tag, n, me, c, visitors, held, remote_tags, 
                 out[sent, 5 + k] = route[i, k]
             dest[sent] = route[i, c]
             sent += 1
-    count = len(remote_tags)
     stay = 0
     for v in range(held):
-        slot = _find(remote_tags, count, np.int64(visitors[v, 0]))
+        slot = _find(remote_tags, np.int64(visitors[v, 0]))
         if slot >= 0:
             for d in range(3):
                 visitors[v, 1 + d] = velocities[n + slot, d]
@@ -677,18 +665,16 @@ def arrive(arrived, me, visitors, held, velocities, n, owned_tags, by_tag, remot
     """Velocities that came here: an owned particle's back into its row, another's kept as a
     visitor; every visitor's velocity in its place among the numbered particles. Returns the
     visitors held."""
-    owned = len(owned_tags)
     for r in range(len(arrived)):
         if np.int64(arrived[r, 4]) == me:
-            row = by_tag[_find(owned_tags, owned, np.int64(arrived[r, 0]))]
+            row = by_tag[_find(owned_tags, np.int64(arrived[r, 0]))]
             for d in range(3):
                 velocities[row, d] = arrived[r, 1 + d]
         else:
             visitors[held, :] = arrived[r, :]
             held += 1
-    count = len(remote_tags)
     for v in range(held):
-        slot = _find(remote_tags, count, np.int64(visitors[v, 0]))
+        slot = _find(remote_tags, np.int64(visitors[v, 0]))
         if slot >= 0:
             for d in range(3):
                 velocities[n + slot, d] = visitors[v, 1 + d]
