@@ -26,7 +26,8 @@ with its particle when particles are re-sorted), moves the particle with it, and
 Verlet (fix nve), to the last bit. Groot & Warren recommend :math:`\lambda = 0.65` for their fluid
 (rho = 3, a = 25, gamma = 4.5): it keeps the temperature closer to k_B T at large time steps than
 lambda = 1/2 (dt = 0.04: <T>/T = 1.00-1.01 against 1.025-1.033); the best value depends on the
-system. Masses are ``rmass`` when present, else the per-type mass.
+system. Masses are ``rmass`` when present, else the per-type mass. Each kick F dt / m is turned into
+a velocity by the unit system's ``ftm2v`` (1 in lj; LAMMPS's force->ftm2v in real and metal).
 
 Parameters:
 
@@ -50,8 +51,8 @@ from pdps_core.api import Fix, StyleArgs, observables
 
 
 @njit(cache=True)
-def mvv_initial(x, v, f, vest, mass, mask, groupbit, nlocal, dt, lam):
-    half = 0.5 * dt
+def mvv_initial(x, v, f, vest, mass, mask, groupbit, nlocal, dt, lam, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -63,8 +64,8 @@ def mvv_initial(x, v, f, vest, mass, mask, groupbit, nlocal, dt, lam):
 
 
 @njit(cache=True)
-def mvv_final(v, f, vest, mass, mask, groupbit, nlocal, dt):
-    half = 0.5 * dt
+def mvv_final(v, f, vest, mass, mask, groupbit, nlocal, dt, ftm2v):
+    half = 0.5 * dt * ftm2v
     for i in range(nlocal):
         if mask[i] & groupbit:
             dtfm = half / mass[i]
@@ -84,9 +85,9 @@ class FixMvvDPD(Fix):
     def initial_integrate(self, sim):
         p = sim.particles
         mvv_initial(p.x, p.v, p.f, p.arrays["vest"], observables.masses(sim), p.mask,
-                    sim.groups.bit(self.group), p.nlocal, sim.dt, self.args.prediction)
+                    sim.groups.bit(self.group), p.nlocal, sim.dt, self.args.prediction, sim.units.ftm2v)
 
     def final_integrate(self, sim):
         p = sim.particles
         mvv_final(p.v, p.f, p.arrays["vest"], observables.masses(sim), p.mask,
-                  sim.groups.bit(self.group), p.nlocal, sim.dt)
+                  sim.groups.bit(self.group), p.nlocal, sim.dt, sim.units.ftm2v)

@@ -29,7 +29,9 @@ random number :math:`\xi_{ij}`,
     \mathbf{v}_j \mathrel{-}= \frac{\Delta p_B}{m_j}\hat{\mathbf{r}}_{ij}
 
 (LAMMPS ``FixShardlow::ssa_update_dpd``: ``halfsigma_ij``, ``halfgamma_ij = halfsigma_ij^2/(k_B T)
-= gamma/2``, ``factorA``, ``factorB``, ``inv_1p_mu_gammaFactor``). Each half step changes the two
+= gamma/2``, ``factorA``, ``factorB``, ``inv_1p_mu_gammaFactor``). In units other than lj an
+impulse becomes a velocity through the unit system's ``ftm2v``: :math:`1/m` above stands for
+``ftm2v``/m, also in :math:`\mu`. Each half step changes the two
 velocities by opposite impulses along :math:`\hat{\mathbf{r}}_{ij}`, so it conserves the pair's
 momentum exactly; together the two are the trapezoidal rule for the radial relative velocity
 :math:`u = \hat{\mathbf{r}}_{ij}\cdot\mathbf{v}_{ij}`, :math:`u' = u + \mu\,[2s - g(u + u')]`, whose
@@ -289,10 +291,10 @@ def sweep_pairs(v, inv_mass, type_, ends, ids, d, lo, hi, cut, gamma, sigma, dt,
 
 
 @njit(cache=True)
-def inverse_type_masses(mass, type_, count, out):
-    """out[i] = 1 / mass[type_[i]] for the first ``count`` particles."""
+def inverse_type_masses(mass, type_, count, ftm2v, out):
+    """out[i] = ftm2v / mass[type_[i]] for the first ``count`` particles."""
     for i in range(count):
-        out[i] = 1.0 / mass[type_[i]]
+        out[i] = ftm2v / mass[type_[i]]
 
 
 def require_dpd_fdt(sim):
@@ -407,14 +409,15 @@ class FixShardlow(Fix):
         return kept[:7] + (kept[7][:nfirst],)
 
     def _inverse_masses(self, sim, count):
-        """1/m of owned particles and ghosts, in a kept array."""
+        """ftm2v/m of owned particles and ghosts, in a kept array: the velocity an impulse gives, so
+        the sweep is right in every unit system (ftm2v is 1 in lj)."""
         p = sim.particles
         out = self._rows("_inv_mass", (count,), np.float64)
         if p.has("rmass"):
-            np.divide(1.0, p.rmass[:count], out=out)
+            np.divide(sim.units.ftm2v, p.rmass[:count], out=out)
         else:
             # not np.take: it converts the 32-bit types to a temporary of 64-bit indices
-            inverse_type_masses(sim.mass, p.type, count, out)
+            inverse_type_masses(sim.mass, p.type, count, sim.units.ftm2v, out)
         return out
 
     def _sweep_in_parallel(self, sim, m_local, outgoing, rank, inv_mass, ncell, periodic, table, sweep):

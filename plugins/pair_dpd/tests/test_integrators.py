@@ -113,6 +113,36 @@ def test_mvv_dpd_with_lambda_one_half_is_velocity_verlet():
     assert mvv.fixes["1"].args.prediction == 0.5
 
 
+@pytest.mark.parametrize("units, mass, dt", [("real", 39.948, 2.0), ("metal", 39.948, 0.002)])
+def test_mvv_dpd_with_lambda_one_half_is_velocity_verlet_in_other_units(units, mass, dt):
+    """Two argon atoms bound by lj/cut, 20 steps: in real and metal units too, fix mvv/dpd with
+    lambda 1/2 is fix nve to the last bit (each kick F dt / m through ftm2v). Without ftm2v the real
+    trajectory ended 0.249 A from fix nve's."""
+    def run(integrator):
+        sim = Simulation(screen=False, log=None, dialect="lammps")
+        epsilon = 0.238 if units == "real" else 0.0103
+        sim.command(f"""
+            units {units}
+            region box block -10 10 -10 10 -10 10
+            create_box 1 box
+            create_atoms 1 single 0 0 0
+            create_atoms 1 single 3.5 0.4 0
+            mass 1 {mass}
+            pair_style lj/cut 8.0
+            pair_coeff 1 1 {epsilon} 3.405
+            velocity all set 0.001 0.002 0 sum yes
+            timestep {dt}
+            {integrator}
+            run 20
+        """)
+        return sim
+    reference, mvv = run("fix 1 all nve"), run("fix 1 all mvv/dpd")
+    moved = np.abs(by_tag(reference, reference.x) - np.array([[0, 0, 0], [3.5, 0.4, 0]])).max()
+    assert moved > 1e-3
+    for name in ("x", "v"):
+        np.testing.assert_array_equal(by_tag(mvv, getattr(mvv, name)), by_tag(reference, getattr(reference, name)))
+
+
 def test_mvv_dpd_one_step_formulas():
     """Two particles, a = 25 only (no noise): after one step x = x0 + dt v0 + dt^2/2 f0/m and
     v = v0 + dt/2 (f0 + f1)/m where f1 is evaluated with v0 + lambda dt f0/m."""
@@ -386,22 +416,23 @@ def test_shardlow_order_of_fixes(fixes, message):
 
 
 # ---- pair dpd/fdt in the LAMMPS dialect: the second coefficient is sigma ---------------------------
-def _relaxing_gas(dialect, sigma_or_gamma, seed, T=1.0):
-    """3,000 particles with a = 0 started at T = 3, 10 Shardlow steps of dt 0.02 toward k_B T = 1:
-    how far the temperature falls is set by gamma alone."""
+def _relaxing_gas(dialect, sigma_or_gamma, seed, T=1.0, *, units="lj", length=10, mass=1.0, cut=1.0, T0=3.0,
+                  dt=0.02):
+    """3,000 particles with a = 0 started at T0, 10 Shardlow steps of dt toward T: how far the
+    temperature falls is set by gamma alone."""
     sim = Simulation(screen=False, log=None, dialect=dialect)
     sim.command(f"""
-        units lj
+        units {units}
         boundary p p p
         comm_modify vel yes
-        region box block 0 10 0 10 0 10
+        region box block 0 {length} 0 {length} 0 {length}
         create_box 1 box
         create_atoms 1 random 3000 {seed} NULL
-        mass 1 1.0
-        pair_style dpd/fdt {T} 1.0 {seed}
+        mass 1 {mass}
+        pair_style dpd/fdt {T} {cut} {seed}
         pair_coeff * * 0.0 {sigma_or_gamma}
-        velocity all create 3.0 {seed} dist gaussian
-        timestep 0.02
+        velocity all create {T0} {seed} dist gaussian
+        timestep {dt}
         {SHARDLOW}
         thermo_style custom step temp
         thermo 10
@@ -430,6 +461,44 @@ def test_dpd_fdt_takes_sigma_in_the_lammps_dialect():
     allowed = 4.0 * math.hypot(scatter / math.sqrt(len(temperatures)), calibration)
     assert np.std(temperatures, ddof=1) < 2.0 * scatter
     assert abs(np.mean(temperatures) - reference) < allowed
+
+
+# LAMMPS 22 Jul 2025 on the scene above in real units (argon mass 39.948, box 50 A, cutoff 5 A,
+# sigma 100, T 900 K -> 300 K, dt 2 fs; seeds 21-32), temperature at step 10: mean of 12 runs
+# 578.44 K, scatter of one run 7.44 K, so the mean carries 2.15 K. Without ftm2v pdps gave 714,656 K.
+LAMMPS_FDT_REAL_T10 = (578.44, 7.44, 2.15)
+REAL_GAS = dict(units="real", length=50, mass=39.948, cut=5.0, T0=900.0, dt=2.0)
+
+
+def test_shardlow_impulses_are_velocities_in_real_units():
+    """In units real an impulse F dt becomes a velocity through ftm2v (1/48.888^2): the gas relaxes
+    as in LAMMPS. Without it each impulse is 2,390 times too large and the gas heats to 10^5 K."""
+    temperatures = [observables.temperature(_relaxing_gas("lammps", 100.0, seed, 300.0, **REAL_GAS))
+                    for seed in (21, 22, 23, 24)]
+    reference, scatter, calibration = LAMMPS_FDT_REAL_T10
+    allowed = 4.0 * math.hypot(scatter / math.sqrt(len(temperatures)), calibration)
+    assert np.std(temperatures, ddof=1) < 2.0 * scatter
+    assert abs(np.mean(temperatures) - reference) < allowed
+
+
+@pytest.mark.parametrize("units", ["real", "metal", "si", "cgs", "micro", "nano"])
+def test_shardlow_keeps_an_ideal_gas_at_its_temperature_in_every_unit_system(units):
+    """a = 0 in any unit system: each pair update leaves the Maxwell-Boltzmann distribution at
+    pair_style dpd/fdt's T invariant (see the lj test above), so a gas started at 2 T relaxes to T
+    within 200 steps. Relative fluctuation of T for 3,000 particles:
+    sqrt(2/9000) = 1.5 % per sample. Without ftm2v the real gas heats and the metal one stays hot."""
+    from pdps_core.state.units import UNITS
+    u = UNITS[units]
+    cut = 4.0 * u.skin
+    # a mass that moves a particle a tenth of the cutoff per step, so pairs keep changing partners
+    mass = u.boltz * 300.0 / (u.mvv2e * (0.1 * cut / u.dt) ** 2)
+    sim = _relaxing_gas("lammps", 0.0, 21, 300.0, units=units, length=50 * u.skin, mass=mass, cut=cut, T0=600.0,
+                        dt=u.dt)
+    # gamma ftm2v / m = 5 / dt: a pair's velocity relaxes within a step
+    gamma = 5.0 * mass / (u.dt * u.ftm2v)
+    sigma = math.sqrt(2.0 * u.boltz * 300.0 * gamma)
+    sim.command(f"pair_coeff * * 0.0 {sigma!r}\nrun 200")
+    assert observables.temperature(sim) == pytest.approx(300.0, rel=0.06)
 
 
 def test_dpd_fdt_sigma_needs_a_temperature_in_the_lammps_dialect():
