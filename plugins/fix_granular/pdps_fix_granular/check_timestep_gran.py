@@ -8,15 +8,19 @@ Three ratios are computed:
     \frac{\Delta t}{t_R}, \qquad \frac{\Delta t}{t_H}, \qquad \frac{v_{max}\,\Delta t}{r_{skin}}
 
 where :math:`t_R = \pi R \sqrt{\rho/G} / (0.1631\nu + 0.8766)` is the Rayleigh time (the smallest
-over the particles), :math:`t_H` the Hertz collision time at the largest speed (LIGGGHTS:
-:math:`2.87 (m^{*2}/(R^* E^{*2} v_{max}))^{1/5}`), :math:`v_{max}` the largest particle speed of the
+over the particles), :math:`t_H` LIGGGHTS's estimate of the Hertz collision time (each particle
+against its copy: :math:`2.87 (m^2/(R^* Y^{*2} v))^{1/5}` with :math:`m` the particle's full mass,
+:math:`R^* = R/2` and :math:`v = 2 v_{max}`, the smallest over the particles; recorded equal to
+LIGGGHTS 3.8.0 on every row of a three-sphere scene), :math:`v_{max}` the largest particle speed of the
 group and :math:`r_{skin}` the neighbor skin. A warning names the limit passed and gives the three
 ratios when :math:`\Delta t > f_R t_R`, :math:`\Delta t > f_H t_H` or :math:`v_{max}\Delta t > r_{skin}`
 (particles could cross the skin in one step, so contacts could be found late); it is given again only
 when a limit is passed that was not at the previous check. The ratios of the last check are kept in
 ``ratios`` and read as LIGGGHTS's vector of this fix: ``f_ID[1]`` :math:`\Delta t/t_R`, ``f_ID[2]``
 :math:`\Delta t/t_H`, ``f_ID[3]`` the skin ratio at LIGGGHTS's relative speed :math:`2 v_{max}` (0 for a
-ratio with nothing to measure). The check also runs at the start of each run.
+ratio with nothing to measure). The check also runs at the start of each run, for its warning; the
+ratios it reads then are published only by the checks every NEVERY steps, so a run's first thermo
+row shows the previous run's ratios (zeros before any), as LIGGGHTS's.
 
 The times come from the pair style: its ``timestep_limits(sim)`` returns
 ``{"rayleigh": t_R or None, "hertz": t_H or None, "contact": t_c}``. When it gives neither a
@@ -76,7 +80,7 @@ class FixCheckTimestepGran(Fix):
 
     def setup(self, sim):
         self._passed = frozenset()
-        self.check(sim)
+        self.check(sim, publish=False)
 
     def vector(self, sim):
         rayleigh, collision, skin = (0.0 if r is None else r for r in self.ratios)
@@ -97,8 +101,9 @@ class FixCheckTimestepGran(Fix):
             sim.warn(f"fix {self.id} (check/timestep/gran): {reason}, so only the skin ratio is checked")
         return {}
 
-    def check(self, sim):
-        """Compute the three ratios; warn (or stop) when a limit is newly passed."""
+    def check(self, sim, publish=True):
+        """Compute the three ratios (kept for f_ID when ``publish``); warn (or stop) when a limit is
+        newly passed."""
         dt, skin = sim.dt, sim.neighbor.skin
         limits = self._limits(sim)
         rayleigh = limits.get("rayleigh")
@@ -112,7 +117,8 @@ class FixCheckTimestepGran(Fix):
         ratio_r = dt / rayleigh if rayleigh else None
         ratio_h = dt / collision if collision else None
         ratio_s = speed * dt / skin if skin > 0 else None
-        self.ratios = (ratio_r, ratio_h, ratio_s)
+        if publish:
+            self.ratios = (ratio_r, ratio_h, ratio_s)
 
         passed, clauses = set(), []
         if ratio_r is not None and ratio_r > self.args.fraction_r:

@@ -302,10 +302,13 @@ class PairGranModel(PairGran):
         return cutoffs
 
     def timestep_limits(self, sim):
-        """{"rayleigh": t_R, "hertz": t, "contact": t}: the smallest Rayleigh time of the particles
+        """{"rayleigh": t_R, "hertz": t_H, "contact": t}: the smallest Rayleigh time of the particles
         present (LIGGGHTS's check/timestep/gran: pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = Y / 2(1 +
-        nu)) and the shortest contact of the lightest particle of each type hitting its copy (module
-        docstring); None where there is nothing to time (no particles; for hertz, nothing moving)."""
+        nu)); LIGGGHTS's Hertz estimate, for hooke models too (its check/timestep/gran: each particle
+        against its copy with m* its full mass, R* = R/2, Y* of its type, at twice the largest speed,
+        2.87 (m*^2 / (R* Y*^2 v))^(1/5)); and the shortest contact of the lightest particle of each
+        type hitting its copy, with m* = m/2 (module docstring; the run's own warning). None where there
+        is nothing to time (no particles; for hertz, nothing moving)."""
         p = sim.particles
         nl = p.nlocal
         rayleigh = math.inf
@@ -319,16 +322,21 @@ class PairGranModel(PairGran):
             shear = self.youngs[t] / (2.0 * (1.0 + self.poisson[t]))
             rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, self.poisson[t]))
         rayleigh = sim.comm.min(rayleigh)
-        shortest = math.inf
+        shortest, hertz = math.inf, math.inf
         speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
         for t in range(1, sim.ntypes + 1):
             of_type = p.type[:nl] == t
+            y_star = self.table[liggghts.Y_STAR, t, t]
+            if speed > 0.0 and of_type.any():
+                mass, radius = p.rmass[:nl][of_type], p.radius[:nl][of_type]
+                k = int(np.argmin(mass * mass / radius))
+                hertz = min(hertz, 2.87 * (mass[k] ** 2 / (0.5 * radius[k] * y_star ** 2 * 2.0 * speed)) ** 0.2)
             lightest = sim.comm.min(float(p.rmass[:nl][of_type].min()) if of_type.any() else math.inf)
             if not math.isfinite(lightest):
                 continue
             rows = np.flatnonzero(of_type & (p.rmass[:nl] == lightest))
             radius = sim.comm.min(float(p.radius[:nl][rows].min()) if len(rows) else math.inf)
-            m_eff, r_eff, y_star = 0.5 * lightest, 0.5 * radius, self.table[liggghts.Y_STAR, t, t]
+            m_eff, r_eff = 0.5 * lightest, 0.5 * radius
             if self.models[0] == liggghts.HERTZ:
                 if speed > 0.0:
                     shortest = min(shortest, contact_models.hertz_contact_time(y_star, r_eff, m_eff, 2.0 * speed))
@@ -337,8 +345,9 @@ class PairGranModel(PairGran):
                                                           self.charvel, sim.units.nktv2p, True)
             rate = kn / m_eff - (gamma_n / (2.0 * m_eff)) ** 2
             shortest = min(shortest, math.pi / math.sqrt(rate) if rate > 0 else math.pi * math.sqrt(m_eff / kn))
+        hertz = sim.comm.min(hertz)
         return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
-                "hertz": shortest if math.isfinite(shortest) else None, "contact": shortest}
+                "hertz": hertz if math.isfinite(hertz) else None, "contact": shortest}
 
     def contacts(self, sim, group="all"):
         """The contacts of owned particles with both particles in ``group``, as the forces of this
