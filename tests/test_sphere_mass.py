@@ -70,3 +70,58 @@ def test_a_masses_section_for_spheres_is_refused(pdps_cli, tmp_path, dialect):
     assert done.stderr.strip() == ("ERROR: in.test:3: read_data: s.data: Masses: cannot set a per-type mass for "
                                    "atom_style sphere (LAMMPS's rule): each particle's mass comes from its diameter "
                                    "and density columns")
+
+
+# A sphere made by create_atoms (diameter 1, density 1) and by read_data (diameter 1, density 1),
+# then `set atom 1 density 2500 diameter 0.5` and `set atom 1 diameter 0.25`: its mass after each,
+# recorded with LAMMPS 22 Jul 2025 (atom_style sphere) and LIGGGHTS 3.8.0 (atom_style granular) on
+# this machine kind. LAMMPS keeps the mass when the diameter changes and takes a sphere's volume in 2-d
+# too; LIGGGHTS keeps the density and takes the disc's area in 2-d. pdps kept the mass in LIGGGHTS
+# scripts (a bed 10^7 times too heavy) and took the disc's area in LAMMPS's 2-d ones.
+SET_MASSES = {
+    ("lammps", 3): (0.523598775598299, 1308.99693899575, 1308.99693899575, 0.523598775598299),
+    ("lammps", 2): (0.523598775598299, 1308.99693899575, 1308.99693899575, 0.523598775598299),
+    ("liggghts", 3): (0.523598775598299, 163.624617374468, 20.4530771718085, 0.523598775598299),
+    ("liggghts", 2): (0.785398163397448, 490.873852123405, 122.718463030851, 0.785398163397448),
+}
+
+
+@pytest.mark.parametrize("dialect, dimension", sorted(SET_MASSES))
+def test_set_diameter_and_density_give_the_reference_programs_masses(tmp_path, dialect, dimension):
+    style = "granular" if dialect == "liggghts" else "sphere"
+    z = "-0.5 0.5" if dimension == 2 else "0 10"
+    (tmp_path / "data.sphere").write_text(f"""one sphere
+
+1 atoms
+1 atom types
+
+0 10 xlo xhi
+0 10 ylo yhi
+{z} zlo zhi
+
+Atoms # sphere
+
+1 1 1.0 1.0 5 5 {0 if dimension == 2 else 5}
+""")
+
+    def mass(sim):
+        return float(sim.particles.rmass[0])
+
+    sim = Simulation(screen=False, log=None, dialect=dialect)
+    sim.command(f"""
+        units si
+        dimension {dimension}
+        atom_style {style}
+        region reg block 0 10 0 10 {z}
+        create_box 1 reg
+        create_atoms 1 single 5 5 {0 if dimension == 2 else 5}
+    """)
+    masses = [mass(sim)]
+    sim.command("set atom 1 density 2500 diameter 0.5")
+    masses.append(mass(sim))
+    sim.command("set atom 1 diameter 0.25")
+    masses.append(mass(sim))
+    reader = Simulation(screen=False, log=None, dialect=dialect)
+    reader.command(f"units si\ndimension {dimension}\natom_style {style}\nread_data {tmp_path / 'data.sphere'}")
+    masses.append(mass(reader))
+    assert masses == pytest.approx(SET_MASSES[dialect, dimension], rel=1e-14)

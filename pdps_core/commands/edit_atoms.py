@@ -10,8 +10,10 @@ and ``write_data`` that writes them.
     write_data FILE [nocoeff] [nofix] [nolabelmap] [pair ii|ij]
 
 As in LAMMPS: ``set`` IDs of style atom and type take ranges (``1*10``); ``mass`` sets per-particle
-masses (spheres), ``diameter`` a sphere's radius (its mass stays, as LAMMPS's set diameter leaves it)
-and ``density`` its mass (density times its volume at its present diameter); ``type/fraction`` decides each particle from LAMMPS's Park-Miller generator seeded from
+masses (spheres), ``diameter`` a sphere's radius (its mass stays, as LAMMPS's set diameter leaves it;
+in the LIGGGHTS dialect its density stays and the mass follows the new size, as LIGGGHTS's) and
+``density`` its mass (density times its volume at its present diameter; in 2-d LIGGGHTS's volume is the
+disc's area, LAMMPS's the sphere's); ``type/fraction`` decides each particle from LAMMPS's Park-Miller generator seeded from
 its coordinates, so the same particles change on any number of ranks. ``delete_atoms ... compress
 yes`` (the default) renumbers the ids 1..N in storage order after LAMMPS's way of deleting (the last
 particle moves into each deleted one's slot), so a serial script gets LAMMPS's ids; ``overlap`` takes the particles in id
@@ -36,6 +38,7 @@ from ..random_park import park_reset_coord, park_uniform
 from ..state import limits
 from ..state.particles import style_columns
 from . import command
+from .particles import sphere_volume
 from .words import choice, count, integer, number, type_range, yes_no
 
 
@@ -160,10 +163,17 @@ def _set_one(sim, key, values, selected):
         elif key == "diameter":
             if np.any(np.asarray(value) < limits.MIN_SIZE):
                 raise ScriptError(f"diameter must be >= {limits.MIN_SIZE:g} (got {values[0]})")
-            # the radius alone: LAMMPS's set diameter keeps the mass (set density after it sets that)
-            p.radius[rows] = 0.5 * np.asarray(value)
+            radius = 0.5 * np.asarray(value)
+            if sim.dialect.set_diameter_keeps == "density":
+                # LIGGGHTS keeps each sphere's density, so its mass follows the new size; a point
+                # particle (radius 0) has no density to keep
+                old = sphere_volume(sim, p.radius[rows])
+                density = np.divide(p.rmass[rows], old, out=np.zeros_like(old), where=old > 0)
+                p.rmass[rows] = np.where(old > 0, density * sphere_volume(sim, radius), p.rmass[rows])
+            # LAMMPS's set diameter keeps the mass (set density after it sets that)
+            p.radius[rows] = radius
         else:
-            p.rmass[rows] = np.asarray(value) * _volume(sim, p.radius[rows])
+            p.rmass[rows] = np.asarray(value) * sphere_volume(sim, p.radius[rows])
         return len(rows)
     if key in ("property/atom", "property/peratom"):
         # LIGGGHTS's per-atom properties that fixes make (heat/gran's Temp, heatSource)
@@ -201,11 +211,6 @@ def _fraction(x, seed, fraction):
         park_reset_coord(state, seed, x[k])
         picked[k] = park_uniform(state) < fraction
     return picked
-
-
-def _volume(sim, radius):
-    # LAMMPS: a sphere's volume, also in 2-d (its density keyword of set; density/disc for discs)
-    return 4.0 / 3.0 * math.pi * np.asarray(radius) ** 3
 
 
 # ---- delete_atoms --------------------------------------------------------------------------------------
@@ -451,7 +456,7 @@ def write_data(sim, args):
     sphere = "sphere" in sim.particle_styles
     values = {"id": p.tag[:n], "type": p.type[:n], "x": p.x[:n, 0], "y": p.x[:n, 1], "z": p.x[:n, 2]}
     if sphere:
-        volume = _volume(sim, p.radius[:n])
+        volume = sphere_volume(sim, p.radius[:n])
         values["diameter"] = 2.0 * p.radius[:n]
         values["density"] = np.where(volume > 0, p.rmass[:n] / np.where(volume > 0, volume, 1.0), p.rmass[:n])
     for name in ("molecule", "q"):

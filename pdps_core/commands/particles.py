@@ -25,10 +25,7 @@ def _sphere_values(sim, keywords, ptype=None):
     diameter = keywords.get("diameter", 1.0)
     density = keywords.get("density", 1.0)
     radius = 0.5 * diameter
-    if sim.dimension == 2:
-        rmass = density * math.pi * radius ** 2
-    else:
-        rmass = density * 4.0 / 3.0 * math.pi * radius ** 3
+    rmass = density * sphere_volume(sim, radius)
     type_mass = sim.type_mass[ptype] if ptype is not None else 0.0
     if type_mass > 0:
         if "density" in keywords:
@@ -214,12 +211,20 @@ def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
     return np.array(placed, dtype=np.float64).reshape(-1, 3)
 
 
+def sphere_volume(sim, radius):
+    """What a sphere's density multiplies to give its mass, in LAMMPS's order of operations
+    (4 pi / 3 r r r), so masses agree with LAMMPS's to the last bit. In 2-d the dialect decides:
+    LAMMPS keeps the sphere's volume (create_atoms, read_data, set density and diameter), LIGGGHTS
+    and PDPS take the disc's area pi r r."""
+    radius = np.asarray(radius, dtype=float) if np.ndim(radius) else float(radius)
+    if sim.dimension == 2 and sim.dialect.volume_2d == "disc":
+        return math.pi * radius * radius
+    return 4.0 * math.pi / 3.0 * radius * radius * radius
+
+
 def _data_mass(sim, radius, density):
-    """A data file's sphere mass from its radius and density, in LAMMPS's order of operations
-    (4 pi / 3 r r r rho), so masses agree with LAMMPS's to the last bit."""
-    if sim.dimension == 2:
-        return math.pi * radius * radius * density
-    return 4.0 * math.pi / 3.0 * radius * radius * radius * density
+    """A data file's sphere mass from its radius and density."""
+    return sphere_volume(sim, radius) * density
 
 
 @command("mass")

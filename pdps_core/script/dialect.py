@@ -36,16 +36,22 @@ class Dialect:
     region_units: str          # default of region's units keyword: PDPS box, LAMMPS lattice
     velocity_units: str        # default of velocity's units keyword (set, ramp): PDPS box, LAMMPS lattice
     velocity_numbers: str      # velocity create's generator: "counter" (pdps) or "park" (LAMMPS's)
+    # set diameter on a sphere: "mass" keeps its mass (LAMMPS), "density" keeps its density, so the
+    # mass follows the new size (LIGGGHTS)
+    set_diameter_keeps: str = "mass"
+    # what a sphere's density multiplies in 2d (create_atoms, read_data, set density and diameter):
+    # "sphere" 4/3 pi r^3 (LAMMPS), "disc" pi r^2 (LIGGGHTS, PDPS)
+    volume_2d: str = "disc"
 
 
 DIALECTS = {
     "pdps": Dialect("pdps", "PDPS", index_base=0, region_units="box", velocity_units="box",
                     velocity_numbers="counter"),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
-                      velocity_numbers="park"),
-    # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command
+                      velocity_numbers="park", volume_2d="sphere"),
+    # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
-                        velocity_numbers="park"),
+                        velocity_numbers="park", set_diameter_keeps="density"),
 }
 
 # commands one language has and the other has not: the first one met names the dialect
