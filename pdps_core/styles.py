@@ -500,6 +500,12 @@ class Fix(Style):
     then read after every fix's final_integrate (and after ``setup``), before ``end_of_step`` and
     output; fixes reading ``sim.virial`` within final_integrate (barostats) do not see it.
 
+    Minimization: a fix defining ``min_post_force(self, sim)`` applies its forces there (LAMMPS's
+    fixes with a min_post_force: addforce, setforce, walls...). A fix that changes forces in a run
+    (``pre_force``, ``post_force``) but does nothing in a minimization, as LAMMPS leaves its fix out
+    (gravity, langevin, granular walls), sets ``minimize_idle = True``; a force fix that says neither
+    is refused by ``minimize``, at its line, rather than silently left out.
+
     ``modify_param(sim, keyword, value)``: a ``fix_modify ID keyword value`` other than energy and
     virial (LAMMPS's modify_param); returns True when the fix took it, False for an unknown keyword.
 
@@ -515,6 +521,7 @@ class Fix(Style):
     can_virial: ClassVar[bool] = False
     virial_default: ClassVar[bool] = False
     virial_after: ClassVar[str] = "post_force"
+    minimize_idle: ClassVar[bool] = False
     next_reneighbor: int | None = None
 
     def __init__(self, sim, id, group, args):

@@ -10,7 +10,9 @@ hookspec = pluggy.HookspecMarker("pdps")
 
 # The order of one timestep; `setup` runs once at the start of each run, after the first forces.
 HOOKS = ("setup", "initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor",
-         "pre_force", "post_force", "final_integrate", "end_of_step", "post_run")
+         "pre_force", "post_force", "final_integrate", "end_of_step", "post_run", "min_post_force")
+# fixes that change forces in a run through these hooks must say what they do in a minimization
+FORCE_HOOKS = ("pre_force", "post_force")
 
 
 class TimestepSpec:
@@ -49,6 +51,13 @@ class TimestepSpec:
     @hookspec
     def end_of_step(self, sim):
         """After integration: analyze styles, computes that accumulate."""
+
+    @hookspec
+    def min_post_force(self, sim):
+        """During ``minimize``, after the forces of each energy evaluation, the setup's included
+        (LAMMPS's min_setup and min_post_force): the fix's forces (and energy) join those the
+        minimizer follows. Only fixes defining it act in a minimization; ``setup`` and the other
+        hooks are not called there (as LAMMPS)."""
 
     @hookspec
     def post_run(self, sim):

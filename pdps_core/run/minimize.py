@@ -16,9 +16,13 @@ by 0.99, and no atom moving more than dmax in a step.
 
 Stopping: |E_k - E_k-1| < etol (|E_k| + |E_k-1| + 1e-8) / 2, |f| < ftol (two-norm over all degrees
 of freedom), maxiter iterations, maxeval force evaluations, or the line search finding no lower
-energy. Each iteration is a timestep (the step counter advances); fixes act only through their
-energy-free forces: integrators and thermostats are not called, as LAMMPS calls only fixes with
-a min_post_force.
+energy. Each iteration is a timestep (the step counter advances). Fixes act as in LAMMPS, which
+calls only the fixes with a min_setup/min_post_force: a fix defining ``min_post_force`` (addforce,
+setforce, viscous, enforce2d, wall/lj93, wall/lj126, wall/harmonic) applies its forces after every
+force evaluation, the setup's included, and its energy joins the minimized one after ``fix_modify ID
+energy yes``; integrators, thermostats and the fixes LAMMPS leaves out (``minimize_idle``: gravity,
+freeze, langevin, granular walls) are not called at all; any other fix that changes forces is
+refused at the ``minimize`` line.
 """
 
 import math
@@ -28,7 +32,9 @@ import numpy as np
 
 from ..errors import ScriptError
 from ..state import observables
-from .verlet import Verlet
+from .hookspec import FORCE_HOOKS
+from .shrink_wrap import shrink_wrap
+from .verlet import Verlet, _implements
 
 ALPHA_MAX = 1.0
 ALPHA_REDUCE = 0.5
@@ -54,6 +60,8 @@ class MinSettings:
 
 
 class Minimizer(Verlet):
+    setup_hook = "min_post_force"
+
     def __init__(self, sim, settings):
         super().__init__(sim)
         self.settings = settings
@@ -72,11 +80,13 @@ class Minimizer(Verlet):
         """Forces and the energy (per particle where thermo normalises) at the current positions."""
         sim, particles = self.sim, self.sim.particles
         if sim.neighbor.decide(particles, sim.comm):
+            shrink_wrap(sim)            # as a run's rebuild: a shrink-wrapped box follows the particles
             sim.comm.exchange(particles, sim.box, sim.step)
             self._reneighbor()
         else:
             sim.comm.forward_comm(particles, self.forward)
         self._forces(eflag=True, vflag=True)
+        self._call("min_post_force")
         self._fix_contributions()
         self._check_finite()
         self.neval += 1
@@ -132,6 +142,21 @@ class Minimizer(Verlet):
 
     # ---- the iterations ------------------------------------------------------------------------------
     def minimize(self, etol, ftol, maxiter, maxeval):
+        sim = self.sim
+        refuse_fixes_left_out(sim)
+        neighbor = sim.neighbor
+        settings = neighbor.every, neighbor.delay, neighbor.check
+        # as LAMMPS: a line search may move particles far in one evaluation, so lists are checked at
+        # every one (a delay would let it read energies with pairs missing)
+        if settings != (1, 0, True):
+            sim.warn("Using 'neigh_modify every 1 delay 0 check yes' setting during minimization")
+        neighbor.every, neighbor.delay, neighbor.check = 1, 0, True
+        try:
+            return self._minimize(etol, ftol, maxiter, maxeval)
+        finally:
+            neighbor.every, neighbor.delay, neighbor.check = settings
+
+    def _minimize(self, etol, ftol, maxiter, maxeval):
         sim = self.sim
         for name in ("minimize_g", "minimize_h", "minimize_x0", "minimize_v"):
             sim.particles.request(name, 3)
@@ -266,6 +291,16 @@ class Minimizer(Verlet):
                 return "ftol", iteration, ecurrent, eprevious
             self._thermo()
         return "maxiter", maxiter, ecurrent, eprevious
+
+
+def refuse_fixes_left_out(sim):
+    """A fix that changes forces in a run but neither acts in a minimization (min_post_force) nor
+    says LAMMPS leaves it out there (minimize_idle) would be silently ignored: refuse it."""
+    for fix in sim.fixes.values():
+        if (any(_implements(fix, hook) for hook in FORCE_HOOKS) and not _implements(fix, "min_post_force")
+                and not fix.minimize_idle):
+            raise ScriptError(f"fix {fix.id} ({fix.name}) changes forces in a run but cannot take part in a "
+                              "minimization (it has no min_post_force); unfix it before minimize")
 
 
 def check_tolerances(etol, ftol, maxiter, maxeval):

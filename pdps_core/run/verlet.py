@@ -51,6 +51,8 @@ class StyleHooks(pluggy.PluginManager):
 
 
 class Verlet:
+    setup_hook = "setup"            # what fixes are called with after the setup forces
+
     def __init__(self, sim):
         self.sim = sim
         self.hooks = {}
@@ -154,7 +156,7 @@ class Verlet:
         sim.in_setup = True
         try:
             self._forces(eflag=True, vflag=True)
-            self._call("setup")
+            self._call(self.setup_hook)
             self._fix_contributions()
             self._fix_contributions("final_integrate")
         finally:

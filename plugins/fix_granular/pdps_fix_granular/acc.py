@@ -30,6 +30,7 @@ from ._common import AXES, Axis, chosen, require_plane
 
 class FixAcc(Fix):
     name = "acc"
+    minimize_idle = True         # a body force as fix gravity, which LAMMPS leaves out of a minimization
     usage = "fix ID GROUP acc gravity DIM VALUE [region RID]"
 
     class Args(StyleArgs):

@@ -117,6 +117,9 @@ class FixAddForce(Fix):
     def setup(self, sim):
         self.post_force(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         n = p.nlocal

@@ -32,6 +32,7 @@ from ._common import chosen
 
 class FixFreeze(Fix):
     name = "freeze"
+    minimize_idle = True         # LAMMPS's fix freeze has no min_post_force (recorded: a minimization ignores it)
     usage = "fix ID GROUP freeze"
 
     def __init__(self, sim, id, group, args):

@@ -71,6 +71,7 @@ def direction(style, values, dimension):
 
 class FixGravity(Fix):
     name = "gravity"
+    minimize_idle = True         # LAMMPS's fix gravity has no min_post_force (recorded: a minimization ignores it)
     usage = "fix ID GROUP gravity MAGNITUDE vector X Y Z | chute ANGLE | spherical PHI THETA"
 
     class Args(StyleArgs):

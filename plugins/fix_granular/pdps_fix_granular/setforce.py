@@ -67,6 +67,9 @@ class FixSetForce(Fix):
     def setup(self, sim):
         self.post_force(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         selected = chosen(sim, self.group, self.args.region)

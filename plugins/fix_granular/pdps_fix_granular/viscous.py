@@ -40,6 +40,9 @@ class FixViscous(Fix):
     def setup(self, sim):
         self.post_force(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         selected = chosen(sim, self.group)

@@ -141,6 +141,7 @@ def thermal_energy(temp, rmass, type_, capacity, mask, groupbit, nlocal):
 
 class FixHeatGran(Fix):
     name = "heat/gran"
+    minimize_idle = True         # heat, not forces: LIGGGHTS's fix heat/gran has no min_post_force
     usage = ("fix ID GROUP heat/gran initial_temperature T0 [contact_area overlap|projection|constant A] "
              "[area_correction no]")
     ghost_fields = ("Temp",)

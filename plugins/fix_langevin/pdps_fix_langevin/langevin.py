@@ -271,6 +271,7 @@ def gjf_report(v, f, lv, flangevin, franprev, mass, mask, groupbit, nlocal, half
 
 class FixLangevin(Fix):
     name = "langevin"
+    minimize_idle = True         # LAMMPS's fix langevin has no min_post_force (recorded: a minimization ignores it)
     usage = ("fix ID GROUP langevin T_START T_STOP DAMP SEED [scale TYPE RATIO]... [zero yes|no] "
              "[omega yes|no] [tally yes|no] [gjf no|vfull|vhalf]")
 

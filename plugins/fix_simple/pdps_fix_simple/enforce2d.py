@@ -38,5 +38,8 @@ class FixEnforce2D(Fix):
     def setup(self, sim):
         self._flatten(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         self._flatten(sim)

@@ -141,6 +141,7 @@ def contact_offsets(index, count, offsets):
 
 class FixWallDEM(Fix):
     name = "wall/dem"
+    minimize_idle = True         # granular walls act on moving particles: LAMMPS's fix wall/gran has no min_post_force
     usage = ("fix ID GROUP wall/dem lsd region R1 [region R2 ...] e kn Cn kt Ct mu cutoff"
              " | ... e kn mu [cutoff]")
 

@@ -122,6 +122,9 @@ class FixWallHarmonic(Fix):
     def setup(self, sim):
         self.post_force(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         energy, vxx, vyy, vzz, inside = harmonic_walls(

@@ -702,6 +702,7 @@ def no_wear(tally):
 # ---- the style ----------------------------------------------------------------------------------
 class FixWallMesh(Fix):
     name = "wall/mesh"
+    minimize_idle = True         # granular walls act on moving particles: LAMMPS's fix wall/gran has no min_post_force
     transfer_cos = TRANSFER_COS         # as a surface: the history hand-over angle (wall_contact)
     usage = ("fix ID GROUP wall/mesh file FILE|mesh MESH_ID [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] "

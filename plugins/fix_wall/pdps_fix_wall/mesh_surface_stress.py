@@ -55,6 +55,7 @@ from .wall_contact import read_numbers
 
 class FixMeshSurfaceStress(FixMeshSurface):
     name = "mesh/surface/stress"
+    minimize_idle = True         # it only measures the mesh's forces
     usage = ("fix ID GROUP mesh/surface/stress file FILE [type N] [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [stress on|off] [reference_point RX RY RZ] [wear finnie|off]")
     extra_arity = {"stress": 1, "reference_point": 3, "wear": 1}

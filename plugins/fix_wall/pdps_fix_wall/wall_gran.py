@@ -216,6 +216,7 @@ def wall_gran_forces(x, v, omega, radius, rmass, body_mass, f, torque, near, cou
 
 class FixWallGran(Fix):
     name = "wall/gran"
+    minimize_idle = True         # LAMMPS's fix wall/gran has no min_post_force (recorded: a minimization ignores it)
     usage = ("fix ID GROUP wall/gran hooke|hooke/history|hertz/history Kn Kt gamma_n gamma_t xmu dampflag "
              "[limit_damping] xplane|yplane|zplane LO HI | zcylinder RADIUS [wiggle dim A T] [shear dim V]")
 

@@ -179,6 +179,7 @@ def near_primitive(x, radius, chosen, wallstyle, position, cylinder, margin, fla
 
 class FixWallGranModel(Fix):
     name = "wall/gran"
+    minimize_idle = True         # LAMMPS's fix wall/gran has no min_post_force (recorded: a minimization ignores it)
     usage = ("fix ID GROUP wall/gran model hertz|hooke tangential history|no_history [rolling_friction "
              "off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] "
              "primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 [shear DIM V] | "

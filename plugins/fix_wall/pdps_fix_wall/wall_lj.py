@@ -163,6 +163,9 @@ class WallLJ(Fix):
     def setup(self, sim):
         self.post_force(sim)
 
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         groupbit = sim.groups.bit(self.group)
