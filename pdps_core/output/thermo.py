@@ -86,8 +86,10 @@ def keyword_value(sim, name, indices=()):
         if name != "ke":
             total += obs.potential_energy(sim)
         if name in ("ke", "etotal", "econserve", "enthalpy"):
-            # LAMMPS's thermo ke: from the temperature, 1/2 dof k_B T (0 with no degrees of freedom)
-            total += 0.5 * obs.degrees_of_freedom(sim) * sim.units.boltz * sim.output.thermo.temperature()
+            # LAMMPS's thermo ke: from the temperature, 1/2 dof k_B T with the temperature compute's
+            # degrees of freedom (its group's, after thermo_modify temp; 0 with none)
+            thermo = sim.output.thermo
+            total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group()) * sim.units.boltz * thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         if name == "econserve":
@@ -226,7 +228,8 @@ class Thermo:
         if self.press_id is not None:
             return float(self.sim.compute_value(self.press_id))
         if self.temp_id is not None:
-            return obs.pressure(self.sim, temp=self.temperature())
+            # the kinetic part is the temperature compute's: its T and its group's degrees of freedom
+            return obs.pressure(self.sim, temp=self.temperature(), temp_group=self.temp_group())
         return obs.pressure(self.sim)
 
     def clock(self, name):
