@@ -133,13 +133,22 @@ def _pair_record(pair, states):
         return None
     coeffs = []
     for (i, j), coeff in sorted(pair.coeffs.items()):
-        model = type(coeff).__name__
-        if getattr(type(pair), model, None) is not type(coeff):
-            raise ScriptError(f"pair {pair.name}: coefficients of types {i} {j} are a {model}, which "
-                              "is not a class of the pair style, so a restart cannot name it")
+        model = _coefficient_class_name(type(pair), type(coeff))
+        if model is None:
+            raise ScriptError(f"pair {pair.name}: coefficients of types {i} {j} are a {type(coeff).__name__}, "
+                              "which is not a class of the pair style, so a restart cannot name it")
         coeffs.append([i, j, model, _dump_args(f"pair_coeff {i} {j}", coeff)])
     return {"style": pair.name, "args": _dump_args(f"pair {pair.name}", pair.args), "coeffs": coeffs,
             "mix_rule": pair.mix_rule, "shift": pair.shift, "state": states.encode(f"pair {pair.name}", pair)}
+
+
+def _coefficient_class_name(style, model):
+    """The name under which a pair style holds its coefficients' class, for the reader to find it
+    again: the class's own name (``SigmaCoeff``), or the attribute naming it (``Coeff``, which is
+    plain ``StyleArgs`` for styles with no coefficients, as the granular ones); None if neither."""
+    if getattr(style, model.__name__, None) is model:
+        return model.__name__
+    return next((name for name in sorted(dir(style)) if getattr(style, name, None) is model), None)
 
 
 def _neighbor_record(neighbor, particles, arrays, resumable=True):
