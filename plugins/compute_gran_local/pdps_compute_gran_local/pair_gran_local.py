@@ -79,6 +79,7 @@ class ComputePairGranLocal(Compute):
         ri, rj = p.radius[i], p.radius[j]
         blocks = []
         for key in self.keywords:
+            start = len(blocks)
             if key == "pos":
                 blocks += [xi, xj]
             elif key == "vel":
@@ -98,7 +99,11 @@ class ComputePairGranLocal(Compute):
                 blocks.append(ri + rj - r)
             else:
                 blocks.append(self._heat_flux(sim, i, j, r))
-        return np.column_stack([np.asarray(b, dtype=np.float64).reshape(len(i), -1) for b in blocks])
+            # no contacts (a bed not yet formed) is a table of no rows, as wide as with contacts
+            for k in range(start, len(blocks)):
+                b = np.asarray(blocks[k], dtype=np.float64)
+                blocks[k] = b.reshape(len(i), b.shape[1] if b.ndim == 2 else 1)
+        return np.column_stack(blocks) if len(i) else np.hstack(blocks)
 
     @staticmethod
     def _periodic(sim, xj):

@@ -129,3 +129,19 @@ run 0
     assert rows.shape == (1, 4)
     assert rows[0, 2] == 1.0
     assert rows[0, 3] == pytest.approx(D - (0.1 - 2 * 0.0451), rel=1e-9)
+
+
+def test_no_contacts_is_a_table_of_no_rows_that_dump_local_writes(tmp_path):
+    """Before a bed forms no two particles touch: the table has no rows and every column, and dump
+    local writes its header with no entries, as LIGGGHTS (it stopped with an internal error at step 0)."""
+    dump = tmp_path / "dump.local"
+    sim = chain("set atom 2 x 0.02\nset atom 3 x -0.03\n"
+                "compute c all pair/gran/local pos vel id force torque history contactArea delta\n"
+                f"dump d all local 1 {dump} c_c[1] c_c[13] c_c[29]\nrun 2")
+    assert sim.computes["c"].local(sim).shape == (0, 6 + 6 + 3 + 3 + 3 + 6 + 1 + 1)
+    text = dump.read_text().split("ITEM: TIMESTEP\n")[1:]
+    assert len(text) == 3
+    for block in text:
+        lines = block.splitlines()
+        assert lines[1:3] == ["ITEM: NUMBER OF ENTRIES", "0"]
+        assert lines[-1] == "ITEM: ENTRIES c_c[1] c_c[13] c_c[29]"
