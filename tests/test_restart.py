@@ -18,7 +18,7 @@ import zipfile
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, ScriptError, Simulation, StyleArgs, registry
+from pdps_core.api import Fix, ScriptError, Simulation, StyleArgs, observables, registry
 from pdps_core.state import restart as restart_files
 
 
@@ -522,3 +522,38 @@ def test_command_errors(saved):
     with pytest.raises(ScriptError, match="cannot write restart file no/such/dir/x.restart"):
         sim.command("write_restart no/such/dir/x.restart")
     assert not any(name.endswith(".tmp") for name in os.listdir("."))
+
+
+@pytest.mark.parametrize("exclude", ["type 1 2", "group left right", "type 1 1 exclude group left right"])
+def test_neigh_modify_exclude_survives_a_restart(tmp_path, exclude):
+    """Neighbor settings are saved, exclusions included: after read_restart the energy leaves out
+    the excluded pairs as before (it counted them until the exclusion was given again)."""
+    path = tmp_path / "exclude.restart"
+    writer = Simulation(screen=False, log=None, dialect="lammps")
+    writer.command(f"""
+        units lj
+        atom_style atomic
+        lattice fcc 0.8442
+        region box block 0 4 0 4 0 4
+        create_box 2 box
+        create_atoms 1 box
+        set type 1 type/fraction 2 0.5 4321
+        region lefthalf block INF 2 INF INF INF INF
+        group left region lefthalf
+        group right subtract all left
+        mass * 1.0
+        pair_style lj/cut 2.5
+        pair_coeff * * 1.0 1.0
+        neigh_modify exclude {exclude}
+        thermo_style custom step pe
+        run 0
+        write_restart {path}
+    """)
+    whole = Simulation(screen=False, log=None, dialect="lammps")
+    whole.command(f"read_restart {path}\nneigh_modify exclude none\nrun 0")
+    resumed = Simulation(screen=False, log=None, dialect="lammps")
+    resumed.command(f"read_restart {path}\nrun 0")
+    pe = {name: observables.potential_energy(sim) for name, sim in
+          (("writer", writer), ("whole", whole), ("resumed", resumed))}
+    assert pe["resumed"] == pytest.approx(pe["writer"], rel=1e-14)
+    assert abs(pe["whole"] - pe["writer"]) > 0.1

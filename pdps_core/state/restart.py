@@ -156,7 +156,11 @@ def _neighbor_record(neighbor, particles, arrays, resumable=True):
               "delay": neighbor.delay, "check": neighbor.check, "sort_every": neighbor.sort_every,
               "last_sort": neighbor.last_sort, "ago": neighbor.ago, "builds": neighbor.builds,
               "dangerous": neighbor.dangerous, "one": neighbor.one, "history": neighbor.history,
-              "built_with": None}
+              "built_with": None,
+              "exclude": {"types": [[[int(t) for t in a], [int(t) for t in b]]
+                                    for a, b in neighbor.excluded_type_pairs],
+                          "groups": [list(pair) for pair in neighbor.excluded_group_pairs],
+                          "molecules": [list(m) for m in neighbor.excluded_molecules]}}
     # the schedule and the lists' recipe go along only while they are current for the particles
     if resumable and neighbor.is_current(particles) and neighbor.built_with is not None:
         skin, lists, lo, hi, periodic = neighbor.built_with
@@ -562,6 +566,7 @@ def restore(sim, header, arrays):
             if state is not None:
                 sim.restored_states[(kind, record["id"])] = (record["style"], state, style)
     sim.neighbors = _neighbor(header["neighbor"], arrays, sim.particles)
+    _exclusions(sim.neighbors, header["neighbor"].get("exclude"), sim.ntypes, sim.groups)
     sim.step = int(header["step"])
     sim.random_epoch = int(header.get("random_epoch", 0))
     sim.highest_step = int(header.get("highest_step", sim.step))
@@ -646,6 +651,29 @@ def _neighbor(record, arrays, particles):
         neighbor.use_built_skin()
         neighbor.mark_current(particles)      # saved while current: the next run resumes them
     return neighbor
+
+
+def _exclusions(neighbor, record, ntypes, groups):
+    """neigh_modify exclude as written, checked as the command checks it (types in 1..ntypes,
+    groups defined, molecule/intra or inter)."""
+    if record is None:
+        return
+    try:
+        for a, b in record["types"]:
+            pair = tuple((int(lo), int(hi)) for lo, hi in (a, b))
+            if not all(1 <= lo <= hi <= ntypes for lo, hi in pair):
+                raise ValueError(f"type range {a} {b} outside 1..{ntypes}")
+            neighbor.excluded_type_pairs.append(pair)
+        for first, second in record["groups"]:
+            if first not in groups or second not in groups:
+                raise ValueError(f"group {first if first not in groups else second} is not defined")
+            neighbor.excluded_group_pairs.append((str(first), str(second)))
+        for group, kind in record["molecules"]:
+            if group not in groups or kind not in ("intra", "inter"):
+                raise ValueError(f"molecule/{kind} {group}")
+            neighbor.excluded_molecules.append((str(group), str(kind)))
+    except (TypeError, ValueError, KeyError) as exc:
+        raise ScriptError(f"neighbor exclusions: {exc} (a damaged restart file)") from None
 
 
 def _load_args(model, data, what):
