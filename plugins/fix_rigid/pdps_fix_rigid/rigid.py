@@ -61,7 +61,8 @@ Syntax::
   angular momentum and image flags of some bodies, instead of the values from their particles (for
   overlapping spheres, say): a count, then lines ``ID masstotal xcm ycm zcm ixx iyy izz ixy ixz iyz
   vxcm vycm vzcm lx ly lz ixcm iycm izcm`` (ID: 1 for single, the group's number, or the molecule id);
-  # comments. As LAMMPS: bodies the file leaves out start at rest, and bodies are set up once.
+  # comments. As LAMMPS (recorded): bodies the file leaves out take everything from their particles,
+  their motion included, and bodies are set up once.
 - ``langevin TSTART TSTOP TPERIOD SEED`` (rigid and rigid/nve; LAMMPS refuses it with rigid/nvt): a
   Langevin thermostat on the bodies, LAMMPS's, at a target T ramped from TSTART to TSTOP over the run
   (temperature, >= 0; 0 gives the drag alone), damping time TPERIOD (time, > 0). Each step adds to
@@ -587,17 +588,14 @@ class FixRigid(Fix):
             raise ScriptError(f"fix {self.id}: body {b + 1} has bad principal moments of inertia "
                               f"({', '.join(f'{m:.6g}' for m in moments[b])}; recomputed in the body frame: "
                               f"{', '.join(f'{c:.6g}' for c in check[b, :3])})")
-        if self.args.infile is None:
-            momenta = np.asarray(sim.comm.sum(bodies.momenta(x, v, omega_atom, image, body, type_, mass, rmass,
-                                                             radius, length, self.xcm, self.image_body, n, nb)))
-            self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
-            self.angmom[:] = momenta[:, 3:]
-        else:
-            # LAMMPS's: with a file, bodies it does not list start at rest
-            self.vcm[:] = 0.0
-            self.angmom[:] = 0.0
-            for b, row in self.from_file.items():
-                self.vcm[b], self.angmom[b] = row[10:13], row[13:16]
+        # every body's motion from its particles; a file's values replace those of the bodies it
+        # lists (LAMMPS 22 Jul 2025, recorded: the others move as without the file)
+        momenta = np.asarray(sim.comm.sum(bodies.momenta(x, v, omega_atom, image, body, type_, mass, rmass,
+                                                         radius, length, self.xcm, self.image_body, n, nb)))
+        self.vcm[:] = momenta[:, :3] / self.masstotal[:, None]
+        self.angmom[:] = momenta[:, 3:]
+        for b, row in self.from_file.items():
+            self.vcm[b], self.angmom[b] = row[10:13], row[13:16]
         if sim.dimension == 2:
             # 2d bodies move in the plane and turn about z only (LAMMPS's fix enforce2d on bodies)
             self.vcm[:, 2] = 0.0

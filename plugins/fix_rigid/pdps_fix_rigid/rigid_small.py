@@ -53,7 +53,7 @@ Syntax::
   velocity, angular momentum and the centre of mass's image flags of some bodies instead of the
   values from their particles, in fix rigid's format (``pdps doc fix rigid``; ID the molecule id).
   As LAMMPS's rigid/small: bodies the file leaves out take everything from their particles, their
-  motion included (fix rigid starts them at rest), and bodies are set up at the first run only.
+  motion included (as fix rigid's), and bodies are set up at the first run only.
 - ``langevin TSTART TSTOP TPERIOD SEED`` (rigid/small and rigid/nve/small; LAMMPS refuses it with
   rigid/nvt/small): fix rigid's Langevin thermostat on each body (``pdps doc fix rigid``): drag
   -M V / TPERIOD and -I_k w_k / TPERIOD about each principal axis plus uniform noise, target T ramped

@@ -477,3 +477,50 @@ def test_a_gravity_keyword_without_a_gravity_fix_is_one_line(tmp_path, setup, me
     sim = build(tmp_path, OCTAHEDRON, lo=(-10,) * 3, hi=(10,) * 3, setup=setup)
     with pytest.raises(ScriptError, match=message):
         sim.command("run 0")
+
+
+# Three bodies of three particles with random velocities; the infile names body 2 only (mass 3,
+# centre, inertia, vcm 0.1 0.2 0.3, angmom 0 0 0.5). LAMMPS 22 Jul 2025 on this script, thermo
+# step temp ke: without the infile and with it. Bodies 1 and 3 move as without the file; pdps
+# started them at rest (ke 0.0297 instead of 1.877).
+RIGID_INFILE = """
+units lj
+atom_style atomic
+region box block -10 10 -10 10 -10 10
+create_box 1 box
+mass 1 1.0
+create_atoms 1 single 0 0 0
+create_atoms 1 single 1 0 0
+create_atoms 1 single 0 1 0
+create_atoms 1 single 5 5 5
+create_atoms 1 single 6 5 5
+create_atoms 1 single 5 6.5 5
+create_atoms 1 single -5 -5 -5
+create_atoms 1 single -4 -5 -5
+create_atoms 1 single -5 -5 -3.8
+group b1 id 1:3
+group b2 id 4:6
+group b3 id 7:9
+velocity all create 2.0 4928459
+pair_style lj/cut 1.0
+pair_coeff 1 1 0.0 1.0
+fix 1 all rigid group 3 b1 b2 b3 {infile}
+thermo_style custom step temp ke
+thermo 50
+run 100
+"""
+RIGID_INFILE_BODIES = ("1\n2 3.0 5.3333333333333333 5.5 5.0 1.5 0.666666666666667 2.1666666666666667 0.0 0.0 0.0 "
+                       "0.1 0.2 0.3 0.0 0.0 0.5 0 0 0\n")
+RIGID_INFILE_LAMMPS = {
+    "": [[0, 2.7672877, 2.3060731], [50, 2.7672887, 2.3060739], [100, 2.7672902, 2.3060752]],
+    "infile bodies.in": [[0, 2.2525458, 1.8771215], [50, 2.2525468, 1.8771223], [100, 2.2525483, 1.8771236]],
+}
+
+
+@pytest.mark.parametrize("infile", sorted(RIGID_INFILE_LAMMPS))
+def test_bodies_an_infile_leaves_out_take_their_particles_motion_as_lammps(pdps_cli, tmp_path, infile):
+    from pdps_core.testing import thermo_rows
+    (tmp_path / "bodies.in").write_text(RIGID_INFILE_BODIES)
+    result = pdps_cli(RIGID_INFILE.format(infile=infile), name="in.rigid")
+    assert result.returncode == 0, result.stderr
+    np.testing.assert_allclose(thermo_rows(result.stdout), RIGID_INFILE_LAMMPS[infile], rtol=5e-8)
