@@ -13,15 +13,15 @@ flushed, so a run that stops leaves every complete frame readable.
 
 A ``*`` in the file name (LAMMPS's wildcard) writes each frame to a file of its own, the ``*``
 replaced by the step (``dump.*.txt`` -> ``dump.0.txt``, ``dump.100.txt``, ...); ``%`` (one file per
-processor) is refused: pdps writes one file per frame.
+processor) is refused: pdps writes one file per frame. A name ending in ``.gz`` is written
+gzip-compressed, as LAMMPS; ``.bin`` (LAMMPS's binary format) is refused at the dump line (files.py).
 """
-
-import os
-import tempfile
 
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError, SimulationError
+from pdps_core.api import Dump, ScriptError
+
+from .files import check_dump_file, write_frame
 
 
 def _check_format(fmt):
@@ -44,20 +44,7 @@ class TextDump(Dump):
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.frames = 0
         self.append = False
-        if "%" in self.path:
-            raise ScriptError(f"per-processor dump files (% in {self.path}) are not supported: pdps writes "
-                              "one file per frame")
-        self.per_frame = "*" in self.path
-        if sim.comm.is_root:           # rank 0 alone writes
-            try:
-                # checked now, opened (truncated unless dump_modify append yes) at the first frame
-                if self.per_frame:
-                    with tempfile.NamedTemporaryFile(dir=os.path.dirname(self.path) or ".", prefix=".pdps-probe-"):
-                        pass
-                else:
-                    open(self.path, "a").close()
-            except OSError as exc:
-                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+        check_dump_file(sim, self.path)
 
     def column_values(self, sim, chosen):
         """(list of 1-d arrays, list of printf formats), one per column."""
@@ -149,22 +136,7 @@ class TextDump(Dump):
         rows = ""
         if len(table):
             rows = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist())
-        if self.per_frame:
-            path = self.path.replace("*", str(sim.step))
-            try:
-                with open(path, "w") as handle:
-                    handle.write("".join(header) + rows)
-            except OSError as exc:
-                # found by rank 0 alone, which writes: a SimulationError stops every rank, not only this one
-                raise SimulationError(f"cannot open dump file {path}: {exc.strerror}") from None
-            return
-        if self.handle is None:
-            try:
-                self.handle = open(self.path, "a" if self.append else "w")
-            except OSError as exc:
-                raise SimulationError(f"cannot open dump file {self.path}: {exc.strerror}") from None
-        self.handle.write("".join(header) + rows)
-        self.handle.flush()
+        write_frame(self, sim, "".join(header) + rows, append=self.append)
 
     def close(self):
         if self.handle is not None and not self.handle.closed:

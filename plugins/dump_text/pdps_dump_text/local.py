@@ -25,13 +25,13 @@ Example::
     dump contacts all local 1000 contacts.txt index c_walls[1] c_walls[2] c_walls[3] c_walls[7]
 """
 
-import os
 import re
-import tempfile
 
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError, SimulationError, StyleArgs, param
+from pdps_core.api import Dump, ScriptError, StyleArgs, param
+
+from .files import check_dump_file, write_frame
 
 REFERENCE = re.compile(r"^c_([^\[\]]+)(?:\[(\d+|\*)\])?$")
 EVERY_COLUMN = "*"
@@ -64,20 +64,7 @@ class DumpLocal(Dump):
             self.attributes.append((word, match.group(1), column))
         self.path = args.file
         self.handle = None
-        if "%" in self.path:
-            raise ScriptError(f"per-processor dump files (% in {self.path}) are not supported: pdps writes "
-                              "one file per frame")
-        self.per_frame = "*" in self.path
-        if sim.comm.is_root:
-            try:
-                # checked now, written at the first frame
-                if self.per_frame:
-                    with tempfile.NamedTemporaryFile(dir=os.path.dirname(self.path) or ".", prefix=".pdps-probe-"):
-                        pass
-                else:
-                    open(self.path, "a").close()
-            except OSError as exc:
-                raise ScriptError(f"cannot open dump file {self.path}: {exc.strerror}") from None
+        check_dump_file(sim, self.path)
 
     def _columns(self, sim):
         """The frame's columns (None for index), their header names and the row count."""
@@ -135,22 +122,7 @@ class DumpLocal(Dump):
         header.append(f"ITEM: ENTRIES {' '.join(names)}\n")
         formats = ["%d" if k in index else "%.16g" for k in range(len(columns))]
         body = ((" ".join(formats) + "\n") * len(table)) % tuple(table.ravel().tolist()) if len(table) else ""
-        if self.per_frame:
-            path = self.path.replace("*", str(sim.step))
-            try:
-                with open(path, "w") as handle:
-                    handle.write("".join(header) + body)
-            except OSError as exc:
-                # found by rank 0 alone, which writes: a SimulationError stops every rank
-                raise SimulationError(f"cannot open dump file {path}: {exc.strerror}") from None
-            return
-        if self.handle is None:
-            try:
-                self.handle = open(self.path, "w")
-            except OSError as exc:
-                raise SimulationError(f"cannot open dump file {self.path}: {exc.strerror}") from None
-        self.handle.write("".join(header) + body)
-        self.handle.flush()
+        write_frame(self, sim, "".join(header) + body)
 
     def close(self):
         if self.handle is not None and not self.handle.closed:

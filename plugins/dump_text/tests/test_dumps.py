@@ -245,3 +245,41 @@ def test_a_star_in_the_file_name_writes_a_file_per_frame(tmp_path, monkeypatch):
     assert not (tmp_path / "dump.*.txt").exists()
     with pytest.raises(ScriptError, match=r"per-processor dump files \(% in dump.%.txt\) are not supported"):
         sim.command("dump 3 all custom 5 dump.%.txt id x y z")
+
+
+def test_a_gz_name_is_written_gzip_compressed_frame_by_frame(tmp_path, monkeypatch):
+    """dump.atom.gz is gzip (as LAMMPS writes it), holding the same text as the plain dump of the
+    same frames, and every frame written so far decompresses while the run goes on; a local dump
+    and a per-frame ``*`` name too. pdps wrote plain text under the .gz name."""
+    import gzip
+    import zlib
+    sim, _ = make(tmp_path, monkeypatch)
+    sim.command("dump 1 all atom 5 plain.atom\ndump 2 all atom 5 packed.atom.gz\ndump 3 all atom 5 packed.*.gz\n"
+                "run 5")
+    # mid-run: what is on disk decompresses to the frames written so far (a gzip stream not yet closed)
+    partial = zlib.decompressobj(16 + zlib.MAX_WBITS).decompress((tmp_path / "packed.atom.gz").read_bytes())
+    assert partial.decode() == (tmp_path / "plain.atom").read_text()
+    sim.command("run 5")
+    sim.close()
+    assert (tmp_path / "packed.atom.gz").read_bytes()[:2] == b"\x1f\x8b"
+    text = gzip.decompress((tmp_path / "packed.atom.gz").read_bytes()).decode()
+    assert text == (tmp_path / "plain.atom").read_text()
+    assert [f["step"] for f in read_dump(tmp_path / "plain.atom")] == [0, 5, 10]
+    frame = gzip.decompress((tmp_path / "packed.10.gz").read_bytes()).decode()
+    assert frame == text[text.rindex("ITEM: TIMESTEP\n10\n"):]
+
+
+def test_a_bin_name_is_refused_at_the_dump_line(pdps_cli):
+    """LAMMPS's .bin is its binary format, which pdps does not write: one line at the dump command
+    (pdps wrote text under the name)."""
+    result = pdps_cli("""
+        region box block 0 4 0 4 0 4
+        create_box 1 box
+        create_particle 1 single 1 1 1
+        dump 1 all atom 10 dump.bin
+        run 10
+    """)
+    assert result.returncode == 1
+    assert result.stderr.strip().splitlines()[-1] == (
+        "ERROR: in.test:5: dump: dump file dump.bin: LAMMPS's binary dump format (.bin) is not written by pdps; "
+        "name the file without .bin (text), or with .gz (compressed text)")
