@@ -33,11 +33,14 @@ def main(lmp):
         script = "\n".join(SETUP + [lines, "thermo 25", "thermo_style custom step temp pe press",
                                     "thermo_modify format float %.15g", "run 100", ""])
         log = run_lammps(lmp, script, [DATA / "fluid.data"], case)
+        # fix print's lines, from the whole log: the first step's comes before the thermo header
+        printed = [line.split()[1:] for line in log.splitlines() if line.startswith("PRINTED")]
         for words in thermo_lines(log):
             if words[0] == "PRINTED":
-                rows.append(f"{case}\tprint\t" + "\t".join(words[1:]))
-            else:
-                rows.append(f"{case}\t" + "\t".join(words))
+                continue
+            while printed and int(printed[0][0]) <= int(words[0]):
+                rows.append(f"{case}\tprint\t" + "\t".join(printed.pop(0)))
+            rows.append(f"{case}\t" + "\t".join(words))
     (DATA / "fixes.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

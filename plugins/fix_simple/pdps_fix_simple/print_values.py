@@ -7,7 +7,13 @@ Syntax::
 
 N the interval (steps); TEXT in quotes, with ``$x``, ``${name}`` and ``$(formula)`` replaced on each
 printing step (so ``$(temp)`` is the temperature then). ``file`` starts FILE afresh (with the title
-line, default ``# Fix print output for fix ID``), ``append`` adds to it. Example::
+line, default ``# Fix print output for fix ID``), ``append`` adds to it.
+
+As LAMMPS: a line is printed at each run's first step too when it is a multiple of N (so a step
+ending one run and starting the next is printed twice), and the steps it prints on compute the
+energy and virial its text may read (``$(pe)``, ``$(press)``, variables), thermo step or not.
+
+Example::
 
     fix p all print 100 "step $(step) T $(temp:%.4f)" file temp.txt screen no
 """
@@ -52,6 +58,13 @@ class FixPrint(Fix):
             if mode == "w":
                 self.handle.write(title + "\n")
                 self.handle.flush()
+
+    def needs(self, step):
+        # a substitution may read anything (pe, press, a variable of them), as thermo assumes
+        return {"energy", "virial"} if step % self.args.every == 0 and "$" in self.text else set()
+
+    def setup(self, sim):
+        self.end_of_step(sim)
 
     def end_of_step(self, sim):
         if sim.step % self.args.every:
