@@ -129,17 +129,23 @@ def capture(sim):
 
 
 def _pair_record(pair, states):
+    """The pair style's arguments, coefficients, mixing and state; a style made of others (hybrid:
+    ``substyles``, name -> pair style) keeps its coefficients in them, each written as a pair style."""
     if pair is None:
         return None
+    substyles = getattr(pair, "substyles", None)
     coeffs = []
-    for (i, j), coeff in sorted(pair.coeffs.items()):
+    for (i, j), coeff in sorted(pair.coeffs.items()) if substyles is None else ():
         model = _coefficient_class_name(type(pair), type(coeff))
         if model is None:
             raise ScriptError(f"pair {pair.name}: coefficients of types {i} {j} are a {type(coeff).__name__}, "
                               "which is not a class of the pair style, so a restart cannot name it")
         coeffs.append([i, j, model, _dump_args(f"pair_coeff {i} {j}", coeff)])
-    return {"style": pair.name, "args": _dump_args(f"pair {pair.name}", pair.args), "coeffs": coeffs,
-            "mix_rule": pair.mix_rule, "shift": pair.shift, "state": states.encode(f"pair {pair.name}", pair)}
+    record = {"style": pair.name, "args": _dump_args(f"pair {pair.name}", pair.args), "coeffs": coeffs,
+              "mix_rule": pair.mix_rule, "shift": pair.shift, "state": states.encode(f"pair {pair.name}", pair)}
+    if substyles is not None:
+        record["substyles"] = {name: _pair_record(sub, states) for name, sub in substyles.items()}
+    return record
 
 
 def _coefficient_class_name(style, model):
@@ -621,6 +627,18 @@ def _pair(sim, record, arrays):
     cls = registry.lookup("pair", record["style"])
     what = f"pair {record['style']}"
     pair = cls(sim, _load_args(cls.Args, record["args"], what))
+    _restore_pair(pair, record, arrays)
+    substyles = getattr(pair, "substyles", None)
+    for name, sub_record in (record.get("substyles") or {}).items():
+        if substyles is None or name not in substyles or sub_record.get("style") != name:
+            raise ScriptError(f"{what}: the file names a sub-style {name} the pair style does not have")
+        _restore_pair(substyles[name], sub_record, arrays)
+    return pair
+
+
+def _restore_pair(pair, record, arrays):
+    """Coefficients, mixing and state of a pair style made from its arguments."""
+    cls, what = type(pair), f"pair {record['style']}"
     for i, j, model_name, values in record["coeffs"]:
         model = getattr(cls, model_name, None)
         if not (isinstance(model, type) and issubclass(model, StyleArgs)):
@@ -629,7 +647,6 @@ def _pair(sim, record, arrays):
     pair.mix_rule = record["mix_rule"]
     pair.shift = bool(record.get("shift", False))
     _restore_state(pair, record["state"], arrays, what)
-    return pair
 
 
 def _neighbor(record, arrays, particles):

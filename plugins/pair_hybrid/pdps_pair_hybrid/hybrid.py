@@ -37,14 +37,12 @@ import inspect
 
 import numpy as np
 
-from pdps_core.api import Pair, PairLaw, ScriptError, registry
+from pdps_core.api import Pair, PairLaw, ScriptError, StyleArgs, registry
 
 
-class SubStyles:
+class SubStyles(StyleArgs):
     """The parsed pair_style line: [(style name, its words)]."""
-
-    def __init__(self, entries):
-        self.entries = entries
+    entries: list[tuple[str, list[str]]]
 
 
 class PairHybrid(Pair):
@@ -53,6 +51,7 @@ class PairHybrid(Pair):
     coeff_usage = "STYLE COEFFS... | none"
     overlay = False
     peratom_tally = True        # every sub-style is a force law, which tallies
+    Args = SubStyles
 
     @classmethod
     def parse(cls, words):
@@ -71,7 +70,7 @@ class PairHybrid(Pair):
                 raise ScriptError(f"pair style {word} cannot be a sub-style of {cls.name}")
             else:
                 entries[-1][1].append(word)
-        return SubStyles(entries)
+        return SubStyles(entries=entries)
 
     def __init__(self, sim, args):
         super().__init__(sim, args)
@@ -102,8 +101,23 @@ class PairHybrid(Pair):
                               f"(it has: {', '.join(self.styles)})")
         return (name, self.styles[name].parse_coeff(words[1:]))
 
+    @property
+    def substyles(self):
+        """name -> sub-style, each holding its own coefficients (a restart writes them so)."""
+        return self.styles
+
+    def state(self):
+        return {"assigned": [[i, j, names] for (i, j), names in sorted(self.assigned.items())]}
+
+    def restore(self, state):
+        for i, j, names in state["assigned"]:
+            unknown = [name for name in names if name not in self.styles]
+            if unknown:
+                raise ScriptError(f"pair {self.name}: the restart file assigns types {i} {j} to {unknown[0]}, "
+                                  "which is not one of its sub-styles")
+            self.assigned[(int(i), int(j))] = list(names)
+
     def coeff(self, i, j, coeff):
-        super().coeff(i, j, coeff)
         key = (min(i, j), max(i, j))
         name, values = coeff
         if name == "none":
