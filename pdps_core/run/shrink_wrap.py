@@ -1,8 +1,9 @@
 """Shrink-wrapped box faces (``boundary s`` and ``m``, LAMMPS's and LIGGGHTS's): before each
 exchange of a neighbor list rebuild (and at a run's setup), such a face moves to the particles'
-extent along its axis, less (lower face) or plus (upper face) 1e-4 of the box length (LAMMPS's
-``SMALL`` margin); an ``m`` face never moves inside its first position (the box command's or the
-data file's). With no particles the faces stay. The new bounds are the same on every rank."""
+extent along its axis, less (lower face) or plus (upper face) 1e-4 of the box length the box was
+made with (LAMMPS's ``small``, set by create_box, read_data and read_restart, not by later
+wrapping: recorded, in.crack's volume is LAMMPS's to 8 digits); an ``m`` face never moves inside its
+first position (the box command's or the data file's). With no particles the faces stay. The new bounds are the same on every rank."""
 
 import math
 
@@ -14,8 +15,8 @@ BOUNDARY_STYLES = ("p", "f", "s", "m") + tuple(a + b for a in "fsm" for b in "fs
 
 def shrink_faces(periodicity, lo, hi):
     """The shrink-wrapped faces of a box: (axis, 0 lower | 1 upper, "s" or "m", the face's first
-    position) for each face whose boundary word (p, f, s, m, or two letters) says s or m."""
-    return tuple((d, side, word[side % len(word)], float((lo, hi)[side][d]))
+    position, its margin) for each face whose boundary word (p, f, s, m, or two letters) says s or m."""
+    return tuple((d, side, word[side % len(word)], float((lo, hi)[side][d]), SMALL * float(hi[d] - lo[d]))
                  for d, word in enumerate(periodicity) for side in (0, 1) if word[side % len(word)] in "sm")
 
 
@@ -27,18 +28,17 @@ def shrink_wrap(sim):
     x = p.x[: p.nlocal]
     box = sim.box
     lo, hi = box.lo.copy(), box.hi.copy()
-    margin = SMALL * box.length
-    for d, side, style, first in faces:
+    for d, side, style, first, margin in faces:
         if side == 0:
             extent = sim.comm.min(float(x[:, d].min()) if len(x) else math.inf)
             if math.isfinite(extent):
-                lo[d] = extent - margin[d]
+                lo[d] = extent - margin
                 if style == "m":
                     lo[d] = min(lo[d], first)
         else:
             extent = sim.comm.max(float(x[:, d].max()) if len(x) else -math.inf)
             if math.isfinite(extent):
-                hi[d] = extent + margin[d]
+                hi[d] = extent + margin
                 if style == "m":
                     hi[d] = max(hi[d], first)
     if not (np.array_equal(lo, box.lo) and np.array_equal(hi, box.hi)):
