@@ -19,6 +19,7 @@ import numpy as np
 
 from .comm import world
 from .commands import COMMANDS
+from .commands.preflight import preflight, unknown_command
 from .errors import ScriptError
 from .neighbor.neighbor import Neighbor
 from .output.output import Output
@@ -159,6 +160,7 @@ class Simulation:
             here = os.path.dirname(os.path.abspath(path))
             if self.source is None:
                 self._settle_dialect(text, shown)
+                preflight(self, text, shown)
             self._script(text, shown, here)
         finally:
             self.include_depth -= 1
@@ -270,14 +272,7 @@ class Simulation:
         name, args = words[0], list(words[1:])
         entry = COMMANDS.get(name)
         if entry is None:
-            from .script.unsupported import unsupported
-            refused = unsupported(name)
-            if refused is not None:
-                raise ScriptError(refused, command=name)
-            import difflib
-            close = difflib.get_close_matches(name, COMMANDS, n=1)
-            hint = f"; did you mean {close[0]}?" if close else ""
-            raise ScriptError(f"unknown command {name}{hint}", command=name)
+            raise ScriptError(unknown_command(name), command=name)
         try:
             # numpy's floating-point warnings never reach the screen raw: the checks that matter
             # (non-finite positions and forces, lost particles) report in the core's own words

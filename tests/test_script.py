@@ -397,3 +397,51 @@ class TestInclude:
     def test_include_needs_one_file(self, sim):
         exc = error(sim, "include a b")
         assert exc.message.startswith("expected 1 argument(s), got 2")
+
+
+@pytest.mark.parametrize("later, message", [
+    ("fix 2 all pour 10 1 1 region box", "fix: fix style pour is a LAMMPS style pdps does not have; instead: "
+     "create_atoms random between runs (docs/lammps.md)"),
+    ("write_dump all atom final.atom", "write_dump: write_dump is a LAMMPS command pdps does not support; "
+     "instead: dump with run 0 (docs/lammps.md)"),
+    ("compute 3 all no/such/style", "compute: unknown compute style no/such/style"),
+    ("thermo_stlye custom step", "thermo_stlye: unknown command thermo_stlye; did you mean thermo_style?"),
+])
+def test_what_a_later_line_refuses_is_refused_before_the_first_run(pdps_cli, later, message):
+    """A command or style the script names after its runs is refused at its line before any step is
+    computed (it stopped only when reached: after 100,000 steps of LIGGGHTS's insert_stream)."""
+    result = pdps_cli(f"""
+        units lj
+        atom_style atomic
+        lattice fcc 0.8442
+        region box block 0 3 0 3 0 3
+        create_box 1 box
+        create_atoms 1 box
+        mass 1 1.0
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0 2.5
+        fix 1 all nve
+        run 1000
+        {later}
+        run 10
+    """, name="in.later")
+    assert result.returncode == 1
+    assert result.stderr.strip().splitlines()[-1].startswith(f"ERROR: in.later:13: {message}")
+    assert "Step" not in result.stdout
+
+
+def test_a_later_line_built_from_variables_waits_for_its_turn(pdps_cli):
+    """Words that depend on variables are checked when the line runs, with the values of then."""
+    result = pdps_cli("""
+        variable style string nve
+        region box block 0 4 0 4 0 4
+        create_box 1 box
+        create_particle 1 single 1 1 1
+        mass 1 1.0
+        run 2
+        variable style string nvt/nonsense
+        fix 1 all ${style}
+    """, name="in.vars")
+    assert result.returncode == 1
+    assert "Step" in result.stdout
+    assert result.stderr.strip().splitlines()[-1].startswith("ERROR: in.vars:9: fix: unknown fix style nvt/nonsense")
