@@ -68,7 +68,8 @@ def test_set_diameter_keeps_the_mass_as_lammps(order, mass):
 
 @pytest.mark.parametrize("line, message", [
     ("set type 1 colour 2", "unknown set keyword colour (supported: type, type/fraction, x, y, z, vx, vy, vz, "
-                            "mass, diameter, density, image, omega, charge, mol, property/atom, property/peratom)"),
+                            "mass, diameter, density, image, omega, omegax, omegay, omegaz, charge, mol, property/atom, "
+                            "property/peratom)"),
     ("set type 1 type 3", "type must be <= 2 (got 3)"),
     ("set type 1 type/fraction 2 1.5 7", "fraction must be <= 1 (got 1.5)"),
     ("set atom 1 mass 2", "set mass needs per-particle masses (atom_style sphere)"),

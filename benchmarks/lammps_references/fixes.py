@@ -1,4 +1,5 @@
-"""Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple, the reference
+"""Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple and fix_granular's addforce,
+setforce, viscous and gravity, the reference
 plugins/fix_simple/tests/test_lammps_fixes.py compares pdps with.
 
     python benchmarks/lammps_references/fixes.py [LMP]
@@ -22,6 +23,10 @@ CASES = {
     "momentum": "fix 2 all momentum 20 linear 1 1 0 angular rescale",
     "momentum_linear": "group heavy type 2\nfix 2 heavy momentum 10 linear 1 1 1",
     "print": 'fix 2 all print 25 "PRINTED $(step) $(temp:%.12f) $(pe:%.12f)"',
+    "addforce": "variable fx equal 0.3*cos(0.05*step)\nfix 2 all addforce v_fx -0.2 0.1",
+    "setforce": "group heavy type 2\nfix 2 heavy setforce 0.0 NULL 0.5",
+    "viscous": "fix 2 all viscous 0.8 scale 2 2.5",
+    "gravity": "fix 2 all gravity 1.5 vector 1 -2 0.5",
 }
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "fix 1 all nve", "timestep 0.002"]

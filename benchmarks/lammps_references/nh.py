@@ -1,5 +1,6 @@
-"""Record LAMMPS's thermo for short runs with fix nvt, npt, nph, deform and the LJ walls, the reference
-plugins/fix_nh/tests/test_lammps_nh.py and plugins/fix_wall/tests/test_wall_lj.py compare pdps with.
+"""Record LAMMPS's thermo for short runs with fix nvt, npt, nph, deform, the LJ walls and
+wall/harmonic, the reference plugins/fix_nh/tests/test_lammps_nh.py and
+plugins/fix_wall/tests/test_wall_lj.py compare pdps with.
 
     python benchmarks/lammps_references/nh.py [LMP]
 
@@ -64,6 +65,8 @@ WALL_CASES = {
              "fix 2 all wall/lj126 zlo 0.1 1.0 1.0 2.5 zhi v_top 0.7 1.1 1.2345\nfix_modify 2 energy yes",
     "lj93_pbc": "fix 1 all nve\nfix 2 all wall/lj93 xhi 7.5 0.1 1.0 1.0 zhi EDGE 2.0 1.0 1.0 pbc yes units box\n"
                 "fix_modify 2 virial yes",
+    "harmonic": "fix 1 all nve\nfix 2 all wall/harmonic zlo EDGE 20.0 1.0 1.2 zhi 6.5 5.0 1.0 1.0 units box\n"
+                "fix_modify 2 energy yes virial yes",
 }
 WALL_THERMO = "step temp pe press f_2 f_2[1] f_2[2]"
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",

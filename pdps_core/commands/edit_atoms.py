@@ -44,7 +44,8 @@ from .words import choice, count, integer, number, type_range, yes_no
 
 # ---- set ---------------------------------------------------------------------------------------------
 SET_ARITY = {"type": 1, "type/fraction": 3, "x": 1, "y": 1, "z": 1, "vx": 1, "vy": 1, "vz": 1, "mass": 1,
-             "diameter": 1, "density": 1, "image": 3, "omega": 3, "charge": 1, "mol": 1, "property/atom": 2,
+             "diameter": 1, "density": 1, "image": 3, "omega": 3, "omegax": 1,
+             "omegay": 1, "omegaz": 1, "charge": 1, "mol": 1, "property/atom": 2,
              "property/peratom": 2}
 
 
@@ -141,6 +142,9 @@ def _set_one(sim, key, values, selected):
         d = "xyz".index(key[-1])
         array[rows, d] = _values(sim, values[0], key, selected)
         return len(rows)
+    if key in ("omegax", "omegay", "omegaz"):
+        # LIGGGHTS's spelling: one component
+        key, values = "omega", ["NULL"] * "xyz".index(key[-1]) + list(values)
     if key in ("image", "omega"):
         if key == "omega" and not p.has("omega"):
             raise ScriptError("set omega needs atom_style sphere")

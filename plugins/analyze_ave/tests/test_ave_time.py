@@ -3,6 +3,8 @@
 averages to its middle), arrays from in-process computes that are simple functions of the step,
 and compute rdf arrays averaged element by element."""
 
+import io
+
 import numpy as np
 import pytest
 
@@ -152,6 +154,43 @@ def test_outputs_are_zero_before_the_first_average(sim):
     assert sim.analyzes["1"].scalar(sim) == 0.0
     # LAMMPS reads 0 before the first average; a row of single values has its length from the start
     np.testing.assert_array_equal(sim.analyzes["2"].vector(sim), [0.0, 0.0])
+
+
+# Averages of 3 samples 2 steps apart every 10 steps, of an LJ crystal melting from T = 1.5 (the
+# LAMMPS dialect: velocity create draws LAMMPS's numbers). LAMMPS 22 Jul 2025, recorded on this
+# machine: step, temp, f_one, f_avg[1], f_avg[2] at steps 0, 10, 20; 0 before the first average.
+AVE_TIME_SCRIPT = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0
+fix 1 all nve
+variable t equal temp
+fix avg all ave/time 2 3 10 v_t v_t
+fix one all ave/time 2 3 10 v_t
+thermo 10
+thermo_style custom step temp f_one f_avg[1] f_avg[2]
+thermo_modify format float %.15g
+run 20"""
+AVE_TIME_LAMMPS = [[0, 1.5, 0, 0, 0],
+                   [10, 1.17565905594515, 1.29652339732162, 1.29652339732162, 1.29652339732162],
+                   [20, 0.66404039212863, 0.686323405367074, 0.686323405367074, 0.686323405367074]]
+
+
+def test_fix_ave_time_prints_what_lammps_prints():
+    from pdps_core.api import Simulation
+    from pdps_core.testing import thermo_rows
+    screen = io.StringIO()
+    sim = Simulation(screen=screen, log=None, dialect="lammps")
+    sim.command(AVE_TIME_SCRIPT)
+    rows = thermo_rows(screen.getvalue())
+    assert [row[0] for row in rows] == [0, 10, 20]
+    np.testing.assert_allclose(rows, AVE_TIME_LAMMPS, rtol=1e-12, atol=0)
 
 
 @pytest.mark.parametrize("command, message", [

@@ -188,7 +188,7 @@ def test_gravity_is_mass_times_g_along_the_normalised_direction(spheres, words, 
 
 # ---- errors -------------------------------------------------------------------------------------
 @pytest.mark.parametrize("fix, message", [
-    ("viscous", "missing argument gamma; usage: fix ID GROUP viscous GAMMA"),
+    ("viscous", "missing argument gamma; usage: fix ID GROUP viscous GAMMA [scale TYPE RATIO]..."),
     ("viscous -1", "gamma must be >= 0 (got -1)"),
     ("acc", "missing argument gravity"),
     ("acc gravity w 1", "gravity must be one of 'x', 'y' or 'z' (got w)"),

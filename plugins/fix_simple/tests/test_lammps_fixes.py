@@ -1,5 +1,6 @@
-"""Fixes temp/rescale, temp/berendsen, momentum and print give LAMMPS's thermo (and printed lines) on
-a 200-particle Lennard-Jones fluid (data/fixes.txt, recorded with LAMMPS by
+"""Fixes temp/rescale, temp/berendsen, momentum, print, addforce (a variable component), setforce
+(NULL), viscous (scale) and gravity give LAMMPS's thermo (and printed lines) on a 200-particle
+Lennard-Jones fluid (data/fixes.txt, recorded with LAMMPS by
 benchmarks/lammps_references/fixes.py); enforce2d keeps a 2-d run in its plane."""
 
 import io

@@ -11,7 +11,8 @@ For a particle at distance :math:`d` from a wall (measured into the box) closer 
 ``sigma`` is read and unused, as in LAMMPS. A particle on or behind a wall stops the run with an
 error (the force is undefined there), as LAMMPS's "Particle on or inside fix wall surface".
 
-Thermo: the scalar ``f_ID`` is the walls' total energy. ``fix_modify ID energy yes`` adds it to
+Thermo: the scalar ``f_ID`` is the walls' total energy, ``f_ID[k]`` the force on wall k along its
+axis (from the dialect's first index, in the order given). ``fix_modify ID energy yes`` adds it to
 ``pe``; ``fix_modify ID virial yes`` adds the walls' virial to ``press`` (off by default, as in
 LAMMPS). The virial of a wall is tallied relative to the wall, :math:`d\,F` per particle, so a gas
 held by walls on the box faces reads the pressure it exerts on them: for an ideal gas,
@@ -42,9 +43,9 @@ from .faces import FACES, wall_planes
 
 
 @njit(cache=True)
-def harmonic_walls(x, f, mask, groupbit, nlocal, axes, lower, coords, epsilon, cutoff):
-    """Adds the wall forces; returns (energy, xx, yy, zz virial, index of a particle on or behind
-    a wall or -1)."""
+def harmonic_walls(x, f, mask, groupbit, nlocal, axes, lower, coords, epsilon, cutoff, on_wall):
+    """Adds the wall forces and each wall's force from the particles into ``on_wall``; returns
+    (energy, xx, yy, zz virial, index of a particle on or behind a wall or -1)."""
     energy = 0.0
     vxx = 0.0
     vyy = 0.0
@@ -63,6 +64,7 @@ def harmonic_walls(x, f, mask, groupbit, nlocal, axes, lower, coords, epsilon, c
                 return energy, vxx, vyy, vzz, i
             push = 2.0 * epsilon[w] * (rc - d)
             f[i, a] += push if lower[w] else -push
+            on_wall[w] += -push if lower[w] else push
             energy += epsilon[w] * (rc - d) * (rc - d)
             if a == 0:
                 vxx += d * push
@@ -78,6 +80,7 @@ class FixWallHarmonic(Fix):
     usage = "fix ID GROUP wall/harmonic face coord epsilon sigma cutoff [face ...] [units box|lattice]"
     can_energy = True
     can_virial = True
+    extensive = True        # f_ID and f_ID[k] are totals: per particle where thermo normalises (lj)
 
     class Args(StyleArgs):
         words: list[str]
@@ -118,6 +121,7 @@ class FixWallHarmonic(Fix):
         self.cutoff = np.array([values[3] for values in walls.values()])
         self.wall_energy = 0.0
         self.wall_virial = np.zeros(6)
+        self.wall_force = np.zeros(len(self.axes))
 
     def setup(self, sim):
         self.post_force(sim)
@@ -127,9 +131,10 @@ class FixWallHarmonic(Fix):
 
     def post_force(self, sim):
         p = sim.particles
+        self.wall_force[:] = 0.0
         energy, vxx, vyy, vzz, inside = harmonic_walls(
             p.x, p.f, p.mask, sim.groups.bit(self.group), p.nlocal, self.axes, self.lower,
-            self.coords, self.epsilon, self.cutoff)
+            self.coords, self.epsilon, self.cutoff, self.wall_force)
         message = None
         if inside >= 0:
             message = (f"fix {self.id} (wall/harmonic): particle {int(p.tag[inside])} is on or behind a "
@@ -147,6 +152,10 @@ class FixWallHarmonic(Fix):
     def scalar(self, sim):
         """The walls' total energy (f_ID), summed over ranks."""
         return float(sim.comm.sum(self.wall_energy))
+
+    def vector(self, sim):
+        """The force on each wall along its axis (f_ID[k]), summed over ranks."""
+        return np.asarray(sim.comm.sum(self.wall_force), dtype=float)
 
 
 def _number(face, name, word):

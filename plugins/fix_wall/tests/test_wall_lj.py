@@ -1,6 +1,6 @@
-"""Fixes wall/lj93 and wall/lj126 give LAMMPS's thermo (temp, pe with the walls' energy, press with
-their virial, the walls' energy f_ID and the force on each wall f_ID[k]) over 100 steps of a fluid
-between z walls (data/wall_lj.txt, recorded with LAMMPS by benchmarks/lammps_references/nh.py);
+"""Fixes wall/lj93, wall/lj126 and wall/harmonic give LAMMPS's thermo (temp, pe with the walls'
+energy, press with their virial, the walls' energy f_ID and the force on each wall f_ID[k]) over 100
+steps of a fluid between z walls (data/wall_lj.txt, recorded with LAMMPS by benchmarks/lammps_references/nh.py);
 the force is minus the energy's derivative; bad input gets one line."""
 
 import shutil

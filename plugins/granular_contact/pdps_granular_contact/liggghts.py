@@ -20,8 +20,9 @@ wall's type for a wall; ``MATERIAL`` names the rows of the caller's table):
     \frac{1}{G^*} = \frac{2(2-\nu_i)(1+\nu_i)}{Y_i} + \frac{2(2-\nu_j)(1+\nu_j)}{Y_j}, \quad
     \beta = \frac{\ln e}{\sqrt{\ln^2 e + \pi^2}}
 
-The models, applied in LIGGGHTS's order (normal, cohesion, tangential, rolling), each seeing the
-normal force :math:`F_n` as the ones before left it:
+The models, applied in LIGGGHTS's order (normal, cohesion, tangential, rolling); the tangential
+Coulomb limit and the rolling cap read the normal model's :math:`F_n`, without the cohesion
+(LIGGGHTS's default, ``tangential_reduce off``):
 
 - normal ``hertz``: :math:`S_n = 2Y^*\sqrt{R^*\delta}`, :math:`S_t = 8G^*\sqrt{R^*\delta}`,
   :math:`k_n = \tfrac43 Y^*\sqrt{R^*\delta}`, :math:`k_t = S_t`,
@@ -190,6 +191,9 @@ def liggghts_contact(models, wall, table, ti, tj, r, radius_i, radius_j, mass_i,
     fn = kn * overlap - gamma_n * v_n
     if models[5] != 0 and fn < 0.0:
         fn = 0.0
+    # the Coulomb limit and the rolling cap read the normal model's force: LIGGGHTS adds the
+    # cohesion to it only with tangential_reduce on (off by default)
+    fn_limit = fn
     fn -= table[COHESION, ti, tj] * contact_area(models[3], wall, r, radius_i, radius_j)
     mu = table[MU, ti, tj]
     if models[1] == HISTORY:
@@ -202,7 +206,7 @@ def liggghts_contact(models, wall, table, ti, tj, r, radius_i, radius_j, mass_i,
         length = math.sqrt(hist[0] * hist[0] + hist[1] * hist[1] + hist[2] * hist[2])
         for d in range(3):
             tangential[d] = -kt * hist[d]
-        limit = mu * abs(fn)
+        limit = mu * abs(fn_limit)
         if kt * length > limit:
             if length != 0.0:
                 ratio = limit / (kt * length)
@@ -217,7 +221,7 @@ def liggghts_contact(models, wall, table, ti, tj, r, radius_i, radius_j, mass_i,
                 tangential[d] -= gamma_t * vtr[d]
     else:
         speed = math.sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2])
-        scale = min(mu * abs(fn), gamma_t * speed) / speed if speed != 0.0 else 0.0
+        scale = min(mu * abs(fn_limit), gamma_t * speed) / speed if speed != 0.0 else 0.0
         for d in range(3):
             tangential[d] = -scale * vtr[d]
     for d in range(3):
@@ -230,7 +234,7 @@ def liggghts_contact(models, wall, table, ti, tj, r, radius_i, radius_j, mass_i,
             own_i = mass_i * radius_i * radius_i
             own_j = mass_j * radius_j * radius_j
             inertia = shape * own_i * own_j / (own_i + own_j)
-        rolling_torque(models[2], wall, n, wr, r_eff, radius_i - 0.5 * overlap, kn, kt, fn, overlap,
+        rolling_torque(models[2], wall, n, wr, r_eff, radius_i - 0.5 * overlap, kn, kt, fn_limit, overlap,
                        table[MU_ROLL, ti, tj], table[ETA_ROLL, ti, tj], inertia, dt, update, hist, roll)
     else:
         for d in range(3):
