@@ -41,8 +41,9 @@ class ScriptFlow:
     the same state can never end), and whether the next jump is skipped (an exhausted ``next``, as
     LAMMPS)."""
 
-    def __init__(self, source, lines):
+    def __init__(self, source, lines, path=None):
         self.source, self.lines, self.at = source, lines, 0
+        self.path = path            # the file read (None for commands typed from Python)
         self.jump = None
         self.seen = {}
         self.skip_jump = False
@@ -159,7 +160,7 @@ class Simulation:
             here = os.path.dirname(os.path.abspath(path))
             if self.source is None:
                 self._settle_dialect(text, shown)
-            self._script(text, shown, here)
+            self._script(text, shown, here, path)
         finally:
             self.include_depth -= 1
         return self
@@ -189,10 +190,10 @@ class Simulation:
         self._script(text, "<command>", os.getcwd())
         return self
 
-    def _script(self, text, source, directory):
+    def _script(self, text, source, directory, path=None):
         outer = self.source, self.line, getattr(self, "directory", None), getattr(self, "_flow", None)
         self.source, self.directory = source, directory
-        self._flow = flow = ScriptFlow(source, list(logical_lines(text)))
+        self._flow = flow = ScriptFlow(source, list(logical_lines(text)), path)
         try:
             while flow.at < len(flow.lines):
                 number, raw = flow.lines[flow.at]
@@ -237,15 +238,18 @@ class Simulation:
 
     def _jump_to(self, flow, source, directory):
         """Carry out ``jump FILE [LABEL]``: this script from its label, or another file in its place
-        (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop."""
+        (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop.
+        Jumping to the script's own file by name is jumping to SELF: the same loop, the same check."""
         target, label = flow.jump
         flow.jump = None
-        if target != "SELF":
-            path = self.resolve(target)
+        path = None if target == "SELF" else self.resolve(target)
+        same_file = target == "SELF" or (flow.path is not None and _same_file(path, flow.path))
+        if not same_file:
             text = read_text(path, "input script", path)
             source, directory = path, os.path.dirname(os.path.abspath(path))
             self.source, self.directory = source, directory
-            flow.source, flow.lines, flow.at = source, list(logical_lines(text)), 0
+            flow.source, flow.lines, flow.at, flow.path = source, list(logical_lines(text)), 0, path
+            flow.seen = {}
         if label is None:
             start = 0
         else:
@@ -254,11 +258,11 @@ class Simulation:
             if start is None:
                 raise ScriptError(f"label {label} is not in {source}", source=source, line=self.line,
                                   command="jump")
-        backward = target == "SELF" and start <= flow.at
+        backward = same_file and start <= flow.at
         if backward:
             state = (self.variables.signature(), self.step, self.particles.nlocal)
             if flow.seen.get(start) == state:
-                raise ScriptError(f"jump SELF {label or ''}: an endless loop (variables, step and particles "
+                raise ScriptError(f"jump {target} {label or ''}: an endless loop (variables, step and particles "
                                   "are as they were at the last jump back)".replace("  ", " "),
                                   source=source, line=self.line, command="jump")
             flow.seen[start] = state
@@ -635,6 +639,13 @@ class Simulation:
 
     def close(self):
         self.output.close()
+
+
+def _same_file(a, b):
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
 
 
 def _word(value):

@@ -194,6 +194,24 @@ def test_an_endless_loop_is_an_error(pdps_cli, script, line):
         "they were at the last jump back)"]
 
 
+@pytest.mark.parametrize("target", ["in.test", "./in.test"])
+def test_a_jump_to_the_scripts_own_file_is_checked_as_jump_self(pdps_cli, target):
+    # issue 30: the loop check knew only SELF, and this ran forever
+    done = pdps_cli(f"label a\nprint x\njump {target} a\n", "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        f"ERROR: in.test:3: jump: jump {target} a: an endless loop (variables, step and particles are as "
+        "they were at the last jump back)"]
+
+
+def test_a_loop_through_the_scripts_own_file_ends_with_its_variable(pdps_cli):
+    # LAMMPS's idiom: next exhausts the loop variable, and the jump after it is skipped
+    done = pdps_cli("variable i loop 3\nlabel top\nprint i=${i}\nnext i\njump in.test top\nprint done\n",
+                    "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[1:] == ["i=1", "i=2", "i=3", "done"]
+
+
 def test_a_loop_whose_variable_changes_runs_to_its_end(pdps_cli):
     done = pdps_cli('variable n equal 0\nlabel top\nvariable n equal ${n}+1\n'
                     'if "${n} < 5" then "jump SELF top"\nprint "n=${n}"\n', "-log", "none")
