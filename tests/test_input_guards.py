@@ -561,3 +561,38 @@ def test_lammps_dialect_code_found_by_the_fuzz_run(pdps_cli, lines, message):
             "nowhere.in: No such file or directory")
     else:
         one_line(done, message)
+
+
+# ---- issue 30: what the 15,558-case fuzz campaign and real scripts found ----------------------------
+def test_a_100000_character_word_is_quoted_by_its_ends(pdps_cli):
+    word = "a" * 50_000 + "b" * 50_000
+    one_line(pdps_cli(f"units {word}\n"),
+             f"ERROR: in.test:1: units: units style must be one of lj, real, metal, si, cgs, micro, nano "
+             f"(got {'a' * 60}...{'b' * 19})")     # the run clipped ends at its ')'
+
+
+@pytest.mark.parametrize("formula, value", [
+    ("(" * 100 + "1+1" + ")" * 100, "2"),                  # LAMMPS takes 100 levels
+    ("sqrt(" * 64 + "(" * 64 + "4" + ")" * 128, "1"),      # 128 levels of calls and parentheses
+    ("-" * 2000 + "3", "3"),
+    ("-" * 2001 + "3", "-3"),
+    ("!" * 3 + "-" + "0", "1"),
+    ("+".join(["1"] * 100_000), "100000"),                 # folded left to right, no recursion
+])
+def test_deep_and_long_formulas_evaluate(pdps_cli, formula, value):
+    done = pdps_cli(f"variable a equal {formula}\nprint ${{a}}\n", "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == value
+
+
+def test_formulas_nested_beyond_the_limit_are_one_line(pdps_cli):
+    formula = "(" * 129 + "1" + ")" * 129
+    one_line(pdps_cli(f"variable a equal {formula}\n"),
+             "ERROR: in.test:1: variable: variable a: parentheses and function calls nested more than 128 "
+             f"deep in formula '{'(' * 60}...{')' * 20}'")
+
+
+def test_a_long_quoted_formula_is_shown_by_its_ends(pdps_cli):
+    formula = " + ".join(["1"] * 50_000) + ")"
+    one_line(pdps_cli(f"variable a equal {formula}\n"),
+             f"ERROR: in.test:1: variable: variable a: unexpected ')' in formula '{formula[:60]}...{formula[-20:]}'")
