@@ -317,7 +317,7 @@ def set_field(path, value):
 @pytest.mark.parametrize("edit, message", [
     (set_field(["dimension"], 0), "field dimension must be 2 or 3 (got 0)"),
     (set_field(["dimension"], 5), "field dimension must be 2 or 3 (got 5)"),
-    (set_field(["neighbor", "every"], 0), "field every must be an integer >= 1 (got 0)"),
+    (set_field(["neighbor", "every"], 0), "field every must be from 1 to 9223372036854775807 (got 0)"),
     (set_field(["neighbor", "skin"], float("nan")), "field skin must be a number from 0 to 1e+150 (got nan)"),
     (set_field(["dt"], -1.0), "field dt must be from 1e-50 to 1e+50 (got -1.0)"),
     (set_field(["neighbor", "last_sort"], [[1]]), "field last_sort must be a step or null (got [[1]])"),
@@ -331,6 +331,19 @@ def set_field(path, value):
     # fuzz, issue 12: the image flags' default beyond int32 (particle arrays grown in place)
     (set_field(["particles", "properties", 6, "default"], 2147483648),
      "per-atom array image has a default 2147483648 that is not an int32"),
+    # issue 30: a skin of 1e10 was read, and the run crashed at its first rebuild
+    (set_field(["neighbor", "skin"], 1e10),
+     "field skin 1e+10 spans 1e+10 periodic images of the box (length 1 along x; at most 64)"),
+    (set_field(["neighbor", "built_with", "skin"], 1e10),
+     "field skin 1e+10 spans 1e+10 periodic images of the box (length 1 along x; at most 64)"),
+    (set_field(["neighbor", "ago"], 10 ** 30),
+     "field ago must be from 0 to 9223372036854775807 (got 1000000000000000000000000000000)"),
+    (set_field(["energy_step"], -5), "field energy_step must be a step or null (got -5)"),
+    # issue 30: next_tag at or below an id, and create_atoms made a second particle 1
+    (set_field(["particles", "next_tag"], 1),
+     "field next_tag 1 is not above the largest particle id 2 (new particles would reuse ids)"),
+    (set_field(["particles", "next_tag"], 2),
+     "field next_tag 2 is not above the largest particle id 2 (new particles would reuse ids)"),
 ])
 def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     make_sim().command(RESTART_SCRIPT)
@@ -354,6 +367,8 @@ def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     ({"mass": lambda m: m.astype(np.float32)}, "array mass holds float32 values, not numbers of the saved kind"),
     ({"neighbor/xhold": lambda x: x.astype("U3")}, "array neighbor/xhold holds <U3 values, which pdps does not write"),
     ({"neighbor/xhold": lambda x: np.float64(1.0)}, "array neighbor/xhold has shape (), not (2, 3)"),
+    ({"particles/v": lambda v: np.full_like(v, 1e200)},
+     "array particles/v holds values that are not finite or beyond +-1e+150"),
 ])
 def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
     make_sim().command(RESTART_SCRIPT)
