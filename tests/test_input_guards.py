@@ -611,3 +611,17 @@ def test_a_long_quoted_formula_is_shown_by_its_ends(pdps_cli):
     formula = " + ".join(["1"] * 50_000) + ")"
     one_line(pdps_cli(f"variable a equal {formula}\n"),
              f"ERROR: in.test:1: variable: variable a: unexpected ')' in formula '{formula[:60]}...{formula[-20:]}'")
+
+
+@pytest.mark.parametrize("append, kept", [
+    ("", ["print three", "three"]),         # LAMMPS: the log begins again, its old lines gone
+    (" append", ["print one", "one", "print two", "two", "log first.log append", "print three", "three"]),
+])
+def test_a_log_command_naming_the_current_log(pdps_cli, tmp_path, append, kept):
+    # issue 30: the new log was opened before the old one was flushed, whose stale lines then
+    # ended up after the new ones
+    done = pdps_cli(f"print one\nprint two\nlog first.log{append}\nprint three\n", "-log", "first.log")
+    assert done.returncode == 0, done.stderr
+    lines = (tmp_path / "first.log").read_text().splitlines()
+    assert lines[-len(kept):] == kept
+    assert len(lines) == len(kept) + (1 if append else 0)     # + the first line, naming the dialect
