@@ -156,7 +156,7 @@ class Simulation:
             if self.include_depth > limits.MAX_INCLUDE_DEPTH:
                 raise ScriptError(f"scripts include each other more than {limits.MAX_INCLUDE_DEPTH} deep "
                                   f"({path} includes itself?)")
-            text = read_text(path, "input script", shown)
+            text = read_text(path, "input script", shown, top=self.source is None)
             here = os.path.dirname(os.path.abspath(path))
             if self.source is None:
                 self._settle_dialect(text, shown)

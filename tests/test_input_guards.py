@@ -256,6 +256,18 @@ def data_text(atoms, header="2 atoms\n1 atom types\n", masses="1 1.0\n", extra="
      "Velocities: atom 1 appears twice (first on line 21)"),
     ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 nan 0 0\n2 0 0 0\n", 21,
      "non-finite velocity: 1 nan 0 0"),
+    # issue 30: Python's float() reads full-width digits and 1_0; LAMMPS 22 Jul 2025 refuses the first
+    # ("Expected floating point parameter instead of ...")
+    ("1 1 \uff11 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "\uff11 is not a number written in ASCII digits: 1 1 \uff11 1 1"),
+    ("1 1 1_0 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16, "1_0 is not a number written in ASCII digits: 1 1 1_0 1 1"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "\uff11 1.0\n", "", 12, "\uff11 is not a number written in ASCII digits: \uff11 1.0"),
+    # issue 30: a Velocities header with no rows, or too few; LAMMPS 22 Jul 2025 reads one row per
+    # atom ("Unexpected end of data file", "Incorrect format in Velocities section")
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n", 19,
+     "header says 2 atoms but the Velocities section has 0"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 0 0 0\n", 19,
+     "header says 2 atoms but the Velocities section has 1"),
 ])
 def test_bad_values_in_data_files(tmp_path, pdps_cli, atoms, masses, extra, line, message):
     (tmp_path / "bad.data").write_text(data_text(atoms, masses=masses, extra=extra))
@@ -263,10 +275,15 @@ def test_bad_values_in_data_files(tmp_path, pdps_cli, atoms, masses, extra, line
              f"ERROR: in.test:1: read_data: {tmp_path / 'bad.data'}:{line}: {message}")
 
 
-def test_a_header_with_tabs_is_read(tmp_path, pdps_cli):
-    (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 2\n", header="2\tatoms\n1\tatom\ttypes\n"))
-    done = pdps_cli("read_data tabs.data\nrun 0\n")
-    assert done.returncode == 0, done.stderr
+def test_a_header_with_tabs_is_read(tmp_path, make_sim):
+    (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 3\n", header="2\tatoms\n1\tatom\ttypes\n",
+                                                  masses="1\t2.5\n"))
+    sim = make_sim()
+    sim.command("read_data tabs.data\nrun 0")
+    assert sim.ntypes == 1 and sim.mass[1] == 2.5
+    order = np.argsort(sim.tag)
+    assert sim.tag[order].tolist() == [1, 2]
+    assert sim.x[order].tolist() == [[1.0, 1.0, 1.0], [2.0, 2.0, 3.0]]
 
 
 # ---- restart files: intact, but holding bad values -------------------------------------------
