@@ -159,15 +159,16 @@ class Simulation:
             text = read_text(path, "input script", shown, top=self.source is None)
             here = os.path.dirname(os.path.abspath(path))
             if self.source is None:
-                self._settle_dialect(text, shown)
+                self._settle_dialect(text, shown, here)
             self._script(text, shown, here, path)
         finally:
             self.include_depth -= 1
         return self
 
-    def _settle_dialect(self, text, shown):
-        """The top script's dialect: given, or read off its lines; named on the first output line."""
-        found, reason = detect(text, shown)
+    def _settle_dialect(self, text, shown, directory):
+        """The top script's dialect: given, or read off its lines and those of the files it includes;
+        named on the first output line."""
+        found, reason = detect(text, shown, directory)
         if self.dialect_fixed:
             if reason.startswith("dialect on line") and found is not self.dialect:
                 raise ScriptError(f"dialect {found.name} ({reason}) contradicts the dialect given "
@@ -517,9 +518,15 @@ class Simulation:
         self.groups.bit(name)
         return name
 
+    def find_compute(self, ident):
+        """The compute of that ID: the script's, else one of thermo's own that every LAMMPS run
+        defines (thermo_temp, thermo_press, thermo_pe), else None."""
+        from .output.thermo import THERMO_COMPUTES
+        return self.computes.get(ident) or THERMO_COMPUTES.get(ident)
+
     def compute_value(self, ident, indices=()):
         """``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``: a compute's scalar, vector element or array element."""
-        compute = self.computes.get(ident)
+        compute = self.find_compute(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined")
         return self._style_value("c", compute, ident, indices)
@@ -549,7 +556,7 @@ class Simulation:
                               f"indices count from {self.dialect.index_base})") from None
 
     def compute_needs(self, ident):
-        compute = self.computes.get(ident)
+        compute = self.find_compute(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined")
         return ({"energy"} if compute.needs_energy else set()) | ({"virial"} if compute.needs_virial else set())

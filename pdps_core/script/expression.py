@@ -210,7 +210,25 @@ class Expression:
             if (kind, value) != ("op", ","):
                 self._fail(f"expected ',' or ')', got {value or 'the end'!r}")
 
+    def _group_arguments(self):
+        """A group function's arguments: words (a group, a dimension, a region), never values, so
+        that ``xcm(all,x)`` reads no atom vector x."""
+        self._expect("(")
+        words = []
+        while True:
+            kind, value = self._take()
+            if kind not in ("name", "number"):
+                self._fail(f"expected a group, dimension or region ID, got {value or 'the end'!r}")
+            words.append(value)
+            kind, value = self._take()
+            if (kind, value) == ("op", ")"):
+                return words
+            if (kind, value) != ("op", ","):
+                self._fail(f"expected ',' or ')', got {value or 'the end'!r}")
+
     def _named(self, name):
+        if self._peek() == ("op", "(") and name in GROUP_FUNCTIONS:
+            return self._group_function(name, self._group_arguments())
         if self._peek() == ("op", "("):
             return self._function(name, self._arguments())
         prefix = name[:2]
@@ -323,13 +341,6 @@ class Expression:
             arity(TIME_FUNCTIONS[name][0])
             function = TIME_FUNCTIONS[name][1]
             return lambda env: function(env, *[c(env) for c in closures])
-        if name in GROUP_FUNCTIONS:
-            low, high = GROUP_FUNCTIONS[name]
-            arity(*range(low, high + 1))
-            if words[0] is None:
-                self._fail(f"{name}() takes a group ID first")
-            rest = words[1:]
-            return lambda env: env.group_function(name, words[0], rest)
         if name in ("min", "max") and not (len(args) == 1 and words[0] and words[0][:2] in ("c_", "f_", "v_")):
             # min(x, y, ...) of numbers (a pdps extension; LAMMPS's min() takes a vector reference)
             if not args:
@@ -354,6 +365,14 @@ class Expression:
             self.atom_vectors = True
             return lambda env: env.mask_function(name, words)
         self._fail(f"unknown function {name}()")
+
+    def _group_function(self, name, words):
+        low, high = GROUP_FUNCTIONS[name]
+        if not low <= len(words) <= high:
+            expected = " or ".join(map(str, range(low, high + 1)))
+            self._fail(f"{name}() takes {expected} argument(s), got {len(words)}")
+        group, rest = words[0], words[1:]
+        return lambda env: env.group_function(name, group, rest)
 
     def _reference_word(self, arg, name):
         # sum(c_ID) and the like take a reference, not a value: re-read it from the source text
