@@ -89,10 +89,17 @@ def prepare():
     cli._fail = recording_fail
 
 
+# A case's limit is CPU time of its worker, so that a machine busy with other work slows a case down
+# without making it fail. A case that lets WALL_FACTOR times its limit pass on the clock without
+# using its CPU time is waiting (asleep, blocked), not slow: a sound run never does.
+WALL_FACTOR = 4
+
+
 class Watchdog(threading.Thread):
-    """Interrupts the case at ``limit`` seconds, deciding first whether it is a long run (the step
-    counter still advancing toward a representable end) or a hang. A case stuck in compiled code
-    that holds the interpreter lock never lets this thread run: runner.py kills it (a hang)."""
+    """Interrupts the case once it has used ``limit`` seconds of CPU time (or waited WALL_FACTOR
+    times that on the clock), deciding first whether it is a long run (the step counter still
+    advancing toward a representable end) or a hang. A case stuck in compiled code that holds the
+    interpreter lock never lets this thread run: runner.py kills it (a hang)."""
 
     def __init__(self, limit):
         super().__init__(daemon=True)
@@ -105,16 +112,17 @@ class Watchdog(threading.Thread):
         self.running = True
 
     def run(self):
-        start = time.monotonic()
+        wall_start, cpu_start = time.monotonic(), time.process_time()
         samples = []
         while not self.done.wait(0.2):
-            now = time.monotonic()
+            cpu = time.process_time() - cpu_start
             sim = STATE.sim
-            samples.append((now, getattr(sim, "step", None)))
+            samples.append((cpu, getattr(sim, "step", None)))
             record_particles(sim)
-            if now - start < self.limit:
+            if cpu < self.limit and time.monotonic() - wall_start < WALL_FACTOR * self.limit:
                 continue
-            recent = [step for t, step in samples if t >= now - 1.5 and step is not None]
+            # the last 1.5 s of CPU time: on a busy machine as many steps as on an idle one
+            recent = [step for t, step in samples if t >= cpu - 1.5 and step is not None]
             last = getattr(sim, "run_last_step", None)
             # across runs too: a loop of short runs (``variable i loop 100000`` ... ``jump``) advances
             stepping = len(recent) >= 2 and recent[-1] > recent[0]
