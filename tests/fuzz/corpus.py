@@ -142,7 +142,11 @@ Atoms # full
 Velocities
 
 1 0.1 0.0 0.0
+2 0.0 0.0 0.0
+3 0.0 0.0 0.0
+4 0.0 0.0 0.0
 5 0.0 -0.2 0.3
+6 0.0 0.0 0.0
 
 Bond Coeffs
 
@@ -192,6 +196,8 @@ Atoms # atomic
 Velocities
 
 1 0.1 0.0 0.0
+2 0.0 0.0 0.0
+3 0.0 0.0 0.0
 4 -0.2 0.1 0.0
 """
 # two clumps of spheres with spin (atom_style hybrid sphere molecular), as the rigid/small clumps test has them

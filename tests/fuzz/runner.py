@@ -3,7 +3,7 @@
 A case runs in-process in a worker (``classify.run_case``), which interrupts it at the time limit, in
 CPU seconds of the worker (classify.Watchdog), so that other work on the machine cannot turn a sound
 case into a hang. A worker that has used the limit plus a grace period of CPU time without answering
-(or let classify.WALL_FACTOR times that pass on the clock) is stuck where it cannot be interrupted
+(or idled through that long on the clock, classify.IDLE) is stuck where it cannot be interrupted
 (compiled code holding the interpreter lock): it is asked for its Python stack (SIGUSR1,
 faulthandler), killed, and the case is a ``hang``. A worker that dies by itself (segmentation fault,
 abort, exit) makes its case a ``signal``. Either way a fresh worker takes its place. Workers are also
@@ -21,7 +21,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .classify import ACCEPTED, BIG, STATUS, WALL_FACTOR
+from .classify import ACCEPTED, BIG, STATUS, idle
 
 WORKER = Path(__file__).with_name("worker.py")
 
@@ -60,9 +60,10 @@ class _Worker:
         self.done = 0
         self.case = None
         self.started = None
-        self.deadline = None        # the clock's backstop
+        self.deadline = None        # when the limit plus grace has passed on the clock
         self.cpu_started = None
         self.cpu_limit = None
+        self.clock = []             # (wall, CPU seconds) the runner saw, for idleness
         self.ready = False
 
     def send(self, case, folder, limit, grace):
@@ -70,8 +71,9 @@ class _Worker:
                    "limit": limit}
         self.case, self.folder = case, folder
         self.started = time.monotonic()
-        self.deadline = self.started + WALL_FACTOR * limit + grace
+        self.deadline = self.started + limit + grace
         self.cpu_started, self.cpu_limit = self.cpu_seconds(), limit + grace
+        self.clock = [(self.started, self.cpu_started)]
         self.process.stdin.write((json.dumps(request) + "\n").encode())
         self.process.stdin.flush()
 
@@ -86,14 +88,16 @@ class _Worker:
         return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
     def over(self, now):
-        """The limit's reason when the current case has run past it (CPU time, or the clock's
-        backstop), else None."""
-        if self.cpu_started is not None:
-            cpu = self.cpu_seconds()
-            if cpu is not None and cpu - self.cpu_started > self.cpu_limit:
-                return f"{self.cpu_limit:g} s of CPU time"
-        if now > self.deadline:
-            return f"{self.deadline - self.started:g} s"
+        """The limit's reason when the current case has run past it (CPU time, or the limit on the
+        clock with the CPU idle), else None."""
+        cpu = self.cpu_seconds() if self.cpu_started is not None else None
+        if cpu is None:                     # no /proc: the clock alone
+            return f"{self.cpu_limit:g} s" if now > self.deadline else None
+        self.clock.append((now, cpu))
+        if cpu - self.cpu_started > self.cpu_limit:
+            return f"{self.cpu_limit:g} s of CPU time"
+        if now > self.deadline and idle(self.clock, now, cpu, self.cpu_limit):
+            return f"{self.cpu_limit:g} s with the CPU idle"
         return None
 
     def stack(self):
@@ -181,9 +185,8 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                         for name, data in case.files.items():
                             (folder / name).write_bytes(data)
                         worker.send(case, folder, limit, grace)
-            busy = [w.deadline for w in pool if w.case is not None]
-            # CPU time is looked at twice a second; the clock's backstop at its moment
-            timeout = min(0.5, max(0.0, min(busy) - time.monotonic())) if busy else 1.0
+            busy = any(w.case is not None for w in pool)
+            timeout = 0.5 if busy else 1.0          # CPU time is looked at twice a second
             for key, _ in selector.select(timeout=timeout):
                 worker = key.data
                 line = worker.process.stdout.readline()

@@ -42,7 +42,8 @@ CASES = {
     "raise": (BOX + "fix m all fuzz/misbehave raise\nrun 5\n", "traceback"),
     "nan": (BOX + "fix m all fuzz/misbehave nan\nrun 5\n", "nonfinite"),
     "warn": (BOX + "fix m all fuzz/misbehave warn\nrun 5\n", "messy"),
-    # 8 s without the CPU, past the 5 s limit and its 2 s grace: a busy machine's doing, not the case's
+    # 3 s of CPU at a quarter of the clock, some 12 s, past the 5 s limit and its 2 s grace on the
+    # clock: a busy machine's doing, not the case's
     "descheduled": (BOX + "fix m all fuzz/misbehave descheduled\nrun 5\n", "clean"),
 }
 
