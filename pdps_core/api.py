@@ -133,6 +133,7 @@ CONTRACT = {
                      "neighbors": "CSR neighbor rows", "occasional": "built on demand",
                      "version": "one more at every build: what a style made from the list is stale"},
     "Variables": {"value": "value(name): v_NAME as a number",
+                  "style": "style(name): the variable's style (equal, atom, vector, index, ...)",
                   "atom_values": "atom_values(name): an atom-style v_NAME, one float per owned particle (nlocal,)"},
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
              "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",

@@ -17,7 +17,7 @@ import os
 import sys
 import traceback
 
-from .errors import ScriptError
+from .errors import ScriptError, clip
 
 
 def _parser():
@@ -226,7 +226,7 @@ def _fail(sim, message, debug, alone=False):
     an error one rank found alone is reported by that rank, which then stops all of them."""
     if debug:
         traceback.print_exc()
-    message = " ".join(message.splitlines())      # one line, whatever a style put in its message
+    message = clip(" ".join(message.splitlines()))      # one line, whatever a style put in its message
     if sim is not None and not sim.comm.is_root and not alone:
         return
     print(message, file=sys.stderr)

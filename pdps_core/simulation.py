@@ -42,8 +42,9 @@ class ScriptFlow:
     the same state can never end), and whether the next jump is skipped (an exhausted ``next``, as
     LAMMPS)."""
 
-    def __init__(self, source, lines):
+    def __init__(self, source, lines, path=None):
         self.source, self.lines, self.at = source, lines, 0
+        self.path = path            # the file read (None for commands typed from Python)
         self.jump = None
         self.seen = {}
         self.skip_jump = False
@@ -156,19 +157,20 @@ class Simulation:
             if self.include_depth > limits.MAX_INCLUDE_DEPTH:
                 raise ScriptError(f"scripts include each other more than {limits.MAX_INCLUDE_DEPTH} deep "
                                   f"({path} includes itself?)")
-            text = read_text(path, "input script", shown)
+            text = read_text(path, "input script", shown, top=self.source is None)
             here = os.path.dirname(os.path.abspath(path))
             if self.source is None:
-                self._settle_dialect(text, shown)
+                self._settle_dialect(text, shown, here)
                 preflight(self, text, shown)
-            self._script(text, shown, here)
+            self._script(text, shown, here, path)
         finally:
             self.include_depth -= 1
         return self
 
-    def _settle_dialect(self, text, shown):
-        """The top script's dialect: given, or read off its lines; named on the first output line."""
-        found, reason = detect(text, shown)
+    def _settle_dialect(self, text, shown, directory):
+        """The top script's dialect: given, or read off its lines and those of the files it includes;
+        named on the first output line."""
+        found, reason = detect(text, shown, directory)
         if self.dialect_fixed:
             if reason.startswith("dialect on line") and found is not self.dialect:
                 raise ScriptError(f"dialect {found.name} ({reason}) contradicts the dialect given "
@@ -191,10 +193,10 @@ class Simulation:
         self._script(text, "<command>", os.getcwd())
         return self
 
-    def _script(self, text, source, directory):
+    def _script(self, text, source, directory, path=None):
         outer = self.source, self.line, getattr(self, "directory", None), getattr(self, "_flow", None)
         self.source, self.directory = source, directory
-        self._flow = flow = ScriptFlow(source, list(logical_lines(text)))
+        self._flow = flow = ScriptFlow(source, list(logical_lines(text)), path)
         try:
             while flow.at < len(flow.lines):
                 number, raw = flow.lines[flow.at]
@@ -239,15 +241,18 @@ class Simulation:
 
     def _jump_to(self, flow, source, directory):
         """Carry out ``jump FILE [LABEL]``: this script from its label, or another file in its place
-        (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop."""
+        (LAMMPS's jump); a backward jump with nothing changed since the last one is an endless loop.
+        Jumping to the script's own file by name is jumping to SELF: the same loop, the same check."""
         target, label = flow.jump
         flow.jump = None
-        if target != "SELF":
-            path = self.resolve(target)
+        path = None if target == "SELF" else self.resolve(target)
+        same_file = target == "SELF" or (flow.path is not None and _same_file(path, flow.path))
+        if not same_file:
             text = read_text(path, "input script", path)
             source, directory = path, os.path.dirname(os.path.abspath(path))
             self.source, self.directory = source, directory
-            flow.source, flow.lines, flow.at = source, list(logical_lines(text)), 0
+            flow.source, flow.lines, flow.at, flow.path = source, list(logical_lines(text)), 0, path
+            flow.seen = {}
         if label is None:
             start = 0
         else:
@@ -256,11 +261,11 @@ class Simulation:
             if start is None:
                 raise ScriptError(f"label {label} is not in {source}", source=source, line=self.line,
                                   command="jump")
-        backward = target == "SELF" and start <= flow.at
+        backward = same_file and start <= flow.at
         if backward:
             state = (self.variables.signature(), self.step, self.particles.nlocal)
             if flow.seen.get(start) == state:
-                raise ScriptError(f"jump SELF {label or ''}: an endless loop (variables, step and particles "
+                raise ScriptError(f"jump {target} {label or ''}: an endless loop (variables, step and particles "
                                   "are as they were at the last jump back)".replace("  ", " "),
                                   source=source, line=self.line, command="jump")
             flow.seen[start] = state
@@ -508,9 +513,15 @@ class Simulation:
         self.groups.bit(name)
         return name
 
+    def find_compute(self, ident):
+        """The compute of that ID: the script's, else one of thermo's own that every LAMMPS run
+        defines (thermo_temp, thermo_press, thermo_pe), else None."""
+        from .output.thermo import THERMO_COMPUTES
+        return self.computes.get(ident) or THERMO_COMPUTES.get(ident)
+
     def compute_value(self, ident, indices=()):
         """``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``: a compute's scalar, vector element or array element."""
-        compute = self.computes.get(ident)
+        compute = self.find_compute(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined")
         return self._style_value("c", compute, ident, indices)
@@ -540,7 +551,7 @@ class Simulation:
                               f"indices count from {self.dialect.index_base})") from None
 
     def compute_needs(self, ident):
-        compute = self.computes.get(ident)
+        compute = self.find_compute(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined")
         return ({"energy"} if compute.needs_energy else set()) | ({"virial"} if compute.needs_virial else set())
@@ -630,6 +641,13 @@ class Simulation:
 
     def close(self):
         self.output.close()
+
+
+def _same_file(a, b):
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
 
 
 def _word(value):

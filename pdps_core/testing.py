@@ -30,6 +30,9 @@ What is here:
 - ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
   number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text,
   ``thermo_csv`` the full-precision CSV a run writes next to its log.
+- ``lammps_thermo``, ``assert_thermo_as_lammps``: a LAMMPS-dialect script run in a folder with the
+  files it reads, its thermo rows at full precision; those rows against LAMMPS's, recorded as
+  tab-separated ``case step value...`` lines (every plugin's "thermo as LAMMPS prints it" test).
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
@@ -308,6 +311,35 @@ def thermo_rows(text):
             if not words:
                 inside = False
     return rows
+
+
+def lammps_thermo(folder, monkeypatch, script, files=(), source=None, screen=False):
+    """Run the LAMMPS-dialect ``script`` in ``folder`` (the ``files`` copied there from the folder
+    ``source``) with its log at log.case; returns (the Simulation, its thermo rows as strings from
+    the CSV beside the log: full precision, header dropped)."""
+    for name in files:
+        shutil.copy(Path(source) / name, Path(folder) / name)
+    monkeypatch.chdir(folder)
+    sim = Simulation(screen=screen, log="log.case", dialect="lammps")
+    sim.command(script)
+    sim.close()
+    rows = [line.split(",") for line in (Path(folder) / "log.case.csv").read_text().splitlines()[1:]]
+    return sim, rows
+
+
+def lammps_rows(path, case=None):
+    """LAMMPS's thermo rows recorded in ``path`` (tab-separated; with ``case``: the lines that
+    begin with it, that word dropped)."""
+    rows = [line.split("\t") for line in Path(path).read_text().splitlines()]
+    return rows if case is None else [row[1:] for row in rows if row[0] == case]
+
+
+def assert_thermo_as_lammps(mine, reference, what="", steps=(0, 25, 50, 75, 100), rtol=1e-9, atol=1e-12):
+    """pdps's thermo rows (step first) against LAMMPS's, step for step, to ``rtol``/``atol``."""
+    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == list(steps)
+    for got, want in zip(mine, reference):
+        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=rtol,
+                                   atol=atol, err_msg=f"{what} step {got[0]}")
 
 
 def restart_round_trip(tmp_path, setup, first, second):

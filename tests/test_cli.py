@@ -259,7 +259,17 @@ def test_missing_script_file(tmp_path):
     result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "nowhere.in", "-log", "none"],
                             cwd=tmp_path, capture_output=True, text=True)
     assert result.returncode == 1
-    assert result.stderr == "ERROR: cannot read input script nowhere.in: No such file or directory\n"
+    assert result.stderr == "ERROR: nowhere.in: cannot read this input script: No such file or directory\n"
+
+
+def test_a_script_that_is_a_folder(tmp_path):
+    # issue 30: the error named neither file nor line; LAMMPS 22 Jul 2025 reads a folder as an empty
+    # script and runs nothing without a word
+    (tmp_path / "in.folder").mkdir()
+    result = subprocess.run([sys.executable, "-m", "pdps_core.cli", "run", "in.folder", "-log", "none"],
+                            cwd=tmp_path, capture_output=True, text=True)
+    assert result.returncode == 1
+    assert result.stderr == "ERROR: in.folder: cannot read this input script: Is a directory\n"
 
 
 # ---- a particle leaving through an f boundary, and what is kept ----------------------------------

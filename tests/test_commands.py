@@ -802,8 +802,50 @@ class TestProcessors:
 
 class TestIntegrate:
     @pytest.mark.parametrize("line", ["integrate v_verlet", "integrate verlet", "run_style verlet"])
-    def test_velocity_verlet(self, sim, line):
-        run(sim, line)
+    def test_velocity_verlet(self, make_sim, line):
+        """A Lennard-Jones dimer from rest at r0 = 1.5 (masses 2): the first step is velocity Verlet's
+        by hand from the analytic force, and over two vibrations the energy stays within a bound that
+        falls as dt^2 (second order)."""
+        r0, dt, m = 1.5, 0.002, 2.0
+
+        def force(r):                 # -dU/dr of U = 4 (r^-12 - r^-6), along the bond
+            return 24.0 * (2.0 * r ** -13 - r ** -7)
+
+        def dimer(step):
+            sim = make_sim()
+            run(sim, f"""{line}
+                {box(bounds="0 10 0 10 0 10")}mass 1 {m}
+                create_particle 1 single 4 5 5
+                create_particle 1 single {4 + r0} 5 5
+                pair_style lj/cut 3.0
+                pair_coeff * * 1.0 1.0
+                fix 1 all nve
+                timestep {step}
+                run 0""")
+            return sim
+
+        def drift(sim, step):
+            energy0 = obs.potential_energy(sim)
+            worst = 0.0
+            for _ in range(round(4.0 / step) // 40):         # 4 time units: two vibrations
+                run(sim, "run 40")
+                worst = max(worst, abs(obs.potential_energy(sim) + obs.kinetic_energy(sim) - energy0))
+            return worst / abs(energy0)
+
+        sim = dimer(dt)
+        assert obs.potential_energy(sim) == pytest.approx(4.0 * (r0 ** -12 - r0 ** -6), rel=1e-14)
+        run(sim, "run 1")
+        # x1 = x0 + dt^2 F(x0) / 2m on each particle; v1 = dt (F(x0) + F(x1)) / 2m
+        dx = 0.5 * dt * dt * force(r0) / m
+        r1 = r0 + 2.0 * dx
+        order = np.argsort(sim.tag)
+        assert sim.x[order, 0] == pytest.approx([4.0 - dx, 4.0 + r0 + dx], rel=1e-14)
+        v1 = 0.5 * dt * (force(r0) + force(r1)) / m
+        assert sim.v[order, 0] == pytest.approx([-v1, v1], rel=1e-12)
+        fine, coarse = drift(dimer(dt), dt), drift(dimer(2 * dt), 2 * dt)
+        assert 0.0 < fine < 3e-4                           # measured 1.5e-4
+        assert 3.0 < coarse / fine < 5.0                    # twice the step, four times the error
+        assert np.abs(sim.v.sum(axis=0)).max() < 1e-13     # momentum stays zero
 
     def test_errors(self, sim):
         fails(sim, "integrate respa", "integrate", "integrate style must be one of v_verlet (got respa)")

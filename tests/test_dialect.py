@@ -34,6 +34,21 @@ def test_the_first_line_names_the_dialect_and_why(pdps_cli, script, line):
     assert first == line
 
 
+@pytest.mark.parametrize("settings, line", [
+    ("units lj\natom_style atomic\n", "read as LAMMPS: atom_style on line 2 of in.settings (included on line 2)"),
+    ("atom_style sphere\npair_style gran model hertz tangential history\n",
+     "read as LIGGGHTS: pair_style gran on line 2 of in.settings (included on line 2)"),
+    ("include in.inner\n", "read as LAMMPS: create_atoms on line 1 of in.inner (included on line 1 of "
+                           "in.settings (included on line 2))"),
+])
+def test_the_files_a_script_includes_name_its_dialect(pdps_cli, tmp_path, settings, line):
+    # issue 30: a script whose LAMMPS-only commands all sat in an included file was read as PDPS
+    (tmp_path / "in.settings").write_text(settings)
+    (tmp_path / "in.inner").write_text("create_atoms 1 single 0 0 0\n")
+    done = pdps_cli("# the settings come from a file\ninclude in.settings\n", "-log", "none")
+    assert done.stdout.splitlines()[0] == line
+
+
 def test_the_command_line_decides_over_the_lines(pdps_cli):
     done, first = first_line(pdps_cli, "units lj\nparticle_style atomic\n", "--dialect", "lammps")
     assert (done.returncode, first) == (0, "read as LAMMPS: as asked")

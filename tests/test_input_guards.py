@@ -256,6 +256,18 @@ def data_text(atoms, header="2 atoms\n1 atom types\n", masses="1 1.0\n", extra="
      "Velocities: atom 1 appears twice (first on line 21)"),
     ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 nan 0 0\n2 0 0 0\n", 21,
      "non-finite velocity: 1 nan 0 0"),
+    # issue 30: Python's float() reads full-width digits and 1_0; LAMMPS 22 Jul 2025 refuses the first
+    # ("Expected floating point parameter instead of ...")
+    ("1 1 \uff11 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16,
+     "\uff11 is not a number written in ASCII digits: 1 1 \uff11 1 1"),
+    ("1 1 1_0 1 1\n2 1 2 2 2\n", "1 1.0\n", "", 16, "1_0 is not a number written in ASCII digits: 1 1 1_0 1 1"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "\uff11 1.0\n", "", 12, "\uff11 is not a number written in ASCII digits: \uff11 1.0"),
+    # issue 30: a Velocities header with no rows, or too few; LAMMPS 22 Jul 2025 reads one row per
+    # atom ("Unexpected end of data file", "Incorrect format in Velocities section")
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n", 19,
+     "header says 2 atoms but the Velocities section has 0"),
+    ("1 1 1 1 1\n2 1 2 2 2\n", "1 1.0\n", "\nVelocities\n\n1 0 0 0\n", 19,
+     "header says 2 atoms but the Velocities section has 1"),
 ])
 def test_bad_values_in_data_files(tmp_path, pdps_cli, atoms, masses, extra, line, message):
     (tmp_path / "bad.data").write_text(data_text(atoms, masses=masses, extra=extra))
@@ -263,10 +275,15 @@ def test_bad_values_in_data_files(tmp_path, pdps_cli, atoms, masses, extra, line
              f"ERROR: in.test:1: read_data: {tmp_path / 'bad.data'}:{line}: {message}")
 
 
-def test_a_header_with_tabs_is_read(tmp_path, pdps_cli):
-    (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 2\n", header="2\tatoms\n1\tatom\ttypes\n"))
-    done = pdps_cli("read_data tabs.data\nrun 0\n")
-    assert done.returncode == 0, done.stderr
+def test_a_header_with_tabs_is_read(tmp_path, make_sim):
+    (tmp_path / "tabs.data").write_text(data_text("1 1 1 1 1\n2 1 2 2 3\n", header="2\tatoms\n1\tatom\ttypes\n",
+                                                  masses="1\t2.5\n"))
+    sim = make_sim()
+    sim.command("read_data tabs.data\nrun 0")
+    assert sim.ntypes == 1 and sim.mass[1] == 2.5
+    order = np.argsort(sim.tag)
+    assert sim.tag[order].tolist() == [1, 2]
+    assert sim.x[order].tolist() == [[1.0, 1.0, 1.0], [2.0, 2.0, 3.0]]
 
 
 # ---- restart files: intact, but holding bad values -------------------------------------------
@@ -317,7 +334,7 @@ def set_field(path, value):
 @pytest.mark.parametrize("edit, message", [
     (set_field(["dimension"], 0), "field dimension must be 2 or 3 (got 0)"),
     (set_field(["dimension"], 5), "field dimension must be 2 or 3 (got 5)"),
-    (set_field(["neighbor", "every"], 0), "field every must be an integer >= 1 (got 0)"),
+    (set_field(["neighbor", "every"], 0), "field every must be from 1 to 9223372036854775807 (got 0)"),
     (set_field(["neighbor", "skin"], float("nan")), "field skin must be a number from 0 to 1e+150 (got nan)"),
     (set_field(["dt"], -1.0), "field dt must be from 1e-50 to 1e+50 (got -1.0)"),
     (set_field(["neighbor", "last_sort"], [[1]]), "field last_sort must be a step or null (got [[1]])"),
@@ -331,6 +348,19 @@ def set_field(path, value):
     # fuzz, issue 12: the image flags' default beyond int32 (particle arrays grown in place)
     (set_field(["particles", "properties", 6, "default"], 2147483648),
      "per-atom array image has a default 2147483648 that is not an int32"),
+    # issue 30: a skin of 1e10 was read, and the run crashed at its first rebuild
+    (set_field(["neighbor", "skin"], 1e10),
+     "field skin 1e+10 spans 1e+10 periodic images of the box (length 1 along x; at most 64)"),
+    (set_field(["neighbor", "built_with", "skin"], 1e10),
+     "field skin 1e+10 spans 1e+10 periodic images of the box (length 1 along x; at most 64)"),
+    (set_field(["neighbor", "ago"], 10 ** 30),
+     "field ago must be from 0 to 9223372036854775807 (got 1000000000000000000000000000000)"),
+    (set_field(["energy_step"], -5), "field energy_step must be a step or null (got -5)"),
+    # issue 30: next_tag at or below an id, and create_atoms made a second particle 1
+    (set_field(["particles", "next_tag"], 1),
+     "field next_tag 1 is not above the largest particle id 2 (new particles would reuse ids)"),
+    (set_field(["particles", "next_tag"], 2),
+     "field next_tag 2 is not above the largest particle id 2 (new particles would reuse ids)"),
 ])
 def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     make_sim().command(RESTART_SCRIPT)
@@ -354,6 +384,8 @@ def test_restart_header_values_are_checked(tmp_path, make_sim, edit, message):
     ({"mass": lambda m: m.astype(np.float32)}, "array mass holds float32 values, not numbers of the saved kind"),
     ({"neighbor/xhold": lambda x: x.astype("U3")}, "array neighbor/xhold holds <U3 values, which pdps does not write"),
     ({"neighbor/xhold": lambda x: np.float64(1.0)}, "array neighbor/xhold has shape (), not (2, 3)"),
+    ({"particles/v": lambda v: np.full_like(v, 1e200)},
+     "array particles/v holds values that are not finite or beyond +-1e+150"),
 ])
 def test_restart_array_values_are_checked(tmp_path, make_sim, arrays, message):
     make_sim().command(RESTART_SCRIPT)
@@ -561,3 +593,52 @@ def test_lammps_dialect_code_found_by_the_fuzz_run(pdps_cli, lines, message):
             "nowhere.in: No such file or directory")
     else:
         one_line(done, message)
+
+
+# ---- issue 30: what the 15,558-case fuzz campaign and real scripts found ----------------------------
+def test_a_100000_character_word_is_quoted_by_its_ends(pdps_cli):
+    word = "a" * 50_000 + "b" * 50_000
+    one_line(pdps_cli(f"units {word}\n"),
+             f"ERROR: in.test:1: units: units style must be one of lj, real, metal, si, cgs, micro, nano "
+             f"(got {'a' * 60}...{'b' * 19})")     # the run clipped ends at its ')'
+
+
+@pytest.mark.parametrize("formula, value", [
+    ("(" * 100 + "1+1" + ")" * 100, "2"),                  # LAMMPS takes 100 levels
+    ("sqrt(" * 64 + "(" * 64 + "4" + ")" * 128, "1"),      # 128 levels of calls and parentheses
+    ("-" * 2000 + "3", "3"),
+    ("-" * 2001 + "3", "-3"),
+    ("!" * 3 + "-" + "0", "1"),
+    ("+".join(["1"] * 100_000), "100000"),                 # folded left to right, no recursion
+])
+def test_deep_and_long_formulas_evaluate(pdps_cli, formula, value):
+    done = pdps_cli(f"variable a equal {formula}\nprint ${{a}}\n", "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == value
+
+
+def test_formulas_nested_beyond_the_limit_are_one_line(pdps_cli):
+    formula = "(" * 129 + "1" + ")" * 129
+    one_line(pdps_cli(f"variable a equal {formula}\n"),
+             "ERROR: in.test:1: variable: variable a: parentheses and function calls nested more than 128 "
+             f"deep in formula '{'(' * 60}...{')' * 20}'")
+
+
+def test_a_long_quoted_formula_is_shown_by_its_ends(pdps_cli):
+    formula = " + ".join(["1"] * 50_000) + ")"
+    one_line(pdps_cli(f"variable a equal {formula}\n"),
+             f"ERROR: in.test:1: variable: variable a: unexpected ')' in formula '{formula[:60]}...{formula[-20:]}'")
+
+
+@pytest.mark.parametrize("append, kept", [
+    ("", ["print three", "three"]),         # LAMMPS: the log begins again, its old lines gone
+    (" append", ["print one", "one", "print two", "two", "log first.log append", "print three", "three"]),
+])
+def test_a_log_command_naming_the_current_log(pdps_cli, tmp_path, append, kept):
+    # issue 30: the new log was opened before the old one was flushed, whose stale lines then
+    # ended up after the new ones
+    done = pdps_cli(f"print one\nprint two\nlog first.log{append}\nprint three\n", "-log", "first.log")
+    assert done.returncode == 0, done.stderr
+    lines = (tmp_path / "first.log").read_text().splitlines()
+    assert lines[-len(kept):] == kept
+    assert len(lines) == len(kept) + (1 if append else 0)     # + the first line, naming the dialect

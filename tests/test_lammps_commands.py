@@ -194,6 +194,24 @@ def test_an_endless_loop_is_an_error(pdps_cli, script, line):
         "they were at the last jump back)"]
 
 
+@pytest.mark.parametrize("target", ["in.test", "./in.test"])
+def test_a_jump_to_the_scripts_own_file_is_checked_as_jump_self(pdps_cli, target):
+    # issue 30: the loop check knew only SELF, and this ran forever
+    done = pdps_cli(f"label a\nprint x\njump {target} a\n", "-log", "none")
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        f"ERROR: in.test:3: jump: jump {target} a: an endless loop (variables, step and particles are as "
+        "they were at the last jump back)"]
+
+
+def test_a_loop_through_the_scripts_own_file_ends_with_its_variable(pdps_cli):
+    # LAMMPS's idiom: next exhausts the loop variable, and the jump after it is skipped
+    done = pdps_cli("variable i loop 3\nlabel top\nprint i=${i}\nnext i\njump in.test top\nprint done\n",
+                    "-log", "none")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[1:] == ["i=1", "i=2", "i=3", "done"]
+
+
 def test_a_loop_whose_variable_changes_runs_to_its_end(pdps_cli):
     done = pdps_cli('variable n equal 0\nlabel top\nvariable n equal ${n}+1\n'
                     'if "${n} < 5" then "jump SELF top"\nprint "n=${n}"\n', "-log", "none")
@@ -358,3 +376,147 @@ def test_create_atoms_makes_the_sites_on_shrink_wrapped_faces_as_lammps(boundary
     sim.command(f"units lj\nboundary {boundary}\nlattice fcc 0.8442\nregion box block 0 3 0 3 0 3\n"
                 "create_box 1 box\ncreate_atoms 1 box")
     assert sim.particles.nlocal == count
+
+
+# ---- issue 30: valid LAMMPS that pdps refused ------------------------------------------------------
+# Numbers recorded with LAMMPS 22 Jul 2025 (/work/shared/bench/lmp) on this machine, running each
+# script below as it stands; pdps runs the same text.
+from pdps_core.testing import thermo_rows  # noqa: E402
+
+GROUP_FUNCTIONS = """units lj
+atom_style atomic
+boundary p p p
+region box block 0 5 0 5 0 5
+create_box 2 box
+create_atoms 1 single 0.5 0.5 0.5
+create_atoms 2 single 4.6 1.0 2.0
+create_atoms 1 single 2.0 4.8 3.0
+create_atoms 2 single 3.0 3.0 0.3
+mass 1 1.0
+mass 2 3.0
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+group heavy type 2
+velocity all set 0.3 -0.2 0.1
+velocity heavy set 2.0 -1.0 0.5
+fix 1 all nve
+timestep 0.005
+thermo 50
+variable xa equal xcm(all,x)
+variable vz equal vcm(heavy,z)
+variable fy equal fcm(heavy,y)
+run 100
+print "XCM $(v_xa:%.12g) $(xcm(all,y):%.12g) $(xcm(heavy,x):%.12g) $(xcm(heavy,z):%.12g)"
+print "VCM $(vcm(all,x):%.12g) $(vcm(all,y):%.12g) $(vcm(heavy,x):%.12g) $(v_vz:%.12g)"
+print "FCM $(fcm(all,x):%.12g) $(fcm(heavy,x):%.12g) $(v_fy:%.12g) $(fcm(heavy,z):%.12g)"
+"""
+# LAMMPS's lines: mass-weighted centres of unwrapped positions (particle 2 of mass 3 crosses x = 5)
+# and velocities; fcm the plain sum of forces
+GROUP_FUNCTIONS_LAMMPS = {
+    "XCM": [3.95, 1.7625, 4.80390515852, 1.39075417795],
+    "VCM": [1.575, -0.8, 2.01589355562, 0.457903425671],
+    "FCM": [0.0, 0.205486464569, -0.137296989667, -0.604794879709],
+}
+
+
+def printed_numbers(stdout, label):
+    [line] = [line for line in stdout.splitlines() if line.startswith(label + " ")]
+    return [float(w) for w in line.split()[1:]]
+
+
+def test_xcm_vcm_fcm_group_functions_as_lammps(pdps_cli):
+    done = pdps_cli(GROUP_FUNCTIONS, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    for label, expected in GROUP_FUNCTIONS_LAMMPS.items():
+        assert printed_numbers(done.stdout, label) == pytest.approx(expected, rel=1e-11, abs=1e-12), label
+
+
+THERMO_COMPUTES = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+fix 1 all nve
+variable t equal c_thermo_temp
+variable p equal c_thermo_press
+variable p1 equal c_thermo_press[1]
+variable p4 equal c_thermo_press[4]
+variable e equal c_thermo_pe
+variable k1 equal c_thermo_temp[1]
+variable k6 equal c_thermo_temp[6]
+thermo_style custom step temp press pe c_thermo_temp c_thermo_pe c_thermo_press[2] v_t v_p v_p1 v_p4 v_e v_k1 v_k6
+thermo_modify format float %.12g
+run 50
+"""
+# step temp press pe c_thermo_temp c_thermo_pe (per atom: thermo normalises it in lj units)
+# c_thermo_press[2] v_t v_p v_p1 v_p4 v_e (the total: a variable does not) v_k1 v_k6 (m v v tensor)
+THERMO_COMPUTES_LAMMPS = [
+    [0, 1.5, -4.98074227009, -6.77336805325, 1.5, -6.77336805325, -4.99703511733, 1.5, -4.98074227009,
+     -4.9664363308, -0.0815713391333, -731.523749751, 162.330184131, -6.39418458994],
+    [50, 0.738589600044, 0.746711945145, -5.65095491888, 0.738589600044, -5.65095491888, 1.51350975372,
+     0.738589600044, 0.746711945145, 0.412241452706, 0.41071212449, -610.303131239, 76.5742981379,
+     -10.688287192],
+]
+
+
+def test_thermo_computes_every_lammps_run_defines(pdps_cli):
+    done = pdps_cli(THERMO_COMPUTES, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    rows = thermo_rows(done.stdout)
+    assert len(rows) == 2
+    for row, expected in zip(rows, THERMO_COMPUTES_LAMMPS):
+        assert row == pytest.approx(expected, rel=1e-11)
+
+
+REDUCE_ATOM_VARIABLES = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 3 0 3 0 3
+create_box 2 box
+create_atoms 1 box
+mass 1 1.0
+mass 2 2.0
+set group all type/fraction 2 0.5 12345
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+fix 1 all nve
+variable ke2 atom mass*(vx*vx+vy*vy+vz*vz)
+variable xx atom x+2*y
+group heavy type 2
+compute s all reduce sum v_ke2
+compute m heavy reduce max v_xx
+compute a all reduce ave v_ke2 v_xx
+thermo_style custom step c_s c_m c_a[1] c_a[2]
+thermo_modify format float %.12g norm no
+run 20
+"""
+REDUCE_ATOM_VARIABLES_LAMMPS = [[0, 481.5, 12.5969714354, 4.45833333333, 6.29848571768],
+                                [20, 228.554214322, 13.3712237108, 2.1162427252, 7.75375080394]]
+
+
+def test_compute_reduce_of_atom_style_variables(pdps_cli):
+    done = pdps_cli(REDUCE_ATOM_VARIABLES, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    rows = thermo_rows(done.stdout)
+    assert len(rows) == 2
+    for row, expected in zip(rows, REDUCE_ATOM_VARIABLES_LAMMPS):
+        assert row == pytest.approx(expected, rel=1e-11)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("compute r all reduce sum v_nothing", "compute r reduce: variable nothing is not defined (v_nothing)"),
+    ("variable q equal 2\ncompute r all reduce sum v_q", "compute r reduce: variable q is equal-style, not "
+                                                         "atom-style (v_q)"),
+])
+def test_compute_reduce_of_a_variable_that_is_not_atom_style(pdps_cli, line, message):
+    done = pdps_cli(REDUCE_ATOM_VARIABLES.split("variable ke2")[0] + line + "\nthermo_style custom step c_r\nrun 0\n",
+                    "-log", "none")
+    assert done.returncode == 1
+    [error] = done.stderr.strip().splitlines()
+    assert error.endswith(f"run: {message}"), error

@@ -38,6 +38,10 @@ class Output:
         """Switch the log to ``path`` (appended to with ``append``); one that cannot be opened is a
         one-line error and the log written so far stays as it is."""
         handle = None
+        if self.log is not None:
+            # what the current log still buffers goes out first: a log naming the same file would
+            # otherwise write it over the new one's start when it closes (issue 30)
+            self.log.flush()
         if self.root:
             try:
                 handle = open(path, "a" if append else "w")

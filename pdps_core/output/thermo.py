@@ -136,6 +136,59 @@ def _normalise(sim):
     return max(obs.count(sim), 1) if norm else 1
 
 
+class _ThermoCompute:
+    """One of the computes LAMMPS defines in every run for its thermo output, read as ``c_ID``
+    wherever the script defines no compute of that ID (``variable t equal c_thermo_temp``)."""
+    kind = "compute"
+    group = "all"
+    peratom = None
+    needs_energy = needs_virial = extensive = False
+
+    def __init__(self, ident):
+        self.id = ident
+
+
+class _ThermoTemp(_ThermoCompute):
+    """thermo_temp: compute temp of group all (thermo_modify temp leaves it as it is, as LAMMPS)."""
+    name = "temp"
+
+    def scalar(self, sim):
+        return obs.temperature(sim)
+
+    def vector(self, sim):
+        return obs.kinetic_tensor(sim)
+
+
+class _ThermoPress(_ThermoCompute):
+    """thermo_press: compute pressure with thermo's temperature (thermo_modify temp's, as LAMMPS's
+    thermo_press follows it)."""
+    name = "pressure"
+    needs_virial = True
+
+    def scalar(self, sim):
+        thermo = sim.output.thermo
+        if thermo.temp_id is None:
+            return obs.pressure(sim)
+        return obs.pressure(sim, temp=thermo.temperature(), temp_group=thermo.temp_group())
+
+    def vector(self, sim):
+        return obs.pressure_tensor(sim, sim.output.thermo.temp_group())
+
+
+class _ThermoPe(_ThermoCompute):
+    """thermo_pe: compute pe, the total potential energy (extensive: thermo normalises it)."""
+    name = "pe"
+    needs_energy = extensive = True
+
+    def scalar(self, sim):
+        return obs.potential_energy(sim)
+
+
+THERMO_COMPUTES = {ident: cls(ident) for ident, cls in (("thermo_temp", _ThermoTemp),
+                                                        ("thermo_press", _ThermoPress),
+                                                        ("thermo_pe", _ThermoPe))}
+
+
 class Thermo:
     def __init__(self, sim):
         self.sim = sim
@@ -300,7 +353,7 @@ class Thermo:
         for word in self.columns:
             if word.startswith("c_"):
                 ident, _ = self._reference(word)
-                if ident not in self.sim.computes:
+                if self.sim.find_compute(ident) is None:
                     raise ScriptError(f"thermo_style: compute {ident} is not defined (thermo keyword {word})")
             elif word.startswith("f_"):
                 ident, _ = self._reference(word)
@@ -350,7 +403,7 @@ class Thermo:
                 ident, indices = self._reference(word)
                 read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
                 value = read(ident, indices)
-                style = (self.sim.computes if word[0] == "c" else self.sim.fixes).get(ident)
+                style = self.sim.find_compute(ident) if word[0] == "c" else self.sim.fixes.get(ident)
                 extensive = getattr(style, "extensive", False)
                 if len(indices) == 2:
                     extensive = getattr(style, "extensive_array", extensive)

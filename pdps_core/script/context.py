@@ -54,7 +54,7 @@ class FormulaContext:
 
     def _style(self, prefix, ident):
         sim = self.sim
-        style = sim.computes.get(ident) if prefix == "c" else (sim.fixes.get(ident) or sim.analyzes.get(ident))
+        style = sim.find_compute(ident) if prefix == "c" else (sim.fixes.get(ident) or sim.analyzes.get(ident))
         if style is None:
             raise ScriptError(f"{'compute' if prefix == 'c' else 'fix'} {ident} is not defined")
         return style

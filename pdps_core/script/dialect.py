@@ -11,7 +11,8 @@ Which dialect a script is read in, in order:
 3. the first command only one of the two languages has (``atom_style``, ``create_atoms``,
    ``comm_modify``... read as LAMMPS; ``particle_style``, ``create_particle``, ``integrate``,
    ``analyze``... as PDPS), or a lattice by its spelling (``lattice spacing ...`` PDPS,
-   ``lattice fcc 0.8442`` LAMMPS);
+   ``lattice fcc 0.8442`` LAMMPS), the lines of a file the script includes counted where the
+   ``include`` stands (a name with a ``$`` in it cannot be followed before the run);
 4. PDPS, the project's own language, when nothing says otherwise.
 
 A script read as LAMMPS by 3 or 4 is read as LIGGGHTS (a LAMMPS fork: the same meaning wherever
@@ -22,10 +23,12 @@ model``...), the first such line being the reason.
 The run's first line names the dialect and why: ``read as LAMMPS: atom_style on line 4``.
 """
 
+import os
 from dataclasses import dataclass
 
 from ..errors import ScriptError
-from .lexer import logical_lines, strip_comment
+from ..state import limits
+from .lexer import logical_lines, read_text, strip_comment
 
 
 @dataclass(frozen=True)
@@ -100,28 +103,11 @@ def _liggghts_marker(words):
     return f"{name} {style}" if (name, style) in LIGGGHTS_ONLY else None
 
 
-def detect(text, source):
-    """(Dialect, reason) for a script that was not told its dialect. A LAMMPS-family script (one a
-    LAMMPS-only command, or no command, names) is LIGGGHTS's when any line has a LIGGGHTS-only
-    spelling: the first one is the reason."""
-    found = _detect_family(text, source)
-    if found[0].name == "pdps" and not found[1].startswith("no command"):
-        return found
-    for number, raw in logical_lines(text):
-        try:
-            words = strip_comment(raw).split()
-        except ScriptError:
-            words = raw.split()
-        if words and words[0] == "dialect":
-            return found
-        marker = _liggghts_marker(words) if words else None
-        if marker:
-            return DIALECTS["liggghts"], f"{marker} on line {number}"
-    return found
-
-
-def _detect_family(text, source):
-    first_command = None
+def _commands(text, source, directory=None, included_at=None, depth=0):
+    """(words, line number, where) of each command of a script in reading order, the lines of a file
+    it includes in place of the include (``where``: ``line 4``, or ``line 2 of in.settings (included
+    on line 5)``). An include the reader cannot follow here (a $ in its name, a file that cannot be
+    read) is passed over: the run reports it, located, when it gets there."""
     for number, raw in logical_lines(text):
         try:
             words = strip_comment(raw).split()
@@ -129,8 +115,49 @@ def _detect_family(text, source):
             words = raw.split()     # a broken line: the run reports it, located, when it gets there
         if not words:
             continue
+        where = f"line {number}" if included_at is None else f"line {number} of {source} ({included_at})"
+        yield words, number, where
+        if (words[0] == "include" and len(words) == 2 and "$" not in words[1] and directory is not None
+                and depth < limits.MAX_INCLUDE_DEPTH):
+            path = _included(words[1], directory)
+            try:
+                inner = read_text(path, "input script", path)
+            except ScriptError:
+                continue
+            yield from _commands(inner, words[1], os.path.dirname(os.path.abspath(path)), f"included on {where}",
+                                 depth + 1)
+
+
+def _included(path, directory):
+    # as Simulation.resolve: relative to the including script's folder, else to the working folder
+    if os.path.isabs(path):
+        return path
+    candidate = os.path.join(directory, path)
+    return candidate if os.path.exists(candidate) or not os.path.exists(path) else path
+
+
+def detect(text, source, directory=None):
+    """(Dialect, reason) for a script that was not told its dialect, read with the files it
+    includes (``directory``: the script's folder, where they are looked for). A LAMMPS-family
+    script (one a LAMMPS-only command, or no command, names) is LIGGGHTS's when any line has a
+    LIGGGHTS-only spelling: the first one is the reason."""
+    found = _detect_family(text, source, directory)
+    if found[0].name == "pdps" and not found[1].startswith("no command"):
+        return found
+    for words, number, where in _commands(text, source, directory):
+        if words[0] == "dialect" and where == f"line {number}":
+            return found
+        marker = _liggghts_marker(words)
+        if marker:
+            return DIALECTS["liggghts"], f"{marker} on {where}"
+    return found
+
+
+def _detect_family(text, source, directory=None):
+    first_command = None
+    for words, number, where in _commands(text, source, directory):
         name = words[0]
-        if name == "dialect":
+        if name == "dialect" and where == f"line {number}":
             try:
                 if first_command is not None:
                     raise ScriptError(f"dialect must come before any other command (line "
@@ -143,9 +170,9 @@ def _detect_family(text, source):
         if first_command is None:
             first_command = (name, number)
         if name in LAMMPS_ONLY:
-            return DIALECTS["lammps"], f"{name} on line {number}"
+            return DIALECTS["lammps"], f"{name} on {where}"
         if name in PDPS_ONLY:
-            return DIALECTS["pdps"], f"{name} on line {number}"
+            return DIALECTS["pdps"], f"{name} on {where}"
         if name == "lattice" and _lattice_dialect(words):
-            return DIALECTS[_lattice_dialect(words)], f"lattice {words[1]} on line {number}"
+            return DIALECTS[_lattice_dialect(words)], f"lattice {words[1]} on {where}"
     return DIALECTS["pdps"], "no command names a dialect (PDPS is the default)"

@@ -28,6 +28,7 @@ numpy arrays.
 """
 
 import math
+import operator
 import re
 
 import numpy as np
@@ -48,6 +49,11 @@ TOKEN = re.compile(r"""
 
 # binary operators by level, loosest first; every level is left-associative
 LEVELS = [("||", "|^"), ("&&",), ("==", "!="), ("<", "<=", ">", ">="), ("+", "-"), ("*", "/", "%"), ("^",)]
+PRECEDENCE = {op: level for level, ops in enumerate(LEVELS) for op in ops}
+# Parentheses and function calls nested deeper than this are refused: each level costs the parser a
+# few Python frames, and the limit keeps them well inside Python's recursion limit (LAMMPS took 100
+# and 10,000 levels in a check with LAMMPS 22 Jul 2025; it refuses --3, which reads here as 3).
+MAX_NESTING = 128
 
 
 class FormulaError(ScriptError):
@@ -77,8 +83,9 @@ class Expression:
             raise FormulaError("empty formula")
         self._tokens = _tokens(self.text)
         self._at = 0
+        self._depth = 0                 # parentheses and function calls open around the parser
         self.atom_vectors = False       # reads per-atom vectors: only atom-style variables may
-        self.closure = self._level(0)
+        self.closure = self._expression()
         if self._peek()[0] != "end":
             self._fail(f"unexpected {self._peek()[1]!r}")
         del self._tokens
@@ -104,28 +111,51 @@ class Expression:
     def _fail(self, message):
         raise FormulaError(f"{message} in formula {self.text!r}")
 
-    def _level(self, depth):
-        if depth == len(LEVELS):
-            return self._unary()
-        left = self._level(depth + 1)
-        while self._peek()[0] == "op" and self._peek()[1] in LEVELS[depth]:
+    def _expression(self):
+        """Binary operators by precedence climbing over an operand stack: a run of operators of one
+        level (1+2+3+...) becomes one closure that folds left to right, so neither parsing nor
+        evaluating a long formula recurses once per operator."""
+        operands, operators = [self._unary()], []
+        while self._peek()[0] == "op" and self._peek()[1] in PRECEDENCE:
             op = self._take()[1]
-            right = self._level(depth + 1)
-            left = self._binary(op, left, right)
-        return left
+            level = PRECEDENCE[op]
+            while operators and operators[-1][1] >= level:
+                self._reduce(operands, operators)
+            operators.append((op, level))
+            operands.append(self._unary())
+        while operators:
+            self._reduce(operands, operators)
+        return _closure(operands[0])
+
+    def _reduce(self, operands, operators):
+        op, level = operators.pop()
+        right = _closure(operands.pop())
+        left = operands.pop()
+        if not (isinstance(left, _Chain) and left.level == level):
+            left = _Chain(level, _closure(left))
+        left.rest.append((self._operator(op), right))
+        operands.append(left)
 
     def _unary(self):
-        kind, value = self._peek()
-        if kind == "op" and value in ("-", "!"):
-            self._take()
-            operand = self._unary()
-            if value == "-":
-                return lambda env: -operand(env)
-            return lambda env: _truth(_equal(operand(env), 0.0))
-        if kind == "op" and value == "+":
-            self._take()
-            return self._unary()
-        return self._primary()
+        """Prefix - ! + (any number of them, read in a loop) before a primary."""
+        prefix = []
+        while self._peek()[0] == "op" and self._peek()[1] in ("-", "!", "+"):
+            op = self._take()[1]
+            if op != "+":
+                prefix.append(op)
+        operand = self._primary()
+        if not prefix:
+            return operand
+        if prefix == ["-"]:
+            return lambda env: -operand(env)
+        innermost_first = tuple(reversed(prefix))
+
+        def unary(env):
+            value = operand(env)
+            for op in innermost_first:
+                value = -value if op == "-" else _truth(_equal(value, 0.0))
+            return value
+        return unary
 
     def _primary(self):
         kind, value = self._take()
@@ -135,12 +165,19 @@ class Expression:
                 self._fail(f"number {value} out of range")
             return lambda env: number
         if kind == "op" and value == "(":
-            inner = self._level(0)
+            self._nest()
+            inner = self._expression()
             self._expect(")")
+            self._depth -= 1
             return inner
         if kind == "name":
             return self._named(value)
         self._fail(f"unexpected {value or 'end'!r}")
+
+    def _nest(self):
+        self._depth += 1
+        if self._depth > MAX_NESTING:
+            self._fail(f"parentheses and function calls nested more than {MAX_NESTING} deep")
 
     def _indices(self):
         indices = []
@@ -156,21 +193,42 @@ class Expression:
     def _arguments(self):
         """Function arguments as raw closures and as words (group, region, dimension names)."""
         self._expect("(")
+        self._nest()
         args = []
         if self._peek() == ("op", ")"):
             self._take()
+            self._depth -= 1
             return args
         while True:
             start = self._at
             token = self._peek()
-            args.append((self._level(0), token[1] if self._at == start + 1 and token[0] == "name" else None))
+            args.append((self._expression(), token[1] if self._at == start + 1 and token[0] == "name" else None))
             kind, value = self._take()
             if (kind, value) == ("op", ")"):
+                self._depth -= 1
                 return args
             if (kind, value) != ("op", ","):
                 self._fail(f"expected ',' or ')', got {value or 'the end'!r}")
 
+    def _group_arguments(self):
+        """A group function's arguments: words (a group, a dimension, a region), never values, so
+        that ``xcm(all,x)`` reads no atom vector x."""
+        self._expect("(")
+        words = []
+        while True:
+            kind, value = self._take()
+            if kind not in ("name", "number"):
+                self._fail(f"expected a group, dimension or region ID, got {value or 'the end'!r}")
+            words.append(value)
+            kind, value = self._take()
+            if (kind, value) == ("op", ")"):
+                return words
+            if (kind, value) != ("op", ","):
+                self._fail(f"expected ',' or ')', got {value or 'the end'!r}")
+
     def _named(self, name):
+        if self._peek() == ("op", "(") and name in GROUP_FUNCTIONS:
+            return self._group_function(name, self._group_arguments())
         if self._peek() == ("op", "("):
             return self._function(name, self._arguments())
         prefix = name[:2]
@@ -194,31 +252,29 @@ class Expression:
         return lambda env: env.thermo(name)
 
     # ---- operators ------------------------------------------------------------------------------
-    def _binary(self, op, left, right):
+    def _operator(self, op):
+        """The function of two values ``op`` stands for (numbers, or numpy arrays per atom)."""
         text = self.text
         if op == "+":
-            return lambda env: left(env) + right(env)
+            return operator.add
         if op == "-":
-            return lambda env: left(env) - right(env)
+            return operator.sub
         if op == "*":
-            return lambda env: left(env) * right(env)
+            return operator.mul
         if op == "/":
-            def divide(env):
-                a, b = left(env), right(env)
+            def divide(a, b):
                 if np.any(np.asarray(b) == 0.0):
                     raise FormulaError(f"divide by 0 in formula {text!r}")
                 return a / b
             return divide
         if op == "%":
-            def modulo(env):
-                a, b = left(env), right(env)
+            def modulo(a, b):
                 if np.any(np.asarray(b) == 0.0):
                     raise FormulaError(f"modulo 0 in formula {text!r}")
                 return np.fmod(a, b)
             return modulo
         if op == "^":
-            def power(env):
-                a, b = left(env), right(env)
+            def power(a, b):
                 if np.ndim(a) or np.ndim(b):
                     a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
                     if np.any((a == 0.0) & (b < 0.0)):
@@ -238,12 +294,12 @@ class Expression:
                    "==": _equal, "!=": np.not_equal}
         if op in compare:
             function = compare[op]
-            return lambda env: _truth(function(left(env), right(env)))
+            return lambda a, b: _truth(function(a, b))
         if op == "&&":
-            return lambda env: _truth(np.logical_and(_nonzero(left(env)), _nonzero(right(env))))
+            return lambda a, b: _truth(np.logical_and(_nonzero(a), _nonzero(b)))
         if op == "||":
-            return lambda env: _truth(np.logical_or(_nonzero(left(env)), _nonzero(right(env))))
-        return lambda env: _truth(np.logical_xor(_nonzero(left(env)), _nonzero(right(env))))
+            return lambda a, b: _truth(np.logical_or(_nonzero(a), _nonzero(b)))
+        return lambda a, b: _truth(np.logical_xor(_nonzero(a), _nonzero(b)))
 
     # ---- functions --------------------------------------------------------------------------------
     def _function(self, name, args):
@@ -285,13 +341,6 @@ class Expression:
             arity(TIME_FUNCTIONS[name][0])
             function = TIME_FUNCTIONS[name][1]
             return lambda env: function(env, *[c(env) for c in closures])
-        if name in GROUP_FUNCTIONS:
-            low, high = GROUP_FUNCTIONS[name]
-            arity(*range(low, high + 1))
-            if words[0] is None:
-                self._fail(f"{name}() takes a group ID first")
-            rest = words[1:]
-            return lambda env: env.group_function(name, words[0], rest)
         if name in ("min", "max") and not (len(args) == 1 and words[0] and words[0][:2] in ("c_", "f_", "v_")):
             # min(x, y, ...) of numbers (a pdps extension; LAMMPS's min() takes a vector reference)
             if not args:
@@ -317,12 +366,45 @@ class Expression:
             return lambda env: env.mask_function(name, words)
         self._fail(f"unknown function {name}()")
 
+    def _group_function(self, name, words):
+        low, high = GROUP_FUNCTIONS[name]
+        if not low <= len(words) <= high:
+            expected = " or ".join(map(str, range(low, high + 1)))
+            self._fail(f"{name}() takes {expected} argument(s), got {len(words)}")
+        group, rest = words[0], words[1:]
+        return lambda env: env.group_function(name, group, rest)
+
     def _reference_word(self, arg, name):
         # sum(c_ID) and the like take a reference, not a value: re-read it from the source text
         closure, word = arg
         if word is None or word[:2] not in ("c_", "f_", "v_"):
             self._fail(f"{name}() takes a compute, fix or vector-variable reference (c_ID, f_ID, v_NAME)")
         return word[0], word[2:]
+
+
+class _Chain:
+    """Operands of one precedence level joined left to right while parsing: first, then (operator,
+    operand) pairs."""
+
+    def __init__(self, level, first):
+        self.level, self.first, self.rest = level, first, []
+
+
+def _closure(node):
+    """A parsed operand as the closure that evaluates it."""
+    if not isinstance(node, _Chain):
+        return node
+    first, rest = node.first, tuple(node.rest)
+    if len(rest) == 1:
+        (function, second), = rest
+        return lambda env: function(first(env), second(env))
+
+    def chain(env):
+        value = first(env)
+        for function, operand in rest:
+            value = function(value, operand(env))
+        return value
+    return chain
 
 
 def _equal(a, b):

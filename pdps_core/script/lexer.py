@@ -126,14 +126,17 @@ def split_words(text):
     return words
 
 
-def read_text(path, what, shown=None):
+def read_text(path, what, shown=None, top=False):
     """The text of a file a script names (``what``: "input script", "data file"), as UTF-8; a file
     that cannot be read is a one-line error naming it, bad bytes one located as ``FILE:LINE:``
-    (``shown``: the name to give the file, default its path)."""
+    (``shown``: the name to give the file, default its path). ``top``: the script pdps was given,
+    which no line names, so the file itself is the error's location."""
     try:
         with open(path, "rb") as handle:
             raw = handle.read()
     except OSError as exc:
+        if top:
+            raise ScriptError(f"cannot read this {what}: {exc.strerror}", source=shown or path) from None
         raise ScriptError(f"cannot read {what} {path}: {exc.strerror}") from None
     try:
         text = raw.decode("utf-8")

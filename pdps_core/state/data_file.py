@@ -69,6 +69,7 @@ def read_data_file(path, particle_style):
     spheres = "sphere" in substyles(particle_style)
     molecular = "molecule" in columns
     section, i = None, 1          # line 1 is a title
+    velocities_at, velocity_rows = None, 0
     while i < len(lines):
         number = i + 1
         raw = lines[i]
@@ -94,6 +95,8 @@ def read_data_file(path, particle_style):
             if head not in SECTIONS:
                 fail(number, f"unsupported section {text} (sections read: {', '.join(SECTIONS)})")
             section = head
+            if head == "Velocities":
+                velocities_at = number
             hint = re.search(r"#\s*(\w+)", raw)
             if head == "Atoms" and hint and hint.group(1) != particle_style.split()[0]:
                 fail(number, f"Atoms are '{hint.group(1)}' but particle_style is {particle_style}"
@@ -101,6 +104,11 @@ def read_data_file(path, particle_style):
             continue
         if section == "skipped":
             continue
+        # Python's int() and float() take other scripts' digits (U+FF11) and 1_000; a data file's
+        # numbers are ASCII, as LAMMPS reads them ("Expected floating point parameter")
+        odd = next((w for w in words if not w.isascii() or "_" in w), None)
+        if odd is not None:
+            fail(number, f"{odd} is not a number written in ASCII digits: {text}")
         if section is None:
             try:
                 if text.endswith("atoms"):
@@ -151,6 +159,7 @@ def read_data_file(path, particle_style):
                                  f"(got {text})")
                 pair_coeffs.append((number, words[:1] * 2 + words[1:] if width == 1 else words))
             elif section == "Velocities":
+                velocity_rows += 1
                 if len(words) < 4:
                     fail(number, f"expected id vx vy vz (got {len(words)} values)")
                 tag = int(words[0])
@@ -172,6 +181,9 @@ def read_data_file(path, particle_style):
     masses = {t: value for t, (_, value) in masses.items()}
     if len(atoms) != natoms:
         fail(len(lines), f"header says {natoms} atoms but the Atoms section has {len(atoms)}")
+    if velocities_at is not None and velocity_rows != natoms:
+        # LAMMPS reads one Velocities row per atom of the header, and refuses a section with fewer
+        fail(velocities_at, f"header says {natoms} atoms but the Velocities section has {velocity_rows}")
     n = len(atoms)
     tags = np.zeros(n, dtype=np.int64)
     types = np.zeros(n, dtype=np.int32)

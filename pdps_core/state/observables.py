@@ -139,6 +139,15 @@ def pressure_tensor(sim, temp_group="all"):
     return total / sim.box.volume * sim.units.nktv2p
 
 
+def kinetic_tensor(sim, group="all"):
+    """sum m v_a v_b (xx yy zz xy xz yz) of the group, times mvv2e: LAMMPS's compute temp vector."""
+    p = sim.particles
+    tensor = np.zeros(6)
+    _kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_RMASS, p.mask,
+                    sim.groups.bit(group), p.nlocal, tensor)
+    return np.asarray(sim.comm.sum(tensor * sim.units.mvv2e), dtype=np.float64)
+
+
 def potential_energy(sim):
     sim.require_energy()
     return float(sim.comm.sum(sim.pe)) + tail_corrections(sim)[0]

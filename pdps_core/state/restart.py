@@ -433,7 +433,8 @@ def validate(header, arrays):
             _field(header, name, int, lambda k: 0 <= k <= limits.MAX_STEP, "an integer >= 0")
     for name in ("energy_step", "virial_step"):
         value = header.get(name)
-        if value is not None and not (isinstance(value, int) and not isinstance(value, bool)):
+        if value is not None and not (isinstance(value, int) and not isinstance(value, bool)
+                                      and 0 <= value <= limits.MAX_STEP):
             raise ScriptError(f"field {name} must be a step or null (got {value!r:.60})")
     particles = _field(header, "particles", dict)
     n = _field(particles, "nlocal", int, lambda k: 0 <= k <= limits.MAX_TAG, "a particle count")
@@ -442,13 +443,12 @@ def validate(header, arrays):
     neighbor = _field(header, "neighbor", dict)
     _field(neighbor, "skin", number, lambda s: 0 <= s <= limits.MAX_COORDINATE,
            f"a number from 0 to {limits.MAX_COORDINATE:g}")
-    _field(neighbor, "every", int, lambda k: k >= 1, "an integer >= 1")
-    _field(neighbor, "delay", int, lambda k: k >= 0, "an integer >= 0")
+    # counts of steps and builds: JSON integers have no bound, the arrays and kernels they meet do
+    steps = f"from 0 to {limits.MAX_STEP}"
+    _field(neighbor, "every", int, lambda k: 1 <= k <= limits.MAX_STEP, f"from 1 to {limits.MAX_STEP}")
     _field(neighbor, "check", bool)
-    _field(neighbor, "sort_every", int, lambda k: k >= 0, "an integer >= 0")
-    _field(neighbor, "ago", int, lambda k: k >= 0, "an integer >= 0")
-    for name in ("builds", "dangerous"):
-        _field(neighbor, name, int, lambda k: k >= 0, "an integer >= 0")
+    for name in ("delay", "sort_every", "ago", "builds", "dangerous"):
+        _field(neighbor, name, int, lambda k: 0 <= k <= limits.MAX_STEP, steps)
     if "one" in neighbor:
         _field(neighbor, "one", int, lambda k: 1 <= k <= limits.MAX_NEIGHBORS_ONE,
                f"from 1 to {limits.MAX_NEIGHBORS_ONE}")
@@ -460,7 +460,8 @@ def validate(header, arrays):
     built = neighbor.get("built_with")
     if built is not None:
         _field(neighbor, "built_with", dict)
-        _field(built, "skin", number, lambda s: s >= 0, "a finite number >= 0")
+        _field(built, "skin", number, lambda s: 0 <= s <= limits.MAX_COORDINATE,
+               f"a number from 0 to {limits.MAX_COORDINATE:g}")
         kinds = _field(built, "kinds", list, lambda k: all(isinstance(w, str) for w in k), "list names")
         _field(built, "periodic", list, lambda p: len(p) == 3 and all(isinstance(w, bool) for w in p),
                "three booleans")
@@ -472,6 +473,14 @@ def validate(header, arrays):
     lo = _array(arrays, "box/lo", (3,), kinds="f")
     hi = _array(arrays, "box/hi", (3,), kinds="f")
     limits.check_box(lo, hi)
+    # a skin is in effect from the run's first rebuild on (the saved lists' one until then): it must
+    # fit the box as the neighbor command's would at a run's start
+    for skin in (neighbor["skin"], (built or {}).get("skin", 0.0)):
+        for d, axis in enumerate("xyz"[:dimension]):
+            length = float(hi[d] - lo[d])
+            if header["periodic"][d] and skin > limits.MAX_IMAGES * length:
+                raise ScriptError(f"field skin {skin:g} spans {skin / length:.3g} periodic images of the box "
+                                  f"(length {length:g} along {axis}; at most {limits.MAX_IMAGES})")
     if dimension == 2 and header["periodicity"][2] != "p":
         raise ScriptError("a 2-d box needs a periodic z boundary")
     if header["lattice"]:
@@ -490,6 +499,12 @@ def validate(header, arrays):
     for name, shape, kinds in (("tag", (n,), "iu"), ("type", (n,), "iu"), ("x", (n, 3), "f"),
                                ("v", (n, 3), "f"), ("image", (n, 3), "iu")):
         _array(arrays, f"particles/{name}", shape, kinds=kinds)
+    for name, values in arrays.items():
+        # every per-atom number within what squares hold, as the velocity and set commands allow
+        if (name.startswith("particles/") and values.dtype.kind == "f"
+                and not (np.abs(values) <= limits.MAX_COORDINATE).all()):
+            raise ScriptError(f"array {name} holds values that are not finite or beyond "
+                              f"+-{limits.MAX_COORDINATE:g}")
     groups = _field(header, "groups", dict)
     bits = _field(groups, "bits", dict)
     for name, bit in bits.items():
@@ -514,6 +529,10 @@ def validate(header, arrays):
         raise ScriptError(f"particle ids must be from 1 to {limits.MAX_TAG}")
     if len(np.unique(tags)) != n:
         raise ScriptError("particle ids must be unique (an id appears twice)")
+    # the id the next particle made gets: at or below a particle's, create_atoms would reuse an id
+    if n and particles["next_tag"] <= tags.max():
+        raise ScriptError(f"field next_tag {particles['next_tag']} is not above the largest particle id "
+                          f"{tags.max()} (new particles would reuse ids)")
     types = arrays["particles/type"]
     if n and not (types.min() >= 1 and types.max() <= ntypes):
         raise ScriptError(f"particle types must be from 1 to {ntypes} (got {types.min()} to {types.max()})")

@@ -89,8 +89,22 @@ def prepare():
     cli._fail = recording_fail
 
 
+# A case's limit is CPU time of its worker, so that a machine busy with other work slows a case down
+# without making it fail. A case that used less than IDLE of the CPU over the last ``limit`` seconds
+# on the clock is waiting (asleep, blocked), which a sound run never does; a busy machine still gives
+# a running case many times that (two workers and two other CPU-bound processes on two cores: 50 %).
+IDLE = 0.05
+
+
+def idle(samples, now, cpu, span):
+    """Whether (wall, cpu) ``samples`` show less than IDLE of ``span`` seconds used before ``now``."""
+    earlier = [c for t, c in samples if t <= now - span]
+    return bool(earlier) and cpu - earlier[-1] < IDLE * span
+
+
 class Watchdog(threading.Thread):
-    """Interrupts the case at ``limit`` seconds, deciding first whether it is a long run (the step
+    """Interrupts the case once it has used ``limit`` seconds of CPU time, or waited ``limit``
+    seconds on the clock with the CPU idle, deciding first whether it is a long run (the step
     counter still advancing toward a representable end) or a hang. A case stuck in compiled code
     that holds the interpreter lock never lets this thread run: runner.py kills it (a hang)."""
 
@@ -105,16 +119,18 @@ class Watchdog(threading.Thread):
         self.running = True
 
     def run(self):
-        start = time.monotonic()
-        samples = []
+        cpu_start = time.process_time()
+        samples, clock = [], [(time.monotonic(), 0.0)]
         while not self.done.wait(0.2):
-            now = time.monotonic()
+            now, cpu = time.monotonic(), time.process_time() - cpu_start
+            clock.append((now, cpu))
             sim = STATE.sim
-            samples.append((now, getattr(sim, "step", None)))
+            samples.append((cpu, getattr(sim, "step", None)))
             record_particles(sim)
-            if now - start < self.limit:
+            if cpu < self.limit and not idle(clock, now, cpu, self.limit):
                 continue
-            recent = [step for t, step in samples if t >= now - 1.5 and step is not None]
+            # the last 1.5 s of CPU time: on a busy machine as many steps as on an idle one
+            recent = [step for t, step in samples if t >= cpu - 1.5 and step is not None]
             last = getattr(sim, "run_last_step", None)
             # across runs too: a loop of short runs (``variable i loop 100000`` ... ``jump``) advances
             stepping = len(recent) >= 2 and recent[-1] > recent[0]

@@ -1,8 +1,10 @@
 """Runs fuzz cases in parallel worker processes (worker.py), each importing pdps once.
 
-A case runs in-process in a worker (``classify.run_case``), which interrupts it at the time limit.
-A worker that does not answer within the limit plus a grace period is stuck where it cannot be
-interrupted (compiled code holding the interpreter lock): it is asked for its Python stack (SIGUSR1,
+A case runs in-process in a worker (``classify.run_case``), which interrupts it at the time limit, in
+CPU seconds of the worker (classify.Watchdog), so that other work on the machine cannot turn a sound
+case into a hang. A worker that has used the limit plus a grace period of CPU time without answering
+(or idled through that long on the clock, classify.IDLE) is stuck where it cannot be interrupted
+(compiled code holding the interpreter lock): it is asked for its Python stack (SIGUSR1,
 faulthandler), killed, and the case is a ``hang``. A worker that dies by itself (segmentation fault,
 abort, exit) makes its case a ``signal``. Either way a fresh worker takes its place. Workers are also
 replaced every ``recycle`` cases, so one case's leftovers (module state, memory) stay bounded.
@@ -19,7 +21,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .classify import ACCEPTED, BIG, STATUS
+from .classify import ACCEPTED, BIG, STATUS, idle
 
 WORKER = Path(__file__).with_name("worker.py")
 
@@ -58,7 +60,10 @@ class _Worker:
         self.done = 0
         self.case = None
         self.started = None
-        self.deadline = None
+        self.deadline = None        # when the limit plus grace has passed on the clock
+        self.cpu_started = None
+        self.cpu_limit = None
+        self.clock = []             # (wall, CPU seconds) the runner saw, for idleness
         self.ready = False
 
     def send(self, case, folder, limit, grace):
@@ -67,8 +72,33 @@ class _Worker:
         self.case, self.folder = case, folder
         self.started = time.monotonic()
         self.deadline = self.started + limit + grace
+        self.cpu_started, self.cpu_limit = self.cpu_seconds(), limit + grace
+        self.clock = [(self.started, self.cpu_started)]
         self.process.stdin.write((json.dumps(request) + "\n").encode())
         self.process.stdin.flush()
+
+    def cpu_seconds(self):
+        """CPU time the worker process has used (user + system, from /proc), or None where the
+        system does not say."""
+        try:
+            with open(f"/proc/{self.process.pid}/stat") as handle:
+                fields = handle.read().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            return None
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+    def over(self, now):
+        """The limit's reason when the current case has run past it (CPU time, or the limit on the
+        clock with the CPU idle), else None."""
+        cpu = self.cpu_seconds() if self.cpu_started is not None else None
+        if cpu is None:                     # no /proc: the clock alone
+            return f"{self.cpu_limit:g} s" if now > self.deadline else None
+        self.clock.append((now, cpu))
+        if cpu - self.cpu_started > self.cpu_limit:
+            return f"{self.cpu_limit:g} s of CPU time"
+        if now > self.deadline and idle(self.clock, now, cpu, self.cpu_limit):
+            return f"{self.cpu_limit:g} s with the CPU idle"
+        return None
 
     def stack(self):
         """What faulthandler wrote for the current case (the stack at a fatal signal or SIGUSR1)."""
@@ -155,8 +185,8 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                         for name, data in case.files.items():
                             (folder / name).write_bytes(data)
                         worker.send(case, folder, limit, grace)
-            busy = [w.deadline for w in pool if w.case is not None]
-            timeout = max(0.0, min(busy) - time.monotonic()) if busy else 1.0
+            busy = any(w.case is not None for w in pool)
+            timeout = 0.5 if busy else 1.0          # CPU time is looked at twice a second
             for key, _ in selector.select(timeout=timeout):
                 worker = key.data
                 line = worker.process.stdout.readline()
@@ -181,7 +211,8 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                 finish(worker, reply["class"], reply)
             now = time.monotonic()
             for worker in list(pool):
-                if worker.case is not None and now > worker.deadline:
+                reason = worker.over(now) if worker.case is not None else None
+                if reason is not None:
                     worker.process.send_signal(signal.SIGUSR1)       # faulthandler: the stack
                     time.sleep(0.3)
                     stack = worker.stack()
@@ -190,8 +221,7 @@ def run_cases(cases, root, *, workers=2, limit=10.0, grace=5.0, recycle=400, kee
                     klass = "long" if particles is not None and particles >= BIG else "hang"
                     finish(worker, klass, {"code": None, "stderr": "", "stdout": "",
                                            "traceback": stack,
-                                           "detail": f"no answer within {limit + grace:g} s, "
-                                                     f"{particles} particles"})
+                                           "detail": f"no answer within {reason}, {particles} particles"})
                     if pending[0] is not None:
                         start()
     finally:

@@ -6,11 +6,14 @@ leaves it with os._exit(3), ``spin`` computes in C without releasing the interpr
 that nothing can interrupt), ``sleep`` waits forever without stepping (a hang the watchdog
 interrupts), ``raise`` raises a ValueError (an internal error), ``nan`` writes a file of numbers
 holding a nan and lets the run end well (non-finite output), ``warn`` prints a raw Python warning and
-then stops with a script error (two lines on stderr).
+then stops with a script error (two lines on stderr), ``descheduled`` computes for 3 s of CPU time
+once while a child process lets it run only a quarter of the time (SIGSTOP 0.3 s, SIGCONT 0.1 s),
+as a machine busy with other work would, and lets the run end well.
 """
 
 import os
 import signal
+import subprocess
 import time
 import warnings
 
@@ -43,6 +46,19 @@ class Misbehave(Fix):
         elif mode == "nan":
             with open("numbers.txt", "w") as handle:
                 handle.write("# step value\n1 2.5\n2 nan\n")
+        elif mode == "descheduled" and not getattr(self, "was_throttled", False):
+            self.was_throttled = True
+            pid = os.getpid()
+            throttle = subprocess.Popen(["sh", "-c", f"while true; do kill -STOP {pid}; sleep 0.3; "
+                                                     f"kill -CONT {pid}; sleep 0.1; done"])
+            try:
+                until = time.process_time() + 3.0
+                while time.process_time() < until:
+                    sum(range(10000))
+            finally:
+                throttle.kill()
+                throttle.wait()
+                os.kill(pid, signal.SIGCONT)
         elif mode == "warn":
             warnings.warn("a raw warning", RuntimeWarning)
             raise ScriptError("stopped after a raw warning")

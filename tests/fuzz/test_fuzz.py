@@ -11,7 +11,7 @@ message groups the failures by where they come from and shows one reproducer of 
     PDPS_FUZZ_WORKERS   worker processes (default: the number of cores)
     PDPS_FUZZ_MPI       how many of the cases that ended in an error are run again under mpiexec -n 2
                         (default 8), where they must end in one located error line as well
-    PDPS_FUZZ_LIMIT     seconds a case may run before it is interrupted (default 10: a kernel
+    PDPS_FUZZ_LIMIT     CPU seconds a case may use before it is interrupted (default 10: a kernel
                         compiled for a new pair formula takes a few)
     PDPS_FUZZ_REPORT    a Markdown file to append the summary and the distinct failures to; the
                         failing cases' folders are copied beside it (REPORT-cases/)
@@ -179,7 +179,7 @@ def fuzz(tmp_path_factory, request):
 
 def summarize(by_kind, seconds, setup, workers, limit):
     lines = [f"fuzz: {sum(len(r) for r in by_kind.values())} cases in {seconds:.0f} s "
-             f"({setup:.0f} s of running the seeds; {workers} workers, {limit:g} s per case)"]
+             f"({setup:.0f} s of running the seeds; {workers} workers, {limit:g} CPU s per case)"]
     for kind, results in by_kind.items():
         count = Counter(r.klass for r in results)
         classes = ", ".join(f"{k} {count[k]}" for k in CLASSES if count[k])

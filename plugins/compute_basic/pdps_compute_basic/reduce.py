@@ -17,7 +17,9 @@ Inputs:
   attribute of ``compute property/atom`` (``xu``, ``mass``, ``radius``, ``omegaz``, ...);
 - ``c_ID``: a per-atom compute with one value per particle (``ke``, ``property/atom`` of one
   attribute); ``c_ID[k]``: column k (0-based, as every pdps index) of one with several;
-- ``f_ID``, ``f_ID[k]``: the same for a fix that offers per-atom values.
+- ``f_ID``, ``f_ID[k]``: the same for a fix that offers per-atom values;
+- ``v_NAME``: an atom-style variable (LAMMPS's), checked when the compute is read, so that the
+  variable may be defined after the compute.
 
 The group of a referenced compute is applied as well: its particles outside that group read 0.
 
@@ -32,8 +34,11 @@ Examples::
     compute r all reduce ave c_p[0] c_p[1]       # c_r[0], c_r[1]
     compute k all ke
     compute kmax all reduce max c_k
+    variable vx2 atom vx*vx
+    compute s all reduce sum v_vx2
 """
 
+import re
 from typing import Literal
 
 import numpy as np
@@ -42,6 +47,8 @@ from pydantic import Field
 from pdps_core.api import Compute, ScriptError, StyleArgs, observables, peratom_column
 
 from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom
+
+VARIABLE = re.compile(r"^v_([A-Za-z_][A-Za-z0-9_]*)$")
 
 
 class ComputeReduce(Compute):
@@ -61,13 +68,22 @@ class ComputeReduce(Compute):
                 find_peratom(sim, word, what)
             elif word in ATTRIBUTES:
                 check_attribute(sim, word, what)
-            else:
+            elif not VARIABLE.match(word):
                 raise ScriptError(f"{what}: unknown input {word} (x y z vx vy vz fx fy fz, another "
-                                  "property/atom attribute, c_ID, c_ID[k], f_ID or f_ID[k])")
+                                  "property/atom attribute, c_ID, c_ID[k], f_ID, f_ID[k] or v_NAME)")
 
     def _input(self, sim, word):
         if word in ATTRIBUTES:
             return attribute(sim, word)
+        variable = VARIABLE.match(word)
+        if variable:
+            name = variable.group(1)
+            if name not in sim.variables:
+                raise ScriptError(f"compute {self.id} reduce: variable {name} is not defined ({word})")
+            if sim.variables.style(name) != "atom":
+                raise ScriptError(f"compute {self.id} reduce: variable {name} is "
+                                  f"{sim.variables.style(name)}-style, not atom-style ({word})")
+            return sim.variables.atom_values(name)
         style, column = find_peratom(sim, word, f"compute {self.id} reduce")
         return peratom_column(sim, style, column, word)
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import build, by_tag
+from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows
 
 DATA = Path(__file__).parent / "data"
 SETUP = """units lj
@@ -76,13 +76,8 @@ def run(tmp_path_factory):
 
 def test_thermo_as_lammps_prints_it(run):
     _, _, rows = run
-    reference = [line.split("\t") for line in (DATA / "computes_thermo.txt").read_text().splitlines()]
     # run 0, then run 100 (which prints step 0 again): LAMMPS's one run 100
-    rows = rows[1:]
-    assert [int(r[0]) for r in rows] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(rows, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
-                                   atol=1e-12, err_msg=f"step {got[0]}")
+    assert_thermo_as_lammps(rows[1:], lammps_rows(DATA / "computes_thermo.txt"))
 
 
 @pytest.mark.parametrize("step", [0, 100])

@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import by_tag, restart_round_trip, run_ranks, thermo_rows, total_energy
+from pdps_core.testing import (assert_thermo_as_lammps, by_tag, lammps_rows, lammps_thermo, restart_round_trip,
+                               run_ranks, thermo_rows, total_energy)
 
 DATA = Path(__file__).parent / "data"
 ROWS = [line.split("\t") for line in (DATA / "nh.txt").read_text().splitlines()]
@@ -26,23 +27,13 @@ OPTIONS = [line.split("\t") for line in (DATA / "nh_options.txt").read_text().sp
 
 
 def run_case(tmp_path, monkeypatch, case):
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(script(case))
-    sim.close()
-    rows = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    return sim, rows
+    return lammps_thermo(tmp_path, monkeypatch, script(case), ["fluid.data"], DATA)
 
 
 @pytest.mark.parametrize("case", [c for c in CASES if c.startswith(("nvt", "npt", "nph", "deform"))])
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    sim, mine = run_case(tmp_path, monkeypatch, case)
-    reference = [row[1:] for row in ROWS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
-                                   atol=1e-10, err_msg=f"{case} step {got[0]}")
+    _, mine = run_case(tmp_path, monkeypatch, case)
+    assert_thermo_as_lammps(mine, lammps_rows(DATA / "nh.txt", case), case, rtol=1e-8, atol=1e-10)
 
 
 @pytest.mark.parametrize("case", list(OPTION_CASES))

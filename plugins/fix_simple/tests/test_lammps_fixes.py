@@ -8,11 +8,10 @@ import shutil
 import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import total_momentum
+from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, total_momentum
 
 DATA = Path(__file__).parent / "data"
 ROWS = [line.split("\t") for line in (DATA / "fixes.txt").read_text().splitlines()]
@@ -34,11 +33,8 @@ def run_case(tmp_path, monkeypatch, case):
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
     sim, mine, screen = run_case(tmp_path, monkeypatch, case)
-    reference = [row[1:] for row in ROWS if row[0] == case and row[1] != "print"]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
-                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+    reference = [row for row in lammps_rows(DATA / "fixes.txt", case) if row[0] != "print"]
+    assert_thermo_as_lammps(mine, reference, case)
     if case == "print":
         printed = [line.split()[1:] for line in screen.splitlines() if line.startswith("PRINTED")]
         assert printed == [row[2:] for row in ROWS if row[0] == case and row[1] == "print"]

@@ -3,35 +3,23 @@ energy, press with their virial, the walls' energy f_ID and the force on each wa
 steps of a fluid between z walls (data/wall_lj.txt, recorded with LAMMPS by benchmarks/lammps_references/nh.py);
 the force is minus the energy's derivative; bad input gets one line."""
 
-import shutil
 import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import total_energy
+from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, lammps_thermo, total_energy
 
 DATA = Path(__file__).parent / "data"
-ROWS = [line.split("\t") for line in (DATA / "wall_lj.txt").read_text().splitlines()]
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from nh import WALL_CASES, wall_script  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(WALL_CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    shutil.copy(DATA / "walls.data", tmp_path / "walls.data")
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(wall_script(case))
-    sim.close()
-    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    reference = [row[1:] for row in ROWS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
-                                   atol=1e-10, err_msg=f"{case} step {got[0]}")
+    _, mine = lammps_thermo(tmp_path, monkeypatch, wall_script(case), ["walls.data"], DATA)
+    assert_thermo_as_lammps(mine, lammps_rows(DATA / "wall_lj.txt", case), case, rtol=1e-8, atol=1e-10)
 
 
 @pytest.mark.parametrize("style", ["wall/lj93", "wall/lj126"])

@@ -10,10 +10,9 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import build
+from pdps_core.testing import assert_thermo_as_lammps, build, lammps_rows, lammps_thermo
 
 DATA = Path(__file__).parent / "data"
-ROWS = [line.split("\t") for line in (DATA / "tail.txt").read_text().splitlines()]
 CASES = {
     "tail": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2 2.0\npair_modify tail yes",
     "tail_arithmetic": "pair_style lj/cut 2.2\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
@@ -23,18 +22,10 @@ CASES = {
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
-                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press evdwl etail\nrun 100")
-    sim.close()
-    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    reference = [row[1:] for row in ROWS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
-                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
+                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
+                            "thermo_style custom step temp pe press evdwl etail\nrun 100", ["fluid.data"], DATA)
+    assert_thermo_as_lammps(mine, lammps_rows(DATA / "tail.txt", case), case)
 
 
 def test_the_corrections_are_the_formula(tmp_path):

@@ -3,17 +3,15 @@ on a 200-particle two-type fluid (data/pair_styles.txt, recorded with LAMMPS by
 benchmarks/lammps_references/pair_styles.py), and their forces are minus the gradient of their energy."""
 
 import math
-import shutil
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import build, energy_gradient, forces_by_tag
+from pdps_core.testing import assert_thermo_as_lammps, build, energy_gradient, forces_by_tag, lammps_rows, lammps_thermo
 
 DATA = Path(__file__).parent / "data"
-ROWS = [line.split("\t") for line in (DATA / "pair_styles.txt").read_text().splitlines()]
 CASES = {
     "soft": "pair_style soft 1.5\npair_coeff 1 1 3.0\npair_coeff 2 2 5.0 1.3",
     "morse": "pair_style morse 2.5\npair_coeff 1 1 1.0 4.0 1.1\npair_coeff 2 2 0.7 3.5 1.2\n"
@@ -29,18 +27,10 @@ CASES = {
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(f"units lj\natom_style atomic\nread_data fluid.data\n{CASES[case]}\nfix 1 all nve\n"
-                "timestep 0.002\nthermo 25\nthermo_style custom step temp pe press\nrun 100")
-    sim.close()
-    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    reference = [row[1:] for row in ROWS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-9,
-                                   atol=1e-12, err_msg=f"{case} step {got[0]}")
+    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
+                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
+                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data"], DATA)
+    assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_styles.txt", case), case)
 
 
 @pytest.mark.parametrize("case", ["soft", "morse", "yukawa"])
