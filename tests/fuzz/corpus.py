@@ -14,7 +14,7 @@
   and fixes, granular contacts with their history, Lennard-Jones with langevin, mvv/dpd, the hopper
   with its mesh wall, 2-d, computes with state, and LAMMPS-dialect scenes: a melt, pair styles,
   molecules, commands between runs), each read by a short script, in the writer's dialect, that runs
-  on. LIGGGHTS scenes join (LIGGGHTS_RESTART_FROM) once pair gran can write restart files.
+  on; LIGGGHTS scenes too (pair gran and its walls with their contact history).
 - Commands after a run: lammps_after_run.in and liggghts_after_run.in change pair coefficients, fixes,
   groups, velocities, gravity, the time step and the particles between runs.
 """
@@ -277,10 +277,8 @@ RESTART_FROM = ("restart_groups", "dense_granular", "lj_langevin", "mvv_dpd", "h
 # LAMMPS-dialect writers, their files read back by a LAMMPS-dialect script (index bases, region units)
 # (not lammps_melt: its fix ave/time reads c_k, and read_restart restores fixes before computes)
 LAMMPS_RESTART_FROM = ("lammps_styles", "lammps_molecules", "lammps_hybrid", "lammps_after_run")
-# LIGGGHTS writers join here once pair gran's coefficients can be written to a restart file (today
-# write_restart refuses them: "coefficients of types 1 1 are a StyleArgs ..."): liggghts_gran,
-# liggghts_contacts, liggghts_walls, liggghts_after_run
-LIGGGHTS_RESTART_FROM = ()
+# LIGGGHTS writers: pair gran with contact history, walls, and commands between runs
+LIGGGHTS_RESTART_FROM = ("liggghts_gran", "liggghts_contacts", "liggghts_walls", "liggghts_after_run")
 READ_BACK = {name: "dialect lammps\n" for name in LAMMPS_RESTART_FROM}
 READ_BACK.update({name: "dialect liggghts\n" for name in LIGGGHTS_RESTART_FROM})
 

@@ -139,15 +139,17 @@ def test_nonfinite_numbers_are_found_in_what_a_run_wrote_not_in_its_script(tmp_p
 
 def test_the_corpus_holds_every_kind_of_seed():
     """Issue 30: LAMMPS and LIGGGHTS scripts, commands between runs, and restart files a
-    LAMMPS-dialect scene wrote, read back in its dialect."""
+    LAMMPS- or LIGGGHTS-dialect scene wrote (pair gran's among them), read back in its dialect."""
     from . import corpus
     names = [seed.name for seed in corpus.script_seeds()]
     assert any(n.startswith("lammps_") for n in names) and any(n.startswith("liggghts_") for n in names)
     assert {"lammps_after_run", "liggghts_after_run"} <= set(names)
     writers = {seed.name: seed for seed in corpus.restart_writers()}
     assert set(corpus.LAMMPS_RESTART_FROM) <= set(writers)
+    assert {"liggghts_gran", "liggghts_contacts", "liggghts_walls"} <= set(writers)
     assert all(seed.files["in.fuzz"].endswith(b"\nwrite_restart r.restart\n") for seed in writers.values())
     read_back = {seed.name: seed.files["in.fuzz"] for seed in
                  corpus.restart_seeds({name: (seed.files, b"") for name, seed in writers.items()})}
     assert read_back["lammps_after_run"].startswith(b"dialect lammps\nread_restart r.restart\n")
     assert read_back["restart_groups"].startswith(b"read_restart r.restart\n")
+    assert read_back["liggghts_gran"].startswith(b"dialect liggghts\nread_restart r.restart\n")
