@@ -642,3 +642,15 @@ def test_a_log_command_naming_the_current_log(pdps_cli, tmp_path, append, kept):
     lines = (tmp_path / "first.log").read_text().splitlines()
     assert lines[-len(kept):] == kept
     assert len(lines) == len(kept) + (1 if append else 0)     # + the first line, naming the dialect
+
+
+@pytest.mark.parametrize("line, message", [
+    # the fuzz suite's (issue 30's corpus): a LIGGGHTS density of 1.5e208, and Hertz's contact time overflowed
+    ("set type 1 density 1.4831253087569968e+208",
+     "density must be from 1e-50 to 1e+50 (got 1.4831253087569968e+208)"),
+    ("set type 1 diameter 1e60", "diameter must be from 1e-50 to 1e+50 (got 1e60)"),
+    ("set type 1 mass 1e-160", "mass must be from 1e-150 to 1e+150 (got 1e-160)"),
+])
+def test_set_sphere_sizes_beyond_normal_numbers(pdps_cli, line, message):
+    one_line(pdps_cli("atom_style sphere\nregion box block 0 1 0 1 0 1\ncreate_box 1 box\n"
+                      f"create_atoms 1 single 0.5 0.5 0.5\n{line}\n"), f"ERROR: in.test:5: set: {message}")

@@ -162,6 +162,10 @@ def _set_one(sim, key, values, selected):
         value = _values(sim, values[0], key, selected)
         if np.any(np.asarray(value) <= 0) and key != "diameter":
             raise ScriptError(f"{key} must be > 0 (got {values[0]})")
+        # as create_particle's and a restart file's: masses and moments of inertia (r^5) stay normal
+        low, high = (limits.MIN_SIZE ** 3, limits.MAX_SIZE ** 3) if key == "mass" else (limits.MIN_SIZE, limits.MAX_SIZE)
+        if np.any(np.asarray(value) > high) or (key != "diameter" and np.any(np.asarray(value) < low)):
+            raise ScriptError(f"{key} must be from {low:g} to {high:g} (got {values[0]})")
         if key == "mass":
             p.rmass[rows] = value
         elif key == "diameter":

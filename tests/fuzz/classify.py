@@ -125,15 +125,17 @@ class Watchdog(threading.Thread):
             now, cpu = time.monotonic(), time.process_time() - cpu_start
             clock.append((now, cpu))
             sim = STATE.sim
-            samples.append((cpu, getattr(sim, "step", None)))
+            samples.append((now, cpu, getattr(sim, "step", None)))
             record_particles(sim)
             if cpu < self.limit and not idle(clock, now, cpu, self.limit):
                 continue
-            # the last 1.5 s of CPU time: on a busy machine as many steps as on an idle one
-            recent = [step for t, step in samples if t >= cpu - 1.5 and step is not None]
+            # advancing over the last 1.5 s of CPU time (on a busy machine as many steps as on an
+            # idle one) and over the limit's span on the clock (a case idle that long is not)
+            by_cpu = [step for _, t, step in samples if t >= cpu - 1.5 and step is not None]
+            by_clock = [step for t, _, step in samples if t >= now - self.limit and step is not None]
             last = getattr(sim, "run_last_step", None)
             # across runs too: a loop of short runs (``variable i loop 100000`` ... ``jump``) advances
-            stepping = len(recent) >= 2 and recent[-1] > recent[0]
+            stepping = all(len(r) >= 2 and r[-1] > r[0] for r in (by_cpu, by_clock))
             representable = last is not None and last <= LARGEST_STEP
             big = (particle_count(sim) or 0) >= BIG
             self.verdict = "long" if (stepping and representable) or big else "hang"
