@@ -145,6 +145,19 @@ def test_meta_distribution_requires_the_core_and_every_pack_at_this_version(dist
     assert sorted(requires) == sorted(f"{project(f)['name']}=={project(f)['version']}" for f in PROJECTS)
 
 
+def test_every_wheel_names_its_licence(dist):
+    """BSD-3-Clause (LICENSE, as HOOMD-blue's), in every distribution's metadata, so a plugin author
+    can tell what they may do with the core and the packs."""
+    assert (ROOT / "LICENSE").read_text().startswith("BSD 3-Clause License")
+    for folder in [*PROJECTS, ROOT / "packaging" / "pdps"]:
+        name, version = project(folder)["name"], project(folder)["version"]
+        with zipfile.ZipFile(dist / f"{wheel_name(name)}-{version}-py3-none-any.whl") as archive:
+            entry = next(e for e in archive.namelist() if e.endswith(".dist-info/METADATA"))
+            metadata = email.parser.Parser().parsestr(archive.read(entry).decode())
+        assert metadata.get("License") == "BSD-3-Clause", name
+        assert "License :: OSI Approved :: BSD License" in metadata.get_all("Classifier"), name
+
+
 def test_every_entry_point_loads_from_the_installed_wheels(installed, tmp_path):
     show = ("import importlib.metadata as md, json, sys\n"
             "print(json.dumps(sorted([d.metadata['Name'], ep.group, ep.name,\n"
