@@ -10,7 +10,7 @@ $(STAMP): pyproject.toml $(wildcard plugins/*/pyproject.toml)
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
 	$(VENV)/bin/pip install -q -e '.[mpi,bench,test]' $(foreach p,$(PLUGINS),-e '$(p)[test]') pytest \
-		'setuptools>=70.1'
+		'setuptools>=77'
 	touch $(STAMP)
 
 demo: $(STAMP)
