@@ -342,7 +342,7 @@ def cost_row(model, steps_per_contact, state, length, layers, workdir):
         sim.x[order], sim.v[order] = state["x"], state["v"]
         sim.particles.omega[: sim.nlocal][order] = state["omega"]
         sim.command("run 0")
-        builds = sim.neighbors.builds
+        builds = sim.neighbor.builds
         start = time.perf_counter()
         sim.command(f"run {COST_STEPS}")
         walls.append(time.perf_counter() - start)
@@ -352,7 +352,7 @@ def cost_row(model, steps_per_contact, state, length, layers, workdir):
     return {"model": model, "steps_per_contact": steps_per_contact, "dt": dt, "particles": sim.nlocal,
             "steps": COST_STEPS, "wall": wall, "walls": walls, "ms_per_step": 1e3 * wall / COST_STEPS,
             "breakdown": breakdowns[walls.index(wall)],
-            "wall_per_time": wall / (COST_STEPS * dt), "neighbor_builds": sim.neighbors.builds - builds,
+            "wall_per_time": wall / (COST_STEPS * dt), "neighbor_builds": sim.neighbor.builds - builds,
             "warnings": list(dict.fromkeys(sim.warnings))}
 
 

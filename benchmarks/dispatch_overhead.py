@@ -23,7 +23,7 @@ def main():
     sim.command(f"run {STEPS}")
     per_step = (time.perf_counter() - t0) / STEPS
 
-    integrator = sim._integrator
+    integrator = sim.run_state.integrator
     for hook, caller in integrator.hooks.items():
         for impl in caller.get_hookimpls():
             setattr(impl.plugin.style, hook, lambda sim: None)

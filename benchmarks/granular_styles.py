@@ -58,7 +58,7 @@ def cpu_us(call, calls):
 def measure(text, variables, calls):
     sim = Simulation(screen=False, log=None, variables=variables)
     sim.command(text)
-    sim.in_setup = False
+    sim.run_state.in_setup = False
     rows = [(f"pair {sim.pair.name}", cpu_us(lambda: sim.pair.compute(sim, sim.pair_list, False, False), calls))]
     for hook in ("post_force", "initial_integrate", "final_integrate"):
         for fix in sim.fixes.values():

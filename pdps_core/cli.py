@@ -180,7 +180,7 @@ def _run(args):
         _fail(sim, "ERROR: interrupted", args.debug)
         return 1
     except Exception as exc:  # a bug in pdps or a plugin: still one line unless --debug
-        location = sim.error_location if sim is not None else None
+        location = sim.script.error_location if sim is not None else None
         where = f" at {location[0]}:{location[1]}" if location else ""
         _fail(sim, f"ERROR: internal error{where}: {type(exc).__name__}: {exc} "
                    "(run with --debug for the traceback)", args.debug)

@@ -242,7 +242,7 @@ class Pair(Style):
     Coeff: ClassVar[type[StyleArgs]] = StyleArgs
     coeff_usage: ClassVar[str] = ""
     neighbor_list: ClassVar[str] = "half"
-    # fills the per-particle tally (energy, virial) on the steps ``sim.tally_atom`` asks for it
+    # fills the per-particle tally (energy, virial) on the steps ``sim.run_state.tally_atom`` asks for it
     peratom_tally: ClassVar[bool] = False
     # On a full list (each pair seen from both particles, no force on ghosts) sum r.f misses every
     # pair across a periodic or rank boundary, so a style on one sets ``virial`` itself in compute
@@ -448,7 +448,7 @@ class PairLaw(Pair):
                            loops_for(nparams, law=self.force_law(), masked=self.masked))
         p = sim.particles
         atom = tuple(p.arrays[name] for name in self.law_atom)
-        tally = getattr(sim, "tally_atom", False)
+        tally = sim.run_state.tally_atom
         # one particle type: the loop that reads its pair's cutoff and coefficients once
         one_type = ("one type",) if len(self.cutsq) == 2 else ()
         if nlist.direct and not tally:
@@ -588,7 +588,7 @@ class Compute(Style):
     def pair_tally(self, sim):
         """This step's per-particle pair tally of the owned particles (``peratom_tally = True``), a
         (nlocal, 7) view: energy, then virial xx yy zz xy xz yz, each pair's half (energy units)."""
-        if getattr(sim, "tally_step", None) != sim.step:
+        if sim.run_state.tally_step != sim.step:
             raise ScriptError(f"compute {self.id} ({self.name}): per-particle energies and virials were not "
                               f"computed on step {sim.step}: read them on a thermo or dump step, or run 0 first")
         return sim.particles.arrays[TALLY][: sim.particles.nlocal]

@@ -486,7 +486,7 @@ sim.command("fix contacts_held all test/contacts_held")
 sim.command("run " + sys.argv[2])
 check = sim.fixes["contacts_held"]
 if sim.comm.is_root:
-    np.save("held.npy", np.array([all(check.exact), sim.neighbors.builds, sum(check.contacts)]))
+    np.save("held.npy", np.array([all(check.exact), sim.neighbor.builds, sum(check.contacts)]))
 """
 
 

@@ -22,7 +22,6 @@ def box(ntypes=1, bounds="0 4 0 4 0 4", before=""):
 def sim(make_sim):
     screen = io.StringIO()
     s = make_sim(screen=screen)
-    s.screen_text = screen.getvalue
     return s
 
 
@@ -72,11 +71,11 @@ def min_image_distance(sim):
 class TestUnits:
     def test_lj_is_the_default(self, sim):
         assert sim.units.name == "lj"
-        assert (sim.dt, sim.neighbors.skin, sim.units.boltz) == (0.005, 0.3, 1.0)
+        assert (sim.dt, sim.neighbor.skin, sim.units.boltz) == (0.005, 0.3, 1.0)
 
     def test_si_sets_its_time_step_skin_and_boltzmann_constant(self, sim):
         run(sim, "units si")
-        assert (sim.units.name, sim.dt, sim.neighbors.skin) == ("si", 1e-8, 0.001)
+        assert (sim.units.name, sim.dt, sim.neighbor.skin) == ("si", 1e-8, 0.001)
         assert sim.units.boltz == 1.3806504e-23      # LAMMPS's value (its update.cpp)
 
     def test_temperature_in_si(self, sim):
@@ -526,7 +525,7 @@ class TestGroup:
 
     def test_lammps_groups_are_static_and_add_up(self, sim):
         from pdps_core.script.dialect import DIALECTS
-        sim.dialect = DIALECTS["lammps"]
+        sim.script.dialect = DIALECTS["lammps"]
         run(sim, self.SETUP + "create_particle 2 single 0.5 0.5 0.5\ngroup g type 1\ngroup g type 2\n"
                  "group odd id 1:64:2\ngroup big id > 60\ngroup both intersect odd big\n"
                  "group rest subtract all g\ngroup mid id <> 10 12")
@@ -686,14 +685,14 @@ class TestParticleStyle:
 class TestNeighbor:
     def test_skin_and_style(self, sim):
         run(sim, "neighbor 0.5 multi")
-        assert (sim.neighbors.skin, sim.neighbors.style) == (0.5, "multi")
+        assert (sim.neighbor.skin, sim.neighbor.style) == (0.5, "multi")
         run(sim, "neighbor 0.2 bin")
-        assert (sim.neighbors.skin, sim.neighbors.style) == (0.2, "single")
+        assert (sim.neighbor.skin, sim.neighbor.style) == (0.2, "single")
 
     @pytest.mark.parametrize("name", ["neigh_modify", "neighbor_modify"])
     def test_modify(self, sim, name):
         run(sim, f"{name} every 2 delay 4 check no")
-        n = sim.neighbors
+        n = sim.neighbor
         assert (n.every, n.delay, n.check) == (2, 4, False)
         run(sim, f"{name} check yes")
         assert (n.every, n.delay, n.check) == (2, 4, True)
@@ -786,9 +785,9 @@ class TestPairCoeff:
 class TestProcessors:
     def test_one_rank(self, sim):
         run(sim, "processors 1 1 1")
-        assert sim.processors == (1, 1, 1)
+        assert sim.system.processors == (1, 1, 1)
         run(sim, "processors * * 1")
-        assert sim.processors == (None, None, 1)
+        assert sim.system.processors == (None, None, 1)
 
     @pytest.mark.parametrize("line, message", [
         ("processors 2 1 1", "processor grid 2 x 1 x 1 = 2 does not match the 1 rank(s) of this run"),
@@ -965,7 +964,7 @@ class TestThermo:
                     "velocity all set 1 0 0\ntimestep 0.1\nfix 1 all nve\n"
 
     def steps(self, sim):
-        return [[int(row[0]) for row in table] for table in thermo_rows(sim.screen_text())]
+        return [[int(row[0]) for row in table] for table in thermo_rows(sim.output.screen.getvalue())]
 
     def test_every_n_plus_first_and_last(self, sim):
         run(sim, self.SETUP + "thermo 3\nrun 7")
@@ -982,7 +981,7 @@ class TestThermo:
 
     def test_default_columns(self, sim):
         run(sim, self.SETUP + "run 0")
-        header = [line for line in sim.screen_text().splitlines() if line.split()[:1] == ["Step"]]
+        header = [line for line in sim.output.screen.getvalue().splitlines() if line.split()[:1] == ["Step"]]
         assert header[0].split() == ["Step", "Temp", "PotEng", "KinEng", "TotEng", "Press"]
 
     @pytest.mark.parametrize("style", ["thermo_style custom step c_cen[0] c_t v_twice atoms",
@@ -990,9 +989,9 @@ class TestThermo:
     def test_custom_columns_with_computes_and_variables(self, sim, style):
         run(sim, self.SETUP + "compute cen all centroid\ncompute t all temp\nvariable twice equal 2*step\n"
                               f"{style}\nthermo 2\nrun 4")
-        header = [line.split() for line in sim.screen_text().splitlines() if line.split()[:1] == ["Step"]]
+        header = [line.split() for line in sim.output.screen.getvalue().splitlines() if line.split()[:1] == ["Step"]]
         assert header == [["Step", "c_cen[0]", "c_t", "v_twice", "Atoms"]]
-        rows = thermo_rows(sim.screen_text())[0]
+        rows = thermo_rows(sim.output.screen.getvalue())[0]
         assert [row[0] for row in rows] == [0, 2, 4]
         assert [row[1] for row in rows] == pytest.approx([2.0, 2.2, 2.4])
         assert [row[2] for row in rows] == pytest.approx([2 / 3] * 3)   # sum m v^2 / (3N - 3)
@@ -1039,8 +1038,8 @@ class TestResetTimestepAndRun:
         run(sim, self.SETUP + "run 0")
         assert sim.step == 0
         assert sim.x[0].tolist() == [1, 1, 1]
-        assert sim.energy_step == sim.virial_step == 0
-        assert [[row[0] for row in table] for table in thermo_rows(sim.screen_text())] == [[0]]
+        assert sim.run_state.energy_step == sim.run_state.virial_step == 0
+        assert [[row[0] for row in table] for table in thermo_rows(sim.output.screen.getvalue())] == [[0]]
 
     def test_run_0_with_no_particles(self, sim):
         run(sim, box() + "run 0")

@@ -93,7 +93,7 @@ def test_thermo_modify_format_and_norm():
 def test_units_set_lammps_constants_and_defaults(style, boltz, dt, skin):
     sim = Simulation(screen=False, log=None)
     sim.command(f"units {style}")
-    assert (sim.units.boltz, sim.dt, sim.neighbors.skin) == (boltz, dt, skin)
+    assert (sim.units.boltz, sim.dt, sim.neighbor.skin) == (boltz, dt, skin)
 
 
 def test_metal_units_kick_with_ftm2v():

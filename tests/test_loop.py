@@ -1,5 +1,7 @@
 """The timestep loop: hook order, what is computed on which step, what is allocated and sent."""
 
+import weakref
+
 import numpy as np
 import pytest
 
@@ -13,13 +15,20 @@ lattice spacing x 1 y 1 z 1
 create_particle 1 region box
 """
 
+# what the test styles record, per simulation (a Simulation takes no attributes of its own)
+NOTES = weakref.WeakKeyDictionary()
+
+
+def notes(sim):
+    return NOTES.setdefault(sim, {})
+
 
 class Recorder(Fix):
-    """Appends (fix id, hook, step) to sim.calls for every hook of the timestep."""
+    """Appends (fix id, hook, step) to notes(sim)["calls"] for every hook of the timestep."""
     name = "test/recorder"
 
     def _record(self, sim, hook):
-        sim.__dict__.setdefault("calls", []).append((self.id, hook, sim.step))
+        notes(sim).setdefault("calls", []).append((self.id, hook, sim.step))
 
     def setup(self, sim):
         self._record(sim, "setup")
@@ -53,7 +62,7 @@ class OnlyPostForce(Fix):
     name = "test/postforce"
 
     def post_force(self, sim):
-        sim.__dict__.setdefault("calls", []).append((self.id, "post_force", sim.step))
+        notes(sim).setdefault("calls", []).append((self.id, "post_force", sim.step))
 
 
 class FlagPair(Pair):
@@ -67,7 +76,7 @@ class FlagPair(Pair):
         return 1.0
 
     def compute(self, sim, nlist, eflag, vflag):
-        sim.__dict__.setdefault("flags", {})[sim.step] = (bool(eflag), bool(vflag))
+        notes(sim).setdefault("flags", {})[sim.step] = (bool(eflag), bool(vflag))
         self.energy = 0.0
 
 
@@ -91,11 +100,11 @@ def test_hooks_run_in_timestep_order_and_fixes_in_script_order(make_sim):
     sim = make_sim()
     sim.command(BOX + "pair_style test/flags\npair_coeff * *\nneigh_modify every 1 delay 0 check no\n"
                 "fix b all test/recorder\nfix a all test/recorder\nrun 1")
-    step1 = [(fid, hook) for fid, hook, step in sim.calls if step == 1]
+    step1 = [(fid, hook) for fid, hook, step in notes(sim)["calls"] if step == 1]
     expected_hooks = ["initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor",
                       "pre_force", "post_force", "final_integrate", "end_of_step"]
     assert step1 == [(fid, hook) for hook in expected_hooks for fid in ("b", "a")]
-    setup = [(fid, hook) for fid, hook, step in sim.calls if step == 0]
+    setup = [(fid, hook) for fid, hook, step in notes(sim)["calls"] if step == 0]
     assert setup == [("b", "pre_neighbor"), ("a", "pre_neighbor"), ("b", "pre_force"),
                      ("a", "pre_force"), ("b", "setup"), ("a", "setup")]
 
@@ -103,45 +112,45 @@ def test_hooks_run_in_timestep_order_and_fixes_in_script_order(make_sim):
 def test_a_fix_is_called_only_for_the_hooks_it_defines(make_sim):
     sim = make_sim()
     sim.command(BOX + "fix p all test/postforce\nrun 3")
-    assert [hook for _, hook, _ in sim.calls] == ["post_force"] * 3
-    assert set(sim._integrator.hooks) == {"post_force"}
+    assert [hook for _, hook, _ in notes(sim)["calls"]] == ["post_force"] * 3
+    assert set(sim.run_state.integrator.hooks) == {"post_force"}
 
 
 def test_redefining_a_fix_keeps_its_place_and_unfix_removes_it(make_sim):
     sim = make_sim()
     sim.command(BOX + "fix x all test/postforce\nfix y all test/postforce\nfix x all test/postforce\nrun 1")
-    assert [fid for fid, _, step in sim.calls if step == 1] == ["x", "y"]
-    sim.calls.clear()
+    assert [fid for fid, _, step in notes(sim)["calls"] if step == 1] == ["x", "y"]
+    notes(sim)["calls"].clear()
     sim.command("unfix x\nrun 1")
-    assert [fid for fid, _, _ in sim.calls] == ["y"]
+    assert [fid for fid, _, _ in notes(sim)["calls"]] == ["y"]
 
 
 def test_energy_and_virial_only_on_steps_that_read_them(make_sim):
     sim = make_sim()
     sim.command(BOX + "pair_style test/flags\npair_coeff * *\nthermo 5\nthermo_style custom step temp pe\nrun 12")
-    flags = sim.flags
+    flags = notes(sim)["flags"]
     assert flags[0] == (True, True)                     # setup always computes both
     energy_steps = [s for s in range(1, 13) if flags[s][0]]
     virial_steps = [s for s in range(1, 13) if flags[s][1]]
     assert energy_steps == [5, 10, 12]                  # thermo steps and the last step
     assert virial_steps == [12]                         # nothing reads the virial but the last step
     sim.command("thermo_style custom step press\nrun 4")
-    assert [s for s in range(13, 17) if sim.flags[s][1]] == [15, 16]
-    assert [s for s in range(13, 17) if sim.flags[s][0]] == [16]
+    assert [s for s in range(13, 17) if notes(sim)["flags"][s][1]] == [15, 16]
+    assert [s for s in range(13, 17) if notes(sim)["flags"][s][0]] == [16]
 
 
 def test_compute_pressure_asks_for_the_virial(make_sim):
     sim = make_sim()
     sim.command(BOX + "pair_style test/flags\npair_coeff * *\ncompute p all pressure\n"
                 "thermo 2\nthermo_style custom step c_p\nrun 5")
-    assert [s for s in range(1, 6) if sim.flags[s][1]] == [2, 4, 5]
-    assert [s for s in range(1, 6) if sim.flags[s][0]] == [5]
+    assert [s for s in range(1, 6) if notes(sim)["flags"][s][1]] == [2, 4, 5]
+    assert [s for s in range(1, 6) if notes(sim)["flags"][s][0]] == [5]
 
 
 def test_reading_energy_on_a_step_where_it_was_not_computed_is_an_error(make_sim):
     sim = make_sim()
     sim.command(BOX + "pair_style test/flags\npair_coeff * *\nrun 2\n")
-    sim.step += 1        # as if a step ran that tallied nothing
+    sim.run_state.step += 1        # as if a step ran that tallied nothing
     with pytest.raises(ScriptError, match="potential energy was not computed on step 3"):
         sim.command("variable e equal pe\nprint ${e}")
 
@@ -149,11 +158,11 @@ def test_reading_energy_on_a_step_where_it_was_not_computed_is_an_error(make_sim
 def test_ghost_velocities_sent_only_when_a_style_needs_them(make_sim):
     sim = make_sim()
     sim.command(BOX + "pair_style test/flags\npair_coeff * *\nrun 0")
-    assert sim._integrator.forward == ("x",)
+    assert sim.run_state.integrator.forward == ("x",)
     sim.command("pair_style dpd 1.0 1.0 3\npair_coeff * * 25 4.5\nrun 0")
-    assert sim._integrator.forward == ("x", "v")
+    assert sim.run_state.integrator.forward == ("x", "v")
     sim.command("pair_style test/flags\npair_coeff * *\ncomm_modify vel yes\nrun 0")
-    assert sim._integrator.forward == ("x", "v")
+    assert sim.run_state.integrator.forward == ("x", "v")
 
 
 def test_optional_per_atom_arrays_exist_only_when_asked_for(make_sim):
@@ -163,7 +172,7 @@ def test_optional_per_atom_arrays_exist_only_when_asked_for(make_sim):
     sphere = make_sim()
     sphere.command("particle_style sphere\n" + BOX + "run 0")
     assert {"radius", "rmass", "omega", "torque"} <= set(sphere.particles.arrays)
-    assert sphere._integrator.reverse == ("f", "torque")
+    assert sphere.run_state.integrator.reverse == ("f", "torque")
 
 
 def test_non_finite_force_stops_the_run_naming_step_and_particle(make_sim):
@@ -209,16 +218,16 @@ class CountingAnalyze(Analyze):
     name = "test/count"
 
     def end_of_step(self, sim):
-        sim.__dict__.setdefault("analyzed", []).append((self.id, sim.step))
+        notes(sim).setdefault("analyzed", []).append((self.id, sim.step))
 
 
 def test_analyze_styles_are_called_at_end_of_step_until_unanalyze(make_sim):
     registry.register("analyze", "test/count", CountingAnalyze)
     sim = make_sim()
     sim.command(BOX + "analyze a all test/count\nrun 3")
-    assert sim.analyzed == [("a", 1), ("a", 2), ("a", 3)]
+    assert notes(sim)["analyzed"] == [("a", 1), ("a", 2), ("a", 3)]
     sim.command("unanalyze a\nrun 2")
-    assert len(sim.analyzed) == 3
+    assert len(notes(sim)["analyzed"]) == 3
     with pytest.raises(ScriptError, match="analyze a is not defined"):
         sim.command("unanalyze a")
 
@@ -229,14 +238,14 @@ def test_post_run_is_called_once_after_the_last_step(make_sim):
 
         def post_run(self, sim):
             sim.info(f"summary at step {sim.step}")
-            sim.__dict__.setdefault("summaries", []).append(sim.step)
+            notes(sim).setdefault("summaries", []).append(sim.step)
 
     registry.register("fix", "test/summary", Summary)
     import io
     screen = io.StringIO()
     sim = make_sim(screen=screen)
     sim.command(BOX + "fix s all test/summary\nrun 4\nrun 2")
-    assert sim.summaries == [4, 6]
+    assert notes(sim)["summaries"] == [4, 6]
     assert "summary at step 6" in screen.getvalue().splitlines()
 
 

@@ -30,7 +30,7 @@ def minimized(tmp_path, monkeypatch, style, extra=""):
 def test_minimize_reaches_the_energy_lammps_reaches(tmp_path, monkeypatch, style):
     initial, final, iterations, _, criterion = REFERENCE[style]
     sim = minimized(tmp_path, monkeypatch, style)
-    result = sim.minimize_result
+    result = sim.run_state.minimize_result
     assert result["initial"] == pytest.approx(float(initial), rel=1e-12)
     # a few hundred iterations of floating-point paths apart: the same basin, the same minimum
     assert result["final"] == pytest.approx(float(final), rel=1e-6), (result, final, iterations, criterion)
@@ -40,7 +40,7 @@ def test_minimize_reaches_the_energy_lammps_reaches(tmp_path, monkeypatch, style
 
 def test_cg_lowers_the_energy_every_iteration_and_ends_near_zero_force(tmp_path, monkeypatch):
     sim = minimized(tmp_path, monkeypatch, "cg")
-    result = sim.minimize_result
+    result = sim.run_state.minimize_result
     energies = np.array(result["energies"])
     assert len(energies) == result["iterations"] + 1
     assert np.all(np.diff(energies) <= 1e-12)                 # each line search only goes down
@@ -103,7 +103,7 @@ def test_fixes_take_part_in_minimization_as_lammps(fixes):
     sim = Simulation(screen=False, log=None, dialect="lammps")
     sim.command(SLAB.format(fixes=fixes))
     final, iterations, evaluations = SLAB_LAMMPS[fixes]
-    result = sim.minimize_result
+    result = sim.run_state.minimize_result
     assert result["final"] == pytest.approx(final, rel=1e-12)
     assert (result["iterations"], result["evaluations"]) == (iterations, evaluations)
     assert sim.warnings == ["Using 'neigh_modify every 1 delay 0 check yes' setting during minimization"]

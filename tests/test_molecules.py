@@ -41,7 +41,7 @@ def lammps_script_run(tmp_path_factory):
     (folder / "in.molecules").write_text(SCRIPT)
     log = folder / "log.pdps"
     sim = Simulation(screen=False, log=str(log))
-    sim.directory = str(folder)
+    sim.script.directory = str(folder)
     sim.file(str(folder / "in.molecules"))
     sim.close()
     return folder, log.read_text()

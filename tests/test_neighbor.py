@@ -99,8 +99,8 @@ def test_lattice_sites_on_bin_boundaries_are_listed_once(make_sim, length):
 def test_full_lists_hold_every_pair_twice(make_sim):
     """A full list (requested by a style) holds each pair within its cutoff from both sides."""
     sim = setup_random(make_sim, 150, 4.0, 1.0, 0.3)
-    nlist = sim.neighbors.request("full", 1.0, ntypes=1, occasional=True)
-    sim.neighbors.build_occasional(nlist, sim.particles, sim.box, sim.step)
+    nlist = sim.neighbor.request("full", 1.0, ntypes=1, occasional=True)
+    sim.neighbor.build_occasional(nlist, sim.particles, sim.box, sim.step)
     p = sim.particles
     distances = sorted(round(float(np.linalg.norm(p.x[i] - p.x[j])), 9)
                        for i in range(p.nlocal) for j in nlist.neighbors[nlist.offsets[i]:nlist.offsets[i + 1]])
@@ -144,10 +144,10 @@ def drifting(make_sim):
             fix 1 all test/drift
             run 0
         """)
-        before = sim.neighbors.builds
+        before = sim.neighbor.builds
         sim.command("run 12")
         setup_build = 1      # every run starts from a fresh list
-        return sim.neighbors.builds - before - setup_build, sim.neighbors.dangerous
+        return sim.neighbor.builds - before - setup_build, sim.neighbor.dangerous
     return make
 
 
@@ -245,7 +245,7 @@ def test_exclusions_hold_when_lists_live_one_step(make_sim, exclude):
         neigh_modify every 1 delay 0 check no exclude {exclude}
         run 30
     """)
-    assert sim.neighbors.builds >= 30 and not sim.pair_list.direct
+    assert sim.neighbor.builds >= 30 and not sim.pair_list.direct
     sim.command("run 0")            # ghosts with the velocities of the step's end, as below
     excluded = _forces(sim)
     if exclude == "molecule/intra all":
@@ -284,7 +284,7 @@ class AllPairForces(Fix):
         magnitude = np.where(r < 1.0, 10.0 * (1.0 - r) / r, 0.0)
         expected = (magnitude[..., None] * delta).sum(axis=1)
         self.errors.append(float(np.abs(p.f[: p.nlocal] - expected).max()))
-        self.agos.append(sim.neighbors.ago)
+        self.agos.append(sim.neighbor.ago)
 
 
 def _between_builds(make_sim, dimension, check):
@@ -310,13 +310,13 @@ def test_direct_mode_widens_the_skin_and_misses_no_pair_between_builds(make_sim,
     interior, where it skips the ghosts, shrinks by twice the largest move)."""
     sim, check = _between_builds(make_sim, dimension, AllPairForces)
     assert sim.pair_list.direct
-    assert sim.neighbors.skin == 0.5 and sim.neighbors.requested_skin == 0.1
+    assert sim.neighbor.skin == 0.5 and sim.neighbor.requested_skin == 0.1
     between = [e for e, ago in zip(check.errors, check.agos) if ago > 0]
-    print(f"{len(between)} of 150 steps without a rebuild, builds {sim.neighbors.builds}")
+    print(f"{len(between)} of 150 steps without a rebuild, builds {sim.neighbor.builds}")
     assert len(between) > 60
     assert max(check.errors) < 1e-10
     sim.command("neighbor 0.4")
-    assert sim.neighbors.skin == 0.4 == sim.neighbors.requested_skin
+    assert sim.neighbor.skin == 0.4 == sim.neighbor.requested_skin
 
 
 class ListsBetweenBuilds(Fix):
@@ -339,8 +339,8 @@ class ListsBetweenBuilds(Fix):
             rows = np.repeat(np.arange(p.nlocal), np.diff(nlist.offsets[: p.nlocal + 1]))
             listed = np.linalg.norm(p.x[rows] - p.x[nlist.neighbors[: len(rows)]], axis=1)
             listed = np.round(listed[listed < 1.0], 9)
-            assert np.array_equal(np.sort(np.tile(listed, copies)), expected), (sim.step, sim.neighbors.ago)
-        self.agos.append(sim.neighbors.ago)
+            assert np.array_equal(np.sort(np.tile(listed, copies)), expected), (sim.step, sim.neighbor.ago)
+        self.agos.append(sim.neighbor.ago)
 
 
 @pytest.mark.parametrize("dimension", [3, 2])
@@ -375,7 +375,7 @@ def test_direct_mode_only_where_lists_live_one_step(make_sim):
         run 30
     """)
     assert not sim.pair_list.direct
-    assert sim.neighbors.builds <= 10       # a list lives several steps
+    assert sim.neighbor.builds <= 10       # a list lives several steps
 
 
 def _lj_liquid(make_sim, skin, steps, modify="every 1 delay 0 check yes"):
@@ -410,9 +410,9 @@ def test_neighbor_auto_chooses_a_skin_without_changing_the_run(make_sim):
     auto, text = _lj_liquid(make_sim, "auto", 200)
     candidates = [round(f * 2.5, 12) for f in skin_trial.FRACTIONS]
     assert len(candidates) * skin_trial.STEPS < 200
-    assert auto.neighbors.skin in candidates
+    assert auto.neighbor.skin in candidates
     report = [line for line in text.splitlines() if line.startswith("neighbor auto: skin ")]
-    assert len(report) == 1 and f"skin {auto.neighbors.skin:g} " in report[0]
+    assert len(report) == 1 and f"skin {auto.neighbor.skin:g} " in report[0]
     assert all(f"{c:g}: " in report[0] for c in candidates)
     table = "\n".join(line for line in text.splitlines() if line not in report)
     np.testing.assert_allclose(np.array(thermo_rows(table)), np.array(thermo_rows(fixed_text)), rtol=1e-9)
@@ -424,7 +424,7 @@ def test_neighbor_auto_rules_out_skins_that_could_miss_pairs(make_sim):
     auto, text = _lj_liquid(make_sim, "auto", 160, modify="every 10 delay 0 check no")
     report = next(line for line in text.splitlines() if line.startswith("neighbor auto: skin "))
     assert "0.125: ruled out" in report
-    assert f"{auto.neighbors.skin:g}: ruled out" not in report
+    assert f"{auto.neighbor.skin:g}: ruled out" not in report
 
 
 def test_direct_mode_re_sorts_particles_every_100_steps_unless_atom_modify_says(make_sim):
@@ -432,6 +432,6 @@ def test_direct_mode_re_sorts_particles_every_100_steps_unless_atom_modify_says(
     cell order every 100 steps (LAMMPS's default interval, 1000, when atom_modify sort gives it)."""
     sim = _dpd_fluid(make_sim, 1.0, 250)
     # sorts come with rebuilds: the first one from step 200 on (direct mode's skin: every few steps)
-    assert sim.pair_list.direct and 200 <= sim.neighbors.last_sort < 210
+    assert sim.pair_list.direct and 200 <= sim.neighbor.last_sort < 210
     held = _dpd_fluid(make_sim, 1.0, 250, setup="atom_modify sort 1000 0.0")
-    assert held.pair_list.direct and held.neighbors.last_sort == 0
+    assert held.pair_list.direct and held.neighbor.last_sort == 0

@@ -47,7 +47,7 @@ def test_one_rank_makes_lammps_particles(tmp_path, name):
     (tmp_path / "in.random").write_text(SCRIPTS[name])
     log = tmp_path / "log.pdps"
     sim = Simulation(screen=False, log=str(log))
-    sim.directory = str(tmp_path)
+    sim.script.directory = str(tmp_path)
     sim.file(str(tmp_path / "in.random"))
     sim.close()
     assert_lammps_particles(tmp_path / "out.data", name)

@@ -38,7 +38,7 @@ def test_script_without_pair_style_builds_no_list_and_imports_no_dpd(tmp_path):
         from pdps_core.api import Simulation
         sim = Simulation(screen=False, log=None)
         sim.file("in.free")
-        print(sim.neighbors.builds, len(sim.neighbors.requests), sim.particles.nghost)
+        print(sim.neighbor.builds, len(sim.neighbor.requests), sim.particles.nghost)
         print(sorted(m for m in sys.modules if m.startswith("pdps_pair_dpd")))
     """, tmp_path)
     counts, modules = out.splitlines()
@@ -54,7 +54,7 @@ def test_naming_dpd_imports_it(tmp_path):
         from pdps_core.api import Simulation
         sim = Simulation(screen=False, log=None)
         sim.file("in.dpd")
-        print(sim.neighbors.builds > 0, "pdps_pair_dpd.dpd" in sys.modules)
+        print(sim.neighbor.builds > 0, "pdps_pair_dpd.dpd" in sys.modules)
     """, tmp_path)
     assert out == "True True"
 

@@ -202,12 +202,12 @@ def test_settings_groups_regions_styles_and_neighbor_settings_come_back(tmp_path
         write_restart all.restart
     """)
     again = restarted("all.restart")
-    assert (again.unit_system, again.dimension, again.periodicity) == (sim.unit_system, 3, ("p", "p", "f"))
+    assert (again.units, again.dimension, again.system.periodicity) == (sim.units, 3, ("p", "p", "f"))
     assert np.array_equal(again.box.lo, sim.box.lo) and again.box.periodic == (True, True, False)
     assert again.ntypes == 2 and np.array_equal(again.mass, sim.mass, equal_nan=True)
     assert again.groups.bits == sim.groups.bits
     assert again.groups.definitions == sim.groups.definitions
-    assert list(again.regions) == ["box", "left"] and again.regions["left"].args == sim.regions["left"].args
+    assert list(again.system.regions) == ["box", "left"] and again.system.regions["left"].args == sim.system.regions["left"].args
     assert again.pair.coeffs == sim.pair.coeffs and again.pair.mix_rule == "arithmetic"
     assert again.pair.args == sim.pair.args
     assert list(again.fixes) == ["1", "push"] and again.fixes["push"].group == "left"
@@ -215,8 +215,8 @@ def test_settings_groups_regions_styles_and_neighbor_settings_come_back(tmp_path
     neighbor, saved = again.neighbor, sim.neighbor
     assert (neighbor.skin, neighbor.every, neighbor.delay, neighbor.check, neighbor.sort_every,
             neighbor.last_sort, neighbor.ago) == (0.4, 2, 4, False, 50, 0, saved.ago)
-    assert again.dt == 0.02 and again.ghost_velocity and again.lattice is not None
-    assert again.pe == sim.pe and again.energy_step == 10
+    assert again.dt == 0.02 and again.system.ghost_velocity and again.lattice is not None
+    assert again.pe == sim.pe and again.run_state.energy_step == 10
     again.command("run 10")
     sim.command("run 10")
     assert_same_state(sim, again)

@@ -17,18 +17,17 @@ mass 1 1
 
 @pytest.fixture
 def sim(make_sim):
-    """A silent simulation whose screen output is kept in ``sim.screen_text()``."""
+    """A silent simulation whose screen output is kept in ``sim.output.screen.getvalue()``."""
     screen = io.StringIO()
     s = make_sim(screen=screen)
-    s.screen_text = screen.getvalue
     return s
 
 
 def printed(sim, script):
     """Run the script; return the lines it printed."""
-    before = len(sim.screen_text())
+    before = len(sim.output.screen.getvalue())
     sim.command(textwrap.dedent(script))
-    return sim.screen_text()[before:].splitlines()
+    return sim.output.screen.getvalue()[before:].splitlines()
 
 
 def error(sim, script):
@@ -374,9 +373,9 @@ class TestInclude:
         (tmp_path / "cases" / "main.in").write_text("variable v string main\ninclude parts/a.in\nprint end $v\n")
         (tmp_path / "cases" / "parts" / "a.in").write_text("print in a $v\ninclude b.in\n")
         (tmp_path / "cases" / "parts" / "b.in").write_text("variable v string set-in-b\nprint in b\n")
-        before = len(sim.screen_text())
+        before = len(sim.output.screen.getvalue())
         sim.file(str(tmp_path / "cases" / "main.in"))   # run from tmp_path: not the scripts' directory
-        assert sim.screen_text()[before:].splitlines() == [
+        assert sim.output.screen.getvalue()[before:].splitlines() == [
             "read as PDPS: no command names a dialect (PDPS is the default)", "in a main", "in b", "end set-in-b"]
 
     def test_error_in_an_included_file_names_that_file_and_line(self, sim, tmp_path):

@@ -68,7 +68,7 @@ def test_a_restart_keeps_the_shrink_wrapped_faces(tmp_path):
     sim = Simulation(screen=False, log=None, dialect="lammps")
     sim.command(f"read_restart {path}\nfix 1 all nve\nrun 900")
     assert sim.x[:, 2].max() == pytest.approx(16.0, rel=1e-12)
-    assert sim.periodicity == ("f", "p", "m")
+    assert sim.system.periodicity == ("f", "p", "m")
 
 
 # A 2-d LJ slab pulled apart in y (boundary s s p; this file's own script, after LAMMPS's examples/crack),

@@ -45,7 +45,7 @@ class CloseStep(Fix):
 
     def end_of_step(self, sim):
         peak = tracemalloc.get_traced_memory()[1]
-        self.steps.append((sim.neighbors.ago == 0, peak - sim.fixes["open"].start))
+        self.steps.append((sim.neighbor.ago == 0, peak - sim.fixes["open"].start))
 
 
 class EveryStepAllocates(Fix):

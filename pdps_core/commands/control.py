@@ -17,12 +17,12 @@ def dialect(sim, args):
     count(args, 1, "dialect lammps|liggghts|pdps")
     chosen = dialect_named(args[0])
     if chosen is sim.dialect:
-        sim.dialect_fixed = True
+        sim.script.dialect_fixed = True
         return
-    if sim.dialect_fixed or sim.box is not None:
+    if sim.script.dialect_fixed or sim.box is not None:
         raise ScriptError(f"this script is read as {sim.dialect.label}; the dialect cannot change "
                           "midway (give it first, or pdps run --dialect)")
-    sim.dialect, sim.dialect_fixed = chosen, True
+    sim.script.dialect, sim.script.dialect_fixed = chosen, True
     sim.output.message(f"read as {chosen.label}: dialect command")
 
 
@@ -45,7 +45,7 @@ def next_(sim, args):
     exhausted = False
     for name in args:
         exhausted |= not sim.variables.next(name)
-    flow = getattr(sim, "_flow", None)
+    flow = sim.script.flow
     if exhausted and flow is not None:
         flow.skip_jump = True
 
@@ -60,7 +60,7 @@ def jump(sim, args):
     """``jump FILE [LABEL]``: go on reading FILE (SELF: this script) from the line after
     ``label LABEL``, or from its start."""
     count(args, 1, "jump FILE|SELF [LABEL]", at_most=2)
-    flow = getattr(sim, "_flow", None)
+    flow = sim.script.flow
     if flow is None:
         raise ScriptError("jump works in a script file, not in commands typed from Python")
     if flow.skip_jump:
@@ -230,8 +230,8 @@ def run(sim, args):
 @command("reset_timestep")
 def reset_timestep(sim, args):
     count(args, 1, "reset_timestep N")
-    sim.reset_step(integer(args[0], "timestep", low=0, high=limits.MAX_STEP))
-    sim.energy_step = sim.virial_step = None
+    sim.run_state.reset_step(integer(args[0], "timestep", low=0, high=limits.MAX_STEP))
+    sim.run_state.energy_step = sim.run_state.virial_step = None
 
 
 @command("thermo")

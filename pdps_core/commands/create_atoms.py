@@ -347,8 +347,8 @@ def lattice_sites(sim, region=None):
     # shrink-wrapped without a minimum, s: the lower one down, the upper one up twice, so that sites
     # on them are made and the box wraps around them; fixed and m: where they are)
     eps = EPSILON * box.length
-    shrink_lo = np.array([word[0] == "s" for word in sim.periodicity])
-    shrink_hi = np.array([word[-1] == "s" for word in sim.periodicity])
+    shrink_lo = np.array([word[0] == "s" for word in sim.system.periodicity])
+    shrink_hi = np.array([word[-1] == "s" for word in sim.system.periodicity])
     face_lo = box.lo - np.where(box.periodic | shrink_lo, eps, 0.0)
     face_hi = box.hi - np.where(box.periodic, 2.0 * eps, 0.0) + np.where(shrink_hi, 2.0 * eps, 0.0)
     # the cells whose sites may fall in [lo, hi]: the corners' cell coordinates, widened by one
@@ -409,7 +409,7 @@ def _add(sim, x, types):
         p.type[start:p.nlocal] = types
         if extra and sim.dialect.name == "pdps":
             # the mass command's type masses hold for PDPS spheres (particles.mass)
-            masses = sim.type_mass[p.type[start:p.nlocal]]
+            masses = sim.mass[p.type[start:p.nlocal]]
             p.rmass[start:p.nlocal] = np.where(masses > 0, masses, p.rmass[start:p.nlocal])
     sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)

@@ -487,7 +487,7 @@ def write_data(sim, args):
     lines += [f"{lo!r} {hi!r} {a}lo {a}hi" for lo, hi, a in zip(box.lo.tolist(), box.hi.tolist(), "xyz")]
     if not sphere:
         lines += ["", "Masses", ""]
-        lines += [f"{t} {float(sim.type_mass[t])!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.type_mass[t])]
+        lines += [f"{t} {float(sim.mass[t])!r}" for t in range(1, sim.ntypes + 1) if not np.isnan(sim.mass[t])]
     lines += ["", f"Atoms # {sim.particle_style.split()[0]}", ""]
     for row in atoms.tolist():
         numbers = [f"{int(v)}" if name in whole else repr(v) for name, v in zip(names, row)]

@@ -16,10 +16,10 @@ def region(sim, args):
     if len(args) < 2:
         raise ScriptError("expected: region ID STYLE args")
     ident, style = args[0], args[1]
-    if ident in sim.regions:
+    if ident in sim.system.regions:
         raise ScriptError(f"region {ident} is already defined")
     cls = registry.lookup("region", style)
-    sim.regions[ident] = cls(sim, ident, cls.parse(args[2:]))
+    sim.system.regions[ident] = cls(sim, ident, cls.parse(args[2:]))
 
 
 @command("create_box")
@@ -38,13 +38,13 @@ def create_box(sim, args):
 def make_box(sim, lo, hi, ntypes):
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     if sim.dimension == 2:
-        if sim.periodicity[2] != "p":
+        if sim.system.periodicity[2] != "p":
             raise ScriptError("a 2-d simulation needs a periodic z boundary (boundary x y p)")
         if not lo[2] < 0 < hi[2]:
             lo[2], hi[2] = -0.5, 0.5
     lo, hi = limits.check_box(lo, hi)
     limits.check_ntypes(ntypes)
-    sim.box = Box(lo, hi, [p == "p" for p in sim.periodicity], sim.dimension)
-    sim.shrink_faces = shrink_faces(sim.periodicity, lo, hi)
-    sim.ntypes = ntypes
-    sim.type_mass = np.full(ntypes + 1, np.nan)
+    sim.system.box = Box(lo, hi, [p == "p" for p in sim.system.periodicity], sim.dimension)
+    sim.system.shrink_faces = shrink_faces(sim.system.periodicity, lo, hi)
+    sim.system.ntypes = ntypes
+    sim.system.mass = np.full(ntypes + 1, np.nan)

@@ -10,7 +10,7 @@ from .words import choice, count, integer, number
 @command("min_style")
 def min_style(sim, args):
     count(args, 1, "min_style cg|sd|fire")
-    sim.min_settings.style = choice(args[0], "min_style", ("cg", "sd", "fire"))
+    sim.run_state.min_settings.style = choice(args[0], "min_style", ("cg", "sd", "fire"))
 
 
 @command("min_modify")
@@ -21,9 +21,9 @@ def min_modify(sim, args):
     for key, value in zip(args[::2], args[1::2]):
         choice(key, "min_modify keyword", ("dmax", "line"))
         if key == "dmax":
-            sim.min_settings.dmax = number(value, "dmax", low=0.0, strict_low=True, high=limits.MAX_COORDINATE)
+            sim.run_state.min_settings.dmax = number(value, "dmax", low=0.0, strict_low=True, high=limits.MAX_COORDINATE)
         else:
-            sim.min_settings.line = choice(value, "line", ("quadratic", "backtrack"))
+            sim.run_state.min_settings.line = choice(value, "line", ("quadratic", "backtrack"))
 
 
 @command("minimize")

@@ -26,7 +26,7 @@ def _sphere_values(sim, keywords, ptype=None):
     density = keywords.get("density", 1.0)
     radius = 0.5 * diameter
     rmass = density * sphere_volume(sim, radius)
-    type_mass = sim.type_mass[ptype] if ptype is not None else 0.0
+    type_mass = sim.mass[ptype] if ptype is not None else 0.0
     if type_mass > 0:
         if "density" in keywords:
             raise ScriptError(f"type {ptype} has mass {type_mass:g} (mass command), which a density would "
@@ -242,7 +242,7 @@ def mass(sim, args):
     if lammps_spheres and sim.particle_style == "sphere":
         raise ScriptError(f"cannot set a per-type mass for atom_style sphere (LAMMPS's rule): each particle's "
                           f"mass comes from its diameter and density (set type {args[0]} density RHO)")
-    sim.type_mass[lo:hi + 1] = value
+    sim.mass[lo:hi + 1] = value
     if lammps_spheres:
         # LAMMPS's hybrid of sphere and a per-type-mass style takes the mass and uses the spheres' own
         sim.warn(f"mass {args[0]} {args[1]}: atom_style {sim.particle_style} uses each sphere's own mass "
@@ -406,7 +406,7 @@ def read_data(sim, args):
     for i, j, coeff in coeffs:
         sim.pair.coeff(i, j, coeff)
     for t, value in data.masses.items():
-        sim.type_mass[t] = value
+        sim.mass[t] = value
     if data.masses and "sphere" in sim.particle_styles:
         sim.warn(f"read_data {args[0]}: Masses are kept for the types, but atom_style {sim.particle_style} "
                  "uses each sphere's own mass (diameter and density), as LAMMPS does")

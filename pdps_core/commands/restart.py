@@ -35,7 +35,7 @@ def restart(sim, args):
     every = integer(args[0], "N", low=0)
     if every == 0:
         count(args, 1, usage)
-        sim.restart_output = None
+        sim.run_state.restart_output = None
         return
     count(args, 2, usage, at_most=3)
-    sim.restart_output = files.RestartOutput(every, args[1:])
+    sim.run_state.restart_output = files.RestartOutput(every, args[1:])

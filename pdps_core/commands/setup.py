@@ -24,16 +24,16 @@ def units(sim, args):
     count(args, 1, f"units {'|'.join(UNITS)}")
     _before_box(sim, "units")
     style = choice(args[0], "units style", tuple(UNITS))
-    sim.unit_system = UNITS[style]
-    sim.dt = sim.unit_system.dt
-    sim.neighbors.skin = sim.unit_system.skin
+    sim.system.units = UNITS[style]
+    sim.run_state.dt = sim.units.dt
+    sim.neighbor.skin = sim.units.skin
 
 
 @command("dimension")
 def dimension(sim, args):
     count(args, 1, "dimension 2|3")
     _before_box(sim, "dimension")
-    sim.dimension = int(choice(args[0], "dimension", ("2", "3")))
+    sim.system.dimension = int(choice(args[0], "dimension", ("2", "3")))
 
 
 @command("boundary")
@@ -45,21 +45,21 @@ def boundary(sim, args):
     _before_box(sim, "boundary")
     for axis, word in zip("xyz", args):
         choice(word, f"boundary {axis}", BOUNDARY_STYLES)
-    sim.periodicity = tuple(args)
+    sim.system.periodicity = tuple(args)
 
 
 @command("timestep")
 def timestep(sim, args):
     count(args, 1, "timestep dt")
     number(args[0], "timestep", low=0.0, strict_low=True)
-    sim.dt = number(args[0], "timestep", low=limits.MIN_SIZE, high=limits.MAX_SIZE)
+    sim.run_state.dt = number(args[0], "timestep", low=limits.MIN_SIZE, high=limits.MAX_SIZE)
 
 
 @command("lattice")
 def lattice(sim, args):
     """``lattice spacing x DX y DY z DZ`` (PDPS) or LAMMPS's lattices (pdps_core/state/lattice.py)."""
     from ..state.lattice import parse_lattice
-    sim.lattice = parse_lattice(args, sim.unit_system.name, sim.dimension)
+    sim.system.lattice = parse_lattice(args, sim.units.name, sim.dimension)
 
 
 @command("neighbor")
@@ -68,13 +68,13 @@ def neighbor(sim, args):
     run try several skins and keep the fastest (pdps_core/neighbor/skin_trial.py)."""
     count(args, 1, "neighbor SKIN|auto [single|multi|bin]", at_most=2)
     if args[0] == "auto":
-        sim.neighbors.start_skin_trial()
+        sim.neighbor.start_skin_trial()
     else:
-        sim.neighbors.skin = number(args[0], "skin", low=0.0, high=limits.MAX_COORDINATE)
-        sim.neighbors.skin_trial = None
+        sim.neighbor.skin = number(args[0], "skin", low=0.0, high=limits.MAX_COORDINATE)
+        sim.neighbor.skin_trial = None
     if len(args) == 2:
         style = choice(args[1], "neighbor style", ("single", "multi", "bin"))
-        sim.neighbors.style = "single" if style == "bin" else style
+        sim.neighbor.style = "single" if style == "bin" else style
 
 
 @command("neigh_modify", "neighbor_modify")
@@ -96,13 +96,13 @@ def neigh_modify(sim, args):
             values[key] = integer(value, key, low=1, high=limits.MAX_NEIGHBORS_ONE)
         else:
             values[key] = integer(value, key, low=1 if key == "every" else 0)
-    sim.neighbors.modify(**values)
+    sim.neighbor.modify(**values)
 
 
 def _exclusions(sim, args, usage):
     """Take ``exclude ...`` clauses out of neigh_modify's words (LAMMPS's pair exclusions)."""
     rest, k = [], 0
-    neighbors = sim.neighbors
+    neighbors = sim.neighbor
     while k < len(args):
         if args[k] != "exclude":
             rest.append(args[k])
@@ -154,7 +154,7 @@ def particle_style(sim, args):
         styles = substyles(" ".join(args))
     except ValueError as exc:
         raise ScriptError(f"{exc}; usage: {usage}") from None
-    sim.particle_style = " ".join(("hybrid",) + styles) if args[0] == "hybrid" else styles[0]
+    sim.system.particle_style = " ".join(("hybrid",) + styles) if args[0] == "hybrid" else styles[0]
     sim.particles.request_all(style_properties(sim.particle_style))
 
 
@@ -171,8 +171,8 @@ def processors(sim, args):
                           f"{nprocs} rank(s) of this run")
     if nprocs % fixed:
         raise ScriptError(f"processor grid {' '.join(args)} cannot divide {nprocs} rank(s)")
-    sim.processors = tuple(grid)
-    sim.comm.set_grid(sim.processors)
+    sim.system.processors = tuple(grid)
+    sim.comm.set_grid(sim.system.processors)
 
 
 @command("integrate", "run_style")
@@ -194,9 +194,9 @@ def comm_modify(sim, args):
         if key == "mode":
             choice(value, "mode", ("single",))
         elif key == "cutoff":
-            sim.neighbors.comm_cutoff = number(value, "cutoff", low=0.0, high=limits.MAX_COORDINATE)
+            sim.neighbor.comm_cutoff = number(value, "cutoff", low=0.0, high=limits.MAX_COORDINATE)
         elif key == "vel":
-            sim.ghost_velocity = yes_no(value, "vel")
+            sim.system.ghost_velocity = yes_no(value, "vel")
         else:
             raise ScriptError(f"comm_modify {key} is not supported (supported: mode single, cutoff, vel)")
 
@@ -235,8 +235,8 @@ def atom_modify(sim, args):
         if key == "sort":
             if k + 2 >= len(args):
                 raise ScriptError(f"sort needs N and BINSIZE; usage: {usage}")
-            sim.neighbors.sort_every = integer(args[k + 1], "sort interval", low=0)
-            sim.neighbors.sort_set = True
+            sim.neighbor.sort_every = integer(args[k + 1], "sort interval", low=0)
+            sim.neighbor.sort_set = True
             number(args[k + 2], "bin size", low=0.0)
             k += 3
         elif key in ("map", "id") and k + 1 < len(args):

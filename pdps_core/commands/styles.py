@@ -56,7 +56,7 @@ def pair_style(sim, args):
     if not args:
         raise ScriptError(f"expected a style; installed: {', '.join(registry.names('pair')) or 'none'}")
     if args[0] == "none":
-        sim.pair = None
+        sim.styles.pair = None
         return
     style, rest = _liggghts_legacy(sim, args[0], args[1:])
     args = [style, *rest]
@@ -64,7 +64,7 @@ def pair_style(sim, args):
     pair = cls(sim, cls.parse(args[1:]))
     if sim.pair is not None and sim.pair.name == pair.name:
         pair.coeffs = sim.pair.coeffs          # LAMMPS keeps coefficients when the style is the same
-    sim.pair = pair
+    sim.styles.pair = pair
 
 
 @command("pair_coeff")

@@ -260,7 +260,7 @@ def _require_masses(sim):
     if p.has("rmass"):
         return
     used = p.type[: p.nlocal]
-    unset = used[~(sim.type_mass[used] > 0)]
+    unset = used[~(sim.mass[used] > 0)]
     first = int(sim.comm.min(int(unset.min()) if len(unset) else sim.ntypes + 1))
     if first <= sim.ntypes:
         raise ScriptError(f"mass is not set for type {first} (use the mass command)")

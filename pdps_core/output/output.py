@@ -30,6 +30,7 @@ class Output:
         self.progress = None if self.screen is False else Progress()
         self.dumps = {}
         self.echo_to = "log"            # LAMMPS's echo: none, screen, log or both
+        self.warnings = []              # every warning given, in order
         if log:
             self.open_log(log)
 
@@ -72,6 +73,18 @@ class Output:
             print(text, file=self.screen)
         if self.log is not None:
             print(text, file=self.log)
+
+    def warn(self, text):
+        """A warning on screen and in the log, kept in ``warnings``; the run goes on."""
+        self.warnings.append(text)
+        self.message(f"WARNING: {text}")
+
+    def forget_styles(self):
+        """LAMMPS's clear: dumps closed and forgotten, thermo settings back to their defaults."""
+        for dump in self.dumps.values():
+            dump.close()
+        self.dumps = {}
+        self.thermo = Thermo(self.sim)
 
     def echo(self, text):
         """A command as read: where ``echo`` sends it (the log only by default, as LAMMPS)."""

@@ -52,7 +52,7 @@ def keyword_value(sim, name, indices=()):
     if name == "elapsed":
         return sim.step - sim.run_first_step
     if name == "elaplong":
-        return sim.step - sim.ramp_bounds[0]
+        return sim.step - sim.run_state.ramp_bounds[0]
     if name == "dt":
         return sim.dt
     if name == "time":
@@ -114,7 +114,7 @@ def keyword_value(sim, name, indices=()):
             return float(sim.comm.max(float(np.abs(f).max()) if len(f) else 0.0))
         return float(np.sqrt(sim.comm.sum(float((f * f).sum()))))
     if name in ("nbuild", "ndanger"):
-        return sim.neighbors.builds if name == "nbuild" else sim.neighbors.dangerous
+        return sim.neighbor.builds if name == "nbuild" else sim.neighbor.dangerous
     if name.startswith("c_"):
         return sim.compute_value(name[2:], indices)
     if name.startswith("f_"):
@@ -290,7 +290,7 @@ class Thermo:
         since the last line), cpuremain (an estimate of the seconds left), as LAMMPS's."""
         sim = self.sim
         now = time.perf_counter()
-        started = getattr(sim, "run_wall_start", None)
+        started = sim.run_state.run_wall_start
         if started is None:
             return 0.0
         if name == "cpu":
@@ -353,7 +353,7 @@ class Thermo:
         for word in self.columns:
             if word.startswith("c_"):
                 ident, _ = self._reference(word)
-                if self.sim.find_compute(ident) is None:
+                if self.sim.styles.find_compute(ident) is None:
                     raise ScriptError(f"thermo_style: compute {ident} is not defined (thermo keyword {word})")
             elif word.startswith("f_"):
                 ident, _ = self._reference(word)
@@ -403,7 +403,7 @@ class Thermo:
                 ident, indices = self._reference(word)
                 read = self.sim.compute_value if word[0] == "c" else self.sim.fix_value
                 value = read(ident, indices)
-                style = self.sim.find_compute(ident) if word[0] == "c" else self.sim.fixes.get(ident)
+                style = self.sim.styles.find_compute(ident) if word[0] == "c" else self.sim.fixes.get(ident)
                 extensive = getattr(style, "extensive", False)
                 if len(indices) == 2:
                     extensive = getattr(style, "extensive_array", extensive)

@@ -173,7 +173,7 @@ class Minimizer(Verlet):
         else:
             stop, iterations, ecurrent, previous = self._cg(etol, ftol, maxiter, maxeval, ecurrent)
         loop = time.perf_counter() - t0
-        sim.energy_step = sim.step
+        sim.run_state.energy_step = sim.step
         if self.last_thermo != sim.step:        # the last iteration may have written it already
             sim.output.write(sim.step, sim.step)
         sim.neighbor.mark_current(sim.particles)
@@ -209,7 +209,7 @@ class Minimizer(Verlet):
         gg = self._dot(self._vector("minimize_g"), self._vector("minimize_g"))
         eprevious = ecurrent
         for iteration in range(1, maxiter + 1):
-            sim.step += 1
+            sim.run_state.step += 1
             eprevious = ecurrent
             ecurrent, fail = self.linemin(ecurrent)
             self.energies.append(ecurrent)
@@ -252,7 +252,7 @@ class Minimizer(Verlet):
         self._vector("minimize_v")[:] = 0.0
         eprevious = ecurrent
         for iteration in range(1, maxiter + 1):
-            sim.step += 1
+            sim.run_state.step += 1
             n = p.nlocal
             v = self._vector("minimize_v")
             f = p.f[:n]

@@ -21,7 +21,7 @@ def shrink_faces(periodicity, lo, hi):
 
 
 def shrink_wrap(sim):
-    faces = getattr(sim, "shrink_faces", ())
+    faces = sim.system.shrink_faces
     if not faces:
         return
     p = sim.particles

@@ -103,7 +103,7 @@ class Verlet:
                               *sim.analyzes.values()] if s is not None]
         for style in styles:
             particles.request_all(style.per_atom)
-        ghost_velocity = sim.ghost_velocity or any(s.ghost_velocity for s in styles)
+        ghost_velocity = sim.system.ghost_velocity or any(s.ghost_velocity for s in styles)
         forward = ["x"] + (["v"] if ghost_velocity else [])
         for style in styles:
             forward += [name for name in style.ghost_fields if name not in forward]
@@ -113,19 +113,19 @@ class Verlet:
         sim.neighbor.exclusions(sim.ntypes, sim.groups)
         sim.box.lost = sim.output.thermo.lost
         sim.neighbor.overrun = 0.0
-        sim.pair_list = None
+        sim.styles.pair_list = None
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
-            sim.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff,
+            sim.styles.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff,
                                                  direct_ok=getattr(sim.pair, "cell_loops", False))
         # styles ask for neighbor lists (and prepare per-run state) before ghosts are sized
-        sim.in_init = True
+        sim.run_state.in_init = True
         try:
             for style in styles:
                 if style is not sim.pair and callable(getattr(style, "init_run", None)):
                     style.init_run(sim)
         finally:
-            sim.in_init = False
+            sim.run_state.in_init = False
         sim.groups.update(sim)
         self._register_hooks()
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
@@ -137,7 +137,7 @@ class Verlet:
             raise ScriptError(f"compute {c.id} ({c.name}) needs per-particle energies and virials, which pair "
                               f"style {sim.pair.name} does not tally")
 
-        sim.box_changed = False
+        sim.run_state.box_changed = False
         trial = sim.neighbor.skin_trial
         if trial is not None and not trial.done:
             if sim.neighbor.requests:
@@ -153,22 +153,22 @@ class Verlet:
             sim.comm.exchange(particles, sim.box, sim.step)
             self._reneighbor()
         # styles with history read it without advancing it during the setup forces (LAMMPS setupflag)
-        sim.in_setup = True
+        sim.run_state.in_setup = True
         try:
             self._forces(eflag=True, vflag=True)
             self._call(self.setup_hook)
             self._fix_contributions()
             self._fix_contributions("final_integrate")
         finally:
-            sim.in_setup = False
+            sim.run_state.in_setup = False
         self._check_finite()
 
     def _reneighbor(self):
         sim, particles = self.sim, self.sim.particles
         t0 = time.perf_counter()
         sim.neighbor.choose_skin(sim.box)
-        if sim.neighbors.sort_due(sim.step):
-            particles.keep(sim.neighbors.spatial_order(particles, sim.box, sim.step))
+        if sim.neighbor.sort_due(sim.step):
+            particles.keep(sim.neighbor.spatial_order(particles, sim.box, sim.step))
         sim.comm.borders(particles, sim.box, sim.neighbor.ghost_cutoff())
         sim.timers.stage["Comm"] += time.perf_counter() - t0
         self._call("pre_neighbor")
@@ -195,10 +195,10 @@ class Verlet:
 
     def _forces(self, eflag, vflag):
         sim, particles = self.sim, self.sim.particles
-        sim.eflag, sim.vflag = bool(eflag), bool(vflag)
+        sim.run_state.eflag, sim.run_state.vflag = bool(eflag), bool(vflag)
         # per-particle energies and virials only on steps that read energies or virials
-        sim.tally_atom = bool(self.tally_atom) and (sim.eflag or sim.vflag)
-        if sim.tally_atom:
+        sim.run_state.tally_atom = bool(self.tally_atom) and (sim.eflag or sim.vflag)
+        if sim.run_state.tally_atom:
             particles.arrays[TALLY][:] = 0.0
         arrays = particles.arrays
         _clear(arrays["f"])
@@ -225,17 +225,17 @@ class Verlet:
                                     float(x[:, 1] @ f[:, 2])])
             sim.timers.stage["Pair"] += time.perf_counter() - t0
             t0 = time.perf_counter()
-            sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if sim.tally_atom else ()))
+            sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if sim.run_state.tally_atom else ()))
             sim.timers.stage["Comm"] += time.perf_counter() - t0
         elif vflag:
             sim.virial[:] = 0.0
         if eflag:
-            sim.pe = sim.evdwl = sim.pair.energy if sim.pair is not None else 0.0
-            sim.energy_step = sim.step
+            sim.run_state.pe = sim.run_state.evdwl = sim.pair.energy if sim.pair is not None else 0.0
+            sim.run_state.energy_step = sim.step
         if vflag:
-            sim.virial_step = sim.step
-        if sim.tally_atom:
-            sim.tally_step = sim.step
+            sim.run_state.virial_step = sim.step
+        if sim.run_state.tally_atom:
+            sim.run_state.tally_step = sim.step
 
     def _fix_contributions(self, stage="post_force"):
         """Fix energies and virials, where switched on, join the pair's: after post_force, when the
@@ -244,9 +244,9 @@ class Verlet:
         sim = self.sim
         for fix in self.contributing:
             if stage == "post_force" and sim.eflag and fix.thermo_energy:
-                sim.pe += float(fix.energy(sim))
+                sim.run_state.pe += float(fix.energy(sim))
             if sim.vflag and fix.thermo_virial and fix.virial_after == stage:
-                sim.virial += np.asarray(fix.virial(sim), dtype=np.float64)
+                sim.run_state.virial += np.asarray(fix.virial(sim), dtype=np.float64)
 
     def _check_finite(self):
         particles = self.sim.particles
@@ -297,8 +297,8 @@ class Verlet:
         particles = sim.particles
         last = sim.step + nsteps
         for _ in range(nsteps):
-            sim.step += 1
-            sim.time += sim.dt
+            sim.run_state.step += 1
+            sim.run_state.time += sim.dt
             step = sim.step
             eflag, vflag = sim.output.flags(step, last)
             new_skin = self._skin_trial(step)
@@ -312,8 +312,8 @@ class Verlet:
                 limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a box changed since the last decision (barostat, deform) shifts every periodic image:
             # wrap and make the ghosts again with the new lengths (sim.change_box)
-            if sim.box_changed:
-                rebuild, sim.box_changed = True, False
+            if sim.run_state.box_changed:
+                rebuild, sim.run_state.box_changed = True, False
                 limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a fix inserting or deleting particles asks for this step's rebuild (LAMMPS's
             # force_reneighbor / next_reneighbor); every rank's fixes agree on the step
@@ -347,9 +347,9 @@ class Verlet:
             self._fix_contributions("final_integrate")
             self._call("end_of_step")
             sim.output.write(step, last)
-            if sim.restart_output is not None:
+            if sim.run_state.restart_output is not None:
                 t0 = time.perf_counter()
-                sim.restart_output.write(sim, step)
+                sim.run_state.restart_output.write(sim, step)
                 sim.timers.stage["Output"] += time.perf_counter() - t0
         sim.neighbor.mark_current(particles)
         self._call("post_run")

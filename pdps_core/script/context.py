@@ -27,7 +27,7 @@ class FormulaContext:
         return self.sim.dt
 
     def run_bounds(self):
-        return self.sim.ramp_bounds
+        return self.sim.run_state.ramp_bounds
 
     # ---- thermo keywords and references -------------------------------------------------------------
     def thermo(self, name):
@@ -54,7 +54,7 @@ class FormulaContext:
 
     def _style(self, prefix, ident):
         sim = self.sim
-        style = sim.find_compute(ident) if prefix == "c" else (sim.fixes.get(ident) or sim.analyzes.get(ident))
+        style = sim.styles.find_compute(ident) if prefix == "c" else (sim.fixes.get(ident) or sim.analyzes.get(ident))
         if style is None:
             raise ScriptError(f"{'compute' if prefix == 'c' else 'fix'} {ident} is not defined")
         return style
@@ -116,8 +116,8 @@ class FormulaContext:
         sim.require_box(f"{name}()")
         members = sim.groups.select(sim, sim.require_group(group))
         words = list(rest)
-        if words and words[-1] in sim.regions and not (name in ("xcm", "vcm", "fcm", "bound") and len(words) == 1):
-            region = sim.regions[words.pop()]
+        if words and words[-1] in sim.system.regions and not (name in ("xcm", "vcm", "fcm", "bound") and len(words) == 1):
+            region = sim.system.regions[words.pop()]
             members = members & region.match(sim.x)
         p = sim.particles
         m = obs.masses(sim, members)
@@ -199,7 +199,7 @@ class FormulaContext:
             member &= sim.groups.select(sim, sim.require_group(words[0]))
         if name in ("rmask", "grmask"):
             region_id = words[-1]
-            if region_id not in sim.regions:
+            if region_id not in sim.system.regions:
                 raise ScriptError(f"{name}(): region {region_id} is not defined")
-            member &= sim.regions[region_id].match(sim.x)
+            member &= sim.system.regions[region_id].match(sim.x)
         return member.astype(np.float64)

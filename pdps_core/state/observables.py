@@ -110,7 +110,7 @@ def tail_corrections(sim):
 
 def virial_trace(sim):
     """sum_i r_i . f_i over the box's dimensions (x, y and, in 3-d, z), with the tail correction."""
-    sim.require_virial()
+    sim.run_state.require_virial()
     return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension])))) + sim.dimension * tail_corrections(sim)[1]
 
 
@@ -129,7 +129,7 @@ def pressure_tensor(sim, temp_group="all"):
     """The pressure tensor (xx yy zz xy xz yz), as LAMMPS's compute pressure vector: the kinetic tensor
     sum m v_a v_b of ``temp_group`` plus the virial tensor, over the volume (the tail correction on
     the diagonal)."""
-    sim.require_virial()
+    sim.run_state.require_virial()
     p = sim.particles
     kinetic = np.zeros(6)
     _kinetic_tensor(p.v, p.type, sim.mass, p.rmass if p.has("rmass") else NO_RMASS, p.mask,
@@ -149,11 +149,11 @@ def kinetic_tensor(sim, group="all"):
 
 
 def potential_energy(sim):
-    sim.require_energy()
+    sim.run_state.require_energy()
     return float(sim.comm.sum(sim.pe)) + tail_corrections(sim)[0]
 
 
 def pair_energy(sim):
     """The pair style's energy (LAMMPS's evdwl, with the tail correction), without fixes'."""
-    sim.require_energy()
-    return float(sim.comm.sum(sim.evdwl)) + tail_corrections(sim)[0]
+    sim.run_state.require_energy()
+    return float(sim.comm.sum(sim.run_state.evdwl)) + tail_corrections(sim)[0]

@@ -82,12 +82,12 @@ def write_restart(sim, path):
 
 def capture(sim):
     """(header dict, {name: array}) of everything a run needs to go on (module docstring)."""
-    if sim.restored_states:
+    if sim.styles.restored_states:
         hand_over_states(sim)          # a fix given again before any run is saved with its state
     p, neighbor = sim.particles, sim.neighbor
     parallel = sim.comm.nprocs > 1
     n = int(sim.comm.sum(p.nlocal))
-    arrays = {"box/lo": sim.box.lo, "box/hi": sim.box.hi, "mass": sim.type_mass}
+    arrays = {"box/lo": sim.box.lo, "box/hi": sim.box.hi, "mass": sim.mass}
     properties = []
     for name, prop in p.properties.items():
         # in a parallel run rank 0 holds every rank's particles, in rank order
@@ -101,8 +101,8 @@ def capture(sim):
     states = _StateArrays(arrays)
     header = {
         "format": FORMAT, "version": VERSION, "written_by": f"pdps {__version__}",
-        "units": sim.unit_system.name, "dimension": sim.dimension,
-        "periodicity": list(sim.periodicity), "periodic": list(sim.box.periodic),
+        "units": sim.units.name, "dimension": sim.dimension,
+        "periodicity": list(sim.system.periodicity), "periodic": list(sim.box.periodic),
         "ntypes": sim.ntypes, "particle_style": sim.particle_style,
         "lattice": sim.lattice is not None,
         "lattice_style": sim.lattice.style if sim.lattice is not None else None,
@@ -110,15 +110,15 @@ def capture(sim):
         "groups": {"bits": dict(sim.groups.bits),
                    "definitions": {name: _plain(d) for name, d in sim.groups.definitions.items()}},
         "regions": [{"id": r.id, "style": r.name, "args": _dump_args(f"region {r.id}", r.args),
-                     "state": states.encode(f"region {r.id}", r)} for r in sim.regions.values()],
+                     "state": states.encode(f"region {r.id}", r)} for r in sim.system.regions.values()],
         "pair": _pair_record(sim.pair, states),
         "neighbor": _neighbor_record(neighbor, p, arrays, resumable=not parallel),
-        "step": sim.step, "time": sim.time, "dt": sim.dt, "ghost_velocity": sim.ghost_velocity,
-        "random_epoch": sim.random_epoch, "highest_step": max(sim.highest_step, sim.step),
+        "step": sim.step, "time": sim.time, "dt": sim.dt, "ghost_velocity": sim.system.ghost_velocity,
+        "random_epoch": sim.run_state.random_epoch, "highest_step": max(sim.run_state.highest_step, sim.step),
         "pe": float(sim.pe), "virial": [float(v) for v in sim.virial],
         # per-rank partial sums: a parallel restart has them recomputed by its first run
-        "energy_step": None if parallel else sim.energy_step,
-        "virial_step": None if parallel else sim.virial_step,
+        "energy_step": None if parallel else sim.run_state.energy_step,
+        "virial_step": None if parallel else sim.run_state.virial_step,
     }
     for kind, table in STYLE_TABLES:
         header[table] = [{"id": s.id, "group": s.group, "style": s.name,
@@ -357,18 +357,36 @@ def read_restart(sim, path, shown=None):
     """Replace the (empty) simulation by the one saved in ``path``; on any error it stays as it was."""
     shown = path if shown is None else shown
     header, arrays = read_file(path, shown)
-    before = dict(sim.__dict__)
+    before = _parts(sim)
     try:
         restore(sim, header, arrays)
         sim.comm.distribute(sim.particles, sim.box)     # every rank read all: each keeps its own
     except ScriptError as exc:
-        sim.__dict__.clear()
-        sim.__dict__.update(before)
+        _put_back(sim, before)
         raise ScriptError(f"restart file {shown}: {exc.message}") from None
     except (KeyError, TypeError, ValueError, IndexError, AttributeError, OverflowError) as exc:
-        sim.__dict__.clear()
-        sim.__dict__.update(before)
+        _put_back(sim, before)
         raise ScriptError(f"restart file {shown} is damaged ({type(exc).__name__}: {exc})") from None
+
+
+# what restore writes into: the parts of the simulation, and the neighbor settings it replaces
+RESTORED_PARTS = ("system", "styles", "run_state")
+
+
+def _parts(sim):
+    """A copy of what ``restore`` writes: each part's slots as they are (every object restored into
+    is new, so the values themselves need no copy), and the neighbor settings."""
+    return {"neighbor": sim.neighbor,
+            **{name: {slot: getattr(getattr(sim, name), slot) for slot in type(getattr(sim, name)).__slots__}
+               for name in RESTORED_PARTS}}
+
+
+def _put_back(sim, before):
+    sim.neighbor = before["neighbor"]
+    for name in RESTORED_PARTS:
+        part = getattr(sim, name)
+        for slot, value in before[name].items():
+            setattr(part, slot, value)
 
 
 def _field(record, name, kind, check=None, expected=""):
@@ -547,19 +565,19 @@ def validate(header, arrays):
 
 
 def restore(sim, header, arrays):
-    # every object restored into is new, so that read_restart can undo by resetting sim.__dict__
+    # every object restored into is new, so that read_restart can undo by putting the parts' values back
     validate(header, arrays)
-    sim.unit_system = UNITS[header["units"]]
-    sim.dimension = int(header["dimension"])
-    sim.periodicity = tuple(header["periodicity"])
-    sim.box = Box(arrays["box/lo"].copy(), arrays["box/hi"].copy(), header["periodic"], sim.dimension)
+    sim.system.units = UNITS[header["units"]]
+    sim.system.dimension = int(header["dimension"])
+    sim.system.periodicity = tuple(header["periodicity"])
+    sim.system.box = Box(arrays["box/lo"].copy(), arrays["box/hi"].copy(), header["periodic"], sim.dimension)
     # an m face never moves inside where the restart file has it (LAMMPS's set_initial_box)
-    sim.shrink_faces = shrink_faces(sim.periodicity, sim.box.lo, sim.box.hi)
-    sim.ntypes = int(header["ntypes"])
-    sim.type_mass = arrays["mass"].copy()
-    sim.particle_style = header["particle_style"]
-    sim.lattice = _lattice(header, arrays)
-    sim.particles = _particles(header["particles"], arrays)
+    sim.system.shrink_faces = shrink_faces(sim.system.periodicity, sim.box.lo, sim.box.hi)
+    sim.system.ntypes = int(header["ntypes"])
+    sim.system.mass = arrays["mass"].copy()
+    sim.system.particle_style = header["particle_style"]
+    sim.system.lattice = _lattice(header, arrays)
+    sim.system.particles = _particles(header["particles"], arrays)
     missing = [name for name in style_properties(sim.particle_style) if not sim.particles.has(name)]
     if missing:
         raise ValueError(f"particle_style {sim.particle_style} needs the per-atom arrays {', '.join(missing)}")
@@ -567,20 +585,20 @@ def restore(sim, header, arrays):
     groups.bits = {name: int(bit) for name, bit in header["groups"]["bits"].items()}
     groups.definitions = {name: tuple(tuple(w) if isinstance(w, list) else w for w in definition)
                           for name, definition in header["groups"]["definitions"].items()}
-    sim.groups = groups
-    sim.restored_states = {}
-    sim.regions = {}
+    sim.system.groups = groups
+    sim.styles.restored_states = {}
+    sim.system.regions = {}
     for record in header["regions"]:
         cls = registry.lookup("region", record["style"])
         region = cls(sim, record["id"], _load_args(cls.Args, record["args"], f"region {record['id']}"))
-        sim.regions[record["id"]] = region
+        sim.system.regions[record["id"]] = region
         _restore_state(region, record["state"], arrays, f"region {record['id']}")
     groups.update(sim)          # a damaged group definition fails here, not at the next run
-    sim.pair = _pair(sim, header["pair"], arrays)
-    sim.pair_list = None
+    sim.styles.pair = _pair(sim, header["pair"], arrays)
+    sim.styles.pair_list = None
     for kind, table in STYLE_TABLES:
         styles = {}
-        setattr(sim, table, styles)
+        setattr(sim.styles, table, styles)
         for record in header[table]:
             what = f"{kind} {record['id']}"
             cls = registry.lookup(kind, record["style"])
@@ -589,19 +607,19 @@ def restore(sim, header, arrays):
             styles[record["id"]] = style
             state = _restore_state(style, record["state"], arrays, what)
             if state is not None:
-                sim.restored_states[(kind, record["id"])] = (record["style"], state, style)
-    sim.neighbors = _neighbor(header["neighbor"], arrays, sim.particles)
-    _exclusions(sim.neighbors, header["neighbor"].get("exclude"), sim.ntypes, sim.groups)
-    sim.step = int(header["step"])
-    sim.random_epoch = int(header.get("random_epoch", 0))
-    sim.highest_step = int(header.get("highest_step", sim.step))
-    sim.run_first_step = sim.step
-    sim.time = float(header["time"])
-    sim.dt = float(header["dt"])
-    sim.ghost_velocity = bool(header["ghost_velocity"])
-    sim.pe = float(header["pe"])
-    sim.virial = np.array(header["virial"], dtype=np.float64)
-    sim.energy_step, sim.virial_step = header["energy_step"], header["virial_step"]
+                sim.styles.restored_states[(kind, record["id"])] = (record["style"], state, style)
+    sim.neighbor = _neighbor(header["neighbor"], arrays, sim.particles)
+    _exclusions(sim.neighbor, header["neighbor"].get("exclude"), sim.ntypes, sim.groups)
+    sim.run_state.step = int(header["step"])
+    sim.run_state.random_epoch = int(header.get("random_epoch", 0))
+    sim.run_state.highest_step = int(header.get("highest_step", sim.step))
+    sim.run_state.run_first_step = sim.step
+    sim.run_state.time = float(header["time"])
+    sim.run_state.dt = float(header["dt"])
+    sim.system.ghost_velocity = bool(header["ghost_velocity"])
+    sim.run_state.pe = float(header["pe"])
+    sim.run_state.virial = np.array(header["virial"], dtype=np.float64)
+    sim.run_state.energy_step, sim.run_state.virial_step = header["energy_step"], header["virial_step"]
 
 
 def _lattice(header, arrays):
@@ -744,10 +762,10 @@ def _decode(value, arrays):
 def hand_over_states(sim):
     """A fix, compute or analyze style given again after read_restart with the same ID and style
     gets the state saved for it (LAMMPS); called once, at the next run or restart written."""
-    for (kind, ident), (style_name, state, restored) in sim.restored_states.items():
+    for (kind, ident), (style_name, state, restored) in sim.styles.restored_states.items():
         table = getattr(sim, dict(STYLE_TABLES)[kind])
         current = table.get(ident)
         if (current is not None and current is not restored and current.name == style_name
                 and callable(getattr(current, "restore", None))):
             current.restore(state)
-    sim.restored_states = {}
+    sim.styles.restored_states = {}

@@ -141,7 +141,7 @@ class Watchdog(threading.Thread):
             self.verdict = "long" if (stepping and representable) or big else "hang"
             frame = sys._current_frames().get(self.main)
             stack = "".join(traceback.format_stack(frame)) if frame is not None else ""
-            self.where = {"source": getattr(sim, "source", None), "line": getattr(sim, "line", None),
+            self.where = {"source": sim.script.source, "line": sim.script.line,
                           "step": getattr(sim, "step", None), "last_step": str(last),
                           "particles": particle_count(sim),
                           "stack": stack[-4000:]}

@@ -378,7 +378,7 @@ def test_re_sorted_particles_keep_their_walls_and_histories(scene, data):
         order = np.argsort(sim.tag)
         final.append((sim.x[order].copy(), sim.particles.omega[: sim.nlocal][order].copy()))
         if sort:
-            assert sim.neighbors.last_sort is not None and sim.neighbors.last_sort > 1100
+            assert sim.neighbor.last_sort is not None and sim.neighbor.last_sort > 1100
             assert not np.array_equal(sim.tag, np.sort(sim.tag))      # they were moved in memory
     np.testing.assert_array_equal(final[0][0], final[1][0])
     np.testing.assert_array_equal(final[0][1], final[1][1])

@@ -7,18 +7,27 @@ after the wall records x, v, f in post_integrate, right after the wall acted; th
 previous step's, m g.
 """
 
+import weakref
+
 import numpy as np
 import pytest
 
 from pdps_core.api import Fix, ScriptError, Simulation
 from pdps_core.testing import make_box, register_styles
 
+# what the test styles record, per simulation (a Simulation takes no attributes of its own)
+NOTES = weakref.WeakKeyDictionary()
+
+
+def notes(sim):
+    return NOTES.setdefault(sim, {})
+
 
 class Probe(Fix):
     name = "test/wall_reflect_probe"
 
     def post_integrate(self, sim):
-        sim.__dict__.setdefault("probe", []).append(
+        notes(sim).setdefault("probe", []).append(
             tuple(sim.particles.arrays[k][0].copy() for k in ("x", "v", "f")))
 
 
@@ -37,7 +46,7 @@ def crossing(wall, x0=(1, 5, 5), v0=(-4.0625, 2.125, 0.75), box="-2 10 0 10 0 10
         fix 4 all test/wall_reflect_probe
         run 1
     """, box=box, boundary="f f f")
-    (x, v, f), = sim.probe
+    (x, v, f), = notes(sim)["probe"]
     return sim, x, v, f
 
 

@@ -112,13 +112,13 @@ def resting(dem, load_x, first_steps=1500, second_steps=1500):
                              "atom_modify sort 0 0\ngroup top type 2\n"
                              "fix rec all test/dem/record\nfix move top test/nve_sphere rotate no\n"
                              f"fix push top test/force {load_x} 0.0 -10.0"))
-    builds = sim.neighbors.builds
+    builds = sim.neighbor.builds
     sim.command(f"run {first_steps}")
     first_order = list(sim.tag)
     middle = unwrapped(sim)[0].copy()
     sim.command(f"atom_modify sort 1 0\nrun {second_steps}")
     assert first_order == [1, 2] and list(sim.tag) == [2, 1]
-    assert sim.neighbors.builds - builds >= first_steps + second_steps
+    assert sim.neighbor.builds - builds >= first_steps + second_steps
     return sim, middle, kt
 
 
@@ -198,6 +198,6 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step(dem, pair, coeff):
         dem.set_motion(sim, tag, v=tuple(rng.normal(0.0, 8.0, 3)))
     sim.command("run 400")
     check = sim.fixes["check"]
-    print(f"builds {sim.neighbors.builds}, contacts per step up to {max(check.contacts)}")
-    assert sim.neighbors.builds > 20 and sum(check.contacts) > 400
+    print(f"builds {sim.neighbor.builds}, contacts per step up to {max(check.contacts)}")
+    assert sim.neighbor.builds > 20 and sum(check.contacts) > 400
     assert all(check.exact)

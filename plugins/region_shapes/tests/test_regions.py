@@ -97,7 +97,7 @@ def test_block_bad_arguments(args, words, make_sim):
     with pytest.raises(ScriptError) as info:
         sim.command(f"region r block {args}")
     assert words in str(info.value)
-    assert "r" not in sim.regions
+    assert "r" not in sim.system.regions
 
 
 def test_block_defines_the_box(make_sim):
@@ -141,7 +141,7 @@ def test_polygon_point_off_the_plane_is_an_error(make_sim):
     sim = make_sim()
     with pytest.raises(ScriptError, match="point p4 is not in the plane of the first three"):
         sim.command("region w polygon p1 15 0 0 p2 15 10 0 p3 10 10 0 p4 10 0 0.001")
-    assert "w" not in sim.regions
+    assert "w" not in sim.system.regions
 
 
 @pytest.mark.parametrize("words, message", [
