@@ -138,5 +138,8 @@ CONTRACT = {
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
              "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",
              "contacts": "contacts(sim, group) (pair gran): this moment's contacts, rows i, j, forces, history",
-             "virial": "six values a style on a full list sets on vflag steps (sum r.f misses its ghosts)"},
+             "virial": "six values a style on a full list sets on vflag steps (sum r.f misses its ghosts)",
+             "single": "single(sim, i, j, delta): (F/r, energy) of chosen pairs, rows i, j, separations x_i - x_j (LAMMPS's Pair::single)",
+             "extract": "extract(name): a coefficient as a type-pair table, or a pair_style value (LAMMPS's Pair::extract)",
+             "cutsq": "squared cutoffs per type pair, (ntypes+1, ntypes+1), set when a run starts"},
 }

@@ -235,6 +235,31 @@ TALLY_VARIANTS = {
                                           "to i (j's half comes with the pair's other entry)."),
 }
 
+# Chosen pairs, not a list (Pair.single: LAMMPS's Pair::single): each pair's F/r and energy into
+# the output arrays, 0 beyond its cutoff.
+SINGLE = '''
+
+@njit(cache=True)
+def single(i_rows, j_rows, delta, type_, cutsq, coeff, atom, state, fpair_out, energy_out):
+    """Chosen pairs: rows i and j and their separations x_i - x_j; each pair's F/r and energy."""
+    for k in range(len(i_rows)):
+        i = i_rows[k]
+        j = j_rows[k]
+        ti = type_[i]
+        tj = type_[j]
+        dx = delta[k, 0]
+        dy = delta[k, 1]
+        dz = delta[k, 2]
+        rsq = dx * dx + dy * dy + dz * dz
+        fpair_out[k] = 0.0
+        energy_out[k] = 0.0
+        if rsq >= cutsq[ti, tj] or rsq < MIN_RSQ:
+            continue
+        fpair, e = law(rsq, dx, dy, dz, {pair_coeff}, i, j, atom, state)
+        fpair_out[k] = fpair
+        energy_out[k] = e
+'''
+
 VARIANTS = {
     # (half list, energy): name, what it does
     (True, True): ("half_loop_energy", "Half list, newton on: each pair once, force on both particles "
@@ -273,6 +298,7 @@ def _source(origin, binding, pair_coeff, masked=False):
     for (half, _), (name, doc) in TALLY_VARIANTS.items():
         text += TALLY_LOOP.format(name=name, doc=doc, pair_coeff=pair_coeff,
                                   newton=TALLY_NEWTON if half else "            energy += half_e\n")
+    text += SINGLE.format(pair_coeff=pair_coeff)
     return text
 
 
@@ -319,7 +345,7 @@ def law_definition(law):
 def loops_for(nparams, law=None, source=None, name="law", masked=False):
     """{(half list, energy): loop} (and {(half list, energy, "one type"): loop} for particles of type 1
     only, {(half list, "tally"): loop} taking the per-particle tally array last, {("cells", energy):
-    loop} over cell bins) compiled around ``law`` (an importable
+    loop} over cell bins, and "single" for chosen pairs (Pair.single)) compiled around ``law`` (an importable
     numba function), or around ``source``: Python source defining a numba function ``law``
     (generated laws such as pair formula). The law receives its ``nparams`` coefficients as a tuple
     read from the table: a tuple lives in registers, where a view of the table would cost reference
@@ -349,6 +375,7 @@ def loops_for(nparams, law=None, source=None, name="law", masked=False):
     spec.loader.exec_module(module)
     variants = {**VARIANTS, **TALLY_VARIANTS, **CELL_VARIANTS}
     loops = {key: getattr(module, name) for key, (name, _) in variants.items()}
+    loops["single"] = module.single
     loops.update({(*key, "one type"): getattr(module, name + "_one_type")
                   for key, (name, _) in {**VARIANTS, **CELL_VARIANTS}.items()})
     _loaded[digest] = loops

@@ -341,6 +341,36 @@ class Pair(Style):
     def compute(self, sim, nlist, eflag, vflag):
         raise NotImplementedError
 
+    def single(self, sim, i, j, delta):
+        """Force and energy of chosen pairs, as LAMMPS's ``Pair::single``: for a compute that needs
+        this style's interaction pair by pair (compute group/group). ``i``, ``j``: rows of the
+        particle arrays (owned or ghost; integer arrays of one length n); ``delta``: their
+        separations x_i - x_j, (n, 3) (distance; the minimum image, or a ghost row for j as a
+        neighbor list gives). Returns (fpair, energy), two (n,) arrays: F/r (force/distance: the
+        force on i is ``fpair * delta``, on j its opposite) and the pair's energy (energy), 0 for
+        pairs at or beyond their cutoff. Valid once a run has set the style up (``init``). A law
+        with friction or noise gives its conservative part, as LAMMPS's dpd does."""
+        raise ScriptError(f"pair style {self.name} cannot evaluate chosen pairs (it has no single())")
+
+    def extract(self, name):
+        """A named coefficient of this style, as LAMMPS's ``Pair::extract``: a field of ``Coeff``
+        as an (ntypes+1, ntypes+1) array over type pairs (mixed ones included; NaN where a pair has
+        no value, index 0 unused), valid once a run has set the style up; else a field of ``Args``
+        (the pair_style line's value). A one-line error names the fields there are."""
+        if name in self.Coeff.model_fields and hasattr(self, "resolved"):
+            ntypes = max((j for _, j in self.resolved), default=0)
+            table = np.full((ntypes + 1, ntypes + 1), np.nan)
+            for (i, j), coeff in self.resolved.items():
+                value = getattr(coeff, name)
+                if value is None and name in self.Args.model_fields:
+                    value = getattr(self.args, name)       # a pair cutoff left to the global one
+                table[i, j] = table[j, i] = np.nan if value is None else value
+            return table
+        if name in self.Args.model_fields:
+            return getattr(self.args, name)
+        known = sorted(set(self.Coeff.model_fields) | set(self.Args.model_fields))
+        raise ScriptError(f"pair style {self.name} has no value {name} (it has: {', '.join(known) or 'none'})")
+
 
 def _reason(exc):
     # math's OverflowError reads "(34, 'Numerical result out of range')"
@@ -390,6 +420,9 @@ class PairLaw(Pair):
     law_atom: ClassVar[tuple] = ()
     law: ClassVar = None            # the force law (a static numba function)
     law_source: str | None = None   # or Python source defining ``law`` (generated laws)
+    # what ``single`` evaluates: the force law itself (None), or its conservative part for a law
+    # with friction or noise (a static numba function of the same signature; dpd's, as LAMMPS's)
+    single_law: ClassVar = None
     # True for a cheap law defined at every distance of the list (no table lookups, no random
     # numbers): the core evaluates it for every listed pair and keeps those within the cutoff,
     # without a branch (pdps_core.pair_loop.MASKED_TEST)
@@ -441,11 +474,7 @@ class PairLaw(Pair):
 
     def compute(self, sim, nlist, eflag, vflag):
         if self._loops is None:
-            from .pair_loop import loops_for
-            nparams = len(self.params)
-            self._loops = (loops_for(nparams, source=self.law_source, name=self.name.replace("/", "_"))
-                           if self.law_source is not None else
-                           loops_for(nparams, law=self.force_law(), masked=self.masked))
+            self._loops = self._loops_around(self.force_law())
         p = sim.particles
         atom = tuple(p.arrays[name] for name in self.law_atom)
         tally = sim.run_state.tally_atom
@@ -464,6 +493,29 @@ class PairLaw(Pair):
                 self.virial = rows[:p.nlocal, 1:7].sum(axis=0)
         else:
             self.energy = self._loops[(nlist.half_list, bool(eflag), *one_type)](*args)
+
+    def single(self, sim, i, j, delta):
+        i = np.ascontiguousarray(i, dtype=np.int64).reshape(-1)
+        j = np.ascontiguousarray(j, dtype=np.int64).reshape(-1)
+        delta = np.ascontiguousarray(delta, dtype=np.float64).reshape(-1, 3)
+        if not len(i) == len(j) == len(delta):
+            raise ScriptError(f"pair style {self.name}: single() takes as many rows j and separations as "
+                              f"rows i (got {len(i)}, {len(j)}, {len(delta)})")
+        if not hasattr(self, "cutsq"):
+            raise ScriptError(f"pair style {self.name}: single() is valid once a run has set the style up (run 0)")
+        loops = self._loops_around(type(self).single_law or self.force_law())
+        p = sim.particles
+        fpair, energy = np.zeros(len(i)), np.zeros(len(i))
+        loops["single"](i, j, delta, p.type, self.cutsq, self.coeff_table,
+                        tuple(p.arrays[name] for name in self.law_atom), self.law_state(sim), fpair, energy)
+        return fpair, energy
+
+    def _loops_around(self, law):
+        """The compiled loops around ``law`` (around ``law_source`` for a generated law)."""
+        from .pair_loop import loops_for
+        if self.law_source is not None:
+            return loops_for(len(self.params), source=self.law_source, name=self.name.replace("/", "_"))
+        return loops_for(len(self.params), law=law, masked=self.masked)
 
     def _virial_rows(self, nlocal):
         """Zeroed per-particle rows of the full-list tally loop, kept between steps: on a full list the

@@ -32,9 +32,9 @@ import numpy as np
 
 from ..errors import ScriptError
 from ..state import observables
-from .hookspec import FORCE_HOOKS
+from .hookspec import FORCE_HOOKS, implements
 from .shrink_wrap import shrink_wrap
-from .verlet import Verlet, _implements
+from .verlet import Verlet
 
 ALPHA_MAX = 1.0
 ALPHA_REDUCE = 0.5
@@ -297,7 +297,7 @@ def refuse_fixes_left_out(sim):
     """A fix that changes forces in a run but neither acts in a minimization (min_post_force) nor
     says LAMMPS leaves it out there (minimize_idle) would be silently ignored: refuse it."""
     for fix in sim.fixes.values():
-        if (any(_implements(fix, hook) for hook in FORCE_HOOKS) and not _implements(fix, "min_post_force")
+        if (any(implements(fix, hook) for hook in FORCE_HOOKS) and not implements(fix, "min_post_force")
                 and not fix.minimize_idle):
             raise ScriptError(f"fix {fix.id} ({fix.name}) changes forces in a run but cannot take part in a "
                               "minimization (it has no min_post_force); unfix it before minimize")

@@ -15,14 +15,13 @@ step of a run, so values read between runs are current.
 import time
 
 import numpy as np
-import pluggy
 from numba import njit
 
 from ..errors import ScriptError, SimulationError
 from ..state import limits
 from ..state.finite import first_non_finite
 from ..styles import TALLY
-from .hookspec import HOOKS, TimestepSpec
+from .hookspec import HOOKS, implements
 from .shrink_wrap import shrink_wrap
 from .timers import timed_hooks
 
@@ -32,22 +31,6 @@ def _clear(values):
     """values[...] = 0 (force_clear): a numba call costs half numpy's assignment on a few thousand
     rows (gran_box's forces and torques: 8.4 -> 5.1 us a step)."""
     values[:] = 0.0
-
-
-def _implements(style, hook):
-    return callable(getattr(type(style), hook, None))
-
-
-class StyleHooks(pluggy.PluginManager):
-    """A plugin manager that takes a style's plain methods named like a hook as implementations,
-    so a fix needs no decorator: defining ``post_force(self, sim)`` is enough."""
-
-    def parse_hookimpl_opts(self, plugin, name):
-        opts = super().parse_hookimpl_opts(plugin, name)
-        if opts is None and name in HOOKS and callable(getattr(plugin, name, None)):
-            opts = {"wrapper": False, "hookwrapper": False, "optionalhook": False,
-                    "tryfirst": False, "trylast": False, "specname": None}
-        return opts
 
 
 class Verlet:
@@ -64,28 +47,16 @@ class Verlet:
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
+        """hook -> the methods of the styles joining it, in script order, each timing itself
+        (hookspec.py says why a tuple)."""
         sim = self.sim
-        manager = StyleHooks("pdps")
-        manager.add_hookspecs(TimestepSpec)
         styles = list(sim.fixes.values()) + list(sim.analyzes.values())
-        # pluggy calls the last registered implementation first: register in reverse script order
-        for style in reversed(styles):
-            hooks = [h for h in HOOKS if _implements(style, h)]
-            if hooks:
-                manager.register(timed_hooks(style, sim.timers, hooks),
-                                 name=f"{style.kind}:{style.id}")
+        timed = [timed_hooks(style, sim.timers, [h for h in HOOKS if implements(style, h)]) for style in styles]
         self.hooks = {}
-        for h in HOOKS:
-            caller = getattr(manager.hook, h)
-            impls = caller.get_hookimpls()
-            if not impls:
-                continue
-            if any(impl.wrapper or impl.hookwrapper for impl in impls):
-                self.hooks[h] = (caller,)
-            else:
-                # pluggy's own call costs about 7 us a hook a step (a granular step is 150 us): the
-                # implementations are called here in the order pluggy would call them
-                self.hooks[h] = tuple(impl.function for impl in reversed(impls))
+        for hook in HOOKS:
+            functions = tuple(getattr(proxy, hook) for proxy in timed if hasattr(proxy, hook))
+            if functions:
+                self.hooks[hook] = functions
 
     def _call(self, hook):
         functions = self.hooks.get(hook)
@@ -93,7 +64,7 @@ class Verlet:
             t0 = time.perf_counter()
             sim = self.sim
             for function in functions:
-                function(sim=sim)
+                function(sim)
             sim.timers.stage["Modify"] += time.perf_counter() - t0
 
     def setup(self):
@@ -116,6 +87,7 @@ class Verlet:
         sim.styles.pair_list = None
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
+            sim.pair.cutsq = cutoff * cutoff        # for computes that evaluate pairs themselves (Pair.single)
             sim.styles.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff,
                                                  direct_ok=getattr(sim.pair, "cell_loops", False))
         # styles ask for neighbor lists (and prepare per-run state) before ghosts are sized
@@ -176,6 +148,7 @@ class Verlet:
         sim.neighbor.build(particles, sim.box)
         t2 = time.perf_counter()
         sim.timers.stage["Neigh"] += t2 - t1
+        self._call("post_neighbor")
 
     def _resume_lists(self):
         """The lists of the last build, made again from the positions they were built with (xhold),
@@ -192,6 +165,7 @@ class Verlet:
         sim.neighbor.refresh(particles, sim.box)
         sim.timers.stage["Neigh"] += time.perf_counter() - t0
         self._call("pre_neighbor")
+        self._call("post_neighbor")
 
     def _forces(self, eflag, vflag):
         sim, particles = self.sim, self.sim.particles
@@ -224,11 +198,14 @@ class Verlet:
                                  + [float(x[:, 0] @ f[:, 1]), float(x[:, 0] @ f[:, 2]),
                                     float(x[:, 1] @ f[:, 2])])
             sim.timers.stage["Pair"] += time.perf_counter() - t0
+            self._call("pre_reverse")
             t0 = time.perf_counter()
             sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if sim.run_state.tally_atom else ()))
             sim.timers.stage["Comm"] += time.perf_counter() - t0
-        elif vflag:
-            sim.virial[:] = 0.0
+        else:
+            self._call("pre_reverse")
+            if vflag:
+                sim.virial[:] = 0.0
         if eflag:
             sim.run_state.pe = sim.run_state.evdwl = sim.pair.energy if sim.pair is not None else 0.0
             sim.run_state.energy_step = sim.step

@@ -121,6 +121,7 @@ class PairDPD(PairLaw):
     law = staticmethod(dpd_law)
     uniform_law = staticmethod(dpd_uniform_law)
     conservative_law = staticmethod(dpd_conservative_law)
+    single_law = conservative_law       # Pair.single: a0 w / r and 1/2 a rc w^2, as LAMMPS's dpd
     split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
     class Args(StyleArgs):

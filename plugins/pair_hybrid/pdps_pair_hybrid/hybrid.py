@@ -176,6 +176,15 @@ class PairHybrid(Pair):
                         self.ptail += weight * terms[1]
         return cut
 
+    def single(self, sim, i, j, delta):
+        """The sum over the sub-styles in use: each is 0 on the type pairs it is not assigned."""
+        fpair, energy = np.zeros(len(delta)), np.zeros(len(delta))
+        for style in self.active:
+            f, e = style.single(sim, i, j, delta)
+            fpair += f
+            energy += e
+        return fpair, energy
+
     def tail_ij(self, i, j, count_i, count_j):
         """Summed over the pair's sub-styles in ``init`` (those without a tail correction add 0)."""
         raise NotImplementedError
