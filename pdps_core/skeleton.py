@@ -590,6 +590,8 @@ EXAMPLES = {"fix": "fix ID GROUP {style} DVX DVY DVZ", "compute": "compute ID GR
             "pair": "pair_style {style} RC"}
 
 NAME = re.compile(r"[a-z][a-z0-9_]*(/[a-z0-9_]+)*")
+# a style name as scripts spell it: LIGGGHTS's have capitals (dump mesh/gran/VTK)
+STYLE = re.compile(r"[A-Za-z][A-Za-z0-9_]*(/[A-Za-z0-9_]+)*")
 
 
 def new_plugin(name, directory="plugins", kind="fix", style=None):
@@ -599,14 +601,14 @@ def new_plugin(name, directory="plugins", kind="fix", style=None):
     if not NAME.fullmatch(name):
         raise ScriptError(f"plugin name must be lower-case letters, digits, _ and / (got {name})")
     style = style or name
-    if not NAME.fullmatch(style):
-        raise ScriptError(f"style name must be lower-case letters, digits, _ and / (got {style})")
+    if not STYLE.fullmatch(style):
+        raise ScriptError(f"style name must be letters, digits, _ and / (got {style})")
     ident = name.replace("/", "_")
     root = Path(directory) / f"{kind}_{ident}"
     if root.exists():
         raise ScriptError(f"{root} already exists")
     module_text, test_text, prefix = TEMPLATES[kind]
-    module = style.replace("/", "_")
+    module = style.replace("/", "_").lower()
     values = dict(kind=kind, style=style, module=module, package=f"pdps_{kind}_{ident}",
                   dist=f"pdps-{kind}-{ident.replace('_', '-')}", api_range=API_RANGE,
                   cls=prefix + "".join(part.capitalize() for part in module.split("_")))

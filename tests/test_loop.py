@@ -58,6 +58,26 @@ class Recorder(Fix):
         self._record(sim, "end_of_step")
 
 
+class ListAndReverseRecorder(Recorder):
+    """The hooks around the neighbor build and the reverse communication, recorded as Recorder's;
+    in pre_reverse it pushes every ghost by (1, 0, 0), which the reverse sum must carry to owners."""
+    name = "test/recorder2"
+
+    def post_neighbor(self, sim):
+        self._record(sim, "post_neighbor")
+        notes(sim)["list version"] = sim.pair_list.version
+
+    def pre_reverse(self, sim):
+        self._record(sim, "pre_reverse")
+        p = sim.particles
+        p.f[p.nlocal:p.nall, 0] += 1.0
+        notes(sim)["ghosts pushed"] = p.nghost
+
+    def post_force(self, sim):
+        self._record(sim, "post_force")
+        notes(sim)["owned push"] = float(sim.particles.f[: sim.particles.nlocal, 0].sum())
+
+
 class OnlyPostForce(Fix):
     name = "test/postforce"
 
@@ -91,6 +111,7 @@ class NaNForce(Fix):
 @pytest.fixture(autouse=True)
 def test_styles():
     registry.register("fix", "test/recorder", Recorder)
+    registry.register("fix", "test/recorder2", ListAndReverseRecorder)
     registry.register("fix", "test/postforce", OnlyPostForce)
     registry.register("fix", "test/nan", NaNForce)
     registry.register("pair", "test/flags", FlagPair)
@@ -107,6 +128,21 @@ def test_hooks_run_in_timestep_order_and_fixes_in_script_order(make_sim):
     setup = [(fid, hook) for fid, hook, step in notes(sim)["calls"] if step == 0]
     assert setup == [("b", "pre_neighbor"), ("a", "pre_neighbor"), ("b", "pre_force"),
                      ("a", "pre_force"), ("b", "setup"), ("a", "setup")]
+
+
+def test_post_neighbor_follows_the_build_and_pre_reverse_forces_on_ghosts_reach_their_owners(make_sim):
+    sim = make_sim()
+    sim.command(BOX + "pair_style test/flags\npair_coeff * *\nneigh_modify every 1 delay 0 check no\n"
+                "fix r all test/recorder2\nrun 1")
+    step1 = [hook for _, hook, step in notes(sim)["calls"] if step == 1]
+    assert step1 == ["initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor", "post_neighbor",
+                     "pre_force", "pre_reverse", "post_force", "final_integrate", "end_of_step"]
+    setup = [hook for _, hook, step in notes(sim)["calls"] if step == 0]
+    assert setup == ["pre_neighbor", "post_neighbor", "pre_force", "pre_reverse", "setup"]
+    assert notes(sim)["list version"] == sim.pair_list.version      # called after this step's build
+    # the pair style adds no force: all the owners hold is the ghosts' pushes, one per ghost image
+    assert notes(sim)["ghosts pushed"] > 0
+    assert notes(sim)["owned push"] == notes(sim)["ghosts pushed"]
 
 
 def test_a_fix_is_called_only_for_the_hooks_it_defines(make_sim):

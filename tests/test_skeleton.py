@@ -122,8 +122,18 @@ def test_new_plugin_refuses_bad_names_and_existing_folders(tmp_path):
     assert bad.returncode == 1
     assert bad.stderr.strip() == "ERROR: plugin name must be lower-case letters, digits, _ and / (got Bad-Name)"
     bad = pdps("new-plugin", "soft", "--kind", "pair", "--style", "soft//x", "--dir", ".", cwd=tmp_path)
-    assert bad.stderr.strip() == "ERROR: style name must be lower-case letters, digits, _ and / (got soft//x)"
+    assert bad.stderr.strip() == "ERROR: style name must be letters, digits, _ and / (got soft//x)"
     for expected in (0, 1):
         again = pdps("new-plugin", "kick", "--dir", ".", cwd=tmp_path)
         assert again.returncode == expected
     assert again.stderr.strip() == "ERROR: fix_kick already exists"
+
+
+def test_a_style_name_with_capitals_as_scripts_spell_them_is_taken(tmp_path):
+    """LIGGGHTS names styles with capitals (dump mesh/gran/VTK): the entry point keeps the name as
+    scripts spell it; the module file is lower-case."""
+    made = pdps("new-plugin", "vtk_mesh", "--kind", "dump", "--style", "mesh/out/VTK", "--dir", ".", cwd=tmp_path)
+    assert made.returncode == 0, made.stderr
+    root = tmp_path / "dump_vtk_mesh"
+    assert '"mesh/out/VTK" = "pdps_dump_vtk_mesh.mesh_out_vtk:DumpMeshOutVtk"' in (root / "pyproject.toml").read_text()
+    assert 'name = "mesh/out/VTK"' in (root / "pdps_dump_vtk_mesh" / "mesh_out_vtk.py").read_text()
