@@ -8,6 +8,7 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
+from .capabilities import ContactTable
 from .commands.words import type_range
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
@@ -21,7 +22,7 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
                      StyleArgs, SurfaceContacts, VariableRef, keyword, param, parse_args, peratom_column,
                      registry)
 
-__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "Dump", "Fix",
+__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "close_slot", "find_slot",
            "keyword", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
@@ -137,7 +138,7 @@ CONTRACT = {
                   "atom_values": "atom_values(name): an atom-style v_NAME, one float per owned particle (nlocal,)"},
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
              "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",
-             "contacts": "contacts(sim, group) (pair gran): this moment's contacts, rows i, j, forces, history",
+             "contacts": "contacts(sim, group): the contacts of a ContactTable style (granular pair styles): rows i, j, force on i",
              "virial": "six values a style on a full list sets on vflag steps (sum r.f misses its ghosts)",
              "single": "single(sim, i, j, delta): (F/r, energy) of chosen pairs, rows i, j, separations x_i - x_j (LAMMPS's Pair::single)",
              "extract": "extract(name): a coefficient as a type-pair table, or a pair_style value (LAMMPS's Pair::extract)",

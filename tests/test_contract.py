@@ -137,10 +137,14 @@ def test_every_name_in_the_contract_exists(tmp_path):
     full = Simulation(screen=False, log=None)
     full.command("particle_style full\nregion box block 0 5 0 5 0 5\ncreate_box 1 box")
     # body_mass exists where a fix of rigid bodies provides it
-    assert missing == ["Particles.molecule", "Particles.q", "Particles.body_mass", "Pair.contacts"]
+    assert missing == ["Particles.molecule", "Particles.q", "Particles.body_mass"]
     assert hasattr(full.particles, "molecule") and hasattr(full.particles, "q")
-    # contacts(sim, group) is pair gran's (LIGGGHTS's contact computes read it)
-    assert hasattr(registry.lookup("pair", "gran"), "contacts")
+    # contacts(sim, group) is the ContactTable capability: LIGGGHTS's gran and the dem styles have it
+    from pdps_core.api import ContactTable
+    assert isinstance(sim.pair, ContactTable)
+    assert all(issubclass(registry.lookup("pair", name), ContactTable)
+               for name in ("gran", "dem/hertz", "dem/lsd"))
+    assert not issubclass(registry.lookup("pair", "lj/cut"), ContactTable)
 
 
 def test_the_plugin_guide_shows_every_name():

@@ -23,9 +23,9 @@ with tag_i < tag_j, rows sorted by (tag_i, tag_j), so the table is the same on a
 (fx, fy, fz) is the contact force on tag_i from tag_j (force units), and the contact point is wrapped
 into the box along periodic axes (distance units). ``c_ID`` is the number of contacts.
 
-Forces come from the pair style's ``contact_forces(sim)`` (tag_i, tag_j and the force on tag_i, one row
-per contact this rank computed at the last force computation; dem/lsd and dem/hertz provide it); a
-pair style without it leaves them NaN, with a warning when the compute is defined. Overlap and contact point are always exact geometry.
+Forces come from the pair style's contact table (the api's ``ContactTable``: rows i, j and the force
+on i of each contact; dem/lsd and dem/hertz give their last force computation's); a pair style
+without one leaves them NaN, with a warning when the compute is defined. Overlap and contact point are always exact geometry.
 
 Contacts are found in the pair style's neighbor list, so the compute is read after a run
 (``run 0`` is enough) and sees the positions of the last force computation. The table is gathered
@@ -44,7 +44,7 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError
+from pdps_core.api import Compute, ContactTable, ScriptError
 
 COLUMNS = ("tag_i", "tag_j", "overlap", "fx", "fy", "fz", "xc", "yc", "zc")
 
@@ -59,7 +59,7 @@ class ComputePairContact(Compute):
         self._warn_without_forces(sim)
 
     def _warn_without_forces(self, sim):
-        if sim.pair is not None and not hasattr(sim.pair, "contact_forces") and not self.warned:
+        if sim.pair is not None and not isinstance(sim.pair, ContactTable) and not self.warned:
             self.warned = True
             sim.warn(f"compute {self.id} pair/contact: pair style {sim.pair.name} reports no "
                      "per-contact forces; the force columns are NaN (overlap and contact point are exact)")
@@ -105,12 +105,13 @@ class ComputePairContact(Compute):
 
     @staticmethod
     def _forces(sim, pair, low, high):
-        """Force on ``low`` from ``high`` per contact, from the pair's ``contact_forces`` if any."""
+        """Force on ``low`` from ``high`` per contact, from the pair's contact table if it has one."""
         force = np.full((len(low), 3), np.nan)
-        reporter = getattr(pair, "contact_forces", None)
-        if reporter is None or not len(low):
+        if not isinstance(pair, ContactTable) or not len(low):
             return force
-        known_i, known_j, known_force = (np.asarray(a) for a in reporter(sim))
+        found = pair.contacts(sim)
+        tag = sim.particles.tag
+        known_i, known_j, known_force = tag[found["i"]], tag[found["j"]], np.asarray(found["force"])
         if not len(known_i):
             return force
         width = int(max(high.max(), known_i.max(), known_j.max())) + 1

@@ -201,14 +201,14 @@ KN = 1000.0
 
 
 class ReportingLsd:
-    """dem/lsd that also reports each contact's force (the hook pair/contact reads), for spheres
-    1 and 2 touching and no other contact: the contact force on each is its total force. It reports
-    the larger tag first, so pair/contact must turn the reaction round."""
+    """dem/lsd whose contact table (what pair/contact reads) is written here, for spheres 1 and 2
+    touching and no other contact: the contact force on each is its total force. It lists the
+    larger tag first, so pair/contact must turn the reaction round."""
     name = "test/dem/lsd_reporting"
 
-    def contact_forces(self, sim):
-        second = sim.particles.index_of_tag(2)
-        return np.array([2]), np.array([1]), sim.f[[second]]
+    def contacts(self, sim, group="all"):
+        first, second = sim.particles.index_of_tag(1), sim.particles.index_of_tag(2)
+        return {"i": np.array([second]), "j": np.array([first]), "force": sim.f[[second]]}
 
 
 def _two_spheres(x1, x2, d1=1.0, d2=1.4, pair="dem/lsd 0.5 1.0", group="all", box="0 10 0 10 0 10"):
@@ -251,7 +251,7 @@ def test_pair_contact_rows_of_two_touching_spheres(x1, x2):
     np.testing.assert_allclose(np.cross(from_1, delta), 0.0, atol=1e-13)
     assert ((point >= 0.0) & (point < 10.0)).all()
     # resting spheres, no spring yet: the force on 1 is kn * overlap along the normal from 2 to 1,
-    # as dem/lsd computed it (its contact_forces)
+    # as dem/lsd computed it (its contact table)
     np.testing.assert_allclose(rows[0, 3:6], KN * overlap * delta / r, rtol=1e-12)
     assert not any("pair/contact" in w for w in sim.warnings)
 

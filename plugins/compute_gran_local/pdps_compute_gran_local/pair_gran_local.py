@@ -37,7 +37,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs
+from pdps_core.api import Compute, ContactTable, ScriptError, StyleArgs
 
 # keyword -> columns, in LIGGGHTS's order
 COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,
@@ -68,9 +68,12 @@ class ComputePairGranLocal(Compute):
 
     def local(self, sim):
         pair = sim.pair
-        if pair is None or not callable(getattr(pair, "contacts", None)):
+        if not isinstance(pair, ContactTable):
             raise ScriptError(f"compute {self.id} (pair/gran/local) needs pair_style gran")
         found = pair.contacts(sim, self.group)
+        if not {"tangential", "history"} <= set(found):
+            raise ScriptError(f"compute {self.id} (pair/gran/local) needs pair_style gran (pair style "
+                              f"{pair.name} lists no tangential forces and histories)")
         p = sim.particles
         i, j = found["i"], found["j"]
         xi, xj = p.x[i], p.x[j]

@@ -131,7 +131,7 @@ def apply_contact(f, torque, i, j, n, force, arm_i, arm_j):
 
 @njit(cache=True)
 def log_contact(log_pairs, log_force, logged, i, j, force):
-    """Remember a contact and the force on i, for contact_forces (compute pair/contact)."""
+    """Remember a contact and the force on i, for contacts (compute pair/contact)."""
     m = logged[0]
     if m < log_pairs.shape[0]:
         log_pairs[m, 0] = i
@@ -373,13 +373,15 @@ class GranularPair(Pair):
         self._logged[0] = 0
         return self._log_pairs, self._log_force, self._logged
 
-    def contact_forces(self, sim):
-        """(tag_i, tag_j, force on i) of every contact this rank computed in the last force
-        computation: what compute pair/contact reports."""
-        m = int(self._logged[0]) if getattr(self, "_logged", None) is not None else 0
-        tag = sim.particles.tag
+    def contacts(self, sim, group="all"):
+        """The contacts of the last force computation with both particles in ``group`` (the
+        ContactTable capability): rows "i", "j" and "force", the force on i from j."""
+        m = int(self._logged[0]) if self._log_pairs is not None else 0
         pairs = self._log_pairs[:m] if m else np.zeros((0, 2), dtype=np.int64)
-        return tag[pairs[:, 0]], tag[pairs[:, 1]], (self._log_force[:m].copy() if m else np.zeros((0, 3)))
+        force = self._log_force[:m].copy() if m else np.zeros((0, 3))
+        member = (sim.particles.mask & sim.groups.bit(group)) != 0
+        chosen = member[pairs[:, 0]] & member[pairs[:, 1]]
+        return {"i": pairs[chosen, 0], "j": pairs[chosen, 1], "force": force[chosen]}
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
         p = sim.particles

@@ -1,0 +1,22 @@
+"""What one style may offer another, declared once (issue 31): a style that needs another's
+service tests for the capability, never for a style name or an attribute's presence.
+
+    from pdps_core.api import ContactTable
+    if isinstance(sim.pair, ContactTable):
+        found = sim.pair.contacts(sim, self.group)
+"""
+
+from typing import Protocol, runtime_checkable
+
+
+@runtime_checkable
+class ContactTable(Protocol):
+    """A pair style that lists its contacts (the granular ones: pair gran, dem/lsd, dem/hertz).
+
+    ``contacts(sim, group="all")`` returns a dict of arrays over the contacts of this rank's owned
+    particles with both particles in ``group``: "i" and "j" (particle rows; j may be a ghost),
+    "force" (n, 3), the contact force on i from j (force); a style may add columns ("tangential",
+    "history"). Each style's docstring says whether they are its last force computation's or are
+    worked out afresh. compute pair/contact and pair/gran/local read it."""
+
+    def contacts(self, sim, group="all") -> dict: ...
