@@ -227,6 +227,15 @@ class Style:
     def parse(cls, words):
         return parse_args(cls.Args, words, cls.usage)
 
+    @classmethod
+    def respell(cls, dialect, words):
+        """(class, words) when, in ``dialect`` (its name: pdps, lammps, liggghts), this style's name
+        with these words spells another style of the same plugin, as LIGGGHTS 2.x's ``pair_style
+        gran/hertz/history`` without coefficients spells today's ``gran model hertz tangential
+        history``; None (the default): this style, these words. Called before the words are parsed,
+        so a dialect's spellings live in the plugin whose styles they name, not in the core."""
+        return None
+
 
 class Pair(Style):
     """A pair style: ``pair_style NAME args`` then ``pair_coeff I J coeffs`` for each type pair.
@@ -911,9 +920,9 @@ class Registry:
         """The class of one entry (any of several distributions claiming a name), checked as
         ``lookup`` checks it; PluginError when its distribution is broken or incompatible."""
         if entry.dist == IN_PROCESS:
-            return self._checked(entry.kind, entry.name, self._local[entry.kind][entry.name])
+            return self.checked(entry.kind, entry.name, self._local[entry.kind][entry.name])
         ep = self._scan()[entry.kind][entry.name][entry.dist]
-        return self._checked(entry.kind, entry.name, self._load_entry_point(entry.kind, entry.name, ep))
+        return self.checked(entry.kind, entry.name, self._load_entry_point(entry.kind, entry.name, ep))
 
     def _load_entry_point(self, kind, name, ep):
         dist = ep.dist.name if ep.dist is not None else "?"
@@ -930,7 +939,8 @@ class Registry:
         except (Exception, SystemExit) as exc:
             raise PluginError(label, "broken", _one_line(exc)) from exc
 
-    def _checked(self, kind, name, cls):
+    def checked(self, kind, name, cls):
+        """``cls`` if it is a style class of ``kind``, else a one-line error naming ``name``."""
         base = BASES[kind]
         if not (isinstance(cls, type) and issubclass(cls, base)):
             raise ScriptError(f"{kind} style {name} is not a {base.__name__} subclass")
@@ -963,7 +973,7 @@ class Registry:
                                   f"{' and '.join(sorted(enabled))}; uninstall one of them")
             (ep,) = enabled.values()
             cls = self._load_entry_point(kind, name, ep)
-        self._loaded[key] = self._checked(kind, name, cls)
+        self._loaded[key] = self.checked(kind, name, cls)
         return self._loaded[key]
 
 

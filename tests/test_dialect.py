@@ -198,3 +198,16 @@ def test_liggghts_2_spellings_of_its_granular_models(make_sim):
     lammps.command("atom_style sphere\nregion box block -1 1 -1 1 0 2 units box\ncreate_box 1 box")
     with pytest.raises(ScriptError, match="missing argument"):
         lammps.command("pair_style gran/hertz/history")
+
+
+def test_a_liggghts_2_wall_name_in_a_lammps_script_is_refused_before_the_run(pdps_cli):
+    """LIGGGHTS 2.x's wall names are the granular plugin's spellings (Style.respell), not LAMMPS
+    fixes: in a LAMMPS script the line is refused when the script is read, before any step runs."""
+    result = pdps_cli("atom_style sphere\nregion box block -1 1 -1 1 0 2 units box\ncreate_box 1 box\n"
+                      "run 10\nfix floor all wall/gran/hooke/history primitive type 1 zplane 0.0\n",
+                      "--dialect", "lammps")
+    assert result.returncode == 1
+    assert result.stderr.strip() == (
+        "ERROR: in.test:5: fix: fix style wall/gran/hooke/history is LIGGGHTS 2.x's spelling of wall/gran "
+        "model hooke tangential history; read the script as LIGGGHTS (--dialect liggghts)")
+    assert "Loop time" not in result.stdout

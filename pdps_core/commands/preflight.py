@@ -2,7 +2,9 @@
 unknown command or an unknown style, is refused at that line now, before hours of running.
 
 Only what cannot change while the script runs is checked: command names (the core's table) and style
-names (the installed plugins', by name, without importing them). A line whose words depend on
+names (the installed plugins', by name, without importing them), and, for pair_style and fix lines,
+what the style's ``respell`` makes of a dialect's spelling (LIGGGHTS 2.x's granular names: the
+style's module is imported here, where it would be at its line). A line whose words depend on
 variables (``$x``, ``${name}``, ``$(formula)``) is left to its turn, as are the lines of files the
 script includes or jumps to, and everything a command checks against the simulation's state (groups,
 types, arguments). LAMMPS reads a script line by line; this check adds to that, it never accepts
@@ -16,7 +18,6 @@ from ..script.lexer import logical_lines, split_words, strip_comment
 from ..script.unsupported import unsupported
 from ..styles import registry
 from . import COMMANDS
-from .styles import _liggghts_legacy
 
 
 def unknown_command(name):
@@ -33,9 +34,9 @@ def _style_named(sim, words):
     """(kind, style) a line defines, as its command will look it up, or None."""
     name, args = words[0], words[1:]
     if name == "pair_style" and args and args[0] != "none":
-        return "pair", _liggghts_legacy(sim, args[0], args[1:])[0]
+        return "pair", args[0]
     if name == "fix" and len(args) >= 3:
-        return "fix", _liggghts_legacy(sim, args[2], args[3:], wall=True)[0]
+        return "fix", args[2]
     if name in ("compute", "analyze", "dump") and len(args) >= 3:
         return name, args[2]
     if name == "region" and len(args) >= 2:
@@ -59,5 +60,8 @@ def preflight(sim, text, source):
             named = _style_named(sim, words)
             if named is not None and named[1] not in registry.names(named[0]):
                 registry.lookup(*named)         # raises the lookup's own one line
+            if named is not None and named[0] in ("pair", "fix"):
+                words_after = words[2:] if named[0] == "pair" else words[4:]
+                registry.lookup(*named).respell(sim.dialect.name, words_after)
         except ScriptError as exc:
             raise exc.locate(source, number, words[0]) from None

@@ -7,48 +7,14 @@ from . import command
 from .words import choice, count, integer, number, type_range
 
 
-# LIGGGHTS 2.x spellings of its granular models, still in its own tutorials (conveyor):
-# ``pair_style gran/hertz/history`` with no coefficients reads the material from fix property/global,
-# as ``pair_style gran model hertz tangential history`` does; the same for the wall fix's style
-LIGGGHTS_LEGACY_MODELS = {
-    "gran/hertz/history": ["model", "hertz", "tangential", "history"],
-    "gran/hooke/history": ["model", "hooke", "tangential", "history"],
-    "gran/hooke": ["model", "hooke", "tangential", "no_history"],
-}
-
-
-# model settings a 2.x line may carry after its style (LIGGGHTS's note on the 3.x syntax change), and
-# for walls after the geometry too: they go where today's spelling wants them, after the model
-LIGGGHTS_MODEL_SETTINGS = ("rolling_friction", "cohesion", "tangential_damping", "limitForce",
-                           "absolute_damping", "viscous")
-
-
-def _liggghts_legacy(sim, style, rest, wall=False):
-    """(style, words) with a LIGGGHTS 2.x granular spelling read as today's, else as given."""
-    if getattr(sim.dialect, "name", None) != "liggghts":
-        return style, rest
-    base = style[len("wall/"):] if wall and style.startswith("wall/gran/") else style
-    model = LIGGGHTS_LEGACY_MODELS.get(base)
-    if model is None or (wall and base == style):
-        return style, rest
-    rest = list(rest)
-    if not wall:
-        if rest and rest[0] not in LIGGGHTS_MODEL_SETTINGS:
-            return style, rest         # coefficients given: LAMMPS's style of that name
-        return "gran", model + rest
-    if rest and rest[0] == "type":
-        rest = ["primitive"] + rest    # 2.x: wall/gran/hooke/history type 1 xplane -0.5
-    if not rest or rest[0] not in ("mesh", "primitive"):
-        return style, rest
-    settings, geometry, k = [], [], 0
-    while k < len(rest):
-        if rest[k] in LIGGGHTS_MODEL_SETTINGS and k + 1 < len(rest):
-            settings += rest[k:k + 2]
-            k += 2
-        else:
-            geometry.append(rest[k])
-            k += 1
-    return "wall/gran", model + settings + geometry
+def spelled(sim, kind, name, words):
+    """The style class and words a line names, as the script's dialect means them (Style.respell)."""
+    cls = registry.lookup(kind, name)
+    respelled = cls.respell(sim.dialect.name, list(words))
+    if respelled is None:
+        return cls, list(words)
+    cls, words = respelled
+    return registry.checked(kind, name, cls), list(words)
 
 
 @command("pair_style")
@@ -58,10 +24,8 @@ def pair_style(sim, args):
     if args[0] == "none":
         sim.styles.pair = None
         return
-    style, rest = _liggghts_legacy(sim, args[0], args[1:])
-    args = [style, *rest]
-    cls = registry.lookup("pair", args[0])
-    pair = cls(sim, cls.parse(args[1:]))
+    cls, words = spelled(sim, "pair", args[0], args[1:])
+    pair = cls(sim, cls.parse(words))
     if sim.pair is not None and sim.pair.name == pair.name:
         pair.coeffs = sim.pair.coeffs          # LAMMPS keeps coefficients when the style is the same
     sim.styles.pair = pair
@@ -93,13 +57,13 @@ def _create(sim, kind, table, args, usage):
     ident, group, style = args[0], args[1], args[2]
     sim.require_box(kind)
     sim.require_group(group)
-    cls = registry.lookup(kind, style)
+    cls, words = spelled(sim, kind, style, args[3:])
     previous = table.get(ident)
     if previous is not None and kind != "fix":
         raise ScriptError(f"{kind} {ident} is already defined")
-    if previous is not None and previous.name != style:
+    if previous is not None and previous.name != cls.name:
         raise ScriptError(f"fix {ident} is already defined with style {previous.name}; unfix it first")
-    instance = cls(sim, ident, group, cls.parse(args[3:]))
+    instance = cls(sim, ident, group, cls.parse(words))
     sim.particles.request_all(cls.per_atom)
     table[ident] = instance          # a replaced fix keeps its place in the order
     return instance
@@ -115,9 +79,6 @@ def _remove(sim, kind, table, args):
 
 @command("fix")
 def fix(sim, args):
-    if len(args) >= 3:
-        style, rest = _liggghts_legacy(sim, args[2], args[3:], wall=True)
-        args = [args[0], args[1], style, *rest]
     _create(sim, "fix", sim.fixes, args, "fix ID GROUP STYLE args")
 
 

@@ -40,7 +40,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
-from pdps_granular_contact import contact_models, lammps_classic
+from pdps_granular_contact import contact_models, lammps_classic, liggghts2
 from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 
 HISTORY_NAME = "gran_shear"
@@ -207,6 +207,17 @@ class PairGran(Pair):
     model = lammps_classic.HOOKE
     history_width = 3         # values per contact: the tangential spring
     history_name = HISTORY_NAME
+
+    @classmethod
+    def respell(cls, dialect, words):
+        """In a LIGGGHTS script, this style without coefficients is its 2.x spelling of pair gran."""
+        if dialect != "liggghts" or cls.name not in liggghts2.MODELS:
+            return None
+        today = liggghts2.pair_words(cls.name, words)
+        if today is None:
+            return None
+        from .gran_model import PairGranModel
+        return PairGranModel, today
 
     def __init__(self, sim, args):
         super().__init__(sim, args)
