@@ -583,6 +583,9 @@ class Fix(Style):
     virial_default: ClassVar[bool] = False
     virial_after: ClassVar[str] = "post_force"
     minimize_idle: ClassVar[bool] = False
+    # the fix holds its group's particles at rest (LAMMPS's fix freeze): granular pair styles give a
+    # contact with a held particle the other one's mass as its effective mass, as LAMMPS does
+    holds_at_rest: ClassVar[bool] = False
     next_reneighbor: int | None = None
 
     def __init__(self, sim, id, group, args):

@@ -32,6 +32,7 @@ from ._common import chosen
 
 class FixFreeze(Fix):
     name = "freeze"
+    holds_at_rest = True        # granular pair styles read it (Fix.holds_at_rest)
     minimize_idle = True         # LAMMPS's fix freeze has no min_post_force (recorded: a minimization ignores it)
     usage = "fix ID GROUP freeze"
 

@@ -245,9 +245,10 @@ class PairGran(Pair):
         return cutoffs
 
     def frozen_group_bit(self, sim):
-        """The group bit of the first fix freeze (its particles give a contact the partner's mass)."""
+        """The group bit of the first fix holding particles at rest (fix freeze: its particles give a
+        contact the partner's mass)."""
         for fix in sim.fixes.values():
-            if fix.name == "freeze":
+            if fix.holds_at_rest:
                 return int(sim.groups.bit(fix.group))
         return 0
 
