@@ -20,3 +20,14 @@ class ContactTable(Protocol):
     worked out afresh. compute pair/contact and pair/gran/local read it."""
 
     def contacts(self, sim, group="all") -> dict: ...
+
+
+@runtime_checkable
+class HeatTransport(Protocol):
+    """A fix carrying heat through the contacts (fix heat/gran, as LIGGGHTS's): at most one per
+    simulation. ``contact_heat_flux(sim, i, j, r)`` gives, for contacts between particle rows i and
+    j at distances r (n each), the heat flowing into i from j (power: energy/time), by the fix's
+    own conduction law and the current temperatures; valid once a run has started (compute
+    pair/gran/local's heatFlux reads it)."""
+
+    def contact_heat_flux(self, sim, i, j, r): ...

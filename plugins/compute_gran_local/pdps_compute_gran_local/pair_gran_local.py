@@ -33,23 +33,16 @@ Needs ``pair_style gran``. Example::
     dump contacts all local 1000 contacts.txt c_cpgl[1] c_cpgl[2] c_cpgl[3] c_cpgl[7] c_cpgl[8]
 """
 
-import math
 
 import numpy as np
 
-from pdps_core.api import Compute, ContactTable, ScriptError, StyleArgs
+from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs
+from pdps_granular_contact.liggghts import intersection_area
 
 # keyword -> columns, in LIGGGHTS's order
 COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,
            "heatFlux": 1}
 DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
-
-
-def intersection_area(r, ri, rj):
-    """pi a^2 of the circle where spheres at distance r intersect; the smaller one's cross-section
-    once its centre is inside the other (as the LIGGGHTS laws and heat/gran take it)."""
-    circle = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
-    return np.where(r < np.maximum(ri, rj), math.pi * np.minimum(ri, rj) ** 2, circle)
 
 
 class ComputePairGranLocal(Compute):
@@ -119,19 +112,7 @@ class ComputePairGranLocal(Compute):
         return flag.astype(np.float64)
 
     def _heat_flux(self, sim, i, j, r):
-        heat = next((f for f in sim.fixes.values() if f.name in ("heat/gran", "heat/gran/conduction")), None)
-        if heat is None or getattr(heat, "conductivity", None) is None:
+        heat = next((f for f in sim.fixes.values() if isinstance(f, HeatTransport)), None)
+        if heat is None:
             raise ScriptError(f"compute {self.id} (pair/gran/local): heatFlux needs a fix heat/gran (and a run)")
-        p = sim.particles
-        ri, rj = p.radius[i], p.radius[j]
-        ki, kj = heat.conductivity[p.type[i]], heat.conductivity[p.type[j]]
-        if heat.mode == 0:
-            area = intersection_area(r, ri, rj)
-        elif heat.mode == 1:
-            area = np.full(len(i), heat.area_constant)
-        else:
-            area = math.pi * np.maximum(ri, rj) ** 2
-        with np.errstate(invalid="ignore", divide="ignore"):
-            h = np.where((ki > 0) & (kj > 0), 4 * ki * kj / (ki + kj) * np.sqrt(np.maximum(area, 0.0)), 0.0)
-        temp = p.arrays["Temp"]
-        return h * (temp[j] - temp[i])
+        return heat.contact_heat_flux(sim, i, j, r)

@@ -66,8 +66,8 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
-from pdps_granular_contact.liggghts import read_property
+from pdps_core.api import Fix, HeatTransport, ScriptError, StyleArgs, keyword
+from pdps_granular_contact.liggghts import intersection_area, read_property
 
 OVERLAP, CONSTANT, PROJECTION = 0, 1, 2
 AREAS = {"overlap": OVERLAP, "constant": CONSTANT, "projection": PROJECTION}
@@ -175,7 +175,7 @@ class FixHeatGran(Fix):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         for fix in sim.fixes.values():
-            if fix.name in ("heat/gran", "heat/gran/conduction") and fix is not self:
+            if isinstance(fix, HeatTransport) and fix is not self:
                 raise ScriptError(f"fix {fix.id} ({fix.name}) already transports heat: one heat/gran fix at most")
         p = sim.particles
         p.request("Temp", 1, default=args.initial_temperature)
@@ -208,6 +208,25 @@ class FixHeatGran(Fix):
         conduction(a["x"], a["radius"], a["Temp"], a["type"], self.conductivity, nlist.offsets, nlist.neighbors,
                    p.nlocal, self.mode, self.area_constant, a["heatFlux"], a["directionalHeatFlux"])
         sim.comm.reverse_comm(p, ("heatFlux", "directionalHeatFlux"))
+
+    def contact_heat_flux(self, sim, i, j, r):
+        """Heat into i from j of each contact (the HeatTransport capability), by the docstring's
+        conductance: 4 k_i k_j / (k_i + k_j) sqrt(A) (T_j - T_i)."""
+        if self.conductivity is None:
+            raise ScriptError(f"fix {self.id} ({self.name}): contact heat fluxes are known once a run has started")
+        p = sim.particles
+        ri, rj = p.radius[i], p.radius[j]
+        ki, kj = self.conductivity[p.type[i]], self.conductivity[p.type[j]]
+        if self.mode == OVERLAP:
+            area = intersection_area(r, ri, rj)
+        elif self.mode == CONSTANT:
+            area = np.full(len(i), self.area_constant)
+        else:
+            area = math.pi * np.maximum(ri, rj) ** 2
+        with np.errstate(invalid="ignore", divide="ignore"):
+            h = np.where((ki > 0) & (kj > 0), 4 * ki * kj / (ki + kj) * np.sqrt(np.maximum(area, 0.0)), 0.0)
+        temp = p.arrays["Temp"]
+        return h * (temp[j] - temp[i])
 
     def final_integrate(self, sim):
         p = sim.particles

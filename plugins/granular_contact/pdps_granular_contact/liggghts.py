@@ -94,6 +94,14 @@ HISTORY_WIDTH = 6
 SQRT_FIVE_SIXTHS = math.sqrt(5.0 / 6.0)
 
 
+def intersection_area(r, ri, rj):
+    """pi a^2 of the circle where spheres at distances r intersect (arrays); the smaller one's
+    cross-section once its centre is inside the other, as the cohesion laws (contact_area) and
+    LIGGGHTS 3.8's heat transfer take it."""
+    circle = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
+    return np.where(r < np.maximum(ri, rj), math.pi * np.minimum(ri, rj) ** 2, circle)
+
+
 @njit(cache=True)
 def contact_area(cohesion, wall, r, radius_i, radius_j):
     """The area the cohesion model multiplies by k (module docstring); 0 without cohesion."""
