@@ -8,6 +8,8 @@ service tests for the capability, never for a style name or an attribute's prese
 
 from typing import Protocol, runtime_checkable
 
+import numpy as np
+
 
 @runtime_checkable
 class ContactTable(Protocol):
@@ -31,3 +33,14 @@ class HeatTransport(Protocol):
     pair/gran/local's heatFlux reads it)."""
 
     def contact_heat_flux(self, sim, i, j, r): ...
+
+
+@runtime_checkable
+class GlobalProperty(Protocol):
+    """A fix holding one named global property, as LIGGGHTS's fix property/global: the material
+    constants the granular models read (youngsModulus, coefficientFriction, k_finnie, ...)."""
+
+    variable: str           # the property's name
+    style: str              # "scalar", "vector", "per_type" or "per_type_pair"
+    columns: int            # per_type_pair: the table's side; else 1
+    values: np.ndarray      # the numbers, in the order given (a table row by row)

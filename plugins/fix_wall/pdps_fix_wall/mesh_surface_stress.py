@@ -48,6 +48,7 @@ Example::
 import numpy as np
 
 from pdps_core.api import ScriptError
+from pdps_granular_contact.liggghts import find_property
 
 from .mesh_surface import FixMeshSurface
 from .wall_contact import read_numbers
@@ -90,14 +91,11 @@ class FixMeshSurfaceStress(FixMeshSurface):
     def _read_k_finnie(self, sim):
         """k_finnie of each particle type against this mesh's type, from fix property/global."""
         ntypes = sim.ntypes
-        fix = None
-        for style in sim.fixes.values():
-            if style.name == "property/global" and getattr(style, "variable", None) == "k_finnie":
-                fix = style
+        fix = find_property(sim, "k_finnie")
         if fix is None:
             raise ScriptError(f"fix {self.id} (wear finnie) needs k_finnie: fix ID all property/global "
                               f"k_finnie peratomtypepair {ntypes} V11 ... V{ntypes}{ntypes}")
-        if getattr(fix, "style", None) != "per_type_pair" or fix.columns != ntypes:
+        if fix.style != "per_type_pair" or fix.columns != ntypes:
             raise ScriptError(f"k_finnie (fix {fix.id}) must be a peratomtypepair table of {ntypes} x {ntypes} "
                               "values")
         table = np.asarray(fix.values, dtype=float).reshape(ntypes, ntypes)

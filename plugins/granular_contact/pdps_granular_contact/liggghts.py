@@ -74,7 +74,7 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError
+from pdps_core.api import GlobalProperty, ScriptError
 
 from .contact_models import restitution_beta, shear_effective, youngs_effective
 
@@ -266,10 +266,10 @@ PROPERTIES = {
 
 
 def find_property(sim, name):
-    """The fix property/global that defines ``name`` (the last one defined), or None."""
+    """The fix holding global property ``name`` (the last one defined: fix property/global), or None."""
     found = None
     for fix in sim.fixes.values():
-        if fix.name == "property/global" and getattr(fix, "variable", None) == name:
+        if isinstance(fix, GlobalProperty) and fix.variable == name:
             found = fix
     return found
 
