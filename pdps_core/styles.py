@@ -583,6 +583,8 @@ class Fix(Style):
     virial_default: ClassVar[bool] = False
     virial_after: ClassVar[str] = "post_force"
     minimize_idle: ClassVar[bool] = False
+    # the box lengths (0 x, 1 y, 2 z) the fix changes itself (fix deform): barostats refuse to share them
+    deformed_axes: tuple = ()
     # the fix holds its group's particles at rest (LAMMPS's fix freeze): granular pair styles give a
     # contact with a held particle the other one's mass as its effective mass, as LAMMPS does
     holds_at_rest: ClassVar[bool] = False
@@ -633,6 +635,10 @@ class Compute(Style):
     # normalises energies (lj units), as LAMMPS does; variables read it as it is. A style whose array
     # (ID[i][j]) is not, where its scalar is, sets extensive_array = False (LAMMPS's extarray)
     extensive: ClassVar[bool] = False
+    # what a thermostat or barostat may take the compute for (LAMMPS's tempflag, pressflag): a
+    # temperature (scalar T, vector the kinetic tensor) or a pressure (scalar p, vector the tensor)
+    gives_temperature: ClassVar[bool] = False
+    gives_pressure: ClassVar[bool] = False
 
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args

@@ -142,7 +142,7 @@ class _ThermoCompute:
     kind = "compute"
     group = "all"
     peratom = None
-    needs_energy = needs_virial = extensive = False
+    needs_energy = needs_virial = extensive = gives_temperature = gives_pressure = False
 
     def __init__(self, ident):
         self.id = ident
@@ -151,6 +151,7 @@ class _ThermoCompute:
 class _ThermoTemp(_ThermoCompute):
     """thermo_temp: compute temp of group all (thermo_modify temp leaves it as it is, as LAMMPS)."""
     name = "temp"
+    gives_temperature = True
 
     def scalar(self, sim):
         return obs.temperature(sim)
@@ -163,6 +164,7 @@ class _ThermoPress(_ThermoCompute):
     """thermo_press: compute pressure with thermo's temperature (thermo_modify temp's, as LAMMPS's
     thermo_press follows it)."""
     name = "pressure"
+    gives_pressure = True
     needs_virial = True
 
     def scalar(self, sim):

@@ -27,6 +27,7 @@ from pdps_core.api import Compute, ScriptError, StyleArgs, observables
 
 class ComputePressure(Compute):
     name = "pressure"
+    gives_pressure = True
     usage = "compute ID all pressure [TEMP-ID]"
     needs_virial = True
 

@@ -23,6 +23,7 @@ from pdps_core.api import Compute, observables
 
 class ComputeTemp(Compute):
     name = "temp"
+    gives_temperature = True
     usage = "compute ID GROUP temp"
 
     def scalar(self, sim):

@@ -291,8 +291,7 @@ class FixNH(Fix):
                 self.vol0 = self._volume(sim)
                 self.h0_inv = 1.0 / sim.box.length
             for fix in sim.fixes.values():
-                dims = getattr(fix, "deformed_axes", ())
-                if any(self.p_flag[d] for d in dims):
+                if any(self.p_flag[d] for d in fix.deformed_axes):
                     raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same "
                                       "box length")
         if self.tstat:
@@ -390,7 +389,7 @@ class FixNH(Fix):
     # ---- fix_modify temp CTEMP, press CPRESS (LAMMPS's modify_param) ----------------------------------
     def modify_param(self, sim, keyword, value):
         if keyword == "temp":
-            compute = self._named_compute(sim, value, "temp", "temperature")
+            compute = self._named_compute(sim, value, "gives_temperature", "temperature")
             self.temp_id = value
             if compute.group != "all":
                 sim.warn(f"fix {self.id} {self.name}: temperature compute {value} is of group {compute.group}, "
@@ -405,17 +404,19 @@ class FixNH(Fix):
         if keyword == "press":
             if not self.pstat:
                 raise ScriptError(f"press: fix {self.id} ({self.name}) controls no pressure")
-            self._named_compute(sim, value, "pressure", "pressure")
+            self._named_compute(sim, value, "gives_pressure", "pressure")
             self.press_id = value
             return True
         return False
 
-    def _named_compute(self, sim, ident, style, what):
+    def _named_compute(self, sim, ident, capability, what):
+        """The compute ``ident`` if it gives a ``what`` (its ``capability`` flag), else a one-line error."""
         compute = sim.computes.get(ident)
         if compute is None:
             raise ScriptError(f"compute {ident} is not defined ({what} of fix {self.id})")
-        if compute.name != style:
-            raise ScriptError(f"compute {ident} ({compute.name}) is not a {style} compute, so it gives no {what}")
+        if not getattr(type(compute), capability):
+            kind = "temp" if capability == "gives_temperature" else "pressure"
+            raise ScriptError(f"compute {ident} ({compute.name}) is not a {kind} compute, so it gives no {what}")
         return compute
 
     def _resolve_computes(self, sim):
