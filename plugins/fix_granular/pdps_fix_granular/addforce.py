@@ -68,7 +68,7 @@ class FixAddForce(Fix):
         fy: FloatOrVariable | None = param(None, unit="force")
         fz: FloatOrVariable | None = param(None, unit="force")
         drag_stokes: float | None = keyword(None, ge=0, unit="dynamic viscosity")
-        buoyancy: tuple[Axis, float, float] | None = keyword(None)
+        buoyancy: tuple[Axis, float, float] | None = keyword(None, unit=("1", "density", "acceleration"))
         region: str | None = keyword(None)
 
         @model_validator(mode="after")
