@@ -199,12 +199,19 @@ def unit_of(info):
     return extra.get("unit") if isinstance(extra, dict) else None
 
 
+def names_of(info):
+    """What each word of a declared list of names is ("region ID"), or None."""
+    extra = info.json_schema_extra
+    return extra.get("names") if isinstance(extra, dict) else None
+
+
 def parameter_lines(model):
     """One manual line per field: ``- name: type; bounds; unit; default`` (keywords marked)."""
     lines = []
     for field, info in model.model_fields.items():
         name = info.alias or field
-        parts = [_type_name(info.annotation)]
+        names = names_of(info)
+        parts = [f"{names}..." if names else _type_name(info.annotation)]
         bounds = _bounds(name, info)
         if bounds:
             parts.append(bounds)

@@ -99,16 +99,19 @@ def _check_unit(unit):
                          f"(known: {', '.join(sorted(UNIT_KINDS - {'1'}))}, combined with / or *)")
 
 
-def param(default=..., *, unit=None, **field_kwargs):
+def param(default=..., *, unit=None, names=None, **field_kwargs):
     """A script argument with the kind of quantity it is: ``cutoff: float = param(gt=0,
     unit="distance")``; no default (``...``) makes it required. ``unit`` is a kind as LAMMPS's
     ``units`` command names them ("distance", "energy", "force/velocity", "dimensionless", ...),
     or a tuple of kinds, one per member of a ``tuple[...]`` field whose members differ
     (``unit=("temperature", "temperature", "time", "1")``), or for a choice of tuples picked by
     their first word the kinds of each (``unit={"vector": "1", "chute": "degrees"}``); ``pdps doc`` shows it with the bounds
-    and the default. Other keywords are pydantic's ``Field`` ones (``gt``, ``ge``, ``lt``, ``le``,
-    ``alias``, ``default_factory``)."""
+    and the default. ``names`` says what each word of a list of names is (``names="region ID"``,
+    ``names="group ID"``), for a ``list[str]`` that is not a list of raw words. Other keywords are
+    pydantic's ``Field`` ones (``gt``, ``ge``, ``lt``, ``le``, ``alias``, ``default_factory``)."""
     extra = dict(field_kwargs.pop("json_schema_extra", None) or {})
+    if names is not None:
+        extra["names"] = names
     if unit is not None:
         kinds = unit.values() if isinstance(unit, dict) else (unit,) if isinstance(unit, str) else unit
         for kind in kinds:
@@ -121,11 +124,11 @@ def param(default=..., *, unit=None, **field_kwargs):
     return Field(default, json_schema_extra=extra or None, **field_kwargs)
 
 
-def keyword(default=None, *, unit=None, **kwargs):
+def keyword(default=None, *, unit=None, names=None, **kwargs):
     """A field given in the script as ``name value...`` (any order, after the positional words);
-    ``unit`` as for ``param``."""
+    ``unit`` and ``names`` as for ``param``."""
     extra = kwargs.pop("json_schema_extra", {}) or {}
-    return param(default, unit=unit, json_schema_extra={**extra, "keyword": True}, **kwargs)
+    return param(default, unit=unit, names=names, json_schema_extra={**extra, "keyword": True}, **kwargs)
 
 
 def _is_keyword(info):
@@ -212,9 +215,18 @@ def _read(annotation, words, i, stops, name):
     end = _stop(words, i, stops)
     if _is_union(annotation):
         members = [m for m in typing.get_args(annotation) if m is not type(None)]
-        for member in members:
-            if i < len(words) and words[i] in _first_words(member):
-                return _read(member, words, i, stops, name)
+        matching = [m for m in members if i < len(words) and words[i] in _first_words(m)]
+        if matching:
+            fits = [m for m in matching if _arity(m) is None or _arity(m) <= end - i]
+            if fits:
+                return _read(max(fits, key=lambda m: _arity(m) or len(words)), words, i, stops, name)
+            rests = [describe_type(tuple[typing.get_args(_bare(m))[1:]]) for m in matching]
+            counted = f"{_arity(matching[0]) - 1} value(s): " if len(matching) == 1 else ""
+            raise ScriptError(f"{name} {words[i]} takes {counted}{' or '.join(rests)} "
+                              f"(got {' '.join(words[i + 1:end]) or 'nothing'})")
+        if i < len(words) and all(_first_words(m) for m in members):
+            choices = [word for m in members for word in _first_words(m)]
+            raise ScriptError(f"{name} must be one of {', '.join(choices)} (got {words[i]})")
         arities = {_arity(m) for m in members}
         if len(arities) > 1 or None in arities:
             fixed = sorted(a for a in arities if a is not None and a <= end - i)
@@ -392,9 +404,11 @@ def parse_args(model, words, usage=""):
     positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
     values, i = {}, 0
-    for name, info in positional:
+    for k, (name, info) in enumerate(positional):
+        # an optional style word (wall/reflect's) is left out when a later argument follows instead
         choices = _bare(info.annotation)
-        skipped = (not info.is_required() and i < len(words) and typing.get_origin(choices) is typing.Literal
+        skipped = (not info.is_required() and i < len(words) and k + 1 < len(positional)
+                   and typing.get_origin(choices) is typing.Literal
                    and words[i] not in map(str, typing.get_args(choices)))
         if i >= len(words) or words[i] in keywords or skipped:
             if info.is_required():

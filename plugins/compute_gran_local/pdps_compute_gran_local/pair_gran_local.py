@@ -37,7 +37,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs
+from pdps_core.api import Compute, ScriptError, StyleArgs, param
 
 # keyword -> columns, in LIGGGHTS's order
 COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,
@@ -57,7 +57,7 @@ class ComputePairGranLocal(Compute):
     usage = "compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta] [heatFlux]"
 
     class Args(StyleArgs):
-        keywords: list[str] = []
+        keywords: list[str] = param([], names="column (" + "|".join(COLUMNS) + ")")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
