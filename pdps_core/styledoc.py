@@ -16,7 +16,7 @@ import annotated_types
 from pydantic_core import PydanticUndefined
 
 from .run.hookspec import HOOKS
-from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword
+from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword, member_names
 
 NONE = "-"
 
@@ -137,6 +137,8 @@ def _number(value):
 
 
 def _type_name(annotation):
+    if member_names(annotation):
+        return " ".join(member_names(annotation))
     origin, members = typing.get_origin(annotation), typing.get_args(annotation)
     if origin is typing.Annotated:
         return _type_name(members[0])

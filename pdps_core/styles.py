@@ -138,6 +138,8 @@ def _is_keyword(info):
 
 def _arity(annotation):
     """How many words a field takes: 1, n for tuple[...] of n, or None for 'all the rest'."""
+    if member_names(annotation):
+        annotation = _bare(annotation)
     origin = typing.get_origin(annotation)
     if origin is typing.Annotated:
         return _arity(typing.get_args(annotation)[0])
@@ -155,14 +157,22 @@ def _arity(annotation):
 
 
 def _bare(annotation):
-    """The annotation without ``Annotated[...]`` and without ``None`` in a union."""
+    """The annotation without ``Annotated[...]`` and without ``None`` in a union; a NamedTuple as
+    the ``tuple[...]`` of its members."""
     while typing.get_origin(annotation) is typing.Annotated:
         annotation = typing.get_args(annotation)[0]
     if _is_union(annotation):
         members = [m for m in typing.get_args(annotation) if m is not type(None)]
         if len(members) == 1:
             return _bare(members[0])
+    if member_names(annotation):
+        return tuple[tuple(typing.get_type_hints(annotation, include_extras=True).values())]
     return annotation
+
+
+def member_names(annotation):
+    """The names of a NamedTuple's members (an entry whose words errors and ``pdps doc`` name), or ()."""
+    return getattr(annotation, "_fields", ()) if isinstance(annotation, type) and issubclass(annotation, tuple) else ()
 
 
 def _is_union(annotation):
@@ -188,6 +198,8 @@ def _first_words(annotation):
 
 def describe_type(annotation):
     """How a script writes a value of ``annotation``: "number", "vector X Y Z | chute ANGLE", ..."""
+    if member_names(annotation):
+        return " ".join(member_names(annotation))
     annotation = _bare(annotation)
     origin, members = typing.get_origin(annotation), typing.get_args(annotation)
     if origin is typing.Literal:
@@ -234,10 +246,10 @@ def _read(annotation, words, i, stops, name):
             value = tuple(words[i:i + taken])
             return (value[0] if taken == 1 and 1 in arities else value), i + taken
     if _variadic(annotation):
-        entry = _bare(typing.get_args(annotation)[0]) if typing.get_args(annotation) else str
+        entry = typing.get_args(annotation)[0] if typing.get_args(annotation) else str
         size = _arity(entry)
-        if typing.get_origin(entry) is tuple and size is not None and size > 1:
-            return _entries(entry, words, i, end, name), end
+        if typing.get_origin(_bare(entry)) is tuple and size is not None and size > 1:
+            return _entries(entry, words, i, end, name, stops), end
         value = words[i:end]
         return (list(value) if typing.get_origin(annotation) is list else tuple(value)), end
     if typing.get_origin(annotation) is tuple:
@@ -265,18 +277,20 @@ def _read(annotation, words, i, stops, name):
     return tuple(words[i:i + arity]), i + arity
 
 
-def _entries(entry, words, i, end, name):
+def _entries(entry, words, i, end, name, stops=()):
     """A run of ``entry`` tuples (``xlo 0 xhi EDGE``, LIGGGHTS's ``keyword value`` runs) in
     ``words[i:end]``, each checked for its first word and its length."""
     size, first, run = _arity(entry), _first_words(entry), []
     while i < end:
         if first and words[i] not in first:
+            if stops:
+                raise ScriptError(f"unknown keyword {words[i]} (known: {', '.join((*first, *stops))})")
             raise ScriptError(f"{name}: expected {', '.join(first)} (got {words[i]})")
         taken = words[i:min(i + size, end)]
         if len(taken) < size:
-            missing = size - len(taken)
-            wanted = "a value" if missing == 1 else f"{missing} more values"
-            raise ScriptError(f"{name}: {' '.join(taken)} needs {wanted} ({describe_type(entry)})")
+            names = member_names(entry)
+            rest = " ".join(names[1:]) if names else describe_type(tuple[typing.get_args(_bare(entry))[1:]])
+            raise ScriptError(f"{name} {taken[0]} needs {rest} (got {' '.join(taken[1:]) or 'nothing'})")
         run.append(tuple(taken))
         i += size
     return run
@@ -366,14 +380,20 @@ def _member_at(annotation, path):
     return annotation
 
 
-def _named(error, values):
+def _named(error, values, model):
     """The error with its location named as a user reads it: an entry of a run or of a repeated
-    keyword by its first word (``walls xlo``), union members and indices left out."""
+    keyword by its first word (``wall xlo``) and a NamedTuple's member by its name (``wall xlo:
+    cutoff``), union members and indices left out."""
     loc = error["loc"]
     value = values.get(loc[0]) if loc else None
     if len(loc) > 2 and isinstance(loc[1], int) and isinstance(value, list) and loc[1] < len(value):
         entry = value[loc[1]]
         if isinstance(entry, tuple) and entry and loc[2] != 0:
+            fields = {info.alias or name: info for name, info in model.model_fields.items()}
+            info = fields.get(loc[0])
+            names = member_names(_member_at(info.annotation, loc[1:2])) if info is not None else ()
+            if names and isinstance(loc[2], int) and loc[2] < len(names):
+                return {**error, "loc": (f"{loc[0]} {entry[0]}: {names[loc[2]]}", *loc[3:])}
             return {**error, "loc": (f"{loc[0]} {entry[0]}", *loc[2:])}
     return error
 
@@ -383,7 +403,7 @@ def _explain_all(model, errors, values):
     picked, or, when they fit none, what the union at that place accepts."""
     error = _best(errors)
     if error is not None:
-        return explain(_named(error, values))
+        return explain(_named(error, values, model))
     error = next(e for e in errors if any(_label(part) for part in e["loc"]))
     cut = next(k for k, part in enumerate(error["loc"]) if _label(part))
     fields = {info.alias or name: info for name, info in model.model_fields.items()}
@@ -394,7 +414,7 @@ def _explain_all(model, errors, values):
     for part in path:
         if isinstance(shown, (list, tuple)) and isinstance(part, int) and part < len(shown):
             shown = shown[part]
-    named = _named({"loc": error["loc"][:cut]}, values)
+    named = _named({"loc": error["loc"][:cut]}, values, model)
     return explain({"type": "union", "loc": named["loc"], "input": shown}, union)
 
 

@@ -10,7 +10,7 @@ import pytest
 from pdps_core.api import (FloatOrVariable, ScriptError, StyleArgs, VariableRef, choice, integer, keyword, number,
                            param, parse_args, registry, yes_no)
 from pdps_core.styledoc import document, models, names_of, unit_of
-from pdps_core.styles import KINDS, StyleEntry
+from pdps_core.styles import KINDS, StyleEntry, member_names
 
 Direction = (tuple[Literal["vector"], float, float, float] | tuple[Literal["chute"], float]
              | tuple[Literal["spherical"], float, float])
@@ -112,8 +112,8 @@ def test_a_run_of_keyword_value_pairs_keeps_its_order():
 
 
 @pytest.mark.parametrize("words, message", [
-    ("xlo 1 xhi", "walls: xhi needs a value (xlo|xhi|ylo|yhi number|EDGE)"),
-    ("sideways xlo 1", "walls: expected xlo, xhi, ylo, yhi (got sideways)"),
+    ("xlo 1 xhi", "walls xhi needs number|EDGE (got nothing)"),
+    ("sideways xlo 1", "unknown keyword sideways (known: xlo, xhi, ylo, yhi, units)"),
     ("xlo 1 xhi abc", "walls xhi must be a finite number or EDGE (got abc)"),
     ("xlo 1e60", "walls must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e+60)"),
     ("specular units box", "missing argument walls"),
@@ -129,6 +129,8 @@ def _numeric(annotation):
     """Whether a value of ``annotation`` holds a number anywhere (a tuple member, a union member)."""
     if annotation in (float, int, VariableRef):
         return True
+    if member_names(annotation):
+        return any(_numeric(member) for member in typing.get_type_hints(annotation).values())
     return any(_numeric(member) for member in typing.get_args(annotation) if isinstance(member, type)
                or typing.get_args(member))
 
@@ -153,6 +155,22 @@ def _hand_parsed(cls):
     return any("parse" in vars(klass) for klass in cls.__mro__ if not klass.__module__.startswith("pdps_core"))
 
 
+# styles still reading raw words: each must fail the check below, so that one converted leaves the list
+NOT_YET_DECLARED = {
+    ("pair", "formula"), ("pair", "hybrid"), ("pair", "hybrid/overlay"),
+    ("fix", "ave/spatial"), ("fix", "ave/time"), ("fix", "deform"), ("fix", "heat/gran"),
+    ("fix", "heat/gran/conduction"), ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
+    ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"), ("fix", "momentum"),
+    ("fix", "move/mesh"), ("fix", "nve/limit"), ("fix", "particledistribution/discrete"),
+    ("fix", "particletemplate/sphere"), ("fix", "print"), ("fix", "property/atom"), ("fix", "property/global"),
+    ("fix", "rigid"), ("fix", "rigid/nph"), ("fix", "rigid/nph/small"), ("fix", "rigid/npt"),
+    ("fix", "rigid/npt/small"), ("fix", "rigid/nve"), ("fix", "rigid/nve/small"), ("fix", "rigid/nvt"),
+    ("fix", "rigid/nvt/small"), ("fix", "rigid/small"), ("fix", "wall/dem"), ("fix", "wall/gran"),
+    ("fix", "wall/mesh"), ("compute", "wall/gran/local"), ("analyze", "ave/space"), ("analyze", "ave/time"),
+    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"), ("region", "polygon"),
+}
+
+
 @pytest.mark.parametrize("kind, name", list(_styles()))
 def test_every_style_declares_each_argument_with_its_unit(kind, name):
     cls = registry.lookup(kind, name)
@@ -164,7 +182,10 @@ def test_every_style_declares_each_argument_with_its_unit(kind, name):
                 problems.append(f"{label} is a list of raw words (declare each value, or names=...)")
             if _numeric(info.annotation) and not unit_of(info):
                 problems.append(f"{label} is a number without a unit")
-    assert not problems, f"{kind} {name}: " + "; ".join(problems)
+    if (kind, name) in NOT_YET_DECLARED:
+        assert problems, f"{kind} {name} declares its arguments now: take it off NOT_YET_DECLARED"
+    else:
+        assert not problems, f"{kind} {name}: " + "; ".join(problems)
 
 
 @pytest.mark.parametrize("kind, name", list(_styles()))
