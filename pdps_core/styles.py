@@ -88,7 +88,9 @@ def _numbers(value):
 UNIT_KINDS = frozenset({
     "mass", "distance", "time", "energy", "velocity", "force", "torque", "temperature", "pressure",
     "dynamic viscosity", "charge", "dipole", "electric field", "density", "acceleration", "area",
-    "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1"})
+    "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1",
+    # the values of a property another style reads and gives the unit of (fix property/atom, /global)
+    "as the property"})
 
 
 def _check_unit(unit):
@@ -113,12 +115,14 @@ def param(default=..., *, unit=None, names=None, **field_kwargs):
     if names is not None:
         extra["names"] = names
     if unit is not None:
-        kinds = unit.values() if isinstance(unit, dict) else (unit,) if isinstance(unit, str) else unit
-        for kind in kinds:
-            for part in kind.split() if isinstance(unit, dict) else (kind,):
-                _check_unit(part)
-        extra["unit"] = (unit if isinstance(unit, str) else " ".join(unit) if not isinstance(unit, dict)
-                         else "; ".join(f"{word}: {kind}" for word, kind in unit.items()))
+        variants = unit if isinstance(unit, dict) else {None: unit}
+        shown = {}
+        for word, kinds in variants.items():
+            kinds = (kinds,) if isinstance(kinds, str) else tuple(kinds)
+            for kind in kinds:
+                _check_unit(kind)
+            shown[word] = " ".join(kinds)
+        extra["unit"] = shown[None] if None in shown else "; ".join(f"{w}: {k}" for w, k in shown.items())
     if "default_factory" in field_kwargs:
         return Field(json_schema_extra=extra or None, **field_kwargs)
     return Field(default, json_schema_extra=extra or None, **field_kwargs)
