@@ -231,7 +231,11 @@ def _read(annotation, words, i, stops, name):
     end = _stop(words, i, stops)
     if _is_union(annotation):
         members = [m for m in typing.get_args(annotation) if m is not type(None)]
-        matching = [m for m in members if i < len(words) and words[i] in _first_words(m)]
+        word = words[i] if i < len(words) else None
+        if any(typing.get_origin(_bare(m)) is typing.Literal and word in map(str, typing.get_args(_bare(m)))
+               for m in members):
+            return word, i + 1
+        matching = [m for m in members if word in _first_words(m)]
         if matching:
             fits = [m for m in matching if _arity(m) is None or _arity(m) <= end - i]
             if fits:
