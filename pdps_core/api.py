@@ -9,7 +9,7 @@ by name, outside it.
 """
 
 from .capabilities import ContactTable, GlobalProperty, HeatTransport
-from .commands.words import type_range
+from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
@@ -25,10 +25,10 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable",
            "GlobalProperty", "HeatTransport", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
-           "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "close_slot", "find_slot",
-           "keyword", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
+           "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
+           "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
-           "type_range"]
+           "type_range", "yes_no"]
 
 # What a style may read of the objects the core hands it: object -> {name: what it is}.
 CONTRACT = {

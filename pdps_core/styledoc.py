@@ -16,7 +16,7 @@ import annotated_types
 from pydantic_core import PydanticUndefined
 
 from .run.hookspec import HOOKS
-from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword
+from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword, member_names
 
 NONE = "-"
 
@@ -137,6 +137,8 @@ def _number(value):
 
 
 def _type_name(annotation):
+    if member_names(annotation):
+        return " ".join(member_names(annotation))
     origin, members = typing.get_origin(annotation), typing.get_args(annotation)
     if origin is typing.Annotated:
         return _type_name(members[0])
@@ -199,12 +201,19 @@ def unit_of(info):
     return extra.get("unit") if isinstance(extra, dict) else None
 
 
+def names_of(info):
+    """What each word of a declared list of names is ("region ID"), or None."""
+    extra = info.json_schema_extra
+    return extra.get("names") if isinstance(extra, dict) else None
+
+
 def parameter_lines(model):
     """One manual line per field: ``- name: type; bounds; unit; default`` (keywords marked)."""
     lines = []
     for field, info in model.model_fields.items():
         name = info.alias or field
-        parts = [_type_name(info.annotation)]
+        names = names_of(info)
+        parts = [f"{names}..." if names else _type_name(info.annotation)]
         bounds = _bounds(name, info)
         if bounds:
             parts.append(bounds)

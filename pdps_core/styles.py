@@ -15,6 +15,7 @@ import difflib
 import importlib
 import math
 import os
+import types
 import typing
 from dataclasses import dataclass
 from importlib import metadata
@@ -64,12 +65,22 @@ class StyleArgs(BaseModel):
     @field_validator("*", mode="after")
     @classmethod
     def _representable(cls, value, info):
-        for number in (value if isinstance(value, (list, tuple)) else (value,)):
-            if isinstance(number, float) and number != 0.0 and not (
-                    limits.MIN_SIZE <= abs(number) <= limits.MAX_SIZE):
-                raise PydanticCustomError("magnitude", "must be 0 or of magnitude from {low:g} to {high:g}",
-                                          {"low": limits.MIN_SIZE, "high": limits.MAX_SIZE})
+        for number in _numbers(value):
+            if number != 0.0 and not limits.MIN_SIZE <= abs(number) <= limits.MAX_SIZE:
+                bounds = {"low": limits.MIN_SIZE, "high": limits.MAX_SIZE}
+                if not isinstance(value, float):
+                    bounds["value"] = number        # the one number of several that is out of range
+                raise PydanticCustomError("magnitude", "must be 0 or of magnitude from {low:g} to {high:g}", bounds)
         return value
+
+
+def _numbers(value):
+    """The floats in a value, at any depth of lists and tuples (runs of entries, repeated keywords)."""
+    if isinstance(value, float):
+        yield value
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            yield from _numbers(item)
 
 
 # the kinds of quantity LAMMPS's ``units`` command names, and counts; a unit of ``param`` is one of
@@ -77,7 +88,9 @@ class StyleArgs(BaseModel):
 UNIT_KINDS = frozenset({
     "mass", "distance", "time", "energy", "velocity", "force", "torque", "temperature", "pressure",
     "dynamic viscosity", "charge", "dipole", "electric field", "density", "acceleration", "area",
-    "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1"})
+    "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1",
+    # the values of a property another style reads and gives the unit of (fix property/atom, /global)
+    "as the property"})
 
 
 def _check_unit(unit):
@@ -88,26 +101,38 @@ def _check_unit(unit):
                          f"(known: {', '.join(sorted(UNIT_KINDS - {'1'}))}, combined with / or *)")
 
 
-def param(default=..., *, unit=None, **field_kwargs):
+def param(default=..., *, unit=None, names=None, **field_kwargs):
     """A script argument with the kind of quantity it is: ``cutoff: float = param(gt=0,
     unit="distance")``; no default (``...``) makes it required. ``unit`` is a kind as LAMMPS's
-    ``units`` command names them ("distance", "energy", "force/velocity", "dimensionless", ...);
-    ``pdps doc`` shows it with the bounds and the default. Other keywords are pydantic's ``Field``
-    ones (``gt``, ``ge``, ``lt``, ``le``, ``alias``, ``default_factory``)."""
+    ``units`` command names them ("distance", "energy", "force/velocity", "dimensionless", ...),
+    or a tuple of kinds, one per member of a ``tuple[...]`` field whose members differ
+    (``unit=("temperature", "temperature", "time", "1")``), or for a choice of tuples picked by
+    their first word the kinds of each (``unit={"vector": "1", "chute": "degrees"}``); ``pdps doc`` shows it with the bounds
+    and the default. ``names`` says what each word of a list of names is (``names="region ID"``,
+    ``names="group ID"``), for a ``list[str]`` that is not a list of raw words. Other keywords are
+    pydantic's ``Field`` ones (``gt``, ``ge``, ``lt``, ``le``, ``alias``, ``default_factory``)."""
     extra = dict(field_kwargs.pop("json_schema_extra", None) or {})
+    if names is not None:
+        extra["names"] = names
     if unit is not None:
-        _check_unit(unit)
-        extra["unit"] = unit
+        variants = unit if isinstance(unit, dict) else {None: unit}
+        shown = {}
+        for word, kinds in variants.items():
+            kinds = (kinds,) if isinstance(kinds, str) else tuple(kinds)
+            for kind in kinds:
+                _check_unit(kind)
+            shown[word] = " ".join(kinds)
+        extra["unit"] = shown[None] if None in shown else "; ".join(f"{w}: {k}" for w, k in shown.items())
     if "default_factory" in field_kwargs:
         return Field(json_schema_extra=extra or None, **field_kwargs)
     return Field(default, json_schema_extra=extra or None, **field_kwargs)
 
 
-def keyword(default=None, *, unit=None, **kwargs):
+def keyword(default=None, *, unit=None, names=None, **kwargs):
     """A field given in the script as ``name value...`` (any order, after the positional words);
-    ``unit`` as for ``param``."""
+    ``unit`` and ``names`` as for ``param``."""
     extra = kwargs.pop("json_schema_extra", {}) or {}
-    return param(default, unit=unit, json_schema_extra={**extra, "keyword": True}, **kwargs)
+    return param(default, unit=unit, names=names, json_schema_extra={**extra, "keyword": True}, **kwargs)
 
 
 def _is_keyword(info):
@@ -117,26 +142,211 @@ def _is_keyword(info):
 
 def _arity(annotation):
     """How many words a field takes: 1, n for tuple[...] of n, or None for 'all the rest'."""
+    if member_names(annotation):
+        annotation = _bare(annotation)
     origin = typing.get_origin(annotation)
     if origin is typing.Annotated:
         return _arity(typing.get_args(annotation)[0])
     if origin is tuple:
         members = typing.get_args(annotation)
-        return None if (len(members) == 2 and members[1] is Ellipsis) else len(members)
+        if (len(members) == 2 and members[1] is Ellipsis) or any(_variadic(m) for m in members):
+            return None
+        return len(members)
     if origin is list:
         return None
-    if origin in (typing.Union, getattr(__import__("types"), "UnionType", None)):
+    if _is_union(annotation):
         arities = {_arity(a) for a in typing.get_args(annotation) if a is not type(None)}
         return arities.pop() if len(arities) == 1 else 1
     return 1
 
 
-def explain(error):
-    """One pydantic error as the sentence a user reads."""
-    loc = ".".join(str(part) for part in error["loc"] if not isinstance(part, int)) or "argument"
+def _bare(annotation):
+    """The annotation without ``Annotated[...]`` and without ``None`` in a union; a NamedTuple as
+    the ``tuple[...]`` of its members."""
+    while typing.get_origin(annotation) is typing.Annotated:
+        annotation = typing.get_args(annotation)[0]
+    if _is_union(annotation):
+        members = [m for m in typing.get_args(annotation) if m is not type(None)]
+        if len(members) == 1:
+            return _bare(members[0])
+    if member_names(annotation):
+        return tuple[tuple(typing.get_type_hints(annotation, include_extras=True).values())]
+    return annotation
+
+
+def member_names(annotation):
+    """The names of a NamedTuple's members (an entry whose words errors and ``pdps doc`` name), or ()."""
+    return getattr(annotation, "_fields", ()) if isinstance(annotation, type) and issubclass(annotation, tuple) else ()
+
+
+def _is_union(annotation):
+    return typing.get_origin(annotation) in (typing.Union, types.UnionType)
+
+
+def _variadic(annotation):
+    """Whether one member of a tuple takes a run of words: ``tuple[X, ...]`` or ``list[X]``."""
+    annotation = _bare(annotation)
+    origin, members = typing.get_origin(annotation), typing.get_args(annotation)
+    return origin is list or (origin is tuple and len(members) == 2 and members[1] is Ellipsis)
+
+
+def _first_words(annotation):
+    """The words a ``tuple[Literal[...], ...]`` must start with (how a union picks it), else ()."""
+    annotation = _bare(annotation)
+    if typing.get_origin(annotation) is tuple and not _variadic(annotation):
+        first = _bare(typing.get_args(annotation)[0])
+        if typing.get_origin(first) is typing.Literal:
+            return tuple(str(word) for word in typing.get_args(first))
+    return ()
+
+
+def describe_type(annotation):
+    """How a script writes a value of ``annotation``: "number", "vector X Y Z | chute ANGLE", ..."""
+    if member_names(annotation):
+        return " ".join(member_names(annotation))
+    annotation = _bare(annotation)
+    origin, members = typing.get_origin(annotation), typing.get_args(annotation)
+    if origin is typing.Literal:
+        return "|".join(map(str, members))
+    if _is_union(annotation):
+        return " | ".join(describe_type(m) for m in members if m is not type(None))
+    if _variadic(annotation):
+        return f"{describe_type(members[0]) if members else 'word'}..."
+    if origin is tuple:
+        return " ".join(describe_type(m).replace(" | ", "|") for m in members)
+    return {float: "number", int: "integer", bool: "yes|no", str: "word", VariableRef: "v_NAME"}.get(
+        annotation, getattr(annotation, "__name__", str(annotation)))
+
+
+def _stop(words, i, stops):
+    return next((k for k in range(i, len(words)) if words[k] in stops), len(words))
+
+
+def _read(annotation, words, i, stops, name):
+    """One value of ``annotation`` read from ``words[i:]``: (value for pydantic, index after it).
+    A union of tuples is picked by its first word (a ``Literal``), else it is the longest that fits
+    before the next keyword; a variadic member takes the words up to the next keyword, or as many
+    as an integer member just before it says (``group N G1 ... GN``)."""
+    annotation = _bare(annotation)
+    end = _stop(words, i, stops)
+    if _is_union(annotation):
+        members = [m for m in typing.get_args(annotation) if m is not type(None)]
+        word = words[i] if i < len(words) else None
+        if any(typing.get_origin(_bare(m)) is typing.Literal and word in map(str, typing.get_args(_bare(m)))
+               for m in members):
+            return word, i + 1
+        matching = [m for m in members if word in _first_words(m)]
+        if matching:
+            fits = [m for m in matching if _arity(m) is None or _arity(m) <= end - i]
+            if fits:
+                return _read(max(fits, key=lambda m: _arity(m) or len(words)), words, i, stops, name)
+            rests = [describe_type(tuple[typing.get_args(_bare(m))[1:]]) for m in matching]
+            counted = f"{_arity(matching[0]) - 1} value(s): " if len(matching) == 1 else ""
+            raise ScriptError(f"{name} {words[i]} takes {counted}{' or '.join(rests)} "
+                              f"(got {' '.join(words[i + 1:end]) or 'nothing'})")
+        if i < len(words) and all(_first_words(m) for m in members):
+            choices = [word for m in members for word in _first_words(m)]
+            raise ScriptError(f"{name} must be one of {', '.join(choices)} (got {words[i]})")
+        arities = {_arity(m) for m in members}
+        if len(arities) > 1 or None in arities:
+            fixed = sorted(a for a in arities if a is not None and a <= end - i)
+            taken = end - i if None in arities or not fixed else fixed[-1]
+            value = tuple(words[i:i + taken])
+            return (value[0] if taken == 1 and 1 in arities else value), i + taken
+    if _variadic(annotation):
+        entry = typing.get_args(annotation)[0] if typing.get_args(annotation) else str
+        size = _arity(entry)
+        if typing.get_origin(_bare(entry)) is tuple and size is not None and size > 1:
+            return _entries(entry, words, i, end, name, stops), end
+        value = words[i:end]
+        return (list(value) if typing.get_origin(annotation) is list else tuple(value)), end
+    if typing.get_origin(annotation) is tuple:
+        value, k = [], i
+        members = typing.get_args(annotation)
+        for m, member in enumerate(members):
+            if _variadic(member):
+                count = _stop(words, k, stops) - k
+                if m and _bare(members[m - 1]) is int and words[k - 1].isdigit():
+                    count = int(words[k - 1])
+                    if k + count > len(words):
+                        raise ScriptError(f"{name} {' '.join(words[i:k])} needs {count} value(s) after "
+                                          f"{words[k - 1]} (got {len(words) - k})")
+                value.append(tuple(words[k:k + count]))
+                k += count
+            else:
+                member_value, k = _read(member, words, k, (), name) if k < len(words) else (None, k + 1)
+                if member_value is None:
+                    break
+                value.append(member_value)
+        return tuple(value), min(k, len(words))
+    arity = _arity(annotation)
+    if arity is None or arity == 1:
+        return words[i], i + 1
+    return tuple(words[i:i + arity]), i + arity
+
+
+def _entries(entry, words, i, end, name, stops=()):
+    """A run of ``entry`` tuples (``xlo 0 xhi EDGE``, LIGGGHTS's ``keyword value`` runs) in
+    ``words[i:end]``, each checked for its first word and its length."""
+    size, first, run = _arity(entry), _first_words(entry), []
+    while i < end:
+        if first and words[i] not in first:
+            if stops:
+                raise ScriptError(f"unknown keyword {words[i]} (known: {', '.join((*first, *stops))})")
+            raise ScriptError(f"{name}: expected {', '.join(first)} (got {words[i]})")
+        taken = words[i:min(i + size, end)]
+        if len(taken) < size:
+            names = member_names(entry)
+            rest = " ".join(names[1:]) if names else describe_type(tuple[typing.get_args(_bare(entry))[1:]])
+            raise ScriptError(f"{name} {taken[0]} needs {rest} (got {' '.join(taken[1:]) or 'nothing'})")
+        run.append(tuple(taken))
+        i += size
+    return run
+
+
+def _label(part):
+    """Whether a part of a pydantic error location names a union member (not a field or index)."""
+    return isinstance(part, str) and ("[" in part or part in _SCALAR_LABELS)
+
+
+_SCALAR_LABELS = {"float", "int", "str", "bool", "VariableRef", "function-after", "function-before",
+                  "function-plain", "function-wrap", "is-instance[VariableRef]"}
+_MISMATCH = {"literal_error", "missing", "too_short", "too_long"}
+
+
+def _best(errors):
+    """Of the errors pydantic gives for one value, the one the user's words mean: a union member
+    whose first word matched and whose length was right, else None (no member fits)."""
+    first = errors[0]["loc"]
+    same = [e for e in errors if e["loc"][:1] == first[:1]]
+    labelled = [e for e in same if any(_label(part) for part in e["loc"])]
+    if not labelled:
+        return errors[0]
+    members = {}
+    for error in labelled:
+        cut = next(k for k, part in enumerate(error["loc"]) if _label(part))
+        members.setdefault(error["loc"][:cut + 1], []).append(error)
+    for errs in members.values():
+        wrong_shape = any(e["type"] in _MISMATCH and (e["type"] != "literal_error" or e["loc"][-1] == 0)
+                          for e in errs)
+        scalar = all(_label(e["loc"][-1]) for e in errs)
+        if not wrong_shape and not scalar:
+            return errs[0]
+    return None
+
+
+def explain(error, annotation=None):
+    """One pydantic error as the sentence a user reads; ``annotation`` (the field's type) words the
+    error of a value that fits none of a union's members."""
+    loc = ".".join(str(part) for part in error["loc"] if not isinstance(part, int) and not _label(part)) \
+        or "argument"
     kind, ctx, value = error["type"], error.get("ctx", {}), error.get("input")
     shown = " ".join(map(str, value)) if isinstance(value, (list, tuple)) else value
     got = f"(got {shown})"
+    if annotation is not None:
+        alternatives = [describe_type(m) for m in typing.get_args(_bare(annotation)) if m is not type(None)]
+        wording = {"number": "a finite number", "integer": "an integer"}
+        return f"{loc} must be {' or '.join(wording.get(a, a) for a in alternatives)} {got}"
     limits = {"greater_than": ">", "greater_than_equal": ">=", "less_than": "<", "less_than_equal": "<="}
     if kind in limits:
         bound = ctx.get({"greater_than": "gt", "greater_than_equal": "ge",
@@ -144,6 +354,7 @@ def explain(error):
         bound = f"{bound:g}" if isinstance(bound, (int, float)) else bound
         return f"{loc} must be {limits[kind]} {bound} {got}"
     if kind == "magnitude":
+        got = f"(got {ctx['value']:g})" if "value" in ctx else got
         return f"{loc} must be 0 or of magnitude from {ctx['low']:g} to {ctx['high']:g} {got}"
     if kind in ("float_parsing", "float_type", "finite_number"):
         return f"{loc} must be a finite number {got}"
@@ -163,30 +374,76 @@ def explain(error):
     return f"{loc}: {message} {got}" if value is not None else f"{loc}: {message}"
 
 
+def _member_at(annotation, path):
+    """The type at ``path`` (list and tuple indices) inside ``annotation``."""
+    for part in path:
+        annotation = _bare(annotation)
+        members = typing.get_args(annotation)
+        if typing.get_origin(annotation) is list or _variadic(annotation):
+            annotation = members[0]
+        elif typing.get_origin(annotation) is tuple and part < len(members):
+            annotation = members[part]
+        else:
+            break
+    return annotation
+
+
+def _named(error, values, model):
+    """The error with its location named as a user reads it: an entry of a run or of a repeated
+    keyword by its first word (``wall xlo``) and a NamedTuple's member by its name (``wall xlo:
+    cutoff``), union members and indices left out."""
+    loc = error["loc"]
+    value = values.get(loc[0]) if loc else None
+    if len(loc) > 2 and isinstance(loc[1], int) and isinstance(value, list) and loc[1] < len(value):
+        entry = value[loc[1]]
+        if isinstance(entry, tuple) and entry and loc[2] != 0:
+            fields = {info.alias or name: info for name, info in model.model_fields.items()}
+            info = fields.get(loc[0])
+            names = member_names(_member_at(info.annotation, loc[1:2])) if info is not None else ()
+            if names and isinstance(loc[2], int) and loc[2] < len(names):
+                return {**error, "loc": (f"{loc[0]} {entry[0]}: {names[loc[2]]}", *loc[3:])}
+            return {**error, "loc": (f"{loc[0]} {entry[0]}", *loc[2:])}
+    return error
+
+
+def _explain_all(model, errors, values):
+    """The sentence for a ValidationError of ``model``: the error of the union member the words
+    picked, or, when they fit none, what the union at that place accepts."""
+    error = _best(errors)
+    if error is not None:
+        return explain(_named(error, values, model))
+    error = next(e for e in errors if any(_label(part) for part in e["loc"]))
+    cut = next(k for k, part in enumerate(error["loc"]) if _label(part))
+    fields = {info.alias or name: info for name, info in model.model_fields.items()}
+    info = fields.get(error["loc"][0])
+    path = error["loc"][1:cut]
+    union = _member_at(info.annotation, path) if info is not None else None
+    shown = values.get(error["loc"][0])
+    for part in path:
+        if isinstance(shown, (list, tuple)) and isinstance(part, int) and part < len(shown):
+            shown = shown[part]
+    named = _named({"loc": error["loc"][:cut]}, values, model)
+    return explain({"type": "union", "loc": named["loc"], "input": shown}, union)
+
+
 def parse_args(model, words, usage=""):
     """Read script words into ``model``; any problem becomes a one-line ScriptError."""
     fields = {info.alias or name: info for name, info in model.model_fields.items()}
     positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
     values, i = {}, 0
-    for name, info in positional:
-        if i >= len(words) or words[i] in keywords:
+    for k, (name, info) in enumerate(positional):
+        # an optional style word (wall/reflect's) is left out when a later argument follows instead
+        choices = _bare(info.annotation)
+        skipped = (not info.is_required() and i < len(words) and k + 1 < len(positional)
+                   and typing.get_origin(choices) is typing.Literal
+                   and words[i] not in map(str, typing.get_args(choices)))
+        if i >= len(words) or words[i] in keywords or skipped:
             if info.is_required():
                 hint = f"; usage: {usage}" if usage else ""
                 raise ScriptError(f"missing argument {name}{hint}")
             continue
-        arity = _arity(info.annotation)
-        if arity is None:
-            # a list takes the words up to the first keyword of the model
-            end = next((k for k in range(i, len(words)) if words[k] in keywords), len(words))
-            values[name] = list(words[i:end])
-            i = end
-        elif arity == 1:
-            values[name] = words[i]
-            i += 1
-        else:
-            values[name] = tuple(words[i:i + arity])
-            i += arity
+        values[name], i = _read(info.annotation, words, i, keywords, name)
     while i < len(words):
         word = words[i]
         if word not in keywords:
@@ -194,22 +451,28 @@ def parse_args(model, words, usage=""):
                 raise ScriptError(f"too many arguments: unexpected {word!r}" + (f"; usage: {usage}" if usage else ""))
             raise ScriptError(f"unknown keyword {word} (known: {', '.join(keywords)})")
         info = keywords[word]
-        repeated = typing.get_origin(info.annotation) is list
-        member = typing.get_args(info.annotation)[0] if repeated else info.annotation
+        repeated = typing.get_origin(_bare(info.annotation)) is list
+        member = typing.get_args(_bare(info.annotation))[0] if repeated else info.annotation
         arity = _arity(member)
-        arity = 1 if arity is None else arity
-        taken = words[i + 1:i + 1 + arity]
-        if len(taken) < arity:
-            raise ScriptError(f"keyword {word} needs {arity} value(s) (got {len(taken)})")
-        if repeated:
-            values.setdefault(word, []).append(taken[0] if arity == 1 else tuple(taken))
+        if arity is None or (_is_union(_bare(member)) and len({_arity(m) for m in typing.get_args(_bare(member))
+                                                               if m is not type(None)}) > 1):
+            if i + 1 >= len(words) or words[i + 1] in keywords:
+                raise ScriptError(f"keyword {word} needs a value: {describe_type(member)}")
+            value, end = _read(member, words, i + 1, keywords, word)
         else:
-            values[word] = taken[0] if arity == 1 else tuple(taken)
-        i += 1 + arity
+            taken = words[i + 1:i + 1 + arity]
+            if len(taken) < arity:
+                raise ScriptError(f"keyword {word} needs {arity} value(s) (got {len(taken)})")
+            value, end = _read(member, words, i + 1, (), word)
+        if repeated:
+            values.setdefault(word, []).append(value)
+        else:
+            values[word] = value
+        i = end
     try:
         return model(**values)
     except ValidationError as exc:
-        raise ScriptError(explain(exc.errors()[0])) from None
+        raise ScriptError(_explain_all(model, exc.errors(), values)) from None
 
 
 # ---- style base classes -------------------------------------------------------------------------

@@ -27,9 +27,8 @@ Example::
 """
 
 import numpy as np
-from pydantic import Field
 
-from pdps_core.api import Compute, ScriptError, StyleArgs
+from pdps_core.api import Compute, ScriptError, StyleArgs, param
 
 from .peratom import ATTRIBUTES, attribute, check_attribute
 
@@ -39,7 +38,7 @@ class ComputePropertyAtom(Compute):
     usage = "compute ID GROUP property/atom attribute... (" + " ".join(ATTRIBUTES) + ")"
 
     class Args(StyleArgs):
-        attributes: list[str] = Field(min_length=1)
+        attributes: list[str] = param(min_length=1, names="attribute")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -42,9 +42,8 @@ import re
 from typing import Literal
 
 import numpy as np
-from pydantic import Field
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables, peratom_column
+from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param, peratom_column
 
 from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom
 
@@ -57,7 +56,7 @@ class ComputeReduce(Compute):
 
     class Args(StyleArgs):
         mode: Literal["sum", "min", "max", "ave"]
-        inputs: list[str] = Field(min_length=1)
+        inputs: list[str] = param(min_length=1, names="input (x, c_ID, c_ID[i], f_ID, v_NAME, ...)")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

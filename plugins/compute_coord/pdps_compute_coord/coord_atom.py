@@ -38,7 +38,7 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, param, parse_args, type_range
+from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param, type_range
 
 
 @njit(cache=True)
@@ -66,21 +66,8 @@ class ComputeCoordAtom(Compute):
     class Args(StyleArgs):
         style: Literal["cutoff"]
         cutoff: float = param(gt=0, unit="distance")
-        types: list[str] = param(default_factory=list)
-        group: str = param("all")
-
-    @classmethod
-    def parse(cls, words):
-        words = list(words)
-        group = "all"
-        if "group" in words:
-            # LAMMPS puts 'group G2' after the type ranges, which take every other word
-            at = words.index("group")
-            if at + 2 != len(words):
-                raise ScriptError(f"group takes one group name at the end; usage: {cls.usage}")
-            group = words[at + 1]
-            words = words[:at]
-        return parse_args(cls.Args, words, cls.usage).model_copy(update={"group": group})
+        types: list[str] = param(default_factory=list, names="type range (I, I*J, *)")
+        group: str = keyword("all")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

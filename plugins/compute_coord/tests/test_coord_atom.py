@@ -83,8 +83,8 @@ def test_read_before_a_run_is_a_clear_error(tmp_path):
     ("radius 1.0", "style must be one of 'cutoff' (got radius)"),
     ("cutoff -1", "cutoff must be > 0 (got -1)"),
     ("cutoff 1.0 4", "type 4 is out of range 1..2"),
-    ("cutoff 1.0 group", "group takes one group name at the end; "
-                         "usage: compute ID GROUP coord/atom cutoff RC [T1 T2 ...] [group G2]"),
+    ("cutoff 1.0 group", "keyword group needs 1 value(s) (got 0)"),
+    ("cutoff 1.0 group all 2", "unknown keyword 2 (known: group)"),
 ])
 def test_bad_arguments(tmp_path, words, message):
     x, types = system()

@@ -36,7 +36,7 @@ Needs ``pair_style gran``. Example::
 
 import numpy as np
 
-from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs
+from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs, param
 from pdps_granular_contact.liggghts import intersection_area
 
 # keyword -> columns, in LIGGGHTS's order
@@ -50,7 +50,7 @@ class ComputePairGranLocal(Compute):
     usage = "compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta] [heatFlux]"
 
     class Args(StyleArgs):
-        keywords: list[str] = []
+        keywords: list[str] = param([], names="column (" + "|".join(COLUMNS) + ")")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

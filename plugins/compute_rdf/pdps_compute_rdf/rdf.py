@@ -64,7 +64,7 @@ import math
 
 import numpy as np
 from numba import njit
-from pydantic import Field, model_validator
+from pydantic import model_validator
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, check_bins, check_images, keyword, param
 
@@ -185,7 +185,7 @@ class ComputeRDF(Compute):
 
     class Args(StyleArgs):
         nbin: int = param(gt=0, unit="dimensionless")
-        pairs: list[str] = Field(default_factory=list)
+        pairs: list[str] = param(default_factory=list, names="type range (I J pairs)")
         cutoff: float | None = keyword(None, gt=0, unit="distance")
 
         @model_validator(mode="before")

@@ -44,7 +44,7 @@ class DumpCustomVTK(MeshDump):
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
         file: str
-        attributes: list[str] = []
+        attributes: list[str] = param([], names="attribute")
 
     def __init__(self, sim, id, group, args):
         if "%" in args.file:

@@ -36,7 +36,7 @@ Example::
 import re
 
 import numpy as np
-from pydantic import Field, field_validator
+from pydantic import field_validator
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param, peratom_column
 
@@ -61,7 +61,7 @@ class DumpCustom(TextDump):
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
         file: str
-        columns: list[str] = Field(min_length=1)
+        columns: list[str] = param(min_length=1, names="column")
 
         @field_validator("columns")
         @classmethod

@@ -44,7 +44,7 @@ class DumpLocal(Dump):
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
         file: str
-        attributes: list[str] = []
+        attributes: list[str] = param([], names="attribute")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

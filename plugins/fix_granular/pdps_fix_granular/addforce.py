@@ -51,12 +51,9 @@ import math
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
+from pdps_core.api import Fix, FloatOrVariable, StyleArgs, VariableRef, keyword, param
 
 from ._common import AXES, Axis, chosen, require_plane, require_spheres
-
-KEYWORDS = ("drag_stokes", "buoyancy", "region")
-
 
 class FixAddForce(Fix):
     name = "addforce"
@@ -68,7 +65,9 @@ class FixAddForce(Fix):
         fy: FloatOrVariable | None = param(None, unit="force")
         fz: FloatOrVariable | None = param(None, unit="force")
         drag_stokes: float | None = keyword(None, ge=0, unit="dynamic viscosity")
-        buoyancy: tuple[Axis, float, float] | None = keyword(None)
+        # the manual's example gives RHO and G, its syntax line one value: one is read as RHO*G
+        buoyancy: tuple[Axis, float, float] | tuple[Axis, float] | None = keyword(
+            None, unit=("1", "density", "acceleration"))
         region: str | None = keyword(None)
 
         @model_validator(mode="after")
@@ -80,22 +79,6 @@ class FixAddForce(Fix):
             if not force and self.drag_stokes is None and self.buoyancy is None:
                 raise ValueError("nothing to add: give FX FY FZ, drag_stokes MU or buoyancy DIM RHO G")
             return self
-
-    @classmethod
-    def parse(cls, words):
-        words = list(words)
-        if "buoyancy" in words:
-            # the manual's example gives RHO and G, its syntax line one value: read one as RHO*G
-            start = words.index("buoyancy") + 1
-            values = 0
-            while start + values < len(words) and words[start + values] not in KEYWORDS and values < 3:
-                values += 1
-            if values == 2:
-                words.insert(start + 2, "1")
-            elif values != 3:
-                raise ScriptError(f"buoyancy takes DIM RHO G or DIM RHO_G (got "
-                                  f"{' '.join(words[start:start + values]) or 'nothing'})")
-        return super().parse(words)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -132,7 +115,7 @@ class FixAddForce(Fix):
             radius = p.radius[:n][selected]
             f[selected] -= (6.0 * math.pi * self.args.drag_stokes * radius)[:, None] * p.v[:n][selected]
         if self.args.buoyancy is not None:
-            axis, rho, g = self.args.buoyancy
+            axis, rho, g = (*self.args.buoyancy, 1.0)[:3]
             radius = p.radius[:n][selected]
             volume = math.pi * radius ** 2 if sim.dimension == 2 else 4.0 / 3.0 * math.pi * radius ** 3
             f[selected, AXES[axis]] += rho * g * volume

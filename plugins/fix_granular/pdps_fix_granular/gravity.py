@@ -38,14 +38,9 @@ import math
 from typing import Literal
 
 import numpy as np
-from pydantic import model_validator
-
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
 from ._common import NO_RMASS, add_weight
-
-VALUES = {"vector": "X Y Z", "chute": "ANGLE", "spherical": "PHI THETA"}
-
 
 def direction(style, values, dimension):
     """Unit vector of the acceleration for a style and its values (angles in degrees)."""
@@ -76,20 +71,13 @@ class FixGravity(Fix):
 
     class Args(StyleArgs):
         magnitude: float = param(unit="acceleration")
-        style: Literal["vector", "chute", "spherical"]
-        values: list[float] = []
-
-        @model_validator(mode="after")
-        def _count(self):
-            wanted = len(VALUES[self.style].split())
-            if len(self.values) != wanted:
-                raise ValueError(f"gravity {self.style} takes {VALUES[self.style]} "
-                                 f"(got {' '.join(f'{c:g}' for c in self.values) or 'nothing'})")
-            return self
+        direction: (tuple[Literal["vector"], float, float, float] | tuple[Literal["chute"], float]
+                    | tuple[Literal["spherical"], float, float]) = param(
+            unit={"vector": "dimensionless", "chute": "degrees", "spherical": "degrees"})
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        self.direction = direction(args.style, args.values, sim.dimension)
+        self.direction = direction(args.direction[0], args.direction[1:], sim.dimension)
         self.acceleration = tuple(float(c) for c in args.magnitude * self.direction)
 
     def extract(self, name):

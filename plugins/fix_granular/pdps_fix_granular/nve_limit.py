@@ -109,16 +109,10 @@ class FixNVELimit(Fix):
     usage = "fix ID GROUP nve/limit [absolute|radius_ratio] XMAX [disc]"
 
     class Args(StyleArgs):
-        limitstyle: Literal["absolute", "radius_ratio"] = "absolute"
+        # LAMMPS writes "nve/limit XMAX", LIGGGHTS "nve/limit absolute|radius_ratio XMAX"
+        limitstyle: Literal["absolute", "radius_ratio"] = param("absolute")
         xmax: float = param(gt=0, unit="distance")     # or radii, with radius_ratio
         inertia: Literal["disc"] | None = None
-
-    @classmethod
-    def parse(cls, words):
-        # LAMMPS writes "nve/limit XMAX", LIGGGHTS "nve/limit absolute|radius_ratio XMAX"
-        if not words or words[0] not in LIMIT_STYLES:
-            words = ["absolute", *words]
-        return super().parse(words)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

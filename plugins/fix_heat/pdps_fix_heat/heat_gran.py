@@ -65,6 +65,7 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
+from pydantic import PositiveFloat, model_validator
 
 from pdps_core.api import Fix, HeatTransport, ScriptError, StyleArgs, keyword
 from pdps_granular_contact.liggghts import intersection_area, read_property
@@ -148,29 +149,17 @@ class FixHeatGran(Fix):
 
     class Args(StyleArgs):
         initial_temperature: float = keyword(..., unit="temperature")
-        contact_area: Literal["overlap", "projection", "constant"] = keyword("overlap")
-        area: float | None = keyword(None, gt=0, unit="area")
-        area_correction: Literal["no"] = keyword("no")
+        # LIGGGHTS's "contact_area constant A"
+        contact_area: Literal["overlap", "projection"] | tuple[Literal["constant"], PositiveFloat] = keyword(
+            "overlap", unit={"constant": ("1", "area")})
+        area_correction: Literal["yes", "no"] = keyword("no")
 
-    @classmethod
-    def parse(cls, words):
-        words = list(words)
-        # LIGGGHTS's "contact_area constant A": the area is the constant's own keyword here
-        for k in range(len(words) - 2):
-            if words[k] == "contact_area" and words[k + 1] == "constant":
-                words.insert(k + 2, "area")
-                break
-        if "area" in words and "constant" not in words:
-            raise ScriptError(f"area is given with contact_area constant A; usage: {cls.usage}")
-        if "area_correction" in words:
-            k = words.index("area_correction")
-            if k + 1 < len(words) and words[k + 1] == "yes":
-                raise ScriptError("area_correction yes is not supported (it needs youngsModulusOriginal); "
-                                  "use area_correction no")
-        args = super().parse(words)
-        if args.contact_area == "constant" and args.area is None:
-            raise ScriptError(f"contact_area constant needs the area A; usage: {cls.usage}")
-        return args
+        @model_validator(mode="after")
+        def _supported(self):
+            if self.area_correction == "yes":
+                raise ValueError("area_correction yes is not supported (it needs youngsModulusOriginal); "
+                                 "use area_correction no")
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -182,8 +171,9 @@ class FixHeatGran(Fix):
         p.request("heatFlux", 1)
         p.request("heatSource", 1)
         p.request("directionalHeatFlux", 3)
-        self.mode = AREAS[args.contact_area]
-        self.area_constant = args.area or 0.0
+        constant = isinstance(args.contact_area, tuple)
+        self.mode = AREAS["constant" if constant else args.contact_area]
+        self.area_constant = args.contact_area[1] if constant else 0.0
         self.conductivity = self.capacity = None
 
     def init_run(self, sim):

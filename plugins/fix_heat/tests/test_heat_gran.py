@@ -108,8 +108,7 @@ create_atoms 1 single 0 0 0 units box
 @pytest.mark.parametrize("line, message", [
     ("fix h all heat/gran", "fix: missing argument initial_temperature"),
     ("fix h all heat/gran initial_temperature 300 contact_area constant",
-     "fix: contact_area constant needs the area A; usage: fix ID GROUP heat/gran initial_temperature T0 "
-     "[contact_area overlap|projection|constant A] [area_correction no]"),
+     "fix: contact_area constant takes 1 value(s): number (got nothing)"),
     ("fix h all heat/gran initial_temperature 300 area_correction yes",
      "fix: area_correction yes is not supported (it needs youngsModulusOriginal); use area_correction no"),
     ("set atom 1 property/atom Temp 400", "set: set property/atom: Temp is not a per-atom property of one value a "

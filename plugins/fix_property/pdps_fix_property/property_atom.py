@@ -39,7 +39,7 @@ class FixPropertyAtom(Fix):
         restart: Literal["yes", "no"]
         ghost: Literal["yes", "no"]
         reverse: Literal["yes", "no"]
-        defaults: list[float] = []
+        defaults: list[float] = param([], unit="as the property")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -56,7 +56,7 @@ class ComputeRigidLocal(Compute):
 
     class Args(StyleArgs):
         rigid_id: str = param()
-        inputs: list[str] = param(default_factory=list)
+        inputs: list[str] = param(default_factory=list, names="input")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

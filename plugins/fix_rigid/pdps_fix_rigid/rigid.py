@@ -266,7 +266,8 @@ class FixRigid(Fix):
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
-        langevin: tuple[float, float, float, int] | None = keyword(None)
+        langevin: tuple[float, float, float, int] | None = keyword(
+            None, unit=("temperature", "temperature", "time", "dimensionless"))
         gravity: str | None = keyword(None)
 
     @classmethod

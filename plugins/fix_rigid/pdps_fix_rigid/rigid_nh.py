@@ -156,14 +156,14 @@ class BarostatArgs(StyleArgs):
     """The keywords of the barostat and its thermostat, added to a rigid fix's own (``Args(Base.Args,
     BarostatArgs)``)."""
     temp: tuple[float, float, float] | None = keyword(None, unit="temperature")
-    tparam: tuple[int, int, int] = keyword((10, 1, 3))
+    tparam: tuple[int, int, int] = keyword((10, 1, 3), unit="1")
     iso: Triple = keyword(None, unit="pressure")
     aniso: Triple = keyword(None, unit="pressure")
     x: Triple = keyword(None, unit="pressure")
     y: Triple = keyword(None, unit="pressure")
     z: Triple = keyword(None, unit="pressure")
     couple: Literal["none", "xyz", "xy", "yz", "xz"] | None = keyword(None)
-    pchain: int = keyword(10)
+    pchain: int = keyword(10, unit="1")
     dilate: str = keyword("all")
 
 

@@ -155,7 +155,7 @@ class FixRigidNVT(FixRigidNVE):
 
     class Args(FixRigid.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")
-        tparam: tuple[int, int, int] = keyword((10, 1, 3))
+        tparam: tuple[int, int, int] = keyword((10, 1, 3), unit="1")
 
     @classmethod
     def parse(cls, words):

@@ -292,7 +292,8 @@ class FixRigidSmall(Fix):
         bodystyle: Literal["molecule"] = param()
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
-        langevin: tuple[float, float, float, int] | None = keyword(None)
+        langevin: tuple[float, float, float, int] | None = keyword(
+            None, unit=("temperature", "temperature", "time", "dimensionless"))
 
     @classmethod
     def parse(cls, words):

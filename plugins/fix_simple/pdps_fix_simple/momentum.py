@@ -20,9 +20,14 @@ N the interval (steps); at least one of linear (flags 0 or 1) and angular. Examp
     fix drift all momentum 100 linear 1 1 1 angular
 """
 
-import numpy as np
+from typing import Literal
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, observables, param
+import numpy as np
+from pydantic import model_validator
+
+from pdps_core.api import Fix, StyleArgs, keyword, observables, param
+
+Flag = Literal["0", "1"]
 
 
 class FixMomentum(Fix):
@@ -31,26 +36,20 @@ class FixMomentum(Fix):
 
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
-        words: list[str] = []
+        linear: tuple[Flag, Flag, Flag] | None = keyword(None)
+        angular: tuple[()] | None = keyword(None)
+        rescale: tuple[()] | None = keyword(None)
+
+        @model_validator(mode="after")
+        def _something_to_remove(self):
+            if self.linear is None and self.angular is None:
+                raise ValueError("fix momentum needs linear and/or angular")
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words, k = list(args.words), 0
-        self.linear, self.angular, self.rescale = None, False, False
-        while k < len(words):
-            if words[k] == "linear":
-                flags = words[k + 1:k + 4]
-                if len(flags) != 3 or any(f not in ("0", "1") for f in flags):
-                    raise ScriptError(f"linear takes three flags 0 or 1 (got {' '.join(flags) or 'none'})")
-                self.linear = np.array([f == "1" for f in flags])
-                k += 4
-            elif words[k] in ("angular", "rescale"):
-                setattr(self, words[k], True)
-                k += 1
-            else:
-                raise ScriptError(f"unknown keyword {words[k]} (known: linear, angular, rescale)")
-        if self.linear is None and not self.angular:
-            raise ScriptError("fix momentum needs linear and/or angular")
+        self.linear = None if args.linear is None else np.array([flag == "1" for flag in args.linear])
+        self.angular, self.rescale = args.angular is not None, args.rescale is not None
 
     def end_of_step(self, sim):
         if sim.step % self.args.every:

@@ -18,7 +18,11 @@ Example::
     fix p all print 100 "step $(step) T $(temp:%.4f)" file temp.txt screen no
 """
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, param
+from typing import Literal
+
+from pydantic import model_validator
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
 
 class FixPrint(Fix):
@@ -27,28 +31,26 @@ class FixPrint(Fix):
 
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
-        words: list[str]
+        text: str = param()
+        file: str | None = keyword(None)
+        append: str | None = keyword(None)
+        screen: Literal["yes", "no"] = keyword("yes")
+        title: str | None = keyword(None)
+
+        @model_validator(mode="after")
+        def _one_file(self):
+            if self.file is not None and self.append is not None:
+                raise ValueError(f"give file or append, not both (got file {self.file} append {self.append})")
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        if not words:
-            raise ScriptError(f"fix print needs the text to print; usage: {self.usage}")
-        self.text, rest = words[0], words[1:]
-        self.path, mode, self.screen, title = None, "w", True, f"# Fix print output for fix {id}"
-        if len(rest) % 2:
-            raise ScriptError(f"expected keyword/value pairs after the text; usage: {self.usage}")
-        for key, value in zip(rest[::2], rest[1::2]):
-            if key in ("file", "append"):
-                self.path, mode = sim.resolve(value), "w" if key == "file" else "a"
-            elif key == "screen":
-                if value not in ("yes", "no"):
-                    raise ScriptError(f"screen must be yes or no (got {value})")
-                self.screen = value == "yes"
-            elif key == "title":
-                title = value
-            else:
-                raise ScriptError(f"unknown keyword {key} (known: file, append, screen, title)")
+        self.text = args.text
+        named = args.file if args.file is not None else args.append
+        self.path = None if named is None else sim.resolve(named)
+        mode = "a" if args.append is not None else "w"
+        self.screen = args.screen == "yes"
+        title = args.title if args.title is not None else f"# Fix print output for fix {id}"
         self.handle = None
         if self.path is not None and sim.comm.is_root:
             try:

@@ -57,7 +57,7 @@ def test_enforce2d_keeps_particles_in_the_plane():
 
 @pytest.mark.parametrize("line, message", [
     ("fix 2 all momentum 10", "fix momentum needs linear and/or angular"),
-    ("fix 2 all momentum 10 linear 1 2 0", "linear takes three flags 0 or 1 (got 1 2 0)"),
+    ("fix 2 all momentum 10 linear 1 2 0", "linear must be one of '0' or '1' (got 2)"),
     ("fix 2 all temp/rescale 10 1 1 0.1 1.5", "fraction must be <= 1 (got 1.5)"),
     ("fix 2 all temp/berendsen 1 1 0", "damp must be > 0 (got 0)"),
     ("fix 2 all enforce2d", "fix enforce2d needs a 2-d simulation (dimension 2)"),

@@ -1,11 +1,25 @@
 """Flat walls on box faces, as LAMMPS's fix wall/* give them: ``face coord`` with coord a number or
 EDGE, scaled by the lattice spacing in ``units lattice``."""
 
+from typing import Literal
+
 import numpy as np
 
 from pdps_core.api import ScriptError
 
 FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
+Face = Literal["xlo", "xhi", "ylo", "yhi", "zlo", "zhi"]
+
+
+def once_each(walls):
+    """The walls ``[(face, coord), ...]`` as ``{face: coord}`` in the order given; a face given
+    twice is an error."""
+    given = {}
+    for face, value in walls:
+        if face in given:
+            raise ValueError(f"wall {face} is given twice")
+        given[face] = value
+    return given
 
 
 def wall_planes(sim, coords, units):

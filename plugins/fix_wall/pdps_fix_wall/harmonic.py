@@ -34,12 +34,23 @@ Example::
     fix_modify walls virial yes
 """
 
+from typing import Literal, NamedTuple
+
 import numpy as np
 from numba import njit
+from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, StyleArgs, keyword, param
 
-from .faces import FACES, wall_planes
+from .faces import Face, once_each, wall_planes
+
+
+class Wall(NamedTuple):
+    face: Face
+    coord: float | Literal["EDGE"]
+    epsilon: float
+    sigma: float
+    cutoff: float
 
 
 @njit(cache=True)
@@ -83,38 +94,21 @@ class FixWallHarmonic(Fix):
     extensive = True        # f_ID and f_ID[k] are totals: per particle where thermo normalises (lj)
 
     class Args(StyleArgs):
-        words: list[str]
+        wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy/area", "distance", "distance"))
+        units: Literal["box", "lattice"] = keyword("lattice")
+
+        @model_validator(mode="after")
+        def _walls(self):
+            for face, _, _, _, cutoff in self.wall:
+                if cutoff <= 0:
+                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
+            once_each((face, coord) for face, coord, *_ in self.wall)
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        units = "lattice"
-        walls = {}
-        k = 0
-        while k < len(words):
-            word = words[k]
-            if word == "units":
-                if k + 1 >= len(words) or words[k + 1] not in ("box", "lattice"):
-                    raise ScriptError(f"units must be one of box, lattice (got {' '.join(words[k + 1:k + 2]) or 'nothing'})")
-                units = words[k + 1]
-                k += 2
-                continue
-            if word not in FACES:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(FACES)}, units)")
-            if word in walls:
-                raise ScriptError(f"wall {word} is given twice")
-            values = words[k + 1:k + 5]
-            if len(values) < 4:
-                raise ScriptError(f"wall {word} needs coord epsilon sigma cutoff (got {' '.join(values) or 'nothing'})")
-            walls[word] = [values[0]] + [_number(word, name, v) for name, v in
-                                         zip(("epsilon", "sigma", "cutoff"), values[1:])]
-            if walls[word][3] <= 0:
-                raise ScriptError(f"wall {word}: cutoff must be > 0 (got {walls[word][3]:g})")
-            if values[0] != "EDGE":
-                walls[word][0] = _number(word, "coord", values[0])
-            k += 5
-        if not walls:
-            raise ScriptError(f"expected at least one wall; usage: {self.usage}")
+        walls = {face: values for face, *values in args.wall}
+        units = args.units
         self.axes, self.lower, self.coords = wall_planes(
             sim, {face: values[0] for face, values in walls.items()}, units)
         self.epsilon = np.array([values[1] for values in walls.values()])
@@ -157,12 +151,3 @@ class FixWallHarmonic(Fix):
         """The force on each wall along its axis (f_ID[k]), summed over ranks."""
         return np.asarray(sim.comm.sum(self.wall_force), dtype=float)
 
-
-def _number(face, name, word):
-    try:
-        value = float(word)
-    except ValueError:
-        value = float("nan")
-    if not np.isfinite(value):
-        raise ScriptError(f"wall {face}: {name} must be a finite number (got {word})")
-    return value

@@ -49,12 +49,14 @@ Example::
     fix 4 all wall/reflect zlo EDGE zhi EDGE
 """
 
-import numpy as np
+from typing import Literal
+
 from numba import njit
+from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
-from .faces import FACES, wall_planes
+from .faces import Face, once_each, wall_planes
 
 STYLES = ("specular", "bounce_forward", "bounce_back")
 SPECULAR, BOUNCE_FORWARD, BOUNCE_BACK = range(3)
@@ -98,47 +100,26 @@ class FixWallReflect(Fix):
              "[face coord ...] [units box|lattice]")
 
     class Args(StyleArgs):
-        words: list[str]
+        style: Literal["specular", "bounce_forward", "bounce_back"] | None = param(None)
+        wall: list[tuple[Face, float | Literal["EDGE"]]] = param(min_length=1, unit=("1", "distance"))
+        units: Literal["box", "lattice"] | None = keyword(None)
+
+        @model_validator(mode="after")
+        def _forms(self):
+            if self.style is not None and self.units is not None:
+                raise ValueError(f"unknown keyword units with style {self.style} (the PDPS form is in box units; "
+                                 "units box|lattice is LAMMPS's form, without a style word)")
+            once_each(self.wall)
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        pdps_form = bool(words) and words[0] in STYLES
-        self.style = STYLES.index(words.pop(0)) if pdps_form else SPECULAR
+        pdps_form = args.style is not None
+        self.style = STYLES.index(args.style) if pdps_form else SPECULAR
         # the PDPS manual reverses forces; LAMMPS's wall/reflect leaves them alone
         self.reverse_force = pdps_form
-        units = "box" if pdps_form else "lattice"
-        walls = {}
-        k = 0
-        while k < len(words):
-            word = words[k]
-            if k + 1 >= len(words):
-                raise ScriptError(f"{word} needs a value; usage: {self.usage}")
-            value = words[k + 1]
-            if word == "units" and not pdps_form:
-                if value not in ("box", "lattice"):
-                    raise ScriptError(f"units must be one of box, lattice (got {value})")
-                units = value
-            elif word in FACES:
-                if word in walls:
-                    raise ScriptError(f"wall {word} is given twice")
-                if value != "EDGE":
-                    try:
-                        value = float(value)
-                    except ValueError:
-                        raise ScriptError(f"{word} must be a number or EDGE (got {value})") from None
-                    if not np.isfinite(value):
-                        raise ScriptError(f"{word} must be a finite number or EDGE (got {value})")
-                walls[word] = value
-            elif k == 0 and not pdps_form:
-                raise ScriptError(f"expected a style ({', '.join(STYLES)}) or a face "
-                                  f"({', '.join(FACES)}) (got {word})")
-            else:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(FACES)}"
-                                  f"{'' if pdps_form else ', units'})")
-            k += 2
-        if not walls:
-            raise ScriptError(f"expected at least one wall; usage: {self.usage}")
+        units = "box" if pdps_form else (args.units or "lattice")
+        walls = once_each(args.wall)
         axes, lower, coords = wall_planes(sim, walls, units)
         for axis, name in enumerate("xyz"):
             lo, hi = walls.get(f"{name}lo"), walls.get(f"{name}hi")

@@ -41,13 +41,23 @@ Example::
 """
 
 import math
+from typing import Literal, NamedTuple
 
 import numpy as np
 from numba import njit
+from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
-from .faces import FACES
+from .faces import FACES, Face, once_each
+
+
+class Wall(NamedTuple):
+    face: Face
+    coord: FloatOrVariable | Literal["EDGE"]
+    epsilon: float
+    sigma: float
+    cutoff: float
 
 LJ93, LJ126 = 0, 1
 
@@ -92,45 +102,23 @@ class WallLJ(Fix):
     extensive = True
 
     class Args(StyleArgs):
-        words: list[str]
+        wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy", "distance", "distance"))
+        units: Literal["box", "lattice"] = keyword("lattice")
+        pbc: Literal["yes", "no"] = keyword("no")
+
+        @model_validator(mode="after")
+        def _walls(self):
+            for face, _, _, _, cutoff in self.wall:
+                if cutoff <= 0:
+                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
+            once_each((face, coord) for face, coord, *_ in self.wall)
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         sim.require_box(f"fix {self.name}")
-        words, k = list(args.words), 0
-        self.units, pbc = "lattice", False
-        walls = {}
-        while k < len(words):
-            word = words[k]
-            if word in ("units", "pbc"):
-                allowed = ("box", "lattice") if word == "units" else ("yes", "no")
-                value = words[k + 1] if k + 1 < len(words) else ""
-                if value not in allowed:
-                    raise ScriptError(f"{word} must be one of {', '.join(allowed)} (got {value or 'nothing'})")
-                if word == "units":
-                    self.units = value
-                else:
-                    pbc = value == "yes"
-                k += 2
-                continue
-            if word not in FACES:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(FACES)}, units, pbc)")
-            if word in walls:
-                raise ScriptError(f"wall {word} is given twice")
-            values = words[k + 1:k + 5]
-            if len(values) < 4:
-                raise ScriptError(f"wall {word} needs coord epsilon sigma cutoff (got {' '.join(values) or 'nothing'})")
-            coord = values[0]
-            if coord != "EDGE" and not coord.startswith("v_"):
-                coord = _number(word, "coord", coord)
-            epsilon, sigma, cutoff = (_number(word, name, v) for name, v in
-                                      zip(("epsilon", "sigma", "cutoff"), values[1:]))
-            if cutoff <= 0:
-                raise ScriptError(f"wall {word}: cutoff must be > 0 (got {cutoff:g})")
-            walls[word] = (coord, epsilon, sigma, cutoff)
-            k += 5
-        if not walls:
-            raise ScriptError(f"expected at least one wall; usage: {self.usage}")
+        self.units, pbc = args.units, args.pbc == "yes"
+        walls = {face: tuple(values) for face, *values in args.wall}
         for face in walls:
             axis = FACES.index(face) // 2
             if axis == 2 and sim.dimension == 2:
@@ -153,11 +141,10 @@ class WallLJ(Fix):
         if coord == "EDGE":
             return self.edges[k]
         spacing = sim.lattice.spacing[axis] if (self.units == "lattice" and sim.lattice is not None) else 1.0
-        if isinstance(coord, str):
-            name = coord[2:]
-            if name not in sim.variables:
-                raise ScriptError(f"fix {self.id} {self.name}: variable {name} is not defined (coord {coord})")
-            coord = float(sim.variables.value(name))
+        if isinstance(coord, VariableRef):
+            if coord.name not in sim.variables:
+                raise ScriptError(f"fix {self.id} {self.name}: variable {coord.name} is not defined (coord {coord})")
+            coord = float(sim.variables.value(coord.name))
         return coord * float(spacing)
 
     def setup(self, sim):
@@ -231,12 +218,3 @@ class FixWallLJ126(WallLJ):
         r6inv = r2inv * r2inv * r2inv
         return c1, c2, c3, c4, r6inv * (c3 * r6inv - c4)
 
-
-def _number(face, name, word):
-    try:
-        value = float(word)
-    except ValueError:
-        value = float("nan")
-    if not math.isfinite(value):
-        raise ScriptError(f"wall {face}: {name} must be a finite number (got {word})")
-    return value

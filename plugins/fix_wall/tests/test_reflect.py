@@ -146,14 +146,14 @@ def test_only_the_group_is_reflected():
 
 
 @pytest.mark.parametrize("words, message", [
-    ("sideways xlo 0", "expected a style (specular, bounce_forward, bounce_back) or a face"),
-    ("specular", "expected at least one wall"),
-    ("specular xlo", "xlo needs a value"),
+    ("sideways xlo 0", "unknown keyword sideways (known: xlo, xhi, ylo, yhi, zlo, zhi, units)"),
+    ("specular", "missing argument wall"),
+    ("specular xlo", "wall xlo needs number|EDGE (got nothing)"),
     ("specular xlo 1 xlo 2", "wall xlo is given twice"),
-    ("specular xlo abc", "xlo must be a number or EDGE (got abc)"),
+    ("specular xlo abc", "wall xlo must be a finite number or EDGE (got abc)"),
     ("specular xlo 5 xhi 3", "xlo must be below xhi (got 5 3)"),
     ("bounce_back xlo 1 units box", "unknown keyword units"),
-    ("xlo 1 units metres", "units must be one of box, lattice (got metres)"),
+    ("xlo 1 units metres", "units must be one of 'box' or 'lattice' (got metres)"),
 ])
 def test_bad_arguments(words, message):
     sim = make_box()

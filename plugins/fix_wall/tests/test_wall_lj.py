@@ -49,9 +49,9 @@ def test_force_is_minus_the_energy_gradient(style):
     ("fix w all wall/lj126 xlo EDGE 1 1 2", "wall xlo stands on the periodic x axis: make it fixed (boundary f) "
                                             "or say pbc yes"),
     ("fix w all wall/lj93 zlo EDGE 1 1 2 zlo 0 1 1 2", "wall zlo is given twice"),
-    ("fix w all wall/lj93 zlo EDGE 1 1 2 units metres", "units must be one of box, lattice (got metres)"),
+    ("fix w all wall/lj93 zlo EDGE 1 1 2 units metres", "units must be one of 'box' or 'lattice' (got metres)"),
     ("fix w all wall/lj93 floor EDGE 1 1 2", "unknown keyword floor (known: xlo, xhi, ylo, yhi, zlo, zhi, units, pbc)"),
-    ("fix w all wall/lj93 units box", "expected at least one wall; usage: fix ID GROUP wall/lj93 face coord epsilon "
+    ("fix w all wall/lj93 units box", "missing argument wall; usage: fix ID GROUP wall/lj93 face coord epsilon "
                                       "sigma cutoff [face ...] [units box|lattice] [pbc yes|no]"),
 ])
 def test_bad_walls(line, message):

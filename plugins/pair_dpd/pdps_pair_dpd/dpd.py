@@ -61,9 +61,8 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
-from pydantic import Field
 
-from pdps_core.api import PairLaw, ScriptError, StyleArgs, keyword, observables, pair_gaussian, pair_uniform
+from pdps_core.api import PairLaw, ScriptError, StyleArgs, keyword, observables, param, pair_gaussian, pair_uniform
 
 EPSILON = 1.0e-10        # the core's pair loop skips pairs closer than this (coincident particles)
 STIFFNESS_LIMIT = 1.2     # dt*sqrt(n_c a/(rc m)) above which T runs hot by more than ~5 % (docstring)
@@ -125,15 +124,15 @@ class PairDPD(PairLaw):
     split = False       # True when a splitting integrator (fix shardlow) takes the friction and noise
 
     class Args(StyleArgs):
-        temperature: float = Field(ge=0)
-        cutoff: float = Field(gt=0)
-        seed: int = Field(ge=1, lt=2**63)
+        temperature: float = param(ge=0, unit="temperature")
+        cutoff: float = param(gt=0, unit="distance")
+        seed: int = param(ge=1, lt=2**63, unit="dimensionless")
         noise: Literal["gaussian", "uniform"] = keyword("gaussian")
 
     class Coeff(StyleArgs):
-        a: float
-        gamma: float = Field(ge=0)
-        cutoff: float | None = Field(default=None, gt=0)
+        a: float = param(unit="force")
+        gamma: float = param(ge=0, unit="force/velocity")
+        cutoff: float | None = param(None, gt=0, unit="distance")
 
     def mix_coeff(self, ci, cj, rule):
         combine = (lambda p, q: math.sqrt(p * q)) if rule == "geometric" else (lambda p, q: 0.5 * (p + q))

@@ -38,9 +38,7 @@ Example (the Groot-Warren fluid integrated with the Shardlow splitting)::
     fix 2 all nve
 """
 
-from pydantic import Field
-
-from pdps_core.api import ScriptError, StyleArgs, parse_args
+from pdps_core.api import ScriptError, StyleArgs, param, parse_args
 
 from .dpd import PairDPD
 
@@ -67,9 +65,9 @@ class PairDPDfdt(PairDPD):
     class SigmaCoeff(StyleArgs):
         """LAMMPS's pair_coeff of dpd/fdt (LAMMPS's PairDPDfdt keeps sigma; its fix shardlow derives
         gamma from it)."""
-        a: float
-        sigma: float = Field(ge=0)
-        cutoff: float | None = Field(default=None, gt=0)
+        a: float = param(unit="force")
+        sigma: float = param(ge=0, unit="force*time/distance")
+        cutoff: float | None = param(None, gt=0, unit="distance")
 
     def parse_coeff(self, words):
         if self.sim.dialect.name != "pdps":     # LAMMPS's meaning (LIGGGHTS keeps LAMMPS's styles)

@@ -45,9 +45,8 @@ Example::
 """
 
 from numba import njit
-from pydantic import Field
 
-from pdps_core.api import Fix, StyleArgs, observables
+from pdps_core.api import Fix, StyleArgs, observables, param
 
 
 @njit(cache=True)
@@ -80,7 +79,7 @@ class FixMvvDPD(Fix):
     per_atom = (("vest", 3),)        # the half-step velocity, kept between the two halves
 
     class Args(StyleArgs):
-        prediction: float = Field(0.5, ge=0.0, le=1.0, alias="lambda")
+        prediction: float = param(0.5, ge=0.0, le=1.0, alias="lambda", unit="dimensionless")
 
     def initial_integrate(self, sim):
         p = sim.particles

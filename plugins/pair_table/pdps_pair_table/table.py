@@ -343,7 +343,7 @@ class PairTable(PairLaw):
 
     class Args(StyleArgs):
         style: Literal["lookup", "linear", "spline"] = param()
-        length: int = param(ge=2, le=1_000_000)
+        length: int = param(ge=2, le=1_000_000, unit="1")
 
     class Coeff(StyleArgs):
         file: str = param()

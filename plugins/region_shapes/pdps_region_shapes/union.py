@@ -21,7 +21,7 @@ from pdps_core.api import Region, RegionArgs, ScriptError, param
 class _Combined(Region):
     class Args(RegionArgs):
         count: int = param(ge=2, unit="1")
-        regions: list[str]
+        regions: list[str] = param(names="region ID")
 
         @model_validator(mode="after")
         def _count(self):
