@@ -35,6 +35,8 @@ What is here:
   tab-separated ``case step value...`` lines (every plugin's "thermo as LAMMPS prints it" test).
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
+- ``script_error``: the one-line error a script line is refused with (every style's "bad input is
+  named" test).
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
   in-process, returning exit code, stdout and stderr).
 """
@@ -49,6 +51,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from .errors import ScriptError
 from .simulation import Simulation
 from .state import observables
 from .styles import Fix, StyleArgs, keyword, registry
@@ -354,6 +357,15 @@ def restart_round_trip(tmp_path, setup, first, second):
     resumed = Simulation(screen=False, log=None)
     resumed.command(f"read_restart {path}\nrun {second}")
     return straight, resumed
+
+
+def script_error(setup, line):
+    """The ScriptError that ``line`` raises in a silent Simulation that first ran ``setup``."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(setup)
+    with pytest.raises(ScriptError) as caught:
+        sim.command(line)
+    return caught.value
 
 
 # ---- test styles --------------------------------------------------------------------------------
