@@ -16,6 +16,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from lammps_run import thermo_lines
+
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
 DATA = ROOT / "plugins" / "compute_energy" / "tests" / "data"
@@ -64,13 +66,7 @@ def main(lmp):
             sys.exit(f"LAMMPS failed:\n{log[-2000:]}")
         for step in (0, 100):
             shutil.copy(Path(folder) / f"step{step}.dump", DATA / f"computes_step{step}.dump")
-    lines = log.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("Loop time"):
-            break
-        rows.append("\t".join(line.split()))
+    rows = ["\t".join(words) for words in thermo_lines(log)]
     (DATA / "computes_thermo.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

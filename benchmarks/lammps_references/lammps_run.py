@@ -48,6 +48,17 @@ def thermo_lines(log):
     return thermo_table(log)[1]
 
 
+def record_cases(lmp, scripts, files, path):
+    """Run each script of ``scripts`` {case: script} with ``files`` beside it; write LAMMPS's thermo
+    lines to ``path`` as tab-separated ``case step value...`` rows (what lammps_rows reads)."""
+    rows = []
+    for case, script in scripts.items():
+        log = run_lammps(lmp, script, files, case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
+    Path(path).write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
 def write_blocks(path, tables):
     """Thermo tables {name: rows of words} as one file: a "# name" line, then the rows."""
     blocks = [f"# {name}\n" + "\n".join(" ".join(row) for row in rows) for name, rows in tables.items()]

@@ -14,13 +14,12 @@ from pdps_core.testing import assert_thermo_as_lammps, build, forces_by_tag, lam
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from pair_hybrid import CASES  # noqa: E402  (the recorder's cases, run as they are)
+from pair_styles import nve_script  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data", "pots.table"], DATA)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
     assert_thermo_as_lammps(mine, lammps_rows(DATA / "hybrid.txt", case), case)
 
 

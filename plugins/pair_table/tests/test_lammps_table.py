@@ -5,6 +5,7 @@ table files get one line naming the file, the line and the fault."""
 
 import math
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -14,24 +15,14 @@ from pdps_core.api import ScriptError, Simulation, SimulationError
 from pdps_core.testing import assert_thermo_as_lammps, build, energy_gradient, forces_by_tag, lammps_rows, lammps_thermo
 
 DATA = Path(__file__).parent / "data"
-CASES = {
-    "linear_r": "pair_style table linear 1000\npair_coeff * * pots.table LJ_R",
-    "spline_r": "pair_style table spline 400\npair_coeff * * pots.table LJ_R",
-    "lookup_r": "pair_style table lookup 2000\npair_coeff * * pots.table LJ_R",
-    "linear_rsq_match": "pair_style table linear 1200\npair_coeff * * pots.table LJ_RSQ",
-    "spline_rsq": "pair_style table spline 1200\npair_coeff * * pots.table LJ_RSQ",
-    "two_types_spline": "pair_style table spline 600\npair_coeff 1 1 pots.table LJ_R 2.2\n"
-                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table LJ_RSQ 2.4",
-    "two_types_linear": "pair_style table linear 700\npair_coeff 1 1 pots.table LJ_R 2.2\n"
-                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table MORSE_FP 2.0",
-}
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from pair_styles import nve_script  # noqa: E402
+from pair_table import CASES  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data", "pots.table"], DATA)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
     assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_table.txt", case), case)
 
 
