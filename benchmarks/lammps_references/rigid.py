@@ -115,7 +115,7 @@ fix 1 all {style} molecule{extra}
 thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
 thermo_modify format float %20.15g
 thermo 100
-run 10000
+run {steps}
 """
 LENGTH = 12.0
 CLUMPS = """units lj
@@ -278,10 +278,10 @@ def main():
     DATA.mkdir(parents=True, exist_ok=True)
     data = DATA / "rigid_lj.data"
     write_data(data)
-    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra), [data], label=style))
+    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra, steps=10000), [data], label=style))
               for style, extra in STYLES.items()}
     for style in ("rigid", "rigid/nve"):
-        tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG), [data],
+        tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG, steps=10000), [data],
                                                           label=f"{style} drag"))
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))

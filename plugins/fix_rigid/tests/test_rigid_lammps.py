@@ -15,35 +15,15 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
 from rigid import (BAROSTAT_SCRIPT, BAROSTATS, CLUMPS, COLLIDE, CUSTOM, DRAG, INFILE, INFILE_GRAVITY, MIXED,  # noqa: E402
-                   PLANE, PLANE_NPH, STYLES)
+                   PLANE, PLANE_NPH, SCRIPT, STYLES)
 
 DATA = Path(__file__).with_name("data")
-SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
-fix 1 all {style} molecule{extra}
-thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
-thermo_modify format float %20.15g
-thermo 100
-run {steps}
-"""
-
 
 
 def reference(style):
-    tables, name = {}, None
-    for line in (DATA / "rigid_lj.txt").read_text().splitlines():
-        if line.startswith("# "):
-            name = line[2:]
-            tables[name] = []
-        else:
-            tables[name].append([float(w) for w in line.split()])
-    return np.array(tables[style])
+    return read_blocks(DATA / "rigid_lj.txt")[style]
 
 
 EXTRA = STYLES

@@ -16,7 +16,7 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
-from rigid import DRAG  # noqa: E402
+from rigid import DRAG, SCRIPT as RIGID_SCRIPT  # noqa: E402  (fix rigid's scene, for the drag)
 from rigid_small import FREE, INFILE, PLANE, STYLES as EXTRA, script  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
@@ -45,22 +45,6 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
         assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
 
 
-# fix rigid's LAMMPS scene (test_rigid_lammps.py), for the langevin keyword's drag
-RIGID_SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
-fix 1 all {style} molecule{extra}
-thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
-thermo_modify format float %20.15g
-thermo 100
-run 10000
-"""
-
-
 def rigid_reference(name):
     return read_blocks(DATA / "rigid_lj.txt")[name]
 
@@ -77,7 +61,7 @@ def test_langevin_drag_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path
     digits over 10^4 steps, the bodies' temperature (f_1 of rigid/small; rigid/nve/small's f_1 is
     another quantity) and pressure too."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    done = pdps_cli(RIGID_SCRIPT.format(style=small, extra=DRAG).replace(" f_1 ecouple econserve", " f_1"),
+    done = pdps_cli(RIGID_SCRIPT.format(style=small, extra=DRAG, steps=10000).replace(" f_1 ecouple econserve", " f_1"),
                     "-log", "none")
     assert done.returncode == 0, done.stderr
     ours = np.array(thermo_rows(done.stdout))
