@@ -16,6 +16,8 @@ What is here:
 - ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
   the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps;
   ``bench_data``: the benchmark scenes' data files (dpd_water, dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
+- ``lj_fcc``: the opening lines of LAMMPS's Lennard-Jones melt scene (an fcc crystal in a box of
+  N unit cells a side), which many LAMMPS-dialect tests and recorders start from.
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
   (create_particle, pair_style, fixes...).
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
@@ -115,6 +117,14 @@ def make_box(setup="", *, box="0 10 0 10 0 10", boundary="p p p", ntypes=1, part
     if setup:
         sim.command(textwrap.dedent(setup))
     return sim
+
+
+def lj_fcc(cells, ntypes=1):
+    """The opening of LAMMPS's melt example (bench/in.lj) as script lines: units lj, atom_style atomic,
+    an fcc lattice of reduced density 0.8442 filling a box of ``cells`` unit cells a side, created
+    with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet)."""
+    return (f"units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 {cells} 0 {cells} 0 {cells}\n"
+            f"create_box {ntypes} box\ncreate_atoms 1 box\n")
 
 
 def sphere_mass(diameter, density):

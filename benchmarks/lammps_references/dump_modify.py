@@ -19,16 +19,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+from pdps_core.testing import lj_fcc
+
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "dump_modify"
 FILES = ("dump.sorted", "dump.every", "dump.desc", "dump.late")
-SCRIPT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+SCRIPT = lj_fcc(3, 2) + """mass * 1.0
 set type 1 type/fraction 2 0.3 12345
 velocity all create 1.0 87287 loop geom
 pair_style lj/cut 2.5

@@ -15,15 +15,11 @@ import sys
 import tempfile
 from pathlib import Path
 
+from pdps_core.testing import lj_fcc
+
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "edit_atoms.data"
-SCRIPT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+SCRIPT = lj_fcc(4, 2) + """mass * 1.0
 set type 1 type/fraction 2 0.3 4567
 region ball sphere 2 2 2 0.8
 delete_atoms region ball compress yes

@@ -26,6 +26,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from pdps_core.testing import lj_fcc
+
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "random_atoms"
 
@@ -92,13 +94,7 @@ create_atoms 2 random 30 4444 hole
 mass * 1.0
 write_data out.data
 """,
-    "displace": """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+    "displace": lj_fcc(4, 2) + """mass * 1.0
 displace_atoms all random 0.3 0.3 0.3 98765
 region half block 0 2 INF INF INF INF
 group half region half
