@@ -27,7 +27,8 @@ What is here:
   ``test/record`` (``Record``, the particles' state after every step); ``register_styles`` makes
   these, or a test's own styles, usable in scripts.
 - ``forces_by_tag``, ``energy_gradient``: forces in id order; forces against central differences
-  of the total potential energy.
+  of the total potential energy; ``two_type_cluster`` and ``assert_force_is_minus_gradient``: every
+  pair style's scene and check of that (four particles of two types at different separations).
 - ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
 - ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
   number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text,
@@ -261,6 +262,21 @@ def energy_gradient(sim, h=1e-6, particles=None):
     sim.command("run 0")
     order = np.searchsorted(np.sort(sim.tag), tags)
     return analytic[order], numeric
+
+
+def two_type_cluster(tmp_path, setup):
+    """Four particles of types 1, 1, 2, 2 at separations from 1.1 to 2.1 (every type pair present),
+    then ``setup``: the scene of the pair styles' force-against-energy checks."""
+    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
+    return build(tmp_path, x, types=[1, 1, 2, 2], setup=setup)
+
+
+def assert_force_is_minus_gradient(sim, *, rel, abs, largest):
+    """The forces equal minus the central-difference gradient of the energy (h = 1e-6) to ``rel``
+    and ``abs``, and the largest force component exceeds ``largest`` (so the check is not 0 = 0)."""
+    analytic, numeric = energy_gradient(sim, h=1e-6)
+    assert np.abs(analytic).max() > largest
+    assert numeric == pytest.approx(analytic, rel=rel, abs=abs)
 
 
 def total_energy(sim):

@@ -6,11 +6,11 @@ import math
 import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import assert_thermo_as_lammps, build, energy_gradient, forces_by_tag, lammps_rows, lammps_thermo
+from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
+                               lammps_rows, lammps_thermo, two_type_cluster)
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -25,11 +25,8 @@ def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
 
 @pytest.mark.parametrize("case", ["soft", "morse", "yukawa"])
 def test_forces_are_minus_the_gradient(tmp_path, case):
-    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
-    sim = build(tmp_path, x, types=[1, 1, 2, 2], setup=CASES[case].replace("pair_modify shift yes", ""))
-    analytic, numeric = energy_gradient(sim, h=1e-6)
-    assert np.abs(analytic).max() > 0.1
-    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-7)
+    sim = two_type_cluster(tmp_path, CASES[case].replace("pair_modify shift yes", ""))
+    assert_force_is_minus_gradient(sim, rel=1e-6, abs=1e-7, largest=0.1)
 
 
 def test_soft_pushes_coincident_particles_apart_without_blowing_up(tmp_path):
