@@ -9,13 +9,12 @@ moves, ramps and rotates particles across periodic faces, then writes the data f
 stored as tests/data/lammps/edit_atoms.data.
 """
 
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 from pdps_core.testing import lj_fcc
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "edit_atoms.data"
@@ -35,14 +34,7 @@ write_data out.data
 
 
 def main(lmp):
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.edit").write_text(SCRIPT)
-        done = subprocess.run([lmp, "-in", "in.edit", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        if done.returncode != 0:
-            sys.exit((Path(folder) / "log.lammps").read_text()[-3000:])
-        shutil.copy(Path(folder) / "out.data", OUT)
-        print((Path(folder) / "log.lammps").read_text()[-1500:])
+    print(run_lammps(lmp, SCRIPT, outputs={"out.data": OUT})[-1500:])
 
 
 if __name__ == "__main__":

@@ -20,13 +20,12 @@ NAME.messages.
 """
 
 import re
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 from pdps_core.testing import lj_fcc
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "random_atoms"
@@ -118,16 +117,9 @@ def messages(log):
 def main(lmp):
     OUT.mkdir(parents=True, exist_ok=True)
     for name, script in SCRIPTS.items():
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "in.random").write_text(script)
-            done = subprocess.run([lmp, "-in", "in.random", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-            if done.returncode != 0:
-                sys.exit(f"LAMMPS failed ({name}):\n{log[-3000:]}")
-            shutil.copy(Path(folder) / "out.data", OUT / f"{name}.data")
-            (OUT / f"{name}.messages").write_text("\n".join(messages(log)) + "\n")
-            print(name, *messages(log), sep="\n  ")
+        log = run_lammps(lmp, script, label=name, outputs={"out.data": OUT / f"{name}.data"})
+        (OUT / f"{name}.messages").write_text("\n".join(messages(log)) + "\n")
+        print(name, *messages(log), sep="\n  ")
 
 
 if __name__ == "__main__":
