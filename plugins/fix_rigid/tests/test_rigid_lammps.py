@@ -26,6 +26,25 @@ def reference(style):
     return read_blocks(DATA / "rigid_lj.txt")[style]
 
 
+def pdps_thermo(pdps_cli, script):
+    """The thermo rows ``pdps run`` prints for ``script`` (no log), as an array."""
+    done = pdps_cli(script, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    return np.array(thermo_rows(done.stdout))
+
+
+def assert_thermo_of_bodies_as_lammps(ours, lammps, what):
+    """Temperature and total energy to 5 significant digits, pressure to 1e-5 of its largest value,
+    at every thermo step (columns step temp epair ke etotal press ...)."""
+    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
+    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
+    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
+    print(f"{what}: largest relative difference from LAMMPS: temp {temp:.1e}, etotal {etotal:.1e}, "
+          f"press {press:.1e} (of its largest value)")
+    assert temp < 1e-5 and etotal < 1e-5
+    assert press < 1e-5
+
+
 EXTRA = STYLES
 
 
@@ -35,18 +54,10 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     Tperiod on each body alone (no noise, so LAMMPS's run is deterministic)."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
     extra = DRAG if style.endswith(" drag") else EXTRA[style]
-    done = pdps_cli(SCRIPT.format(style=style.split()[0], extra=extra, steps=10000), "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, SCRIPT.format(style=style.split()[0], extra=extra, steps=10000))
     lammps = reference(style)
     assert ours.shape == lammps.shape
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{style}: largest relative difference from LAMMPS over 1e4 steps: temp {temp:.1e}, "
-          f"etotal {etotal:.1e}, press {press:.1e} (of its largest value)")
-    assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits (achieved: 4e-12 and 8e-14)
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{style} over 1e4 steps")   # achieved: 4e-12, 8e-14
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
     # rigid/nvt's chains: ecouple and econserve (etotal + ecouple)
     assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
@@ -62,9 +73,7 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, scene):
     fix, steps = BAROSTATS.get(scene, (None, 5000))
     script = MIXED if scene == "mixed" else BAROSTAT_SCRIPT.format(fix=fix, steps=steps)
     script = script.replace("neigh_modify every 1 delay 0 check no\n", "")
-    done = pdps_cli(script, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, script)
     lammps = reference(scene)
     assert ours.shape == lammps.shape
     scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)
@@ -101,9 +110,7 @@ def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     scripts = {"clumps": CLUMPS, "plane": PLANE, "infile": INFILE, "collide": COLLIDE, "custom": CUSTOM,
                "infile gravity": INFILE_GRAVITY,
                "plane nph": PLANE_NPH.replace("neigh_modify every 1 delay 0 check no\n", "")}
-    done = pdps_cli(scripts[scene], "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, scripts[scene])
     lammps = reference(scene)
     assert ours.shape == lammps.shape
     scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)

@@ -19,6 +19,9 @@ from lammps_run import read_blocks  # noqa: E402
 from rigid import DRAG, SCRIPT as RIGID_SCRIPT  # noqa: E402  (fix rigid's scene, for the drag)
 from rigid_small import FREE, INFILE, PLANE, STYLES as EXTRA, script  # noqa: E402
 
+sys.path.insert(0, str(Path(__file__).parent))
+from test_rigid_lammps import assert_thermo_of_bodies_as_lammps, pdps_thermo  # noqa: E402
+
 DATA = Path(__file__).with_name("data")
 STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
 
@@ -26,18 +29,10 @@ STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
 @pytest.mark.parametrize("style", STYLES)
 def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style):
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
-    done = pdps_cli(script(style), "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, script(style))
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[style]
     assert ours.shape == lammps.shape
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{style}: largest relative difference from LAMMPS over 1e4 steps: temp {temp:.1e}, "
-          f"etotal {etotal:.1e}, press {press:.1e} (of its largest value)")
-    assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{style} over 1e4 steps")
     # f_1: the bodies' temperature (rigid/small), the Hamiltonian's kinetic part (+ the chains' energy)
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
     if style == "rigid/nvt/small":
@@ -61,21 +56,13 @@ def test_langevin_drag_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path
     digits over 10^4 steps, the bodies' temperature (f_1 of rigid/small; rigid/nve/small's f_1 is
     another quantity) and pressure too."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    done = pdps_cli(RIGID_SCRIPT.format(style=small, extra=DRAG, steps=10000).replace(" f_1 ecouple econserve", " f_1"),
-                    "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, RIGID_SCRIPT.format(style=small, extra=DRAG, steps=10000).replace(
+        " f_1 ecouple econserve", " f_1"))
     lammps = rigid_reference(f"{rigid} drag")[:, :7]
     assert ours.shape == lammps.shape == (101, 7)
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{small} drag against LAMMPS's {rigid} drag over 1e4 steps: temp {temp:.1e}, etotal {etotal:.1e}, "
-          f"press {press:.1e} (of its largest value)")
     # the drag does its work: the particles' temperature falls by more than half over the run
     assert lammps[-1, 1] < 0.5 * lammps[0, 1]
-    assert temp < 1e-5 and etotal < 1e-5
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{small} drag against LAMMPS's {rigid} drag over 1e4 steps")
     if small == "rigid/small":
         assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
 
@@ -119,9 +106,7 @@ def test_linear_2d_and_infile_bodies_match_lammps(pdps_cli, tmp_path, scene, sty
     3d, 6 a body in 2d) over 2000 steps."""
     shutil.copy(DATA / "rigid_small_bodies.txt", tmp_path)
     text = {"free": FREE, "plane": PLANE, "infile": INFILE}[scene].format(style=style, extra=EXTRA[style])
-    done = pdps_cli(text, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, text)
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[f"{scene} {style}"]
     assert ours.shape == lammps.shape == (11, 5)
     scale = np.abs(lammps[:, 1:]).max(axis=0)
