@@ -15,15 +15,6 @@ mass 1 1
 """
 
 
-@pytest.fixture
-def sim(make_sim):
-    """A silent simulation whose screen output is kept in ``sim.screen_text()``."""
-    screen = io.StringIO()
-    s = make_sim(screen=screen)
-    s.screen_text = screen.getvalue
-    return s
-
-
 def printed(sim, script):
     """Run the script; return the lines it printed."""
     before = len(sim.screen_text())
