@@ -32,7 +32,8 @@ What is here:
 - ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
 - ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
   number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text,
-  ``thermo_csv`` the full-precision CSV a run writes next to its log.
+  ``thermo_csv`` the full-precision CSV a run writes next to its log; ``logged_thermo``: the thermo
+  rows a script run from a file prints to its log.
 - ``lammps_thermo``, ``assert_thermo_as_lammps``: a LAMMPS-dialect script run in a folder with the
   files it reads, its thermo rows at full precision; those rows against LAMMPS's, recorded as
   tab-separated ``case step value...`` lines (every plugin's "thermo as LAMMPS prints it" test).
@@ -340,6 +341,17 @@ def thermo_rows(text):
             if not words:
                 inside = False
     return rows
+
+
+def logged_thermo(folder, script):
+    """The thermo rows (an array, as printed) that ``script``, written to ``folder``/in.case and run
+    from there as ``pdps run`` does, prints to its log."""
+    path, log = Path(folder) / "in.case", Path(folder) / "log.pdps"
+    path.write_text(script)
+    sim = Simulation(screen=False, log=str(log))
+    sim.file(str(path))
+    sim.close()
+    return np.array(thermo_rows(log.read_text()))
 
 
 def lammps_thermo(folder, monkeypatch, script, files=(), source=None, screen=False):
