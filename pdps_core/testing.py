@@ -18,6 +18,8 @@ What is here:
   ``bench_data``: the benchmark scenes' data files (dpd_water, dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
 - ``lj_fcc``: the opening lines of LAMMPS's Lennard-Jones melt scene (an fcc crystal in a box of
   N unit cells a side), which many LAMMPS-dialect tests and recorders start from.
+- ``sphere_bed``: a data file of polydisperse spheres on a jittered lattice with random velocities
+  (the granular styles' scene for same-answers-on-any-number-of-ranks tests).
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
   (create_particle, pair_style, fixes...).
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
@@ -127,6 +129,26 @@ def lj_fcc(cells, ntypes=1):
     with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet)."""
     return (f"units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 {cells} 0 {cells} 0 {cells}\n"
             f"create_box {ntypes} box\ncreate_atoms 1 box\n")
+
+
+def sphere_bed(path, cells, offset, lo, hi, *, ntypes, seed):
+    """A LAMMPS data file (atom_style sphere) at ``path``: spheres of diameter 0.8-1.2 and density 6/pi
+    (mass d^3) on a lattice of spacing 1.3, ``cells`` (nx, ny, nz) sites from ``offset``, each moved by
+    up to 0.05, with Gaussian velocities of scale 0.5, all of type 1 in a box ``lo``-``hi`` of
+    ``ntypes`` types; draws from numpy's generator of ``seed``."""
+    rng = np.random.default_rng(seed)
+    sites = np.mgrid[0:cells[0], 0:cells[1], 0:cells[2]].reshape(3, -1).T
+    x = sites * 1.3 + np.asarray(offset) + rng.uniform(-0.05, 0.05, size=(len(sites), 3))
+    d = rng.uniform(0.8, 1.2, size=len(x))
+    v = rng.normal(scale=0.5, size=x.shape)
+    lines = ["bed", "", f"{len(x)} atoms", f"{ntypes} atom types", ""]
+    lines += [f"{lo[k]:g} {hi[k]:g} {a}lo {a}hi" for k, a in enumerate("xyz")]
+    lines += ["", "Atoms # sphere", ""]
+    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
+              for k, p in enumerate(x, 1)]
+    lines += ["", "Velocities", ""]
+    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
+    Path(path).write_text("\n".join(lines) + "\n")
 
 
 def sphere_mass(diameter, density):
