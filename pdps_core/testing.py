@@ -25,9 +25,10 @@ What is here:
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
   ``unwrapped``: positions with their periodic images undone, in id order.
 - test styles, so a plugin's tests need no other plugin: fix ``test/nve_sphere`` (``SphereVerlet``,
-  velocity Verlet for x, v and the spin of spheres), ``test/force`` (``ConstantForce``) and
-  ``test/record`` (``Record``, the particles' state after every step); ``register_styles`` makes
-  these, or a test's own styles, usable in scripts.
+  velocity Verlet for x, v and the spin of spheres), ``test/force`` (``ConstantForce``),
+  ``test/record`` (``Record``, the particles' state after every step) and pair style
+  ``test/no_force`` (``NoForcePair``: neighbor lists and no forces); ``register_styles`` makes these,
+  or a test's own styles, usable in scripts.
 - ``forces_by_tag``, ``energy_gradient``: forces in id order; forces against central differences
   of the total potential energy; ``two_type_cluster`` and ``assert_force_is_minus_gradient``: every
   pair style's scene and check of that (four particles of two types at different separations).
@@ -60,7 +61,7 @@ import pytest
 from .errors import ScriptError
 from .simulation import Simulation
 from .state import observables
-from .styles import Fix, StyleArgs, keyword, registry
+from .styles import Fix, Pair, StyleArgs, keyword, registry
 
 DEFAULT_SEED = 12345
 
@@ -467,6 +468,22 @@ class SphereVerlet(Fix):
         if self.args.rotate:
             inertia = 0.4 * mass * p.radius[:n][chosen] ** 2
             p.omega[:n][chosen] += half * p.torque[:n][chosen] / inertia[:, None]
+
+
+class NoForcePair(Pair):
+    """``pair_style test/no_force`` with ``pair_coeff * *``: no forces and no energy, but the core
+    builds its neighbor lists (and re-sorts particles) as for any pair style; a base for test pair
+    styles."""
+    name = "test/no_force"
+
+    class Coeff(StyleArgs):
+        pass
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        self.energy = 0.0
 
 
 class ConstantForce(Fix):
