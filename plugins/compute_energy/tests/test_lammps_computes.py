@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows
+from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows, script_error
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -86,13 +86,11 @@ def test_per_particle_energies_and_virials_add_up(tmp_path):
 
 
 def test_a_pair_style_without_a_tally_is_named():
-    sim = Simulation(screen=False, log=None)
-    sim.command("particle_style sphere\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
-                "create_particle 1 single 1 1 1\npair_style dem/lsd 0.3 1.0\n"
-                "pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1\ncompute e all pe/atom")
-    with pytest.raises(ScriptError, match=r"compute e \(pe/atom\) needs per-particle energies and virials, "
-                                          r"which pair style dem/lsd does not tally"):
-        sim.command("run 0")
+    refused = script_error("particle_style sphere\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
+                           "create_particle 1 single 1 1 1\npair_style dem/lsd 0.3 1.0\n"
+                           "pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1\ncompute e all pe/atom", "run 0")
+    assert refused.message == ("compute e (pe/atom) needs per-particle energies and virials, which pair style "
+                               "dem/lsd does not tally")
 
 
 def test_stress_atom_takes_only_a_null_temperature(tmp_path):

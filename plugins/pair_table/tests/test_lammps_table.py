@@ -12,7 +12,7 @@ import pytest
 
 from pdps_core.api import ScriptError, Simulation, SimulationError
 from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
-                               lammps_rows, lammps_thermo, two_type_cluster)
+                               lammps_rows, lammps_thermo, script_error, two_type_cluster)
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -128,13 +128,11 @@ def test_the_bitmap_style_is_refused():
 def test_table_does_not_mix(tmp_path, monkeypatch):
     _tables(tmp_path)
     monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
-                "pair_style table linear 100\npair_coeff 1 1 pots.table LJ_R\npair_coeff 2 2 pots.table LJ_R\n"
-                "pair_modify mix arithmetic")
-    with pytest.raises(ScriptError, match=r"pair coefficients are not set for types 1 2 \(pair style table does "
-                                          r"not mix; give pair_coeff for every type pair\)$"):
-        sim.command("run 0")
+    refused = script_error("region box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
+                           "pair_style table linear 100\npair_coeff 1 1 pots.table LJ_R\n"
+                           "pair_coeff 2 2 pots.table LJ_R\npair_modify mix arithmetic", "run 0")
+    assert refused.message == ("pair coefficients are not set for types 1 2 (pair style table does not mix; give "
+                               "pair_coeff for every type pair)")
 
 
 @pytest.mark.parametrize("text, message", [
