@@ -19,7 +19,7 @@ from lammps_run import read_blocks  # noqa: E402
 from rigid_small import BAROSTAT_SCRIPT, BAROSTATS, PLANE_NPH  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).parent))
-from test_rigid_lammps import pdps_thermo  # noqa: E402
+from test_rigid_lammps import pdps_thermo, relative_differences  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 COLUMNS = "step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve".split()
@@ -42,8 +42,7 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, name):
     ours = run_scene(pdps_cli, tmp_path, name)
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[name]
     assert ours.shape == lammps.shape
-    scale = np.abs(lammps[:, 1:]).max(axis=0)
-    differences = np.abs(ours[:, 1:] - lammps[:, 1:]) / scale
+    differences = relative_differences(ours, lammps)
     early = differences[:11].max()
     worst = differences.max(axis=0)
     print(f"{name}: largest difference from LAMMPS, of each column's largest value: {early:.1e} over 1000 steps, "
