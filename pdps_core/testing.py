@@ -16,25 +16,34 @@ What is here:
 - ``write_data``, ``build``: a Simulation holding given particles (through a LAMMPS data file, so
   the path a user's read_data takes), ``fluid``: random positions at a density, without overlaps;
   ``bench_data``: the benchmark scenes' data files (dpd_water, dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
+- ``lj_fcc``: the opening lines of LAMMPS's Lennard-Jones melt scene (an fcc crystal in a box of
+  N unit cells a side), which many LAMMPS-dialect tests and recorders start from.
+- ``sphere_bed``: a data file of polydisperse spheres on a jittered lattice with random velocities
+  (the granular styles' scene for same-answers-on-any-number-of-ranks tests).
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
   (create_particle, pair_style, fixes...).
 - ``sphere_mass``: the mass create_particle gives a sphere of a diameter and density;
   ``unwrapped``: positions with their periodic images undone, in id order.
 - test styles, so a plugin's tests need no other plugin: fix ``test/nve_sphere`` (``SphereVerlet``,
-  velocity Verlet for x, v and the spin of spheres), ``test/force`` (``ConstantForce``) and
-  ``test/record`` (``Record``, the particles' state after every step); ``register_styles`` makes
-  these, or a test's own styles, usable in scripts.
+  velocity Verlet for x, v and the spin of spheres), ``test/force`` (``ConstantForce``),
+  ``test/record`` (``Record``, the particles' state after every step) and pair style
+  ``test/no_force`` (``NoForcePair``: neighbor lists and no forces); ``register_styles`` makes these,
+  or a test's own styles, usable in scripts.
 - ``forces_by_tag``, ``energy_gradient``: forces in id order; forces against central differences
-  of the total potential energy.
+  of the total potential energy; ``two_type_cluster`` and ``assert_force_is_minus_gradient``: every
+  pair style's scene and check of that (four particles of two types at different separations).
 - ``total_force``, ``total_momentum``: Newton's third law and momentum conservation.
 - ``run_ranks``: a script run with ``mpiexec -n N`` (thermo lines back), for same-answers-on-any-
   number-of-ranks tests; ``thermo_rows`` reads thermo tables from a log or screen text,
-  ``thermo_csv`` the full-precision CSV a run writes next to its log.
+  ``thermo_csv`` the full-precision CSV a run writes next to its log; ``logged_thermo``: the thermo
+  rows a script run from a file prints to its log.
 - ``lammps_thermo``, ``assert_thermo_as_lammps``: a LAMMPS-dialect script run in a folder with the
   files it reads, its thermo rows at full precision; those rows against LAMMPS's, recorded as
   tab-separated ``case step value...`` lines (every plugin's "thermo as LAMMPS prints it" test).
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
+- ``script_error``: the one-line error a script line is refused with (every style's "bad input is
+  named" test).
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
   in-process, returning exit code, stdout and stderr).
 """
@@ -49,9 +58,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from .errors import ScriptError
 from .simulation import Simulation
 from .state import observables
-from .styles import Fix, StyleArgs, keyword, registry
+from .styles import Fix, Pair, StyleArgs, keyword, registry
 
 DEFAULT_SEED = 12345
 
@@ -112,6 +122,34 @@ def make_box(setup="", *, box="0 10 0 10 0 10", boundary="p p p", ntypes=1, part
     if setup:
         sim.command(textwrap.dedent(setup))
     return sim
+
+
+def lj_fcc(cells, ntypes=1):
+    """The opening of LAMMPS's melt example (bench/in.lj) as script lines: units lj, atom_style atomic,
+    an fcc lattice of reduced density 0.8442 filling a box of ``cells`` unit cells a side, created
+    with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet)."""
+    return (f"units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 {cells} 0 {cells} 0 {cells}\n"
+            f"create_box {ntypes} box\ncreate_atoms 1 box\n")
+
+
+def sphere_bed(path, cells, offset, lo, hi, *, ntypes, seed):
+    """A LAMMPS data file (atom_style sphere) at ``path``: spheres of diameter 0.8-1.2 and density 6/pi
+    (mass d^3) on a lattice of spacing 1.3, ``cells`` (nx, ny, nz) sites from ``offset``, each moved by
+    up to 0.05, with Gaussian velocities of scale 0.5, all of type 1 in a box ``lo``-``hi`` of
+    ``ntypes`` types; draws from numpy's generator of ``seed``."""
+    rng = np.random.default_rng(seed)
+    sites = np.mgrid[0:cells[0], 0:cells[1], 0:cells[2]].reshape(3, -1).T
+    x = sites * 1.3 + np.asarray(offset) + rng.uniform(-0.05, 0.05, size=(len(sites), 3))
+    d = rng.uniform(0.8, 1.2, size=len(x))
+    v = rng.normal(scale=0.5, size=x.shape)
+    lines = ["bed", "", f"{len(x)} atoms", f"{ntypes} atom types", ""]
+    lines += [f"{lo[k]:g} {hi[k]:g} {a}lo {a}hi" for k, a in enumerate("xyz")]
+    lines += ["", "Atoms # sphere", ""]
+    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
+              for k, p in enumerate(x, 1)]
+    lines += ["", "Velocities", ""]
+    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
+    Path(path).write_text("\n".join(lines) + "\n")
 
 
 def sphere_mass(diameter, density):
@@ -250,6 +288,21 @@ def energy_gradient(sim, h=1e-6, particles=None):
     return analytic[order], numeric
 
 
+def two_type_cluster(tmp_path, setup):
+    """Four particles of types 1, 1, 2, 2 at separations from 1.1 to 2.1 (every type pair present),
+    then ``setup``: the scene of the pair styles' force-against-energy checks."""
+    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
+    return build(tmp_path, x, types=[1, 1, 2, 2], setup=setup)
+
+
+def assert_force_is_minus_gradient(sim, *, rel, abs, largest):
+    """The forces equal minus the central-difference gradient of the energy (h = 1e-6) to ``rel``
+    and ``abs``, and the largest force component exceeds ``largest`` (so the check is not 0 = 0)."""
+    analytic, numeric = energy_gradient(sim, h=1e-6)
+    assert np.abs(analytic).max() > largest
+    assert numeric == pytest.approx(analytic, rel=rel, abs=abs)
+
+
 def total_energy(sim):
     """The potential energy of the whole system (pair and fixes that contribute), not per particle."""
     from .state import observables
@@ -313,6 +366,17 @@ def thermo_rows(text):
     return rows
 
 
+def logged_thermo(folder, script):
+    """The thermo rows (an array, as printed) that ``script``, written to ``folder``/in.case and run
+    from there as ``pdps run`` does, prints to its log."""
+    path, log = Path(folder) / "in.case", Path(folder) / "log.pdps"
+    path.write_text(script)
+    sim = Simulation(screen=False, log=str(log))
+    sim.file(str(path))
+    sim.close()
+    return np.array(thermo_rows(log.read_text()))
+
+
 def lammps_thermo(folder, monkeypatch, script, files=(), source=None, screen=False):
     """Run the LAMMPS-dialect ``script`` in ``folder`` (the ``files`` copied there from the folder
     ``source``) with its log at log.case; returns (the Simulation, its thermo rows as strings from
@@ -356,6 +420,15 @@ def restart_round_trip(tmp_path, setup, first, second):
     return straight, resumed
 
 
+def script_error(setup, line):
+    """The ScriptError that ``line`` raises in a silent Simulation that first ran ``setup``."""
+    sim = Simulation(screen=False, log=None)
+    sim.command(setup)
+    with pytest.raises(ScriptError) as caught:
+        sim.command(line)
+    return caught.value
+
+
 # ---- test styles --------------------------------------------------------------------------------
 def register_styles(*styles):
     """Make style classes usable in scripts under their ``name`` in this process: the test styles
@@ -395,6 +468,22 @@ class SphereVerlet(Fix):
         if self.args.rotate:
             inertia = 0.4 * mass * p.radius[:n][chosen] ** 2
             p.omega[:n][chosen] += half * p.torque[:n][chosen] / inertia[:, None]
+
+
+class NoForcePair(Pair):
+    """``pair_style test/no_force`` with ``pair_coeff * *``: no forces and no energy, but the core
+    builds its neighbor lists (and re-sorts particles) as for any pair style; a base for test pair
+    styles."""
+    name = "test/no_force"
+
+    class Coeff(StyleArgs):
+        pass
+
+    def init_one(self, i, j):
+        return 1.0
+
+    def compute(self, sim, nlist, eflag, vflag):
+        self.energy = 0.0
 
 
 class ConstantForce(Fix):

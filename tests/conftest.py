@@ -1,6 +1,7 @@
-"""Shared helpers: run a script through the `pdps` command (``make_sim`` and ``pdps_cli`` come from
-the test kit, pdps_core.testing)."""
+"""Shared helpers: run a script through the `pdps` command, a simulation that keeps what it prints
+(``make_sim`` and ``pdps_cli`` come from the test kit, pdps_core.testing)."""
 
+import io
 import os
 import subprocess
 import sys
@@ -21,3 +22,11 @@ def run_pdps(tmp_path):
         return subprocess.run([*PDPS, "run", name, *extra], cwd=tmp_path, capture_output=True,
                               text=True, env={**os.environ, **(env or {})}, timeout=600)
     return run
+
+
+@pytest.fixture
+def sim(make_sim):
+    """A silent simulation whose screen output is kept in ``sim.output.screen`` (a StringIO)."""
+    screen = io.StringIO()
+    s = make_sim(screen=screen)
+    return s

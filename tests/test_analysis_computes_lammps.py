@@ -9,8 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import Simulation
-from pdps_core.testing import thermo_rows
+from pdps_core.testing import logged_thermo
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -23,13 +22,8 @@ LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "analysis_computes.txt
 
 @pytest.mark.parametrize("scene", SCRIPTS)
 def test_scene_prints_lammps_thermo(tmp_path, scene):
-    (tmp_path / "in.scene").write_text(SCRIPTS[scene])
-    log = tmp_path / "log.pdps"
-    sim = Simulation(screen=False, log=str(log))
-    sim.file(str(tmp_path / "in.scene"))
-    sim.close()
     lammps = LAMMPS[scene]
-    mine = np.array(thermo_rows(log.read_text()))
+    mine = logged_thermo(tmp_path, SCRIPTS[scene])
     assert mine.shape == lammps.shape and len(lammps) >= 6
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
     # the printed digits; a msd of 0 at step 0 is roundoff (1e-29) in both

@@ -1,6 +1,5 @@
 """The core commands: what each does, and the error each gives for bad input."""
 
-import io
 import math
 import textwrap
 
@@ -16,13 +15,6 @@ from pdps_core.styles import registry
 def box(ntypes=1, bounds="0 4 0 4 0 4", before=""):
     """Script text: settings, a block region ``box`` and the simulation box made from it."""
     return f"{before}\nregion box block {bounds}\ncreate_box {ntypes} box\n"
-
-
-@pytest.fixture
-def sim(make_sim):
-    screen = io.StringIO()
-    s = make_sim(screen=screen)
-    return s
 
 
 def run(sim, script):

@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import Simulation
+from pdps_core.testing import script_error
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -81,8 +82,5 @@ def test_set_diameter_keeps_the_mass_as_lammps(order, mass):
     ("displace_atoms all rotate 0 0 0 0 0 0 30", "the rotation axis must not be zero"),
 ])
 def test_edit_errors(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 4 0 4 0 4\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    one = "region box block 0 4 0 4 0 4\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1"
+    assert script_error(one, line).message == message

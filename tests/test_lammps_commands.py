@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import forces_by_tag, make_box
+from pdps_core.testing import forces_by_tag, lj_fcc, make_box
 
 LJ_PAIR = """mass * 1
 pair_style lj/cut 2.5
@@ -431,13 +431,7 @@ def test_xcm_vcm_fcm_group_functions_as_lammps(pdps_cli):
         assert printed_numbers(done.stdout, label) == pytest.approx(expected, rel=1e-11, abs=1e-12), label
 
 
-THERMO_COMPUTES = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+THERMO_COMPUTES = lj_fcc(3) + """mass 1 1.0
 velocity all create 1.5 87287 loop geom
 pair_style lj/cut 2.5
 pair_coeff * * 1.0 1.0
@@ -473,13 +467,7 @@ def test_thermo_computes_every_lammps_run_defines(pdps_cli):
         assert row == pytest.approx(expected, rel=1e-11)
 
 
-REDUCE_ATOM_VARIABLES = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 2 box
-create_atoms 1 box
-mass 1 1.0
+REDUCE_ATOM_VARIABLES = lj_fcc(3, 2) + """mass 1 1.0
 mass 2 2.0
 set group all type/fraction 2 0.5 12345
 velocity all create 1.5 87287 loop geom

@@ -5,7 +5,8 @@ import weakref
 import numpy as np
 import pytest
 
-from pdps_core.api import Analyze, Fix, Pair, ScriptError, SimulationError, StyleArgs, registry
+from pdps_core.api import Analyze, Fix, ScriptError, SimulationError, registry
+from pdps_core.testing import NoForcePair
 
 BOX = """
 region box block 0 6 0 6 0 6
@@ -85,15 +86,9 @@ class OnlyPostForce(Fix):
         notes(sim).setdefault("calls", []).append((self.id, "post_force", sim.step))
 
 
-class FlagPair(Pair):
+class FlagPair(NoForcePair):
     """A pair style with no force that records the eflag/vflag it was asked for on each step."""
     name = "test/flags"
-
-    class Coeff(StyleArgs):
-        pass
-
-    def init_one(self, i, j):
-        return 1.0
 
     def compute(self, sim, nlist, eflag, vflag):
         notes(sim).setdefault("flags", {})[sim.step] = (bool(eflag), bool(vflag))

@@ -8,7 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import Simulation
+from pdps_core.testing import script_error
 
 DATA = Path(__file__).parent / "data" / "lammps"
 REFERENCE = {row.split("\t")[0]: row.split("\t")[1:] for row in (DATA / "minimize.txt").read_text().splitlines()
@@ -55,11 +56,7 @@ def test_cg_lowers_the_energy_every_iteration_and_ends_near_zero_force(tmp_path,
     ("min_modify dmax 0", "dmax must be > 0 (got 0)"),
 ])
 def test_minimize_errors(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    assert script_error("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1", line).message == message
 
 
 # A 2-d LJ slab on a hex lattice, its lower rows held by fix setforce (LAMMPS's examples/indent's

@@ -8,8 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import Simulation
-from pdps_core.testing import thermo_rows
+from pdps_core.testing import logged_thermo
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -22,12 +21,7 @@ LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt")
 
 @pytest.mark.parametrize("case", CASES)
 def test_case_prints_lammps_thermo(tmp_path, case):
-    (tmp_path / "in.case").write_text(script(case))
-    log = tmp_path / "log.pdps"
-    sim = Simulation(screen=False, log=str(log))
-    sim.file(str(tmp_path / "in.case"))
-    sim.close()
-    mine = np.array(thermo_rows(log.read_text()))
+    mine = logged_thermo(tmp_path, script(case))
     lammps = LAMMPS[case]
     assert mine.shape == lammps.shape == (6, 4)
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])

@@ -15,14 +15,6 @@ mass 1 1
 """
 
 
-@pytest.fixture
-def sim(make_sim):
-    """A silent simulation whose screen output is kept in ``sim.output.screen.getvalue()``."""
-    screen = io.StringIO()
-    s = make_sim(screen=screen)
-    return s
-
-
 def printed(sim, script):
     """Run the script; return the lines it printed."""
     before = len(sim.output.screen.getvalue())

@@ -10,8 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import Simulation
-from pdps_core.testing import thermo_rows
+from pdps_core.testing import logged_thermo
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -24,13 +23,8 @@ LAMMPS = read_blocks(ROOT / "tests" / "data" / "lammps" / "units.txt")
 
 @pytest.mark.parametrize("style", STYLES)
 def test_argon_in_each_unit_system_prints_lammps_thermo(tmp_path, style):
-    (tmp_path / "in.argon").write_text(script(style))
-    log = tmp_path / "log.pdps"
-    sim = Simulation(screen=False, log=str(log))
-    sim.file(str(tmp_path / "in.argon"))
-    sim.close()
     lammps = LAMMPS[style]
-    mine = np.array(thermo_rows(log.read_text()))
+    mine = logged_thermo(tmp_path, script(style))
     assert mine.shape == lammps.shape == (11, 6)
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
     # steps 0 to 100: temp, pe, ke, etotal, press to the printed digits (they agree to 7e-15)

@@ -11,10 +11,10 @@ computes_step100.dump, all in plugins/compute_energy/tests/data.
 """
 
 import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
@@ -54,23 +54,9 @@ def script():
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     shutil.copy(SOURCE, DATA / "fluid.data")
-    with tempfile.TemporaryDirectory() as folder:
-        shutil.copy(SOURCE, Path(folder) / "fluid.data")
-        (Path(folder) / "in.case").write_text(script())
-        done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed:\n{log[-2000:]}")
-        for step in (0, 100):
-            shutil.copy(Path(folder) / f"step{step}.dump", DATA / f"computes_step{step}.dump")
-    lines = log.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("Loop time"):
-            break
-        rows.append("\t".join(line.split()))
+    log = run_lammps(lmp, script(), [SOURCE], outputs={f"step{step}.dump": DATA / f"computes_step{step}.dump"
+                                                       for step in (0, 100)})
+    rows = ["\t".join(words) for words in thermo_lines(log)]
     (DATA / "computes_thermo.txt").write_text("\n".join(rows) + "\n")
     print("\n".join(rows))
 

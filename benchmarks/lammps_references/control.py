@@ -7,10 +7,10 @@ The script (SCRIPT) prints its results with ``print "@@ ..."``; LAMMPS's @@ line
 tests/data/lammps/control.txt.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import lammps_screen, marked_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "control.txt"
@@ -71,14 +71,7 @@ print "@@ vector $(v_v[2]) $(sum(v_v)) $(max(v_v)) $(ave(v_v))"
 
 
 def main(lmp):
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.control").write_text(SCRIPT)
-        done = subprocess.run([lmp, "-in", "in.control", "-log", "none", "-screen", "screen.txt"], cwd=folder,
-                              capture_output=True, text=True)
-        screen = (Path(folder) / "screen.txt").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed:\n{screen[-3000:]}")
-    lines = [line for line in screen.splitlines() if line.startswith("@@ ")]
+    lines = marked_lines(lammps_screen(lmp, SCRIPT))
     OUT.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 

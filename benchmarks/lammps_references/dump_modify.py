@@ -13,22 +13,17 @@ with ``first yes`` (a frame at the step it is defined on, off its interval). The
 writes go to tests/data/lammps/dump_modify/.
 """
 
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from pdps_core.testing import lj_fcc
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "dump_modify"
 FILES = ("dump.sorted", "dump.every", "dump.desc", "dump.late")
-SCRIPT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+SCRIPT = lj_fcc(3, 2) + """mass * 1.0
 set type 1 type/fraction 2 0.3 12345
 velocity all create 1.0 87287 loop geom
 pair_style lj/cut 2.5
@@ -55,14 +50,7 @@ run 30
 
 def main(lmp):
     OUT.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.dump").write_text(SCRIPT)
-        done = subprocess.run([lmp, "-in", "in.dump", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        if done.returncode != 0:
-            sys.exit((Path(folder) / "log.lammps").read_text()[-3000:])
-        for name in FILES:
-            shutil.copy(Path(folder) / name, OUT / name)
+    run_lammps(lmp, SCRIPT, outputs={name: OUT / name for name in FILES})
 
 
 if __name__ == "__main__":

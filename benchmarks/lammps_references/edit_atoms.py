@@ -9,21 +9,16 @@ moves, ramps and rotates particles across periodic faces, then writes the data f
 stored as tests/data/lammps/edit_atoms.data.
 """
 
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from pdps_core.testing import lj_fcc
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "edit_atoms.data"
-SCRIPT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+SCRIPT = lj_fcc(4, 2) + """mass * 1.0
 set type 1 type/fraction 2 0.3 4567
 region ball sphere 2 2 2 0.8
 delete_atoms region ball compress yes
@@ -39,14 +34,7 @@ write_data out.data
 
 
 def main(lmp):
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.edit").write_text(SCRIPT)
-        done = subprocess.run([lmp, "-in", "in.edit", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        if done.returncode != 0:
-            sys.exit((Path(folder) / "log.lammps").read_text()[-3000:])
-        shutil.copy(Path(folder) / "out.data", OUT)
-        print((Path(folder) / "log.lammps").read_text()[-1500:])
+    print(run_lammps(lmp, SCRIPT, outputs={"out.data": OUT})[-1500:])
 
 
 if __name__ == "__main__":

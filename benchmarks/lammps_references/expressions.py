@@ -10,10 +10,10 @@ script fragment) is run and its atom count and box length written to tests/data/
 as ``scene<TAB>atoms<TAB>lx<TAB>ly<TAB>lz``.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import lammps_screen, marked_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "expressions.txt"
@@ -47,15 +47,8 @@ FORMULAS = [
 
 
 def main(lmp):
-    with tempfile.TemporaryDirectory() as folder:
-        script = "\n".join(f'print "@@ $({f}:%.17g)"' for f in FORMULAS) + "\n"
-        (Path(folder) / "in.expr").write_text(script)
-        done = subprocess.run([lmp, "-in", "in.expr", "-log", "none", "-screen", "screen.txt"], cwd=folder,
-                              capture_output=True, text=True)
-        screen = (Path(folder) / "screen.txt").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed:\n{done.stdout}\n{done.stderr}\n{screen}")
-    values = [line[3:].strip() for line in screen.splitlines() if line.startswith("@@ ")]
+    screen = lammps_screen(lmp, "\n".join(f'print "@@ $({f}:%.17g)"' for f in FORMULAS) + "\n")
+    values = [line[3:].strip() for line in marked_lines(screen)]
     if len(values) != len(FORMULAS):
         sys.exit(f"expected {len(FORMULAS)} values, got {len(values)}:\n{screen}")
     OUT.parent.mkdir(parents=True, exist_ok=True)
@@ -70,14 +63,7 @@ def lattices(lmp):
                  "mass 1 1", 'print "@@ $(atoms) $(lx:%.17g) $(ly:%.17g) $(lz:%.17g)"']
         if "region inner" in scene:
             lines += ["group inner region inner", 'print "@@ $(count(inner)) $(lx:%.17g) $(ly:%.17g) $(lz:%.17g)"']
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "in.lat").write_text("\n".join(lines) + "\n")
-            done = subprocess.run([lmp, "-in", "in.lat", "-log", "none", "-screen", "screen.txt"], cwd=folder,
-                                  capture_output=True, text=True)
-            screen = (Path(folder) / "screen.txt").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed on {scene}:\n{screen}")
-        printed = [line[3:].split() for line in screen.splitlines() if line.startswith("@@ ")]
+        printed = [line[3:].split() for line in marked_lines(lammps_screen(lmp, "\n".join(lines) + "\n", scene))]
         rows.append("\t".join([scene, *printed[-1]]))
     LATTICES_OUT.write_text("\n".join(rows) + "\n")
     print(f"wrote {LATTICES_OUT} ({len(rows)} scenes)")

@@ -1,5 +1,5 @@
-"""What the reference recorders share: run LAMMPS on a script in a temporary folder, and read the thermo
-table of its log."""
+"""What the reference recorders share: run LAMMPS on a script in a temporary folder (its log, or its
+screen), and read the thermo table of its log."""
 
 import shutil
 import subprocess
@@ -8,14 +8,36 @@ import tempfile
 from pathlib import Path
 
 
-def run_lammps(lmp, script, files=(), label=""):
-    """The log LAMMPS writes for ``script``, run with copies of ``files`` beside it; stops the recorder
-    with the log's end when LAMMPS fails."""
+def run_lammps(lmp, script, files=(), label="", outputs=None):
+    """The log LAMMPS writes for ``script``, run with copies of ``files`` beside it; ``outputs``
+    {name: path}: files the run wrote, copied out before the folder goes. Stops the recorder with the
+    log's end when LAMMPS fails."""
     with tempfile.TemporaryDirectory() as folder:
         for path in files:
             shutil.copy(path, Path(folder) / Path(path).name)
         (Path(folder) / "in.case").write_text(script)
-        return run_lammps_file(lmp, folder, "in.case", label=label)
+        log = run_lammps_file(lmp, folder, "in.case", label=label)
+        for name, path in (outputs or {}).items():
+            shutil.copy(Path(folder) / name, path)
+        return log
+
+
+def lammps_screen(lmp, script, label=""):
+    """What LAMMPS prints on its screen for ``script`` (run in a temporary folder, no log); stops the
+    recorder with the screen's end when LAMMPS fails."""
+    with tempfile.TemporaryDirectory() as folder:
+        (Path(folder) / "in.case").write_text(script)
+        done = subprocess.run([lmp, "-in", "in.case", "-log", "none", "-screen", "screen.txt"], cwd=folder,
+                              capture_output=True, text=True)
+        screen = (Path(folder) / "screen.txt").read_text()
+    if done.returncode != 0:
+        sys.exit(f"LAMMPS failed ({label or 'in.case'}):\n{done.stderr}\n{screen[-3000:]}")
+    return screen
+
+
+def marked_lines(screen):
+    """The lines a script printed with ``print "@@ ..."``, as printed."""
+    return [line for line in screen.splitlines() if line.startswith("@@ ")]
 
 
 def run_lammps_file(lmp, folder, script, variables=(), label=""):
@@ -46,6 +68,17 @@ def thermo_table(log):
 def thermo_lines(log):
     """The lines of the log's first thermo table after its header, split into words."""
     return thermo_table(log)[1]
+
+
+def record_cases(lmp, scripts, files, path):
+    """Run each script of ``scripts`` {case: script} with ``files`` beside it; write LAMMPS's thermo
+    lines to ``path`` as tab-separated ``case step value...`` rows (what lammps_rows reads)."""
+    rows = []
+    for case, script in scripts.items():
+        log = run_lammps(lmp, script, files, case)
+        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
+    Path(path).write_text("\n".join(rows) + "\n")
+    print("\n".join(rows))
 
 
 def write_blocks(path, tables):

@@ -12,14 +12,14 @@ otherwise) the energies per atom LAMMPS reports (initial and final), its iterati
 criterion go to tests/data/lammps/minimize.txt.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from pdps_core.testing import write_data
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "tests" / "data" / "lammps"
@@ -49,15 +49,7 @@ def main(lmp):
     start()
     rows = [f"# {MINIMIZE}; style initial final iterations evaluations criterion"]
     for style in STYLES:
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "min_start.data").write_bytes((DATA / "min_start.data").read_bytes())
-            (Path(folder) / "in.min").write_text(script(style))
-            done = subprocess.run([lmp, "-in", "in.min", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({style}):\n{log[-2000:]}")
-        lines = log.splitlines()
+        lines = run_lammps(lmp, script(style), [DATA / "min_start.data"], style).splitlines()
         k = next(i for i, line in enumerate(lines) if "Energy initial, next-to-last, final" in line)
         initial, _, final = lines[k + 1].split()
         criterion = next(line.split("=", 1)[1].strip() for line in lines if "Stopping criterion" in line)

@@ -11,11 +11,10 @@ steps. LAMMPS's thermo table goes to tests/data/lammps/molecules.txt and its dat
 tests/data/lammps/molecules.data.
 """
 
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps"
@@ -47,18 +46,10 @@ write_data out.data nocoeff
 
 
 def main(lmp):
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.molecules").write_text(SCRIPT)
-        done = subprocess.run([lmp, "-in", "in.molecules", "-log", "log.lammps", "-screen", "none"],
-                              cwd=folder, capture_output=True, text=True)
-        log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(log[-3000:])
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        end = next(k for k in range(start, len(lines)) if lines[k].startswith("Loop time"))
-        (OUT / "molecules.txt").write_text("\n".join(lines[start:end]) + "\n")
-        shutil.copy(Path(folder) / "out.data", OUT / "molecules.data")
+    lines = run_lammps(lmp, SCRIPT, outputs={"out.data": OUT / "molecules.data"}).splitlines()
+    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
+    end = next(k for k in range(start, len(lines)) if lines[k].startswith("Loop time"))
+    (OUT / "molecules.txt").write_text("\n".join(lines[start:end]) + "\n")
 
 
 if __name__ == "__main__":

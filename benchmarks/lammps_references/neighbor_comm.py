@@ -12,18 +12,14 @@ into tests/data/lammps/neighbor_comm.txt, one block per case.
 import sys
 from pathlib import Path
 
+from pdps_core.testing import lj_fcc
+
 sys.path.insert(0, str(Path(__file__).parent))
 from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "neighbor_comm.txt"
-BASE = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+BASE = lj_fcc(4, 2) + """mass * 1.0
 set type 1 type/fraction 2 0.4 2468
 group ones type 1
 group twos type 2

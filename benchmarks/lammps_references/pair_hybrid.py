@@ -12,7 +12,8 @@ import shutil
 import sys
 from pathlib import Path
 
-from lammps_run import run_lammps, thermo_lines
+from lammps_run import record_cases
+from pair_styles import nve_script
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCES = [ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data",
@@ -37,22 +38,11 @@ CASES = {
 }
 
 
-def script(case):
-    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
-                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
-                      "thermo_modify format float %.15g", "run 100", ""])
-
-
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     for source in SOURCES:
         shutil.copy(source, DATA / source.name)
-    rows = []
-    for case in CASES:
-        log = run_lammps(lmp, script(case), SOURCES, case)
-        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
-    (DATA / "hybrid.txt").write_text("\n".join(rows) + "\n")
-    print("\n".join(rows))
+    record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()}, SOURCES, DATA / "hybrid.txt")
 
 
 if __name__ == "__main__":

@@ -17,7 +17,7 @@ import numpy as np
 
 from pdps_core.testing import fluid, write_data
 
-from lammps_run import run_lammps, thermo_lines
+from lammps_run import record_cases
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data"
@@ -34,29 +34,27 @@ CASES = {
 }
 
 
-def scene():
+def write_fluid(path):
+    """The two-type fluid's data file (also pair_table.py's scene)."""
     x, length = fluid(200, 0.6, seed=11, min_distance=0.95)
     types = np.where(np.arange(200) % 3 == 0, 2, 1)
     v = np.random.default_rng(11).normal(size=(200, 3))
-    write_data(DATA / "fluid.data", (0, 0, 0), (length,) * 3, x, types=types, velocities=v,
-               masses={1: 1.0, 2: 1.5})
+    write_data(path, (0, 0, 0), (length,) * 3, x, types=types, velocities=v, masses={1: 1.0, 2: 1.5})
 
 
-def script(case):
-    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
+def nve_script(pair_lines):
+    """The fluid under ``pair_lines``: 100 NVE steps at dt 0.002, thermo every 25 (also pair_table.py's
+    and pair_hybrid.py's runs, and the tests' scripts)."""
+    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", pair_lines, "fix 1 all nve",
                       "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
                       "thermo_modify format float %.15g", "run 100", ""])
 
 
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
-    scene()
-    rows = []
-    for case in CASES:
-        log = run_lammps(lmp, script(case), [DATA / "fluid.data"], case)
-        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
-    (DATA / "pair_styles.txt").write_text("\n".join(rows) + "\n")
-    print("\n".join(rows))
+    write_fluid(DATA / "fluid.data")
+    record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()}, [DATA / "fluid.data"],
+                 DATA / "pair_styles.txt")
 
 
 if __name__ == "__main__":

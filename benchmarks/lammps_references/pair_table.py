@@ -17,9 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from pdps_core.testing import fluid, write_data
-
-from lammps_run import run_lammps, thermo_lines
+from lammps_run import record_cases
+from pair_styles import nve_script, write_fluid
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_table" / "tests" / "data"
@@ -67,30 +66,12 @@ def tables():
     (DATA / "pots.table").write_text(text)
 
 
-def scene():
-    x, length = fluid(200, 0.6, seed=11, min_distance=0.95)
-    types = np.where(np.arange(200) % 3 == 0, 2, 1)
-    v = np.random.default_rng(11).normal(size=(200, 3))
-    write_data(DATA / "fluid.data", (0, 0, 0), (length,) * 3, x, types=types, velocities=v,
-               masses={1: 1.0, 2: 1.5})
-
-
-def script(case):
-    return "\n".join(["units lj", "atom_style atomic", "read_data fluid.data", CASES[case], "fix 1 all nve",
-                      "timestep 0.002", "thermo 25", "thermo_style custom step temp pe press",
-                      "thermo_modify format float %.15g", "run 100", ""])
-
-
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
-    scene()
+    write_fluid(DATA / "fluid.data")
     tables()
-    rows = []
-    for case in CASES:
-        log = run_lammps(lmp, script(case), [DATA / "fluid.data", DATA / "pots.table"], case)
-        rows += [f"{case}\t" + "\t".join(words) for words in thermo_lines(log)]
-    (DATA / "pair_table.txt").write_text("\n".join(rows) + "\n")
-    print("\n".join(rows))
+    record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()},
+                 [DATA / "fluid.data", DATA / "pots.table"], DATA / "pair_table.txt")
 
 
 if __name__ == "__main__":

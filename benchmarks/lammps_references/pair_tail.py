@@ -9,10 +9,10 @@ each case of CASES runs 100 steps of fix nve at dt 0.002; LAMMPS's thermo (step 
 minimize of the "tail" case reports (initial, next-to-last, final) to tail_minimize.txt.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import record_cases, run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
@@ -37,33 +37,11 @@ def script(case):
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     (DATA / "fluid.data").write_bytes(SOURCE.read_bytes())
-    rows = []
-    for case in CASES:
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "fluid.data").write_bytes(SOURCE.read_bytes())
-            (Path(folder) / "in.case").write_text(script(case))
-            done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-        if done.returncode != 0:
-            sys.exit(f"LAMMPS failed ({case}):\n{log[-2000:]}")
-        lines = log.splitlines()
-        start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-        for line in lines[start + 1:]:
-            if line.startswith("Loop time"):
-                break
-            rows.append(f"{case}\t" + "\t".join(line.split()))
-    (DATA / "tail.txt").write_text("\n".join(rows) + "\n")
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "fluid.data").write_bytes(SOURCE.read_bytes())
-        (Path(folder) / "in.min").write_text(MINIMIZE)
-        subprocess.run([lmp, "-in", "in.min", "-log", "log.lammps", "-screen", "none"], cwd=folder, check=True,
-                       capture_output=True)
-        lines = (Path(folder) / "log.lammps").read_text().splitlines()
+    record_cases(lmp, {case: script(case) for case in CASES}, [SOURCE], DATA / "tail.txt")
+    lines = run_lammps(lmp, MINIMIZE, [SOURCE], "minimize").splitlines()
     energies = lines[next(k for k, line in enumerate(lines) if "Energy initial" in line) + 1]
     (DATA / "tail_minimize.txt").write_text(" ".join(energies.split()) + "\n")
     print(energies)
-    print("\n".join(rows))
 
 
 if __name__ == "__main__":

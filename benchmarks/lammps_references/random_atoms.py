@@ -20,11 +20,12 @@ NAME.messages.
 """
 
 import re
-import shutil
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from pdps_core.testing import lj_fcc
+
+from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps" / "random_atoms"
@@ -92,13 +93,7 @@ create_atoms 2 random 30 4444 hole
 mass * 1.0
 write_data out.data
 """,
-    "displace": """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+    "displace": lj_fcc(4, 2) + """mass * 1.0
 displace_atoms all random 0.3 0.3 0.3 98765
 region half block 0 2 INF INF INF INF
 group half region half
@@ -122,16 +117,9 @@ def messages(log):
 def main(lmp):
     OUT.mkdir(parents=True, exist_ok=True)
     for name, script in SCRIPTS.items():
-        with tempfile.TemporaryDirectory() as folder:
-            (Path(folder) / "in.random").write_text(script)
-            done = subprocess.run([lmp, "-in", "in.random", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                                  capture_output=True, text=True)
-            log = (Path(folder) / "log.lammps").read_text()
-            if done.returncode != 0:
-                sys.exit(f"LAMMPS failed ({name}):\n{log[-3000:]}")
-            shutil.copy(Path(folder) / "out.data", OUT / f"{name}.data")
-            (OUT / f"{name}.messages").write_text("\n".join(messages(log)) + "\n")
-            print(name, *messages(log), sep="\n  ")
+        log = run_lammps(lmp, script, label=name, outputs={"out.data": OUT / f"{name}.data"})
+        (OUT / f"{name}.messages").write_text("\n".join(messages(log)) + "\n")
+        print(name, *messages(log), sep="\n  ")
 
 
 if __name__ == "__main__":

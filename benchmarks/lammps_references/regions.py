@@ -9,10 +9,10 @@ above it) and a group of the sites in it. Counts go to plugins/region_shapes/tes
 lammps_regions.txt as ``region line<TAB>count``.
 """
 
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import lammps_screen, marked_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "plugins" / "region_shapes" / "tests" / "data" / "lammps_regions.txt"
@@ -33,14 +33,7 @@ def main(lmp):
     for k, region in enumerate(REGIONS):
         name = region.split()[1]
         lines += [region, f"group g{name} region {name}", f'print "@@ {k} $(count(g{name}))"']
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "in.regions").write_text("\n".join(lines) + "\n")
-        done = subprocess.run([lmp, "-in", "in.regions", "-log", "none", "-screen", "screen.txt"], cwd=folder,
-                              capture_output=True, text=True)
-        screen = (Path(folder) / "screen.txt").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed:\n{screen[-3000:]}")
-    counts = [line.split()[2] for line in screen.splitlines() if line.startswith("@@ ")]
+    counts = [line.split()[2] for line in marked_lines(lammps_screen(lmp, "\n".join(lines) + "\n"))]
     OUT.write_text("".join(f"{r}\t{c}\n" for r, c in zip(REGIONS, counts)))
     print(OUT.read_text())
 

@@ -42,6 +42,15 @@ from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
+
+
+def lj_bodies(data):
+    """The opening of the rigid-body scenes: Lennard-Jones particles in molecules read from ``data``,
+    no pair forces within a molecule (each is a body)."""
+    return (f"units lj\natom_style molecular\nread_data {data}\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
+            "neigh_modify exclude molecule/intra all\n")
+
+
 STYLES = {"rigid": "", "rigid/nve": "", "rigid/nvt": " temp 0.5 0.4 1.0"}
 # rigid/npt and rigid/nph on the same bodies: name -> (style and keywords, steps)
 BAROSTATS = {
@@ -53,13 +62,7 @@ BAROSTATS = {
 # LAMMPS's fix rigid puts a body's centre back into the box (its image flags) only when neighbor lists are
 # built, and the virial of its thermostatted constraint forces depends on that image; pdps builds them
 # every step the box changes: LAMMPS does so too with check no, and pdps runs the script without that line
-BAROSTAT_SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-neigh_modify every 1 delay 0 check no
+BAROSTAT_SCRIPT = lj_bodies("rigid_lj.data") + """neigh_modify every 1 delay 0 check no
 group low molecule <= 4
 timestep 0.001
 fix 1 all {fix}
@@ -70,13 +73,7 @@ run {steps}
 """
 # the bodies of molecules 1-4 under rigid/npt (dilate all) among free particles under fix nvt (the page's
 # first way to barostat a mixture)
-MIXED = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-neigh_modify every 1 delay 0 check no
+MIXED = lj_bodies("rigid_lj.data") + """neigh_modify every 1 delay 0 check no
 group low molecule <= 4
 group high subtract all low
 timestep 0.001
@@ -88,13 +85,7 @@ thermo 500
 run 5000
 """
 # bodystyle custom: bodies of two molecules each, from an atom-style variable
-CUSTOM = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-variable b atom ceil(mol/2)
+CUSTOM = lj_bodies("rigid_lj.data") + """variable b atom ceil(mol/2)
 timestep 0.001
 fix 1 all rigid custom v_b
 thermo_style custom step temp epair etotal press f_1 f_1[3][1]
@@ -104,18 +95,12 @@ run 5000
 """
 # the langevin keyword with T = 0: its drag alone, deterministic (no noise to draw), LAMMPS's to round-off
 DRAG = " langevin 0.0 0.0 2.0 428984"
-SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
+SCRIPT = lj_bodies("rigid_lj.data") + """timestep 0.001
 fix 1 all {style} molecule{extra}
 thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
 thermo_modify format float %20.15g
 thermo 100
-run 10000
+run {steps}
 """
 LENGTH = 12.0
 CLUMPS = """units lj
@@ -278,10 +263,10 @@ def main():
     DATA.mkdir(parents=True, exist_ok=True)
     data = DATA / "rigid_lj.data"
     write_data(data)
-    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra), [data], label=style))
+    tables = {style: thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=extra, steps=10000), [data], label=style))
               for style, extra in STYLES.items()}
     for style in ("rigid", "rigid/nve"):
-        tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG), [data],
+        tables[f"{style} drag"] = thermo_lines(run_lammps(lmp, SCRIPT.format(style=style, extra=DRAG, steps=10000), [data],
                                                           label=f"{style} drag"))
     for name, (fix, steps) in BAROSTATS.items():
         tables[name] = thermo_lines(run_lammps(lmp, BAROSTAT_SCRIPT.format(fix=fix, steps=steps), [data], label=name))

@@ -13,18 +13,13 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
 from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
+from rigid import lj_bodies  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
 STYLES = {"rigid": "rigid molecule", "rigid/small": "rigid/small molecule",
           "rigid/nvt/small": "rigid/nvt/small molecule temp 0.5 0.4 1.0"}
-SCRIPT = """units lj
-atom_style molecular
-read_data rigid_small_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
+SCRIPT = lj_bodies("rigid_small_lj.data") + """timestep 0.001
 fix 1 all {fix}
 compute trans all ke/rigid 1
 compute rot all erotate/rigid 1

@@ -30,17 +30,12 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
+from rigid import lj_bodies  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
 STYLES = {"rigid/small": "", "rigid/nve/small": "", "rigid/nvt/small": " temp 0.5 0.4 1.0"}
-SCRIPT = """units lj
-atom_style molecular
-read_data rigid_small_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
+SCRIPT = lj_bodies("rigid_small_lj.data") + """timestep 0.001
 fix 1 all {style} molecule{extra}
 thermo_style custom step temp epair ke etotal press {columns}
 thermo_modify format float %20.15g
@@ -69,13 +64,7 @@ BAROSTATS = {
 # LAMMPS puts a body's centre back into the box (its image flags) only when neighbor lists are built, and
 # the virial of its scaled bodies depends on that image (fix rigid's recorder, rigid.py); with check no it
 # does so every step, as pdps does whenever the box changes; pdps runs the script without that line
-BAROSTAT_SCRIPT = """units lj
-atom_style molecular
-read_data rigid_small_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-neigh_modify every 1 delay 0 check no
+BAROSTAT_SCRIPT = lj_bodies("rigid_small_lj.data") + """neigh_modify every 1 delay 0 check no
 group low molecule <= 13
 group high molecule > 13
 timestep 0.001

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Compute, ScriptError
-from pdps_core.testing import Record, by_tag, register_styles
+from pdps_core.testing import Record, by_tag, lj_fcc, register_styles
 
 
 class StepArray(Compute):
@@ -159,13 +159,7 @@ def test_outputs_are_zero_before_the_first_average(sim):
 # Averages of 3 samples 2 steps apart every 10 steps, of an LJ crystal melting from T = 1.5 (the
 # LAMMPS dialect: velocity create draws LAMMPS's numbers). LAMMPS 22 Jul 2025, recorded on this
 # machine: step, temp, f_one, f_avg[1], f_avg[2] at steps 0, 10, 20; 0 before the first average.
-AVE_TIME_SCRIPT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+AVE_TIME_SCRIPT = lj_fcc(3) + """mass 1 1.0
 velocity all create 1.5 87287 loop geom
 pair_style lj/cut 2.5
 pair_coeff 1 1 1.0 1.0

@@ -4,40 +4,18 @@ values at steps 0 and 100 to 1e-12 (data/, recorded with LAMMPS by
 benchmarks/lammps_references/computes.py); the per-particle values add up to the global ones."""
 
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows
+from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows, script_error
 
 DATA = Path(__file__).parent / "data"
-SETUP = """units lj
-atom_style atomic
-read_data fluid.data
-pair_style lj/cut 2.5
-pair_coeff 1 1 1.0 1.0
-pair_coeff 2 2 0.5 1.2 2.0
-group heavy type 2
-compute pe all pe
-compute pep all pe pair
-compute pea all pe/atom
-compute peh heavy pe/atom pair
-compute s all stress/atom NULL
-compute sv all stress/atom NULL virial
-compute sk heavy stress/atom NULL ke
-compute ka all ke/atom
-compute vacf all vacf
-compute vh heavy vacf
-compute sums all reduce sum c_pea c_s[1] c_s[2] c_s[3] c_sv[1] c_sv[2] c_sv[3] c_ka
-fix 1 all nve
-timestep 0.002
-thermo 25
-"""
-THERMO = ("thermo_style custom step temp pe press c_pe c_pep c_vacf[1] c_vacf[2] c_vacf[3] c_vacf[4] c_vh[4] "
-          "c_sums[1] c_sums[2] c_sums[3] c_sums[4] c_sums[5] c_sums[6] c_sums[7] c_sums[8]")
-COLUMNS = "id c_pea c_peh c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6] c_sv[1] c_sv[4] c_sk[1] c_sk[6] c_ka"
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from computes import COLUMNS, SETUP, THERMO  # noqa: E402
 
 
 def lammps_dump(step):
@@ -108,13 +86,11 @@ def test_per_particle_energies_and_virials_add_up(tmp_path):
 
 
 def test_a_pair_style_without_a_tally_is_named():
-    sim = Simulation(screen=False, log=None)
-    sim.command("particle_style sphere\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
-                "create_particle 1 single 1 1 1\npair_style dem/lsd 0.3 1.0\n"
-                "pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1\ncompute e all pe/atom")
-    with pytest.raises(ScriptError, match=r"compute e \(pe/atom\) needs per-particle energies and virials, "
-                                          r"which pair style dem/lsd does not tally"):
-        sim.command("run 0")
+    refused = script_error("particle_style sphere\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
+                           "create_particle 1 single 1 1 1\npair_style dem/lsd 0.3 1.0\n"
+                           "pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1\ncompute e all pe/atom", "run 0")
+    assert refused.message == ("compute e (pe/atom) needs per-particle energies and virials, which pair style "
+                               "dem/lsd does not tally")
 
 
 def test_stress_atom_takes_only_a_null_temperature(tmp_path):

@@ -1,15 +1,26 @@
-"""What several styles of this pack share: the particles a force fix acts on, axis names, and the
-checks for finite-size particles."""
+"""What several styles of this pack share: the particles a force fix acts on and when it acts, axis
+names, and the checks for finite-size particles."""
 
 from typing import Literal
 
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError
+from pdps_core.api import Fix, ScriptError
 
 Axis = Literal["x", "y", "z"]
 AXES = {"x": 0, "y": 1, "z": 2}
+
+
+class ForceFix(Fix):
+    """A fix whose post_force also acts at a run's setup and in each minimization step (LAMMPS's
+    addforce, setforce, viscous)."""
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def min_post_force(self, sim):
+        self.post_force(sim)
 
 
 def chosen(sim, group, region=None):

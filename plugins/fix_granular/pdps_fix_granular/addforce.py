@@ -51,11 +51,11 @@ import math
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, FloatOrVariable, StyleArgs, VariableRef, keyword, param
+from pdps_core.api import FloatOrVariable, StyleArgs, VariableRef, keyword, param
 
-from ._common import AXES, Axis, chosen, require_plane, require_spheres
+from ._common import AXES, Axis, ForceFix, chosen, require_plane, require_spheres
 
-class FixAddForce(Fix):
+class FixAddForce(ForceFix):
     name = "addforce"
     usage = "fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]"
     can_energy = True
@@ -96,12 +96,6 @@ class FixAddForce(Fix):
         if self.components is None:
             return None
         return np.array([sim.evaluate(c) for c in self.components], dtype=np.float64)
-
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def min_post_force(self, sim):
-        self.post_force(sim)
 
     def post_force(self, sim):
         p = sim.particles

@@ -45,7 +45,9 @@ DISC_INERTIA = 0.5       # I = 1/2 m R^2
 
 
 @njit(cache=True)
-def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia, ftm2v):
+def sphere_kick(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia, ftm2v, drift):
+    """Half a step of v by the force and of omega by the torque; with ``drift`` (the first half,
+    initial_integrate) also a whole step of x by the new v."""
     half = 0.5 * dt * ftm2v
     # the divisions are the loop's cost: redone only when mass or radius changes from the last
     # particle (never, in a packing of equal spheres), with the same result as for each one
@@ -58,25 +60,9 @@ def sphere_initial(x, v, f, omega, torque, radius, mass, mask, groupbit, nlocal,
                 dtirotate = half / (inertia * m_last * r_last * r_last)
             for d in range(3):
                 v[i, d] += dtfm * f[i, d]
-                x[i, d] += dt * v[i, d]
+                if drift:
+                    x[i, d] += dt * v[i, d]
             # most spheres touch nothing: with no torque their spin stays as it is
-            if torque[i, 0] != 0.0 or torque[i, 1] != 0.0 or torque[i, 2] != 0.0:
-                for d in range(3):
-                    omega[i, d] += dtirotate * torque[i, d]
-
-
-@njit(cache=True)
-def sphere_final(v, f, omega, torque, radius, mass, mask, groupbit, nlocal, dt, inertia, ftm2v):
-    half = 0.5 * dt * ftm2v
-    m_last, r_last, dtfm, dtirotate = -1.0, -1.0, 0.0, 0.0
-    for i in range(nlocal):
-        if mask[i] & groupbit:
-            if mass[i] != m_last or radius[i] != r_last:
-                m_last, r_last = mass[i], radius[i]
-                dtfm = half / m_last
-                dtirotate = half / (inertia * m_last * r_last * r_last)
-            for d in range(3):
-                v[i, d] += dtfm * f[i, d]
             if torque[i, 0] != 0.0 or torque[i, 1] != 0.0 or torque[i, 2] != 0.0:
                 for d in range(3):
                     omega[i, d] += dtirotate * torque[i, d]
@@ -106,13 +92,13 @@ class FixNVESphere(Fix):
         require_radii(sim, self.group, "fix nve/sphere")
 
     def initial_integrate(self, sim):
-        p = sim.particles
-        a = p.arrays
-        sphere_initial(a["x"], a["v"], a["f"], a["omega"], a["torque"], a["radius"], a["rmass"], a["mask"],
-                       sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)
+        self.kick(sim, drift=True)
 
     def final_integrate(self, sim):
+        self.kick(sim, drift=False)
+
+    def kick(self, sim, drift):
         p = sim.particles
         a = p.arrays
-        sphere_final(a["v"], a["f"], a["omega"], a["torque"], a["radius"], a["rmass"], a["mask"],
-                     sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v)
+        sphere_kick(a["x"], a["v"], a["f"], a["omega"], a["torque"], a["radius"], a["rmass"], a["mask"],
+                    sim.groups.bit(self.group), p.nlocal, sim.dt, self.inertia, sim.units.ftm2v, drift)

@@ -27,9 +27,9 @@ from typing import Annotated
 
 from pydantic import BeforeValidator
 
-from pdps_core.api import Fix, StyleArgs, keyword, param
+from pdps_core.api import StyleArgs, keyword, param
 
-from ._common import chosen
+from ._common import ForceFix, chosen
 
 
 def _number_or_null(word):
@@ -47,7 +47,7 @@ def _number_or_null(word):
 Component = Annotated[float | None, BeforeValidator(_number_or_null)]
 
 
-class FixSetForce(Fix):
+class FixSetForce(ForceFix):
     name = "setforce"
     usage = "fix ID GROUP setforce FX FY FZ [region RID]"
 
@@ -63,12 +63,6 @@ class FixSetForce(Fix):
             sim.region(args.region)
         self.components = [(d, value) for d, value in enumerate((args.fx, args.fy, args.fz))
                            if value is not None]
-
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def min_post_force(self, sim):
-        self.post_force(sim)
 
     def post_force(self, sim):
         p = sim.particles

@@ -28,12 +28,12 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import ScriptError, StyleArgs, keyword, param
 
-from ._common import chosen
+from ._common import ForceFix, chosen
 
 
-class FixViscous(Fix):
+class FixViscous(ForceFix):
     name = "viscous"
     usage = "fix ID GROUP viscous GAMMA [scale TYPE RATIO]..."
 
@@ -50,12 +50,6 @@ class FixViscous(Fix):
             if not ratio >= 0:
                 raise ScriptError(f"scale: ratio must be >= 0 (got {ratio:g})")
             self.gamma[ptype] = args.gamma * ratio
-
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def min_post_force(self, sim):
-        self.post_force(sim)
 
     def post_force(self, sim):
         p = sim.particles

@@ -1,13 +1,13 @@
-"""In-process test styles (a torque, an overlap repulsion, pair styles with and without time-step
-limits; the kit's test/force and test/record) and fixtures that build a small scene."""
+"""In-process test styles (a torque, an overlap repulsion, a pair style with time-step limits; the
+kit's test/force, test/record and test/no_force, which has none) and fixtures that build a small scene."""
 
 import io
 
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, Pair, StyleArgs
-from pdps_core.testing import ConstantForce, Record, make_box, register_styles
+from pdps_core.api import Fix, StyleArgs
+from pdps_core.testing import ConstantForce, NoForcePair, Record, make_box, register_styles
 
 
 class ConstantTorque(Fix):
@@ -54,7 +54,7 @@ class OverlapRepulsion(Fix):
                     p.f[j] -= force
 
 
-class LimitsPair(Pair):
+class LimitsPair(NoForcePair):
     """No forces; reports the time-step limits it was given (``pair_style test/granular/limits
     RAYLEIGH HERTZ CONTACT``, 0 meaning none). ``shrink`` makes the Rayleigh time
     RAYLEIGH / (1 + shrink * step), to see a limit passed in the middle of a run."""
@@ -66,36 +66,13 @@ class LimitsPair(Pair):
         contact: float
         shrink: float = 0.0
 
-    class Coeff(StyleArgs):
-        pass
-
-    def init_one(self, i, j):
-        return 1.0
-
-    def compute(self, sim, nlist, eflag, vflag):
-        self.energy = 0.0
-
     def timestep_limits(self, sim):
         a = self.args
         rayleigh = a.rayleigh / (1.0 + a.shrink * sim.step)
         return {"rayleigh": rayleigh or None, "hertz": a.hertz or None, "contact": a.contact}
 
 
-class PlainPair(Pair):
-    """No forces and no timestep_limits method."""
-    name = "test/granular/plain"
-
-    class Coeff(StyleArgs):
-        pass
-
-    def init_one(self, i, j):
-        return 1.0
-
-    def compute(self, sim, nlist, eflag, vflag):
-        self.energy = 0.0
-
-
-register_styles(ConstantForce, ConstantTorque, OverlapRepulsion, Record, LimitsPair, PlainPair)
+register_styles(ConstantForce, ConstantTorque, OverlapRepulsion, Record, LimitsPair, NoForcePair)
 
 
 @pytest.fixture

@@ -76,9 +76,9 @@ def test_checks_every_nevery_steps(spheres):
 
 
 def test_a_pair_style_without_limits_is_reported_once(spheres):
-    sim = scene(spheres, "test/granular/plain", fix="check/timestep/gran 1 0.1 0.1")
+    sim = scene(spheres, "test/no_force", fix="check/timestep/gran 1 0.1 0.1")
     sim.command("run 5\nrun 5")
-    assert sim.warnings == ["fix ts (check/timestep/gran): pair style test/granular/plain gives no "
+    assert sim.warnings == ["fix ts (check/timestep/gran): pair style test/no_force gives no "
                             "time-step limits (it has no timestep_limits method), so only the skin "
                             "ratio is checked"]
     assert sim.fixes["ts"].ratios == (None, None, 0.0)

@@ -122,6 +122,12 @@ SPHERE_INERTIA = 0.4    # I = 2/5 m R^2
 ROTATION_FACTOR = 10.0 / 3.0
 
 
+@njit(cache=True, inline="always")
+def friction_and_amplitude(m, ratio, damp, noise_scale):
+    """A particle's friction coefficient m/(damp ratio) and noise amplitude noise_scale sqrt(m/ratio)."""
+    return m / (damp * ratio), noise_scale * math.sqrt(m / ratio)
+
+
 @njit(cache=True)
 def langevin_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_scale, ratio, seed, step,
                     noise_sum, tally, flangevin):
@@ -132,11 +138,8 @@ def langevin_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
-        m = mass[i]
-        r = ratio[type_[i]]
+        friction, amplitude = friction_and_amplitude(mass[i], ratio[type_[i]], damp, noise_scale)
         u0, u1, u2, _ = particle_uniforms(seed, step, tag[i], STREAM)
-        amplitude = noise_scale * math.sqrt(m / r)
-        friction = m / (damp * r)
         n0, n1, n2 = amplitude * (u0 - 0.5), amplitude * (u1 - 0.5), amplitude * (u2 - 0.5)
         d0, d1, d2 = -friction * v[i, 0], -friction * v[i, 1], -friction * v[i, 2]
         f[i, 0] += d0 + n0
@@ -162,11 +165,8 @@ def gjf_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_scale
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
-        m = mass[i]
-        r = ratio[type_[i]]
+        friction, amplitude = friction_and_amplitude(mass[i], ratio[type_[i]], damp, noise_scale)
         g0, g1, g2, _ = particle_gaussians(seed, step, tag[i], stream)
-        amplitude = noise_scale * math.sqrt(m / r)
-        friction = m / (damp * r)
         fresh = (amplitude * g0, amplitude * g1, amplitude * g2)
         for d in range(3):
             drag = -friction * v[i, d]

@@ -13,15 +13,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation, observables
+from pdps_core.api import Simulation, observables
 from pdps_core.testing import (assert_thermo_as_lammps, by_tag, lammps_rows, lammps_thermo, restart_round_trip,
-                               run_ranks, thermo_rows, total_energy)
+                               run_ranks, script_error, thermo_rows, total_energy)
 
 DATA = Path(__file__).parent / "data"
 ROWS = [line.split("\t") for line in (DATA / "nh.txt").read_text().splitlines()]
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from nh import CASES, ECOUPLE_CASES, ECOUPLE_THERMO, OPTION_CASES, option_script, script  # noqa: E402
 
+BOX = "region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1"
 COUPLED = [line.split("\t") for line in (DATA / "ecouple.txt").read_text().splitlines()]
 OPTIONS = [line.split("\t") for line in (DATA / "nh_options.txt").read_text().splitlines()]
 
@@ -223,11 +224,7 @@ SETUP_LONG = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_sty
                                           "fixedpoint, ptemp, flip, disc)"),
 ])
 def test_bad_nh_fixes(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("boundary p p f\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    assert script_error("boundary p p f\n" + BOX, line).message == message
 
 
 @pytest.mark.parametrize("line, message", [
@@ -242,11 +239,7 @@ def test_bad_nh_fixes(line, message):
      "unknown keyword dof; expected: fix_modify ID [energy yes|no] [virial yes|no]"),
 ])
 def test_bad_fix_modify_of_nh(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    assert script_error(BOX, line).message == message
 
 
 @pytest.mark.parametrize("setup, message", [
@@ -260,12 +253,8 @@ def test_bad_fix_modify_of_nh(line, message):
 def test_nh_refused_at_the_run(setup, message):
     """LAMMPS 2025 stops a barostat without ptemp at T = 0 (it once guessed 1 or 300); computes named
     by fix_modify must still exist when a run starts."""
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\ncreate_particle 1 single 1 1 1\n"
-                "create_particle 1 single 3 3 3\n" + setup)
-    with pytest.raises(ScriptError) as caught:
-        sim.command("run 1")
-    assert caught.value.message == message
+    two = BOX + "\ncreate_particle 1 single 1 1 1\ncreate_particle 1 single 3 3 3\n"
+    assert script_error(two + setup, "run 1").message == message
 
 
 @pytest.mark.parametrize("line, message", [
@@ -287,11 +276,7 @@ def test_nh_refused_at_the_run(setup, message):
     ("fix 2 all deform 1 x erate 0.1 shape no", "unknown keyword shape (known: x, y, z, remap, flip, units)"),
 ])
 def test_bad_deform(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    assert script_error(BOX, line).message == message
 
 
 @pytest.mark.parametrize("fixes, message", [
@@ -305,11 +290,7 @@ def test_bad_deform(line, message):
      "v_a is atom-style: name one element, v_a[i]"),
 ])
 def test_deform_refused_at_the_run(fixes, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1\ncreate_particle 1 single 1 1 1\n" + fixes)
-    with pytest.raises(ScriptError) as caught:
-        sim.command("run 10")
-    assert caught.value.message == message
+    assert script_error(BOX + "\ncreate_particle 1 single 1 1 1\n" + fixes, "run 10").message == message
 
 
 @pytest.mark.parametrize("fix", ["fix 1 all nvt temp 1.0 1.0 0.1",

@@ -19,6 +19,54 @@ import numpy as np
 from numba import njit
 
 
+@njit(cache=True, inline="always")
+def _arm(x, image, image_body, length, xcm, i, b):
+    """r_i - X: particle i's displacement from its body's centre of mass, unwrapped relative to the body."""
+    return (x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0],
+            x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1],
+            x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2])
+
+
+@njit(cache=True, inline="always")
+def _add_inertia(out, b, m, a0, a1, a2, radius, i):
+    """Particle i's part of body b's inertia tensor (xx, yy, zz, yz, xz, xy) at arm (a0, a1, a2); a
+    sphere adds its own 2/5 m R^2 on the diagonal."""
+    out[b, 0] += m * (a1 * a1 + a2 * a2)
+    out[b, 1] += m * (a0 * a0 + a2 * a2)
+    out[b, 2] += m * (a0 * a0 + a1 * a1)
+    out[b, 3] -= m * a1 * a2
+    out[b, 4] -= m * a0 * a2
+    out[b, 5] -= m * a0 * a1
+    if len(radius) > 0:
+        sphere = 0.4 * m * radius[i] * radius[i]
+        for d in range(3):
+            out[b, d] += sphere
+
+
+@njit(cache=True, inline="always")
+def _to_space(ex, ey, ez, b, d0, d1, d2):
+    """R d: a body-frame displacement in the space frame of body b (principal axes ex, ey, ez)."""
+    return (ex[b, 0] * d0 + ey[b, 0] * d1 + ez[b, 0] * d2,
+            ex[b, 1] * d0 + ey[b, 1] * d1 + ez[b, 1] * d2,
+            ex[b, 2] * d0 + ey[b, 2] * d1 + ez[b, 2] * d2)
+
+
+@njit(cache=True, inline="always")
+def _set_velocity(v, vcm, omega, i, b, rx, ry, rz):
+    """v_i = V + omega x r for particle i at space-frame arm r of body b."""
+    v[i, 0] = omega[b, 1] * rz - omega[b, 2] * ry + vcm[b, 0]
+    v[i, 1] = omega[b, 2] * rx - omega[b, 0] * rz + vcm[b, 1]
+    v[i, 2] = omega[b, 0] * ry - omega[b, 1] * rx + vcm[b, 2]
+
+
+@njit(cache=True, inline="always")
+def _constraint_force(v, f, i, scale, v0, v1, v2):
+    """f_c = m (v_new - v_old) / (dt/2) - f_i, ``scale`` = m / (dt/2): the force the body put on i."""
+    return (scale * (v[i, 0] - v0) - f[i, 0],
+            scale * (v[i, 1] - v1) - f[i, 1],
+            scale * (v[i, 2] - v2) - f[i, 2])
+
+
 @njit(cache=True)
 def mass_and_centre(x, image, body, type_, mass, rmass, length, nlocal, nbody):
     """Per body: sum m r (unwrapped by the particle's image flags) and sum m, (nbody, 4)."""
@@ -45,20 +93,9 @@ def inertia_sums(x, image, body, type_, mass, rmass, radius, length, xcm, image_
         b = body[i]
         if b < 0:
             continue
-        dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
-        dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
-        dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
+        dx, dy, dz = _arm(x, image, image_body, length, xcm, i, b)
         m = rmass[i] if with_rmass else mass[type_[i]]
-        out[b, 0] += m * (dy * dy + dz * dz)
-        out[b, 1] += m * (dx * dx + dz * dz)
-        out[b, 2] += m * (dx * dx + dy * dy)
-        out[b, 3] -= m * dy * dz
-        out[b, 4] -= m * dx * dz
-        out[b, 5] -= m * dx * dy
-        if len(radius) > 0:
-            sphere = 0.4 * m * radius[i] * radius[i]
-            for d in range(3):
-                out[b, d] += sphere
+        _add_inertia(out, b, m, dx, dy, dz, radius, i)
     return out
 
 
@@ -73,24 +110,13 @@ def body_frame(x, image, body, type_, mass, rmass, radius, length, xcm, image_bo
         b = body[i]
         if b < 0:
             continue
-        dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
-        dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
-        dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
+        dx, dy, dz = _arm(x, image, image_body, length, xcm, i, b)
         d0 = ex[b, 0] * dx + ex[b, 1] * dy + ex[b, 2] * dz
         d1 = ey[b, 0] * dx + ey[b, 1] * dy + ey[b, 2] * dz
         d2 = ez[b, 0] * dx + ez[b, 1] * dy + ez[b, 2] * dz
         displace[i, 0], displace[i, 1], displace[i, 2] = d0, d1, d2
         m = rmass[i] if with_rmass else mass[type_[i]]
-        out[b, 0] += m * (d1 * d1 + d2 * d2)
-        out[b, 1] += m * (d0 * d0 + d2 * d2)
-        out[b, 2] += m * (d0 * d0 + d1 * d1)
-        out[b, 3] -= m * d1 * d2
-        out[b, 4] -= m * d0 * d2
-        out[b, 5] -= m * d0 * d1
-        if len(radius) > 0:
-            sphere = 0.4 * m * radius[i] * radius[i]
-            for d in range(3):
-                out[b, d] += sphere
+        _add_inertia(out, b, m, d0, d1, d2, radius, i)
     return out
 
 
@@ -106,9 +132,7 @@ def momenta(x, v, omega_atom, image, body, type_, mass, rmass, radius, length, x
         if b < 0:
             continue
         m = rmass[i] if with_rmass else mass[type_[i]]
-        dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
-        dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
-        dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
+        dx, dy, dz = _arm(x, image, image_body, length, xcm, i, b)
         out[b, 0] += v[i, 0] * m
         out[b, 1] += v[i, 1] * m
         out[b, 2] += v[i, 2] * m
@@ -135,9 +159,7 @@ def force_torque(x, f, torque_atom, image, body, length, xcm, image_body, nlocal
         out[b, 0] += f[i, 0]
         out[b, 1] += f[i, 1]
         out[b, 2] += f[i, 2]
-        dx = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0] - xcm[b, 0]
-        dy = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1] - xcm[b, 1]
-        dz = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2] - xcm[b, 2]
+        dx, dy, dz = _arm(x, image, image_body, length, xcm, i, b)
         out[b, 3] += dy * f[i, 2] - dz * f[i, 1]
         out[b, 4] += dz * f[i, 0] - dx * f[i, 2]
         out[b, 5] += dx * f[i, 1] - dy * f[i, 0]
@@ -176,12 +198,8 @@ def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, lengt
         x0, x1, x2 = x[i, 0] + sx, x[i, 1] + sy, x[i, 2] + sz
         v0, v1, v2 = v[i, 0], v[i, 1], v[i, 2]
         d0, d1, d2 = displace[i, 0], displace[i, 1], displace[i, 2]
-        rx = ex[b, 0] * d0 + ey[b, 0] * d1 + ez[b, 0] * d2
-        ry = ex[b, 1] * d0 + ey[b, 1] * d1 + ez[b, 1] * d2
-        rz = ex[b, 2] * d0 + ey[b, 2] * d1 + ez[b, 2] * d2
-        v[i, 0] = omega[b, 1] * rz - omega[b, 2] * ry + vcm[b, 0]
-        v[i, 1] = omega[b, 2] * rx - omega[b, 0] * rz + vcm[b, 1]
-        v[i, 2] = omega[b, 0] * ry - omega[b, 1] * rx + vcm[b, 2]
+        rx, ry, rz = _to_space(ex, ey, ez, b, d0, d1, d2)
+        _set_velocity(v, vcm, omega, i, b, rx, ry, rz)
         x[i, 0] = rx + xcm[b, 0] - sx
         x[i, 1] = ry + xcm[b, 1] - sy
         x[i, 2] = rz + xcm[b, 2] - sz
@@ -191,10 +209,7 @@ def set_xv(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, lengt
         m = rmass[i] if with_rmass else mass[type_[i]]
         if not tally:
             continue
-        scale = m / dtf
-        fc0 = scale * (v[i, 0] - v0) - f[i, 0]
-        fc1 = scale * (v[i, 1] - v1) - f[i, 1]
-        fc2 = scale * (v[i, 2] - v2) - f[i, 2]
+        fc0, fc1, fc2 = _constraint_force(v, f, i, m / dtf, v0, v1, v2)
         w0 += 0.5 * x0 * fc0
         w1 += 0.5 * x1 * fc1
         w2 += 0.5 * x2 * fc2
@@ -218,23 +233,16 @@ def set_v(x, v, f, omega_atom, image, body, displace, type_, mass, rmass, length
         if b < 0:
             continue
         d0, d1, d2 = displace[i, 0], displace[i, 1], displace[i, 2]
-        rx = ex[b, 0] * d0 + ey[b, 0] * d1 + ez[b, 0] * d2
-        ry = ex[b, 1] * d0 + ey[b, 1] * d1 + ez[b, 1] * d2
-        rz = ex[b, 2] * d0 + ey[b, 2] * d1 + ez[b, 2] * d2
+        rx, ry, rz = _to_space(ex, ey, ez, b, d0, d1, d2)
         v0, v1, v2 = v[i, 0], v[i, 1], v[i, 2]
-        v[i, 0] = omega[b, 1] * rz - omega[b, 2] * ry + vcm[b, 0]
-        v[i, 1] = omega[b, 2] * rx - omega[b, 0] * rz + vcm[b, 1]
-        v[i, 2] = omega[b, 0] * ry - omega[b, 1] * rx + vcm[b, 2]
+        _set_velocity(v, vcm, omega, i, b, rx, ry, rz)
         if with_omega:
             for d in range(3):
                 omega_atom[i, d] = omega[b, d]
         m = rmass[i] if with_rmass else mass[type_[i]]
         if not tally:
             continue
-        scale = m / dtf
-        fc0 = scale * (v[i, 0] - v0) - f[i, 0]
-        fc1 = scale * (v[i, 1] - v1) - f[i, 1]
-        fc2 = scale * (v[i, 2] - v2) - f[i, 2]
+        fc0, fc1, fc2 = _constraint_force(v, f, i, m / dtf, v0, v1, v2)
         x0 = x[i, 0] + (image[i, 0] - image_body[b, 0]) * length[0]
         x1 = x[i, 1] + (image[i, 1] - image_body[b, 1]) * length[1]
         x2 = x[i, 2] + (image[i, 2] - image_body[b, 2]) * length[2]

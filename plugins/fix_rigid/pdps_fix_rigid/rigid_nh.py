@@ -74,7 +74,7 @@ from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 
 from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation, free_rotation
-from .rigid_nvt import CHAIN_LIMIT, chain_step, check_tparam, maclaurin
+from .rigid_nvt import CHAIN_LIMIT, chain_step, chain_substeps, check_tparam, maclaurin
 
 Triple = tuple[float, float, float] | None
 COUPLED = {"xyz": (0, 1, 2), "xy": (0, 1), "yz": (1, 2), "xz": (0, 2), "none": ()}
@@ -123,30 +123,6 @@ def nh_final(vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, inertia,
         _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
         akin_r += angmom[b, 0] * omega[b, 0] + angmom[b, 1] * omega[b, 1] + angmom[b, 2] * omega[b, 2]
     return akin_t, akin_r
-
-
-@njit(cache=True)
-def barostat_chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
-    """Advance the barostat's Nose-Hoover chain a full step (f_eta[0] set by the caller). As LAMMPS's
-    fix rigid/nh, the velocity factors are exp(-x/2) (its particle chains' are exp(-x))."""
-    m = len(eta)
-    for _ in range(titer):
-        for j in range(len(wdti1)):
-            eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
-            for k in range(1, m):
-                x = wdti4[j] * eta_dot[m - k]
-                s = math.exp(-0.5 * x)
-                eta_dot[m - k - 1] = eta_dot[m - k - 1] * (s * s) + wdti2[j] * f_eta[m - k - 1] * s * maclaurin(x)
-            for k in range(m):
-                eta[k] += wdti1[j] * eta_dot[k]
-            for k in range(1, m):
-                f_eta[k] = (q[k - 1] * eta_dot[k - 1] * eta_dot[k - 1] - kt) / q[k]
-            for k in range(m - 1):
-                x = wdti4[j] * eta_dot[k + 1]
-                s = math.exp(-0.5 * x)
-                eta_dot[k] = eta_dot[k] * (s * s) + wdti2[j] * f_eta[k] * s * maclaurin(x)
-                f_eta[k + 1] = (q[k] * eta_dot[k] * eta_dot[k] - kt) / q[k + 1]
-            eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
 
 
 BAROSTAT_WORDS = ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")
@@ -292,16 +268,8 @@ class NoseHooverBarostat:
             if any(self.p_flag[d] for d in getattr(fix, "deformed_axes", ())):
                 raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same box length")
         self.boltz, self.mvv2e, self.nktv2p = sim.units.boltz, sim.units.mvv2e, sim.units.nktv2p
-        chain, titer, order = self.args.tparam
-        if order == 3:
-            w0 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
-            weights = [w0, 1.0 - 2.0 * w0, w0]
-        else:
-            w0 = 1.0 / (4.0 - 4.0 ** (1.0 / 3.0))
-            weights = [w0, w0, 1.0 - 4.0 * w0, w0, w0]
-        self.wdti1 = np.array(weights) * sim.dt / titer
-        self.wdti2 = self.wdti1 / 2.0
-        self.wdti4 = self.wdti1 / 4.0
+        _, titer, order = self.args.tparam
+        self.wdti1, self.wdti2, self.wdti4 = chain_substeps(order, sim.dt, titer)
         if self.pstat and self.vol0 == 0.0:
             self.vol0 = float(sim.box.volume)
 
@@ -387,8 +355,8 @@ class NoseHooverBarostat:
             self.epsilon_mass[self.p_flag] = (self.g_f + d) * kt / self.p_freq[self.p_flag] ** 2
             kecurrent = float((self.epsilon_mass * self.epsilon_dot ** 2)[self.p_flag].sum()) / self.pdim
             self.f_eta_b[0] = (kecurrent - kt) / self.q_b[0]
-            barostat_chain_step(self.eta_b, self.eta_dot_b, self.f_eta_b, self.q_b, kt, self.wdti1, self.wdti2,
-                                self.wdti4, titer)
+            chain_step(self.eta_b, self.eta_dot_b, self.f_eta_b, self.q_b, kt, self.wdti1, self.wdti2, self.wdti4,
+                       titer, 0.5)
 
     def initial_integrate(self, sim):
         self.advance_initial(sim)

@@ -92,16 +92,31 @@ def nvt_final(vcm, fcm, angmom, torque, omega, quat, conjqm, ex, ey, ez, inertia
         _angmom_from_conjqm(b, quat, conjqm, ex, ey, ez, inertia, angmom, omega)
 
 
+def chain_substeps(order, dt, titer):
+    """(w dt/titer, w dt/(2 titer), w dt/(4 titer)) for the Suzuki-Yoshida weights w of a chain step
+    of ``order`` 3 or 5 (LAMMPS's wdti1, wdti2, wdti4)."""
+    if order == 3:
+        w0 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
+        weights = [w0, 1.0 - 2.0 * w0, w0]
+    else:
+        w0 = 1.0 / (4.0 - 4.0 ** (1.0 / 3.0))
+        weights = [w0, w0, 1.0 - 4.0 * w0, w0, w0]
+    wdti1 = np.array(weights) * dt / titer
+    return wdti1, wdti1 / 2.0, wdti1 / 4.0
+
+
 @njit(cache=True)
-def chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
-    """Advance one Nose-Hoover chain a full step (its first force f_eta[0] set by the caller)."""
+def chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer, decay=1.0):
+    """Advance one Nose-Hoover chain a full step (its first force f_eta[0] set by the caller). The
+    velocity factors are exp(-decay x): 1 for the bodies' chains, 1/2 for rigid/nh's barostat chain
+    (LAMMPS's fix rigid/nh)."""
     m = len(eta)
     for _ in range(titer):
         for j in range(len(wdti1)):
             eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
             for k in range(1, m):
                 x = wdti4[j] * eta_dot[m - k]
-                s = math.exp(-x)
+                s = math.exp(-decay * x)
                 eta_dot[m - k - 1] = eta_dot[m - k - 1] * (s * s) + wdti2[j] * f_eta[m - k - 1] * s * maclaurin(x)
             for k in range(m):
                 eta[k] += wdti1[j] * eta_dot[k]
@@ -109,7 +124,7 @@ def chain_step(eta, eta_dot, f_eta, q, kt, wdti1, wdti2, wdti4, titer):
                 f_eta[k] = (q[k - 1] * eta_dot[k - 1] * eta_dot[k - 1] - kt) / q[k]
             for k in range(m - 1):
                 x = wdti4[j] * eta_dot[k + 1]
-                s = math.exp(-x)
+                s = math.exp(-decay * x)
                 eta_dot[k] = eta_dot[k] * (s * s) + wdti2[j] * f_eta[k] * s * maclaurin(x)
                 f_eta[k + 1] = (q[k] * eta_dot[k] * eta_dot[k] - kt) / q[k + 1]
             eta_dot[m - 1] += wdti2[j] * f_eta[m - 1]
@@ -176,16 +191,7 @@ class FixRigidNVT(FixRigidNVE):
             self.nf_r = 3 * self.nbody - int(np.count_nonzero(np.abs(self.inertia) < EPSILON))
         else:
             self.nf_r = self.nbody - int(np.count_nonzero(np.abs(self.inertia[:, 2]) < EPSILON))
-        order = self.args.tparam[2]
-        if order == 3:
-            w0 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
-            weights = [w0, 1.0 - 2.0 * w0, w0]
-        else:
-            w0 = 1.0 / (4.0 - 4.0 ** (1.0 / 3.0))
-            weights = [w0, w0, 1.0 - 4.0 * w0, w0, w0]
-        self.wdti1 = np.array(weights) * sim.dt / self.args.tparam[1]
-        self.wdti2 = self.wdti1 / 2.0
-        self.wdti4 = self.wdti1 / 4.0
+        self.wdti1, self.wdti2, self.wdti4 = chain_substeps(self.args.tparam[2], sim.dt, self.args.tparam[1])
 
     def _temperature_target(self, sim):
         start, stop, _ = self.args.temp

@@ -41,7 +41,8 @@ from pdps_core.api import keyword
 
 from .rigid import EPSILON
 from .rigid_nve_small import FixRigidNVESmall
-from .rigid_nvt import FixRigidNVT, chain_step, check_thermostat, nvt_final, nvt_initial, start_chains
+from .rigid_nvt import (FixRigidNVT, chain_step, chain_substeps, check_thermostat, nvt_final, nvt_initial,
+                        start_chains)
 from .rigid_small import BAROSTAT_REFUSED, NOT_YET
 
 
@@ -79,16 +80,7 @@ class FixRigidNVTSmall(FixRigidNVESmall):
     def init_run(self, sim):
         super().init_run(sim)
         self.boltz, self.mvv2e = sim.units.boltz, sim.units.mvv2e
-        order = self.args.tparam[2]
-        if order == 3:
-            w0 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
-            weights = [w0, 1.0 - 2.0 * w0, w0]
-        else:
-            w0 = 1.0 / (4.0 - 4.0 ** (1.0 / 3.0))
-            weights = [w0, w0, 1.0 - 4.0 * w0, w0, w0]
-        self.wdti1 = np.array(weights) * sim.dt / self.args.tparam[1]
-        self.wdti2 = self.wdti1 / 2.0
-        self.wdti4 = self.wdti1 / 4.0
+        self.wdti1, self.wdti2, self.wdti4 = chain_substeps(self.args.tparam[2], sim.dt, self.args.tparam[1])
 
     def _count_freedom(self, sim):
         """LAMMPS's compute_dof: d per body translating; 3 per body less its zero moments rotating

@@ -13,6 +13,8 @@ import pytest
 from pdps_core.api import ScriptError, Simulation
 
 sys.path.insert(0, str(Path(__file__).parent))
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from rigid import lj_bodies  # noqa: E402  (the LAMMPS scenes' bodies)
 from test_rigid_small import molecular_data  # noqa: E402
 
 # an octahedron of six unit masses on its principal axes: I = 2 (b^2 + c^2), 2 (a^2 + c^2), 2 (a^2 + b^2)
@@ -123,13 +125,7 @@ def test_the_same_rows_on_one_and_two_ranks(tmp_path):
 
     from pdps_core.testing import run_ranks
     shutil.copy(Path(__file__).with_name("data") / "rigid_small_lj.data", tmp_path)
-    script = """units lj
-atom_style molecular
-read_data rigid_small_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
+    script = lj_bodies("rigid_small_lj.data") + """timestep 0.001
 fix rb all rigid/nve/small molecule
 compute 1 all rigid/local rb id mol mass xu yu zu vx vy vz quatw quati quatj quatk tqx tqy tqz
 dump 1 all local 1000 rows.{ranks} COLUMNS

@@ -4,6 +4,8 @@ their error bars); bad settings are one line each. LAMMPS's numbers for these st
 test_rigid_lammps.py."""
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -11,6 +13,9 @@ import pytest
 from pdps_core.api import Fix, ScriptError, registry
 from pdps_core.testing import build
 from pdps_fix_rigid.rigid import FixRigid
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from rigid import lj_bodies  # noqa: E402  (the LAMMPS scenes' bodies)
 
 T_TARGET, P_TARGET = 1.5, 0.5
 
@@ -56,28 +61,28 @@ def block_mean(values, blocks=12):
     return chunks.mean(axis=0), chunks.std(axis=0, ddof=1) / math.sqrt(blocks)
 
 
+def liquid_of_triangles(make_sim, tmp_path):
+    """The 64 triangles compressed from a gas to a liquid at T_TARGET, P_TARGET by rigid/npt (Tdamp 0.5,
+    Pdamp 2, 6000 steps of dt 0.002); fix test/barostatsampler registered."""
+    registry.register("fix", BarostatSampler.name, BarostatSampler)
+    triangles(tmp_path / "triangles.data")
+    sim = make_sim()
+    sim.command(lj_bodies(tmp_path / "triangles.data") + f"""timestep 0.002
+fix 1 all rigid/npt molecule temp {T_TARGET} {T_TARGET} 0.5 iso {P_TARGET} {P_TARGET} 2.0
+thermo_style custom step temp press vol
+thermo 100000
+run 6000
+""")
+    return sim
+
+
 def test_rigid_npt_holds_the_target_pressure_and_temperature(make_sim, tmp_path):
     """64 triangles compressed from a gas to a liquid at T = 1.5, P = 0.5 (Tdamp 0.5, Pdamp 2): after
     6000 steps, 30000 steps of dt 0.002 in 12 blocks of 5 time units (several barostat periods each):
     the mean pressure the barostat reads and the bodies' mean temperature are the targets within 4
     standard errors of the block means."""
-    registry.register("fix", BarostatSampler.name, BarostatSampler)
-    triangles(tmp_path / "triangles.data")
-    sim = make_sim()
-    sim.command(f"""units lj
-atom_style molecular
-read_data {tmp_path / 'triangles.data'}
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.002
-fix 1 all rigid/npt molecule temp {T_TARGET} {T_TARGET} 0.5 iso {P_TARGET} {P_TARGET} 2.0
-thermo_style custom step temp press vol
-thermo 100000
-run 6000
-fix 2 all test/barostatsampler
-run 30000
-""")
+    sim = liquid_of_triangles(make_sim, tmp_path)
+    sim.command("fix 2 all test/barostatsampler\nrun 30000")
     samples = np.array(sim.fixes["2"].samples)
     mean, error = block_mean(samples)
     print(f"rigid/npt: pressure {mean[0]:.4f} +- {error[0]:.4f} (target {P_TARGET}), bodies' T {mean[1]:.4f} +- "
@@ -90,21 +95,8 @@ def test_rigid_nph_holds_the_target_pressure(make_sim, tmp_path):
     """The same liquid brought to T = 1.5 by rigid/npt, then rigid/nph alone (aniso, so each axis reads
     its own diagonal pressure) for 24000 steps in 12 blocks: each axis's mean pressure is the target
     within 4 standard errors."""
-    registry.register("fix", BarostatSampler.name, BarostatSampler)
-    triangles(tmp_path / "triangles.data")
-    sim = make_sim()
-    sim.command(f"""units lj
-atom_style molecular
-read_data {tmp_path / 'triangles.data'}
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.002
-fix 1 all rigid/npt molecule temp {T_TARGET} {T_TARGET} 0.5 iso {P_TARGET} {P_TARGET} 2.0
-thermo_style custom step temp press vol
-thermo 100000
-run 6000
-unfix 1
+    sim = liquid_of_triangles(make_sim, tmp_path)
+    sim.command(f"""unfix 1
 fix 1 all rigid/nph molecule aniso {P_TARGET} {P_TARGET} 2.0
 fix 2 all test/barostatsampler
 run 24000

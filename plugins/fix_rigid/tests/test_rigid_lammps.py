@@ -15,35 +15,41 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from lammps_run import read_blocks  # noqa: E402
 from rigid import (BAROSTAT_SCRIPT, BAROSTATS, CLUMPS, COLLIDE, CUSTOM, DRAG, INFILE, INFILE_GRAVITY, MIXED,  # noqa: E402
-                   PLANE, PLANE_NPH, STYLES)
+                   PLANE, PLANE_NPH, SCRIPT, STYLES)
 
 DATA = Path(__file__).with_name("data")
-SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
-fix 1 all {style} molecule{extra}
-thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
-thermo_modify format float %20.15g
-thermo 100
-run {steps}
-"""
-
 
 
 def reference(style):
-    tables, name = {}, None
-    for line in (DATA / "rigid_lj.txt").read_text().splitlines():
-        if line.startswith("# "):
-            name = line[2:]
-            tables[name] = []
-        else:
-            tables[name].append([float(w) for w in line.split()])
-    return np.array(tables[style])
+    return read_blocks(DATA / "rigid_lj.txt")[style]
+
+
+def pdps_thermo(pdps_cli, script):
+    """The thermo rows ``pdps run`` prints for ``script`` (no log), as an array."""
+    done = pdps_cli(script, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    return np.array(thermo_rows(done.stdout))
+
+
+def relative_differences(ours, lammps):
+    """|ours - LAMMPS's| at each thermo step and column after the step's, over that column's largest
+    |value| in LAMMPS's (at least 1e-12)."""
+    scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)
+    return np.abs(ours[:, 1:] - lammps[:, 1:]) / scale
+
+
+def assert_thermo_of_bodies_as_lammps(ours, lammps, what):
+    """Temperature and total energy to 5 significant digits, pressure to 1e-5 of its largest value,
+    at every thermo step (columns step temp epair ke etotal press ...)."""
+    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
+    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
+    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
+    print(f"{what}: largest relative difference from LAMMPS: temp {temp:.1e}, etotal {etotal:.1e}, "
+          f"press {press:.1e} (of its largest value)")
+    assert temp < 1e-5 and etotal < 1e-5
+    assert press < 1e-5
 
 
 EXTRA = STYLES
@@ -55,18 +61,10 @@ def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style
     Tperiod on each body alone (no noise, so LAMMPS's run is deterministic)."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
     extra = DRAG if style.endswith(" drag") else EXTRA[style]
-    done = pdps_cli(SCRIPT.format(style=style.split()[0], extra=extra, steps=10000), "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, SCRIPT.format(style=style.split()[0], extra=extra, steps=10000))
     lammps = reference(style)
     assert ours.shape == lammps.shape
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{style}: largest relative difference from LAMMPS over 1e4 steps: temp {temp:.1e}, "
-          f"etotal {etotal:.1e}, press {press:.1e} (of its largest value)")
-    assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits (achieved: 4e-12 and 8e-14)
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{style} over 1e4 steps")   # achieved: 4e-12, 8e-14
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
     # rigid/nvt's chains: ecouple and econserve (etotal + ecouple)
     assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
@@ -82,13 +80,11 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, scene):
     fix, steps = BAROSTATS.get(scene, (None, 5000))
     script = MIXED if scene == "mixed" else BAROSTAT_SCRIPT.format(fix=fix, steps=steps)
     script = script.replace("neigh_modify every 1 delay 0 check no\n", "")
-    done = pdps_cli(script, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, script)
     lammps = reference(scene)
     assert ours.shape == lammps.shape
-    scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)
-    worst = np.abs(ours[:, 1:] - lammps[:, 1:]).max(axis=0) / scale
+    differences = relative_differences(ours, lammps)
+    worst = differences.max(axis=0)
     columns = ("temp epair ke etotal press vol f_1 ecouple econserve" if scene == "mixed" else
                "temp epair ke etotal press vol lx ly lz f_1 ecouple econserve").split()
     print(f"{scene}: largest difference from LAMMPS over {steps} steps, relative to each column's largest value: "
@@ -99,7 +95,7 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, scene):
     # prints what it printed on the EPYC). Up to step 5000 the round-off is still small, so this part
     # is compared tightly; the rest is compared loosely.
     early = ours[:, 0] <= 5000
-    early_worst = (np.abs(ours[early, 1:] - lammps[early, 1:]) / scale).max()
+    early_worst = differences[early].max()
     assert early_worst < 1e-8
     assert worst.max() < 1e-4
 
@@ -121,15 +117,12 @@ def test_clumps_and_2d_bodies_match_lammps(pdps_cli, tmp_path, scene):
     scripts = {"clumps": CLUMPS, "plane": PLANE, "infile": INFILE, "collide": COLLIDE, "custom": CUSTOM,
                "infile gravity": INFILE_GRAVITY,
                "plane nph": PLANE_NPH.replace("neigh_modify every 1 delay 0 check no\n", "")}
-    done = pdps_cli(scripts[scene], "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, scripts[scene])
     lammps = reference(scene)
     assert ours.shape == lammps.shape
-    scale = np.maximum(np.abs(lammps[:, 1:]).max(axis=0), 1e-12)
-    worst = np.abs(ours[:, 1:] - lammps[:, 1:]).max(axis=0) / scale
-    print(f"{scene}: largest difference from LAMMPS, relative to each column's largest value: {worst.max():.1e}")
-    assert worst.max() < 1e-5
+    worst = relative_differences(ours, lammps).max()
+    print(f"{scene}: largest difference from LAMMPS, relative to each column's largest value: {worst:.1e}")
+    assert worst < 1e-5
 
 
 @pytest.mark.parametrize("style", ["rigid", "rigid/nve", "rigid/nvt", "rigid/nve langevin", "rigid/npt", "rigid/nph"])

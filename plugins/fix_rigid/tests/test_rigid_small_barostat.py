@@ -18,6 +18,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lam
 from lammps_run import read_blocks  # noqa: E402
 from rigid_small import BAROSTAT_SCRIPT, BAROSTATS, PLANE_NPH  # noqa: E402
 
+sys.path.insert(0, str(Path(__file__).parent))
+from test_rigid_lammps import pdps_thermo, relative_differences  # noqa: E402
+
 DATA = Path(__file__).with_name("data")
 COLUMNS = "step temp epair ke etotal press vol lx ly lz f_1 ecouple econserve".split()
 # LAMMPS's script builds neighbor lists every step (the recorder says why); pdps re-images the bodies'
@@ -29,9 +32,7 @@ def run_scene(pdps_cli, tmp_path, name, steps=None):
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
     fix, length = BAROSTATS[name]
     text = BAROSTAT_SCRIPT.format(fix=fix, steps=steps or length).replace(EVERY_STEP, "")
-    done = pdps_cli(text, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    return np.array(thermo_rows(done.stdout))
+    return pdps_thermo(pdps_cli, text)
 
 
 @pytest.mark.parametrize("name", list(BAROSTATS))
@@ -41,8 +42,7 @@ def test_barostats_match_lammps(pdps_cli, tmp_path, name):
     ours = run_scene(pdps_cli, tmp_path, name)
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[name]
     assert ours.shape == lammps.shape
-    scale = np.abs(lammps[:, 1:]).max(axis=0)
-    differences = np.abs(ours[:, 1:] - lammps[:, 1:]) / scale
+    differences = relative_differences(ours, lammps)
     early = differences[:11].max()
     worst = differences.max(axis=0)
     print(f"{name}: largest difference from LAMMPS, of each column's largest value: {early:.1e} over 1000 steps, "
@@ -164,9 +164,7 @@ def test_two_dimensional_bodies_match_lammps(pdps_cli, tmp_path):
     """A dimer and a triangle pushed across the periodic x boundary in 2d (fix enforce2d) under
     rigid/nph/small iso (x and y coupled; 1 degree of freedom of rotation a body): temperature,
     kinetic energy, pressure, area, f_1 and ecouple as LAMMPS's over 2000 steps."""
-    done = pdps_cli(PLANE_NPH, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, PLANE_NPH)
     lammps = read_blocks(DATA / "rigid_small_lj.txt")["plane rigid/nph/small"]
     assert ours.shape == lammps.shape == (11, 7)
     assert lammps[-1, 4] < 0.8 * lammps[0, 4]        # the box did shrink

@@ -16,8 +16,11 @@ from pdps_core.testing import run_ranks, thermo_rows
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
-from rigid import DRAG  # noqa: E402
+from rigid import DRAG, SCRIPT as RIGID_SCRIPT  # noqa: E402  (fix rigid's scene, for the drag)
 from rigid_small import FREE, INFILE, PLANE, STYLES as EXTRA, script  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_rigid_lammps import assert_thermo_of_bodies_as_lammps, pdps_thermo, relative_differences  # noqa: E402
 
 DATA = Path(__file__).with_name("data")
 STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
@@ -26,39 +29,15 @@ STYLES = ["rigid/small", "rigid/nve/small", "rigid/nvt/small"]
 @pytest.mark.parametrize("style", STYLES)
 def test_thermo_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path, style):
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
-    done = pdps_cli(script(style), "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, script(style))
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[style]
     assert ours.shape == lammps.shape
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{style}: largest relative difference from LAMMPS over 1e4 steps: temp {temp:.1e}, "
-          f"etotal {etotal:.1e}, press {press:.1e} (of its largest value)")
-    assert temp < 1e-5 and etotal < 1e-5       # 5 significant digits
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{style} over 1e4 steps")
     # f_1: the bodies' temperature (rigid/small), the Hamiltonian's kinetic part (+ the chains' energy)
     assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
     if style == "rigid/nvt/small":
         # ecouple and econserve (etotal + ecouple)
         assert ours[:, 7:] == pytest.approx(lammps[:, 7:], rel=1e-5, abs=1e-5 * np.abs(lammps[:, 7]).max())
-
-
-# fix rigid's LAMMPS scene (test_rigid_lammps.py), for the langevin keyword's drag
-RIGID_SCRIPT = """units lj
-atom_style molecular
-read_data rigid_lj.data
-pair_style lj/cut 2.5
-pair_coeff * * 1.0 1.0
-neigh_modify exclude molecule/intra all
-timestep 0.001
-fix 1 all {style} molecule{extra}
-thermo_style custom step temp epair ke etotal press f_1 ecouple econserve
-thermo_modify format float %20.15g
-thermo 100
-run 10000
-"""
 
 
 def rigid_reference(name):
@@ -77,21 +56,13 @@ def test_langevin_drag_matches_lammps_over_ten_thousand_steps(pdps_cli, tmp_path
     digits over 10^4 steps, the bodies' temperature (f_1 of rigid/small; rigid/nve/small's f_1 is
     another quantity) and pressure too."""
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
-    done = pdps_cli(RIGID_SCRIPT.format(style=small, extra=DRAG).replace(" f_1 ecouple econserve", " f_1"),
-                    "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, RIGID_SCRIPT.format(style=small, extra=DRAG, steps=10000).replace(
+        " f_1 ecouple econserve", " f_1"))
     lammps = rigid_reference(f"{rigid} drag")[:, :7]
     assert ours.shape == lammps.shape == (101, 7)
-    temp = np.abs(ours[:, 1] / lammps[:, 1] - 1).max()
-    etotal = np.abs(ours[:, 4] / lammps[:, 4] - 1).max()
-    press = np.abs(ours[:, 5] - lammps[:, 5]).max() / np.abs(lammps[:, 5]).max()
-    print(f"{small} drag against LAMMPS's {rigid} drag over 1e4 steps: temp {temp:.1e}, etotal {etotal:.1e}, "
-          f"press {press:.1e} (of its largest value)")
     # the drag does its work: the particles' temperature falls by more than half over the run
     assert lammps[-1, 1] < 0.5 * lammps[0, 1]
-    assert temp < 1e-5 and etotal < 1e-5
-    assert press < 1e-5
+    assert_thermo_of_bodies_as_lammps(ours, lammps, f"{small} drag against LAMMPS's {rigid} drag over 1e4 steps")
     if small == "rigid/small":
         assert ours[:, 6] == pytest.approx(lammps[:, 6], rel=1e-5)
 
@@ -135,13 +106,10 @@ def test_linear_2d_and_infile_bodies_match_lammps(pdps_cli, tmp_path, scene, sty
     3d, 6 a body in 2d) over 2000 steps."""
     shutil.copy(DATA / "rigid_small_bodies.txt", tmp_path)
     text = {"free": FREE, "plane": PLANE, "infile": INFILE}[scene].format(style=style, extra=EXTRA[style])
-    done = pdps_cli(text, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    ours = np.array(thermo_rows(done.stdout))
+    ours = pdps_thermo(pdps_cli, text)
     lammps = read_blocks(DATA / "rigid_small_lj.txt")[f"{scene} {style}"]
     assert ours.shape == lammps.shape == (11, 5)
-    scale = np.abs(lammps[:, 1:]).max(axis=0)
-    worst = (np.abs(ours[:, 1:] - lammps[:, 1:]) / scale).max()
+    worst = relative_differences(ours, lammps).max()
     print(f"{scene} {style}: largest difference from LAMMPS, relative to each column's largest value: {worst:.1e}")
     assert worst < 1e-5
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, total_momentum
+from pdps_core.api import Simulation
+from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, script_error, total_momentum
 
 DATA = Path(__file__).parent / "data"
 ROWS = [line.split("\t") for line in (DATA / "fixes.txt").read_text().splitlines()]
@@ -64,8 +64,4 @@ def test_enforce2d_keeps_particles_in_the_plane():
     ('fix 2 all print 10 "x" colour red', "unknown keyword colour (known: file, append, screen, title)"),
 ])
 def test_bad_fixes(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    assert script_error("region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1", line).message == message

@@ -4,19 +4,14 @@ thermo steps."""
 import numpy as np
 import pytest
 
+from pdps_core.testing import lj_fcc
+
 
 # LAMMPS 22 Jul 2025 on FIX_PRINT (this file's script): its PRINT lines. A line at each run's first
 # step that is a multiple of N (step 9 twice with runs of 9 and 3), and pe and press on steps that
 # are not thermo steps; pdps printed no first line and stopped at step 3 ("potential energy was not
 # computed").
-FIX_PRINT = """
-units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+FIX_PRINT = "\n" + lj_fcc(3) + """mass 1 1.0
 velocity all create 1.5 87287 loop geom
 pair_style lj/cut 2.5
 pair_coeff 1 1 1.0 1.0 2.5

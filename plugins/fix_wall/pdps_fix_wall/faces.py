@@ -5,7 +5,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import ScriptError
+from pdps_core.api import Fix, ScriptError
 
 FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
 Face = Literal["xlo", "xhi", "ylo", "yhi", "zlo", "zhi"]
@@ -20,6 +20,35 @@ def once_each(walls):
             raise ValueError(f"wall {face} is given twice")
         given[face] = value
     return given
+
+
+class PotentialWalls(Fix):
+    """What walls with a potential share: forces at setup and in minimization, their energy and
+    virial in thermo, f_ID their total energy and f_ID[k] the force on wall k (``wall_energy``,
+    ``wall_virial`` and ``wall_force``, which post_force fills)."""
+    can_energy = True
+    can_virial = True
+    extensive = True        # f_ID and f_ID[k] are totals: per particle where thermo normalises (lj)
+
+    def setup(self, sim):
+        self.post_force(sim)
+
+    def min_post_force(self, sim):
+        self.post_force(sim)
+
+    def energy(self, sim):
+        return self.wall_energy
+
+    def virial(self, sim):
+        return self.wall_virial
+
+    def scalar(self, sim):
+        """The walls' total energy (f_ID), summed over ranks."""
+        return float(sim.comm.sum(self.wall_energy))
+
+    def vector(self, sim):
+        """The force on each wall (f_ID[k]), summed over ranks."""
+        return np.array(sim.comm.sum(self.wall_force), dtype=float)
 
 
 def wall_planes(sim, coords, units):

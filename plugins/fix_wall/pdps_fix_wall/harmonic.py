@@ -40,9 +40,9 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Fix, StyleArgs, keyword, param
+from pdps_core.api import StyleArgs, keyword, param
 
-from .faces import Face, once_each, wall_planes
+from .faces import Face, PotentialWalls, once_each, wall_planes
 
 
 class Wall(NamedTuple):
@@ -86,12 +86,9 @@ def harmonic_walls(x, f, mask, groupbit, nlocal, axes, lower, coords, epsilon, c
     return energy, vxx, vyy, vzz, -1
 
 
-class FixWallHarmonic(Fix):
+class FixWallHarmonic(PotentialWalls):
     name = "wall/harmonic"
     usage = "fix ID GROUP wall/harmonic face coord epsilon sigma cutoff [face ...] [units box|lattice]"
-    can_energy = True
-    can_virial = True
-    extensive = True        # f_ID and f_ID[k] are totals: per particle where thermo normalises (lj)
 
     class Args(StyleArgs):
         wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy/area", "distance", "distance"))
@@ -117,12 +114,6 @@ class FixWallHarmonic(Fix):
         self.wall_virial = np.zeros(6)
         self.wall_force = np.zeros(len(self.axes))
 
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def min_post_force(self, sim):
-        self.post_force(sim)
-
     def post_force(self, sim):
         p = sim.particles
         self.wall_force[:] = 0.0
@@ -136,18 +127,4 @@ class FixWallHarmonic(Fix):
         sim.comm.agree(message)
         self.wall_energy = energy
         self.wall_virial[:3] = (vxx, vyy, vzz)
-
-    def energy(self, sim):
-        return self.wall_energy
-
-    def virial(self, sim):
-        return self.wall_virial
-
-    def scalar(self, sim):
-        """The walls' total energy (f_ID), summed over ranks."""
-        return float(sim.comm.sum(self.wall_energy))
-
-    def vector(self, sim):
-        """The force on each wall along its axis (f_ID[k]), summed over ranks."""
-        return np.asarray(sim.comm.sum(self.wall_force), dtype=float)
 

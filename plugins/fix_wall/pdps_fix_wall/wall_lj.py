@@ -47,9 +47,9 @@ import numpy as np
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
+from pdps_core.api import FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
-from .faces import FACES, Face, once_each
+from .faces import FACES, Face, PotentialWalls, once_each
 
 
 class Wall(NamedTuple):
@@ -94,12 +94,9 @@ def lj_wall(x, f, mask, groupbit, nlocal, axis, lower, coord, law, c1, c2, c3, c
     return energy, fsum, -1
 
 
-class WallLJ(Fix):
+class WallLJ(PotentialWalls):
     """What wall/lj93 and wall/lj126 share: the walls, their coords, the tallies."""
     law = LJ93
-    can_energy = True
-    can_virial = True
-    extensive = True
 
     class Args(StyleArgs):
         wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy", "distance", "distance"))
@@ -132,7 +129,7 @@ class WallLJ(Fix):
                       for face, _ in self.walls]
         self.coefficients = [self.coefficients_of(eps, sigma, cutoff) for _, (_, eps, sigma, cutoff) in self.walls]
         self.wall_energy = 0.0
-        self.wall_forces = np.zeros(len(self.walls))
+        self.wall_force = np.zeros(len(self.walls))
         self.wall_virial = np.zeros(6)
 
     def _coord(self, sim, k):
@@ -147,12 +144,6 @@ class WallLJ(Fix):
             coord = float(sim.variables.value(coord.name))
         return coord * float(spacing)
 
-    def setup(self, sim):
-        self.post_force(sim)
-
-    def min_post_force(self, sim):
-        self.post_force(sim)
-
     def post_force(self, sim):
         p = sim.particles
         groupbit = sim.groups.bit(self.group)
@@ -165,25 +156,11 @@ class WallLJ(Fix):
                                             face.endswith("lo"), self._coord(sim, k), self.law, c1, c2, c3, c4,
                                             offset, cutoff, self.wall_virial)
             self.wall_energy += energy
-            self.wall_forces[k] = force
+            self.wall_force[k] = force
             if inside >= 0 and message is None:
                 message = (f"fix {self.id} ({self.name}): particle {int(p.tag[inside])} is on or behind wall "
                            f"{face} at step {sim.step} (position {', '.join(f'{c:.6g}' for c in p.x[inside])})")
         sim.comm.agree(message)
-
-    def energy(self, sim):
-        return self.wall_energy
-
-    def virial(self, sim):
-        return self.wall_virial
-
-    def scalar(self, sim):
-        """The walls' total energy (f_ID), summed over ranks."""
-        return float(sim.comm.sum(self.wall_energy))
-
-    def vector(self, sim):
-        """The force on each wall (f_ID[k]), summed over ranks."""
-        return np.asarray(sim.comm.sum(self.wall_forces.copy()))
 
 
 class FixWallLJ93(WallLJ):

@@ -14,8 +14,8 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.api import Pair, ScriptError, Simulation, StyleArgs
-from pdps_core.testing import make_box, register_styles
+from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import NoForcePair, make_box, register_styles
 from pdps_granular_contact import contact_models
 
 MASS = math.pi / 6.0
@@ -340,21 +340,7 @@ def test_only_spheres_with_candidate_triangles_are_visited(scene, data):
     assert np.abs(spring).max() < 1e-12
 
 
-class NoForce(Pair):
-    """A pair style with no force: makes the core build neighbor lists and re-sort particles."""
-    name = "test/wall_no_force"
-
-    class Coeff(StyleArgs):
-        pass
-
-    def init_one(self, i, j):
-        return 1.0
-
-    def compute(self, sim, nlist, eflag, vflag):
-        self.energy = 0.0
-
-
-register_styles(NoForce)
+register_styles(NoForcePair)
 
 
 def test_re_sorted_particles_keep_their_walls_and_histories(scene, data):
@@ -367,7 +353,7 @@ def test_re_sorted_particles_keep_their_walls_and_histories(scene, data):
         sim.command("lattice spacing x 0.45 y 0.45 z 0.45\nregion cloud block -0.45 0.45 -0.45 0.45 1.3 2.0")
         sim.command("create_particle 1 region cloud diameter 0.8 density 1")
         if sort:
-            sim.command(f"pair_style {NoForce.name}\npair_coeff * *\natom_modify sort 5 0.5")
+            sim.command(f"pair_style {NoForcePair.name}\npair_coeff * *\natom_modify sort 5 0.5")
         sim.command(f"""
             fix 1 all test/nve_sphere
             fix 2 all test/wall_gravity 0 0 -10

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, lammps_thermo, total_energy
+from pdps_core.api import Simulation
+from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, lammps_thermo, script_error, total_energy
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -55,11 +55,8 @@ def test_force_is_minus_the_energy_gradient(style):
                                       "sigma cutoff [face ...] [units box|lattice] [pbc yes|no]"),
 ])
 def test_bad_walls(line, message):
-    sim = Simulation(screen=False, log=None)
-    sim.command("boundary p p f\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1")
-    with pytest.raises(ScriptError) as caught:
-        sim.command(line)
-    assert caught.value.message == message
+    box = "boundary p p f\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1"
+    assert script_error(box, line).message == message
 
 
 def test_a_particle_behind_the_wall_stops_the_run():

@@ -9,27 +9,13 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, thermo_rows
-
-
-def bed(path, n_side=(6, 6, 3), seed=5):
-    """Polydisperse spheres (d 0.8-1.2) on a loose lattice inside the cylinder, random velocities."""
-    rng = np.random.default_rng(seed)
-    cells = np.mgrid[0:n_side[0], 0:n_side[1], 0:n_side[2]].reshape(3, -1).T
-    x = cells * 1.3 - np.array([3.25, 3.25, -0.75]) + rng.uniform(-0.05, 0.05, size=(len(cells), 3))
-    d = rng.uniform(0.8, 1.2, size=len(x))
-    v = rng.normal(scale=0.5, size=x.shape)
-    lines = ["bed", "", f"{len(x)} atoms", "2 atom types", "", "-7 7 xlo xhi", "-7 7 ylo yhi",
-             "-1 10 zlo zhi", "", "Atoms # sphere", ""]
-    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
-              for k, p in enumerate(x, 1)]
-    lines += ["", "Velocities", ""]
-    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
-    path.write_text("\n".join(lines) + "\n")
+from pdps_core.testing import run_ranks, sphere_bed, thermo_rows
 
 
 def run(tmp_path, data, ranks):
-    bed(tmp_path / "bed.data")
+    # polydisperse spheres (d 0.8-1.2) on a loose lattice inside the cylinder, random velocities
+    sphere_bed(tmp_path / "bed.data", (6, 6, 3), (-3.25, -3.25, 0.75), (-7, -7, -1), (7, 7, 10), ntypes=2,
+               seed=5)
     shutil.copy(f"{data}/square.stl", tmp_path / "square.stl")
     done = run_ranks("""\
         atom_style granular

@@ -16,7 +16,7 @@ force computation (``Mirrors``).
 import numpy as np
 from numba import njit
 
-from pdps_core.api import open_slot
+from pdps_core.api import find_slot, open_slot
 
 
 @njit(cache=True)
@@ -244,3 +244,38 @@ class Mirrors:
         self.merged = index
         bad = merge_mirrors(history.partner, history.values, touched, index, back, history.capacity)
         return -1 if bad < 0 else int(p.tag[bad])
+
+
+@njit(cache=True)
+def load_history(partner, history, touched, owner, tag, i, j, update, hist):
+    """The contact's values as i sees them (its spring, and whatever else the law keeps) into
+    ``hist``; returns (slot on i, slot on j's owner). When ``update`` the slots are made if new and
+    marked as seen this step (a negative slot: no free slot); in setup only existing slots are read
+    (-1 when there is none)."""
+    width = len(hist)
+    jo = owner[j] if owner[j] >= 0 else j
+    if not update:
+        slot = find_slot(partner, i, tag[j])
+        for d in range(width):
+            hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
+        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
+    slot_i = open_slot(partner, history, i, tag[j], width)
+    slot_j = open_slot(partner, history, jo, tag[i], width)
+    if slot_i < 0 or slot_j < 0:
+        return slot_i, slot_j
+    touched[i, slot_i] = True
+    touched[jo, slot_j] = True
+    for d in range(width):
+        hist[d] = history[i, width * slot_i + d]
+    return slot_i, slot_j
+
+
+@njit(cache=True)
+def store_history(history, owner, i, j, slot_i, slot_j, hist):
+    """i keeps the values, j's owner their negatives (the same spring and torque seen from j)."""
+    width = len(hist)
+    jo = owner[j] if owner[j] >= 0 else j
+    for d in range(width):
+        history[i, width * slot_i + d] = hist[d]
+        if slot_j >= 0:
+            history[jo, width * slot_j + d] = -hist[d]

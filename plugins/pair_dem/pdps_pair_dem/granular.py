@@ -40,9 +40,10 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, open_slot
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, contact_rows, pack_slots
+from pdps_granular_contact.contact_slots import (HeldRows, Mirrors, contact_rows, load_history, pack_slots,
+                                                  store_history)
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -76,40 +77,6 @@ def contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel):
     vrel[0] = v[i, 0] - v[j, 0] - (wy * n[2] - wz * n[1])
     vrel[1] = v[i, 1] - v[j, 1] - (wz * n[0] - wx * n[2])
     vrel[2] = v[i, 2] - v[j, 2] - (wx * n[1] - wy * n[0])
-
-
-@njit(cache=True)
-def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
-    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
-
-    When ``update`` the slots are made if new and marked as seen this step; a negative slot means
-    that particle has no free slot. In setup (not ``update``) nothing is made or marked."""
-    if not update:
-        slot = find_slot(partner, i, tag[j])
-        for d in range(3):
-            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
-        return slot, -1
-    # the mirror goes to j's owner; one on another rank gets it through j's ghost row, sent
-    # back after the pair loop (contact_slots.Mirrors)
-    jo = owner[j] if owner[j] >= 0 else j
-    slot_i = open_slot(partner, history, i, tag[j], 3)
-    slot_j = open_slot(partner, history, jo, tag[i], 3)
-    if slot_i < 0 or slot_j < 0:
-        return slot_i, slot_j
-    touched[i, slot_i] = True
-    touched[jo, slot_j] = True
-    for d in range(3):
-        shear[d] = history[i, 3 * slot_i + d]
-    return slot_i, slot_j
-
-
-@njit(cache=True)
-def store_spring(history, owner, i, j, slot_i, slot_j, shear):
-    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
-    jo = owner[j] if owner[j] >= 0 else j
-    for d in range(3):
-        history[i, 3 * slot_i + d] = shear[d]
-        history[jo, 3 * slot_j + d] = -shear[d]
 
 
 @njit(cache=True)
@@ -193,7 +160,7 @@ def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag
             m_i = contact_models.contact_mass(rmass, body_mass, i)
             m_j = contact_models.contact_mass(rmass, body_mass, j)
             m_star = m_i * m_j / (m_i + m_j)
-            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
+            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, shear)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
@@ -210,7 +177,7 @@ def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag
                                            law[3, ti, tj] + law[5, ti, tj] * damping, law[6, ti, tj],
                                            spring_dt, limit_damping, force)
             if update:
-                store_spring(history, owner, i, j, slot_i, slot_j, shear)
+                store_history(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
             log_contact(log_pairs, log_force, logged, i, j, force)
     return -1

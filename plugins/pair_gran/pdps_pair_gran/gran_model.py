@@ -73,46 +73,13 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, find_slot, keyword, open_slot
+from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, find_slot, keyword
 from pdps_granular_contact import contact_models, liggghts
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, load_history, pack_slots, store_history
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
 OnOff = Literal["on", "off"]
-
-
-@njit(cache=True)
-def load_history(partner, history, touched, owner, tag, i, j, update, hist):
-    """The contact's values as i sees them into ``hist``; returns (slot on i, slot on j's owner),
-    as pdps_pair_gran.gran.load_spring for any width."""
-    width = len(hist)
-    jo = owner[j] if owner[j] >= 0 else j
-    if not update:
-        slot = find_slot(partner, i, tag[j])
-        for d in range(width):
-            hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
-        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
-    slot_i = open_slot(partner, history, i, tag[j], width)
-    slot_j = open_slot(partner, history, jo, tag[i], width)
-    if slot_i < 0 or slot_j < 0:
-        return slot_i, slot_j
-    touched[i, slot_i] = True
-    touched[jo, slot_j] = True
-    for d in range(width):
-        hist[d] = history[i, width * slot_i + d]
-    return slot_i, slot_j
-
-
-@njit(cache=True)
-def store_history(history, owner, i, j, slot_i, slot_j, hist):
-    """i keeps the values, j's owner their negatives (the same spring and torque seen from j)."""
-    width = len(hist)
-    jo = owner[j] if owner[j] >= 0 else j
-    for d in range(width):
-        history[i, width * slot_i + d] = hist[d]
-        if slot_j >= 0:
-            history[jo, width * slot_j + d] = -hist[d]
 
 
 # _nrt=False: no reference counting of the arrays its contact helpers take (they store under

@@ -5,23 +5,12 @@ sides and merged back on their owners (as LAMMPS's reverse communication of hist
 import numpy as np
 import pytest
 
-from pdps_core.testing import contacts_held_on_ranks, run_ranks, thermo_rows
+from pdps_core.testing import contacts_held_on_ranks, run_ranks, sphere_bed, thermo_rows
 
 
-def bed(path, n_side=(12, 6, 4), seed=11):
+def bed(path):
     """Polydisperse spheres (d 0.8-1.2) on a loose lattice over a floor, with random velocities."""
-    rng = np.random.default_rng(seed)
-    cells = np.mgrid[0:n_side[0], 0:n_side[1], 0:n_side[2]].reshape(3, -1).T
-    x = cells * 1.3 + np.array([0.7, 0.7, 0.7]) + rng.uniform(-0.05, 0.05, size=(len(cells), 3))
-    d = rng.uniform(0.8, 1.2, size=len(x))
-    v = rng.normal(scale=0.5, size=x.shape)
-    lines = ["bed", "", f"{len(x)} atoms", "1 atom types", "", "0 15.6 xlo xhi", "0 7.8 ylo yhi",
-             "0 12 zlo zhi", "", "Atoms # sphere", ""]
-    lines += [f"{k} 1 {float(d[k - 1])!r} 1.9098593171027440 {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}"
-              for k, p in enumerate(x, 1)]
-    lines += ["", "Velocities", ""]
-    lines += [f"{k} {float(u[0])!r} {float(u[1])!r} {float(u[2])!r} 0 0 0" for k, u in enumerate(v, 1)]
-    path.write_text("\n".join(lines) + "\n")
+    sphere_bed(path, (12, 6, 4), (0.7, 0.7, 0.7), (0, 0, 0), (15.6, 7.8, 12), ntypes=1, seed=11)
 
 
 def kinetic_energies(tmp_path, ranks):

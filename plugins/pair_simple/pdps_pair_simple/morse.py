@@ -26,6 +26,8 @@ import math
 from numba import njit
 from pdps_core.api import PairLaw, StyleArgs, param
 
+from .mixing import cutoff_of
+
 
 @njit(cache=True, inline="always")
 def morse_law(rsq, dx, dy, dz, coeff, i, j, atom, state):
@@ -53,7 +55,7 @@ class PairMorse(PairLaw):
 
     def init_one(self, i, j):
         c = self.resolved[(i, j)]
-        rc = c.cutoff if c.cutoff is not None else self.args.cutoff
+        rc = cutoff_of(self, c)
         offset = 0.0
         if self.shift:
             alpha_dr = -c.alpha * (rc - c.r0)

@@ -25,7 +25,7 @@ import math
 from numba import njit
 from pdps_core.api import PairLaw, StyleArgs, param
 
-from .mixing import mix_distance
+from .mixing import cutoff_of, mixed_cutoff
 
 
 @njit(cache=True, inline="always")
@@ -52,11 +52,9 @@ class PairSoft(PairLaw):
         cutoff: float | None = param(None, gt=0, unit="distance")
 
     def mix_coeff(self, ci, cj, rule):
-        rc_i = ci.cutoff if ci.cutoff is not None else self.args.cutoff
-        rc_j = cj.cutoff if cj.cutoff is not None else self.args.cutoff
-        return self.Coeff(prefactor=math.sqrt(ci.prefactor * cj.prefactor), cutoff=mix_distance(rc_i, rc_j, rule))
+        return self.Coeff(prefactor=math.sqrt(ci.prefactor * cj.prefactor), cutoff=mixed_cutoff(self, ci, cj, rule))
 
     def init_one(self, i, j):
         c = self.resolved[(i, j)]
-        rc = c.cutoff if c.cutoff is not None else self.args.cutoff
+        rc = cutoff_of(self, c)
         return rc, (c.prefactor, math.pi / rc)

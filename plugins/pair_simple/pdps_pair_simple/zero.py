@@ -18,7 +18,7 @@ from typing import Literal
 from numba import njit
 from pdps_core.api import PairLaw, StyleArgs, param
 
-from .mixing import mix_distance
+from .mixing import mixed_cutoff
 
 
 @njit(cache=True, inline="always")
@@ -42,9 +42,7 @@ class PairZero(PairLaw):
         cutoff: float | None = param(None, gt=0, unit="distance")
 
     def mix_coeff(self, ci, cj, rule):
-        rc_i = ci.cutoff if ci.cutoff is not None else self.args.cutoff
-        rc_j = cj.cutoff if cj.cutoff is not None else self.args.cutoff
-        return self.Coeff(cutoff=mix_distance(rc_i, rc_j, rule))
+        return self.Coeff(cutoff=mixed_cutoff(self, ci, cj, rule))
 
     def init_one(self, i, j):
         c = self.resolved[(i, j)]

@@ -3,43 +3,30 @@ on a 200-particle two-type fluid (data/pair_styles.txt, recorded with LAMMPS by
 benchmarks/lammps_references/pair_styles.py), and their forces are minus the gradient of their energy."""
 
 import math
+import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import assert_thermo_as_lammps, build, energy_gradient, forces_by_tag, lammps_rows, lammps_thermo
+from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
+                               lammps_rows, lammps_thermo, two_type_cluster)
 
 DATA = Path(__file__).parent / "data"
-CASES = {
-    "soft": "pair_style soft 1.5\npair_coeff 1 1 3.0\npair_coeff 2 2 5.0 1.3",
-    "morse": "pair_style morse 2.5\npair_coeff 1 1 1.0 4.0 1.1\npair_coeff 2 2 0.7 3.5 1.2\n"
-             "pair_coeff 1 2 0.85 3.8 1.15 2.2\npair_modify shift yes",
-    "yukawa": "pair_style yukawa 1.5 2.8\npair_coeff 1 1 10.0\npair_coeff 2 2 6.0 2.5\npair_modify shift yes",
-    "zero": "pair_style zero 2.5\npair_coeff * *",
-    "lj_sixthpower": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2 2.0\n"
-                     "pair_modify mix sixthpower",
-    "lj_arithmetic_shift": "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
-                           "pair_modify mix arithmetic shift yes",
-}
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from pair_styles import CASES, nve_script  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data"], DATA)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data"], DATA)
     assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_styles.txt", case), case)
 
 
 @pytest.mark.parametrize("case", ["soft", "morse", "yukawa"])
 def test_forces_are_minus_the_gradient(tmp_path, case):
-    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
-    sim = build(tmp_path, x, types=[1, 1, 2, 2], setup=CASES[case].replace("pair_modify shift yes", ""))
-    analytic, numeric = energy_gradient(sim, h=1e-6)
-    assert np.abs(analytic).max() > 0.1
-    assert numeric == pytest.approx(analytic, rel=1e-6, abs=1e-7)
+    sim = two_type_cluster(tmp_path, CASES[case].replace("pair_modify shift yes", ""))
+    assert_force_is_minus_gradient(sim, rel=1e-6, abs=1e-7, largest=0.1)
 
 
 def test_soft_pushes_coincident_particles_apart_without_blowing_up(tmp_path):

@@ -5,33 +5,24 @@ table files get one line naming the file, the line and the fault."""
 
 import math
 import shutil
+import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, SimulationError
-from pdps_core.testing import assert_thermo_as_lammps, build, energy_gradient, forces_by_tag, lammps_rows, lammps_thermo
+from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
+                               lammps_rows, lammps_thermo, script_error, two_type_cluster)
 
 DATA = Path(__file__).parent / "data"
-CASES = {
-    "linear_r": "pair_style table linear 1000\npair_coeff * * pots.table LJ_R",
-    "spline_r": "pair_style table spline 400\npair_coeff * * pots.table LJ_R",
-    "lookup_r": "pair_style table lookup 2000\npair_coeff * * pots.table LJ_R",
-    "linear_rsq_match": "pair_style table linear 1200\npair_coeff * * pots.table LJ_RSQ",
-    "spline_rsq": "pair_style table spline 1200\npair_coeff * * pots.table LJ_RSQ",
-    "two_types_spline": "pair_style table spline 600\npair_coeff 1 1 pots.table LJ_R 2.2\n"
-                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table LJ_RSQ 2.4",
-    "two_types_linear": "pair_style table linear 700\npair_coeff 1 1 pots.table LJ_R 2.2\n"
-                        "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table MORSE_FP 2.0",
-}
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
+from pair_styles import nve_script  # noqa: E402
+from pair_table import CASES  # noqa: E402
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press\nrun 100", ["fluid.data", "pots.table"], DATA)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
     assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_table.txt", case), case)
 
 
@@ -43,14 +34,10 @@ def _tables(tmp_path):
 def test_spline_forces_are_minus_the_gradient(tmp_path, monkeypatch):
     _tables(tmp_path)
     monkeypatch.chdir(tmp_path)
-    x = [[5.0, 5.0, 5.0], [6.05, 5.3, 4.8], [4.4, 5.9, 5.6], [5.5, 4.1, 5.9]]
-    sim = build(tmp_path, x, types=[1, 1, 2, 2],
-                setup="pair_style table spline 2000\npair_coeff 1 1 pots.table LJ_R\n"
-                      "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table LJ_RSQ 2.4")
-    analytic, numeric = energy_gradient(sim, h=1e-6)
-    assert np.abs(analytic).max() > 0.1
+    sim = two_type_cluster(tmp_path, "pair_style table spline 2000\npair_coeff 1 1 pots.table LJ_R\n"
+                                     "pair_coeff 2 2 pots.table MORSE_FP\npair_coeff 1 2 pots.table LJ_RSQ 2.4")
     # energy and force are splined separately (LAMMPS's tables): they agree to the splines' accuracy
-    assert numeric == pytest.approx(analytic, rel=1e-5, abs=1e-5)
+    assert_force_is_minus_gradient(sim, rel=1e-5, abs=1e-5, largest=0.1)
 
 
 def test_linear_forces_interpolate_the_tabulated_force(tmp_path, monkeypatch):
@@ -141,13 +128,11 @@ def test_the_bitmap_style_is_refused():
 def test_table_does_not_mix(tmp_path, monkeypatch):
     _tables(tmp_path)
     monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log=None)
-    sim.command("region box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
-                "pair_style table linear 100\npair_coeff 1 1 pots.table LJ_R\npair_coeff 2 2 pots.table LJ_R\n"
-                "pair_modify mix arithmetic")
-    with pytest.raises(ScriptError, match=r"pair coefficients are not set for types 1 2 \(pair style table does "
-                                          r"not mix; give pair_coeff for every type pair\)$"):
-        sim.command("run 0")
+    refused = script_error("region box block 0 5 0 5 0 5\ncreate_box 2 box\nmass * 1\ncreate_particle 1 single 1 1 1\n"
+                           "pair_style table linear 100\npair_coeff 1 1 pots.table LJ_R\n"
+                           "pair_coeff 2 2 pots.table LJ_R\npair_modify mix arithmetic", "run 0")
+    assert refused.message == ("pair coefficients are not set for types 1 2 (pair style table does not mix; give "
+                               "pair_coeff for every type pair)")
 
 
 @pytest.mark.parametrize("text, message", [
