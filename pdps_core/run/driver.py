@@ -11,7 +11,6 @@ def run_steps(sim, nsteps, ramp_bounds=None):
     sim.require_box("run")
     sim.system.check_masses()
     run.ramp_bounds = (run.step, run.step + nsteps) if ramp_bounds is None else tuple(ramp_bounds)
-    t_start = time.perf_counter()
     run.run_first_step = run.step
     last = run.step + nsteps
     run.run_last_step = last
