@@ -806,10 +806,10 @@ class Fix(Style):
 
     Contributions to thermo (LAMMPS's ``fix_modify energy/virial`` and ``dof``):
 
-    - ``can_energy = True`` and ``energy(sim)``: the fix's potential energy on this rank at the
+    - ``can_energy = True`` and ``compute_energy(sim)``: the fix's potential energy on this rank at the
       current step (energy units, not per particle); added to thermo ``pe`` (and ``etotal``) after
       ``fix_modify ID energy yes``.
-    - ``can_virial = True`` and ``virial(sim)``: this rank's six virial components (xx, yy, zz, xy,
+    - ``can_virial = True`` and ``compute_virial(sim)``: this rank's six virial components (xx, yy, zz, xy,
       xz, yz; energy units) of the fix's forces at the current step; added to ``press`` when on:
       ``virial_default`` (True where LAMMPS's own fix contributes by default), or ``fix_modify ID
       virial yes``. Walls tally r . f relative to the wall (as LAMMPS's walls), so a confined gas
@@ -817,10 +817,12 @@ class Fix(Style):
     - ``dof_removed(sim, group)``: how many degrees of freedom the fix removes from the particles
       of ``group`` (global count); temperatures and the kinetic pressure use N_dof minus it.
 
-    ``energy`` and ``virial`` are called after ``post_force`` on steps where something reads them
+    They are methods (compute_*: worked out when asked) where the pair style's ``energy`` and
+    ``virial`` are the step's values. ``compute_energy`` and ``compute_virial`` are called after
+    ``post_force`` on steps where something reads them
     (``sim.eflag`` / ``sim.vflag`` are True during that step's force hooks, so a fix can tally only
     then). A fix whose virial is complete only after its ``final_integrate`` (constraint forces, as
-    LAMMPS's fix rigid tallies in set_v) sets ``virial_after = "final_integrate"``: its ``virial`` is
+    LAMMPS's fix rigid tallies in set_v) sets ``virial_after = "final_integrate"``: its ``compute_virial`` is
     then read after every fix's final_integrate (and after ``setup``), before ``end_of_step`` and
     output; fixes reading ``sim.virial`` within final_integrate (barostats) do not see it.
 
@@ -858,10 +860,10 @@ class Fix(Style):
         self.thermo_energy = False
         self.thermo_virial = self.virial_default
 
-    def energy(self, sim):
+    def compute_energy(self, sim):
         return 0.0
 
-    def virial(self, sim):
+    def compute_virial(self, sim):
         return (0.0,) * 6
 
     def modify_param(self, sim, keyword, value):

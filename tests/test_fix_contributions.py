@@ -119,7 +119,7 @@ class LateVirial(Fix):
     def final_integrate(self, sim):
         self.w = 3.0 * (sim.step + 1)
 
-    def virial(self, sim):
+    def compute_virial(self, sim):
         return (self.w, self.w, self.w, 0.0, 0.0, 0.0)
 
 

@@ -221,9 +221,9 @@ class Verlet:
         sim = self.sim
         for fix in self.contributing:
             if stage == "post_force" and sim.eflag and fix.thermo_energy:
-                sim.run_state.pe += float(fix.energy(sim))
+                sim.run_state.pe += float(fix.compute_energy(sim))
             if sim.vflag and fix.thermo_virial and fix.virial_after == stage:
-                sim.run_state.virial += np.asarray(fix.virial(sim), dtype=np.float64)
+                sim.run_state.virial += np.asarray(fix.compute_virial(sim), dtype=np.float64)
 
     def _check_finite(self):
         particles = self.sim.particles

@@ -114,7 +114,7 @@ class FixAddForce(ForceFix):
             volume = math.pi * radius ** 2 if sim.dimension == 2 else 4.0 / 3.0 * math.pi * radius ** 3
             f[selected, AXES[axis]] += rho * g * volume
 
-    def energy(self, sim):
+    def compute_energy(self, sim):
         """-F . x over the particles the constant force acts on (this rank's)."""
         force = self.constant_force(sim)
         if force is None:

@@ -737,7 +737,7 @@ class FixRigid(Fix):
         """After a box change moved the centres: the box lengths are read again."""
         self.atom_arrays = None
 
-    def virial(self, sim):
+    def compute_virial(self, sim):
         """Both halves of the step's constraint virial (read after final_integrate)."""
         return tuple(float(c) for c in self.step_virial + self.final_virial)
 

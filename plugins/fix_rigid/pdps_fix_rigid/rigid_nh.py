@@ -418,7 +418,7 @@ class NoseHooverBarostat:
         constraints = np.zeros(3)
         for fix in sim.fixes.values():
             if fix.thermo_virial and fix.virial_after == "final_integrate":
-                constraints += np.asarray(fix.virial(sim), dtype=np.float64)[:3]
+                constraints += np.asarray(fix.compute_virial(sim), dtype=np.float64)[:3]
         constraints = np.asarray(sim.comm.sum(constraints))
         temp_id = self._pressure_temperature(sim)
         group = self._defined(sim, temp_id, "temperature").group if temp_id is not None else "all"

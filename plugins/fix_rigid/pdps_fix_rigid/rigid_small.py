@@ -822,7 +822,7 @@ class FixRigidSmall(Fix):
         self._share(sim)
 
     # ---- thermo ----------------------------------------------------------------------------------
-    def virial(self, sim):
+    def compute_virial(self, sim):
         return tuple(float(c) for c in self.step_virial + self.final_virial)
 
     def dof_removed(self, sim, group):

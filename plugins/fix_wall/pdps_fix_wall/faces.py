@@ -36,10 +36,10 @@ class PotentialWalls(Fix):
     def min_post_force(self, sim):
         self.post_force(sim)
 
-    def energy(self, sim):
+    def compute_energy(self, sim):
         return self.wall_energy
 
-    def virial(self, sim):
+    def compute_virial(self, sim):
         return self.wall_virial
 
     def scalar(self, sim):
