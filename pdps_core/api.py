@@ -8,7 +8,8 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
-from .capabilities import ContactTable, GlobalProperty, HeatTransport
+from .capabilities import (ContactTable, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
+                           TriangleSurface)
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
@@ -23,7 +24,7 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
                      registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable",
-           "GlobalProperty", "HeatTransport", "Dump", "Fix",
+           "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",

@@ -44,3 +44,28 @@ class GlobalProperty(Protocol):
     style: str              # "scalar", "vector", "per_type" or "per_type_pair"
     columns: int            # per_type_pair: the table's side; else 1
     values: np.ndarray      # the numbers, in the order given (a table row by row)
+
+
+@runtime_checkable
+class TriangleSurface(Protocol):
+    """A fix holding a triangulated surface (fix wall/mesh, mesh/surface): what mesh dumps write."""
+
+    vertices: np.ndarray    # (n, 3) corner positions now (distance)
+    triangles: np.ndarray   # (m, 3) corner rows of each triangle
+    moving: bool            # whether the corners move during a run
+
+
+@runtime_checkable
+class MeshSurface(TriangleSurface, Protocol):
+    """A surface other fixes share and move, as LIGGGHTS's fix mesh/surface: walls (wall/gran mesh)
+    act on it and ``add_mover(fix)`` gives it a motion (fix move/mesh)."""
+
+    def add_mover(self, mover) -> None: ...
+
+
+@runtime_checkable
+class SurfaceValues(Protocol):
+    """A surface with values per triangle (fix mesh/surface/stress): ``face_data(sim)`` gives
+    {name: (m,) or (m, k) array}, written by the mesh dumps as cell data."""
+
+    def face_data(self, sim) -> dict: ...

@@ -9,12 +9,12 @@ Particles are points (one vertex cell each), sorted by id, with the point data `
 ``v``, ``f`` and, when the particles have them (``particle_style sphere``), ``radius`` and ``omega``.
 In a parallel run rank 0 gathers the particles and writes every file.
 
-Mesh walls (keyword ``walls yes``): every fix that exposes a triangulated surface through the
-public attributes ``vertices`` (n x 3) and ``triangles`` (m x 3 vertex indices), as fix wall/mesh
-does, is written as a surface of its own: once, to ``STEM_wall_FIXID.EXT``, if the fix says it does
+Mesh walls (keyword ``walls yes``): every fix with a triangulated surface (the api's
+``TriangleSurface``: ``vertices`` n x 3, ``triangles`` m x 3 corner rows, ``moving``), as fix
+wall/mesh and mesh/surface have, is written as a surface of its own: once, to ``STEM_wall_FIXID.EXT``, if the fix says it does
 not move (``moving`` false) and has no per-face values, else one file per frame
 ``STEM_wall_FIXID_STEP.EXT`` with its own series file ``STEM_wall_FIXID`` + series suffix. A fix
-that offers per-face values through ``face_data(sim)`` (fix mesh/surface/stress: ``force``,
+that offers per-face values (``SurfaceValues``: ``face_data(sim)``; fix mesh/surface/stress: ``force``,
 ``pressure``, ``shear``) has them written as cell data of its triangles.
 
 A run that stops keeps every complete frame: each file is written under a temporary name and
@@ -27,7 +27,7 @@ import os
 import tempfile
 
 import numpy as np
-from pdps_core.api import Dump, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import Dump, ScriptError, StyleArgs, SurfaceValues, TriangleSurface, keyword, param
 
 SEPARATORS = "_.-"
 
@@ -130,21 +130,16 @@ def vertex_cells(n):
 
 
 def mesh_walls(sim):
-    """(fix id, fix) for every fix with a public triangulated surface (module docstring)."""
+    """(fix id, fix) for every fix with a triangulated surface (module docstring)."""
     for ident, fix in sim.fixes.items():
-        vertices = getattr(fix, "vertices", None)
-        triangles = getattr(fix, "triangles", None)
-        if (isinstance(vertices, np.ndarray) and isinstance(triangles, np.ndarray)
-                and vertices.ndim == 2 and vertices.shape[1] == 3
-                and triangles.ndim == 2 and triangles.shape[1] == 3):
+        if isinstance(fix, TriangleSurface):
             yield ident, fix
 
 
 def face_data(sim, fix):
     """Per-triangle values a mesh fix offers through ``face_data(sim)`` ({name: (m,) or (m, k)
     array}: fix mesh/surface/stress's force, pressure and shear), else {}."""
-    offer = getattr(fix, "face_data", None)
-    return dict(offer(sim)) if callable(offer) else {}
+    return dict(fix.face_data(sim)) if isinstance(fix, SurfaceValues) else {}
 
 
 class MeshDump(Dump):
@@ -192,7 +187,7 @@ class MeshDump(Dump):
             cells = [("triangle", np.asarray(fix.triangles, dtype=np.int64))]
             points = np.asarray(fix.vertices, dtype=np.float64)
             faces = face_data(sim, fix)
-            if not getattr(fix, "moving", True) and not faces:
+            if not fix.moving and not faces:
                 if self.walls_written.get(ident) is not fix:
                     self.write_frame(self.pattern.wall(ident), points, cells, {}, sim.time)
                     self.walls_written[ident] = fix

@@ -34,7 +34,7 @@ Example::
 import meshio
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError, StyleArgs, param
+from pdps_core.api import Dump, MeshSurface, ScriptError, StyleArgs, SurfaceValues, param
 
 from .frames import Pattern, Series, replace_atomically
 from .vtk import series_json
@@ -73,7 +73,7 @@ class DumpMeshVTK(Dump):
             k += 1
         for ident in self.mesh_ids:
             fix = sim.fixes.get(ident)
-            if fix is None or not hasattr(fix, "add_mover"):
+            if not isinstance(fix, MeshSurface):
                 raise ScriptError(f"{ident} is neither a value ({', '.join(VALUES)}) nor the ID of a "
                                   "fix mesh/surface")
         self.series = Series(self.pattern.series() + ".series",
@@ -82,19 +82,19 @@ class DumpMeshVTK(Dump):
     def meshes(self, sim):
         if self.mesh_ids:
             return [sim.fixes[ident] for ident in self.mesh_ids]
-        return [fix for fix in sim.fixes.values() if hasattr(fix, "add_mover")]
+        return [fix for fix in sim.fixes.values() if isinstance(fix, MeshSurface)]
 
     def write(self, sim):
         meshes = self.meshes(sim)
         if not meshes:
             raise ScriptError(f"dump {self.id} ({self.name}): there is no fix mesh/surface to write")
         stressed = [name for name in self.values if name in ("stress", "stresscomponents", "wear")]
-        if stressed and not any(hasattr(mesh, "face_data") for mesh in meshes):
+        if stressed and not any(isinstance(mesh, SurfaceValues) for mesh in meshes):
             raise ScriptError(f"dump {self.id} ({self.name}): {stressed[0]} needs a fix mesh/surface/stress "
                               f"(fix {meshes[0].id} is a {meshes[0].name})")
         points, cells, data, offset = [], [], {name: [] for name in self.values}, 0
         for mesh in meshes:
-            faces = mesh.face_data(sim) if hasattr(mesh, "face_data") else None
+            faces = mesh.face_data(sim) if isinstance(mesh, SurfaceValues) else None
             area = mesh.face_areas()
             for name in self.values:
                 data[name].append(self._value(sim, mesh, name, faces, area))

@@ -83,7 +83,7 @@ import meshio
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, observables
+from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, observables
 from pdps_granular_contact import liggghts
 
 from .wall_contact import (HISTORY_WIDTH, LOG_COLUMNS, TRANSFER_COS, ContactLaw, check_law_numbers,
@@ -203,7 +203,7 @@ def mesh_fix(sim, ident):
     fix = sim.fixes.get(ident)
     if fix is None:
         raise ScriptError(f"fix {ident} is not defined (expected the ID of a fix mesh/surface)")
-    if not hasattr(fix, "add_mover"):
+    if not isinstance(fix, MeshSurface):
         raise ScriptError(f"fix {ident} ({fix.name}) is not a fix mesh/surface")
     return fix
 

@@ -43,7 +43,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, VariableRef
+from pdps_core.api import Fix, MeshSurface, ScriptError, StyleArgs, VariableRef
 
 from .mesh import rotation_matrix, unit
 from .wall_contact import read_numbers
@@ -87,7 +87,7 @@ class FixMoveMesh(Fix):
         mesh = sim.fixes.get(words[1])
         if mesh is None:
             raise ScriptError(f"fix {words[1]} is not defined (move/mesh needs a fix mesh/surface ID)")
-        if not hasattr(mesh, "add_mover"):
+        if not isinstance(mesh, MeshSurface):
             raise ScriptError(f"fix {words[1]} ({mesh.name}) is not a mesh/surface: it cannot be moved")
         self.style = words[2]
         readers = {"linear": self._linear, "linear/variable": self._linear_variable,
