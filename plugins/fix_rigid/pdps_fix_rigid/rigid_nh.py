@@ -265,7 +265,7 @@ class NoseHooverBarostat:
         if temp_id is not None:
             self._defined(sim, temp_id, "temperature")
         for fix in sim.fixes.values():
-            if any(self.p_flag[d] for d in getattr(fix, "deformed_axes", ())):
+            if any(self.p_flag[d] for d in fix.deformed_axes):
                 raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same box length")
         self.boltz, self.mvv2e, self.nktv2p = sim.units.boltz, sim.units.mvv2e, sim.units.nktv2p
         _, titer, order = self.args.tparam
@@ -451,7 +451,7 @@ class NoseHooverBarostat:
             return super().modify_param(sim, keyword, value)
         style, what = ("temp", "temperature") if keyword == "temp" else ("pressure", "pressure")
         compute = self._defined(sim, value, what)
-        if compute.name != style:
+        if not (compute.gives_temperature if keyword == "temp" else compute.gives_pressure):
             raise ScriptError(f"{keyword}: compute {value} ({compute.name}) is not a {style} compute, so it gives no "
                               f"{what}")
         if keyword == "temp":
