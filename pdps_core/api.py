@@ -8,7 +8,7 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
-from .capabilities import (ContactTable, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
+from .capabilities import (ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
                            TriangleSurface)
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
@@ -23,7 +23,7 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
                      StyleArgs, SurfaceContacts, VariableRef, keyword, param, parse_args, peratom_column,
                      registry)
 
-__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable",
+__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
@@ -139,7 +139,7 @@ CONTRACT = {
                   "style": "style(name): the variable's style (equal, atom, vector, index, ...)",
                   "atom_values": "atom_values(name): an atom-style v_NAME, one float per owned particle (nlocal,)"},
     "Pair": {"name": "the style name", "per_atom": "per-atom arrays it needs",
-             "timestep_limits": "timestep_limits(sim) (granular styles): contact and Rayleigh times",
+             "timestep_limits": "timestep_limits(sim) of a ContactTimes style (granular): contact, Hertz and Rayleigh times",
              "contacts": "contacts(sim, group): the contacts of a ContactTable style (granular pair styles): rows i, j, force on i",
              "virial": "six values a style on a full list sets on vflag steps (sum r.f misses its ghosts)",
              "single": "single(sim, i, j, delta): (F/r, energy) of chosen pairs, rows i, j, separations x_i - x_j (LAMMPS's Pair::single)",

@@ -25,6 +25,16 @@ class ContactTable(Protocol):
 
 
 @runtime_checkable
+class ContactTimes(Protocol):
+    """A pair style whose contacts set the time step (the granular ones): ``timestep_limits(sim)``
+    gives {"contact": the shortest contact time, "hertz": the Hertz time, "rayleigh": the Rayleigh
+    time} (time; None where a time does not apply), which fix check/timestep/gran compares with
+    the time step."""
+
+    def timestep_limits(self, sim) -> dict: ...
+
+
+@runtime_checkable
 class HeatTransport(Protocol):
     """A fix carrying heat through the contacts (fix heat/gran, as LIGGGHTS's): at most one per
     simulation. ``contact_heat_flux(sim, i, j, r)`` gives, for contacts between particle rows i and

@@ -53,7 +53,7 @@ Example::
 import math
 
 import numpy as np
-from pdps_core.api import Fix, SimulationError, StyleArgs, keyword, param
+from pdps_core.api import ContactTimes, Fix, SimulationError, StyleArgs, keyword, param
 
 from ._common import chosen
 
@@ -92,7 +92,7 @@ class FixCheckTimestepGran(Fix):
 
     def _limits(self, sim):
         pair = sim.pair
-        if pair is not None and callable(getattr(pair, "timestep_limits", None)):
+        if isinstance(pair, ContactTimes):
             return pair.timestep_limits(sim) or {}
         reason = ("no pair style is defined" if pair is None else
                   f"pair style {pair.name} gives no time-step limits (it has no timestep_limits method)")
