@@ -1,0 +1,61 @@
+"""What one style offers another is declared once, in the api (pdps_core/capabilities.py), and
+the styles that offer it are the ones expected; no plugin tests another plugin's style by its name.
+"""
+
+import re
+from pathlib import Path
+
+import pytest
+
+from pdps_core.api import (ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues, registry)
+
+ROOT = Path(__file__).parents[1]
+
+METHOD_CAPABILITIES = {
+    ContactTable: {("pair", "gran"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
+    ContactTimes: {("pair", "gran"), ("pair", "gran/hooke"), ("pair", "gran/hooke/history"),
+                   ("pair", "gran/hertz/history"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
+    HeatTransport: {("fix", "heat/gran"), ("fix", "heat/gran/conduction")},
+    MeshSurface: {("fix", "mesh/surface"), ("fix", "mesh/surface/stress"), ("fix", "mesh/surface/planar")},
+    SurfaceValues: {("fix", "mesh/surface/stress")},
+}
+
+
+@pytest.mark.parametrize("capability", METHOD_CAPABILITIES, ids=lambda c: c.__name__)
+def test_the_styles_offering_a_capability_are_those_expected(capability):
+    offering = set()
+    for kind in ("pair", "fix", "compute"):
+        for name in registry.names(kind):
+            cls = registry.lookup(kind, name)
+            # a protocol with data members is checked on instances; its methods tell here
+            methods = [m for m in capability.__dict__ if not m.startswith("_") and callable(capability.__dict__[m])]
+            if all(callable(getattr(cls, m, None)) for m in methods):
+                offering.add((kind, name))
+    assert offering == METHOD_CAPABILITIES[capability]
+
+
+def test_a_fix_holding_particles_and_computes_a_thermostat_reads_say_so():
+    assert [name for name in registry.names("fix") if registry.lookup("fix", name).holds_at_rest] == ["freeze"]
+    temperature = [n for n in registry.names("compute") if registry.lookup("compute", n).gives_temperature]
+    pressure = [n for n in registry.names("compute") if registry.lookup("compute", n).gives_pressure]
+    assert (temperature, pressure) == (["temp"], ["pressure"])
+
+
+# another distribution's style tested by its name: what the capabilities replace
+NAMED = re.compile(r"\b(?!self\b)\w+\.name\s*(==|!=|in)\s*[\"'(]")
+
+
+def test_no_plugin_tests_another_distributions_style_by_its_name():
+    offenders = []
+    for path in sorted(ROOT.glob("plugins/*/pdps_*/**/*.py")):
+        if "build" in path.parts:
+            continue
+        own = (path.parents[1] / "pyproject.toml").read_text()
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            match = NAMED.search(line)
+            if match is None or ".dialect.name" in line or ".units.name" in line or ".variable.name" in line:
+                continue
+            names = re.findall(r"[\"']([a-z][a-z0-9/]+)[\"']", line[match.end() - 1:])
+            if any(f'"{name}" =' not in own for name in names):
+                offenders.append(f"{path.relative_to(ROOT)}:{number}: {line.strip()}")
+    assert not offenders, "\n".join(offenders)
