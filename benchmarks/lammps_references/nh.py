@@ -20,10 +20,10 @@ on a square lattice with seeded Gaussian velocities, written here).
 """
 
 import random
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from lammps_run import run_lammps, thermo_table
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_nh" / "tests" / "data"
@@ -177,39 +177,27 @@ def wall_data():
     return text.replace("200 atoms", f"{len(kept)} atoms")
 
 
-def thermo_lines(lmp, text, files):
+def thermo_lines(lmp, text, files, label):
+    """LAMMPS's first five thermo lines of ``text`` (15 digits, tab-separated), run with ``files``."""
     text = text.replace("run 100", "thermo_modify format float %.15g\nrun 100") + "\n"
-    with tempfile.TemporaryDirectory() as folder:
-        for name, content in files.items():
-            (Path(folder) / name).write_text(content)
-        (Path(folder) / "in.case").write_text(text)
-        done = subprocess.run([lmp, "-in", "in.case", "-log", "log.lammps", "-screen", "none"], cwd=folder,
-                              capture_output=True, text=True)
-        log = (Path(folder) / "log.lammps").read_text()
-    if done.returncode != 0:
-        sys.exit(f"LAMMPS failed:\n{text}\n{log[-2000:]}")
-    lines = log.splitlines()
-    start = next(k for k, line in enumerate(lines) if line.split()[:1] == ["Step"])
-    return ["\t".join(line.split()) for line in lines[start + 1:start + 6]]
+    return ["\t".join(words) for words in thermo_table(run_lammps(lmp, text, files, label))[1][:5]]
 
 
 def main(lmp):
-    fluid = (DATA / "fluid.data").read_text()
-    rows = [f"{case}\t{line}" for case in CASES for line in thermo_lines(lmp, script(case), {"fluid.data": fluid})]
+    fluid = DATA / "fluid.data"
+    rows = [f"{case}\t{line}" for case in CASES for line in thermo_lines(lmp, script(case), [fluid], case)]
     (DATA / "nh.txt").write_text("\n".join(rows) + "\n")
     coupled = [f"{case}\t{line}" for case in ECOUPLE_CASES
-               for line in thermo_lines(lmp, script(case, ECOUPLE_THERMO), {"fluid.data": fluid})]
+               for line in thermo_lines(lmp, script(case, ECOUPLE_THERMO), [fluid], case)]
     (DATA / "ecouple.txt").write_text("\n".join(coupled) + "\n")
     rows += coupled
-    walls = wall_data()
-    (WALL_DATA / "walls.data").write_text(walls)
+    (WALL_DATA / "walls.data").write_text(wall_data())
     wall_rows = [f"{case}\t{line}" for case in WALL_CASES
-                 for line in thermo_lines(lmp, wall_script(case), {"walls.data": walls})]
+                 for line in thermo_lines(lmp, wall_script(case), [WALL_DATA / "walls.data"], case)]
     (WALL_DATA / "wall_lj.txt").write_text("\n".join(wall_rows) + "\n")
-    plane = plane_data()
-    (DATA / "plane.data").write_text(plane)
+    (DATA / "plane.data").write_text(plane_data())
     option_rows = [f"{case}\t{line}" for case in OPTION_CASES
-                   for line in thermo_lines(lmp, option_script(case), {"fluid.data": fluid, "plane.data": plane})]
+                   for line in thermo_lines(lmp, option_script(case), [fluid, DATA / "plane.data"], case)]
     (DATA / "nh_options.txt").write_text("\n".join(option_rows) + "\n")
     print("\n".join(rows + wall_rows + option_rows))
 
