@@ -76,26 +76,28 @@ from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, observables
 Triple = tuple[float, float, float] | None
 
 
+@njit(cache=True, inline="always")
+def scale_row(v, i, fx, fy, fz):
+    v[i, 0] *= fx
+    v[i, 1] *= fy
+    v[i, 2] *= fz
+
+
 @njit(cache=True)
 def scale_velocities(v, mask, groupbit, nlocal, fx, fy, fz):
     for i in range(nlocal):
         if mask[i] & groupbit:
-            v[i, 0] *= fx
-            v[i, 1] *= fy
-            v[i, 2] *= fz
+            scale_row(v, i, fx, fy, fz)
 
 
 @njit(cache=True)
 def press_scale_velocities(v, mask, groupbit, nlocal, fx, fy, fz):
-    """The barostat's half-step velocity scaling (LAMMPS's nh_v_press: the factor applied twice)."""
+    """The barostat's half-step velocity scaling (LAMMPS's nh_v_press: the factor applied twice,
+    not its square, so that the rounding is LAMMPS's)."""
     for i in range(nlocal):
         if mask[i] & groupbit:
-            v[i, 0] *= fx
-            v[i, 1] *= fy
-            v[i, 2] *= fz
-            v[i, 0] *= fx
-            v[i, 1] *= fy
-            v[i, 2] *= fz
+            scale_row(v, i, fx, fy, fz)
+            scale_row(v, i, fx, fy, fz)
 
 
 @njit(cache=True)
