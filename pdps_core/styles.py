@@ -586,19 +586,27 @@ class Pair(Style):
                 else:
                     self.resolved[(i, j)] = self.mix(i, j)
                 cut[i, j] = cut[j, i] = self._cutoff_of(i, j)
+        self.sum_tails(ntypes, lambda i, j, count_i, count_j: (self.tail_ij(i, j, count_i, count_j),))
+        return cut
+
+    def sum_tails(self, ntypes, terms):
+        """``etail`` and ``ptail``: over the type pairs of ``self.resolved``, the sum of what
+        ``terms(i, j, count_i, count_j)`` gives ((etail_ij, ptail_ij) each, None for none), i != j
+        counted twice as LAMMPS does; 0 without ``pair_modify tail yes``."""
         self.etail = self.ptail = 0.0
         if self.tail and self.shift:
             # a shifted potential with a correction for the unshifted tail is neither (LAMMPS refuses it)
             raise ScriptError("pair_modify shift yes and tail yes cannot both be set")
-        if self.tail:
-            p = self.sim.particles
-            counts = self.sim.comm.sum(np.bincount(p.type[: p.nlocal], minlength=ntypes + 1))
-            for (i, j) in self.resolved:
-                etail, ptail = self.tail_ij(i, j, float(counts[i]), float(counts[j]))
-                weight = 1.0 if i == j else 2.0
-                self.etail += weight * etail
-                self.ptail += weight * ptail
-        return cut
+        if not self.tail:
+            return
+        p = self.sim.particles
+        counts = self.sim.comm.sum(np.bincount(p.type[: p.nlocal], minlength=ntypes + 1))
+        for (i, j) in self.resolved:
+            weight = 1.0 if i == j else 2.0
+            for term in terms(i, j, float(counts[i]), float(counts[j])):
+                if term is not None:
+                    self.etail += weight * term[0]
+                    self.ptail += weight * term[1]
 
     def _cutoff_of(self, i, j):
         try:

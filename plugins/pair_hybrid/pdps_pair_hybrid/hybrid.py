@@ -161,19 +161,8 @@ class PairHybrid(Pair):
                                   "pair to it)")
             cut = np.maximum(cut, style.init(ntypes, pairs))
             self.active.append(style)
-        self.etail = self.ptail = 0.0
-        if self.tail and self.shift:
-            raise ScriptError("pair_modify shift yes and tail yes cannot both be set")
-        if self.tail:
-            p = self.sim.particles
-            counts = self.sim.comm.sum(np.bincount(p.type[: p.nlocal], minlength=ntypes + 1))
-            for (i, j), names in assigned.items():
-                weight = 1.0 if i == j else 2.0
-                for name in names:
-                    terms = self.styles[name].tail_ij(i, j, float(counts[i]), float(counts[j]))
-                    if terms is not None:
-                        self.etail += weight * terms[0]
-                        self.ptail += weight * terms[1]
+        self.sum_tails(ntypes, lambda i, j, count_i, count_j: [
+            self.styles[name].tail_ij(i, j, count_i, count_j) for name in assigned[(i, j)]])
         return cut
 
     def single(self, sim, i, j, delta):
