@@ -368,6 +368,9 @@ def explain(error, annotation=None):
     if kind == "missing":
         return f"missing argument {loc}"
     if kind in ("too_short", "too_long"):
+        if isinstance(value, list) and value and isinstance(value[0], tuple):
+            bound = "at least" if kind == "too_short" else "at most"
+            return f"{loc} takes {bound} {ctx.get('min_length', ctx.get('max_length'))} entries (got {len(value)})"
         return f"{loc} takes {ctx.get('min_length', ctx.get('max_length'))} value(s) {got}"
     message = error["msg"].removeprefix("Value error, ")
     if not error["loc"]:
@@ -497,11 +500,11 @@ class Style:
     def parse(cls, words):
         refused = {word: f"keyword {word} of {cls.kind} {cls.name}: {why}" for word, why in cls.refused.items()}
         args = parse_args(cls.Args, words, cls.usage, refused)
-        cls.check(args)
+        cls.check_args(args)
         return args
 
     @classmethod
-    def check(cls, args):
+    def check_args(cls, args):
         """Checks of the arguments read that name the style (one ``Args`` shared by several styles);
         a ScriptError for a bad combination."""
 

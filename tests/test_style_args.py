@@ -165,7 +165,7 @@ NOT_YET_DECLARED = {
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
     ("fix", "wall/mesh"), ("compute", "wall/gran/local"), ("analyze", "ave/space"), ("analyze", "ave/time"),
-    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"), ("region", "polygon"),
+    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
 }
 
 

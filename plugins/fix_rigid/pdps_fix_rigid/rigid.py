@@ -275,8 +275,8 @@ class FixRigid(Fix):
             return self.bodystyle if isinstance(self.bodystyle, str) else self.bodystyle[0]
 
     @classmethod
-    def check(cls, args):
-        super().check(args)
+    def check_args(cls, args):
+        super().check_args(args)
         if args.style == "group":
             count = args.bodystyle[1]
             if count < 1:

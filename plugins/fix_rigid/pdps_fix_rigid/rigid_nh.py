@@ -197,8 +197,8 @@ class NoseHooverBarostat:
         return values
 
     @classmethod
-    def check(cls, args):
-        super().check(args)
+    def check_args(cls, args):
+        super().check_args(args)
         check_tparam(args.tparam)
         if not 1 <= args.pchain <= CHAIN_LIMIT:
             raise ScriptError(f"pchain: the barostat chain needs 1 to {CHAIN_LIMIT} thermostats (got {args.pchain})")

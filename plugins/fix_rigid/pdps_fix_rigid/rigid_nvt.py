@@ -157,8 +157,8 @@ class FixRigidNVT(FixRigidNVE):
         tparam: tuple[int, int, int] = keyword((10, 1, 3), unit="1")
 
     @classmethod
-    def check(cls, args):
-        super().check(args)
+    def check_args(cls, args):
+        super().check_args(args)
         check_thermostat(cls.name, args)
 
     def __init__(self, sim, id, group, args):

@@ -296,8 +296,8 @@ class FixRigidSmall(Fix):
             None, unit=("temperature", "temperature", "time", "dimensionless"))
 
     @classmethod
-    def check(cls, args):
-        super().check(args)
+    def check_args(cls, args):
+        super().check_args(args)
         style = args.bodystyle if isinstance(args.bodystyle, str) else args.bodystyle[0]
         if style != "molecule":
             raise ScriptError(f"fix {cls.name} takes bodystyle molecule only (as LAMMPS's; got {style}): "
