@@ -213,7 +213,10 @@ def parameter_lines(model):
     for field, info in model.model_fields.items():
         name = info.alias or field
         names = names_of(info)
-        parts = [f"{names}..." if names else _type_name(info.annotation)]
+        plain = typing.get_origin(info.annotation) is list and typing.get_args(info.annotation) == (str,)
+        parts = [f"{names}..." if names and plain else _type_name(info.annotation)]
+        if names and not plain:
+            parts.append(f"names: {names}")
         bounds = _bounds(name, info)
         if bounds:
             parts.append(bounds)

@@ -244,9 +244,10 @@ def _read(annotation, words, i, stops, name):
             counted = f"{_arity(matching[0]) - 1} value(s): " if len(matching) == 1 else ""
             raise ScriptError(f"{name} {words[i]} takes {counted}{' or '.join(rests)} "
                               f"(got {' '.join(words[i + 1:end]) or 'nothing'})")
-        if i < len(words) and all(_first_words(m) for m in members):
-            choices = [word for m in members for word in _first_words(m)]
-            raise ScriptError(f"{name} must be one of {', '.join(choices)} (got {words[i]})")
+        choices = [_first_words(m) or (tuple(map(str, typing.get_args(_bare(m))))
+                                       if typing.get_origin(_bare(m)) is typing.Literal else ()) for m in members]
+        if i < len(words) and all(choices):
+            raise ScriptError(f"{name} must be one of {', '.join(w for c in choices for w in c)} (got {words[i]})")
         arities = {_arity(m) for m in members}
         if len(arities) > 1 or None in arities:
             fixed = sorted(a for a in arities if a is not None and a <= end - i)
@@ -367,6 +368,9 @@ def explain(error, annotation=None):
     if kind == "missing":
         return f"missing argument {loc}"
     if kind in ("too_short", "too_long"):
+        if isinstance(value, list) and value and isinstance(value[0], tuple):
+            bound = "at least" if kind == "too_short" else "at most"
+            return f"{loc} takes {bound} {ctx.get('min_length', ctx.get('max_length'))} entries (got {len(value)})"
         return f"{loc} takes {ctx.get('min_length', ctx.get('max_length'))} value(s) {got}"
     message = error["msg"].removeprefix("Value error, ")
     if not error["loc"]:
@@ -426,8 +430,10 @@ def _explain_all(model, errors, values):
     return explain({"type": "union", "loc": named["loc"], "input": shown}, union)
 
 
-def parse_args(model, words, usage=""):
-    """Read script words into ``model``; any problem becomes a one-line ScriptError."""
+def parse_args(model, words, usage="", refused=None):
+    """Read script words into ``model``; any problem becomes a one-line ScriptError. ``refused``:
+    {keyword: the error} for keywords of kindred styles this one does not take."""
+    refused = refused or {}
     fields = {info.alias or name: info for name, info in model.model_fields.items()}
     positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
@@ -446,6 +452,8 @@ def parse_args(model, words, usage=""):
         values[name], i = _read(info.annotation, words, i, keywords, name)
     while i < len(words):
         word = words[i]
+        if word in refused:
+            raise ScriptError(refused[word])
         if word not in keywords:
             if not keywords:
                 raise ScriptError(f"too many arguments: unexpected {word!r}" + (f"; usage: {usage}" if usage else ""))
@@ -485,10 +493,20 @@ class Style:
     per_atom: ClassVar[tuple] = ()   # per-atom arrays to allocate: "radius", "omega", or ("name", width)
     ghost_velocity: ClassVar[bool] = False     # ghosts must carry v (DPD, granular damping)
     ghost_fields: ClassVar[tuple] = ()         # other per-atom arrays ghosts need every step ("omega")
+    # keywords of kindred styles this one does not take, and why ("temp": "only fix rigid/nvt takes it")
+    refused: ClassVar[dict[str, str]] = {}
 
     @classmethod
     def parse(cls, words):
-        return parse_args(cls.Args, words, cls.usage)
+        refused = {word: f"keyword {word} of {cls.kind} {cls.name}: {why}" for word, why in cls.refused.items()}
+        args = parse_args(cls.Args, words, cls.usage, refused)
+        cls.check_args(args)
+        return args
+
+    @classmethod
+    def check_args(cls, args):
+        """Checks of the arguments read that name the style (one ``Args`` shared by several styles);
+        a ScriptError for a bad combination."""
 
     @classmethod
     def respell(cls, dialect, words):

@@ -163,11 +163,9 @@ NOT_YET_DECLARED = {
     ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"),
     ("fix", "move/mesh"), ("fix", "particledistribution/discrete"),
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
-    ("fix", "rigid"), ("fix", "rigid/nph"), ("fix", "rigid/nph/small"), ("fix", "rigid/npt"),
-    ("fix", "rigid/npt/small"), ("fix", "rigid/nve"), ("fix", "rigid/nve/small"), ("fix", "rigid/nvt"),
-    ("fix", "rigid/nvt/small"), ("fix", "rigid/small"), ("fix", "wall/dem"), ("fix", "wall/gran"),
+    ("fix", "wall/dem"), ("fix", "wall/gran"),
     ("fix", "wall/mesh"), ("compute", "wall/gran/local"), ("analyze", "ave/space"), ("analyze", "ave/time"),
-    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"), ("region", "polygon"),
+    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
 }
 
 

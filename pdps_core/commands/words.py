@@ -3,6 +3,7 @@
 import math
 
 from ..errors import ScriptError
+from ..state import limits
 
 
 def count(args, n, usage, at_most=None):
@@ -13,13 +14,18 @@ def count(args, n, usage, at_most=None):
         raise ScriptError(f"expected {wanted} argument(s), got {len(args)}; usage: {usage}")
 
 
-def number(word, name, low=None, high=None, strict_low=False):
+def number(word, name, low=None, high=None, strict_low=False, representable=False):
+    """A finite number; ``representable``: also 0 or of a magnitude from MIN_SIZE to MAX_SIZE, the
+    rule style arguments are held to (StyleArgs)."""
     try:
         value = float(word)
     except ValueError:
         raise ScriptError(f"{name} must be a number (got {word})") from None
     if not math.isfinite(value):
         raise ScriptError(f"{name} must be finite (got {word})")
+    if representable and value != 0.0 and not limits.MIN_SIZE <= abs(value) <= limits.MAX_SIZE:
+        raise ScriptError(f"{name} must be 0 or of magnitude from {limits.MIN_SIZE:g} to {limits.MAX_SIZE:g} "
+                          f"(got {word})")
     if low is not None and (value <= low if strict_low else value < low):
         raise ScriptError(f"{name} must be {'>' if strict_low else '>='} {low:g} (got {word})")
     if high is not None and value > high:

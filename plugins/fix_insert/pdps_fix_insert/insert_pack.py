@@ -35,9 +35,9 @@ import math
 
 import numpy as np
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, number
 
-from .insertion import FixInsert, number, whole_number
+from .insertion import FixInsert, whole_number
 from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")

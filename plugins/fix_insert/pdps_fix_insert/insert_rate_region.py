@@ -26,9 +26,9 @@ Example::
 
 import math
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, number
 
-from .insertion import FixInsert, number, whole_number
+from .insertion import FixInsert, whole_number
 from .region_volume import InRegion, insertion_region
 
 RATE_ARITY = {"nparticles": 1, "mass": 1, "particlerate": 1, "massrate": 1}

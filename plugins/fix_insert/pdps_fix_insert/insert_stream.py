@@ -41,9 +41,9 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, number
 
-from .insertion import FixInsert, number, whole_number
+from .insertion import FixInsert, whole_number
 from .insert_rate_region import RATE_ARITY, rate_count, read_rate
 
 

@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, ScriptError, StyleArgs, number, yes_no
 
 from .placement import grid, place
 
@@ -52,16 +52,6 @@ MAX_AT_ONCE = 10_000_000     # particles one insertion may add
 
 
 # ---- words ---------------------------------------------------------------------------------------
-def number(word, what):
-    try:
-        value = float(word)
-    except ValueError:
-        raise ScriptError(f"{what} must be a number (got {word})") from None
-    if not math.isfinite(value):
-        raise ScriptError(f"{what} must be a finite number (got {word})")
-    return value
-
-
 def whole_number(word, what, low=None):
     """An integer; also written as a float with no fraction ("1.", as LIGGGHTS's tutorials write seeds,
     which its atoi reads)."""
@@ -78,12 +68,6 @@ def whole_number(word, what, low=None):
     if low is not None and value < low:
         raise ScriptError(f"{what} must be >= {low} (got {word})")
     return value
-
-
-def yes_no(word, what):
-    if word not in ("yes", "no"):
-        raise ScriptError(f"{what} must be yes or no (got {word})")
-    return word == "yes"
 
 
 def read_keywords(words, arity):

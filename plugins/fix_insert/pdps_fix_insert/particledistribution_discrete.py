@@ -30,9 +30,9 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, ScriptError, StyleArgs, number
 
-from .insertion import number, whole_number
+from .insertion import whole_number
 from .particletemplate_sphere import FixParticleTemplateSphere
 
 

@@ -27,9 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, number
 
-from .insertion import number
 
 # words after the style name: radius styles take number|mass first
 ARITY = {"constant": 1, "uniform": 2, "gaussian": 2, "lognormal": 2}

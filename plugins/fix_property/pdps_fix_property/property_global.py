@@ -34,26 +34,15 @@ Example (LIGGGHTS's material block for two types)::
     fix m5 all property/global characteristicVelocity scalar 2.
 """
 
-import math
 from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, number, param
 
 PER_TYPE = ("vector", "atomtype", "peratomtype")
 PER_TYPE_PAIR = ("atomtypepair", "peratomtypepair")
 STYLES = ("scalar",) + PER_TYPE + ("matrix",) + PER_TYPE_PAIR
-
-
-def _number(word, name):
-    try:
-        value = float(word)
-    except ValueError:
-        raise ScriptError(f"{name}: values must be numbers (got {word})") from None
-    if not math.isfinite(value):
-        raise ScriptError(f"{name}: values must be finite numbers (got {word})")
-    return value
 
 
 class FixPropertyGlobal(Fix):
@@ -86,7 +75,7 @@ class FixPropertyGlobal(Fix):
             words = words[1:]
         if not words:
             raise ScriptError(f"{name} {args.style}: expected at least one value; usage: {self.usage}")
-        values = np.array([_number(w, f"{name} {args.style}") for w in words])
+        values = np.array([number(w, f"{name} {args.style}") for w in words])
         if args.style == "scalar" and len(values) != 1:
             raise ScriptError(f"{name} scalar takes one value (got {len(values)})")
         if args.style == "matrix" and len(values) % self.columns:

@@ -60,9 +60,9 @@ def test_scalar_with_two_values_is_refused(pdps_cli):
      "one value; usage: " + "fix ID GROUP property/global NAME scalar V | vector|atomtype|peratomtype V1 V2 ... | "
      "matrix|atomtypepair|peratomtypepair N V11 ... VNN"),
     ("fix a all property/global youngsModulus peratomtype 5e6 abc",
-     "fix: youngsModulus peratomtype: values must be numbers (got abc)"),
+     "fix: youngsModulus peratomtype must be a number (got abc)"),
     ("fix a all property/global youngsModulus peratomtype 5e6 inf",
-     "fix: youngsModulus peratomtype: values must be finite numbers (got inf)"),
+     "fix: youngsModulus peratomtype must be finite (got inf)"),
     ("fix a all property/global youngsModulus perparticle 5e6",
      "fix: style must be one of 'scalar', 'vector', 'atomtype', 'peratomtype', 'matrix', 'atomtypepair' or "
      "'peratomtypepair' (got perparticle)"),

@@ -107,7 +107,7 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args, particle_uniforms
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, particle_uniforms
 
 from . import bodies
 from .quaternion import axes_from_quaternion, omega_from_angmom, quaternion_from_axes, richardson
@@ -115,11 +115,12 @@ from .quaternion import axes_from_quaternion, omega_from_angmom, quaternion_from
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
 OnOff = Literal["on", "off"]
+BodyStyle = (Literal["single", "molecule"] | tuple[Literal["group"], int, tuple[str, ...]]
+             | tuple[Literal["custom"], str])
 # LAMMPS's thresholds: a principal moment below EPSILON of the largest is 0 (a linear body); the
 # moments recomputed in the body frame must match to TOLERANCE
 EPSILON = 1e-7
 TOLERANCE = 1e-6
-NOT_YET = ()
 # keywords LAMMPS refuses for a style (Illegal fix command), and why
 NOSE_HOOVER_ONLY = "only fix rigid/nvt and rigid/npt take it (LAMMPS's page: not rigid or rigid/nve)"
 BAROSTAT_ONLY = "only fix rigid/nph and rigid/npt take it (as LAMMPS)"
@@ -256,12 +257,10 @@ class FixRigid(Fix):
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
-    not_yet = NOT_YET
     refused = {"temp": NOSE_HOOVER_ONLY, "tparam": NOSE_HOOVER_ONLY} | BAROSTAT_REFUSED | MOL_REFUSED
 
     class Args(StyleArgs):
-        bodystyle: Literal["single", "molecule", "group", "custom"] = param()
-        groups: list[str] = param(default_factory=list)
+        bodystyle: BodyStyle = param(names="group ID", unit={"group": ("1", "1", "1")})
         force: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         torque: list[tuple[str, OnOff, OnOff, OnOff]] = keyword(default_factory=list)
         reinit: Literal["yes", "no"] = keyword("yes")
@@ -270,37 +269,24 @@ class FixRigid(Fix):
             None, unit=("temperature", "temperature", "time", "dimensionless"))
         gravity: str | None = keyword(None)
 
+        @property
+        def style(self):
+            """single, molecule, group or custom."""
+            return self.bodystyle if isinstance(self.bodystyle, str) else self.bodystyle[0]
+
     @classmethod
-    def parse(cls, words):
-        start = 1
-        if words and words[0] == "group" and len(words) > 1:
-            try:
-                start = 2 + max(int(words[1]), 0)
-            except ValueError:
-                raise ScriptError(f"bodystyle group needs a number of groups N, then N group ids "
-                                  f"(got {words[1]})") from None
-        for word in words[start:]:
-            if word in cls.refused:
-                raise ScriptError(f"keyword {word} of fix {cls.name}: {cls.refused[word]}")
-            if word in cls.not_yet:
-                implemented = [name for name, info in cls.Args.model_fields.items()
-                               if name not in ("bodystyle", "groups")]
-                raise ScriptError(f"keyword {word} of fix {cls.name} is not implemented yet "
-                                  f"(implemented: {', '.join(implemented)})")
-        args = parse_args(cls.Args, words, cls.usage)
-        if args.bodystyle == "group":
-            count = int(args.groups[0]) if args.groups else 0
-            if count < 1 or len(args.groups) != count + 1:
-                raise ScriptError(f"bodystyle group needs N >= 1 and N group ids (got "
-                                  f"{' '.join(args.groups) or 'nothing'})")
-        elif args.bodystyle == "custom":
-            if len(args.groups) != 1 or not args.groups[0].startswith(("i_", "v_")) or len(args.groups[0]) < 3:
+    def check_args(cls, args):
+        super().check_args(args)
+        if args.style == "group":
+            count = args.bodystyle[1]
+            if count < 1:
+                raise ScriptError(f"bodystyle group needs N >= 1 and N group ids (got {count})")
+        elif args.style == "custom":
+            source = args.bodystyle[1]
+            if not source.startswith(("i_", "v_")) or len(source) < 3:
                 raise ScriptError(f"bodystyle custom needs one i_NAME (a per-particle integer property) or v_NAME "
-                                  f"(an atom-style variable) (got {' '.join(args.groups) or 'nothing'})")
-        elif args.groups:
-            raise ScriptError(f"bodystyle {args.bodystyle} takes no arguments (got {' '.join(args.groups)})")
+                                  f"(an atom-style variable) (got {source})")
         check_langevin(args.langevin)
-        return args
 
     # ---- bodies ---------------------------------------------------------------------------------
     def __init__(self, sim, id, group, args):
@@ -364,7 +350,7 @@ class FixRigid(Fix):
         p = sim.particles
         n = p.nlocal
         members = sim.groups.select(sim, self.group)
-        style = self.args.bodystyle
+        style = self.args.style
         if style == "single":
             body[members] = 0
             self.body_ids = np.array([1])
@@ -380,7 +366,7 @@ class FixRigid(Fix):
             body[members] = np.searchsorted(ids, mol[members])
             self.body_ids = ids
             return len(ids)
-        names = self.args.groups[1:]
+        names = self.args.bodystyle[2]
         owner = np.full(n, -1, dtype=np.int64)
         clash = (np.iinfo(np.int64).max, 0, 0)
         for k, name in enumerate(names):
@@ -405,7 +391,7 @@ class FixRigid(Fix):
         for the group's particles, 0 for the others."""
         p = sim.particles
         n = p.nlocal
-        source = self.args.groups[0]
+        source = self.args.bodystyle[1]
         name = source[2:]
         if source.startswith("i_"):
             if not p.has(name) or p.arrays[name].ndim != 1:

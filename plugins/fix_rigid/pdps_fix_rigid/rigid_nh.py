@@ -72,7 +72,7 @@ from numba import njit
 
 from pdps_core.api import ScriptError, StyleArgs, keyword, observables
 
-from .rigid import EPSILON, MOL_REFUSED, NOT_YET, FixRigid
+from .rigid import EPSILON, MOL_REFUSED, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation, free_rotation
 from .rigid_nvt import CHAIN_LIMIT, chain_step, chain_substeps, check_tparam, maclaurin
 
@@ -173,8 +173,8 @@ class NoseHooverBarostat:
         return values
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         check_tparam(args.tparam)
         if not 1 <= args.pchain <= CHAIN_LIMIT:
             raise ScriptError(f"pchain: the barostat chain needs 1 to {CHAIN_LIMIT} thermostats (got {args.pchain})")
@@ -191,7 +191,6 @@ class NoseHooverBarostat:
                                       "as LAMMPS)")
                 if damp <= 0:
                     raise ScriptError(f"{word}: PDAMP must be > 0 (got {damp:g})")
-        return args
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -525,7 +524,6 @@ class NoseHooverBarostat:
 
 class FixRigidNH(NoseHooverBarostat, FixRigidNVE):
     """Fix rigid/nve with the barostat (and, with ``temp``, the thermostat) of LAMMPS's fix rigid/nh."""
-    not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nph and rigid/npt take no langevin (LAMMPS's page: rigid and rigid/nve "
                            "only)"} | MOL_REFUSED
 

@@ -19,13 +19,12 @@ from .rigid_nh import BarostatArgs, NoseHooverBarostat
 from .rigid_nve_small import FixRigidNVESmall
 from .rigid_small import NOT_YET
 
-REFUSED = {"langevin": "fix rigid/nph/small and rigid/npt/small take no langevin (as LAMMPS)"}
+REFUSED = {"langevin": "fix rigid/nph/small and rigid/npt/small take no langevin (as LAMMPS)"} | NOT_YET
 
 
 class FixRigidNHSmall(NoseHooverBarostat, FixRigidNVESmall):
     """Fix rigid/nve/small with the barostat (and, with ``temp``, the thermostat) of LAMMPS's fix
     rigid/nh/small."""
-    not_yet = NOT_YET
     refused = REFUSED
 
     class Args(FixRigidNVESmall.Args, BarostatArgs):

@@ -38,8 +38,7 @@ class FixRigidNPH(FixRigidNH):
                                             "pressure; as LAMMPS)"}
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         if not any(getattr(args, word) is not None for word in ("iso", "aniso", "x", "y", "z")):
             raise ScriptError("fix rigid/nph needs a pressure: iso, aniso, x, y or z PSTART PSTOP PDAMP")
-        return args

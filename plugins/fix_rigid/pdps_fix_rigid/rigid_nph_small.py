@@ -35,8 +35,7 @@ class FixRigidNPHSmall(FixRigidNHSmall):
                          "tparam": THERMOSTAT_ONLY}
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         if not any(getattr(args, word) is not None for word in ("iso", "aniso", "x", "y", "z")):
             raise ScriptError("fix rigid/nph/small needs a pressure: iso, aniso, x, y or z PSTART PSTOP PDAMP")
-        return args

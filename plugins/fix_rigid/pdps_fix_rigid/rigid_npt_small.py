@@ -32,9 +32,8 @@ class FixRigidNPTSmall(FixRigidNHSmall):
              "[couple C] [pchain N] [dilate all|GROUP] [tparam TCHAIN TITER TORDER] [reinit yes|no] [infile FILE]")
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         if args.temp is None or not any(getattr(args, word) is not None for word in ("iso", "aniso", "x", "y", "z")):
             raise ScriptError("fix rigid/npt/small needs temp TSTART TSTOP TDAMP and a pressure: iso, aniso, x, y or "
                               "z PSTART PSTOP PDAMP")
-        return args

@@ -41,7 +41,7 @@ from numba import njit
 
 from pdps_core.api import ScriptError, keyword
 
-from .rigid import BAROSTAT_REFUSED, EPSILON, MOL_REFUSED, NOT_YET, FixRigid
+from .rigid import BAROSTAT_REFUSED, EPSILON, MOL_REFUSED, FixRigid
 from .rigid_nve import FixRigidNVE, _angmom_from_conjqm, _kick_rotation, free_rotation
 
 # longest chain and most iterations a step: beyond, each step's chain work would stall a run
@@ -164,7 +164,6 @@ class FixRigidNVT(FixRigidNVE):
              "[tparam TCHAIN TITER TORDER] [force M X Y Z] [torque M X Y Z] [reinit yes|no]")
     extensive = True
     extensive_array = False       # f_ID[i][j], the bodies' values, are not divided by the particle count (LAMMPS's extarray 0)
-    not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt thermostats with temp; langevin is for rigid and rigid/nve "
                            "(LAMMPS's page: it cannot be used with rigid/nvt)"} | BAROSTAT_REFUSED | MOL_REFUSED
 
@@ -173,10 +172,9 @@ class FixRigidNVT(FixRigidNVE):
         tparam: tuple[int, int, int] = keyword((10, 1, 3), unit="1")
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         check_thermostat(cls.name, args)
-        return args
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -51,19 +51,17 @@ class FixRigidNVTSmall(FixRigidNVESmall):
     usage = ("fix ID GROUP rigid/nvt/small molecule temp TSTART TSTOP TDAMP [tparam TCHAIN TITER TORDER] "
              "[reinit yes|no] [infile FILE]")
     extensive = True
-    not_yet = NOT_YET
     refused = {"langevin": "fix rigid/nvt/small thermostats with temp; langevin is for rigid/small and "
-                           "rigid/nve/small (as LAMMPS)"} | BAROSTAT_REFUSED
+                           "rigid/nve/small (as LAMMPS)"} | BAROSTAT_REFUSED | NOT_YET
 
     class Args(FixRigidNVESmall.Args):
         temp: tuple[float, float, float] | None = keyword(None, unit="temperature")
         tparam: tuple[int, int, int] = keyword((10, 1, 3), unit="1")
 
     @classmethod
-    def parse(cls, words):
-        args = super().parse(words)
+    def check_args(cls, args):
+        super().check_args(args)
         check_thermostat(cls.name, args)
-        return args
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

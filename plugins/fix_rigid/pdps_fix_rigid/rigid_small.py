@@ -82,16 +82,16 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
 from . import bodies
 from .quaternion import axes_from_quaternion, quaternion_from_axes
-from .rigid import (EPSILON, TOLERANCE, FixRigid, check_langevin, langevin_keyed_forces, omegas, richardson_final,
-                    richardson_initial)
+from .rigid import (EPSILON, TOLERANCE, BodyStyle, FixRigid, check_langevin, langevin_keyed_forces, omegas,
+                    richardson_final, richardson_initial)
 
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
-NOT_YET = ("mol", "gravity")
+NOT_YET = {word: "not implemented yet" for word in ("mol", "gravity")}
 # keywords LAMMPS refuses for a style of the family (Illegal fix command)
 THERMOSTAT_ONLY = "only fix rigid/nvt/small and rigid/npt/small take it (as LAMMPS)"
 BAROSTAT_ONLY = "only fix rigid/nph/small and rigid/npt/small take it (as LAMMPS)"
@@ -285,34 +285,24 @@ class FixRigidSmall(Fix):
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
-    not_yet = NOT_YET
-    refused = {"temp": THERMOSTAT_ONLY, "tparam": THERMOSTAT_ONLY} | BAROSTAT_REFUSED
+    refused = {"temp": THERMOSTAT_ONLY, "tparam": THERMOSTAT_ONLY} | BAROSTAT_REFUSED | NOT_YET
 
     class Args(StyleArgs):
-        bodystyle: Literal["molecule"] = param()
+        # read as fix rigid's, to say that only molecule is taken
+        bodystyle: BodyStyle = param(names="group ID", unit={"group": ("1", "1", "1")})
         reinit: Literal["yes", "no"] = keyword("yes")
         infile: str | None = keyword(None)
         langevin: tuple[float, float, float, int] | None = keyword(
             None, unit=("temperature", "temperature", "time", "dimensionless"))
 
     @classmethod
-    def parse(cls, words):
-        for word in words[1:]:
-            if word in cls.refused:
-                raise ScriptError(f"keyword {word} of fix {cls.name}: {cls.refused[word]}")
-            if word in cls.not_yet:
-                raise ScriptError(f"keyword {word} of fix {cls.name} is not implemented yet "
-                                  f"(implemented: {', '.join(cls.implemented())})")
-        if words and words[0] in ("single", "group", "custom"):
-            raise ScriptError(f"fix {cls.name} takes bodystyle molecule only (as LAMMPS's; got {words[0]}): "
+    def check_args(cls, args):
+        super().check_args(args)
+        style = args.bodystyle if isinstance(args.bodystyle, str) else args.bodystyle[0]
+        if style != "molecule":
+            raise ScriptError(f"fix {cls.name} takes bodystyle molecule only (as LAMMPS's; got {style}): "
                               "fix rigid has the others")
-        args = parse_args(cls.Args, words, cls.usage)
         check_langevin(args.langevin)
-        return args
-
-    @classmethod
-    def implemented(cls):
-        return [name for name in cls.Args.model_fields if name != "bodystyle" and name not in cls.refused]
 
     # ---- set-up ----------------------------------------------------------------------------------
     def __init__(self, sim, id, group, args):

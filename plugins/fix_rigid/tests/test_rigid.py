@@ -245,8 +245,8 @@ def test_particle_in_two_bodies_is_an_error_naming_both(tmp_path):
     ("fix 1 all rigid single force 2 off off off", r"force: body range 2 is not within 1..1"),
     ("fix 1 all rigid single torque 1*x on on on", "torque: body '1\\*x' is not a number or a range"),
     ("fix 1 all rigid single force * off maybe on", "must be one of"),
-    ("fix 1 all rigid group 2 all", "bodystyle group needs N >= 1 and N group ids"),
-    ("fix 1 all rigid single all", "bodystyle single takes no arguments"),
+    ("fix 1 all rigid group 2 all", r"bodystyle group 2 needs 2 value\(s\) after 2 \(got 1\)"),
+    ("fix 1 all rigid single all", "unknown keyword all"),
     ("fix 1 all rigid molecule", "bodystyle molecule needs molecule ids"),
     ("fix 1 all rigid wobbly", "must be one of"),
 ])
@@ -429,9 +429,9 @@ def test_custom_bodystyle_takes_body_ids_from_a_property_or_a_variable(tmp_path)
 
 
 @pytest.mark.parametrize("line, message", [
-    ("fix 1 all rigid custom", "bodystyle custom needs one i_NAME"),
+    ("fix 1 all rigid custom", r"bodystyle custom takes 1 value\(s\): word \(got nothing\)"),
     ("fix 1 all rigid custom flag", "bodystyle custom needs one i_NAME"),
-    ("fix 1 all rigid custom v_a v_b", "bodystyle custom needs one i_NAME"),
+    ("fix 1 all rigid custom v_a v_b", "unknown keyword v_b"),
     ("fix 1 all rigid custom v_nope", "bodystyle custom v_nope: variable nope is not defined"),
     ("fix 1 all rigid custom i_nope", "bodystyle custom i_nope: no per-particle property nope"),
     ("fix 1 all rigid custom i_half", "bodystyle custom i_half: property half holds values that are not integers"),

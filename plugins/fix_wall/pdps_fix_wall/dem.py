@@ -70,11 +70,11 @@ import inspect
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, observables
+from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, number, observables
 from pdps_granular_contact import contact_models
 
 from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
-                           particle_wall_contacts, read_numbers)
+                           particle_wall_contacts)
 
 ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
 
@@ -168,11 +168,11 @@ class FixWallDEM(Fix):
             raise ScriptError(f"expected at least one region R after lsd; usage: {self.usage}")
         numbers = words[k:]
         if len(numbers) == 7:
-            e, kn, cn, kt, ct, mu, cutoff = read_numbers(numbers, "wall/dem parameter")
+            e, kn, cn, kt, ct, mu, cutoff = [number(text, "wall/dem parameter", representable=True) for text in numbers]
             check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
             self.law = ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
         elif len(numbers) in (3, 4):
-            e, kn, mu, *rest = read_numbers(numbers, "wall/dem parameter")
+            e, kn, mu, *rest = [number(text, "wall/dem parameter", representable=True) for text in numbers]
             check_law_numbers(e=e, kn=kn, mu=mu)
             self.law = ContactLaw.lsd(kn, mu, e=e)
             cutoff = rest[0] if rest else None

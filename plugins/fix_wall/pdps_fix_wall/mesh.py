@@ -83,11 +83,11 @@ import meshio
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, observables
+from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, number, observables
 from pdps_granular_contact import liggghts
 
 from .wall_contact import (HISTORY_WIDTH, LOG_COLUMNS, TRANSFER_COS, ContactLaw, check_law_numbers,
-                           forget_far, liggghts_wall_contacts, particle_wall_contacts, read_numbers)
+                           forget_far, liggghts_wall_contacts, particle_wall_contacts)
 
 MAX_CELLS_PER_AXIS = 64
 MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the coordinates) are one
@@ -182,18 +182,18 @@ def placed_mesh(sim, given, transforms):
     points, triangles = read_triangles(sim.resolve(shown), shown)
     for word in transforms:
         if word == "scale":
-            (factor,) = read_numbers(given[word], "scale")
+            (factor,) = [number(text, "scale", representable=True) for text in given[word]]
             if not factor > 0.0:
                 raise ScriptError(f"scale must be > 0 (got {factor:g})")
             points = points * factor
         elif word == "move":
-            points = points + read_numbers(given[word], "move")
+            points = points + [number(text, "move", representable=True) for text in given[word]]
         else:
             w = given[word]
             if w[0] != "axis" or w[4] != "angle":
                 raise ScriptError(f"rotate takes axis AX AY AZ angle DEG (got {' '.join(w)})")
-            axis = unit(read_numbers(w[1:4], "rotate axis"), "rotate axis")
-            (angle,) = read_numbers(w[5:6], "rotate angle")
+            axis = unit([number(text, "rotate axis", representable=True) for text in w[1:4]], "rotate axis")
+            (angle,) = [number(text, "rotate angle", representable=True) for text in w[5:6]]
             points = points @ rotation_matrix(axis, math.radians(angle)).T
     return np.ascontiguousarray(points), triangles
 
@@ -756,18 +756,18 @@ class FixWallMesh(Fix):
         self.file = given["file"][0]
         points, self.triangles = placed_mesh(sim, given, transforms)
         self.placed = np.ascontiguousarray(points)
-        self.velocity = np.array(read_numbers(given["velocity"], "velocity") if "velocity" in given
-                                 else [0.0, 0.0, 0.0])
+        self.velocity = np.array([number(text, "velocity", representable=True) for text in given["velocity"]]
+                                 if "velocity" in given else [0.0, 0.0, 0.0])
         self.spin = np.zeros(3)
         self.pivot0 = np.zeros(3)
         if "omega" in given:
             w = given["omega"]
             if w[3] != "about":
                 raise ScriptError(f"omega takes WX WY WZ about PX PY PZ (got {' '.join(w)})")
-            self.spin = np.array(read_numbers(w[:3], "omega"))
-            self.pivot0 = np.array(read_numbers(w[4:], "omega point"))
-        self.belt = np.array(read_numbers(given["surface_vel"], "surface_vel") if "surface_vel" in given
-                             else [0.0, 0.0, 0.0])
+            self.spin = np.array([number(text, "omega", representable=True) for text in w[:3]])
+            self.pivot0 = np.array([number(text, "omega point", representable=True) for text in w[4:]])
+        self.belt = np.array([number(text, "surface_vel", representable=True) for text in given["surface_vel"]]
+                             if "surface_vel" in given else [0.0, 0.0, 0.0])
         self.conveyor = "surface_vel" in given
         self.moving = bool(np.any(self.velocity) or np.any(self.spin))
         if self.conveyor and ("velocity" in given or "omega" in given):
@@ -780,11 +780,11 @@ class FixWallMesh(Fix):
         model, numbers = words[0], words[1:]
         if model == "lsd":
             if len(numbers) == 6:
-                e, kn, cn, kt, ct, mu = read_numbers(numbers, "model lsd parameter")
+                e, kn, cn, kt, ct, mu = [number(text, "model lsd parameter", representable=True) for text in numbers]
                 check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
                 return ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
             if len(numbers) == 3:
-                e, kn, mu = read_numbers(numbers, "model lsd parameter")
+                e, kn, mu = [number(text, "model lsd parameter", representable=True) for text in numbers]
                 check_law_numbers(e=e, kn=kn, mu=mu)
                 return ContactLaw.lsd(kn, mu, e=e)
             raise ScriptError(f"model lsd takes e kn Cn kt Ct mu, or e kn mu "
@@ -792,7 +792,7 @@ class FixWallMesh(Fix):
         if model == "hertz":
             if len(numbers) != 4:
                 raise ScriptError(f"model hertz takes Y nu e mu (got {' '.join(numbers) or 'nothing'})")
-            youngs, poisson, e, mu = read_numbers(numbers, "model hertz parameter")
+            youngs, poisson, e, mu = [number(text, "model hertz parameter", representable=True) for text in numbers]
             if not youngs > 0.0:
                 raise ScriptError(f"Y must be > 0 (got {youngs:g})")
             if not -1.0 < poisson < 0.5:

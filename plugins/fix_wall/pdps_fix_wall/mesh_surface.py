@@ -52,10 +52,10 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, ScriptError, StyleArgs, number
 
 from .mesh import belt_on_face, face_normals, placed_mesh, read_keywords, rigid_velocity, unit
-from .wall_contact import TRANSFER_COS, read_numbers
+from .wall_contact import TRANSFER_COS
 
 SURFACE_ARITY = {"file": 1, "type": 1, "verbose": 1, "heal": 1, "precision": 1, "curvature": 1,
                  "temperature": 1, "scale": 1, "move": 3, "rotate": 6, "surface_vel": 3,
@@ -122,19 +122,20 @@ class FixMeshSurface(Fix):
         if self.conveyor and "surface_ang_vel" in given:
             raise ScriptError("surface_vel and surface_ang_vel cannot both be given")
         if self.conveyor:
-            self.belt = np.array(read_numbers(given["surface_vel"], "surface_vel"))
+            self.belt = np.array([number(text, "surface_vel", representable=True) for text in given["surface_vel"]])
         if "surface_ang_vel" in given:
             w = given["surface_ang_vel"]
             if w[0] != "origin" or w[4] != "axis" or w[8] != "omega":
                 raise ScriptError("surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W "
                                   f"(got {' '.join(w)})")
-            self.pivot = np.array(read_numbers(w[1:4], "surface_ang_vel origin"))
-            axis = unit(read_numbers(w[5:8], "surface_ang_vel axis"), "surface_ang_vel axis")
-            (omega,) = read_numbers(w[9:10], "surface_ang_vel omega")
+            self.pivot = np.array([number(text, "surface_ang_vel origin", representable=True) for text in w[1:4]])
+            axis = unit([number(text, "surface_ang_vel axis", representable=True) for text in w[5:8]],
+                        "surface_ang_vel axis")
+            (omega,) = [number(text, "surface_ang_vel omega", representable=True) for text in w[9:10]]
             self.spin = axis * omega
         self.transfer_cos = TRANSFER_COS
         if "curvature" in given:
-            (degrees,) = read_numbers(given["curvature"], "curvature")
+            (degrees,) = [number(text, "curvature", representable=True) for text in given["curvature"]]
             if not 0.0 < degrees <= 90.0:
                 raise ScriptError(f"curvature must be in (0, 90] degrees (got {given['curvature'][0]})")
             self.transfer_cos = math.cos(math.radians(degrees))

@@ -47,11 +47,10 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, number
 from pdps_granular_contact.liggghts import find_property
 
 from .mesh_surface import FixMeshSurface
-from .wall_contact import read_numbers
 
 
 class FixMeshSurfaceStress(FixMeshSurface):
@@ -71,8 +70,8 @@ class FixMeshSurfaceStress(FixMeshSurface):
         if wear not in ("finnie", "off"):
             raise ScriptError(f"wear must be finnie or off (got {wear})")
         self.wear = wear == "finnie"
-        self.reference = np.array(read_numbers(given["reference_point"], "reference_point")
-                                  if "reference_point" in given else [0.0, 0.0, 0.0])
+        point = given.get("reference_point", ["0", "0", "0"])
+        self.reference = np.array([number(text, "reference_point", representable=True) for text in point])
         self.face_force = np.zeros((len(self.triangles), 3))
         self.torque_sum = np.zeros(3)
         self.face_wear = np.zeros(len(self.triangles))

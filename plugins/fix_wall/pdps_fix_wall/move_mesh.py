@@ -43,10 +43,9 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Fix, MeshSurface, ScriptError, StyleArgs, VariableRef
+from pdps_core.api import Fix, MeshSurface, ScriptError, StyleArgs, VariableRef, number
 
 from .mesh import rotation_matrix, unit
-from .wall_contact import read_numbers
 
 MAX_ORDER = 10
 STILL, NO_TURN = np.eye(3), np.zeros((3, 3))    # read only: the pose of a translation
@@ -135,7 +134,7 @@ class FixMoveMesh(Fix):
         return self.usage
 
     def _period(self, word):
-        (period,) = read_numbers([word], f"{self.style} period")
+        (period,) = [number(text, f"{self.style} period", representable=True) for text in [word]]
         if not period > 0.0:
             raise ScriptError(f"{self.style}: period must be > 0 (got {word})")
         return period
@@ -150,7 +149,7 @@ class FixMoveMesh(Fix):
 
     def _linear(self, sim, words):
         (v,) = self._expect(words, [(None, 3)])
-        self.velocity = np.array(read_numbers(v, "linear velocity"))
+        self.velocity = np.array([number(text, "linear velocity", representable=True) for text in v])
 
     def _linear_variable(self, sim, words):
         (v,) = self._expect(words, [(None, 3)])
@@ -158,12 +157,13 @@ class FixMoveMesh(Fix):
 
     def _wiggle(self, sim, words):
         a, t = self._expect(words, [("amplitude", 3), ("period", 1)])
-        self.amplitude = np.array(read_numbers(a, "wiggle amplitude"))
+        self.amplitude = np.array([number(text, "wiggle amplitude", representable=True) for text in a])
         self.omega = 2.0 * math.pi / self._period(t[0])
 
     def _axis_origin(self, origin, axis):
-        self.origin = np.array(read_numbers(origin, f"{self.style} origin"))
-        self.axis = unit(read_numbers(axis, f"{self.style} axis"), f"{self.style} axis")
+        self.origin = np.array([number(text, f"{self.style} origin", representable=True) for text in origin])
+        self.axis = unit([number(text, f"{self.style} axis", representable=True) for text in axis],
+                         f"{self.style} axis")
 
     def _rotate(self, sim, words):
         p, a, t = self._expect(words, [("origin", 3), ("axis", 3), ("period", 1)])
@@ -180,7 +180,7 @@ class FixMoveMesh(Fix):
                                                   ("amplitude", 1)])
         self._axis_origin(p, a)
         self.omega = 2.0 * math.pi / self._period(t[0])
-        (degrees,) = read_numbers(amplitude, "riggle amplitude")
+        (degrees,) = [number(text, "riggle amplitude", representable=True) for text in amplitude]
         self.angle_amplitude = math.radians(degrees)
 
     def _series(self, words, head):
@@ -198,14 +198,15 @@ class FixMoveMesh(Fix):
         values = self._expect(words, head + [("order", 1), ("amplitude", order), ("phase", order),
                                              ("period", 1)])
         self.order = order
-        self.coefficients = np.array(read_numbers(values[-3], f"{self.style} amplitude"))
-        self.phases = np.array(read_numbers(values[-2], f"{self.style} phase"))
+        self.coefficients = np.array([number(text, f"{self.style} amplitude", representable=True)
+                                      for text in values[-3]])
+        self.phases = np.array([number(text, f"{self.style} phase", representable=True) for text in values[-2]])
         self.omega = 2.0 * math.pi / self._period(values[-1][0])
         return values
 
     def _viblin(self, sim, words):
         values = self._series(words, [("axis", 3)])
-        self.direction = unit(read_numbers(values[0], "viblin axis"), "viblin axis")
+        self.direction = unit([number(text, "viblin axis", representable=True) for text in values[0]], "viblin axis")
 
     def _vibrot(self, sim, words):
         values = self._series(words, [("origin", 3), ("axis", 3)])

@@ -117,22 +117,6 @@ class ContactLaw:
                      f"steps; use timestep <= {duration / 50.0:.3g} for accurate rebounds")
 
 
-def read_numbers(words, what):
-    values = []
-    for word in words:
-        try:
-            value = float(word)
-        except ValueError:
-            raise ScriptError(f"{what} must be a number (got {word})") from None
-        if not math.isfinite(value):
-            raise ScriptError(f"{what} must be a finite number (got {word})")
-        # the rule StyleArgs holds every declared number to
-        if value != 0.0 and not 1e-50 <= abs(value) <= 1e50:
-            raise ScriptError(f"{what} must be 0 or of magnitude from 1e-50 to 1e+50 (got {word})")
-        values.append(value)
-    return values
-
-
 def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
     """Ranges a user gets told about by name."""
     if e is not None and not 0.0 < e <= 1.0:

@@ -71,13 +71,12 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, number
 from pdps_granular_contact import liggghts
 
 from .mesh import (LIGGGHTS_LAWS, NO_PDPS_LAW, NO_TALLY, MeshContacts, mesh_fix, mesh_wall_forces,
                    no_wear)
-from .wall_contact import (LIGGGHTS_WIDTH, LOG_COLUMNS, TRANSFER_COS, forget_far, liggghts_wall_contacts,
-                           read_numbers)
+from .wall_contact import LIGGGHTS_WIDTH, LOG_COLUMNS, TRANSFER_COS, forget_far, liggghts_wall_contacts
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
 PRIMITIVES = {"xplane": (XPLANE, 1), "yplane": (YPLANE, 1), "zplane": (ZPLANE, 1),
@@ -246,7 +245,7 @@ class FixWallGranModel(Fix):
         values = words[3:3 + count]
         if len(values) < count:
             raise ScriptError(f"{style} takes {count} value(s) (got {' '.join(values) or 'none'})")
-        numbers = read_numbers(values, f"{style} argument")
+        numbers = [number(text, f"{style} argument", representable=True) for text in values]
         self.position = numbers[0] if count == 1 else 0.0
         self.cylinder = np.array(numbers if count == 3 else [0.0, 0.0, 0.0])
         if count == 3 and not self.cylinder[0] > 0.0:
@@ -297,7 +296,7 @@ class FixWallGranModel(Fix):
                 dim, speed = words[k + 1], words[k + 2]
                 if dim not in AXES:
                     raise ScriptError(f"shear dimension must be x, y or z (got {dim})")
-                (value,) = read_numbers([speed], "shear velocity")
+                (value,) = [number(text, "shear velocity", representable=True) for text in [speed]]
                 axis = AXES[dim]
                 if self.wallstyle <= ZPLANE:
                     if axis == self.wallstyle:

@@ -28,12 +28,18 @@ Example::
 """
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
-from pydantic import model_validator
+from pdps_core.api import Region, ScriptError, StyleArgs, SurfaceContacts, param
 
-from pdps_core.api import Region, ScriptError, StyleArgs, SurfaceContacts
+
+class Point(NamedTuple):
+    label: str
+    x: float
+    y: float
+    z: float
 
 
 @njit(cache=True)
@@ -104,26 +110,12 @@ class RegionPolygon(Region):
     usage = "region ID polygon p1 x y z p2 x y z p3 x y z ..."
 
     class Args(StyleArgs):
-        words: list[str]
-
-        @model_validator(mode="after")
-        def _points(self):
-            w = self.words
-            if len(w) % 4 or len(w) < 12:
-                raise ValueError("expected at least 3 points, each a label and x y z")
-            for k in range(0, len(w), 4):
-                for value in w[k + 1:k + 4]:
-                    try:
-                        float(value)
-                    except ValueError:
-                        raise ValueError(f"point {w[k]}: coordinate must be a number (got {value})") from None
-            return self
+        point: list[Point] = param(min_length=3, unit=("1", "distance", "distance", "distance"))
 
     def __init__(self, sim, id, args):
         super().__init__(sim, id, args)
-        w = args.words
-        self.labels = w[0::4]
-        self.points = np.array([[float(c) for c in w[k + 1:k + 4]] for k in range(0, len(w), 4)])
+        self.labels = [point.label for point in args.point]
+        self.points = np.array([[point.x, point.y, point.z] for point in args.point])
         normal = np.cross(self.points[1] - self.points[0], self.points[2] - self.points[0])
         length = np.linalg.norm(normal)
         if length == 0:

@@ -145,11 +145,11 @@ def test_polygon_point_off_the_plane_is_an_error(make_sim):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("p1 0 0 0 p2 1 0 0", "expected at least 3 points"),
-    ("p1 0 0 0", "expected at least 3 points"),
-    ("p1 0 0 0 p2 1 0 0 p3 0 1", "expected at least 3 points"),
+    ("p1 0 0 0 p2 1 0 0", "point takes at least 3 entries (got 2)"),
+    ("p1 0 0 0", "point takes at least 3 entries (got 1)"),
+    ("p1 0 0 0 p2 1 0 0 p3 0 1", "point p3 needs x y z (got 0 1)"),
     ("p1 0 0 0 p2 1 0 0 p3 2 0 0", "the first three points are on one line"),
-    ("p1 0 0 0 p2 1 0 0 p3 0 x 0", "coordinate must be a number (got x)"),
+    ("p1 0 0 0 p2 1 0 0 p3 0 x 0", "point p3: y must be a finite number (got x)"),
 ])
 def test_polygon_bad_points(words, message, make_sim):
     sim = make_sim()
@@ -162,7 +162,7 @@ def test_bad_point_message_is_one_clean_line(make_sim):
     sim = make_sim()
     with pytest.raises(ScriptError) as info:
         sim.command("region w polygon p1 0 0 0 p2 1 0 0 p3 0 x 0")
-    assert str(info.value) == "<command>:1: region: point p3: coordinate must be a number (got x)"
+    assert str(info.value) == "<command>:1: region: point p3: y must be a finite number (got x)"
 
 
 def test_polygon_is_a_surface_without_inside_or_extent():
