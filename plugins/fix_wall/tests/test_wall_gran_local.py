@@ -10,17 +10,11 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import make_box
+from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
 G = 10.0
-MATERIAL = """
-    fix m1 all property/global youngsModulus peratomtype 1.0e5
-    fix m2 all property/global poissonsRatio peratomtype 0.3
-    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-    fix m5 all property/global characteristicVelocity scalar 1.0
-"""
+MATERIAL = liggghts_material(1.0e5, 0.3, 0.5, 0.5, characteristicVelocity=1.0)
 
 
 def resting(wall, extra="", keywords=""):

@@ -13,17 +13,12 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import make_box
+from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
 E12 = 0.7
-MATERIAL = f"""
-    fix m1 all property/global youngsModulus peratomtype 1.0e5 3.0e5
-    fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
-    fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 {E12} {E12} 0.5
-    fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.4 0.4 0.3
-    fix m5 all property/global characteristicVelocity scalar 1.0
-"""
+MATERIAL = liggghts_material((1.0e5, 3.0e5), (0.3, 0.25), (0.9, E12, E12, 0.5), (0.5, 0.4, 0.4, 0.3),
+                             characteristicVelocity=1.0)
 
 
 def y_star():
@@ -179,13 +174,7 @@ def test_a_missing_material_is_named_at_the_run():
 
 # ---- rolling friction and cohesion through the wall ---------------------------------------------
 def one_type_material(extra):
-    return """
-        fix m1 all property/global youngsModulus peratomtype 1.0e6
-        fix m2 all property/global poissonsRatio peratomtype 0.3
-        fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-        fix m4 all property/global coefficientFriction peratomtypepair 1 0.8
-        fix m5 all property/global characteristicVelocity scalar 1.0
-    """ + extra
+    return liggghts_material(1.0e6, 0.3, 0.5, 0.8, characteristicVelocity=1.0) + extra
 
 
 @pytest.mark.parametrize("rolling, lever", [("cdt", "arm"), ("epsd2", "radius")])
