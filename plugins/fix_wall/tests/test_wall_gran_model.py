@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError
 from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
@@ -232,16 +232,11 @@ def test_a_cohesive_sphere_rests_where_spring_cohesion_and_weight_balance(cohesi
     assert kn * delta > MASS * g * 1.1
 
 
-def test_store_force_keeps_each_particles_wall_force(data, tmp_path):
+def test_store_force_keeps_each_particles_wall_force(data, tmp_path, liggghts_granular):
     """store_force yes: a sphere resting on the mesh floor and one resting on a zplane of another
     wall fix (and one in the air) carry their wall's force m g up in force_ID, which dump custom
     reads as LIGGGHTS's f_force_ID[k] in the LIGGGHTS dialect; the wall fix without it has none."""
-    sim = Simulation(screen=False, log=None)
-    sim.command("dialect liggghts")
-    sim.command(f"""
-        units lj
-        atom_style granular
-        boundary f f f
+    sim = liggghts_granular(f"""
         region box block -4 4 -4 4 -4 4 units box
         create_box 2 box
         create_atoms 1 single 0.3 -0.2 0.499 units box
