@@ -45,7 +45,7 @@ What is here:
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
 - ``script_error``: the one-line error a script line is refused with (every style's "bad input is
-  named" test).
+  named" test); ``assert_refused``: a ``pdps run`` refused with its one ``ERROR: in.test:LINE: ...`` line.
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
   in-process, returning exit code, stdout and stderr).
 """
@@ -460,6 +460,13 @@ def script_error(setup, line):
 
 
 # ---- test styles --------------------------------------------------------------------------------
+def assert_refused(done, line, message):
+    """``pdps run`` (the ``pdps_cli`` fixture's result) refused its script with one line: exit code 1
+    and ``ERROR: in.test:LINE: message``."""
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:{line}: {message}"
+
+
 def register_styles(*styles):
     """Make style classes usable in scripts under their ``name`` in this process: the test styles
     below, or a test's own (``register_styles(SphereVerlet, MyProbe)``)."""

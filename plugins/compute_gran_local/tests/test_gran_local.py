@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import liggghts_material
+from pdps_core.testing import assert_refused, liggghts_material
 
 D, RHO = 0.01, 2500.0
 
@@ -99,9 +99,7 @@ def test_contact_atom_counts_touching_neighbors(tmp_path):
      "compute: unknown keyword velocity (known: pos, vel, id, force, torque, history, contactArea, delta, heatFlux)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
-    done = pdps_cli("atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n" + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:4: {message}"
+    assert_refused(pdps_cli(f"atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n{line}\n"), 4, message)
 
 
 def test_a_contact_across_a_periodic_boundary():

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import liggghts_material
+from pdps_core.testing import assert_refused, liggghts_material
 
 RHO = 2500.0
 D = 0.01
@@ -177,9 +177,7 @@ def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
     characteristic velocity, hertz does not)."""
     style = "hooke" if "characteristicVelocity" in message else "hertz"
     script = SETUP + lines + f"pair_style gran model {style} tangential history\npair_coeff * *\nrun 0\n"
-    done = pdps_cli(script)
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:{script.count(chr(10))}: {message}"
+    assert_refused(pdps_cli(script), script.count(chr(10)), message)
 
 
 @pytest.mark.parametrize("line, message", [
@@ -190,9 +188,7 @@ def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
      "pair_style: limitForce must be one of 'on' or 'off' (got maybe)"),
 ])
 def test_bad_pair_style_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)
 
 
 def test_a_liggghts_script_says_so_on_its_first_line(pdps_cli):
