@@ -18,6 +18,8 @@ What is here:
   ``bench_data``: the benchmark scenes' data files (dpd_water, dpd_gw, gran_box, lj_fcc), as LAMMPS reads them.
 - ``lj_fcc``: the opening lines of LAMMPS's Lennard-Jones melt scene (an fcc crystal in a box of
   N unit cells a side), which many LAMMPS-dialect tests and recorders start from.
+- ``liggghts_material``: the ``fix mN all property/global ...`` lines of a LIGGGHTS granular
+  material (Young's modulus, Poisson's ratio, restitution, friction and any other property).
 - ``sphere_bed``: a data file of polydisperse spheres on a jittered lattice with random velocities
   (the granular styles' scene for same-answers-on-any-number-of-ranks tests).
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
@@ -43,7 +45,7 @@ What is here:
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
 - ``script_error``: the one-line error a script line is refused with (every style's "bad input is
-  named" test).
+  named" test); ``assert_refused``: a ``pdps run`` refused with its one ``ERROR: in.test:LINE: ...`` line.
 - fixtures ``make_sim`` (a silent Simulation in a temporary folder) and ``pdps_cli`` (``pdps run``
   in-process, returning exit code, stdout and stderr).
 """
@@ -130,6 +132,34 @@ def lj_fcc(cells, ntypes=1):
     with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet)."""
     return (f"units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 {cells} 0 {cells} 0 {cells}\n"
             f"create_box {ntypes} box\ncreate_atoms 1 box\n")
+
+
+_TYPE_PAIR_PROPERTIES = {"coefficientRestitution", "coefficientFriction", "coefficientRollingFriction",
+                         "cohesionEnergyDensity", "coefficientRollingViscousDamping"}
+
+
+def liggghts_material(young, poisson, restitution, friction, **more):
+    """The LIGGGHTS material as script lines, ``fix m1 all property/global youngsModulus ...``, then
+    m2 poissonsRatio, m3 coefficientRestitution, m4 coefficientFriction and m5... for ``more``, in the
+    order given, by their LIGGGHTS names (characteristicVelocity=1.0, thermalConductivity=(5, 5),
+    cohesionEnergyDensity=3e4...). A per-type property takes a value or one per type; a type-pair
+    table (restitution, friction, rolling friction, cohesion energy density) a value for one type
+    or the ntypes x ntypes table row by row; characteristicVelocity is a scalar."""
+    properties = {"youngsModulus": young, "poissonsRatio": poisson, "coefficientRestitution": restitution,
+                  "coefficientFriction": friction, **more}
+    lines = []
+    for number, (name, values) in enumerate(properties.items(), start=1):
+        if name == "characteristicVelocity":
+            lines.append(f"fix m{number} all property/global {name} scalar {values}")
+            continue
+        values = list(values) if isinstance(values, (list, tuple)) else [values]
+        if name in _TYPE_PAIR_PROPERTIES:
+            ntypes = math.isqrt(len(values))
+            lines.append(f"fix m{number} all property/global {name} peratomtypepair {ntypes} "
+                         + " ".join(map(str, values)))
+        else:
+            lines.append(f"fix m{number} all property/global {name} peratomtype " + " ".join(map(str, values)))
+    return "\n".join(lines) + "\n"
 
 
 def sphere_bed(path, cells, offset, lo, hi, *, ntypes, seed):
@@ -430,6 +460,13 @@ def script_error(setup, line):
 
 
 # ---- test styles --------------------------------------------------------------------------------
+def assert_refused(done, line, message):
+    """``pdps run`` (the ``pdps_cli`` fixture's result) refused its script with one line: exit code 1
+    and ``ERROR: in.test:LINE: message``."""
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"ERROR: in.test:{line}: {message}"
+
+
 def register_styles(*styles):
     """Make style classes usable in scripts under their ``name`` in this process: the test styles
     below, or a test's own (``register_styles(SphereVerlet, MyProbe)``)."""

@@ -4,6 +4,7 @@ and a temp compute (pdps recounts a group each time), what pdps cannot do refuse
 import pytest
 
 from pdps_core.api import Simulation, observables
+from pdps_core.testing import assert_refused
 
 SETUP = """\
 units lj
@@ -37,6 +38,4 @@ def test_dynamic_yes_counts_particles_inserted_during_a_run():
      "[dynamic/dof yes] [extra/dof N]"),
 ])
 def test_what_pdps_cannot_do_is_one_line(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:9: compute_modify: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 9, f"compute_modify: {message}")

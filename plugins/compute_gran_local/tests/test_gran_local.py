@@ -7,27 +7,33 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import assert_refused, liggghts_material
 
 D, RHO = 0.01, 2500.0
 
 
-def chain(extra=""):
-    """Spheres 1-2 and 2-3 overlapping by 1e-4 and 2e-4, 3-4 apart; 2 spinning, 3 moving."""
+def spheres(boundary, material, lines):
+    """A 0.1 m box in LIGGGHTS syntax and SI units, pair gran hertz with history; ``lines`` create
+    the spheres and go on."""
     sim = Simulation(screen=False, log=None, dialect="liggghts")
     sim.command(f"""
 atom_style granular
-boundary f f f
+boundary {boundary}
 units si
 region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
 create_box 1 reg
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-fix m5 all property/global thermalConductivity peratomtype 5.
-fix m6 all property/global thermalCapacity peratomtype 10.
+{material}
 pair_style gran model hertz tangential history
 pair_coeff * *
+{lines}
+""")
+    return sim
+
+
+def chain(extra=""):
+    """Spheres 1-2 and 2-3 overlapping by 1e-4 and 2e-4, 3-4 apart; 2 spinning, 3 moving."""
+    material = liggghts_material(5.e6, 0.45, 0.5, 0.5, thermalConductivity=5., thermalCapacity=10.)
+    return spheres("f f f", material, f"""
 create_atoms 1 single 0 0 0 units box
 create_atoms 1 single {D - 1e-4!r} 0 0 units box
 create_atoms 1 single {2 * D - 3e-4!r} 0.001 0 units box
@@ -37,7 +43,6 @@ set atom 2 omega 0 0 30
 set atom 3 vy 0.2
 {extra}
 """)
-    return sim
 
 
 def test_rows_hold_the_pair_styles_contacts():
@@ -94,27 +99,13 @@ def test_contact_atom_counts_touching_neighbors(tmp_path):
      "compute: unknown keyword velocity (known: pos, vel, id, force, torque, history, contactArea, delta, heatFlux)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
-    done = pdps_cli("atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n" + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:4: {message}"
+    assert_refused(pdps_cli(f"atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n{line}\n"), 4, message)
 
 
 def test_a_contact_across_a_periodic_boundary():
     """Spheres touching through the periodic x faces: counted once each (the ghost's count summed
     onto its owner), and flagged periodic in the id columns."""
-    sim = Simulation(screen=False, log=None, dialect="liggghts")
-    sim.command(f"""
-atom_style granular
-boundary p f f
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
-create_box 1 reg
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
+    sim = spheres("p f f", liggghts_material(5.e6, 0.45, 0.5, 0.5), f"""
 create_atoms 1 single -0.0451 0 0 units box
 create_atoms 1 single 0.0451 0 0 units box
 create_atoms 1 single 0 0 0 units box

@@ -138,19 +138,25 @@ def test_xdmf_frames_and_series_hold_the_particles(fluid, tmp_path):
     check_frame(points, cells, point_data, state(sim))       # full precision survives the text
 
 
-def test_spheres_carry_radius_and_omega(tmp_path, make_sim):
+def two_spheres(make_sim, velocity, dumps):
+    """Spheres of diameters 1 and 0.6 (types 1 and 2) moving at ``velocity`` under nve/sphere, with
+    the ``dumps`` lines."""
     sim = make_sim()
-    sim.command("""
+    sim.command(f"""
         particle_style sphere
         region box block -3 3 -3 3 -3 3
         create_box 2 box
         create_particle 1 single 0 0 0 diameter 1 density 1
         create_particle 2 single 1.5 0.5 -1 diameter 0.6 density 2
-        velocity all set 0.1 0 0
+        velocity all set {velocity}
         fix 1 all nve/sphere
-        dump 1 all vtk 3 s_*.vtu
-        dump 2 all xdmf 3 s_*.xdmf
     """)
+    sim.command(dumps)
+    return sim
+
+
+def test_spheres_carry_radius_and_omega(tmp_path, make_sim):
+    sim = two_spheres(make_sim, "0.1 0 0", "dump 1 all vtk 3 s_*.vtu\ndump 2 all xdmf 3 s_*.xdmf")
     sim.particles.omega[: sim.nlocal] = [[1.0, 2.0, 3.0], [-1.0, 0.5, 0.0]]
     sim.command("run 3")
     expected = state(sim)
@@ -325,17 +331,7 @@ def test_bad_dump_commands(fluid, line, words):
 def test_custom_vtk_writes_the_listed_values(tmp_path, make_sim):
     """LIGGGHTS's dump custom/vtk: positions as points, sorted by id, vx vy vz as the vector v, a lone
     component alone, radius and id as listed; c_ID and unknown words refused."""
-    sim = make_sim()
-    sim.command("""
-        particle_style sphere
-        region box block -3 3 -3 3 -3 3
-        create_box 2 box
-        create_particle 1 single 0 0 0 diameter 1 density 1
-        create_particle 2 single 1.5 0.5 -1 diameter 0.6 density 2
-        velocity all set 0.1 0.2 -0.3
-        fix 1 all nve/sphere
-        dump 1 all custom/vtk 3 post_*.vtk id type x y z vx vy vz fz radius
-    """)
+    sim = two_spheres(make_sim, "0.1 0.2 -0.3", "dump 1 all custom/vtk 3 post_*.vtk id type x y z vx vy vz fz radius")
     sim.command("run 3")
     expected = state(sim)
     mesh = meshio.read(tmp_path / "post_3.vtk")

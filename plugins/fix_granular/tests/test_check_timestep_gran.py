@@ -5,6 +5,7 @@ checks every NEVERY steps, says once when the pair style gives no limits, stops 
 import pytest
 
 from pdps_core.api import ScriptError, SimulationError
+from pdps_core.testing import liggghts_material
 
 
 def scene(spheres, limits, fix="check/timestep/gran 100 0.1 0.1", dt=0.001):
@@ -130,10 +131,7 @@ region reg block -0.05 0.05 -0.05 0.05 0. 0.15 units box
 create_box 2 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6 1.e7
-fix m2 all property/global poissonsRatio peratomtype 0.45 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.8 0.8 0.7
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.05 0.1 0.1 0.2
+""" + liggghts_material((5.e6, 1.e7), (0.45, 0.3), (0.9, 0.8, 0.8, 0.7), (0.05, 0.1, 0.1, 0.2)) + """\
 pair_style gran model hertz tangential history
 pair_coeff * *
 timestep 0.00001

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import assert_refused, liggghts_material
 
 D1, D2, RHO = 0.01, 0.008, 2500.0
 K1, K2, C1, C2 = 5.0, 2.0, 10.0, 30.0
@@ -23,12 +24,8 @@ boundary f f f
 units si
 region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
 create_box 2 reg
-fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m5 all property/global thermalConductivity peratomtype {K1} {K2}
-fix m6 all property/global thermalCapacity peratomtype {C1} {C2}
+{liggghts_material((5.e6, 5.e6), (0.45, 0.45), [0.5] * 4, [0.5] * 4, thermalConductivity=(K1, K2),
+                   thermalCapacity=(C1, C2))}
 pair_style gran model hertz tangential history
 pair_coeff * *
 timestep {dt!r}
@@ -115,17 +112,12 @@ create_atoms 1 single 0 0 0 units box
      "fix made (heat/gran makes Temp and heatSource)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)
 
 
 def test_missing_conductivity_stops_the_run(pdps_cli):
-    done = pdps_cli(SETUP + "fix m1 all property/global youngsModulus peratomtype 5.e6\n"
-                    "fix m2 all property/global poissonsRatio peratomtype 0.45\n"
-                    "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5\n"
-                    "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5\n"
-                    "pair_style gran model hertz tangential history\npair_coeff * *\n"
+    done = pdps_cli(SETUP + liggghts_material(5.e6, 0.45, 0.5, 0.5)
+                    + "pair_style gran model hertz tangential history\npair_coeff * *\n"
                     "fix h all heat/gran initial_temperature 300\nrun 0\n")
     assert done.returncode == 1
     assert done.stderr.strip() == ("ERROR: in.test:13: run: fix h (heat/gran) needs thermalConductivity: "

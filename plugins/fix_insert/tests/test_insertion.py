@@ -9,13 +9,9 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-from pdps_core.testing import run_ranks
+from pdps_core.testing import liggghts_material, run_ranks
 
-MATERIAL = """
-    fix m1 all property/global youngsModulus peratomtype 5.e6
-    fix m2 all property/global poissonsRatio peratomtype 0.45
-    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+MATERIAL = "\n" + liggghts_material(5.e6, 0.45, 0.3, 0.5) + """\
     pair_style gran model hertz tangential history
     pair_coeff * *
 """

@@ -3,6 +3,7 @@
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import assert_refused
 
 SETUP = """\
 atom_style granular
@@ -43,9 +44,8 @@ def test_the_later_of_two_fixes_of_one_name_holds():
 
 
 def test_scalar_with_two_values_is_refused(pdps_cli):
-    done = pdps_cli(SETUP + "fix m2 all property/global poissonsRatio scalar 0.45 0.45\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == "ERROR: in.test:6: fix: poissonsRatio scalar takes one value (got 2)"
+    assert_refused(pdps_cli(SETUP + "fix m2 all property/global poissonsRatio scalar 0.45 0.45\n"), 6,
+                   "fix: poissonsRatio scalar takes one value (got 2)")
 
 
 @pytest.mark.parametrize("line, message", [
@@ -68,9 +68,7 @@ def test_scalar_with_two_values_is_refused(pdps_cli):
      "'peratomtypepair' (got perparticle)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)
 
 
 def test_property_atom_values_follow_set_and_dumps(tmp_path):
@@ -96,6 +94,4 @@ def test_property_atom_values_follow_set_and_dumps(tmp_path):
     ("fix a all property/atom age scalar maybe no no 1", "fix: restart must be one of 'yes' or 'no' (got maybe)"),
 ])
 def test_bad_property_atom_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)

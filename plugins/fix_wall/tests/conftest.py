@@ -5,11 +5,12 @@ m g on every particle of the group (also at setup, so the first half-kick sees i
 """
 
 import os
+import textwrap
 
 import numpy as np
 import pytest
 
-from pdps_core.api import Fix, StyleArgs, observables
+from pdps_core.api import Fix, Simulation, StyleArgs, observables
 from pdps_core.testing import Record, SphereVerlet, make_box, register_styles
 
 DATA = os.path.join(os.path.dirname(__file__), "data")
@@ -50,3 +51,15 @@ def data():
 def scene():
     """``scene(box=..., boundary=..., skin=...)``: a new simulation of spheres (see sphere_scene)."""
     return sphere_scene
+
+
+@pytest.fixture
+def liggghts_granular():
+    """``liggghts_granular(lines)``: a silent simulation reading LIGGGHTS's dialect, granular
+    particles in lj units in a closed box, then ``lines``."""
+    def make(lines):
+        sim = Simulation(screen=False, log=None)
+        sim.command("dialect liggghts")
+        sim.command("units lj\natom_style granular\nboundary f f f\n" + textwrap.dedent(lines))
+        return sim
+    return make

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-from pdps_core.testing import make_box
+from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
 KN, E, G = 1.0e4, 0.5, 10.0
@@ -24,11 +24,7 @@ PDPS_BED = f"""
     fix floor all mesh/surface/stress file {{data}}/square.stl scale 8 move 3 3 -0.6
     fix w all wall/mesh mesh floor model lsd {E} {KN} 0.5
 """
-LIGGGHTS_BED = """
-    fix m1 all property/global youngsModulus peratomtype 2.0e5
-    fix m2 all property/global poissonsRatio peratomtype 0.3
-    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+LIGGGHTS_BED = "\n" + liggghts_material(2.0e5, 0.3, 0.5, 0.5) + """\
     pair_style gran model hertz tangential history
     pair_coeff * *
     fix floor all mesh/surface/stress file {data}/square.stl type 1 scale 8 move 3 3 -0.6

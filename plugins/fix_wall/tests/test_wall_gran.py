@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import ConstantForce, Record, SphereVerlet, register_styles
+from pdps_core.testing import ConstantForce, Record, SphereVerlet, assert_refused, register_styles
 
 DATA = Path(__file__).parent / "data" / "wall_gran"
 STAND_INS = (("nve/sphere", "test/nve_sphere"), ("addforce", "test/force"))
@@ -81,23 +81,23 @@ def test_trajectories_equal_lammps(tmp_path, name):
     assert not np.allclose(record.v[-1], record.v[0])
 
 
-def sphere_on_wall(tmp_path, wall, x, v=(0, 0, 0), omega=(0, 0, 0), boundary="p p f",
-                   box="0 10 0 10 0 10", diameter=1.0, density=M1):
+def one_sphere(tmp_path, x, lines, boundary="p p f", box="0 10 0 10 0 10", diameter=1.0, density=M1):
+    """One sphere at x read from a data file (LAMMPS's syntax, lj units), then ``lines``."""
     lo_hi = box.split()
     (tmp_path / "one.data").write_text("\n".join(
         ["one sphere", "", "1 atoms", "1 atom types", ""]
         + [f"{lo_hi[2 * d]} {lo_hi[2 * d + 1]} {a}lo {a}hi" for d, a in enumerate("xyz")]
         + ["", "Atoms # sphere", "", f"1 1 {diameter!r} {density!r} {x[0]!r} {x[1]!r} {x[2]!r}"]) + "\n")
     sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command(textwrap.dedent(f"""\
-        units lj
-        atom_style sphere
-        boundary {boundary}
-        read_data {tmp_path / 'one.data'}
-        timestep 0.0001
-        fix w all wall/gran {wall}
-        run 0
-        """))
+    sim.command(f"units lj\natom_style sphere\nboundary {boundary}\nread_data {tmp_path / 'one.data'}\n"
+                + textwrap.dedent(lines))
+    return sim
+
+
+def sphere_on_wall(tmp_path, wall, x, v=(0, 0, 0), omega=(0, 0, 0), boundary="p p f",
+                   box="0 10 0 10 0 10", diameter=1.0, density=M1):
+    sim = one_sphere(tmp_path, x, f"timestep 0.0001\nfix w all wall/gran {wall}\nrun 0",
+                     boundary, box, diameter, density)
     sim.particles.v[0] = v
     sim.particles.omega[0] = omega
     sim.command("run 0")
@@ -153,17 +153,11 @@ def test_a_turning_cylinder_drags_a_sphere_at_its_own_contact_point(tmp_path):
 def test_the_spring_grows_in_contact_and_is_zeroed_when_the_sphere_leaves(tmp_path):
     """A sphere sliding on the floor while lifting off: its spring holds v_t dt per step (stuck
     below the Coulomb limit at first), and is gone once it no longer touches."""
-    sphere_on_wall(tmp_path, f"hooke/history {HOOKE} zplane 0.0 NULL", (5, 5, 0.499))
-    sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command(textwrap.dedent(f"""\
-        units lj
-        atom_style sphere
-        boundary p p f
-        read_data {tmp_path / 'one.data'}
+    sim = one_sphere(tmp_path, (5, 5, 0.499), f"""
         timestep 0.0001
         fix 1 all test/nve_sphere
         fix w all wall/gran hooke/history {HOOKE} zplane 0.0 NULL
-        """))
+        """)
     sim.particles.v[0] = (0.01, 0.0, 2.0)
     sim.command("run 1")
     spring = sim.particles.arrays["wall_gran_w"]
@@ -179,18 +173,12 @@ def test_a_sphere_arriving_from_far_between_rebuilds_bounces_as_if_always_watche
     from 10 radii away (0.005 per step, the skin 0.3 crossed in 60 steps) is still caught by the
     floor, and bounces with the restitution of a contact followed at every step: Hooke's
     e = exp(-pi zeta / sqrt(1 - zeta^2)) with m* gamma_n = 50, k = 2e5 (LAMMPS's damping)."""
-    sphere_on_wall(tmp_path, f"hooke {HOOKE} zplane 0.0 NULL", (5, 5, 5.0))
-    sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command(textwrap.dedent(f"""\
-        units lj
-        atom_style sphere
-        boundary p p f
-        read_data {tmp_path / 'one.data'}
+    sim = one_sphere(tmp_path, (5, 5, 5.0), f"""
         {neighbor}
         timestep 0.0001
         fix 1 all test/nve_sphere
         fix w all wall/gran hooke 200000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL
-        """))
+        """)
     sim.particles.v[0] = (0.0, 0.0, -50.0)
     sim.command("run 1000")
     zeta = 50.0 / (2.0 * math.sqrt(200000.0))
@@ -226,5 +214,4 @@ def test_bad_arguments_get_one_line(pdps_cli, words, message):
         create_box 1 box
         fix w all wall/gran {words}
         """)
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: fix: {message}"
+    assert_refused(done, 6, f"fix: {message}")

@@ -9,18 +9,12 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import make_box
+from pdps_core.api import ScriptError
+from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
 G = 10.0
-MATERIAL = """
-    fix m1 all property/global youngsModulus peratomtype 1.0e5
-    fix m2 all property/global poissonsRatio peratomtype 0.3
-    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-    fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-    fix m5 all property/global characteristicVelocity scalar 1.0
-"""
+MATERIAL = liggghts_material(1.0e5, 0.3, 0.5, 0.5, characteristicVelocity=1.0)
 
 
 def resting(wall, extra="", keywords=""):
@@ -65,15 +59,10 @@ def test_a_resting_sphere_gives_one_row(data, wall, extra, ids):
     assert row[27] == pytest.approx(math.pi * (0.25 - d * d), rel=1e-12)
 
 
-def test_keywords_come_in_liggghts_order_and_dump_local_writes_them(tmp_path):
+def test_keywords_come_in_liggghts_order_and_dump_local_writes_them(tmp_path, liggghts_granular):
     """'delta force id' gives id (3), force (3), delta (1) in that order; dump local in the LIGGGHTS
     dialect writes index and c_walls[1..7] (1-based) as LAMMPS's text frame."""
-    sim = Simulation(screen=False, log=None)
-    sim.command("dialect liggghts")
-    sim.command(f"""
-        units lj
-        atom_style granular
-        boundary f f f
+    sim = liggghts_granular(f"""
         region box block -4 4 -4 4 -4 4
         create_box 1 box
         create_atoms 1 single 0.3 -0.2 0.49

@@ -12,18 +12,13 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import make_box
+from pdps_core.api import ScriptError
+from pdps_core.testing import liggghts_material, make_box
 
 MASS = math.pi / 6.0
 E12 = 0.7
-MATERIAL = f"""
-    fix m1 all property/global youngsModulus peratomtype 1.0e5 3.0e5
-    fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
-    fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 {E12} {E12} 0.5
-    fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.4 0.4 0.3
-    fix m5 all property/global characteristicVelocity scalar 1.0
-"""
+MATERIAL = liggghts_material((1.0e5, 3.0e5), (0.3, 0.25), (0.9, E12, E12, 0.5), (0.5, 0.4, 0.4, 0.3),
+                             characteristicVelocity=1.0)
 
 
 def y_star():
@@ -179,13 +174,7 @@ def test_a_missing_material_is_named_at_the_run():
 
 # ---- rolling friction and cohesion through the wall ---------------------------------------------
 def one_type_material(extra):
-    return """
-        fix m1 all property/global youngsModulus peratomtype 1.0e6
-        fix m2 all property/global poissonsRatio peratomtype 0.3
-        fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-        fix m4 all property/global coefficientFriction peratomtypepair 1 0.8
-        fix m5 all property/global characteristicVelocity scalar 1.0
-    """ + extra
+    return liggghts_material(1.0e6, 0.3, 0.5, 0.8, characteristicVelocity=1.0) + extra
 
 
 @pytest.mark.parametrize("rolling, lever", [("cdt", "arm"), ("epsd2", "radius")])
@@ -243,16 +232,11 @@ def test_a_cohesive_sphere_rests_where_spring_cohesion_and_weight_balance(cohesi
     assert kn * delta > MASS * g * 1.1
 
 
-def test_store_force_keeps_each_particles_wall_force(data, tmp_path):
+def test_store_force_keeps_each_particles_wall_force(data, tmp_path, liggghts_granular):
     """store_force yes: a sphere resting on the mesh floor and one resting on a zplane of another
     wall fix (and one in the air) carry their wall's force m g up in force_ID, which dump custom
     reads as LIGGGHTS's f_force_ID[k] in the LIGGGHTS dialect; the wall fix without it has none."""
-    sim = Simulation(screen=False, log=None)
-    sim.command("dialect liggghts")
-    sim.command(f"""
-        units lj
-        atom_style granular
-        boundary f f f
+    sim = liggghts_granular(f"""
         region box block -4 4 -4 4 -4 4 units box
         create_box 2 box
         create_atoms 1 single 0.3 -0.2 0.499 units box

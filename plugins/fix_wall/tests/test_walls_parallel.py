@@ -9,7 +9,7 @@ import meshio
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, sphere_bed, thermo_rows
+from pdps_core.testing import liggghts_material, run_ranks, sphere_bed, thermo_rows
 
 
 def run(tmp_path, data, ranks):
@@ -17,16 +17,13 @@ def run(tmp_path, data, ranks):
     sphere_bed(tmp_path / "bed.data", (6, 6, 3), (-3.25, -3.25, 0.75), (-7, -7, -1), (7, 7, 10), ntypes=2,
                seed=5)
     shutil.copy(f"{data}/square.stl", tmp_path / "square.stl")
-    done = run_ranks("""\
+    done = run_ranks(f"""\
         atom_style granular
         units lj
         boundary f f f
         comm_modify vel yes
         read_data bed.data
-        fix m1 all property/global youngsModulus peratomtype 1.0e5 2.0e5
-        fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
-        fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.6 0.6 0.5
-        fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.4 0.4 0.5
+        {liggghts_material((1.0e5, 2.0e5), (0.3, 0.3), (0.5, 0.6, 0.6, 0.5), (0.5, 0.4, 0.4, 0.5))}
         pair_style gran model hertz tangential history
         pair_coeff * *
         timestep 0.0005

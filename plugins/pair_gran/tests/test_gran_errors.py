@@ -1,6 +1,7 @@
 """Bad pair_style and pair_coeff lines for the gran styles: one located line, exit code 1."""
 
 import pytest
+from pdps_core.testing import assert_refused
 
 SETUP = """\
 units lj
@@ -23,9 +24,7 @@ USAGE = "pair_style gran/hooke/history Kn Kt gamma_n gamma_t xmu dampflag [limit
     ("pair_style gran/hooke/history 1e5 NULL nan NULL 0.5 1", "gamma_n must be a finite number (got nan)"),
 ])
 def test_bad_pair_style_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:5: pair_style: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 5, f"pair_style: {message}")
 
 
 def test_pair_coeff_takes_no_coefficients(pdps_cli):

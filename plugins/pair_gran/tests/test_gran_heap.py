@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from pdps_core.api import Simulation
+from pdps_core.testing import liggghts_material
 
 D = 0.01
 SCRIPT = """
@@ -16,13 +17,7 @@ region reg block -0.3 0.3 -0.3 0.3 0 0.3 units box
 create_box 2 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 1.e6 1.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.3 0.3 0.3 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m5 all property/global coefficientRollingFriction peratomtypepair 2 0.2 0.2 0.2 0.2
-fix m6 all property/global cohesionEnergyDensity peratomtypepair 2 {k} {k} {k} {k}
-pair_style gran model hertz tangential history rolling_friction cdt cohesion sjkr
+{material}pair_style gran model hertz tangential history rolling_friction cdt cohesion sjkr
 pair_coeff * *
 timestep 0.00004
 lattice sc 0.012
@@ -43,7 +38,9 @@ def heap(k):
     the heap in rings of width D about its axis, fitted with a line where it is above the first
     layer."""
     sim = Simulation(screen=False, log=None, dialect="liggghts")
-    sim.command(SCRIPT.format(k=k))
+    sim.command(SCRIPT.format(material=liggghts_material(
+        (1.e6, 1.e6), (0.3, 0.3), [0.3] * 4, [0.5] * 4, coefficientRollingFriction=[0.2] * 4,
+        cohesionEnergyDensity=[k] * 4)))
     x = sim.x
     r = np.hypot(x[:, 0] - x[:, 0].mean(), x[:, 1] - x[:, 1].mean())
     rings, tops = [], []

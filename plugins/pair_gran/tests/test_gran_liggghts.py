@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import liggghts_material
 
 SCRIPT = """atom_style granular
 atom_modify map array
@@ -19,13 +20,9 @@ region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
 create_box 2 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6 1.e7
-fix m2 all property/global poissonsRatio peratomtype 0.45 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.8 0.8 0.7
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.4 0.4 0.5
-fix m5 all property/global characteristicVelocity scalar 1.0
-fix m6 all property/global coefficientRollingFriction peratomtypepair 2 0.1 0.1 0.1 0.1
-fix m7 all property/global cohesionEnergyDensity peratomtypepair 2 3.e4 3.e4 3.e4 3.e4
+""" + liggghts_material((5.e6, 1.e7), (0.45, 0.3), (0.9, 0.8, 0.8, 0.7), (0.3, 0.4, 0.4, 0.5),
+                         characteristicVelocity=1.0, coefficientRollingFriction=[0.1] * 4,
+                         cohesionEnergyDensity=[3.e4] * 4) + """\
 pair_style gran model MODEL
 pair_coeff * *
 timestep 0.000001

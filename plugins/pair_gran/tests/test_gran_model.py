@@ -7,17 +7,15 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import assert_refused, liggghts_material
 
 RHO = 2500.0
 D = 0.01
 MASS = RHO * math.pi / 6.0 * D ** 3
 
 
-def material(e=0.5, mu=0.5, extra=""):
-    return (f"fix m1 all property/global youngsModulus peratomtype 5.e6\n"
-            f"fix m2 all property/global poissonsRatio peratomtype 0.45\n"
-            f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {e!r}\n"
-            f"fix m4 all property/global coefficientFriction peratomtypepair 1 {mu!r}\n" + extra)
+def material(e=0.5, mu=0.5, **more):
+    return liggghts_material(5.e6, 0.45, e, mu, **more)
 
 
 def two_spheres(pair, gap, speed, *, mat=None, dt=1e-6, extra="", style="gran", coeff=""):
@@ -69,7 +67,7 @@ def test_hertz_head_on_collision_rebounds_with_the_restitution_coefficient(e):
 def test_hooke_head_on_collision_rebounds_with_the_restitution_coefficient():
     """Hooke: a linear spring with damping sqrt(4 m* kn / (1 + pi^2/ln^2 e)) rebounds with e at any
     speed; kn from the characteristic velocity."""
-    mat = material(0.7, extra="fix m5 all property/global characteristicVelocity scalar 2.0\n")
+    mat = material(0.7, characteristicVelocity=2.0)
     sim = two_spheres("model hooke tangential history", 1e-4, 0.5, mat=mat, extra="fix integr all nve/sphere")
     sim.command("run 4000")
     v = sim.v[np.argsort(sim.tag)]
@@ -102,7 +100,7 @@ def test_hertz_normal_force_is_liggghts_formula(speed):
 def test_hooke_stiffness_from_the_characteristic_velocity():
     """kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5)."""
     delta, velocity = 2e-5, 2.0
-    mat = material(extra=f"fix m5 all property/global characteristicVelocity scalar {velocity}\n")
+    mat = material(characteristicVelocity=velocity)
     sim = two_spheres("model hooke tangential history", -delta / 2, 0.0, mat=mat)
     force, _ = setup_forces(sim)
     y_star, _, r_star, m_star = effective()
@@ -133,10 +131,7 @@ units si
 boundary f f f
 region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
 create_box 2 reg
-fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 2 0.1 0.3 0.3 0.7
+{liggghts_material((5.e6, 5.e6), (0.45, 0.45), [0.5] * 4, (0.1, 0.3, 0.3, 0.7))}
 pair_style gran model hertz tangential no_history
 pair_coeff * *
 create_atoms 1 single -0.00499 0 0 units box
@@ -182,9 +177,7 @@ def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
     characteristic velocity, hertz does not)."""
     style = "hooke" if "characteristicVelocity" in message else "hertz"
     script = SETUP + lines + f"pair_style gran model {style} tangential history\npair_coeff * *\nrun 0\n"
-    done = pdps_cli(script)
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:{script.count(chr(10))}: {message}"
+    assert_refused(pdps_cli(script), script.count(chr(10)), message)
 
 
 @pytest.mark.parametrize("line, message", [
@@ -195,9 +188,7 @@ def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
      "pair_style: limitForce must be one of 'on' or 'off' (got maybe)"),
 ])
 def test_bad_pair_style_lines(pdps_cli, line, message):
-    done = pdps_cli(SETUP + line + "\n")
-    assert done.returncode == 1
-    assert done.stderr.strip() == f"ERROR: in.test:6: {message}"
+    assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)
 
 
 def test_a_liggghts_script_says_so_on_its_first_line(pdps_cli):
@@ -213,7 +204,7 @@ def test_a_liggghts_script_says_so_on_its_first_line(pdps_cli):
 def test_cohesion_sjkr_pulls_with_k_times_the_intersection_area():
     """sjkr: F_n = hertz - k pi a^2, a the radius of the circle where the spheres intersect."""
     delta, k = 2e-5, 3.0e4
-    mat = material(extra=f"fix m5 all property/global cohesionEnergyDensity peratomtypepair 1 {k}\n")
+    mat = material(cohesionEnergyDensity=k)
     sim = two_spheres("model hertz tangential history cohesion sjkr", -delta / 2, 0.0, mat=mat)
     force, _ = setup_forces(sim)
     y_star, _, r_star, _ = effective()
@@ -228,7 +219,7 @@ def test_cdt_rolling_torque_opposes_the_relative_spin(spin):
     """Spheres spinning oppositely about z (their contact points move together: no sliding) feel
     the cdt torque mu_r k_n delta R* against omega_1 - omega_2: -M on 1, +M on 2."""
     delta, mu_r = 2e-5, 0.2
-    mat = material(extra=f"fix m5 all property/global coefficientRollingFriction peratomtypepair 1 {mu_r}\n")
+    mat = material(coefficientRollingFriction=mu_r)
     sim = two_spheres("model hertz tangential history rolling_friction cdt", -delta / 2, 0.0, mat=mat)
     p = sim.particles
     p.omega[p.index_of_tag(1)] = (0.0, 0.0, spin)
@@ -256,10 +247,7 @@ region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+""" + material() + """\
 pair_style gran model hertz tangential history
 pair_coeff * *
 timestep 0.001
