@@ -5,7 +5,9 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError
+from pydantic import model_validator
+
+from pdps_core.api import Fix, ScriptError, StyleArgs
 
 FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
 Face = Literal["xlo", "xhi", "ylo", "yhi", "zlo", "zhi"]
@@ -20,6 +22,19 @@ def once_each(walls):
             raise ValueError(f"wall {face} is given twice")
         given[face] = value
     return given
+
+
+class PotentialWallArgs(StyleArgs):
+    """What wall/harmonic and wall/lj93, wall/lj126 check of their ``wall`` entries (face coord
+    epsilon sigma cutoff ...): each face once, every cutoff > 0."""
+
+    @model_validator(mode="after")
+    def _walls(self):
+        for face, _, _, _, cutoff in self.wall:
+            if cutoff <= 0:
+                raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
+        once_each((face, coord) for face, coord, *_ in self.wall)
+        return self
 
 
 class PotentialWalls(Fix):

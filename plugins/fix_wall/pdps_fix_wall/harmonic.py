@@ -38,11 +38,10 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 from numba import njit
-from pydantic import model_validator
 
-from pdps_core.api import StyleArgs, keyword, param
+from pdps_core.api import keyword, param
 
-from .faces import Face, PotentialWalls, once_each, wall_planes
+from .faces import Face, PotentialWallArgs, PotentialWalls, wall_planes
 
 
 class Wall(NamedTuple):
@@ -90,17 +89,9 @@ class FixWallHarmonic(PotentialWalls):
     name = "wall/harmonic"
     usage = "fix ID GROUP wall/harmonic face coord epsilon sigma cutoff [face ...] [units box|lattice]"
 
-    class Args(StyleArgs):
+    class Args(PotentialWallArgs):
         wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy/area", "distance", "distance"))
         units: Literal["box", "lattice"] = keyword("lattice")
-
-        @model_validator(mode="after")
-        def _walls(self):
-            for face, _, _, _, cutoff in self.wall:
-                if cutoff <= 0:
-                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
-            once_each((face, coord) for face, coord, *_ in self.wall)
-            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -45,11 +45,10 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 from numba import njit
-from pydantic import model_validator
 
-from pdps_core.api import FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
+from pdps_core.api import FloatOrVariable, ScriptError, VariableRef, keyword, param
 
-from .faces import FACES, Face, PotentialWalls, once_each
+from .faces import FACES, Face, PotentialWallArgs, PotentialWalls
 
 
 class Wall(NamedTuple):
@@ -98,18 +97,10 @@ class WallLJ(PotentialWalls):
     """What wall/lj93 and wall/lj126 share: the walls, their coords, the tallies."""
     law = LJ93
 
-    class Args(StyleArgs):
+    class Args(PotentialWallArgs):
         wall: list[Wall] = param(min_length=1, unit=("1", "distance", "energy", "distance", "distance"))
         units: Literal["box", "lattice"] = keyword("lattice")
         pbc: Literal["yes", "no"] = keyword("no")
-
-        @model_validator(mode="after")
-        def _walls(self):
-            for face, _, _, _, cutoff in self.wall:
-                if cutoff <= 0:
-                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
-            once_each((face, coord) for face, coord, *_ in self.wall)
-            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
