@@ -42,7 +42,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, StyleArgs, keyword, param
 
-from .faces import Face, once_each, wall_planes
+from .faces import Face, check_walls, wall_planes
 
 
 class Wall(NamedTuple):
@@ -99,10 +99,7 @@ class FixWallHarmonic(Fix):
 
         @model_validator(mode="after")
         def _walls(self):
-            for face, _, _, _, cutoff in self.wall:
-                if cutoff <= 0:
-                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
-            once_each((face, coord) for face, coord, *_ in self.wall)
+            check_walls(self.wall)
             return self
 
     def __init__(self, sim, id, group, args):

@@ -49,7 +49,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
-from .faces import FACES, Face, once_each
+from .faces import FACES, Face, check_walls
 
 
 class Wall(NamedTuple):
@@ -108,10 +108,7 @@ class WallLJ(Fix):
 
         @model_validator(mode="after")
         def _walls(self):
-            for face, _, _, _, cutoff in self.wall:
-                if cutoff <= 0:
-                    raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
-            once_each((face, coord) for face, coord, *_ in self.wall)
+            check_walls(self.wall)
             return self
 
     def __init__(self, sim, id, group, args):
