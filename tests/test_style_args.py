@@ -164,7 +164,7 @@ NOT_YET_DECLARED = {
     ("fix", "move/mesh"), ("fix", "particledistribution/discrete"),
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
-    ("fix", "wall/mesh"), ("compute", "wall/gran/local"), ("analyze", "ave/space"), ("analyze", "ave/time"),
+    ("fix", "wall/mesh"), ("analyze", "ave/space"), ("analyze", "ave/time"),
     ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
 }
 

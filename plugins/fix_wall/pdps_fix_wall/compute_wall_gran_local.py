@@ -35,7 +35,7 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs
+from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
 
 from .wall_contact import LOG_COLUMNS
 from .wall_gran_model import FixWallGranModel
@@ -52,18 +52,13 @@ class ComputeWallGranLocal(Compute):
              "[delta] [wall FIX_ID]")
 
     class Args(StyleArgs):
-        words: list[str] = []
+        columns: list[str] = param([], names="column (" + "|".join(KEYWORDS) + ")")
+        wall: str | None = keyword(None)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        self.wall_id = None
-        if "wall" in words:
-            at = words.index("wall")
-            if at + 1 >= len(words):
-                raise ScriptError("wall needs a fix ID")
-            self.wall_id = words[at + 1]
-            words = words[:at] + words[at + 2:]
+        words = list(args.columns)
+        self.wall_id = args.wall
         for word in words:
             if word == "heatFlux":
                 raise ScriptError("heatFlux is not supported (no heat conduction with walls)")

@@ -13,6 +13,15 @@ FACES = ("xlo", "xhi", "ylo", "yhi", "zlo", "zhi")
 Face = Literal["xlo", "xhi", "ylo", "yhi", "zlo", "zhi"]
 
 
+def check_walls(walls):
+    """The entries ``face coord epsilon sigma cutoff`` of wall/harmonic and wall/lj*: each cutoff > 0,
+    each face once."""
+    for face, _, _, _, cutoff in walls:
+        if cutoff <= 0:
+            raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
+    once_each((face, coord) for face, coord, *_ in walls)
+
+
 def once_each(walls):
     """The walls ``[(face, coord), ...]`` as ``{face: coord}`` in the order given; a face given
     twice is an error."""
@@ -30,10 +39,7 @@ class PotentialWallArgs(StyleArgs):
 
     @model_validator(mode="after")
     def _walls(self):
-        for face, _, _, _, cutoff in self.wall:
-            if cutoff <= 0:
-                raise ValueError(f"wall {face}: cutoff must be > 0 (got {cutoff:g})")
-        once_each((face, coord) for face, coord, *_ in self.wall)
+        check_walls(self.wall)
         return self
 
 
