@@ -5,15 +5,9 @@ part, which is what LAMMPS's dpd single gives); the same on two ranks; and bad i
 import numpy as np
 import pytest
 
-from pdps_core.testing import assert_thermo_as_lammps, lammps_thermo, run_ranks, thermo_rows
+from pdps_core.testing import assert_thermo_as_lammps, lammps_thermo, lj_fcc, run_ranks, thermo_rows
 
-MELT = """units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 5 0 5 0 5
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+MELT = lj_fcc(5) + """mass 1 1.0
 velocity all create 3.0 87287 loop geom
 pair_style lj/cut 2.5
 pair_coeff 1 1 1.0 1.0 2.5
