@@ -19,7 +19,8 @@ What is here:
 - ``lj_fcc``: the opening lines of LAMMPS's Lennard-Jones melt scene (an fcc crystal in a box of
   N unit cells a side), which many LAMMPS-dialect tests and recorders start from.
 - ``liggghts_material``: the ``fix mN all property/global ...`` lines of a LIGGGHTS granular
-  material (Young's modulus, Poisson's ratio, restitution, friction and any other property).
+  material (Young's modulus, Poisson's ratio, restitution, friction and any other property);
+  ``liggghts_one_particle``: a LIGGGHTS script's opening with one particle in a box.
 - ``sphere_bed``: a data file of polydisperse spheres on a jittered lattice with random velocities
   (the granular styles' scene for same-answers-on-any-number-of-ranks tests).
 - ``make_box``: a silent Simulation with an empty block box, then the script lines given
@@ -126,12 +127,21 @@ def make_box(setup="", *, box="0 10 0 10 0 10", boundary="p p p", ntypes=1, part
     return sim
 
 
-def lj_fcc(cells, ntypes=1):
+def lj_fcc(cells, ntypes=1, *, density=0.8442, atom_style="atomic"):
     """The opening of LAMMPS's melt example (bench/in.lj) as script lines: units lj, atom_style atomic,
     an fcc lattice of reduced density 0.8442 filling a box of ``cells`` unit cells a side, created
-    with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet)."""
-    return (f"units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 {cells} 0 {cells} 0 {cells}\n"
-            f"create_box {ntypes} box\ncreate_atoms 1 box\n")
+    with ``ntypes`` particle types and a particle of type 1 on every site (no masses yet). Another
+    ``density`` or ``atom_style`` (molecular) changes those lines."""
+    return (f"units lj\natom_style {atom_style}\nlattice fcc {density}\n"
+            f"region box block 0 {cells} 0 {cells} 0 {cells}\ncreate_box {ntypes} box\ncreate_atoms 1 box\n")
+
+
+def liggghts_one_particle(ntypes=1):
+    """A LIGGGHTS script's opening in five lines: atom_style granular, SI units, a box from -1 to 1 m
+    of ``ntypes`` particle types and one particle of type 1 at its centre (the scene of the
+    bad-line tests of the granular styles)."""
+    return (f"atom_style granular\nunits si\nregion reg block -1 1 -1 1 -1 1 units box\ncreate_box {ntypes} reg\n"
+            "create_atoms 1 single 0 0 0 units box\n")
 
 
 _TYPE_PAIR_PROPERTIES = {"coefficientRestitution", "coefficientFriction", "coefficientRollingFriction",

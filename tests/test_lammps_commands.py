@@ -458,13 +458,17 @@ THERMO_COMPUTES_LAMMPS = [
 ]
 
 
-def test_thermo_computes_every_lammps_run_defines(pdps_cli):
-    done = pdps_cli(THERMO_COMPUTES, "-log", "none")
+def assert_two_rows_as_lammps(done, lammps_rows):
+    """A run's two thermo rows against LAMMPS's to 1e-11."""
     assert done.returncode == 0, done.stderr
     rows = thermo_rows(done.stdout)
     assert len(rows) == 2
-    for row, expected in zip(rows, THERMO_COMPUTES_LAMMPS):
+    for row, expected in zip(rows, lammps_rows):
         assert row == pytest.approx(expected, rel=1e-11)
+
+
+def test_thermo_computes_every_lammps_run_defines(pdps_cli):
+    assert_two_rows_as_lammps(pdps_cli(THERMO_COMPUTES, "-log", "none"), THERMO_COMPUTES_LAMMPS)
 
 
 REDUCE_ATOM_VARIABLES = lj_fcc(3, 2) + """mass 1 1.0
@@ -489,12 +493,7 @@ REDUCE_ATOM_VARIABLES_LAMMPS = [[0, 481.5, 12.5969714354, 4.45833333333, 6.29848
 
 
 def test_compute_reduce_of_atom_style_variables(pdps_cli):
-    done = pdps_cli(REDUCE_ATOM_VARIABLES, "-log", "none")
-    assert done.returncode == 0, done.stderr
-    rows = thermo_rows(done.stdout)
-    assert len(rows) == 2
-    for row, expected in zip(rows, REDUCE_ATOM_VARIABLES_LAMMPS):
-        assert row == pytest.approx(expected, rel=1e-11)
+    assert_two_rows_as_lammps(pdps_cli(REDUCE_ATOM_VARIABLES, "-log", "none"), REDUCE_ATOM_VARIABLES_LAMMPS)
 
 
 @pytest.mark.parametrize("line, message", [

@@ -189,18 +189,25 @@ def test_a_restart_written_on_2_ranks_continues_on_4_like_the_serial_run(tmp_pat
     assert thermo(continued.stdout) == thermo(serial.stdout)[-6:]
 
 
-def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
-    script = """
-        region box block 0 8 0 8 0 8
+def shardlow_liquid(height, n):
+    """n DPD particles (pair dpd/fdt, density 3) at random in an 8 x 8 x ``height`` box, integrated
+    with fix shardlow and nve."""
+    return f"""
+        region box block 0 8 0 8 0 {height}
         create_box 1 box
         mass 1 1
-        create_particle 1 random_no_overlap 1536 box 0.0 7
+        create_particle 1 random_no_overlap {n} box 0.0 7
         pair_style dpd/fdt 1.0 1.0 4321
         pair_coeff * * 25.0 4.5 1.0
         velocity all create 1.0 5 gaussian
         fix 1 all shardlow
         fix 2 all nve
         timestep 0.04
+    """
+
+
+def test_shardlow_sweeps_in_one_order_on_any_number_of_ranks(tmp_path):
+    script = shardlow_liquid(8, 1536) + """
         thermo 20
         thermo_style custom step temp press
         run 100
@@ -214,17 +221,7 @@ def test_shardlow_in_a_box_thinner_than_two_cutoffs_sweeps_alike_on_1_2_and_4_ra
     """Along z (1.5 cutoffs) many pairs meet through two periodic images, swept by the component of
     their separation a box length apart. Deciding by round-off in the others (which differs between
     ranks) parted 1 and 2 ranks by 1e-7 in the temperature at step 5 and 1e-3 at step 40."""
-    script = """
-        region box block 0 8 0 8 0 1.5
-        create_box 1 box
-        mass 1 1
-        create_particle 1 random_no_overlap 288 box 0.0 7
-        pair_style dpd/fdt 1.0 1.0 4321
-        pair_coeff * * 25.0 4.5 1.0
-        velocity all create 1.0 5 gaussian
-        fix 1 all shardlow
-        fix 2 all nve
-        timestep 0.04
+    script = shardlow_liquid(1.5, 288) + """
         thermo 5
         thermo_style custom step temp press
         thermo_modify format float %.15g

@@ -151,27 +151,20 @@ def drifting(make_sim):
     return make
 
 
-def test_check_yes_rebuilds_when_displacement_exceeds_half_skin(drifting):
+@pytest.mark.parametrize("line, builds, dangerous", [
     # 0.1 per step, half skin 0.15: the check fails at ago=1, passes at ago=2 -> every 2 steps
-    builds, dangerous = drifting("neigh_modify every 1 delay 0 check yes")
-    assert builds == 6
-    assert dangerous == 0
-
-
-def test_check_no_rebuilds_every_n_steps(drifting):
-    builds, _ = drifting("neigh_modify every 3 delay 0 check no")
-    assert builds == 4
-
-
-def test_delay_holds_rebuilds_back_and_counts_dangerous_ones(drifting):
+    ("neigh_modify every 1 delay 0 check yes", 6, 0),
     # the displacement allows a rebuild at ago=2, but delay 3 forces ago=3: each is "dangerous"
-    builds, dangerous = drifting("neigh_modify every 1 delay 3 check yes")
-    assert builds == 4
-    assert dangerous == 4
+    ("neigh_modify every 1 delay 3 check yes", 4, 4),
+], ids=["check yes rebuilds past half the skin", "delay holds rebuilds back, counted dangerous"])
+def test_check_and_delay(drifting, line, builds, dangerous):
+    assert drifting(line) == (builds, dangerous)
 
 
-def test_pdps_spelling_neighbor_modify(drifting):
-    builds, _ = drifting("neighbor_modify delay 0 every 3 check no")
+@pytest.mark.parametrize("line", ["neigh_modify every 3 delay 0 check no", "neighbor_modify delay 0 every 3 check no"],
+                         ids=["LAMMPS spelling", "pdps spelling"])
+def test_check_no_rebuilds_every_n_steps(drifting, line):
+    builds, _ = drifting(line)
     assert builds == 4
 
 

@@ -20,6 +20,7 @@ import pytest
 
 from pdps_core.api import Fix, ScriptError, Simulation, StyleArgs, observables, registry
 from pdps_core.state import restart as restart_files
+from pdps_core.testing import lj_fcc
 
 
 def silent():
@@ -530,13 +531,7 @@ def test_neigh_modify_exclude_survives_a_restart(tmp_path, exclude):
     the excluded pairs as before (it counted them until the exclusion was given again)."""
     path = tmp_path / "exclude.restart"
     writer = Simulation(screen=False, log=None, dialect="lammps")
-    writer.command(f"""
-        units lj
-        atom_style atomic
-        lattice fcc 0.8442
-        region box block 0 4 0 4 0 4
-        create_box 2 box
-        create_atoms 1 box
+    writer.command(lj_fcc(4, 2) + f"""
         set type 1 type/fraction 2 0.5 4321
         region lefthalf block INF 2 INF INF INF INF
         group left region lefthalf

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
+from pdps_core.testing import lj_fcc
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks" / "lammps_references"))
@@ -38,14 +39,7 @@ def test_thermo_keywords_as_lammps_prints_them(tmp_path, monkeypatch, case):
 # group only (LAMMPS's examples/crack does this). LAMMPS 22 Jul 2025 on this script, steps 0-100:
 # temp, pe, ke, etotal, press. ke and the kinetic part of press use the compute's degrees of freedom;
 # pdps counted every particle's (TotEng 0.15 % and Press 13 % off from step 0 in crack).
-SUBSET_TEMP = """
-units lj
-atom_style atomic
-lattice fcc 0.8442
-region box block 0 5 0 5 0 5
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+SUBSET_TEMP = lj_fcc(5) + """mass 1 1.0
 region lowr block INF INF INF INF INF 1.5
 group low region lowr
 group mobile subtract all low

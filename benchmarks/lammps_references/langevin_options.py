@@ -31,6 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
+from pdps_core.testing import lj_fcc
+
 from lammps_run import run_lammps, thermo_lines
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -62,13 +64,7 @@ run 0
 """
 
 # At T = 0 the thermostat is deterministic (friction, GJF's scaling, the tally): thermo to 15 digits
-EXACT = """units lj
-atom_style atomic
-lattice fcc 0.8
-region box block 0 4 0 4 0 4
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
+EXACT = lj_fcc(4, density=0.8) + """mass 1 1.0
 velocity all create 1.5 4928 dist gaussian
 pair_style lj/cut 2.5
 pair_coeff 1 1 1.0 1.0

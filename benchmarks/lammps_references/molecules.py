@@ -14,17 +14,13 @@ tests/data/lammps/molecules.data.
 import sys
 from pathlib import Path
 
+from pdps_core.testing import lj_fcc
+
 from lammps_run import run_lammps
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "data" / "lammps"
-SCRIPT = """units lj
-atom_style molecular
-lattice fcc 0.8442
-region box block 0 4 0 4 0 4
-create_box 2 box
-create_atoms 1 box
-mass * 1.0
+SCRIPT = lj_fcc(4, 2, atom_style="molecular") + """mass * 1.0
 variable m atom floor((id-1)/4)+1
 set group all mol v_m
 group low molecule <= 20

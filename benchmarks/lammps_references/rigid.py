@@ -248,9 +248,14 @@ def write_data(path):
             image = np.floor(point / LENGTH).astype(int)
             wrapped = point - image * LENGTH
             rows.append((tag, mol, wrapped, image, rng.normal(0.0, 0.5, size=3)))
-    lines = ["fix rigid reference scene: 8 LJ bodies (benchmarks/lammps_references/rigid.py)", "",
-             f"{len(rows)} atoms", "1 atom types", "",
-             f"0 {LENGTH} xlo xhi", f"0 {LENGTH} ylo yhi", f"0 {LENGTH} zlo zhi", "", "Masses", "", "1 1.0", "",
+    write_bodies(path, "fix rigid reference scene: 8 LJ bodies (benchmarks/lammps_references/rigid.py)", rows, LENGTH)
+
+
+def write_bodies(path, title, rows, length):
+    """A molecular data file in a cubic box of side ``length``, one type of mass 1: rows of (tag,
+    molecule, wrapped position, image, velocity), at full precision."""
+    lines = [title, "", f"{len(rows)} atoms", "1 atom types", "",
+             f"0 {length} xlo xhi", f"0 {length} ylo yhi", f"0 {length} zlo zhi", "", "Masses", "", "1 1.0", "",
              "Atoms # molecular", ""]
     lines += [f"{t} {m} 1 {x[0]:.17g} {x[1]:.17g} {x[2]:.17g} {i[0]} {i[1]} {i[2]}" for t, m, x, i, _ in rows]
     lines += ["", "Velocities", ""]

@@ -30,7 +30,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from lammps_run import run_lammps, thermo_lines, write_blocks  # noqa: E402
-from rigid import lj_bodies  # noqa: E402
+from rigid import lj_bodies, write_bodies  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_rigid" / "tests" / "data"
@@ -165,14 +165,8 @@ def write_data(path):
             tag += 1
             image = np.floor(point / LENGTH).astype(int)
             rows.append((tag, mol, point - image * LENGTH, image, rng.normal(0.0, 1.0, size=3)))
-    lines = [f"fix rigid/small reference scene: {len(placed)} LJ bodies (benchmarks/lammps_references/rigid_small.py)",
-             "", f"{len(rows)} atoms", "1 atom types", "",
-             f"0 {LENGTH} xlo xhi", f"0 {LENGTH} ylo yhi", f"0 {LENGTH} zlo zhi", "", "Masses", "", "1 1.0", "",
-             "Atoms # molecular", ""]
-    lines += [f"{t} {m} 1 {x[0]:.17g} {x[1]:.17g} {x[2]:.17g} {i[0]} {i[1]} {i[2]}" for t, m, x, i, _ in rows]
-    lines += ["", "Velocities", ""]
-    lines += [f"{t} {v[0]:.17g} {v[1]:.17g} {v[2]:.17g}" for t, _, _, _, v in rows]
-    path.write_text("\n".join(lines) + "\n")
+    write_bodies(path, f"fix rigid/small reference scene: {len(placed)} LJ bodies "
+                 "(benchmarks/lammps_references/rigid_small.py)", rows, LENGTH)
 
 
 def script(style, steps=10000):

@@ -43,14 +43,6 @@ def test_silent_when_the_time_step_is_fine(spheres):
     assert sim.fixes["ts"].vector(sim).tolist() == pytest.approx([0.02, 0.05, 2 * 100.0 * 0.001 / 0.3])
 
 
-def test_contact_time_stands_in_when_there_is_no_hertz_time(spheres):
-    sim = scene(spheres, "test/granular/limits 0 0 0.004", fix="check/timestep/gran 100 0.1 0.2")
-    sim.command("run 0")
-    assert sim.warnings == ["fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.2 of the "
-                            "contact time 0.004 (dt/t_rayleigh = n/a, dt/t_contact = 0.25, "
-                            "v_max*dt/skin = 0)"]
-
-
 def test_no_hertz_time_beside_a_rayleigh_time_leaves_that_ratio_out(spheres):
     sim = scene(spheres, "test/granular/limits 0.05 0 0.001")
     sim.command("run 100")
@@ -58,22 +50,27 @@ def test_no_hertz_time_beside_a_rayleigh_time_leaves_that_ratio_out(spheres):
     assert sim.fixes["ts"].ratios == pytest.approx((0.02, None, 0.0))
 
 
-def test_motion_beyond_the_skin_in_one_step_is_named_with_every_limit_passed(spheres):
-    sim = scene(spheres, "test/granular/limits 0.005 0.1 0.2")
-    sim.v[0] = [0.0, 400.0, 0.0]
-    sim.command("run 0")
-    assert sim.warnings == ["fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.1 of the "
-                            "Rayleigh time 0.005; particles move up to 0.4 per step, more than the skin "
-                            "0.3 (dt/t_rayleigh = 0.2, dt/t_hertz = 0.01, v_max*dt/skin = 1.333)"]
-
-
-def test_checks_every_nevery_steps(spheres):
-    # t_R = 0.1 / (1 + step): dt / t_R = 0.01 (1 + step) passes 0.1 from step 10, seen at step 12
-    sim = scene(spheres, "test/granular/limits 0.1 0 0.5 1.0", fix="check/timestep/gran 4 0.1 0.1")
-    sim.command("run 20")
-    assert sim.warnings == ["fix ts (check/timestep/gran) at step 12: time step 0.001 exceeds 0.1 of the "
-                            "Rayleigh time 0.007692 (dt/t_rayleigh = 0.13, dt/t_hertz = n/a, "
-                            "v_max*dt/skin = 0)"]
+@pytest.mark.parametrize("limits, fix, speed, steps, warning", [
+    # no Hertz time: the contact time stands in
+    ("test/granular/limits 0 0 0.004", "check/timestep/gran 100 0.1 0.2", 0.0, 0,
+     "fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.2 of the contact time 0.004 "
+     "(dt/t_rayleigh = n/a, dt/t_contact = 0.25, v_max*dt/skin = 0)"),
+    # motion beyond the skin in one step is named with every limit passed
+    ("test/granular/limits 0.005 0.1 0.2", "check/timestep/gran 100 0.1 0.1", 400.0, 0,
+     "fix ts (check/timestep/gran) at step 0: time step 0.001 exceeds 0.1 of the Rayleigh time 0.005; "
+     "particles move up to 0.4 per step, more than the skin 0.3 (dt/t_rayleigh = 0.2, dt/t_hertz = 0.01, "
+     "v_max*dt/skin = 1.333)"),
+    # every NEVERY steps: t_R = 0.1 / (1 + step), dt / t_R = 0.01 (1 + step) passes 0.1 from step 10,
+    # seen at step 12
+    ("test/granular/limits 0.1 0 0.5 1.0", "check/timestep/gran 4 0.1 0.1", 0.0, 20,
+     "fix ts (check/timestep/gran) at step 12: time step 0.001 exceeds 0.1 of the Rayleigh time 0.007692 "
+     "(dt/t_rayleigh = 0.13, dt/t_hertz = n/a, v_max*dt/skin = 0)"),
+], ids=["contact time without a hertz time", "motion beyond the skin", "checks every nevery steps"])
+def test_one_warning_names_the_limits_passed(spheres, limits, fix, speed, steps, warning):
+    sim = scene(spheres, limits, fix=fix)
+    sim.v[0] = [0.0, speed, 0.0]
+    sim.command(f"run {steps}")
+    assert sim.warnings == [warning]
 
 
 def test_a_pair_style_without_limits_is_reported_once(spheres):

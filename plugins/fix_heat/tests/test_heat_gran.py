@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import assert_refused, liggghts_material
+from pdps_core.testing import assert_refused, liggghts_material, liggghts_one_particle
 
 D1, D2, RHO = 0.01, 0.008, 2500.0
 K1, K2, C1, C2 = 5.0, 2.0, 10.0, 30.0
@@ -93,13 +93,7 @@ def test_particles_outside_the_group_keep_their_temperature():
     assert t2 == 300.0 and t1 < 400.0
 
 
-SETUP = """\
-atom_style granular
-units si
-region reg block -1 1 -1 1 -1 1 units box
-create_box 1 reg
-create_atoms 1 single 0 0 0 units box
-"""
+SETUP = liggghts_one_particle()
 
 
 @pytest.mark.parametrize("line, message", [

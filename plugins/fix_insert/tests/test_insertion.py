@@ -16,15 +16,23 @@ MATERIAL = "\n" + liggghts_material(5.e6, 0.45, 0.3, 0.5) + """\
     pair_coeff * *
 """
 
-PACK = """
+
+def spheres_of_radius(radius):
+    """A closed box of granular material (LIGGGHTS syntax) and the template of the spheres
+    to insert: radius ``radius``, density 2500 (fix pdd1)."""
+    return """
     atom_style granular
     boundary f f f
     region box block -0.06 0.06 -0.06 0.06 0 0.2 units box
     create_box 1 box
-""" + MATERIAL + """
+""" + MATERIAL + f"""
     timestep 0.00001
-    fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003
+    fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant {radius}
     fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+"""
+
+
+PACK = spheres_of_radius(0.003) + """
     region bc cylinder z 0.0 0.0 0.045 0.00 0.15 units box
     fix ins all insert/pack seed 32452843 distributiontemplate pdd1 insert_every once overlapcheck yes &
         all_in yes particles_in_region {n} region bc
@@ -87,15 +95,7 @@ def test_same_particles_and_ids_on_one_and_two_ranks(tmp_path):
     np.testing.assert_allclose(one[:, 1:], two[:, 1:], rtol=0, atol=1e-12)
 
 
-STREAM = """
-    atom_style granular
-    boundary f f f
-    region box block -0.06 0.06 -0.06 0.06 0 0.2 units box
-    create_box 1 box
-""" + MATERIAL + """
-    timestep 0.00001
-    fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002
-    fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+STREAM = spheres_of_radius(0.002) + """
     fix inface all mesh/surface file face.stl type 1
     fix ins all insert/stream seed 32452843 distributiontemplate pdd1 nparticles INF massrate 0.5 &
         overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02

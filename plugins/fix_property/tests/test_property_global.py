@@ -3,15 +3,9 @@
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import assert_refused
+from pdps_core.testing import assert_refused, liggghts_one_particle
 
-SETUP = """\
-atom_style granular
-units si
-region reg block -1 1 -1 1 -1 1 units box
-create_box 2 reg
-create_atoms 1 single 0 0 0 units box
-"""
+SETUP = liggghts_one_particle(2)
 
 
 @pytest.mark.parametrize("line, kind, values", [

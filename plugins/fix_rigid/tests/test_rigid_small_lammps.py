@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, thermo_rows
+from pdps_core.testing import lj_fcc, run_ranks, thermo_rows
 
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -120,13 +120,7 @@ def test_langevin_on_bodies_of_equal_moments_is_the_same_on_one_and_two_ranks(tm
     from sums taken in another order on 2 ranks: the rotational noise, a box-frame vector projected on
     the axes, gives the same torque whichever axes were picked, so 2 ranks run as one (with one draw
     per axis they parted by 5e-4 in the temperature ten steps into the second run)."""
-    text = """units lj
-atom_style molecular
-lattice fcc 0.5
-region box block 0 3 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-mass * 1.0
+    text = lj_fcc(3, density=0.5, atom_style="molecular") + """mass * 1.0
 variable m atom floor((id-1)/4)+1
 set group all mol v_m
 velocity all create 1.0 87287 loop geom

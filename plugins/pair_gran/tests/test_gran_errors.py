@@ -1,6 +1,7 @@
 """Bad pair_style and pair_coeff lines for the gran styles: one located line, exit code 1."""
 
 import pytest
+
 from pdps_core.testing import assert_refused
 
 SETUP = """\

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import assert_refused, liggghts_material
+from pdps_core.testing import assert_refused, liggghts_material, liggghts_one_particle
 
 RHO = 2500.0
 D = 0.01
@@ -143,13 +143,7 @@ set atom 1 vy 1.0
     assert abs(force[0, 1]) == pytest.approx(0.3 * abs(force[0, 0]), rel=1e-12)
 
 
-SETUP = """\
-atom_style granular
-units si
-region reg block -1 1 -1 1 -1 1 units box
-create_box 2 reg
-create_atoms 1 single 0 0 0 units box
-"""
+SETUP = liggghts_one_particle(2)
 FULL = """\
 fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
 fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
