@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from pdps_core.api import (ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues, registry)
+from pdps_core.api import ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues, registry
+from pdps_core.styles import IN_PROCESS
 
 ROOT = Path(__file__).parents[1]
 
@@ -24,9 +25,10 @@ METHOD_CAPABILITIES = {
 @pytest.mark.parametrize("capability", METHOD_CAPABILITIES, ids=lambda c: c.__name__)
 def test_the_styles_offering_a_capability_are_those_expected(capability):
     offering = set()
-    for kind in ("pair", "fix", "compute"):
-        for name in registry.names(kind):
-            cls = registry.lookup(kind, name)
+    # the installed styles: test modules register styles of their own in this process
+    for entry in registry.entries():
+        if entry.kind in ("pair", "fix", "compute") and entry.dist != IN_PROCESS and not entry.disabled:
+            kind, name, cls = entry.kind, entry.name, registry.load(entry)
             # a protocol with data members is checked on instances; its methods tell here
             methods = [m for m in capability.__dict__ if not m.startswith("_") and callable(capability.__dict__[m])]
             if all(callable(getattr(cls, m, None)) for m in methods):
@@ -35,9 +37,11 @@ def test_the_styles_offering_a_capability_are_those_expected(capability):
 
 
 def test_a_fix_holding_particles_and_computes_a_thermostat_reads_say_so():
-    assert [name for name in registry.names("fix") if registry.lookup("fix", name).holds_at_rest] == ["freeze"]
-    temperature = [n for n in registry.names("compute") if registry.lookup("compute", n).gives_temperature]
-    pressure = [n for n in registry.names("compute") if registry.lookup("compute", n).gives_pressure]
+    installed = [e for e in registry.entries() if e.dist != IN_PROCESS and not e.disabled]
+    flagged = {flag: [e.name for e in installed if getattr(registry.load(e), flag, False)]
+               for flag in ("holds_at_rest", "gives_temperature", "gives_pressure")}
+    assert flagged["holds_at_rest"] == ["freeze"]
+    temperature, pressure = flagged["gives_temperature"], flagged["gives_pressure"]
     assert (temperature, pressure) == (["temp"], ["pressure"])
 
 
