@@ -43,6 +43,8 @@ What is here:
 - ``lammps_thermo``, ``assert_thermo_as_lammps``: a LAMMPS-dialect script run in a folder with the
   files it reads, its thermo rows at full precision; those rows against LAMMPS's, recorded as
   tab-separated ``case step value...`` lines (every plugin's "thermo as LAMMPS prints it" test).
+- ``recorded_case``: a LAMMPS reference case (script, data file with spins) run with a test/record
+  fix; ``sphere_spins``: the spins of a sphere data file's Velocities section.
 - ``restart_round_trip``: run N+M steps in one go, and N, write_restart, read_restart, M; both
   final states are returned for comparison.
 - ``script_error``: the one-line error a script line is refused with (every style's "bad input is
@@ -444,6 +446,39 @@ def assert_thermo_as_lammps(mine, reference, what="", steps=(0, 25, 50, 75, 100)
     for got, want in zip(mine, reference):
         np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=rtol,
                                    atol=atol, err_msg=f"{what} step {got[0]}")
+
+
+def sphere_spins(data_text):
+    """{tag: (wx, wy, wz)} from the Velocities section of a sphere data file (pdps reads only vx vy vz
+    there, so a test sets the spins itself)."""
+    spins, inside = {}, False
+    for line in data_text.splitlines():
+        words = line.split()
+        if words[:1] == ["Velocities"]:
+            inside = True
+        elif inside and len(words) == 7:
+            spins[int(words[0])] = tuple(float(w) for w in words[4:7])
+    return spins
+
+
+def recorded_case(folder, name, tmp_path, replace=()):
+    """A LAMMPS reference case (folder/NAME.in reading NAME.data, its last line the run) run in pdps
+    with the spins of the data file and a test/record fix; returns the Record (x, v, omega... after
+    every step, in id order). ``replace``: (old, new) pairs applied to the script first (other
+    plugins' styles swapped for the kit's test styles)."""
+    script = (folder / f"{name}.in").read_text()
+    for old, new in replace:
+        script = script.replace(old, new)
+    data = (folder / f"{name}.data").read_text()
+    (tmp_path / f"{name}.data").write_text(data)
+    lines = script.rstrip().splitlines()
+    register_styles(Record)
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("\n".join(lines[:-1]).replace(f"read_data {name}.data", f"read_data {tmp_path / name}.data"))
+    for tag, spin in sphere_spins(data).items():
+        sim.particles.omega[sim.particles.index_of_tag(tag)] = spin
+    sim.command(f"fix record all test/record\n{lines[-1]}")
+    return sim.fixes["record"]
 
 
 def restart_round_trip(tmp_path, setup, first, second):

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import ConstantForce, Record, SphereVerlet, assert_refused, register_styles
+from pdps_core.testing import ConstantForce, Record, SphereVerlet, assert_refused, recorded_case, register_styles
 
 DATA = Path(__file__).parent / "data" / "wall_gran"
 STAND_INS = (("nve/sphere", "test/nve_sphere"), ("addforce", "test/force"))
@@ -30,33 +30,6 @@ def styles():
     register_styles(SphereVerlet, ConstantForce, Record)
 
 
-def spins_of(data_text):
-    """{tag: spin} from Velocities (pdps reads only vx vy vz there; the tests set the spins)."""
-    spins, inside = {}, False
-    for line in data_text.splitlines():
-        words = line.split()
-        if words[:1] == ["Velocities"]:
-            inside = True
-        elif inside and len(words) == 7:
-            spins[int(words[0])] = tuple(float(w) for w in words[4:7])
-    return spins
-
-
-def run_case(name, tmp_path):
-    script = (DATA / f"{name}.in").read_text()
-    for old, new in STAND_INS:
-        script = script.replace(old, new)
-    data = (DATA / f"{name}.data").read_text()
-    (tmp_path / f"{name}.data").write_text(data)
-    lines = script.rstrip().splitlines()
-    sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command("\n".join(lines[:-1]).replace(f"read_data {name}.data", f"read_data {tmp_path / name}.data"))
-    for tag, spin in spins_of(data).items():
-        sim.particles.omega[sim.particles.index_of_tag(tag)] = spin
-    sim.command(f"fix record all test/record\n{lines[-1]}")
-    return sim.fixes["record"]
-
-
 def reference(name):
     table = {}
     for line in (DATA / f"{name}.ref").read_text().splitlines():
@@ -69,7 +42,7 @@ def reference(name):
 @pytest.mark.parametrize("name", CASES)
 def test_trajectories_equal_lammps(tmp_path, name):
     """x, v, omega of every particle at every dumped step equal LAMMPS's to 1e-12 of their scale."""
-    record = run_case(name, tmp_path)
+    record = recorded_case(DATA, name, tmp_path, STAND_INS)
     table = reference(name)
     steps = sorted(s for s in table if s > 0)
     assert len(record.x) == steps[-1]

@@ -8,42 +8,9 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import Record, register_styles
+from pdps_core.testing import recorded_case
 
 DATA = Path(__file__).parent / "data"
-
-
-def spins_of(data_text):
-    """{tag: (wx, wy, wz)} from the Velocities section of a sphere data file (pdps reads only vx vy vz
-    there, so the tests set the spins themselves)."""
-    spins, inside = {}, False
-    for line in data_text.splitlines():
-        words = line.split()
-        if words[:1] == ["Velocities"]:
-            inside = True
-            continue
-        if inside and len(words) == 7:
-            spins[int(words[0])] = tuple(float(w) for w in words[4:7])
-    return spins
-
-
-def run_case(folder, name, tmp_path, replace=()):
-    """Run the case's script in pdps (read as LAMMPS) with a test/record fix; returns the Record:
-    positions, velocities, spins after every step, in id order. ``replace``: (old, new) pairs
-    applied to the script text (styles of other plugins swapped for the kit's test styles)."""
-    script = (folder / f"{name}.in").read_text()
-    for old, new in replace:
-        script = script.replace(old, new)
-    data = (folder / f"{name}.data").read_text()
-    (tmp_path / f"{name}.data").write_text(data)
-    lines = script.rstrip().splitlines()
-    register_styles(Record)
-    sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command("\n".join(lines[:-1]).replace(f"read_data {name}.data", f"read_data {tmp_path / name}.data"))
-    for tag, spin in spins_of(data).items():
-        sim.particles.omega[sim.particles.index_of_tag(tag)] = spin
-    sim.command(f"fix record all test/record\n{lines[-1]}")
-    return sim.fixes["record"]
 
 
 def reference(folder, name):
@@ -64,7 +31,7 @@ def compare_with_lammps(folder, name, tmp_path, replace=(), rtol=1e-12):
     """Every dumped step of LAMMPS against pdps's state after that step: x, v and omega of every
     particle to ``rtol`` of the quantity's scale (positions: the box, velocities and spins: their
     largest magnitude over the run)."""
-    record = run_case(folder, name, tmp_path, replace)
+    record = recorded_case(folder, name, tmp_path, replace)
     table = reference(folder, name)
     steps = sorted(step for step in table if step > 0)
     assert steps and len(record.x) == steps[-1]
