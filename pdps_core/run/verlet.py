@@ -168,51 +168,53 @@ class Verlet:
         self._call("post_neighbor")
 
     def _forces(self, eflag, vflag):
-        sim, particles = self.sim, self.sim.particles
-        sim.run_state.eflag, sim.run_state.vflag = bool(eflag), bool(vflag)
+        # the parts themselves, not the facade's names: this runs every step
+        sim = self.sim
+        particles, run, pair = sim.system.particles, sim.run_state, sim.styles.pair
+        run.eflag, run.vflag = bool(eflag), bool(vflag)
         # per-particle energies and virials only on steps that read energies or virials
-        sim.run_state.tally_atom = bool(self.tally_atom) and (sim.eflag or sim.vflag)
-        if sim.run_state.tally_atom:
+        run.tally_atom = bool(self.tally_atom) and (run.eflag or run.vflag)
+        if run.tally_atom:
             particles.arrays[TALLY][:] = 0.0
         arrays = particles.arrays
         _clear(arrays["f"])
         if "torque" in arrays:
             _clear(arrays["torque"])
         self._call("pre_force")
-        if sim.pair is not None:
+        if pair is not None:
             t0 = time.perf_counter()
-            sim.pair.energy = 0.0
-            full_list = sim.pair.neighbor_list != "half"
+            pair.energy = 0.0
+            full_list = pair.neighbor_list != "half"
             if vflag and full_list:
-                sim.pair.virial = None
-            sim.pair.compute(sim, sim.pair_list, eflag, vflag)
+                pair.virial = None
+            pair.compute(sim, sim.styles.pair_list, eflag, vflag)
             if vflag and full_list:
-                if sim.pair.virial is None:
-                    raise SimulationError(f"pair style {sim.pair.name} uses a full neighbor list and set no "
-                                          f"virial at step {sim.step} (a style on a full list tallies it: "
+                if pair.virial is None:
+                    raise SimulationError(f"pair style {pair.name} uses a full neighbor list and set no "
+                                          f"virial at step {run.step} (a style on a full list tallies it: "
                                           "Pair.virial)")
-                sim.virial[:] = sim.pair.virial
+                run.virial[:] = pair.virial
             elif vflag:
                 x, f = particles.x, particles.f
-                sim.virial[:] = (np.einsum("ij,ij->j", x, f).tolist()
+                run.virial[:] = (np.einsum("ij,ij->j", x, f).tolist()
                                  + [float(x[:, 0] @ f[:, 1]), float(x[:, 0] @ f[:, 2]),
                                     float(x[:, 1] @ f[:, 2])])
             sim.timers.stage["Pair"] += time.perf_counter() - t0
             self._call("pre_reverse")
             t0 = time.perf_counter()
-            sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if sim.run_state.tally_atom else ()))
+            sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if run.tally_atom else ()))
             sim.timers.stage["Comm"] += time.perf_counter() - t0
         else:
             self._call("pre_reverse")
             if vflag:
-                sim.virial[:] = 0.0
+                run.virial[:] = 0.0
         if eflag:
-            sim.run_state.pe = sim.run_state.evdwl = sim.pair.energy if sim.pair is not None else 0.0
-            sim.run_state.energy_step = sim.step
+            run.pe = run.evdwl = pair.energy if pair is not None else 0.0
+            run.energy_step = run.step
         if vflag:
-            sim.run_state.virial_step = sim.step
-        if sim.run_state.tally_atom:
-            sim.run_state.tally_step = sim.step
+            run.virial_step = run.step
+        if run.tally_atom:
+            run.tally_step = run.step
 
     def _fix_contributions(self, stage="post_force"):
         """Fix energies and virials, where switched on, join the pair's: after post_force, when the
@@ -271,12 +273,12 @@ class Verlet:
     # ---- steps ----------------------------------------------------------------------------------
     def run(self, nsteps):
         sim = self.sim
-        particles = sim.particles
-        last = sim.step + nsteps
+        particles, run, fixes = sim.particles, sim.run_state, sim.fixes
+        last = run.step + nsteps
         for _ in range(nsteps):
-            sim.run_state.step += 1
-            sim.run_state.time += sim.dt
-            step = sim.step
+            run.step += 1
+            run.time += run.dt
+            step = run.step
             eflag, vflag = sim.output.flags(step, last)
             new_skin = self._skin_trial(step)
             self._call("initial_integrate")
@@ -289,12 +291,12 @@ class Verlet:
                 limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a box changed since the last decision (barostat, deform) shifts every periodic image:
             # wrap and make the ghosts again with the new lengths (sim.change_box)
-            if sim.run_state.box_changed:
-                rebuild, sim.run_state.box_changed = True, False
+            if run.box_changed:
+                rebuild, run.box_changed = True, False
                 limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
             # a fix inserting or deleting particles asks for this step's rebuild (LAMMPS's
             # force_reneighbor / next_reneighbor); every rank's fixes agree on the step
-            if not rebuild and any(fix.next_reneighbor == step for fix in sim.fixes.values()):
+            if not rebuild and any(fix.next_reneighbor == step for fix in fixes.values()):
                 rebuild = True
             if rebuild:
                 self._check_runaway(step)
@@ -324,9 +326,9 @@ class Verlet:
             self._fix_contributions("final_integrate")
             self._call("end_of_step")
             sim.output.write(step, last)
-            if sim.run_state.restart_output is not None:
+            if run.restart_output is not None:
                 t0 = time.perf_counter()
-                sim.run_state.restart_output.write(sim, step)
+                run.restart_output.write(sim, step)
                 sim.timers.stage["Output"] += time.perf_counter() - t0
         sim.neighbor.mark_current(particles)
         self._call("post_run")

@@ -39,9 +39,9 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, keyword
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, load_history, pack_slots, store_history
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 
 HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
@@ -52,6 +52,39 @@ class GranArgs(lammps_classic.ClassicLaw):
     ``max_contacts N``."""
     limit_damping: Literal["limit_damping"] | None = None
     max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, le=1000, unit="dimensionless")
+
+
+@njit(cache=True)
+def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
+    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
+    When ``update`` the slots are made if new and marked as seen this step (a negative slot: no free
+    slot); in setup only an existing slot is read (-1 when there is none). The width, 3, is a
+    constant here: granular_contact's load_history, for any width, costs gran_box's pair loop 20 %."""
+    jo = owner[j] if owner[j] >= 0 else j
+    if not update:
+        slot = find_slot(partner, i, tag[j])
+        for d in range(3):
+            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
+        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
+    slot_i = open_slot(partner, history, i, tag[j], 3)
+    slot_j = open_slot(partner, history, jo, tag[i], 3)
+    if slot_i < 0 or slot_j < 0:
+        return slot_i, slot_j
+    touched[i, slot_i] = True
+    touched[jo, slot_j] = True
+    for d in range(3):
+        shear[d] = history[i, 3 * slot_i + d]
+    return slot_i, slot_j
+
+
+@njit(cache=True)
+def store_spring(history, owner, i, j, slot_i, slot_j, shear):
+    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
+    jo = owner[j] if owner[j] >= 0 else j
+    for d in range(3):
+        history[i, 3 * slot_i + d] = shear[d]
+        if slot_j >= 0:
+            history[jo, 3 * slot_j + d] = -shear[d]
 
 
 @njit(cache=True)
@@ -140,7 +173,7 @@ def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, ow
             m_eff = m_i
         slot_i, slot_j = -1, -1
         if with_history:
-            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, shear)
+            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
         r_eff = radi * radius[j] / radsum
@@ -148,7 +181,7 @@ def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, ow
                                             gamma_n, gamma_t, xmu, limit_damping, update, dt,
                                             shear, tangential)
         if with_history and slot_i >= 0:
-            store_history(history, owner, i, j, slot_i, slot_j, shear)
+            store_spring(history, owner, i, j, slot_i, slot_j, shear)
         cx = n[1] * tangential[2] - n[2] * tangential[1]
         cy = n[2] * tangential[0] - n[0] * tangential[2]
         cz = n[0] * tangential[1] - n[1] * tangential[0]
