@@ -42,8 +42,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import (HeldRows, Mirrors, contact_rows, load_history, pack_slots,
-                                                  store_history)
+from pdps_granular_contact.contact_slots import (HeldRows, Mirrors, contact_rows, load_spring, pack_slots,
+                                                  store_spring)
 
 HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
 DEFAULT_CONTACTS = 16
@@ -160,7 +160,7 @@ def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag
             m_i = contact_models.contact_mass(rmass, body_mass, i)
             m_j = contact_models.contact_mass(rmass, body_mass, j)
             m_star = m_i * m_j / (m_i + m_j)
-            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, shear)
+            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
             force[:] = 0.0
@@ -177,7 +177,7 @@ def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag
                                            law[3, ti, tj] + law[5, ti, tj] * damping, law[6, ti, tj],
                                            spring_dt, limit_damping, force)
             if update:
-                store_history(history, owner, i, j, slot_i, slot_j, shear)
+                store_spring(history, owner, i, j, slot_i, slot_j, shear)
             apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
             log_contact(log_pairs, log_force, logged, i, j, force)
     return -1

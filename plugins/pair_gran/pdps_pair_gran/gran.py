@@ -39,9 +39,9 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, find_slot, keyword, open_slot
+from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, load_spring, pack_slots, store_spring
 
 HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
@@ -52,39 +52,6 @@ class GranArgs(lammps_classic.ClassicLaw):
     ``max_contacts N``."""
     limit_damping: Literal["limit_damping"] | None = None
     max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, le=1000, unit="dimensionless")
-
-
-@njit(cache=True)
-def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
-    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
-    When ``update`` the slots are made if new and marked as seen this step (a negative slot: no free
-    slot); in setup only an existing slot is read (-1 when there is none). The width, 3, is a
-    constant here: granular_contact's load_history, for any width, costs gran_box's pair loop 20 %."""
-    jo = owner[j] if owner[j] >= 0 else j
-    if not update:
-        slot = find_slot(partner, i, tag[j])
-        for d in range(3):
-            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
-        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
-    slot_i = open_slot(partner, history, i, tag[j], 3)
-    slot_j = open_slot(partner, history, jo, tag[i], 3)
-    if slot_i < 0 or slot_j < 0:
-        return slot_i, slot_j
-    touched[i, slot_i] = True
-    touched[jo, slot_j] = True
-    for d in range(3):
-        shear[d] = history[i, 3 * slot_i + d]
-    return slot_i, slot_j
-
-
-@njit(cache=True)
-def store_spring(history, owner, i, j, slot_i, slot_j, shear):
-    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
-    jo = owner[j] if owner[j] >= 0 else j
-    for d in range(3):
-        history[i, 3 * slot_i + d] = shear[d]
-        if slot_j >= 0:
-            history[jo, 3 * slot_j + d] = -shear[d]
 
 
 @njit(cache=True)
