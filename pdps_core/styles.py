@@ -89,8 +89,9 @@ UNIT_KINDS = frozenset({
     "mass", "distance", "time", "energy", "velocity", "force", "torque", "temperature", "pressure",
     "dynamic viscosity", "charge", "dipole", "electric field", "density", "acceleration", "area",
     "volume", "angle", "degrees", "dimensionless", "timesteps", "particles", "1",
-    # the values of a property another style reads and gives the unit of (fix property/atom, /global)
-    "as the property"})
+    # the values of a property another style reads and gives the unit of (fix property/atom, /global),
+    # and the parameters of a formula the script writes (pair formula), in the units it needs
+    "as the property", "as the formula"})
 
 
 def _check_unit(unit):
@@ -198,6 +199,20 @@ def _first_words(annotation):
         if typing.get_origin(first) is typing.Literal:
             return tuple(str(word) for word in typing.get_args(first))
     return ()
+
+
+def _starting_words(annotation):
+    """The words a value of ``annotation`` can start with when they are declared (a ``Literal``, a
+    choice of tuples picked by their first word, a list of either), else ()."""
+    annotation = _bare(annotation)
+    if typing.get_origin(annotation) is list or _variadic(annotation):
+        return _starting_words(typing.get_args(annotation)[0])
+    if typing.get_origin(annotation) is typing.Literal:
+        return tuple(map(str, typing.get_args(annotation)))
+    if _is_union(annotation):
+        starts = [_starting_words(m) for m in typing.get_args(annotation) if m is not type(None)]
+        return tuple(w for words in starts for w in words) if all(starts) else ()
+    return _first_words(annotation)
 
 
 def describe_type(annotation):
@@ -444,12 +459,17 @@ def parse_args(model, words, usage="", refused=None):
         skipped = (not info.is_required() and i < len(words) and k + 1 < len(positional)
                    and typing.get_origin(choices) is typing.Literal
                    and words[i] not in map(str, typing.get_args(choices)))
-        if i >= len(words) or words[i] in keywords or skipped:
+        # a run of words ends at a keyword or at a word the next positional argument starts with
+        run = _arity(info.annotation) is None and k + 1 < len(positional)
+        following = _starting_words(positional[k + 1][1].annotation) if run else ()
+        stops = {**keywords, **dict.fromkeys(following)}
+        if i >= len(words) or words[i] in stops or skipped:
             if info.is_required():
+                got = f" (got {words[i]})" if i < len(words) else ""
                 hint = f"; usage: {usage}" if usage else ""
-                raise ScriptError(f"missing argument {name}{hint}")
+                raise ScriptError(f"missing argument {name}{got}{hint}")
             continue
-        values[name], i = _read(info.annotation, words, i, keywords, name)
+        values[name], i = _read(info.annotation, words, i, stops, name)
     while i < len(words):
         word = words[i]
         if word in refused:

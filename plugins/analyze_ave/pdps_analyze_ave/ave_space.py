@@ -57,19 +57,19 @@ Examples::
 """
 
 import math
+from typing import Annotated, Literal, NamedTuple
 
 import numpy as np
+from pydantic import Field
 
-from pdps_core.api import Analyze, Fix, ScriptError, check_bins, observables
+from pdps_core.api import Analyze, Fix, ScriptError, check_bins, keyword, observables, param
 
-from .schedule import Schedule, ScheduleArgs, keyword_pairs
+from .schedule import Schedule, ScheduleArgs
 
 AXES = ("x", "y", "z")
-ORIGINS = ("lower", "center", "upper")
 ATTRIBUTES = {"vx": ("v", 0), "vy": ("v", 1), "vz": ("v", 2),
               "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2)}
-VALUES = ("density/number", "density/mass", *ATTRIBUTES)
-KEYWORDS = ("file", "units")
+VALUES = ("density/number", "density/mass", "vx", "vy", "vz", "fx", "fy", "fz")
 
 
 def bin_layout(lo, hi, origin, delta):
@@ -89,43 +89,32 @@ def bin_layout(lo, hi, origin, delta):
     return first, max(1, int((last - first) / delta + 0.5))
 
 
+class Bins(NamedTuple):
+    """``DIM ORIGIN DELTA``: bins of width DELTA along DIM with a boundary at ORIGIN."""
+    dim: Literal["x", "y", "z"]
+    origin: Literal["lower", "center", "upper"] | float
+    delta: Annotated[float, Field(gt=0)]
+
+
+class AveSpaceArgs(ScheduleArgs):
+    bins: list[Bins] = param(min_length=1, max_length=3, unit=("1", "distance", "distance"))
+    values: list[Literal[VALUES]] = param(min_length=1)
+    file: str | None = keyword(None, names="file name")
+    units: Literal["box", "lattice"] | None = keyword(None)
+
+
 class AveSpace:
     """What analyze ave/space and fix ave/spatial share (all of it)."""
-    Args = ScheduleArgs
+    Args = AveSpaceArgs
     default_units = "box"
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.rest)
         self.axes, self.origins, self.deltas = [], [], []
-        i = 0
-        while i < len(words) and words[i] in AXES and len(self.axes) < 3:
-            if i + 3 > len(words):
-                raise ScriptError(f"bins along {words[i]} need ORIGIN and DELTA "
-                                  f"(e.g. {words[i]} center 1)")
-            axis, origin, delta = words[i:i + 3]
+        for axis, origin, delta in args.bins:
             self._add_axis(sim, axis, origin, delta)
-            i += 3
-        if not self.axes:
-            got = words[0] if words else "nothing"
-            raise ScriptError("expected bins as DIM ORIGIN DELTA (e.g. z center 1) after nfreq "
-                              f"(got {got})")
-        self.values = []
-        while i < len(words) and words[i] in VALUES:
-            self.values.append(words[i])
-            i += 1
-        if not self.values:
-            raise ScriptError(f"no values to average: give {', '.join(VALUES)}")
-        self.path, self.units = None, self.default_units
-        unknown = (lambda w: f"unknown value or keyword {w} (values: {', '.join(VALUES)}; "
-                   f"keywords: {', '.join(KEYWORDS)})")
-        for word, value in keyword_pairs(words[i:], KEYWORDS, unknown):
-            if word == "file":
-                self.path = value
-            elif value in ("box", "lattice"):
-                self.units = value
-            else:
-                raise ScriptError(f"units must be box or lattice (got {value})")
+        self.values = list(args.values)
+        self.path, self.units = args.file, args.units or self.default_units
         self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
         self.count_total = self.value_total = None
         self.average = None
@@ -139,23 +128,9 @@ class AveSpace:
             raise ScriptError(f"axis {axis} is binned twice")
         if d == 2 and sim.dimension == 2:
             raise ScriptError("cannot bin along z in a 2-d simulation")
-        if origin not in ORIGINS:
-            try:
-                origin = float(origin)
-                if not math.isfinite(origin):
-                    raise ValueError
-            except ValueError:
-                raise ScriptError("origin must be lower, center, upper or a coordinate "
-                                  f"(got {origin})") from None
-        try:
-            width = float(delta)
-        except ValueError:
-            width = float("nan")
-        if not (width > 0 and math.isfinite(width)):
-            raise ScriptError(f"bin width along {axis} must be a number > 0 (got {delta})")
         self.axes.append(d)
         self.origins.append(origin)
-        self.deltas.append(width)
+        self.deltas.append(delta)
 
     # ---- bins -------------------------------------------------------------------------------------
     def _scale(self, sim, d):

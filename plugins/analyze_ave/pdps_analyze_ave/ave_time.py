@@ -61,15 +61,15 @@ GROUP is not used (LAMMPS). Examples::
 """
 
 import re
+from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Analyze, Compute, Fix, ScriptError
+from pdps_core.api import Analyze, Compute, Fix, ScriptError, keyword, param
 
-from .schedule import Schedule, ScheduleArgs, keyword_pairs
+from .schedule import Schedule, ScheduleArgs
 
 REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((?:\[(?:\d+|\*)\])*)$")
-KEYWORDS = ("file", "mode")
 
 
 def provides(compute, kind):
@@ -93,32 +93,23 @@ class Value:
         return [f"{stem}[{k}]" for k in range(width)]
 
 
+VALUE_WORDS = "c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME"
+
+
+class AveTimeArgs(ScheduleArgs):
+    values: list[str] = param(min_length=1, names=VALUE_WORDS)
+    file: str | None = keyword(None, names="file name")
+    mode: Literal["scalar", "vector"] = keyword("scalar")
+
+
 class AveTime:
     """What analyze ave/time and fix ave/time share (all of it)."""
-    Args = ScheduleArgs
+    Args = AveTimeArgs
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.rest)
-        # values run up to the first word that names no compute, fix or variable (LAMMPS)
-        first_option = next((k for k, w in enumerate(words) if w[:2] not in ("c_", "v_", "f_")), len(words))
-        value_words, options = words[:first_option], words[first_option:]
-        if not value_words and options and options[0] not in KEYWORDS:
-            raise ScriptError("value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME "
-                              f"(got {options[0]})")
-        self.path, self.mode = None, "scalar"
-        for word, value in keyword_pairs(options, KEYWORDS,
-                                         lambda w: f"unknown keyword {w} (known: {', '.join(KEYWORDS)})"):
-            if word == "file":
-                self.path = value
-            elif value in ("scalar", "vector"):
-                self.mode = value
-            else:
-                raise ScriptError(f"mode must be scalar or vector (got {value})")
-        if not value_words:
-            raise ScriptError("no values to average: give c_ID, c_ID[i], c_ID[i][j] or v_NAME "
-                              f"after nfreq; usage: {self.usage}")
-        self.values = [self._value(sim, word) for word in value_words]
+        self.path, self.mode = args.file, args.mode
+        self.values = [self._value(sim, word) for word in args.values]
         self.many_rows = any(value.many_rows for value in self.values)
         if self.many_rows and not all(value.many_rows for value in self.values):
             single = next(v.word for v in self.values if not v.many_rows)
@@ -142,7 +133,7 @@ class AveTime:
     def _value(self, sim, word):
         match = REFERENCE.match(word)
         if not match:
-            raise ScriptError(f"value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got {word})")
+            raise ScriptError(f"value must be {VALUE_WORDS} (got {word})")
         prefix, ident, brackets = match.groups()
         indices = re.findall(r"\[(\d+|\*)\]", brackets)
         if prefix == "v":

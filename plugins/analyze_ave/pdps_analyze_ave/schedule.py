@@ -8,31 +8,16 @@ The start of a run samples if its step is due (a run starting at step 0 with NRE
 step 0), and a step already sampled at the end of one run is not sampled again by the next.
 """
 
-from pydantic import Field, model_validator
+from pydantic import model_validator
 
-from pdps_core.api import ScriptError, StyleArgs, param
-
-
-def keyword_pairs(words, known, unknown):
-    """The ``name value`` pairs that follow the values, in order; ``unknown(word)`` is the message
-    for a name not in ``known``."""
-    pairs = []
-    for k in range(0, len(words), 2):
-        word = words[k]
-        if word not in known:
-            raise ScriptError(unknown(word))
-        if k + 1 >= len(words):
-            raise ScriptError(f"keyword {word} needs a value")
-        pairs.append((word, words[k + 1]))
-    return pairs
+from pdps_core.api import StyleArgs, param
 
 
 class ScheduleArgs(StyleArgs):
-    """``NEVERY NREPEAT NFREQ`` then the style's own words, which it reads itself."""
+    """``NEVERY NREPEAT NFREQ``, which a style's own Args follow."""
     nevery: int = param(gt=0, unit="timesteps")
     nrepeat: int = param(gt=0, unit="dimensionless")
     nfreq: int = param(gt=0, unit="timesteps")
-    rest: list[str] = Field(default_factory=list)
 
     @model_validator(mode="after")
     def _windows_fit(self):

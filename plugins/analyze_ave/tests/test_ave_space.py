@@ -106,19 +106,21 @@ def test_fix_ave_spatial_bins_in_lattice_spacings_by_default(planes):
      "analyze: nrepeat * nevery must not exceed nfreq (got 6 * 1 = 6 > 5)"),
     ("analyze 1 all ave/space 0 1 5 z lower 1 density/number", "analyze: nevery must be > 0 (got 0)"),
     ("analyze 1 all ave/space 1 1 5 density/number",
-     "analyze: expected bins as DIM ORIGIN DELTA (e.g. z center 1) after nfreq (got density/number)"),
+     "analyze: missing argument bins (got density/number); usage: analyze ID GROUP ave/space NEVERY NREPEAT NFREQ "
+     "DIM ORIGIN DELTA [DIM ORIGIN DELTA]... value... [file NAME] [units box|lattice]"),
     ("analyze 1 all ave/space 1 1 5 z middle 1 density/number",
-     "analyze: origin must be lower, center, upper or a coordinate (got middle)"),
+     "analyze: bins z: origin must be lower|center|upper or a finite number (got middle)"),
     ("analyze 1 all ave/space 1 1 5 z lower 0 density/number",
-     "analyze: bin width along z must be a number > 0 (got 0)"),
+     "analyze: bins z: delta must be > 0 (got 0)"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 z upper 1 density/number", "analyze: axis z is binned twice"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 file x.txt",
-     "analyze: no values to average: give density/number, density/mass, vx, vy, vz, fx, fy, fz"),
+     "analyze: missing argument values (got file); usage: analyze ID GROUP ave/space NEVERY NREPEAT NFREQ "
+     "DIM ORIGIN DELTA [DIM ORIGIN DELTA]... value... [file NAME] [units box|lattice]"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 density/number temp",
-     "analyze: unknown value or keyword temp (values: density/number, density/mass, vx, vy, vz, fx, fy, fz; "
-     "keywords: file, units)"),
+     "analyze: values must be one of 'density/number', 'density/mass', 'vx', 'vy', 'vz', 'fx', 'fy' or 'fz' "
+     "(got temp)"),
     ("fix 1 all ave/spatial 1 1 5 z lower 1 density/number units reduced",
-     "fix: units must be box or lattice (got reduced)"),
+     "fix: units must be one of 'box' or 'lattice' (got reduced)"),
 ])
 def test_bad_input_is_one_line(planes, command, message):
     with pytest.raises(ScriptError) as error:

@@ -195,16 +195,17 @@ def test_fix_ave_time_prints_what_lammps_prints():
     ("analyze 1 all ave/time 2 6 10 v_s", "analyze: nrepeat * nevery must not exceed nfreq (got 6 * 2 = 12 > 10)"),
     ("fix 9 all ave/time 2 6 10 v_s", "fix: nrepeat * nevery must not exceed nfreq (got 6 * 2 = 12 > 10)"),
     ("analyze 1 all ave/time 1 1 10 file x.txt",
-     "analyze: no values to average: give c_ID, c_ID[i], c_ID[i][j] or v_NAME after nfreq; usage: "
+     "analyze: missing argument values (got file); usage: "
      "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"),
     ("analyze 1 all ave/time 1 1 10 c_nope", "analyze: compute nope is not defined (value c_nope)"),
     ("analyze 1 all ave/time 1 1 10 v_nope", "analyze: variable nope is not defined (value v_nope)"),
     ("analyze 1 all ave/time 1 1 10 temp", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got temp)"),
-    ("analyze 1 all ave/time 1 1 10 v_s every 2", "analyze: unknown keyword every (known: file, mode)"),
+    ("analyze 1 all ave/time 1 1 10 v_s every 2", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME "
+     "(got every)"),
     ("analyze 1 all ave/time 1 1 10 c_t[1 file x", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got c_t[1)"),
     ("analyze 1 all ave/time 1 1 10 f_nope", "analyze: fix nope is not defined (value f_nope)"),
-    ("analyze 1 all ave/time 1 1 10 v_s mode matrix", "analyze: mode must be scalar or vector (got matrix)"),
-    ("analyze 1 all ave/time 1 1 10 v_s file", "analyze: keyword file needs a value"),
+    ("analyze 1 all ave/time 1 1 10 v_s mode matrix", "analyze: mode must be one of 'scalar' or 'vector' (got matrix)"),
+    ("analyze 1 all ave/time 1 1 10 v_s file", "analyze: keyword file needs 1 value(s) (got 0)"),
     ("analyze 1 all ave/time 1 1 10 c_a v_s",
      "analyze: c_a is averaged as a block of rows and v_s as a single number: average them in two analyze commands"),
 ])

@@ -38,12 +38,12 @@ Example (Lennard-Jones, as ``lj/cut``)::
 import ast
 import hashlib
 import math
+from typing import NamedTuple
 
 import sympy
 from sympy.printing.pycode import PythonCodePrinter
-from pydantic import Field
 
-from pdps_core.api import PairLaw, ScriptError, StyleArgs, param
+from pdps_core.api import PairLaw, ScriptError, StyleArgs, keyword, param
 
 FUNCTIONS = {"exp": sympy.exp, "log": sympy.log, "sqrt": sympy.sqrt, "sin": sympy.sin,
              "cos": sympy.cos, "tan": sympy.tan, "sinh": sympy.sinh, "cosh": sympy.cosh,
@@ -180,34 +180,29 @@ _parsed = {}
 
 
 def parsed_formula(coeff):
-    """(expression, symbols, parameter names, {name: value}) of a pair_coeff's formula and words."""
-    key = (coeff.formula, tuple(coeff.values))
+    """(expression, symbols, parameter names, {name: value}) of a pair_coeff's formula and parameters."""
+    key = (coeff.formula, tuple(coeff.parameters))
     if key in _parsed:
         return _parsed[key]
-    pairs = coeff.values
-    if len(pairs) % 2:
-        raise ScriptError(f"parameters come as NAME VALUE pairs (got {' '.join(pairs)})")
     values = {}
-    for name, value in zip(pairs[::2], pairs[1::2]):
-        if not name.isidentifier() or (name in RESERVED and name != "cutoff"):
+    for name, value in coeff.parameters:
+        if not name.isidentifier() or name in RESERVED:
             raise ScriptError(f"{name!r} cannot name a parameter")
         if name in values:
             raise ScriptError(f"parameter {name} is given twice")
-        try:
-            number = float(value)
-        except ValueError:
-            number = math.nan
-        if not math.isfinite(number):
-            raise ScriptError(f"parameter {name} must be a finite number (got {value})")
-        if name == "cutoff" and number <= 0:
-            raise ScriptError(f"cutoff must be > 0 (got {value})")
-        values[name] = number
-    names = [n for n in values if n != "cutoff"]
+        values[name] = value
+    names = list(values)
     expression, symbols = parse_formula(coeff.formula, names)
     if not expression.has(symbols["r"]):
         raise ScriptError(f"formula {coeff.formula!r} does not depend on r: it has no force")
     _parsed[key] = (expression, symbols, names, values)
     return _parsed[key]
+
+
+class Parameter(NamedTuple):
+    """One ``NAME VALUE`` of a pair_coeff: a name the formula uses and its value."""
+    name: str
+    value: float
 
 
 class PairFormula(PairLaw):
@@ -219,8 +214,9 @@ class PairFormula(PairLaw):
         cutoff: float = param(gt=0, unit="distance")
 
     class Coeff(StyleArgs):
-        formula: str
-        values: list[str] = Field(default_factory=list)
+        formula: str = param()
+        parameters: list[Parameter] = param(default_factory=list, unit=("1", "as the formula"))
+        cutoff: float | None = keyword(None, gt=0, unit="distance")
 
     def parse_coeff(self, words):
         coeff = super().parse_coeff(words)
@@ -265,7 +261,7 @@ class PairFormula(PairLaw):
         expression, symbols, names, values = parsed_formula(coeff)
         key = (coeff.formula, tuple(names))
         compiled = self.compiled[key]
-        cutoff = values.get("cutoff", self.args.cutoff)
+        cutoff = coeff.cutoff if coeff.cutoff is not None else self.args.cutoff
         parameters = [values[n] for n in names]
         try:
             factors = compiled.factor_values(parameters)

@@ -60,8 +60,8 @@ def test_pair_energy_equals_the_formula(tmp_path):
     ('"r.real" a 1', "formula 'r.real': attribute is not allowed"),
     ('"eps*" eps 1', "cannot read formula 'eps*'"),
     ('"eps" eps 1', "formula 'eps' does not depend on r: it has no force"),
-    ('"eps/r" eps', "parameters come as NAME VALUE pairs (got eps)"),
-    ('"eps/r" eps nan', "parameter eps must be a finite number (got nan)"),
+    ('"eps/r" eps', "parameters eps needs value (got nothing)"),
+    ('"eps/r" eps nan', "parameters eps: value must be a finite number (got nan)"),
     ('"eps/r" eps 1 eps 2', "parameter eps is given twice"),
     ('"eps/r" eps 1 cutoff -2', "cutoff must be > 0 (got -2)"),
 ])
