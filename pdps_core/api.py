@@ -20,13 +20,13 @@ from .simulation import Simulation
 from .state import observables
 from .state.limits import check_bins, check_images
 from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
-                     StyleArgs, SurfaceContacts, VariableRef, keyword, param, parse_args, peratom_column,
+                     StyleArgs, StyleName, SurfaceContacts, VariableRef, keyword, param, parse_args, peratom_column,
                      registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
-           "Simulation", "SimulationError", "StyleArgs", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
+           "Simulation", "SimulationError", "StyleArgs", "StyleName", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
            "type_range", "yes_no"]

@@ -26,7 +26,7 @@ from packaging.specifiers import InvalidSpecifier, SpecifierSet
 from packaging.utils import canonicalize_name
 from packaging.version import Version
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, field_validator
-from pydantic_core import PydanticCustomError
+from pydantic_core import PydanticCustomError, core_schema
 
 from .errors import ScriptError
 from .state import limits
@@ -54,6 +54,33 @@ def _number_or_variable(word):
 # A float argument that may also be given as v_NAME (an equal-style variable evaluated when read),
 # as LAMMPS's fix addforce, setforce and the like allow.
 FloatOrVariable = typing.Annotated[float | VariableRef, BeforeValidator(_number_or_variable)]
+
+
+class StyleName:
+    """``Annotated[str, StyleName("pair")]``: a word naming an installed style of a kind. As the first
+    member of a run's entry (``tuple[Annotated[str, StyleName("pair")], tuple[str, ...]]``) it opens
+    a section that takes the words up to the next style name: pair hybrid's sub-styles, each with
+    the words its own ``parse`` reads."""
+
+    def __init__(self, kind):
+        self.kind = kind
+
+    def names(self):
+        return tuple(registry.names(self.kind))
+
+    def __get_pydantic_core_schema__(self, source, handler):
+        def installed(word):
+            if word not in self.names():
+                raise PydanticCustomError("style_name", f"must name an installed {self.kind} style")
+            return word
+        return core_schema.no_info_after_validator_function(installed, handler(source))
+
+
+def _style_name(annotation):
+    """The StyleName an ``Annotated`` member carries, or None."""
+    if typing.get_origin(annotation) is typing.Annotated:
+        return next((m for m in annotation.__metadata__ if isinstance(m, StyleName)), None)
+    return None
 
 
 class StyleArgs(BaseModel):
@@ -192,9 +219,13 @@ def _variadic(annotation):
 
 
 def _first_words(annotation):
-    """The words a ``tuple[Literal[...], ...]`` must start with (how a union picks it), else ()."""
+    """The words a ``tuple[Literal[...], ...]`` (or a tuple opened by a StyleName) must start with
+    (how a union picks it), else ()."""
     annotation = _bare(annotation)
     if typing.get_origin(annotation) is tuple and not _variadic(annotation):
+        named = _style_name(typing.get_args(annotation)[0])
+        if named is not None:
+            return named.names()
         first = _bare(typing.get_args(annotation)[0])
         if typing.get_origin(first) is typing.Literal:
             return tuple(str(word) for word in typing.get_args(first))
@@ -217,6 +248,8 @@ def _starting_words(annotation):
 
 def describe_type(annotation):
     """How a script writes a value of ``annotation``: "number", "vector X Y Z | chute ANGLE", ..."""
+    if _style_name(annotation) is not None:
+        return f"{_style_name(annotation).kind.upper()}-STYLE"
     if member_names(annotation):
         return " ".join(member_names(annotation))
     annotation = _bare(annotation)
@@ -274,6 +307,8 @@ def _read(annotation, words, i, stops, name):
         size = _arity(entry)
         if typing.get_origin(_bare(entry)) is tuple and size is not None and size > 1:
             return _entries(entry, words, i, end, name, stops), end
+        if size is None and _first_words(entry):
+            return _sections(entry, words, i, end, name), end
         value = words[i:end]
         return (list(value) if typing.get_origin(annotation) is list else tuple(value)), end
     if typing.get_origin(annotation) is tuple:
@@ -317,6 +352,22 @@ def _entries(entry, words, i, end, name, stops=()):
             raise ScriptError(f"{name} {taken[0]} needs {rest} (got {' '.join(taken[1:]) or 'nothing'})")
         run.append(tuple(taken))
         i += size
+    return run
+
+
+def _sections(entry, words, i, end, name):
+    """A run of ``entry`` tuples each opened by one of its first words and taking the words up to
+    the next one (pair hybrid's ``STYLE ARGS... STYLE ARGS...``)."""
+    first, run = set(_first_words(entry)), []
+    if words[i] not in first:
+        named = _style_name(typing.get_args(_bare(entry))[0])
+        what = f"the name of a {named.kind} style" if named else f"one of {', '.join(_first_words(entry))}"
+        raise ScriptError(f"{name} must start with {what} (got {words[i]})")
+    while i < end:
+        k = next((j for j in range(i + 1, end) if words[j] in first), end)
+        value, _ = _read(entry, words[:k], i, (), name)
+        run.append(value)
+        i = k
     return run
 
 

@@ -3,11 +3,11 @@ picks how many values follow, counted lists, placeholders, repeated keywords), t
 and the ``pdps.api`` word readers."""
 
 import typing
-from typing import Literal
+from typing import Annotated, Literal
 
 import pytest
 
-from pdps_core.api import (FloatOrVariable, ScriptError, StyleArgs, VariableRef, choice, integer, keyword, number,
+from pdps_core.api import (FloatOrVariable, ScriptError, StyleArgs, StyleName, VariableRef, choice, integer, keyword, number,
                            param, parse_args, registry, yes_no)
 from pdps_core.styledoc import document, models, names_of, unit_of
 from pdps_core.styles import IN_PROCESS, KINDS, StyleEntry, member_names
@@ -139,6 +139,17 @@ def test_a_run_ends_where_the_next_argument_starts():
         parse_args(Profile, "z 0 1 vx temp".split())
 
 
+class Hybrid(StyleArgs):
+    substyles: list[tuple[Annotated[str, StyleName("pair")], tuple[str, ...]]] = param(min_length=1, names="style, args")
+
+
+def test_a_style_name_opens_a_section_up_to_the_next_one():
+    assert parse_args(Hybrid, "lj/cut 2.5 soft 1.12 table linear 100".split()).substyles == [
+        ("lj/cut", ("2.5",)), ("soft", ("1.12",)), ("table", ("linear", "100"))]
+    with pytest.raises(ScriptError, match=r"^substyles must start with the name of a pair style \(got 2.5\)$"):
+        parse_args(Hybrid, "2.5 lj/cut".split())
+
+
 # ---- every style of the registry declares its arguments ------------------------------------------
 def _numeric(annotation):
     """Whether a value of ``annotation`` holds a number anywhere (a tuple member, a union member)."""
@@ -172,7 +183,6 @@ def _hand_parsed(cls):
 
 # styles still reading raw words: each must fail the check below, so that one converted leaves the list
 NOT_YET_DECLARED = {
-    ("pair", "hybrid"), ("pair", "hybrid/overlay"),
     ("fix", "deform"),
     ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
     ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"),

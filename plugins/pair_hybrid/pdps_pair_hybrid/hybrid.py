@@ -34,15 +34,21 @@ a style with its own loop (the granular ones) is refused by name. A style may ap
 """
 
 import inspect
+from typing import Annotated, NamedTuple
 
 import numpy as np
 
-from pdps_core.api import Pair, PairLaw, ScriptError, StyleArgs, registry
+from pdps_core.api import Pair, PairLaw, ScriptError, StyleArgs, StyleName, param, registry
+
+
+class SubStyle(NamedTuple):
+    """One sub-style of the pair_style line: its name and the words its own ``parse`` reads."""
+    style: Annotated[str, StyleName("pair")]
+    args: tuple[str, ...]
 
 
 class SubStyles(StyleArgs):
-    """The parsed pair_style line: [(style name, its words)]."""
-    entries: list[tuple[str, list[str]]]
+    substyles: list[SubStyle] = param(min_length=1, names="pair style, then its own arguments")
 
 
 class PairHybrid(Pair):
@@ -54,34 +60,25 @@ class PairHybrid(Pair):
     Args = SubStyles
 
     @classmethod
-    def parse(cls, words):
-        known = set(registry.names("pair")) - {"hybrid", "hybrid/overlay"}
-        if not words or words[0] not in known:
-            got = words[0] if words else "nothing"
-            raise ScriptError(f"expected a pair style after {cls.name} (got {got}); usage: {cls.usage}")
-        entries = []
-        for word in words:
-            if word in known:
-                if any(name == word for name, _ in entries):
-                    raise ScriptError(f"pair style {word} appears twice in pair_style {cls.name}; "
-                                      "pdps takes each sub-style once")
-                entries.append((word, []))
-            elif word in ("hybrid", "hybrid/overlay"):
-                raise ScriptError(f"pair style {word} cannot be a sub-style of {cls.name}")
-            else:
-                entries[-1][1].append(word)
-        return SubStyles(entries=entries)
+    def check_args(cls, args):
+        names = [name for name, _ in args.substyles]
+        for k, name in enumerate(names):
+            if name in ("hybrid", "hybrid/overlay"):
+                raise ScriptError(f"pair style {name} cannot be a sub-style of {cls.name}")
+            if name in names[:k]:
+                raise ScriptError(f"pair style {name} appears twice in pair_style {cls.name}; "
+                                  "pdps takes each sub-style once")
 
     def __init__(self, sim, args):
         super().__init__(sim, args)
         self.styles = {}
-        for name, words in args.entries:
+        for name, words in args.substyles:
             cls = registry.lookup("pair", name)
             if not issubclass(cls, PairLaw) or cls.neighbor_list != "half" \
                     or "pairs" not in inspect.signature(cls.init).parameters:
                 raise ScriptError(f"pair style {name} cannot be a sub-style of {self.name}: it is not a force law "
                                   "over a half list")
-            self.styles[name] = cls(sim, cls.parse(words))
+            self.styles[name] = cls(sim, cls.parse(list(words)))
         subs = list(self.styles.values())
         self.per_atom = tuple(dict.fromkeys(entry for s in subs for entry in s.per_atom))
         self.ghost_velocity = any(s.ghost_velocity for s in subs)

@@ -63,7 +63,7 @@ BAD = {
                   "pair_coeff 2 2 lj/cut 1 1\npair_coeff 2 2 soft 1\nrun 0",
                   "pair coefficients are not set for types 1 2: only a pair whose types each have the same one "
                   "sub-style is mixed (give pair_coeff 1 2 STYLE ... or none)"),
-    "no style": ("pair_style hybrid 2.5", "expected a pair style after hybrid (got 2.5)"),
+    "no style": ("pair_style hybrid 2.5", "substyles must start with the name of a pair style (got 2.5)"),
     "twice": ("pair_style hybrid lj/cut 2.5 lj/cut 3.0", "pair style lj/cut appears twice in pair_style hybrid"),
     "own loop": ("pair_style hybrid gran/hooke 200000 NULL 50 NULL 0.5 0",
                  "pair style gran/hooke cannot be a sub-style of hybrid: it is not a force law over a half list"),
