@@ -516,7 +516,7 @@ def parse_args(model, words, usage="", refused=None):
         stops = {**keywords, **dict.fromkeys(following)}
         if i >= len(words) or words[i] in stops or skipped:
             if info.is_required():
-                got = f" (got {words[i]})" if i < len(words) else ""
+                got = f" (got {words[i]})" if i < len(words) and words[i] not in keywords else ""
                 hint = f"; usage: {usage}" if usage else ""
                 raise ScriptError(f"missing argument {name}{got}{hint}")
             continue

@@ -369,13 +369,13 @@ def mpiexec():
     return str(candidate) if candidate.exists() else shutil.which("mpiexec")
 
 
-def run_ranks(script, nprocs, cwd, *, name="in.test", timeout=600):
-    """Run ``script`` (text) with ``mpiexec -n nprocs pdps run``; returns the CompletedProcess.
-    Fails the test with the stderr when the run fails."""
+def run_ranks(script, nprocs, cwd, *, name="in.test", timeout=600, log="none", dialect=None):
+    """Run ``script`` (text) with ``mpiexec -n nprocs pdps run`` (its log to ``log``: a thermo CSV
+    beside it); returns the CompletedProcess. Fails the test with the stderr when the run fails."""
     cwd = Path(cwd)
     (cwd / name).write_text(textwrap.dedent(script))
     command = [mpiexec(), "-n", str(nprocs), sys.executable, "-m", "pdps_core.cli", "run", name,
-               "-log", "none", "--no-progress"]
+               "-log", log, "--no-progress"] + (["--dialect", dialect] if dialect else [])
     done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=timeout)
     if done.returncode != 0:
         pytest.fail(f"mpiexec -n {nprocs} pdps run {name} failed: {done.stderr.strip()}")

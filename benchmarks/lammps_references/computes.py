@@ -14,7 +14,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from lammps_run import run_lammps, thermo_lines
+from lammps_run import run_lammps, thermo_lines, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
@@ -51,13 +51,19 @@ def script():
         f"dump d all custom 100 step*.dump {COLUMNS}\ndump_modify d sort id format float %.17g\nrun 100\n"
 
 
+def write_tables():
+    write_case_table(DATA / "computes.cases.json", __file__, "computes_thermo.txt", ["fluid.data"],
+                     {"computes": script()}, ranks=("computes",))
+
+
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     shutil.copy(SOURCE, DATA / "fluid.data")
     log = run_lammps(lmp, script(), [SOURCE], outputs={f"step{step}.dump": DATA / f"computes_step{step}.dump"
                                                        for step in (0, 100)})
-    rows = ["\t".join(words) for words in thermo_lines(log)]
+    rows = ["computes\t" + "\t".join(words) for words in thermo_lines(log)]
     (DATA / "computes_thermo.txt").write_text("\n".join(rows) + "\n")
+    write_tables()
     print("\n".join(rows))
 
 

@@ -13,7 +13,7 @@ plugins/fix_simple/tests/data/fixes.txt.
 import sys
 from pathlib import Path
 
-from lammps_run import run_lammps, thermo_lines
+from lammps_run import run_lammps, thermo_lines, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_simple" / "tests" / "data"
@@ -32,12 +32,21 @@ SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj
          "pair_coeff 2 2 0.5 1.2", "fix 1 all nve", "timestep 0.002"]
 
 
+def script(case):
+    return "\n".join(SETUP + [CASES[case], "thermo 25", "thermo_style custom step temp pe press",
+                              "thermo_modify format float %.15g", "run 100", ""])
+
+
+def write_tables():
+    write_case_table(DATA / "fixes.cases.json", __file__, "fixes.txt", ["fluid.data"],
+                     {case: script(case) for case in CASES}, ranks=("momentum",),
+                     restart=("rescale", "berendsen", "viscous"))
+
+
 def main(lmp):
     rows = []
-    for case, lines in CASES.items():
-        script = "\n".join(SETUP + [lines, "thermo 25", "thermo_style custom step temp pe press",
-                                    "thermo_modify format float %.15g", "run 100", ""])
-        log = run_lammps(lmp, script, [DATA / "fluid.data"], case)
+    for case in CASES:
+        log = run_lammps(lmp, script(case), [DATA / "fluid.data"], case)
         # fix print's lines, from the whole log: the first step's comes before the thermo header
         printed = [line.split()[1:] for line in log.splitlines() if line.startswith("PRINTED")]
         for words in thermo_lines(log):
@@ -47,6 +56,7 @@ def main(lmp):
                 rows.append(f"{case}\tprint\t" + "\t".join(printed.pop(0)))
             rows.append(f"{case}\t" + "\t".join(words))
     (DATA / "fixes.txt").write_text("\n".join(rows) + "\n")
+    write_tables()
     print("\n".join(rows))
 
 

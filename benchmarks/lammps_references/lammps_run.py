@@ -1,6 +1,7 @@
 """What the reference recorders share: run LAMMPS on a script in a temporary folder (its log, or its
 screen), and read the thermo table of its log."""
 
+import json
 import shutil
 import subprocess
 import sys
@@ -98,3 +99,20 @@ def read_blocks(path):
         else:
             tables[name].append([float(w) for w in line.split()])
     return {name: np.array(rows) for name, rows in tables.items()}
+
+
+def write_case_table(path, recorder, reference, files, scripts, *, rtol=1e-9, atol=1e-12, ranks=(), restart=()):
+    """Write the table tests/test_recorded_thermo.py runs: for each case of ``scripts`` {case: script
+    as LAMMPS ran it}, the script and the files it reads (names in the table's folder), the rows file
+    ``reference`` (beside the table) holding LAMMPS's thermo, and what else the case must satisfy:
+    ``ranks`` the cases that must print the same thermo on 2 ranks, ``restart`` those whose run must
+    go on from a restart file written half-way as it goes on in the same process. Tolerances are the table's;
+    ``recorder``: the recording module's ``__file__``."""
+    cases = {case: {"script": script, "ranks": case in ranks, "restart": case in restart}
+             for case, script in scripts.items()}
+    unknown = (set(ranks) | set(restart)) - set(cases)
+    if unknown:
+        sys.exit(f"{path}: no case named {sorted(unknown)[0]}")
+    table = {"recorded_by": f"benchmarks/lammps_references/{Path(recorder).name}", "reference": reference,
+             "files": [Path(name).name for name in files], "rtol": rtol, "atol": atol, "cases": cases}
+    Path(path).write_text(json.dumps(table, indent=1) + "\n")

@@ -23,7 +23,7 @@ import random
 import sys
 from pathlib import Path
 
-from lammps_run import run_lammps, thermo_table
+from lammps_run import run_lammps, thermo_table, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_nh" / "tests" / "data"
@@ -177,10 +177,29 @@ def wall_data():
     return text.replace("200 atoms", f"{len(kept)} atoms")
 
 
+def as_run(text):
+    """The script as LAMMPS runs it: thermo printed to 15 digits."""
+    return text.replace("run 100", "thermo_modify format float %.15g\nrun 100") + "\n"
+
+
 def thermo_lines(lmp, text, files, label):
     """LAMMPS's first five thermo lines of ``text`` (15 digits, tab-separated), run with ``files``."""
-    text = text.replace("run 100", "thermo_modify format float %.15g\nrun 100") + "\n"
-    return ["\t".join(words) for words in thermo_table(run_lammps(lmp, text, files, label))[1][:5]]
+    return ["\t".join(words) for words in thermo_table(run_lammps(lmp, as_run(text), files, label))[1][:5]]
+
+
+def write_tables():
+    tolerance = {"rtol": 1e-8, "atol": 1e-10}
+    write_case_table(DATA / "nh.cases.json", __file__, "nh.txt", ["fluid.data"],
+                     {case: as_run(script(case)) for case in CASES}, ranks=("npt_aniso",),
+                     restart=("nvt", "npt_aniso", "nph_iso"), **tolerance)
+    write_case_table(DATA / "ecouple.cases.json", __file__, "ecouple.txt", ["fluid.data"],
+                     {case: as_run(script(case, ECOUPLE_THERMO)) for case in ECOUPLE_CASES}, **tolerance)
+    write_case_table(WALL_DATA / "wall_lj.cases.json", __file__, "wall_lj.txt", ["walls.data"],
+                     {case: as_run(wall_script(case)) for case in WALL_CASES}, ranks=("lj93",),
+                     restart=("harmonic",), **tolerance)
+    write_case_table(DATA / "nh_options.cases.json", __file__, "nh_options.txt", ["fluid.data", "plane.data"],
+                     {case: as_run(option_script(case)) for case in OPTION_CASES},
+                     ranks=("npt_modify_temp_press", "deform_variable"), **tolerance)
 
 
 def main(lmp):
@@ -199,6 +218,7 @@ def main(lmp):
     option_rows = [f"{case}\t{line}" for case in OPTION_CASES
                    for line in thermo_lines(lmp, option_script(case), [fluid, DATA / "plane.data"], case)]
     (DATA / "nh_options.txt").write_text("\n".join(option_rows) + "\n")
+    write_tables()
     print("\n".join(rows + wall_rows + option_rows))
 
 

@@ -12,7 +12,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from lammps_run import record_cases
+from lammps_run import record_cases, write_case_table
 from pair_styles import nve_script
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -38,11 +38,18 @@ CASES = {
 }
 
 
+def write_tables():
+    write_case_table(DATA / "hybrid.cases.json", __file__, "hybrid.txt", ["fluid.data", "pots.table"],
+                     {case: nve_script(lines) for case, lines in CASES.items()},
+                     ranks=("overlay",), restart=("hybrid", "overlay_dpd"))
+
+
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     for source in SOURCES:
         shutil.copy(source, DATA / source.name)
     record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()}, SOURCES, DATA / "hybrid.txt")
+    write_tables()
 
 
 if __name__ == "__main__":

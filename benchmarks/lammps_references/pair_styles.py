@@ -17,7 +17,7 @@ import numpy as np
 
 from pdps_core.testing import fluid, write_data
 
-from lammps_run import record_cases
+from lammps_run import record_cases, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "pair_simple" / "tests" / "data"
@@ -50,11 +50,18 @@ def nve_script(pair_lines):
                       "thermo_modify format float %.15g", "run 100", ""])
 
 
+def write_tables():
+    write_case_table(DATA / "pair_styles.cases.json", __file__, "pair_styles.txt", ["fluid.data"],
+                     {case: nve_script(lines) for case, lines in CASES.items()},
+                     ranks=("morse",), restart=("yukawa", "lj_arithmetic_shift"))
+
+
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     write_fluid(DATA / "fluid.data")
     record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()}, [DATA / "fluid.data"],
                  DATA / "pair_styles.txt")
+    write_tables()
 
 
 if __name__ == "__main__":

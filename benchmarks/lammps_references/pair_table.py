@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from lammps_run import record_cases
+from lammps_run import record_cases, write_case_table
 from pair_styles import nve_script, write_fluid
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -66,12 +66,18 @@ def tables():
     (DATA / "pots.table").write_text(text)
 
 
+def write_tables():
+    write_case_table(DATA / "pair_table.cases.json", __file__, "pair_table.txt", ["fluid.data", "pots.table"],
+                     {case: nve_script(lines) for case, lines in CASES.items()}, restart=("linear_r",))
+
+
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     write_fluid(DATA / "fluid.data")
     tables()
     record_cases(lmp, {case: nve_script(lines) for case, lines in CASES.items()},
                  [DATA / "fluid.data", DATA / "pots.table"], DATA / "pair_table.txt")
+    write_tables()
 
 
 if __name__ == "__main__":

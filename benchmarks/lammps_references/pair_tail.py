@@ -12,7 +12,7 @@ minimize of the "tail" case reports (initial, next-to-last, final) to tail_minim
 import sys
 from pathlib import Path
 
-from lammps_run import record_cases, run_lammps
+from lammps_run import record_cases, run_lammps, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "plugins" / "pair_simple" / "tests" / "data" / "fluid.data"
@@ -34,10 +34,16 @@ def script(case):
                       "thermo_modify format float %.15g", "run 100", ""])
 
 
+def write_tables():
+    write_case_table(DATA / "tail.cases.json", __file__, "tail.txt", ["fluid.data"],
+                     {case: script(case) for case in CASES}, ranks=("tail",), restart=("tail_arithmetic",))
+
+
 def main(lmp):
     DATA.mkdir(parents=True, exist_ok=True)
     (DATA / "fluid.data").write_bytes(SOURCE.read_bytes())
     record_cases(lmp, {case: script(case) for case in CASES}, [SOURCE], DATA / "tail.txt")
+    write_tables()
     lines = run_lammps(lmp, MINIMIZE, [SOURCE], "minimize").splitlines()
     energies = lines[next(k for k, line in enumerate(lines) if "Energy initial" in line) + 1]
     (DATA / "tail_minimize.txt").write_text(" ".join(energies.split()) + "\n")

@@ -114,7 +114,7 @@ def test_fix_ave_spatial_bins_in_lattice_spacings_by_default(planes):
      "analyze: bins z: delta must be > 0 (got 0)"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 z upper 1 density/number", "analyze: axis z is binned twice"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 file x.txt",
-     "analyze: missing argument values (got file); usage: analyze ID GROUP ave/space NEVERY NREPEAT NFREQ "
+     "analyze: missing argument values; usage: analyze ID GROUP ave/space NEVERY NREPEAT NFREQ "
      "DIM ORIGIN DELTA [DIM ORIGIN DELTA]... value... [file NAME] [units box|lattice]"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 density/number temp",
      "analyze: values must be one of 'density/number', 'density/mass', 'vx', 'vy', 'vz', 'fx', 'fy' or 'fz' "

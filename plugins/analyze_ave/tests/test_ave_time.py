@@ -195,7 +195,7 @@ def test_fix_ave_time_prints_what_lammps_prints():
     ("analyze 1 all ave/time 2 6 10 v_s", "analyze: nrepeat * nevery must not exceed nfreq (got 6 * 2 = 12 > 10)"),
     ("fix 9 all ave/time 2 6 10 v_s", "fix: nrepeat * nevery must not exceed nfreq (got 6 * 2 = 12 > 10)"),
     ("analyze 1 all ave/time 1 1 10 file x.txt",
-     "analyze: missing argument values (got file); usage: "
+     "analyze: missing argument values; usage: "
      "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"),
     ("analyze 1 all ave/time 1 1 10 c_nope", "analyze: compute nope is not defined (value c_nope)"),
     ("analyze 1 all ave/time 1 1 10 v_nope", "analyze: variable nope is not defined (value v_nope)"),

@@ -1,7 +1,10 @@
 """Computes pe, pe/atom, stress/atom, ke/atom and vacf give LAMMPS's numbers on a 200-particle
 two-type Lennard-Jones fluid: thermo every 25 steps of a 100-step NVE run to 1e-9, per-particle
 values at steps 0 and 100 to 1e-12 (data/, recorded with LAMMPS by
-benchmarks/lammps_references/computes.py); the per-particle values add up to the global ones."""
+benchmarks/lammps_references/computes.py); the per-particle values add up to the global ones.
+
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/computes.cases.json; this file holds the rest."""
 
 import shutil
 import sys
@@ -11,7 +14,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import assert_thermo_as_lammps, build, by_tag, lammps_rows, script_error
+from pdps_core.testing import build, by_tag, script_error
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -50,12 +53,6 @@ def run(tmp_path_factory):
         sim.close()
     rows = [line.split(",") for line in (folder / "log.case.csv").read_text().splitlines()[1:]]
     return first, last, rows
-
-
-def test_thermo_as_lammps_prints_it(run):
-    _, _, rows = run
-    # run 0, then run 100 (which prints step 0 again): LAMMPS's one run 100
-    assert_thermo_as_lammps(rows[1:], lammps_rows(DATA / "computes_thermo.txt"))
 
 
 @pytest.mark.parametrize("step", [0, 100])

@@ -4,7 +4,11 @@ benchmarks/lammps_references/nh.py): thermostat chains, iso/aniso/x-y-z barostat
 sub-cycles, ramps, dilate and fixedpoint as LAMMPS integrates them; deform's six styles with remap
 x, v and none, and deform beside a barostat. data/nh_options.txt likewise for ptemp, disc, flip,
 fix_modify temp and press (in both orders), deform volume (its three cases), wiggle and variable,
-and 2-d barostats on a 144-particle fluid (data/plane.data)."""
+and 2-d barostats on a 144-particle fluid (data/plane.data).
+
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/nh.cases.json, data/nh_options.cases.json and
+data/ecouple.cases.json; this file holds the rest."""
 
 import shutil
 import sys
@@ -14,47 +18,17 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation, observables
-from pdps_core.testing import (assert_thermo_as_lammps, by_tag, lammps_rows, lammps_thermo, restart_round_trip,
-                               run_ranks, script_error, thermo_rows, total_energy)
+from pdps_core.testing import by_tag, lammps_thermo, restart_round_trip, script_error, total_energy
 
 DATA = Path(__file__).parent / "data"
-ROWS = [line.split("\t") for line in (DATA / "nh.txt").read_text().splitlines()]
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from nh import CASES, ECOUPLE_CASES, ECOUPLE_THERMO, OPTION_CASES, option_script, script  # noqa: E402
+from nh import script  # noqa: E402
 
 BOX = "region box block 0 5 0 5 0 5\ncreate_box 1 box\nmass 1 1"
-COUPLED = [line.split("\t") for line in (DATA / "ecouple.txt").read_text().splitlines()]
-OPTIONS = [line.split("\t") for line in (DATA / "nh_options.txt").read_text().splitlines()]
 
 
 def run_case(tmp_path, monkeypatch, case):
     return lammps_thermo(tmp_path, monkeypatch, script(case), ["fluid.data"], DATA)
-
-
-@pytest.mark.parametrize("case", [c for c in CASES if c.startswith(("nvt", "npt", "nph", "deform"))])
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = run_case(tmp_path, monkeypatch, case)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "nh.txt", case), case, rtol=1e-8, atol=1e-10)
-
-
-@pytest.mark.parametrize("case", list(OPTION_CASES))
-def test_later_keywords_give_lammps_thermo(tmp_path, monkeypatch, case):
-    """ptemp (the barostat's mass from that temperature), disc and flip (no effect on these fixes),
-    fix_modify temp (a group's temperature drives the thermostat and the pressure) and press (a
-    pressure compute whose own temperature LAMMPS reuses within a step), deform volume, wiggle and
-    variable (with remap x and v, lattice units), and 2-d barostats: LAMMPS's thermo to 1e-8."""
-    for name in ("fluid.data", "plane.data"):
-        shutil.copy(DATA / name, tmp_path / name)
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(option_script(case))
-    sim.close()
-    mine = [line.split(",") for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    reference = [row[1:] for row in OPTIONS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [int(r[0]) for r in reference] == [0, 25, 50, 75, 100]
-    for got, want in zip(mine, reference):
-        np.testing.assert_allclose([float(v) for v in got[1:]], [float(v) for v in want[1:]], rtol=1e-8,
-                                   atol=1e-10, err_msg=f"{case} step {got[0]}")
 
 
 def fluid(tmp_path, monkeypatch, lines):
@@ -109,32 +83,6 @@ def test_fix_modify_temp_points_the_pressure_compute_at_it(tmp_path, monkeypatch
     sim.command("run 0")
     expected = observables.pressure(sim, observables.temperature(sim, "light"), "light")
     assert sim.compute_value("p") == pytest.approx(expected, rel=1e-14)
-
-
-def test_two_ranks_give_the_serial_thermo(tmp_path):
-    """npt aniso (box lengths changing every step, particles migrating between sub-domains) on 2
-    ranks prints the thermo LAMMPS prints on one, to round-off."""
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    done = run_ranks(script("npt_aniso").replace(
-        "run 100", "processors 2 1 1\nthermo_modify format float %.15g\nrun 100"), 2, tmp_path)
-    mine = thermo_rows(done.stdout)
-    reference = [[float(v) for v in row[1:]] for row in ROWS if row[0] == "npt_aniso"]
-    assert [int(r[0]) for r in mine] == [0, 25, 50, 75, 100]
-    np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)
-
-
-@pytest.mark.parametrize("case", ["npt_modify_temp_press", "deform_variable"])
-def test_two_ranks_give_the_serial_thermo_of_later_keywords(tmp_path, case):
-    """A pressure compute with its own (reused) temperature of one group and the fix's of another,
-    and a box length from variables with a volume axis and remap v, on 2 ranks: LAMMPS's serial
-    thermo to round-off."""
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    done = run_ranks(option_script(case).replace(
-        "run 100", "processors 2 1 1\nthermo_modify format float %.15g\nrun 100"), 2, tmp_path)
-    mine = thermo_rows(done.stdout)
-    reference = [[float(v) for v in row[1:]] for row in OPTIONS if row[0] == case]
-    assert [int(r[0]) for r in mine] == [0, 25, 50, 75, 100]
-    np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)
 
 
 CONSERVE = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5",
@@ -305,16 +253,3 @@ def test_a_restart_goes_on_as_the_run_would(tmp_path, fix):
     np.testing.assert_allclose(by_tag(resumed, resumed.x), by_tag(straight, straight.x), rtol=1e-10, atol=1e-10)
     np.testing.assert_allclose(by_tag(resumed, resumed.v), by_tag(straight, straight.v), rtol=1e-10, atol=1e-10)
 
-
-@pytest.mark.parametrize("case", ECOUPLE_CASES)
-def test_ecouple_and_econserve_as_lammps_prints_them(tmp_path, monkeypatch, case):
-    """Thermo ecouple (the fix's scalar f_ID: chain, barostat and P V terms) and econserve = etotal +
-    ecouple, per particle in lj units as LAMMPS prints them (data/ecouple.txt)."""
-    shutil.copy(DATA / "fluid.data", tmp_path / "fluid.data")
-    monkeypatch.chdir(tmp_path)
-    sim = Simulation(screen=False, log="log.case", dialect="lammps")
-    sim.command(script(case, ECOUPLE_THERMO))
-    sim.close()
-    mine = [[float(v) for v in line.split(",")] for line in (tmp_path / "log.case.csv").read_text().splitlines()[1:]]
-    reference = [[float(v) for v in row[1:]] for row in COUPLED if row[0] == case]
-    np.testing.assert_allclose(mine, reference, rtol=1e-8, atol=1e-10)

@@ -1,25 +1,16 @@
 """Fixes wall/lj93, wall/lj126 and wall/harmonic give LAMMPS's thermo (temp, pe with the walls'
 energy, press with their virial, the walls' energy f_ID and the force on each wall f_ID[k]) over 100
 steps of a fluid between z walls (data/wall_lj.txt, recorded with LAMMPS by benchmarks/lammps_references/nh.py);
-the force is minus the energy's derivative; bad input gets one line."""
+the force is minus the energy's derivative; bad input gets one line.
 
-import sys
-from pathlib import Path
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/wall_lj.cases.json; this file holds the rest."""
 
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import assert_thermo_as_lammps, lammps_rows, lammps_thermo, script_error, total_energy
+from pdps_core.testing import script_error, total_energy
 
-DATA = Path(__file__).parent / "data"
-sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from nh import WALL_CASES, wall_script  # noqa: E402
-
-
-@pytest.mark.parametrize("case", sorted(WALL_CASES))
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, wall_script(case), ["walls.data"], DATA)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "wall_lj.txt", case), case, rtol=1e-8, atol=1e-10)
 
 
 @pytest.mark.parametrize("style", ["wall/lj93", "wall/lj126"])

@@ -1,26 +1,19 @@
 """pair_style hybrid and hybrid/overlay give LAMMPS's thermo, step for step, on a 200-particle
 two-type fluid (data/hybrid.txt, recorded with LAMMPS by benchmarks/lammps_references/pair_hybrid.py);
-a hybrid of one style is that style; overlaid styles add; bad assignments get one line."""
+a hybrid of one style is that style; overlaid styles add; bad assignments get one line.
 
-import sys
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/hybrid.cases.json; this file holds the rest."""
+
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, observables
-from pdps_core.testing import assert_thermo_as_lammps, forces_by_tag, lammps_rows, lammps_thermo, two_type_cluster
+from pdps_core.testing import forces_by_tag, two_type_cluster
 
 DATA = Path(__file__).parent / "data"
-sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from pair_hybrid import CASES  # noqa: E402  (the recorder's cases, run as they are)
-from pair_styles import nve_script  # noqa: E402
-
-
-@pytest.mark.parametrize("case", sorted(CASES))
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "hybrid.txt", case), case)
 
 
 def _state(tmp_path, setup):

@@ -1,6 +1,9 @@
 """lj/cut with ``pair_modify tail yes`` gives LAMMPS's thermo (pe and press with the long-range
 corrections) step for step on a 200-particle two-type fluid (data/tail.txt, recorded with LAMMPS by
-benchmarks/lammps_references/pair_tail.py); the corrections are the formula's."""
+benchmarks/lammps_references/pair_tail.py); the corrections are the formula's.
+
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/tail.cases.json; this file holds the rest."""
 
 import math
 import shutil
@@ -10,7 +13,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, observables
-from pdps_core.testing import assert_thermo_as_lammps, build, lammps_rows, lammps_thermo
+from pdps_core.testing import build
 
 DATA = Path(__file__).parent / "data"
 CASES = {
@@ -18,14 +21,6 @@ CASES = {
     "tail_arithmetic": "pair_style lj/cut 2.2\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.2\n"
                        "pair_coeff 1 2 0.8 1.05 2.6\npair_modify mix arithmetic tail yes",
 }
-
-
-@pytest.mark.parametrize("case", sorted(CASES))
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, f"units lj\natom_style atomic\nread_data fluid.data\n"
-                            f"{CASES[case]}\nfix 1 all nve\ntimestep 0.002\nthermo 25\n"
-                            "thermo_style custom step temp pe press evdwl etail\nrun 100", ["fluid.data"], DATA)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "tail.txt", case), case)
 
 
 def test_the_corrections_are_the_formula(tmp_path):

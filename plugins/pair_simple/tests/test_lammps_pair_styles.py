@@ -1,6 +1,9 @@
 """Pair styles soft, morse, yukawa, zero and lj/cut's mixing rules give LAMMPS's thermo, step for step,
 on a 200-particle two-type fluid (data/pair_styles.txt, recorded with LAMMPS by
-benchmarks/lammps_references/pair_styles.py), and their forces are minus the gradient of their energy."""
+benchmarks/lammps_references/pair_styles.py), and their forces are minus the gradient of their energy.
+
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/pair_styles.cases.json; this file holds the rest."""
 
 import math
 import sys
@@ -9,18 +12,11 @@ from pathlib import Path
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
-                               lammps_rows, lammps_thermo, two_type_cluster)
+from pdps_core.testing import assert_force_is_minus_gradient, build, forces_by_tag, two_type_cluster
 
 DATA = Path(__file__).parent / "data"
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from pair_styles import CASES, nve_script  # noqa: E402
-
-
-@pytest.mark.parametrize("case", sorted(CASES))
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data"], DATA)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_styles.txt", case), case)
+from pair_styles import CASES  # noqa: E402
 
 
 @pytest.mark.parametrize("case", ["soft", "morse", "yukawa"])

@@ -1,29 +1,21 @@
 """pair_style table gives LAMMPS's thermo, step for step, on a 200-particle two-type fluid with
 Lennard-Jones and Morse tables in each file form (data/pair_table.txt, recorded with LAMMPS by
 benchmarks/lammps_references/pair_table.py); its forces are minus the gradient of its energy; bad
-table files get one line naming the file, the line and the fault."""
+table files get one line naming the file, the line and the fault.
+
+The thermo against LAMMPS's (with 2 ranks and restarts for the cases marked so) is checked by
+tests/test_recorded_thermo.py from data/pair_table.cases.json; this file holds the rest."""
 
 import math
 import shutil
-import sys
 from pathlib import Path
 
 import pytest
 
 from pdps_core.api import ScriptError, Simulation, SimulationError
-from pdps_core.testing import (assert_force_is_minus_gradient, assert_thermo_as_lammps, build, forces_by_tag,
-                               lammps_rows, lammps_thermo, script_error, two_type_cluster)
+from pdps_core.testing import assert_force_is_minus_gradient, build, forces_by_tag, script_error, two_type_cluster
 
 DATA = Path(__file__).parent / "data"
-sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
-from pair_styles import nve_script  # noqa: E402
-from pair_table import CASES  # noqa: E402
-
-
-@pytest.mark.parametrize("case", sorted(CASES))
-def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, case):
-    _, mine = lammps_thermo(tmp_path, monkeypatch, nve_script(CASES[case]), ["fluid.data", "pots.table"], DATA)
-    assert_thermo_as_lammps(mine, lammps_rows(DATA / "pair_table.txt", case), case)
 
 
 def _tables(tmp_path):

@@ -1,0 +1,96 @@
+"""The one driver for what every style recorded against LAMMPS must satisfy, as LAMMPS's own
+unittest/force-styles YAML files do: each ``plugins/*/tests/data/*.cases.json`` table, written by a
+recorder of benchmarks/lammps_references beside the thermo LAMMPS printed for its cases, holds each
+case's script (as LAMMPS ran it) and the files it reads. For every case, pdps prints LAMMPS's thermo
+step for step to the table's tolerance; the cases marked ``ranks`` print it on 2 ranks too; the
+cases marked ``restart`` go on from a restart file written half-way as the run goes on in the
+same process (``run N/2`` twice: a second run is not the middle of one, for LAMMPS as for pdps:
+fixes ramp over a run, and a run's setup computes forces anew).
+A plugin adds a table (``write_case_table`` in the recorders' lammps_run.py) and is checked here;
+its own tests keep only what a table cannot say."""
+
+import json
+import re
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+from pdps_core.testing import assert_thermo_as_lammps, by_tag, lammps_rows, lammps_thermo, run_ranks, thermo_csv
+
+ROOT = Path(__file__).resolve().parents[1]
+TABLES = sorted(ROOT.glob("plugins/*/tests/data/*.cases.json"))
+
+
+def _cases(check=None):
+    found = []
+    for path in TABLES:
+        table = json.loads(path.read_text())
+        for case, entry in table["cases"].items():
+            if check is None or entry[check]:
+                found.append(pytest.param(path, case, id=f"{path.parts[-4]}:{path.name.split('.')[0]}:{case}"))
+    return found
+
+
+def _reference(path, table, case):
+    """LAMMPS's thermo rows of ``case`` (step first), without the lines a fix printed."""
+    rows = lammps_rows(path.parent / table["reference"], case)
+    return [row for row in rows if row[0].isdigit()]
+
+
+def _folder(path, table, folder):
+    for name in table["files"]:
+        shutil.copy(path.parent / name, Path(folder) / name)
+
+
+def test_the_tables_are_found():
+    assert len(TABLES) >= 10 and len(_cases()) >= 60
+
+
+@pytest.mark.parametrize("path, case", _cases())
+def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, path, case):
+    table = json.loads(path.read_text())
+    _, mine = lammps_thermo(tmp_path, monkeypatch, table["cases"][case]["script"], table["files"], path.parent)
+    reference = _reference(path, table, case)
+    assert_thermo_as_lammps(mine, reference, case, [int(row[0]) for row in reference], table["rtol"], table["atol"])
+
+
+@pytest.mark.parametrize("path, case", _cases("ranks"))
+def test_two_ranks_print_it_too(tmp_path, path, case):
+    table = json.loads(path.read_text())
+    _folder(path, table, tmp_path)
+    run_ranks(table["cases"][case]["script"], 2, tmp_path, name="in.case", log="log.case", dialect="lammps")
+    columns = thermo_csv(tmp_path / "log.case.csv")
+    mine = np.column_stack(list(columns.values()))
+    reference = _reference(path, table, case)
+    assert_thermo_as_lammps(mine.tolist(), reference, f"{case} on 2 ranks", [int(row[0]) for row in reference],
+                            table["rtol"], table["atol"])
+
+
+def _last_run(script):
+    """(the script up to its last ``run N``, N)."""
+    runs = list(re.finditer(r"^run (\d+)\s*$", script, re.MULTILINE))
+    assert runs, "a restart case ends with run N"
+    return script[:runs[-1].start()], int(runs[-1].group(1))
+
+
+@pytest.mark.parametrize("path, case", _cases("restart"))
+def test_a_restart_goes_on_as_the_run_did(tmp_path, monkeypatch, path, case):
+    table = json.loads(path.read_text())
+    _folder(path, table, tmp_path)
+    monkeypatch.chdir(tmp_path)
+    script = table["cases"][case]["script"]
+    start, steps = _last_run(script)
+    straight = Simulation(screen=False, log=None, dialect="lammps")
+    straight.command(f"{start}run {steps // 2}\nrun {steps - steps // 2}")
+    before = Simulation(screen=False, log=None, dialect="lammps")
+    before.command(f"{start}run {steps // 2}\nwrite_restart half.restart")
+    resumed = Simulation(screen=False, log=None, dialect="lammps")
+    resumed.command(f"read_restart half.restart\nrun {steps - steps // 2}")
+    assert resumed.step == straight.step == steps
+    np.testing.assert_allclose(resumed.box.length, straight.box.length, rtol=1e-12)
+    for name in ("x", "v"):
+        np.testing.assert_allclose(by_tag(resumed, getattr(resumed, name)), by_tag(straight, getattr(straight, name)),
+                                   rtol=1e-9, atol=1e-9, err_msg=f"{case}: {name} after the restart")
