@@ -382,6 +382,12 @@ def run_ranks(script, nprocs, cwd, *, name="in.test", timeout=600, log="none", d
     return done
 
 
+def thermo_on_ranks(script, cwd, ranks=(1, 2)):
+    """The thermo rows (an array each) that ``script`` prints run with ``mpiexec -n`` each of ``ranks``:
+    what a style prints must not depend on how many ranks run it."""
+    return [np.array(thermo_rows(run_ranks(script, n, cwd).stdout)) for n in ranks]
+
+
 def thermo_csv(path):
     """The thermo CSV a run wrote next to its log: {column name: array over thermo lines}."""
     lines = Path(path).read_text().splitlines()
@@ -481,17 +487,21 @@ def recorded_case(folder, name, tmp_path, replace=()):
     return sim.fixes["record"]
 
 
-def restart_round_trip(tmp_path, setup, first, second):
-    """(straight, resumed): a Simulation that ran ``setup`` then ``run first+second``, and one that
-    ran ``setup``, ``run first``, wrote a restart file, and a fresh one that read it and ran
-    ``second``: both should hold the same particles for deterministic styles."""
+def restart_round_trip(tmp_path, setup, first, second, *, split=False, again=""):
+    """(straight, resumed): a Simulation that ran ``setup`` then ``run first+second`` (with
+    ``split``: ``run first`` and ``run second``, for styles whose run set-up acts, as LAMMPS's
+    barostats kick their strain rate), and one that ran ``setup``, ``run first``, wrote a restart
+    file, and a fresh one that read it, gave the lines ``again`` a restart file does not hold (as
+    LAMMPS scripts do: ``neigh_modify exclude ...``) and ran ``second``: both should hold the same
+    particles for deterministic styles."""
     path = Path(tmp_path) / "round_trip.restart"
     straight = Simulation(screen=False, log=None)
-    straight.command(textwrap.dedent(setup) + f"\nrun {first + second}")
+    runs = f"run {first}\nrun {second}" if split else f"run {first + second}"
+    straight.command(textwrap.dedent(setup) + f"\n{runs}")
     before = Simulation(screen=False, log=None)
     before.command(textwrap.dedent(setup) + f"\nrun {first}\nwrite_restart {path}")
     resumed = Simulation(screen=False, log=None)
-    resumed.command(f"read_restart {path}\nrun {second}")
+    resumed.command(f"read_restart {path}\n{again}\nrun {second}")
     return straight, resumed
 
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, thermo_rows
+from pdps_core.testing import thermo_on_ranks, thermo_rows
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
@@ -36,8 +36,7 @@ def test_body_energies_match_lammps_and_add_up_to_the_particles(pdps_cli, tmp_pa
 def test_two_ranks_sum_the_bodies_each_rank_owns(tmp_path):
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
     text = SCRIPT.format(fix=STYLES["rigid/small"])
-    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(text, tmp_path)
     assert two == pytest.approx(one, rel=1e-10)
 
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.testing import run_ranks, thermo_rows
+from pdps_core.testing import restart_round_trip, thermo_on_ranks, thermo_rows
 
 # the scenes of the clumps, 2-d bodies and infile, and the styles' settings: the recorder's own, so the
 # test runs what LAMMPS ran
@@ -133,8 +133,7 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     extra = {"rigid/nve langevin": " langevin 0.6 0.4 1.0 4928", "rigid/npt": " temp 0.5 0.5 1.0 iso 0.05 0.05 2.0",
              "rigid/nph": " x 0.05 0.05 2.0 z 0.05 0.05 2.0 couple xz"}.get(style) or EXTRA[style]
     script = SCRIPT.format(style=style.split()[0], extra=extra, steps=2000)
-    one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(script, tmp_path)
     assert one.shape == two.shape == (21, 9)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
 
@@ -144,7 +143,6 @@ def test_restart_goes_on_as_the_straight_run(tmp_path, style):
     """A run of 400 steps, and one of 200 written to a restart file, read back and run 200 more: the
     bodies are set up again from the particles (as LAMMPS does), rigid/nvt's chains come back from
     the file; the same particles to round-off."""
-    from pdps_core.testing import restart_round_trip
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
     # a constant target: a ramp restarts with each run
     extra = " temp 0.5 0.5 1.0" if style == "rigid/nvt" else ""
@@ -163,19 +161,13 @@ def test_barostat_state_comes_back_from_a_restart_file(tmp_path, style):
     """Two runs of 200 steps, and the first written to a restart file, read back and run 200 more: the
     same particles and box to round-off (the chains, strain rates and reference volume come back; a
     run's set-up kicks the strain rate half a step, as LAMMPS's, so a split run is not a straight one)."""
-    from pdps_core.api import Simulation
     shutil.copy(DATA / "rigid_lj.data", tmp_path)
     extra = {"rigid/npt": " temp 0.5 0.5 1.0 iso 0.05 0.05 2.0", "rigid/nph": " aniso 0.05 0.05 2.0 pchain 3"}[style]
     setup = SCRIPT.format(style=style, extra=extra, steps=200).replace(
         "read_data rigid_lj.data", f"read_data {tmp_path / 'rigid_lj.data'}").replace("thermo 100\n", "thermo 1000\n")
-    path = tmp_path / "rigid.restart"
-    split = Simulation(screen=False, log=None)
-    split.command(setup + "run 200\n")
-    first = Simulation(screen=False, log=None)
-    first.command(setup + f"write_restart {path}\n")
-    resumed = Simulation(screen=False, log=None)
     # neighbor exclusions are not in restart files: the script gives them again
-    resumed.command(f"read_restart {path}\nneigh_modify exclude molecule/intra all\nrun 200")
+    split, resumed = restart_round_trip(tmp_path, setup.replace("run 200\n", ""), 200, 200, split=True,
+                                        again="neigh_modify exclude molecule/intra all")
     order_a, order_b = np.argsort(split.tag), np.argsort(resumed.tag)
     assert resumed.box.length == pytest.approx(split.box.length, rel=1e-12)
     assert resumed.x[order_b] == pytest.approx(split.x[order_a], abs=1e-9)

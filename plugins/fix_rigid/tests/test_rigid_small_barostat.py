@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-from pdps_core.testing import run_ranks, thermo_rows
+from pdps_core.testing import restart_round_trip, thermo_on_ranks
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
 from lammps_run import read_blocks  # noqa: E402
@@ -59,8 +59,7 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, name):
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
     fix, _ = BAROSTATS[name]
     text = BAROSTAT_SCRIPT.format(fix=fix, steps=1500).replace(EVERY_STEP, "")
-    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(text, tmp_path)
     assert one.shape == two.shape == (16, 13)
     assert one[-1, 6] < 0.99 * one[0, 6]          # the box did change
     assert two == pytest.approx(one, rel=1e-10, abs=1e-12)
@@ -136,19 +135,13 @@ def test_restart_goes_on_as_a_second_run(tmp_path):
     the same two runs in one simulation (each run's set-up gives the strain rate its half kick, in
     LAMMPS as here, so a straight run of 400 is another run): the chains and strain rates come back
     from the file, the bodies from the particles; the same particles and box to round-off."""
-    from pdps_core.testing import Simulation
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
     setup = (f"units lj\natom_style molecular\nread_data {tmp_path / 'rigid_small_lj.data'}\npair_style lj/cut 2.5\n"
              "pair_coeff * * 1.0 1.0\nneigh_modify exclude molecule/intra all\ntimestep 0.001\n"
-             "fix 1 all rigid/npt/small molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0 pchain 3\nrun 200\n")
-    path = tmp_path / "npt.restart"
-    straight = Simulation(screen=False, log=None)
-    straight.command(setup + "run 200")
-    before = Simulation(screen=False, log=None)
-    before.command(setup + f"write_restart {path}")
-    resumed = Simulation(screen=False, log=None)
+             "fix 1 all rigid/npt/small molecule temp 0.5 0.5 1.0 iso 0.05 0.05 2.0 pchain 3\n")
     # neighbor exclusions are not in restart files: the script gives them again
-    resumed.command(f"read_restart {path}\nneigh_modify exclude molecule/intra all\nrun 200")
+    straight, resumed = restart_round_trip(tmp_path, setup, 200, 200, split=True,
+                                           again="neigh_modify exclude molecule/intra all")
     a, b = straight.particles, resumed.particles
     order_a, order_b = np.argsort(a.tag[: a.nlocal]), np.argsort(b.tag[: b.nlocal])
     assert b.x[: b.nlocal][order_b] == pytest.approx(a.x[: a.nlocal][order_a], abs=1e-9)

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.testing import lj_fcc, run_ranks, thermo_rows
+from pdps_core.testing import lj_fcc, run_ranks, thermo_on_ranks, thermo_rows
 
 # the recorder's own scene and settings, so the test runs what LAMMPS ran
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "benchmarks" / "lammps_references"))
@@ -73,8 +73,7 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, style):
     and the periodic ones, and have particles on both ranks: the same thermo as on one."""
     shutil.copy(DATA / "rigid_small_lj.data", tmp_path)
     text = script(style, steps=3000)
-    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(text, tmp_path)
     assert one.shape == two.shape == (31, 9 if style == "rigid/nvt/small" else 7)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
 
@@ -88,8 +87,7 @@ def test_langevin_noise_is_the_same_on_one_and_two_ranks(tmp_path, style):
     plain = script(style, steps=3000)
     text = plain.replace(f"{style} molecule\n", f"{style} molecule langevin 1.0 1.0 0.5 428984\n")
     assert text != plain
-    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(text, tmp_path)
     free = np.array(thermo_rows(run_ranks(plain, 1, tmp_path).stdout))
     assert one.shape == two.shape == (31, 7)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-13)
@@ -134,7 +132,6 @@ thermo 10
 run 20
 run 20
 """
-    one = np.array(thermo_rows(run_ranks(text, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(text, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(text, tmp_path)
     assert one.shape == two.shape == (6, 6)
     assert two == pytest.approx(one, rel=1e-10, abs=1e-12)

@@ -5,7 +5,7 @@ sides and merged back on their owners (as LAMMPS's reverse communication of hist
 import numpy as np
 import pytest
 
-from pdps_core.testing import contacts_held_on_ranks, run_ranks, sphere_bed, thermo_rows
+from pdps_core.testing import contacts_held_on_ranks, run_ranks, sphere_bed, thermo_on_ranks, thermo_rows
 
 
 def bed(path):
@@ -74,8 +74,7 @@ def test_liggghts_model_with_rolling_spring_and_cohesion_on_1_and_2_ranks(tmp_pa
         """
     # the data file has one type: a second (the floor's material) is made room for
     (tmp_path / "bed.data").write_text((tmp_path / "bed.data").read_text().replace("1 atom types", "2 atom types"))
-    one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
-    two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
+    one, two = thermo_on_ranks(script, tmp_path)
     assert one[:, 0].tolist() == list(range(0, 3001, 500))
     assert not np.allclose(one[-1, 1], one[0, 1])
     assert two == pytest.approx(one, rel=1e-9)
