@@ -1017,6 +1017,11 @@ class Compute(Style):
     def peratom(self, sim):
         raise ScriptError(f"compute {self.id} ({self.name}) has no per-atom values")
 
+    def local(self, sim):
+        """This rank's rows of local data (contacts, bonds, bodies): ``(n,)`` or ``(n, k)``, for dump
+        local and compute reduce (LAMMPS's local_flag)."""
+        raise ScriptError(f"compute {self.id} ({self.name}) has no local data")
+
     def pair_tally(self, sim):
         """This step's per-particle pair tally of the owned particles (``peratom_tally = True``), a
         (nlocal, 7) view: energy, then virial xx yy zz xy xz yz, each pair's half (energy units)."""

@@ -29,7 +29,7 @@ import re
 
 import numpy as np
 
-from pdps_core.api import Dump, ScriptError, StyleArgs, param
+from pdps_core.api import Compute, Dump, ScriptError, StyleArgs, param
 
 from .files import check_dump_file, write_frame
 
@@ -78,10 +78,9 @@ class DumpLocal(Dump):
                 compute = sim.computes.get(ident)
                 if compute is None:
                     raise ScriptError(f"dump {self.id}: compute {ident} is not defined ({word})")
-                reader = getattr(compute, "local", None)
-                if reader is None:
+                if type(compute).local is Compute.local:
                     raise ScriptError(f"dump {self.id}: compute {ident} ({compute.name}) has no local data ({word})")
-                values = np.asarray(reader(sim), dtype=np.float64)
+                values = np.asarray(compute.local(sim), dtype=np.float64)
                 cache[ident] = values[:, None] if values.ndim == 1 else values
             values = cache[ident]
             if rows is not None and len(values) != rows:
