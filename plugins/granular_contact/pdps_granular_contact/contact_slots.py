@@ -18,6 +18,11 @@ from numba import njit
 
 from pdps_core.api import find_slot, open_slot
 
+# the per-particle arrays of a granular pair style's contact springs (ContactHistory's name), one
+# name for pair gran's and pair dem's: the wall fixes keep their own, as the sweep of stale slots
+# frees only the pair style's
+PAIR_SHEAR = "pair_shear"
+
 
 @njit(cache=True)
 def forget_untouched(partner, history, touched, i):

@@ -42,10 +42,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import (HeldRows, Mirrors, contact_rows, load_spring, pack_slots,
-                                                  store_spring)
-
-HISTORY_NAME = "pair_shear"      # not shared with wall fixes: the stale-slot sweep frees ours only
+from pdps_granular_contact.contact_slots import (PAIR_SHEAR, HeldRows, Mirrors, contact_rows, load_spring,
+                                                  pack_slots, store_spring)
 DEFAULT_CONTACTS = 16
 
 
@@ -235,11 +233,11 @@ class GranularPair(Pair):
             return
         capacity = self.args.max_contacts
         particles = self.sim.particles
-        name = f"{HISTORY_NAME}_partner"
+        name = f"{PAIR_SHEAR}_partner"
         if particles.has(name) and particles.arrays[name].shape[1] != capacity:
             raise ScriptError(f"max_contacts cannot change once contacts are stored "
                               f"(stored: {particles.arrays[name].shape[1]}, asked: {capacity})")
-        self.history = ContactHistory(self.sim, HISTORY_NAME, width=3, capacity=capacity)
+        self.history = ContactHistory(self.sim, PAIR_SHEAR, width=3, capacity=capacity)
 
     def extremes(self, ntypes):
         """Largest radius of each type among the particles now present or to be inserted by a fix,

@@ -487,8 +487,9 @@ def test_shardlow_keeps_an_ideal_gas_at_its_temperature_in_every_unit_system(uni
     pair_style dpd/fdt's T invariant (see the lj test above), so a gas started at 2 T relaxes to T
     within 200 steps. Relative fluctuation of T for 3,000 particles:
     sqrt(2/9000) = 1.5 % per sample. Without ftm2v the real gas heats and the metal one stays hot."""
-    from pdps_core.state.units import UNITS
-    u = UNITS[units]
+    probe = Simulation(screen=False, log=None)
+    probe.command(f"units {units}")
+    u = probe.units
     cut = 4.0 * u.skin
     # a mass that moves a particle a tenth of the cutoff per step, so pairs keep changing partners
     mass = u.boltz * 300.0 / (u.mvv2e * (0.1 * cut / u.dt) ** 2)

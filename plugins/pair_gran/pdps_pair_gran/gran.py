@@ -41,9 +41,8 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, load_spring, pack_slots, store_spring
+from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, load_spring, pack_slots, store_spring
 
-HISTORY_NAME = "gran_shear"
 DEFAULT_CONTACTS = 16
 
 
@@ -174,7 +173,7 @@ class PairGran(Pair):
     ghost_fields = ("omega",)
     model = lammps_classic.HOOKE
     history_width = 3         # values per contact: the tangential spring
-    history_name = HISTORY_NAME
+    history_name = PAIR_SHEAR
 
     @classmethod
     def respell(cls, dialect, words):

@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.state import restart as restart_files
 from pdps_core.testing import by_tag, lj_fcc
 
 ATOMS = "\n" + lj_fcc(3, 2) + """set type 1 type/fraction 2 0.5 4321
@@ -38,15 +37,14 @@ def test_a_hybrid_restart_resumes_the_same_trajectory(tmp_path, style):
                                    rtol=1e-12, atol=1e-12)
 
 
-def test_a_damaged_assignment_is_refused_in_one_line(tmp_path):
-    """A file assigning a type pair to a style the hybrid does not have is refused where it is read."""
-    path = tmp_path / "hybrid.restart"
+def test_a_damaged_assignment_is_refused_in_one_line():
+    """A restart file's state assigning a type pair to a style the hybrid does not have is refused
+    where it is read (read_restart hands the pair style its state, as here)."""
     sim = Simulation(screen=False, log=None, dialect="lammps")
-    sim.command(ATOMS + PAIRS["hybrid"] + f"\nrun 0\nwrite_restart {path}")
-    header, arrays = restart_files.read_file(path)
-    header["pair"]["state"]["assigned"][0][2] = ["morse"]
-    reader = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(ATOMS + PAIRS["hybrid"] + "\nrun 0")
+    state = sim.pair.state()
+    state["assigned"][0][2] = ["morse"]
     with pytest.raises(ScriptError) as info:
-        restart_files.restore(reader, header, arrays)
+        sim.pair.restore(state)
     assert str(info.value) == ("pair hybrid: the restart file assigns types 1 1 to morse, which is not one of "
                                "its sub-styles")
