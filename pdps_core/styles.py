@@ -950,6 +950,10 @@ class Fix(Style):
     # the fix holds its group's particles at rest (LAMMPS's fix freeze): granular pair styles give a
     # contact with a held particle the other one's mass as its effective mass, as LAMMPS does
     holds_at_rest: ClassVar[bool] = False
+    # the fix moves its particles through time (LAMMPS's time_integrate): fix nve and its kin, the
+    # Nose-Hoover fixes, the rigid bodies; a fix that wraps an integrator's steps (langevin gjf)
+    # looks for one by this flag, never by a style name
+    time_integrate: ClassVar[bool] = False
     next_reneighbor: int | None = None
 
     def __init__(self, sim, id, group, args):

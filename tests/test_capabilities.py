@@ -63,3 +63,13 @@ def test_no_plugin_tests_another_distributions_style_by_its_name():
             if any(f'"{name}" =' not in own for name in names):
                 offenders.append(f"{path.relative_to(ROOT)}:{number}: {line.strip()}")
     assert not offenders, "\n".join(offenders)
+
+
+@pytest.mark.parametrize("name, integrates", [
+    ("nve", True), ("nve/sphere", True), ("nve/limit", True), ("nvt", True), ("npt", True), ("nph", True),
+    ("rigid", True), ("rigid/small", True), ("rigid/nvt", True), ("rigid/nph/small", True), ("mvv/dpd", True),
+    ("langevin", False), ("shardlow", False), ("move/mesh", False), ("freeze", False), ("addforce", False),
+])
+def test_the_integrators_say_so(name, integrates):
+    """LAMMPS's time_integrate: what a fix wrapping an integrator's steps (langevin gjf) looks for."""
+    assert registry.lookup("fix", name).time_integrate is integrates

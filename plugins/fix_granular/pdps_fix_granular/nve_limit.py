@@ -106,6 +106,7 @@ def limited_spin(omega, torque, mass, radius, mask, groupbit, nlocal, dt, xmax, 
 
 class FixNVELimit(Fix):
     name = "nve/limit"
+    time_integrate = True
     usage = "fix ID GROUP nve/limit [absolute|radius_ratio] XMAX [disc]"
 
     class Args(StyleArgs):

@@ -77,6 +77,7 @@ def inertia_factor(sim, disc, what):
 
 class FixNVESphere(Fix):
     name = "nve/sphere"
+    time_integrate = True
     usage = "fix ID GROUP nve/sphere [disc]"
     per_atom = ("omega", "torque")
 

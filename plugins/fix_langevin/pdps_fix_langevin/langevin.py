@@ -426,10 +426,10 @@ class FixLangevinGJF(FixLangevin):
             raise ScriptError(f"fix {self.id} langevin gjf: DAMP must not be dt/2 (got {self.args.damp:g} "
                               f"with timestep {sim.dt:g}), which makes GJF's a = 0")
         names = list(sim.fixes)
-        integrators = [fix for fix in sim.fixes.values() if fix.name.startswith("nve")]
+        integrators = [fix for fix in sim.fixes.values() if fix.time_integrate]
         if not integrators:
-            raise ScriptError(f"fix {self.id} langevin gjf needs fix nve (or nve/sphere, nve/limit) to move "
-                              "the particles; define it after this fix")
+            raise ScriptError(f"fix {self.id} langevin gjf needs an integrator (fix nve, nve/sphere, nve/limit...) "
+                              "to move the particles; define it after this fix")
         first = integrators[0]
         if names.index(first.id) < names.index(self.id):
             raise ScriptError(f"fix {self.id} langevin gjf must be defined before fix {first.id} "

@@ -245,7 +245,8 @@ GAS = "units lj\natom_style atomic\nregion box block 0 10 0 10 0 10\ncreate_box 
     ("fix 1 all nve\nfix t all langevin 1 1 0.5 5 gjf vhalf",
      "fix t langevin gjf must be defined before fix 1 (nve), whose steps it wraps"),
     ("fix t all langevin 1 1 0.5 5 gjf vfull",
-     "fix t langevin gjf needs fix nve (or nve/sphere, nve/limit) to move the particles; define it after this fix"),
+     "fix t langevin gjf needs an integrator (fix nve, nve/sphere, nve/limit...) to move the particles; "
+     "define it after this fix"),
     ("fix t all langevin 1 1 0.5 5 gjf vhalf\nfix 1 all nve\ntimestep 1.0",
      "fix t langevin gjf: DAMP must not be dt/2 (got 0.5 with timestep 1), which makes GJF's a = 0"),
 ])

@@ -710,12 +710,14 @@ class FixNH(Fix):
 
 class FixNVT(FixNH):
     name = "nvt"
+    time_integrate = True
     usage = "fix ID GROUP nvt temp TSTART TSTOP TDAMP [tchain M] [tloop N] [drag D] [disc]"
     needs_temp, needs_press = True, False
 
 
 class FixNPT(FixNH):
     name = "npt"
+    time_integrate = True
     usage = ("fix ID GROUP npt temp TSTART TSTOP TDAMP iso|aniso|x|y|z PSTART PSTOP PDAMP [couple C] "
              "[tchain M] [pchain M] [mtk yes|no] [tloop N] [ploop N] [nreset N] [drag D] [dilate all|GROUP] "
              "[fixedpoint X Y Z] [flip yes|no] [disc]")
@@ -724,6 +726,7 @@ class FixNPT(FixNH):
 
 class FixNPH(FixNH):
     name = "nph"
+    time_integrate = True
     usage = ("fix ID GROUP nph iso|aniso|x|y|z PSTART PSTOP PDAMP [couple C] [pchain M] [mtk yes|no] "
              "[ploop N] [nreset N] [drag D] [dilate all|GROUP] [fixedpoint X Y Z] [ptemp T] [flip yes|no] [disc]")
     needs_temp, needs_press = False, True

@@ -53,6 +53,7 @@ def nve_final(v, f, type_, mass, rmass, mask, groupbit, nlocal, dt, ftm2v):
 
 class FixNVE(Fix):
     name = "nve"
+    time_integrate = True
     usage = "fix ID GROUP nve"
 
     def initial_integrate(self, sim):

@@ -251,6 +251,7 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
 
 class FixRigid(Fix):
     name = "rigid"
+    time_integrate = True
     usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN|custom i_NAME|v_NAME [force M XFLAG YFLAG ZFLAG] "
              "[torque M XFLAG YFLAG ZFLAG] [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED] "
              "[gravity FIX_ID]")

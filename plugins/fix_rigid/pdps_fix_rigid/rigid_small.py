@@ -281,6 +281,7 @@ def principal_axes(tensor):
 
 class FixRigidSmall(Fix):
     name = "rigid/small"
+    time_integrate = True
     usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]"
     can_virial = True
     virial_default = True

@@ -74,6 +74,7 @@ def mvv_final(v, f, vest, mass, mask, groupbit, nlocal, dt, ftm2v):
 
 class FixMvvDPD(Fix):
     name = "mvv/dpd"
+    time_integrate = True
     usage = "fix ID GROUP mvv/dpd [lambda]"
 
     per_atom = (("vest", 3),)        # the half-step velocity, kept between the two halves
