@@ -124,6 +124,50 @@ def test_a_bad_entry_of_a_run_is_named_by_its_first_word(words, message):
     assert str(error.value).split("; usage")[0] == message
 
 
+class Placed(StyleArgs):
+    placement: list[tuple[Literal["scale"], float] | tuple[Literal["move"], float, float, float]] = keyword(
+        default_factory=list, spelled_by_entries=True, unit={"scale": "1", "move": "distance"})
+    type: int = keyword(1, unit="1")
+
+
+def test_entries_spelled_by_their_own_words_keep_their_order_across_words():
+    args = parse_args(Placed, "move 1 0 0 scale 2 type 2 scale 3".split())
+    assert args.placement == [("move", 1.0, 0.0, 0.0), ("scale", 2.0), ("scale", 3.0)]
+    assert parse_args(Placed, "scale 2 move 1 0 0".split()).placement == [("scale", 2.0), ("move", 1.0, 0.0, 0.0)]
+    with pytest.raises(ScriptError, match=r"^keyword move needs 3 value\(s\) \(got 1 2\)$"):
+        parse_args(Placed, "move 1 2 type 1".split())
+    with pytest.raises(ScriptError, match=r"^placement scale must be a finite number \(got x\)$"):
+        parse_args(Placed, "scale x".split())
+    with pytest.raises(ScriptError, match=r"^unknown keyword placement \(known: type, scale, move\)$"):
+        parse_args(Placed, "placement 2".split())
+
+
+class Walled(StyleArgs):
+    model: Literal["lsd"] = param()
+    region: list[tuple[Literal["region"], str]] = param(default_factory=list, names="region ID")
+    law: tuple[float, float, float] = param(unit="1")
+
+
+class Written(StyleArgs):
+    output: tuple[Literal["output"], Literal["face"]] | None = param(None)
+    values: list[Literal["stress", "area"]] = param(default_factory=list)
+    meshes: list[str] = param(default_factory=list, names="mesh ID")
+
+
+def test_a_run_that_another_argument_follows_ends_at_a_word_that_starts_no_entry():
+    args = parse_args(Walled, "lsd region a region b 1 2 3".split())
+    assert (args.region, args.law) == ([("region", "a"), ("region", "b")], (1.0, 2.0, 3.0))
+    assert parse_args(Walled, "lsd 1 2 3".split()).region == []
+    with pytest.raises(ScriptError, match=r"^region region needs word \(got nothing\)$"):
+        parse_args(Walled, "lsd region".split())
+    args = parse_args(Written, "stress area a b".split())
+    assert (args.output, args.values, args.meshes) == (None, ["stress", "area"], ["a", "b"])
+    args = parse_args(Written, "output face area b".split())
+    assert (args.output, args.values, args.meshes) == (("output", "face"), ["area"], ["b"])
+    with pytest.raises(ScriptError, match=r"^output must be one of 'face' \(got interpolate\)$"):
+        parse_args(Written, "output interpolate stress".split())
+
+
 # ---- every style of the registry declares its arguments ------------------------------------------
 def _numeric(annotation):
     """Whether a value of ``annotation`` holds a number anywhere (a tuple member, a union member)."""
