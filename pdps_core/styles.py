@@ -286,7 +286,8 @@ def _read(annotation, words, i, stops, name):
         choices = [_first_words(m) or (tuple(map(str, typing.get_args(_bare(m))))
                                        if typing.get_origin(_bare(m)) is typing.Literal else ()) for m in members]
         if i < len(words) and all(choices):
-            raise ScriptError(f"{name} must be one of {', '.join(w for c in choices for w in c)} (got {words[i]})")
+            known = dict.fromkeys(w for c in choices for w in c)     # two lengths of one word name it once
+            raise ScriptError(f"{name} must be one of {', '.join(known)} (got {words[i]})")
         arities = {_arity(m) for m in members}
         if len(arities) > 1 or None in arities:
             fixed = sorted(a for a in arities if a is not None and a <= end - i)

@@ -142,6 +142,21 @@ def test_entries_spelled_by_their_own_words_keep_their_order_across_words():
         parse_args(Placed, "placement 2".split())
 
 
+class Law(StyleArgs):
+    model: (tuple[Literal["lsd"], float, float, float, float] | tuple[Literal["lsd"], float, float]
+            | tuple[Literal["hertz"], float]) = keyword(..., unit={"lsd": "1", "hertz": "pressure"})
+
+
+def test_a_word_that_picks_tuples_of_two_lengths_is_named_once():
+    assert parse_args(Law, "model lsd 1 2".split()).model == ("lsd", 1.0, 2.0)
+    assert parse_args(Law, "model lsd 1 2 3 4".split()).model == ("lsd", 1.0, 2.0, 3.0, 4.0)
+    with pytest.raises(ScriptError, match=r"^model must be one of lsd, hertz \(got jkr\)$"):
+        parse_args(Law, "model jkr 1".split())
+    with pytest.raises(ScriptError, match=r"^model lsd takes number number number number or number number "
+                                          r"\(got 1\)$"):
+        parse_args(Law, "model lsd 1".split())
+
+
 class Walled(StyleArgs):
     model: Literal["lsd"] = param()
     region: list[tuple[Literal["region"], str]] = param(default_factory=list, names="region ID")
