@@ -98,9 +98,9 @@ def test_stress_off_sums_nothing(data):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("stress maybe", "stress must be on or off (got maybe)"),
-    ("wear archard", "wear must be finnie or off (got archard)"),
-    ("reference_point 0 0", "keyword reference_point needs 3 value(s) (got 0 0)"),
+    ("stress maybe", "stress must be one of 'on' or 'off' (got maybe)"),
+    ("wear archard", "wear must be one of 'finnie' or 'off' (got archard)"),
+    ("reference_point 0 0", "keyword reference_point needs 3 value(s) (got 2)"),
 ])
 def test_bad_stress_words(data, words, message):
     sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")

@@ -201,14 +201,14 @@ def test_a_conveyor_cannot_be_moved(data):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("type 1", "missing keyword file"),
+    ("type 1", "missing argument file"),
     ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
-    ("file {data}/square.stl type x", "type must be a whole number (got x)"),
+    ("file {data}/square.stl type x", "type must be an integer (got x)"),
     ("file {data}/square.stl curvature 120", "curvature must be in (0, 90] degrees (got 120)"),
-    ("file {data}/square.stl precision 1e-5", "keyword precision is not supported"),
+    ("file {data}/square.stl precision 1e-5", "keyword precision of fix mesh/surface: pdps merges only identical nodes (meshio)"),
     ("file {data}/square.stl heal auto_remove_duplicates", "heal auto_remove_duplicates is not supported"),
     ("file {data}/square.stl surface_ang_vel origin 0 0 0 axis 0 0 1 spin 1",
-     "surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W"),
+     "surface_ang_vel must be one of 'omega' (got spin)"),
     ("file {data}/square.stl scale 0", "scale must be > 0 (got 0)"),
     ("file {data}/nothere.stl", "mesh file {data}/nothere.stl does not exist"),
     ("file {data}/square.stl wobble 1", "unknown keyword wobble"),
