@@ -219,7 +219,7 @@ NOT_YET_DECLARED = {
     ("pair", "formula"), ("pair", "hybrid"), ("pair", "hybrid/overlay"),
     ("fix", "ave/spatial"), ("fix", "ave/time"), ("fix", "deform"),
     ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
-    ("fix", "move/mesh"), ("fix", "particledistribution/discrete"),
+    ("fix", "particledistribution/discrete"),
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
     ("analyze", "ave/space"), ("analyze", "ave/time"),
