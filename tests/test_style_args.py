@@ -223,7 +223,6 @@ NOT_YET_DECLARED = {
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
     ("fix", "wall/gran"),
     ("analyze", "ave/space"), ("analyze", "ave/time"),
-    ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
 }
 
 

@@ -167,8 +167,9 @@ def test_dump_mesh_vtk_writes_the_meshes_with_liggghts_values(data, tmp_path, st
 @pytest.mark.parametrize("words, message", [
     ("stress cad", "stress needs a fix mesh/surface/stress (fix cad is a mesh/surface)"),
     ("wear", "wear needs a fix mesh/surface/stress (fix cad is a mesh/surface)"),
-    ("output interpolate", "output interpolate is not supported (output face only)"),
+    ("output interpolate", "output must be one of 'face' (got interpolate)"),
     ("stress nothere", "nothere is neither a value"),
+    ("cad stress", "stress stands after a mesh ID: output face, then the values, then the mesh IDs"),
 ])
 def test_bad_dump_mesh_vtk(data, tmp_path, words, message):
     sim = make_box(f"fix cad all mesh/surface file {data}/square.stl", box="-4 4 -4 4 -4 4",
