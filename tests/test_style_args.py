@@ -221,7 +221,6 @@ NOT_YET_DECLARED = {
     ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
     ("fix", "particledistribution/discrete"),
     ("fix", "particletemplate/sphere"), ("fix", "property/global"),
-    ("fix", "wall/gran"),
     ("analyze", "ave/space"), ("analyze", "ave/time"),
 }
 
