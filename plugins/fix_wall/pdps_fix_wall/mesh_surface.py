@@ -40,7 +40,8 @@ contacts; pdps finds those from the geometry alone (fix wall/mesh's docstring).
 
 The group is not used (the wall fix's group says which particles see the mesh). LIGGGHTS keywords
 pdps does not honour are refused by name: ``precision`` and ``heal auto_remove_duplicates`` (meshio
-merges only identical nodes), ``temperature`` (no heat conduction with walls).
+merges only identical nodes), ``temperature`` (no heat conduction with walls),
+``element_exclusion_list`` (every triangle of the file is kept).
 
 Example::
 
@@ -62,6 +63,7 @@ from .wall_contact import TRANSFER_COS
 REFUSED = {
     "precision": "pdps merges only identical nodes (meshio)",
     "temperature": "pdps has no heat conduction with walls",
+    "element_exclusion_list": "pdps keeps every triangle of the file",
 }
 
 

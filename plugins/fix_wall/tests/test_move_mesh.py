@@ -232,6 +232,9 @@ def test_a_conveyor_cannot_be_moved(data):
     ("file {data}/square.stl scale 0", "scale must be > 0 (got 0)"),
     ("file {data}/nothere.stl", "mesh file {data}/nothere.stl does not exist"),
     ("file {data}/square.stl wobble 1", "unknown keyword wobble"),
+    ("file {data}/square.stl element_exclusion_list read ex.txt",
+     "keyword element_exclusion_list of fix mesh/surface: pdps keeps every triangle of the file"),
+    ("file {data}/square.stl scale 2 scale x", "placement scale must be a finite number (got x)"),
 ])
 def test_bad_mesh_surface_words(data, words, message):
     sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")
