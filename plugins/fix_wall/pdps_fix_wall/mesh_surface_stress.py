@@ -133,4 +133,7 @@ class FixMeshSurfaceStress(FixMeshSurface):
 
     def restore(self, state):
         saved = np.asarray(state["face_wear"], dtype=float)
+        if saved.shape != self.face_wear.shape:
+            raise ScriptError(f"fix {self.id} (mesh/surface/stress): the saved wear holds {saved.size} value(s) "
+                              f"for {len(self.triangles)} triangles")
         self.face_wear = saved.copy() if self.sim.comm.is_root else np.zeros_like(saved)

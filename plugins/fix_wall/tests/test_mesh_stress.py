@@ -219,3 +219,13 @@ def test_wear_needs_k_finnie(data):
     with pytest.raises(ScriptError, match="fix floor \\(wear finnie\\) needs k_finnie: fix ID all property/global "
                                           "k_finnie peratomtypepair 1 V11 ... V11"):
         sim.command("run 0")
+
+
+def test_a_saved_wear_of_another_size_is_one_line(data):
+    """A damaged restart file's wear (one value where the mesh has two triangles) is refused by name,
+    not handed to the wear kernel."""
+    sim = make_box(f"fix floor all mesh/surface/stress file {data}/square.stl wear finnie", box="-4 4 -4 4 -4 4",
+                   particle_style="sphere")
+    with pytest.raises(ScriptError, match=r"^fix floor \(mesh/surface/stress\): the saved wear holds 1 value\(s\) "
+                                          r"for 2 triangles$"):
+        sim.fixes["floor"].restore({"face_wear": np.array(True)})
