@@ -156,16 +156,55 @@ def param(default=..., *, unit=None, names=None, **field_kwargs):
     return Field(default, json_schema_extra=extra or None, **field_kwargs)
 
 
-def keyword(default=None, *, unit=None, names=None, **kwargs):
+def keyword(default=None, *, unit=None, names=None, spelled_by_entries=False, **kwargs):
     """A field given in the script as ``name value...`` (any order, after the positional words);
-    ``unit`` and ``names`` as for ``param``."""
+    ``unit`` and ``names`` as for ``param``. ``spelled_by_entries``: a ``list`` of a choice of
+    tuples picked by their first word, each of those words a keyword of its own (``scale S``,
+    ``move DX DY DZ``), every use kept in the one list in the order written (LIGGGHTS applies a
+    mesh's placements so)."""
     extra = kwargs.pop("json_schema_extra", {}) or {}
-    return param(default, unit=unit, names=names, json_schema_extra={**extra, "keyword": True}, **kwargs)
+    extra = {**extra, "keyword": True, **({"spelled_by_entries": True} if spelled_by_entries else {})}
+    return param(default, unit=unit, names=names, json_schema_extra=extra, **kwargs)
 
 
 def _is_keyword(info):
     extra = info.json_schema_extra
     return isinstance(extra, dict) and extra.get("keyword", False)
+
+
+def _entry_spellings(info):
+    """{first word: the tuple it picks} of a ``keyword(spelled_by_entries=True)`` field, else {}."""
+    extra = info.json_schema_extra
+    if not (isinstance(extra, dict) and extra.get("spelled_by_entries")):
+        return {}
+    entry = _bare(typing.get_args(_bare(info.annotation))[0])
+    choices = typing.get_args(entry) if _is_union(entry) else (entry,)
+    return {word: choice for choice in choices for word in _first_words(choice)}
+
+
+def _starts(annotation):
+    """The words an entry of a positional run, or an optional positional tuple, starts with: the
+    words of a ``list[Literal[...]]`` or the first words of its tuples; () for other fields."""
+    annotation = _bare(annotation)
+    if typing.get_origin(annotation) is list:
+        entry = _bare(typing.get_args(annotation)[0])
+        if typing.get_origin(entry) is typing.Literal:
+            return tuple(map(str, typing.get_args(entry)))
+        return _first_words(entry)
+    return _first_words(annotation)
+
+
+def _leading_run(annotation, words, i, stops, name):
+    """A positional run that another positional follows: its entries while the words start one
+    (``region R1 region R2`` before numbers; value names before mesh IDs)."""
+    starts, entry = _starts(annotation), typing.get_args(_bare(annotation))[0]
+    size, end = _arity(entry), i
+    while end < len(words) and words[end] in starts and words[end] not in stops:
+        end += size
+    if size == 1:
+        return list(words[i:end]), end
+    end = min(end, len(words))
+    return _entries(entry, words, i, end, name), end
 
 
 def _arity(annotation):
@@ -232,20 +271,6 @@ def _first_words(annotation):
     return ()
 
 
-def _starting_words(annotation):
-    """The words a value of ``annotation`` can start with when they are declared (a ``Literal``, a
-    choice of tuples picked by their first word, a list of either), else ()."""
-    annotation = _bare(annotation)
-    if typing.get_origin(annotation) is list or _variadic(annotation):
-        return _starting_words(typing.get_args(annotation)[0])
-    if typing.get_origin(annotation) is typing.Literal:
-        return tuple(map(str, typing.get_args(annotation)))
-    if _is_union(annotation):
-        starts = [_starting_words(m) for m in typing.get_args(annotation) if m is not type(None)]
-        return tuple(w for words in starts for w in words) if all(starts) else ()
-    return _first_words(annotation)
-
-
 def describe_type(annotation):
     """How a script writes a value of ``annotation``: "number", "vector X Y Z | chute ANGLE", ..."""
     if _style_name(annotation) is not None:
@@ -295,7 +320,8 @@ def _read(annotation, words, i, stops, name):
         choices = [_first_words(m) or (tuple(map(str, typing.get_args(_bare(m))))
                                        if typing.get_origin(_bare(m)) is typing.Literal else ()) for m in members]
         if i < len(words) and all(choices):
-            raise ScriptError(f"{name} must be one of {', '.join(w for c in choices for w in c)} (got {words[i]})")
+            known = dict.fromkeys(w for c in choices for w in c)     # two lengths of one word name it once
+            raise ScriptError(f"{name} must be one of {', '.join(known)} (got {words[i]})")
         arities = {_arity(m) for m in members}
         if len(arities) > 1 or None in arities:
             fixed = sorted(a for a in arities if a is not None and a <= end - i)
@@ -503,6 +529,13 @@ def parse_args(model, words, usage="", refused=None):
     fields = {info.alias or name: info for name, info in model.model_fields.items()}
     positional = [(n, f) for n, f in fields.items() if not _is_keyword(f)]
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
+    spelled = {}        # the first word of an entry of a keyword(spelled_by_entries=True): (field, its tuple)
+    for n, f in list(keywords.items()):
+        for word, choice in _entry_spellings(f).items():
+            spelled[word] = (n, choice)
+            keywords[word] = f
+        if _entry_spellings(f):
+            del keywords[n]
     values, i = {}, 0
     for k, (name, info) in enumerate(positional):
         # an optional style word (wall/reflect's) is left out when a later argument follows instead
@@ -510,17 +543,21 @@ def parse_args(model, words, usage="", refused=None):
         skipped = (not info.is_required() and i < len(words) and k + 1 < len(positional)
                    and typing.get_origin(choices) is typing.Literal
                    and words[i] not in map(str, typing.get_args(choices)))
-        # a run of words ends at a keyword or at a word the next positional argument starts with
-        run = _arity(info.annotation) is None and k + 1 < len(positional)
-        following = _starting_words(positional[k + 1][1].annotation) if run else ()
-        stops = {**keywords, **dict.fromkeys(following)}
-        if i >= len(words) or words[i] in stops or skipped:
+        # so is an optional tuple whose first word is not the one given (``output face``)
+        skipped = skipped or (not info.is_required() and i < len(words) and typing.get_origin(choices) is tuple
+                              and bool(_first_words(choices)) and words[i] not in _first_words(choices))
+        # a run another positional follows takes the words that start its entries (region R1 region R2)
+        leading = k + 1 < len(positional) and typing.get_origin(choices) is list and bool(_starts(choices))
+        if i >= len(words) or words[i] in keywords or skipped or (leading and words[i] not in _starts(choices)):
             if info.is_required():
                 got = f" (got {words[i]})" if i < len(words) and words[i] not in keywords else ""
                 hint = f"; usage: {usage}" if usage else ""
                 raise ScriptError(f"missing argument {name}{got}{hint}")
             continue
-        values[name], i = _read(info.annotation, words, i, stops, name)
+        if leading:
+            values[name], i = _leading_run(choices, words, i, keywords, name)
+            continue
+        values[name], i = _read(info.annotation, words, i, keywords, name)
     while i < len(words):
         word = words[i]
         if word in refused:
@@ -529,6 +566,16 @@ def parse_args(model, words, usage="", refused=None):
             if not keywords:
                 raise ScriptError(f"too many arguments: unexpected {word!r}" + (f"; usage: {usage}" if usage else ""))
             raise ScriptError(f"unknown keyword {word} (known: {', '.join(keywords)})")
+        if word in spelled:
+            field, choice = spelled[word]
+            size = _arity(choice) - 1
+            taken = words[i + 1:i + 1 + size]
+            given = next((k for k, w in enumerate(taken) if w in keywords), len(taken))
+            if given < size:
+                raise ScriptError(f"keyword {word} needs {size} value(s) (got {' '.join(taken[:given]) or 'nothing'})")
+            value, i = _read(choice, words, i, (), field)
+            values.setdefault(field, []).append(value)
+            continue
         info = keywords[word]
         repeated = typing.get_origin(_bare(info.annotation)) is list
         member = typing.get_args(_bare(info.annotation))[0] if repeated else info.annotation

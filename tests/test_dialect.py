@@ -181,7 +181,8 @@ def test_liggghts_2_spellings_of_its_granular_models(make_sim):
         fix floor all wall/gran/hertz/history primitive type 1 zplane 0.0
     """)
     assert sim.pair.name == "gran" and sim.pair.args.model == "hertz"
-    assert sim.fixes["floor"].name == "wall/gran" and sim.fixes["floor"].args.words[:4] == ["model", "hertz", "tangential", "history"]
+    floor = sim.fixes["floor"].args
+    assert sim.fixes["floor"].name == "wall/gran" and (floor.model, floor.tangential) == ("hertz", "history")
     sim.command("pair_style gran/hooke")
     assert sim.pair.name == "gran" and sim.pair.args.model == "hooke" and sim.pair.args.tangential == "no_history"
     # 2.x lines with model settings (LIGGGHTS's note on the 3.x syntax change)
@@ -189,11 +190,12 @@ def test_liggghts_2_spellings_of_its_granular_models(make_sim):
     sim.command("pair_style gran/hertz/history rolling_friction cdt")
     assert sim.pair.name == "gran" and sim.pair.args.rolling_friction == "cdt"
     sim.command("fix side all wall/gran/hertz/history primitive type 1 xplane -0.5 rolling_friction cdt")
-    assert sim.fixes["side"].args.words == ["model", "hertz", "tangential", "history", "rolling_friction", "cdt",
-                                            "primitive", "type", "1", "xplane", "-0.5"]
+    side = sim.fixes["side"].args
+    assert (side.model, side.tangential, side.rolling_friction) == ("hertz", "history", "cdt")
+    assert side.primitive == ("type", 1, ("xplane", -0.5))
     sim.command("fix top all wall/gran/hooke/history type 1 zplane 2.0")
-    assert sim.fixes["top"].args.words == ["model", "hooke", "tangential", "history", "primitive", "type", "1",
-                                           "zplane", "2.0"]
+    top = sim.fixes["top"].args
+    assert (top.model, top.tangential, top.primitive) == ("hooke", "history", ("type", 1, ("zplane", 2.0)))
     lammps = make_sim(dialect="lammps")
     lammps.command("atom_style sphere\nregion box block -1 1 -1 1 0 2 units box\ncreate_box 1 box")
     with pytest.raises(ScriptError, match="missing argument"):

@@ -5,6 +5,8 @@ Syntax::
 
     dump ID GROUP mesh/vtk N FILE [output face] [VALUE ...] [MESH_ID ...]
 
+in that order (``output face``, then the values, then the mesh IDs).
+
 N is the interval in steps; FILE has one ``*``, replaced by the step, and ends in ``.vtk`` (legacy
 VTK) or ``.vtu``. The group is not used. Each frame holds the triangles of the meshes named (all
 fix mesh/surface meshes when none is named), one after the other in the order named, as VTK
@@ -31,6 +33,9 @@ Example::
     dump stress all mesh/vtk 1000 post/mesh*.vtk stress stresscomponents vel cad
 """
 
+import typing
+from typing import Literal
+
 import meshio
 import numpy as np
 
@@ -39,7 +44,8 @@ from pdps_core.api import Dump, MeshSurface, ScriptError, StyleArgs, SurfaceValu
 from .frames import Pattern, Series, replace_atomically
 from .vtk import series_json
 
-VALUES = ("stress", "stresscomponents", "wear", "id", "area", "vel", "owner")
+Value = Literal["stress", "stresscomponents", "wear", "id", "area", "vel", "owner"]
+VALUES = typing.get_args(Value)
 
 
 class DumpMeshVTK(Dump):
@@ -50,27 +56,21 @@ class DumpMeshVTK(Dump):
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
         file: str
-        words: list[str] = []
+        output: tuple[Literal["output"], Literal["face"]] | None = param(None)
+        values: list[Value] = param(default_factory=list)
+        meshes: list[str] = param(default_factory=list, names="fix mesh/surface ID")
+
+    @classmethod
+    def check_args(cls, args):
+        late = [ident for ident in args.meshes if ident in VALUES or ident == "output"]
+        if late:
+            raise ScriptError(f"{late[0]} stands after a mesh ID: output face, then the values, then the mesh IDs; "
+                              f"usage: {cls.usage}")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         self.pattern = Pattern(args.file, (".vtk", ".vtu"), "post/mesh*.vtk")
-        words = list(args.words)
-        self.values, self.mesh_ids = [], []
-        k = 0
-        while k < len(words):
-            word = words[k]
-            if word == "output":
-                if k + 1 >= len(words) or words[k + 1] != "face":
-                    got = words[k + 1] if k + 1 < len(words) else "nothing"
-                    raise ScriptError(f"output {got} is not supported (output face only)")
-                k += 2
-                continue
-            if word in VALUES:
-                self.values.append(word)
-            else:
-                self.mesh_ids.append(word)
-            k += 1
+        self.values, self.mesh_ids = list(args.values), list(args.meshes)
         for ident in self.mesh_ids:
             fix = sim.fixes.get(ident)
             if not isinstance(fix, MeshSurface):

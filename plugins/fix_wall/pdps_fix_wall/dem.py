@@ -66,17 +66,23 @@ Example (PDPS manual)::
 """
 
 import inspect
+from typing import Literal, NamedTuple
 
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, number, observables
+from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, observables, param
 from pdps_granular_contact import contact_models
 
 from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
                            particle_wall_contacts)
 
 ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
+
+
+class RegionWall(NamedTuple):
+    region: Literal["region"]
+    ID: str
 
 
 # _nrt=False: no reference counting of the arrays particle_wall_contacts takes (it stores under
@@ -146,42 +152,43 @@ class FixWallDEM(Fix):
              " | ... e kn mu [cutoff]")
 
     class Args(StyleArgs):
-        words: list[str]
+        model: Literal["lsd"] = param()
+        regions: list[RegionWall] = param(default_factory=list, names="region ID")
+        law: (tuple[float, float, float, float, float, float, float] | tuple[float, float, float, float]
+              | tuple[float, float, float]) = param(unit={
+                  "e kn Cn kt Ct mu cutoff": ("1", "force/distance", "force/velocity", "force/distance",
+                                              "force/velocity", "1", "distance"),
+                  "e kn mu [cutoff]": ("1", "force/distance", "1", "distance")})
+
+    @classmethod
+    def check_args(cls, args):
+        if not args.regions:
+            raise ScriptError(f"expected at least one region R after lsd; usage: {cls.usage}")
+        if len(args.law) == 7:
+            e, kn, cn, kt, ct, mu, cutoff = args.law
+            check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
+        else:
+            e, kn, mu, *cutoff = args.law
+            check_law_numbers(e=e, kn=kn, mu=mu)
+            cutoff = cutoff[0] if cutoff else None
+        if cutoff is not None and not cutoff > 0.0:
+            raise ScriptError(f"cutoff must be > 0 (got {cutoff:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        if not words:
-            raise ScriptError(f"missing the contact model; usage: {self.usage}")
-        if words[0] != "lsd":
-            raise ScriptError(f"contact model must be lsd (got {words[0]})")
-        self.regions, k = [], 1
-        while k < len(words) and words[k] == "region":
-            if k + 1 >= len(words):
-                raise ScriptError("keyword region needs a region ID")
-            region = sim.region(words[k + 1])
+        self.regions = []
+        for _, ident in args.regions:
+            region = sim.region(ident)
             if type(region).surface_contacts is Region.surface_contacts:
                 raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
             self.regions.append(region)
-            k += 2
-        if not self.regions:
-            raise ScriptError(f"expected at least one region R after lsd; usage: {self.usage}")
-        numbers = words[k:]
-        if len(numbers) == 7:
-            e, kn, cn, kt, ct, mu, cutoff = [number(text, "wall/dem parameter", representable=True) for text in numbers]
-            check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
+        if len(args.law) == 7:
+            e, kn, cn, kt, ct, mu, self.cutoff = args.law
             self.law = ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
-        elif len(numbers) in (3, 4):
-            e, kn, mu, *rest = [number(text, "wall/dem parameter", representable=True) for text in numbers]
-            check_law_numbers(e=e, kn=kn, mu=mu)
-            self.law = ContactLaw.lsd(kn, mu, e=e)
-            cutoff = rest[0] if rest else None
         else:
-            raise ScriptError(f"expected e kn Cn kt Ct mu cutoff, or e kn mu [cutoff], after the regions "
-                              f"(got {' '.join(numbers) or 'nothing'})")
-        if cutoff is not None and not cutoff > 0.0:
-            raise ScriptError(f"cutoff must be > 0 (got {cutoff:g})")
-        self.cutoff = cutoff
+            e, kn, mu, *cutoff = args.law
+            self.law = ContactLaw.lsd(kn, mu, e=e)
+            self.cutoff = cutoff[0] if cutoff else None
         self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
         self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0
         # positions of the near particles and their contacts' offsets, in buffers kept between rebuilds

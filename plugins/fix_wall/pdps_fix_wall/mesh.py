@@ -30,9 +30,9 @@ Relative velocity of the contact points :math:`\mathbf{v} = \mathbf{v}_i + \bold
 \times \mathbf{F}`. The tangential spring of each contact is kept per particle and triangle, and
 taken over by the next triangle as a sphere rolls across a tessellated surface.
 
-Placement, applied once in the order given (LIGGGHTS): ``scale S`` (about the origin), ``move DX DY
-DZ`` (distance), ``rotate axis AX AY AZ angle DEG`` (about the axis through the origin, right-hand
-rule, degrees).
+Placement, applied once in the order given (LIGGGHTS), each as often as it is given: ``scale S``
+(about the origin), ``move DX DY DZ`` (distance), ``rotate axis AX AY AZ angle DEG`` (about the axis
+through the origin, right-hand rule, degrees).
 
 Motion:
 
@@ -68,6 +68,8 @@ Syntax::
         [velocity VX VY VZ] [omega WX WY WZ about PX PY PZ] [surface_vel VX VY VZ]
         model lsd e kn Cn kt Ct mu | model lsd e kn mu | model hertz Y nu e mu
 
+The keywords stand in any order.
+
 Example::
 
     fix chute all wall/mesh file chute.stl scale 0.001 rotate axis 0 1 0 angle 30 model lsd 0.8 2e5 0.3
@@ -78,12 +80,13 @@ import contextlib
 import io
 import math
 import os
+from typing import Literal
 
 import meshio
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, number, observables
+from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, keyword, observables
 from pdps_granular_contact import liggghts
 
 from .wall_contact import (HISTORY_WIDTH, LOG_COLUMNS, TRANSFER_COS, ContactLaw, check_law_numbers,
@@ -144,58 +147,67 @@ def unit(vector, what):
 
 
 # ---- script words shared by the mesh styles ------------------------------------------------------
-PLACEMENT = ("scale", "move", "rotate")
+Placement = (tuple[Literal["scale"], float] | tuple[Literal["move"], float, float, float]
+             | tuple[Literal["rotate"], Literal["axis"], float, float, float, Literal["angle"], float])
+Vector = tuple[float, float, float]
 
 
-def read_keywords(words, arity, stop=None):
-    """``{keyword: its values}`` and the placement keywords in the order given, from words of
-    ``keyword values...`` pairs (``arity``: how many values each takes); the words after ``stop``
-    (a keyword ending the list) are its values, all of them."""
-    given, transforms, k = {}, [], 0
-    while k < len(words):
-        word = words[k]
-        if word == stop:
-            given[stop] = words[k + 1:]
-            break
-        if word not in arity:
-            known = ", ".join(list(arity) + ([stop] if stop else []))
-            raise ScriptError(f"unknown keyword {word} (known: {known})")
-        if word in given:
-            raise ScriptError(f"keyword {word} is given twice")
-        values = words[k + 1:k + 1 + arity[word]]
-        short = [w for w in values if w in arity or w == stop]
-        if len(values) < arity[word] or short:
-            taken = values[:values.index(short[0])] if short else values
-            raise ScriptError(f"keyword {word} needs {arity[word]} value(s) "
-                              f"(got {' '.join(taken) or 'none'})")
-        given[word] = values
-        if word in PLACEMENT:
-            transforms.append(word)
-        k += 1 + arity[word]
-    return given, transforms
+class PlacedMeshArgs(StyleArgs):
+    """``scale S``, ``move DX DY DZ``, ``rotate axis AX AY AZ angle DEG``: each may be given again,
+    and all are applied once in the order written (LIGGGHTS)."""
+    placement: list[Placement] = keyword(default_factory=list, spelled_by_entries=True, unit={
+        "scale": "1", "move": "distance", "rotate": ("1", "degrees")})
 
 
-def placed_mesh(sim, given, transforms):
-    """(vertices, triangles) of the mesh file ``given["file"]``, scaled, moved and rotated once
-    in the order given (LIGGGHTS's fix mesh/surface)."""
-    shown = given["file"][0]
+def check_placement(placement):
+    """A one-line error for a scale that is not > 0 or a rotation axis of zero length."""
+    for word, *values in placement:
+        if word == "scale" and not values[0] > 0.0:
+            raise ScriptError(f"scale must be > 0 (got {values[0]:g})")
+        if word == "rotate":
+            unit(values[1:4], "rotate axis")
+
+
+def placed_mesh(sim, shown, placement):
+    """(vertices, triangles) of the mesh file ``shown``, scaled, moved and rotated once in the
+    order given (LIGGGHTS's fix mesh/surface)."""
     points, triangles = read_triangles(sim.resolve(shown), shown)
-    for word in transforms:
+    for word, *values in placement:
         if word == "scale":
-            (factor,) = [number(text, "scale", representable=True) for text in given[word]]
-            if not factor > 0.0:
-                raise ScriptError(f"scale must be > 0 (got {factor:g})")
-            points = points * factor
+            points = points * values[0]
         elif word == "move":
-            points = points + [number(text, "move", representable=True) for text in given[word]]
+            points = points + values
         else:
-            w = given[word]
-            if w[0] != "axis" or w[4] != "angle":
-                raise ScriptError(f"rotate takes axis AX AY AZ angle DEG (got {' '.join(w)})")
-            axis = unit([number(text, "rotate axis", representable=True) for text in w[1:4]], "rotate axis")
-            (angle,) = [number(text, "rotate angle", representable=True) for text in w[5:6]]
-            points = points @ rotation_matrix(axis, math.radians(angle)).T
+            axis = unit(values[1:4], "rotate axis")
+            points = points @ rotation_matrix(axis, math.radians(values[5])).T
     return np.ascontiguousarray(points), triangles
+
+
+# the contact law: PDPS's lsd, lsd from the restitution coefficient, LIGGGHTS's hertz
+LawWords = (tuple[Literal["lsd"], float, float, float, float, float, float]
+            | tuple[Literal["lsd"], float, float, float] | tuple[Literal["hertz"], float, float, float, float])
+LAW_UNITS = {"lsd e kn Cn kt Ct mu": ("1", "force/distance", "force/velocity", "force/distance", "force/velocity", "1"),
+             "lsd e kn mu": ("1", "force/distance", "1"), "hertz Y nu e mu": ("pressure", "1", "1", "1")}
+
+
+def contact_law(words):
+    """The ContactLaw of ``model ...`` words read into LawWords; one-line errors for bad values."""
+    model, *values = words
+    if model == "lsd" and len(values) == 6:
+        e, kn, cn, kt, ct, mu = values
+        check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
+        return ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
+    if model == "lsd":
+        e, kn, mu = values
+        check_law_numbers(e=e, kn=kn, mu=mu)
+        return ContactLaw.lsd(kn, mu, e=e)
+    youngs, poisson, e, mu = values
+    if not youngs > 0.0:
+        raise ScriptError(f"Y must be > 0 (got {youngs:g})")
+    if not -1.0 < poisson < 0.5:
+        raise ScriptError(f"nu must be in (-1, 0.5) (got {poisson:g})")
+    check_law_numbers(e=e, mu=mu)
+    return ContactLaw.hertz(youngs, poisson, e, mu)
 
 
 def mesh_fix(sim, ident):
@@ -709,12 +721,32 @@ class FixWallMesh(Fix):
              "[surface_vel VX VY VZ] model lsd e kn Cn kt Ct mu | model lsd e kn mu | "
              "model hertz Y nu e mu")
 
-    class Args(StyleArgs):
-        words: list[str]
+    class Args(PlacedMeshArgs):
+        file: str | None = keyword(None)
+        mesh: str | None = keyword(None, names="fix mesh/surface ID")
+        velocity: Vector | None = keyword(None, unit="velocity")
+        omega: tuple[float, float, float, Literal["about"], float, float, float] | None = keyword(
+            None, unit=("angle/time", "angle/time", "angle/time", "1", "distance", "distance", "distance"))
+        surface_vel: Vector | None = keyword(None, unit="velocity")
+        model: LawWords = keyword(..., unit=LAW_UNITS)
+
+    @classmethod
+    def check_args(cls, args):
+        motion = [word for word in ("velocity", "omega", "surface_vel") if getattr(args, word) is not None]
+        if args.mesh is not None:
+            others = (["file"] if args.file is not None else []) + [entry[0] for entry in args.placement] + motion
+            if others:
+                raise ScriptError(f"mesh MESH_ID takes its geometry and motion from the fix mesh/surface; "
+                                  f"{others[0]} cannot be given with it")
+        elif args.file is None:
+            raise ScriptError(f"missing keyword file or mesh; usage: {cls.usage}")
+        check_placement(args.placement)
+        if args.surface_vel is not None and len(motion) > 1:
+            raise ScriptError("surface_vel (a conveyor) cannot be combined with velocity or omega")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        self._read_words(sim, list(args.words))
+        self._read_args(sim, args)
         self.contacts = MeshContacts(sim, self.surface, f"wall_{id}", group)
         self.laws = (self.law.model, self.law.table(sim.ntypes))
         self.elapsed = 0.0
@@ -735,71 +767,22 @@ class FixWallMesh(Fix):
         return self.contacts.near
 
     # ---- script words ----
-    def _read_words(self, sim, words):
-        arity = {"file": 1, "scale": 1, "move": 3, "rotate": 6, "velocity": 3, "omega": 7,
-                 "surface_vel": 3}
-        given, transforms = read_keywords(words, {**arity, "mesh": 1}, stop="model")
-        if "model" not in given:
-            raise ScriptError(f"missing keyword model; usage: {self.usage}")
-        if "mesh" in given:
-            others = [word for word in given if word not in ("mesh", "model")]
-            if others:
-                raise ScriptError(f"mesh MESH_ID takes its geometry and motion from the fix mesh/surface; "
-                                  f"{others[0]} cannot be given with it")
-            self.surface = mesh_fix(sim, given["mesh"][0])
-            self.law = self._read_model(given["model"])
+    def _read_args(self, sim, args):
+        self.law = contact_law(args.model)
+        if args.mesh is not None:
+            self.surface = mesh_fix(sim, args.mesh)
             self.moving = False
             return
-        if "file" not in given:
-            raise ScriptError(f"missing keyword file or mesh; usage: {self.usage}")
         self.surface = self
-        self.file = given["file"][0]
-        points, self.triangles = placed_mesh(sim, given, transforms)
+        self.file = args.file
+        points, self.triangles = placed_mesh(sim, args.file, args.placement)
         self.placed = np.ascontiguousarray(points)
-        self.velocity = np.array([number(text, "velocity", representable=True) for text in given["velocity"]]
-                                 if "velocity" in given else [0.0, 0.0, 0.0])
-        self.spin = np.zeros(3)
-        self.pivot0 = np.zeros(3)
-        if "omega" in given:
-            w = given["omega"]
-            if w[3] != "about":
-                raise ScriptError(f"omega takes WX WY WZ about PX PY PZ (got {' '.join(w)})")
-            self.spin = np.array([number(text, "omega", representable=True) for text in w[:3]])
-            self.pivot0 = np.array([number(text, "omega point", representable=True) for text in w[4:]])
-        self.belt = np.array([number(text, "surface_vel", representable=True) for text in given["surface_vel"]]
-                             if "surface_vel" in given else [0.0, 0.0, 0.0])
-        self.conveyor = "surface_vel" in given
+        self.velocity = np.array(args.velocity or (0.0, 0.0, 0.0))
+        self.spin = np.array(args.omega[:3] if args.omega else (0.0, 0.0, 0.0))
+        self.pivot0 = np.array(args.omega[4:] if args.omega else (0.0, 0.0, 0.0))
+        self.belt = np.array(args.surface_vel or (0.0, 0.0, 0.0))
+        self.conveyor = args.surface_vel is not None
         self.moving = bool(np.any(self.velocity) or np.any(self.spin))
-        if self.conveyor and ("velocity" in given or "omega" in given):
-            raise ScriptError("surface_vel (a conveyor) cannot be combined with velocity or omega")
-        self.law = self._read_model(given["model"])
-
-    def _read_model(self, words):
-        if not words:
-            raise ScriptError("model needs lsd or hertz and its parameters")
-        model, numbers = words[0], words[1:]
-        if model == "lsd":
-            if len(numbers) == 6:
-                e, kn, cn, kt, ct, mu = [number(text, "model lsd parameter", representable=True) for text in numbers]
-                check_law_numbers(e=e, kn=kn, cn=cn, kt=kt, ct=ct, mu=mu)
-                return ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
-            if len(numbers) == 3:
-                e, kn, mu = [number(text, "model lsd parameter", representable=True) for text in numbers]
-                check_law_numbers(e=e, kn=kn, mu=mu)
-                return ContactLaw.lsd(kn, mu, e=e)
-            raise ScriptError(f"model lsd takes e kn Cn kt Ct mu, or e kn mu "
-                              f"(got {' '.join(numbers) or 'nothing'})")
-        if model == "hertz":
-            if len(numbers) != 4:
-                raise ScriptError(f"model hertz takes Y nu e mu (got {' '.join(numbers) or 'nothing'})")
-            youngs, poisson, e, mu = [number(text, "model hertz parameter", representable=True) for text in numbers]
-            if not youngs > 0.0:
-                raise ScriptError(f"Y must be > 0 (got {youngs:g})")
-            if not -1.0 < poisson < 0.5:
-                raise ScriptError(f"nu must be in (-1, 0.5) (got {poisson:g})")
-            check_law_numbers(e=e, mu=mu)
-            return ContactLaw.hertz(youngs, poisson, e, mu)
-        raise ScriptError(f"model must be one of lsd, hertz (got {model})")
 
     # ---- mesh motion and candidate lists ----
     def _place(self):

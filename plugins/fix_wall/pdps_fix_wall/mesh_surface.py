@@ -5,7 +5,7 @@ make it a granular wall, ``fix move/mesh`` moves it, ``dump vtk ... walls yes`` 
 Geometry: the triangles of the file (STL ascii or binary, VTK, OBJ, ...: anything meshio reads; quads
 are split in two), placed once by ``scale S`` (about the origin), ``move DX DY DZ`` (distance) and
 ``rotate axis AX AY AZ angle DEG`` (about the axis through the origin, right-hand rule, degrees) in
-the order given. ``type N`` is the wall's material type (LIGGGHTS: the atom type whose
+the order given, each as often as it is given. ``type N`` is the wall's material type (LIGGGHTS: the atom type whose
 ``fix property/global`` material the wall has; default 1).
 
 Surface motion without moving the mesh (LIGGGHTS's conveyor keywords):
@@ -40,7 +40,8 @@ contacts; pdps finds those from the geometry alone (fix wall/mesh's docstring).
 
 The group is not used (the wall fix's group says which particles see the mesh). LIGGGHTS keywords
 pdps does not honour are refused by name: ``precision`` and ``heal auto_remove_duplicates`` (meshio
-merges only identical nodes), ``temperature`` (no heat conduction with walls).
+merges only identical nodes), ``temperature`` (no heat conduction with walls),
+``element_exclusion_list`` (every triangle of the file is kept).
 
 Example::
 
@@ -48,21 +49,21 @@ Example::
 """
 
 import math
+from typing import Literal
 
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, number
+from pdps_core.api import Fix, ScriptError, keyword
 
-from .mesh import belt_on_face, face_normals, placed_mesh, read_keywords, rigid_velocity, unit
+from .mesh import (PlacedMeshArgs, Vector, belt_on_face, check_placement, face_normals, placed_mesh, rigid_velocity,
+                   unit)
 from .wall_contact import TRANSFER_COS
 
-SURFACE_ARITY = {"file": 1, "type": 1, "verbose": 1, "heal": 1, "precision": 1, "curvature": 1,
-                 "temperature": 1, "scale": 1, "move": 3, "rotate": 6, "surface_vel": 3,
-                 "surface_ang_vel": 10}
 REFUSED = {
     "precision": "pdps merges only identical nodes (meshio)",
     "temperature": "pdps has no heat conduction with walls",
+    "element_exclusion_list": "pdps keeps every triangle of the file",
 }
 
 
@@ -93,71 +94,57 @@ class FixMeshSurface(Fix):
     usage = ("fix ID GROUP mesh/surface file FILE [type N] [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [surface_vel VX VY VZ | "
              "surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]")
-    extra_arity: dict = {}
+    refused = REFUSED
 
-    class Args(StyleArgs):
-        words: list[str]
+    class Args(PlacedMeshArgs):
+        file: str = keyword(...)
+        type: int = keyword(1, unit="1")
+        verbose: Literal["yes", "no"] = keyword("no")
+        heal: Literal["no", "auto_remove_duplicates"] = keyword("no")
+        curvature: float | None = keyword(None, unit="degrees")
+        surface_vel: Vector | None = keyword(None, unit="velocity")
+        surface_ang_vel: tuple[Literal["origin"], float, float, float, Literal["axis"], float, float, float,
+                               Literal["omega"], float] | None = keyword(None, unit=(
+                                   "1", "distance", "distance", "distance", "1", "1", "1", "1", "1", "angle/time"))
+
+    @classmethod
+    def check_args(cls, args):
+        if args.heal != "no":
+            raise ScriptError(f"heal {args.heal} is not supported (heal no only): pdps merges "
+                              "only identical nodes (meshio)")
+        check_placement(args.placement)
+        if args.surface_vel is not None and args.surface_ang_vel is not None:
+            raise ScriptError("surface_vel and surface_ang_vel cannot both be given")
+        if args.surface_ang_vel is not None:
+            unit(args.surface_ang_vel[5:8], "surface_ang_vel axis")
+        if args.curvature is not None and not 0.0 < args.curvature <= 90.0:
+            raise ScriptError(f"curvature must be in (0, 90] degrees (got {args.curvature:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        given, transforms = read_keywords(list(args.words), {**SURFACE_ARITY, **self.extra_arity})
-        if "file" not in given:
-            raise ScriptError(f"missing keyword file; usage: {self.usage}")
-        for word, reason in REFUSED.items():
-            if word in given:
-                raise ScriptError(f"keyword {word} is not supported: {reason}")
-        if "heal" in given and given["heal"][0] != "no":
-            raise ScriptError(f"heal {given['heal'][0]} is not supported (heal no only): pdps merges "
-                              "only identical nodes (meshio)")
-        if "verbose" in given and given["verbose"][0] not in ("yes", "no"):
-            raise ScriptError(f"verbose must be yes or no (got {given['verbose'][0]})")
-        self.file = given["file"][0]
-        self.material_type = self._read_type(sim, given)
-        self.placed, self.triangles = placed_mesh(sim, given, transforms)
+        if not 1 <= args.type <= sim.ntypes:
+            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {args.type})")
+        self.file = args.file
+        self.material_type = args.type
+        self.placed, self.triangles = placed_mesh(sim, args.file, args.placement)
         self.vertices = self.placed.copy()
         self.face_normal = face_normals(self.vertices, self.triangles)
         self.velocity, self.spin, self.pivot = np.zeros(3), np.zeros(3), np.zeros(3)
-        self.belt = np.zeros(3)
-        self.conveyor = "surface_vel" in given
-        if self.conveyor and "surface_ang_vel" in given:
-            raise ScriptError("surface_vel and surface_ang_vel cannot both be given")
-        if self.conveyor:
-            self.belt = np.array([number(text, "surface_vel", representable=True) for text in given["surface_vel"]])
-        if "surface_ang_vel" in given:
-            w = given["surface_ang_vel"]
-            if w[0] != "origin" or w[4] != "axis" or w[8] != "omega":
-                raise ScriptError("surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W "
-                                  f"(got {' '.join(w)})")
-            self.pivot = np.array([number(text, "surface_ang_vel origin", representable=True) for text in w[1:4]])
-            axis = unit([number(text, "surface_ang_vel axis", representable=True) for text in w[5:8]],
-                        "surface_ang_vel axis")
-            (omega,) = [number(text, "surface_ang_vel omega", representable=True) for text in w[9:10]]
-            self.spin = axis * omega
-        self.transfer_cos = TRANSFER_COS
-        if "curvature" in given:
-            (degrees,) = [number(text, "curvature", representable=True) for text in given["curvature"]]
-            if not 0.0 < degrees <= 90.0:
-                raise ScriptError(f"curvature must be in (0, 90] degrees (got {given['curvature'][0]})")
-            self.transfer_cos = math.cos(math.radians(degrees))
-        self.surface_motion = "surface_vel" in given or "surface_ang_vel" in given
+        self.conveyor = args.surface_vel is not None
+        self.belt = np.array(args.surface_vel or (0.0, 0.0, 0.0))
+        if args.surface_ang_vel is not None:
+            words = args.surface_ang_vel
+            self.pivot = np.array(words[1:4])
+            self.spin = unit(words[5:8], "surface_ang_vel axis") * words[9]
+        self.transfer_cos = TRANSFER_COS if args.curvature is None else math.cos(math.radians(args.curvature))
+        self.surface_motion = self.conveyor or args.surface_ang_vel is not None
         self.moving = False
         self.movers = []
-        self.extra_keywords(sim, given)
+        self.extra_keywords(sim, args)
 
-    def _read_type(self, sim, given):
-        if "type" not in given:
-            return 1
-        word = given["type"][0]
-        try:
-            kind = int(word)
-        except ValueError:
-            raise ScriptError(f"type must be a whole number (got {word})") from None
-        if not 1 <= kind <= sim.ntypes:
-            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {word})")
-        return kind
-
-    def extra_keywords(self, sim, given):
-        """Keywords of a derived style (mesh/surface/stress)."""
+    def extra_keywords(self, sim, args):
+        """What a derived style makes of its own keywords (mesh/surface/stress), or its checks of
+        the mesh read (mesh/surface/planar)."""
 
     # ---- motion: fix move/mesh registers here and calls place() after each step's advance ----
     def add_mover(self, mover):

@@ -29,7 +29,7 @@ class FixMeshSurfacePlanar(FixMeshSurface):
     usage = ("fix ID GROUP mesh/surface/planar file FILE [type N] [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG]")
 
-    def extra_keywords(self, sim, given):
+    def extra_keywords(self, sim, args):
         origin = self.placed[self.triangles[0, 0]]
         distance = np.abs((self.placed - origin) @ self.face_normal[0])
         size = float(np.ptp(self.placed, axis=0).max())

@@ -45,9 +45,11 @@ Example::
     thermo_style custom step atoms f_floor[3]
 """
 
+from typing import Literal
+
 import numpy as np
 
-from pdps_core.api import ScriptError, number
+from pdps_core.api import ScriptError, keyword
 from pdps_granular_contact.liggghts import find_property
 
 from .mesh_surface import FixMeshSurface
@@ -58,20 +60,16 @@ class FixMeshSurfaceStress(FixMeshSurface):
     minimize_idle = True         # it only measures the mesh's forces
     usage = ("fix ID GROUP mesh/surface/stress file FILE [type N] [scale S] [move DX DY DZ] "
              "[rotate axis AX AY AZ angle DEG] [stress on|off] [reference_point RX RY RZ] [wear finnie|off]")
-    extra_arity = {"stress": 1, "reference_point": 3, "wear": 1}
 
-    def extra_keywords(self, sim, given):
-        self.stress = True
-        if "stress" in given:
-            if given["stress"][0] not in ("on", "off"):
-                raise ScriptError(f"stress must be on or off (got {given['stress'][0]})")
-            self.stress = given["stress"][0] == "on"
-        wear = given.get("wear", ["off"])[0]
-        if wear not in ("finnie", "off"):
-            raise ScriptError(f"wear must be finnie or off (got {wear})")
-        self.wear = wear == "finnie"
-        point = given.get("reference_point", ["0", "0", "0"])
-        self.reference = np.array([number(text, "reference_point", representable=True) for text in point])
+    class Args(FixMeshSurface.Args):
+        stress: Literal["on", "off"] = keyword("on")
+        reference_point: tuple[float, float, float] = keyword((0.0, 0.0, 0.0), unit="distance")
+        wear: Literal["finnie", "off"] = keyword("off")
+
+    def extra_keywords(self, sim, args):
+        self.stress = args.stress == "on"
+        self.wear = args.wear == "finnie"
+        self.reference = np.array(args.reference_point)
         self.face_force = np.zeros((len(self.triangles), 3))
         self.torque_sum = np.zeros(3)
         self.face_wear = np.zeros(len(self.triangles))
@@ -135,4 +133,7 @@ class FixMeshSurfaceStress(FixMeshSurface):
 
     def restore(self, state):
         saved = np.asarray(state["face_wear"], dtype=float)
+        if saved.shape != self.face_wear.shape:
+            raise ScriptError(f"fix {self.id} (mesh/surface/stress): the saved wear holds {saved.size} value(s) "
+                              f"for {len(self.triangles)} triangles")
         self.face_wear = saved.copy() if self.sim.comm.is_root else np.zeros_like(saved)

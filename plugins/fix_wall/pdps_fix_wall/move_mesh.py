@@ -33,6 +33,9 @@ Syntax::
 
     fix ID GROUP move/mesh mesh MESH_ID STYLE ARGS
 
+The keywords of ARGS (``amplitude``, ``origin``, ``axis``, ``period``, ``omega``, ``order``,
+``phase``) stand in any order; each motion takes those its line above names, no others.
+
 Examples::
 
     fix shake all move/mesh mesh floor wiggle amplitude 0 0 0.01 period 0.05
@@ -40,16 +43,24 @@ Examples::
 """
 
 import math
+from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Fix, MeshSurface, ScriptError, StyleArgs, VariableRef, number
+from pdps_core.api import FloatOrVariable, Fix, MeshSurface, ScriptError, StyleArgs, VariableRef, keyword, param
 
 from .mesh import rotation_matrix, unit
 
 MAX_ORDER = 10
 STILL, NO_TURN = np.eye(3), np.zeros((3, 3))    # read only: the pose of a translation
 STILL.flags.writeable = False
+# the keywords each motion takes (all of them, in any order)
+MOTION_WORDS = {"linear": (), "linear/variable": (), "wiggle": ("amplitude", "period"),
+                "rotate": ("origin", "axis", "period"), "rotate/variable": ("origin", "axis", "omega"),
+                "riggle": ("origin", "axis", "period", "amplitude"),
+                "viblin": ("axis", "order", "amplitude", "phase", "period"),
+                "vibrot": ("origin", "axis", "order", "amplitude", "phase", "period")}
+ALL_WORDS = ("origin", "axis", "order", "amplitude", "phase", "period", "omega")
 NO_TURN.flags.writeable = False
 
 
@@ -76,141 +87,94 @@ class FixMoveMesh(Fix):
              "vibrot origin PX PY PZ axis AX AY AZ order N amplitude C1..CN phase P1..PN period T")
 
     class Args(StyleArgs):
-        words: list[str]
+        # needed: the default only lets a motion written first be named as the wrong word
+        mesh: tuple[Literal["mesh"], str] | None = param(None, names="fix mesh/surface ID")
+        motion: (tuple[Literal["linear"], float, float, float]
+                 | tuple[Literal["linear/variable"], FloatOrVariable, FloatOrVariable, FloatOrVariable]
+                 | tuple[Literal["wiggle", "rotate", "rotate/variable", "riggle", "viblin", "vibrot"]]) = param(
+            unit={"linear": ("1", "velocity"), "linear/variable": ("1", "velocity")})
+        origin: tuple[float, float, float] | None = keyword(None, unit="distance")
+        axis: tuple[float, float, float] | None = keyword(None, unit="1")
+        order: int | None = keyword(None, unit="1")
+        amplitude: tuple[float, ...] | None = keyword(None, unit={
+            "wiggle": "distance", "riggle": "degrees", "viblin": "distance", "vibrot": "angle"})
+        phase: tuple[float, ...] | None = keyword(None, unit="angle")
+        period: float | None = keyword(None, unit="time")
+        omega: FloatOrVariable | None = keyword(None, unit="angle/time")
+
+    @classmethod
+    def check_args(cls, args):
+        if args.mesh is None:
+            raise ScriptError(f"expected mesh MESH_ID and a motion; usage: {cls.usage}")
+        style = args.motion[0]
+        needed = MOTION_WORDS[style]
+        given = [word for word in ALL_WORDS if getattr(args, word) is not None]
+        usage = cls.style_usage(style)
+        missing = [word for word in needed if word not in given]
+        if missing:
+            raise ScriptError(f"{style}: expected keyword {missing[0]}; usage: {usage}")
+        extra = [word for word in given if word not in needed]
+        if extra:
+            raise ScriptError(f"{style} takes no {extra[0]}; usage: {usage}")
+        if args.order is not None and not 1 <= args.order <= MAX_ORDER:
+            raise ScriptError(f"{style}: order must be from 1 to {MAX_ORDER} (got {args.order})")
+        counts = {"wiggle": 3, "riggle": 1, "viblin": args.order, "vibrot": args.order}
+        for word in ("amplitude", "phase"):
+            values = getattr(args, word)
+            if values is not None and len(values) != counts[style]:
+                raise ScriptError(f"{style}: {word} needs {counts[style]} value(s) "
+                                  f"(got {' '.join(f'{v:g}' for v in values) or 'none'})")
+        if args.period is not None and not args.period > 0.0:
+            raise ScriptError(f"{style}: period must be > 0 (got {args.period:g})")
+        if args.axis is not None:
+            unit(args.axis, f"{style} axis")
+        variables = {"rotate/variable": [args.omega], "linear/variable": args.motion[1:]}.get(style, ())
+        for value in variables:
+            if not isinstance(value, VariableRef):
+                raise ScriptError(f"{style}: expected a variable v_NAME (got {value:g})")
+
+    @classmethod
+    def style_usage(cls, style):
+        for part in cls.usage.split(" | "):
+            if f" {style} " in f" {part} ":
+                return part.replace("fix ID GROUP move/mesh mesh MESH_ID ", "")
+        return cls.usage
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        if len(words) < 3 or words[0] != "mesh":
-            raise ScriptError(f"expected mesh MESH_ID and a motion; usage: {self.usage}")
-        mesh = sim.fixes.get(words[1])
+        ident = args.mesh[1]
+        mesh = sim.fixes.get(ident)
         if mesh is None:
-            raise ScriptError(f"fix {words[1]} is not defined (move/mesh needs a fix mesh/surface ID)")
+            raise ScriptError(f"fix {ident} is not defined (move/mesh needs a fix mesh/surface ID)")
         if not isinstance(mesh, MeshSurface):
-            raise ScriptError(f"fix {words[1]} ({mesh.name}) is not a mesh/surface: it cannot be moved")
-        self.style = words[2]
-        readers = {"linear": self._linear, "linear/variable": self._linear_variable,
-                   "wiggle": self._wiggle, "rotate": self._rotate, "rotate/variable": self._rotate_variable,
-                   "riggle": self._riggle, "viblin": self._viblin, "vibrot": self._vibrot}
-        if self.style not in readers:
-            raise ScriptError(f"motion must be one of {', '.join(readers)} (got {self.style})")
+            raise ScriptError(f"fix {ident} ({mesh.name}) is not a mesh/surface: it cannot be moved")
+        self.style, *velocity = args.motion
         self.elapsed = 0.0
         self.integrated = np.zeros(3)        # linear/variable: d; rotate/variable: [angle, 0, 0]
         self.rate = np.zeros(3)
-        readers[self.style](sim, words[3:])
+        if self.style == "linear":
+            self.velocity = np.array(velocity, dtype=float)
+        elif self.style == "linear/variable":
+            self.velocity_variables = velocity
+        elif self.style == "rotate/variable":
+            self.omega_variable = args.omega
+        if args.period is not None:
+            self.omega = 2.0 * math.pi / args.period
+        if args.origin is not None:
+            self.origin = np.array(args.origin)
+        if args.axis is not None:
+            self.axis = unit(args.axis, f"{self.style} axis")
+        if self.style == "wiggle":
+            self.amplitude = np.array(args.amplitude)
+        elif self.style == "riggle":
+            self.angle_amplitude = math.radians(args.amplitude[0])
+        elif self.style in ("viblin", "vibrot"):
+            self.order = args.order
+            self.coefficients = np.array(args.amplitude)
+            self.phases = np.array(args.phase)
+            self.direction = self.axis
         self.mesh = mesh
         mesh.add_mover(self)
-
-    # ---- reading the motions ----
-    def _expect(self, words, layout):
-        """Values of ``layout`` = [(keyword or None, count)], in that order, as lists of words."""
-        values, k = [], 0
-        keywords = {keyword for keyword, _ in layout if keyword is not None}
-        for keyword, count in layout:
-            if keyword is not None:
-                if k >= len(words) or words[k] != keyword:
-                    got = words[k] if k < len(words) else "nothing"
-                    raise ScriptError(f"{self.style}: expected keyword {keyword} (got {got}); usage: "
-                                      f"{self._style_usage()}")
-                k += 1
-            chunk = words[k:k + count]
-            cut = [w for w in chunk if w in keywords]
-            if cut:
-                chunk = chunk[:chunk.index(cut[0])]
-            if len(chunk) < count:
-                raise ScriptError(f"{self.style}: {keyword or 'it'} needs {count} value(s) "
-                                  f"(got {' '.join(chunk) or 'none'})")
-            values.append(chunk)
-            k += count
-        if k < len(words):
-            raise ScriptError(f"{self.style}: unexpected words {' '.join(words[k:])}; usage: "
-                              f"{self._style_usage()}")
-        return values
-
-    def _style_usage(self):
-        for part in self.usage.split(" | "):
-            if part.split()[-1:] and (f" {self.style} " in f" {part} "):
-                return part.replace("fix ID GROUP move/mesh mesh MESH_ID ", "")
-        return self.usage
-
-    def _period(self, word):
-        (period,) = [number(text, f"{self.style} period", representable=True) for text in [word]]
-        if not period > 0.0:
-            raise ScriptError(f"{self.style}: period must be > 0 (got {word})")
-        return period
-
-    def _variables(self, sim, words):
-        refs = []
-        for word in words:
-            if not word.startswith("v_"):
-                raise ScriptError(f"{self.style}: expected a variable v_NAME (got {word})")
-            refs.append(VariableRef(word[2:]))
-        return refs
-
-    def _linear(self, sim, words):
-        (v,) = self._expect(words, [(None, 3)])
-        self.velocity = np.array([number(text, "linear velocity", representable=True) for text in v])
-
-    def _linear_variable(self, sim, words):
-        (v,) = self._expect(words, [(None, 3)])
-        self.velocity_variables = self._variables(sim, v)
-
-    def _wiggle(self, sim, words):
-        a, t = self._expect(words, [("amplitude", 3), ("period", 1)])
-        self.amplitude = np.array([number(text, "wiggle amplitude", representable=True) for text in a])
-        self.omega = 2.0 * math.pi / self._period(t[0])
-
-    def _axis_origin(self, origin, axis):
-        self.origin = np.array([number(text, f"{self.style} origin", representable=True) for text in origin])
-        self.axis = unit([number(text, f"{self.style} axis", representable=True) for text in axis],
-                         f"{self.style} axis")
-
-    def _rotate(self, sim, words):
-        p, a, t = self._expect(words, [("origin", 3), ("axis", 3), ("period", 1)])
-        self._axis_origin(p, a)
-        self.omega = 2.0 * math.pi / self._period(t[0])
-
-    def _rotate_variable(self, sim, words):
-        p, a, w = self._expect(words, [("origin", 3), ("axis", 3), ("omega", 1)])
-        self._axis_origin(p, a)
-        self.omega_variable = self._variables(sim, w)[0]
-
-    def _riggle(self, sim, words):
-        p, a, t, amplitude = self._expect(words, [("origin", 3), ("axis", 3), ("period", 1),
-                                                  ("amplitude", 1)])
-        self._axis_origin(p, a)
-        self.omega = 2.0 * math.pi / self._period(t[0])
-        (degrees,) = [number(text, "riggle amplitude", representable=True) for text in amplitude]
-        self.angle_amplitude = math.radians(degrees)
-
-    def _series(self, words, head):
-        """The order, amplitudes and phases of viblin and vibrot after their ``head`` words."""
-        k = sum(1 + count for _, count in head)
-        if len(words) < k + 2 or words[k] != "order":
-            got = words[k] if len(words) > k else "nothing"
-            raise ScriptError(f"{self.style}: expected keyword order (got {got}); usage: {self._style_usage()}")
-        try:
-            order = int(words[k + 1])
-        except ValueError:
-            raise ScriptError(f"{self.style}: order must be a whole number (got {words[k + 1]})") from None
-        if not 1 <= order <= MAX_ORDER:
-            raise ScriptError(f"{self.style}: order must be from 1 to {MAX_ORDER} (got {order})")
-        values = self._expect(words, head + [("order", 1), ("amplitude", order), ("phase", order),
-                                             ("period", 1)])
-        self.order = order
-        self.coefficients = np.array([number(text, f"{self.style} amplitude", representable=True)
-                                      for text in values[-3]])
-        self.phases = np.array([number(text, f"{self.style} phase", representable=True) for text in values[-2]])
-        self.omega = 2.0 * math.pi / self._period(values[-1][0])
-        return values
-
-    def _viblin(self, sim, words):
-        values = self._series(words, [("axis", 3)])
-        self.direction = unit([number(text, "viblin axis", representable=True) for text in values[0]], "viblin axis")
-
-    def _vibrot(self, sim, words):
-        values = self._series(words, [("origin", 3), ("axis", 3)])
-        self._axis_origin(values[0], values[1])
 
     # ---- the motion now ----
     def _series_value(self, t):

@@ -70,7 +70,7 @@ with gamma_n = 0 the tangential damping is m_i gamma_t (LAMMPS's fix computes ga
 gives NaN); a particle whose centre lies exactly on the wall feels no force (no normal). The
 ``region`` wall style and ``contacts``/``temperature`` keywords of LAMMPS are not supported.
 
-LIGGGHTS's spelling (the first word ``model``) is a style of its own, pdps_fix_wall.wall_gran_model,
+LIGGGHTS's spelling (a line with the keyword ``model``) is a style of its own, pdps_fix_wall.wall_gran_model,
 whose docstring gives the physics: LIGGGHTS's contact models of pair gran (hertz, hooke, rolling
 friction, cohesion) with the wall as a body of infinite mass and radius, the material of the type
 pair (particle, wall) from fix property/global::
@@ -95,8 +95,9 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
+from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, parse_args
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 from pdps_granular_contact import contact_models, lammps_classic
 from pdps_granular_contact.lammps_classic import NullableFloat
 
@@ -108,25 +109,11 @@ Axis = Literal["x", "y", "z"]
 
 
 class LawStyle(StyleArgs):
-    style: Literal["hooke", "hooke/history", "hertz/history"]
+    style: Literal["hooke", "hooke/history", "hertz/history"] = param()
 
 
-class WallStyle(StyleArgs):
-    wallstyle: Literal["xplane", "yplane", "zplane", "zcylinder"]
-
-
-class Motion(StyleArgs):
-    wiggle: tuple[Axis, float, float] | None = keyword(None, unit="distance")
-    shear: tuple[Axis, float] | None = keyword(None, unit="velocity")
-
-
-class PlaneWall(Motion):
-    lo: NullableFloat = param(unit="distance")
-    hi: NullableFloat = param(unit="distance")
-
-
-class CylinderWall(Motion):
-    radius: float = param(gt=0, unit="distance")
+WallWords = (tuple[Literal["xplane", "yplane", "zplane"], NullableFloat, NullableFloat]
+             | tuple[Literal["zcylinder"], float])
 
 
 @njit(cache=True)
@@ -220,41 +207,61 @@ class FixWallGran(Fix):
     usage = ("fix ID GROUP wall/gran hooke|hooke/history|hertz/history Kn Kt gamma_n gamma_t xmu dampflag "
              "[limit_damping] xplane|yplane|zplane LO HI | zcylinder RADIUS [wiggle dim A T] [shear dim V]")
 
-    class Args(StyleArgs):
-        words: list[str] = []
+    class Args(lammps_classic.ClassicLaw, LawStyle):
+        limit_damping: Literal["limit_damping"] | None = param(None)
+        wallstyle: WallWords = param(unit={"xplane|yplane|zplane LO HI": ("1", "distance", "distance"),
+                                           "zcylinder RADIUS": ("1", "distance")})
+        wiggle: tuple[Axis, float, float] | None = keyword(None, unit=("1", "distance", "time"))
+        shear: tuple[Axis, float] | None = keyword(None, unit=("1", "velocity"))
+
+        @model_validator(mode="wrap")
+        @classmethod
+        def _liggghts_spelling(cls, data, handler):
+            # a restart file names the style wall/gran and holds LIGGGHTS's spelling's own arguments
+            if isinstance(data, dict) and "model" in data:
+                from .wall_gran_model import FixWallGranModel
+                return FixWallGranModel.Args.model_validate(data)
+            return handler(data)
 
     def __new__(cls, sim, id, group, args):
-        # LIGGGHTS's spelling (``wall/gran model ...``) is a style of its own
-        if list(args.words)[:1] == ["model"]:
+        if isinstance(args, cls.Args):
+            return super().__new__(cls)
+        from .wall_gran_model import FixWallGranModel
+        return FixWallGranModel(sim, id, group, args)
+
+    @classmethod
+    def respell(cls, dialect, words):
+        # LIGGGHTS's spelling (``wall/gran model ...``, its keywords in any order) is a style of its own
+        if "model" in words:
             from .wall_gran_model import FixWallGranModel
-            return FixWallGranModel(sim, id, group, args)
-        return super().__new__(cls)
+            return FixWallGranModel, list(words)
+        return None
+
+    @classmethod
+    def check_args(cls, args):
+        if args.wallstyle[0] == "zcylinder" and not args.wallstyle[1] > 0.0:
+            raise ScriptError(f"radius must be > 0 (got {args.wallstyle[1]:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         if "sphere" not in sim.particle_styles:
             raise ScriptError("fix wall/gran needs atom_style sphere (per-particle radius, mass and "
                               "rotation)")
-        words = list(args.words)
-        self.model = lammps_classic.MODELS[parse_args(LawStyle, words[:1], self.usage).style]
-        law = parse_args(lammps_classic.ClassicLaw, words[1:7], self.usage)
-        self.kn, self.kt, self.gamma_n, self.gamma_t = law.constants(self.model, sim.units.nktv2p)
-        self.xmu = law.xmu
-        rest = words[7:]
-        self.limit_damping = rest[:1] == ["limit_damping"]
-        rest = rest[1:] if self.limit_damping else rest
-        wallstyle = parse_args(WallStyle, rest[:1], self.usage).wallstyle
+        self.model = lammps_classic.MODELS[args.style]
+        self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
+        self.xmu = args.xmu
+        self.limit_damping = args.limit_damping is not None
+        wallstyle, *values = args.wallstyle
         self.wallstyle = WALL_STYLES[wallstyle]
         if self.wallstyle == ZCYLINDER:
-            wall = parse_args(CylinderWall, rest[1:], self.usage)
-            self.lo, self.hi, self.cylinder = 0.0, 0.0, wall.radius
+            self.lo, self.hi, self.cylinder = 0.0, 0.0, values[0]
         else:
-            wall = parse_args(PlaneWall, rest[1:], self.usage)
-            self.lo = -FAR if wall.lo is None else wall.lo
-            self.hi = FAR if wall.hi is None else wall.hi
+            lo, hi = values
+            self.lo = -FAR if lo is None else lo
+            self.hi = FAR if hi is None else hi
             self.cylinder = 0.0
-        self.check_motion(sim, wallstyle, wall)
-        self.wiggle, self.shear = wall.wiggle, wall.shear
+        self.check_motion(sim, wallstyle, args)
+        self.wiggle, self.shear = args.wiggle, args.shear
         self.time_origin = sim.step
         self.spring = None
         self._near, self._count = np.empty(0, dtype=np.int64), 0

@@ -32,8 +32,8 @@ class LiggghtsWallSpelling(Fix):
         respelled = liggghts2.wall_words(cls.name, words)
         if respelled is None:
             raise ScriptError(f"fix {cls.name} needs a mesh or primitive wall (got {' '.join(words[:1]) or 'nothing'})")
-        from .wall_gran import FixWallGran
-        return FixWallGran, respelled
+        from .wall_gran_model import FixWallGranModel
+        return FixWallGranModel, respelled
 
 
 class FixWallGranHertzHistory(LiggghtsWallSpelling):

@@ -36,7 +36,8 @@ with angular velocity V (rad/time: LIGGGHTS multiplies the axis by V; the wall v
 the contact point, :math:`V\hat{\mathbf{a}}\times\boldsymbol\rho` with :math:`\boldsymbol\rho` from
 the axis to p, where LIGGGHTS takes it at the particle's centre). Only the friction feels it.
 
-Keywords after ``model``: ``tangential history|no_history`` (required), ``rolling_friction
+Keywords, in any order (LIGGGHTS writes the model's first): ``model hertz|hooke`` and
+``tangential history|no_history`` (required), ``rolling_friction
 off|cdt|epsd|epsd2``, ``cohesion off|sjkr|sjkr2``, ``tangential_damping on|off``, ``limitForce
 on|off`` (as pair gran). ``store_force yes`` keeps each particle's wall force of the step (force
 units, 3 values; all the wall's contacts summed) in the per-atom property ``force_ID``: dump custom
@@ -67,11 +68,12 @@ Examples::
 """
 
 import math
+from typing import Literal
 
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, number
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, keyword
 from pdps_granular_contact import liggghts
 
 from .mesh import (LIGGGHTS_LAWS, NO_PDPS_LAW, NO_TALLY, MeshContacts, mesh_fix, mesh_wall_forces,
@@ -79,13 +81,12 @@ from .mesh import (LIGGGHTS_LAWS, NO_PDPS_LAW, NO_TALLY, MeshContacts, mesh_fix,
 from .wall_contact import LIGGGHTS_WIDTH, LOG_COLUMNS, TRANSFER_COS, forget_far, liggghts_wall_contacts
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
-PRIMITIVES = {"xplane": (XPLANE, 1), "yplane": (YPLANE, 1), "zplane": (ZPLANE, 1),
-              "xcylinder": (XCYLINDER, 3), "ycylinder": (YCYLINDER, 3), "zcylinder": (ZCYLINDER, 3)}
+PRIMITIVES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "xcylinder": XCYLINDER,
+              "ycylinder": YCYLINDER, "zcylinder": ZCYLINDER}
+PrimitiveWords = (tuple[Literal["xplane", "yplane", "zplane"], float]
+                  | tuple[Literal["xcylinder", "ycylinder", "zcylinder"], float, float, float])
 AXES = {"x": 0, "y": 1, "z": 2}
 WIDTH = LIGGGHTS_WIDTH
-MODEL_WORDS = {"model": liggghts.NORMAL_MODELS, "tangential": liggghts.TANGENTIAL_MODELS,
-               "rolling_friction": liggghts.ROLLING_MODELS, "cohesion": liggghts.COHESION_MODELS,
-               "tangential_damping": {"on": 1, "off": 0}, "limitForce": {"on": 1, "off": 0}}
 
 
 @njit(cache=True)
@@ -185,24 +186,62 @@ class FixWallGranModel(Fix):
              "mesh n_meshes N meshes ID1 ... IDN [store_force yes|no]")
 
     class Args(StyleArgs):
-        words: list[str] = []
+        model: Literal[tuple(liggghts.NORMAL_MODELS)] = keyword(...)
+        tangential: Literal[tuple(liggghts.TANGENTIAL_MODELS)] = keyword(...)
+        rolling_friction: Literal[tuple(liggghts.ROLLING_MODELS)] = keyword("off")
+        cohesion: Literal[tuple(liggghts.COHESION_MODELS)] = keyword("off")
+        tangential_damping: Literal["on", "off"] = keyword("on")
+        limitForce: Literal["on", "off"] = keyword("off")
+        primitive: tuple[Literal["type"], int, PrimitiveWords] | None = keyword(None, unit={
+            "type N xplane|yplane|zplane C": ("1", "1", "1", "distance"),
+            "type N xcylinder|ycylinder|zcylinder R C1 C2": ("1", "1", "1", "distance", "distance", "distance")})
+        mesh: tuple[Literal["n_meshes"], int, Literal["meshes"], tuple[str, ...]] | None = keyword(
+            None, unit="1", names="fix mesh/surface ID")
+        shear: tuple[Literal["x", "y", "z"], float] | None = keyword(None, unit=("1", "velocity"))
+        store_force: bool = keyword(False)
+
+    @classmethod
+    def check_args(cls, args):
+        if (args.primitive is None) == (args.mesh is None):
+            given = "both" if args.mesh is not None else "neither"
+            raise ScriptError(f"expected primitive or mesh (got {given}); usage: {cls.usage}")
+        if args.primitive is not None:
+            style, *values = args.primitive[2]
+            if len(values) == 3 and not values[0] > 0.0:
+                raise ScriptError(f"{style} radius must be > 0 (got {values[0]:g})")
+            if args.shear is not None and style.endswith("plane") and args.shear[0] == style[0]:
+                raise ScriptError(f"shear {args.shear[0]} would move a {style} wall along its own normal; "
+                                  "shear along a direction in the plane")
+            return
+        if args.shear is not None:
+            raise ScriptError("shear moves primitive walls; move meshes with fix move/mesh")
+        _, count, _, ids = args.mesh
+        if count < 1:
+            raise ScriptError(f"n_meshes must be > 0 (got {count})")
+        if len(ids) != count:
+            raise ScriptError(f"meshes needs {count} mesh ID(s) (got {' '.join(ids) or 'none'})")
+        if len(set(ids)) != len(ids):
+            raise ScriptError(f"a mesh is named twice in meshes {' '.join(ids)}")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         if "sphere" not in sim.particle_styles:
             raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
-        words = list(args.words)
-        rest = self._read_models(words)
-        if not rest or rest[0] not in ("primitive", "mesh"):
-            raise ScriptError(f"expected primitive or mesh after the model keywords (got "
-                              f"{rest[0] if rest else 'nothing'}); usage: {self.usage}")
+        self.models = np.array([liggghts.NORMAL_MODELS[args.model], liggghts.TANGENTIAL_MODELS[args.tangential],
+                                liggghts.ROLLING_MODELS[args.rolling_friction],
+                                liggghts.COHESION_MODELS[args.cohesion], int(args.tangential_damping == "on"),
+                                int(args.limitForce == "on"), sim.dimension], dtype=np.int64)
         self.meshes, self.primitive = [], None
-        if rest[0] == "primitive":
-            rest = self._read_primitive(sim, rest[1:])
+        self.shear, self.spin = np.zeros(3), 0.0
+        if args.primitive is not None:
+            self._primitive(sim, args.primitive, args.shear)
         else:
-            rest = self._read_meshes(sim, rest[1:])
-        self._read_options(rest)
+            self.meshes = [mesh_fix(sim, ident) for ident in args.mesh[3]]
+        self.store = None
+        if args.store_force:
+            self.store = f"force_{self.id}"
+            sim.particles.request(self.store, width=3)
         self.table, self.charvel = None, 0.0
         self.history = ContactHistory(sim, f"wall_{id}", width=WIDTH) if self.primitive is not None else None
         self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=WIDTH)
@@ -212,111 +251,22 @@ class FixWallGranModel(Fix):
         self._primitive_rows, self._primitive_slots = None, 0      # primitive_scratch, for that many slots
         self._not_logged = np.zeros(1, dtype=np.int64)
 
-    # ---- script words ----
-    def _read_models(self, words):
-        given, k = {}, 0
-        while k < len(words) and words[k] in MODEL_WORDS:
-            word = words[k]
-            if k + 1 >= len(words):
-                raise ScriptError(f"keyword {word} needs a value ({'|'.join(MODEL_WORDS[word])})")
-            value = words[k + 1]
-            if value not in MODEL_WORDS[word]:
-                raise ScriptError(f"{word} must be one of {', '.join(MODEL_WORDS[word])} (got {value})")
-            if word in given:
-                raise ScriptError(f"keyword {word} is given twice")
-            given[word] = MODEL_WORDS[word][value]
-            k += 2
-        for required in ("model", "tangential"):
-            if required not in given:
-                raise ScriptError(f"missing keyword {required}; usage: {self.usage}")
-        self.models = np.array([given["model"], given["tangential"], given.get("rolling_friction", 0),
-                                given.get("cohesion", 0), given.get("tangential_damping", 1),
-                                given.get("limitForce", 0), self.sim.dimension], dtype=np.int64)
-        return words[k:]
-
-    def _read_primitive(self, sim, words):
-        if len(words) < 3 or words[0] != "type":
-            raise ScriptError(f"primitive takes type N and a wall style; usage: {self.usage}")
-        self.wall_type = self._read_type(sim, words[1])
-        style = words[2]
-        if style not in PRIMITIVES:
-            raise ScriptError(f"primitive wall style must be one of {', '.join(PRIMITIVES)} (got {style})")
-        self.wallstyle, count = PRIMITIVES[style]
-        values = words[3:3 + count]
-        if len(values) < count:
-            raise ScriptError(f"{style} takes {count} value(s) (got {' '.join(values) or 'none'})")
-        numbers = [number(text, f"{style} argument", representable=True) for text in values]
-        self.position = numbers[0] if count == 1 else 0.0
-        self.cylinder = np.array(numbers if count == 3 else [0.0, 0.0, 0.0])
-        if count == 3 and not self.cylinder[0] > 0.0:
-            raise ScriptError(f"{style} radius must be > 0 (got {values[0]})")
-        self.primitive = style
-        return words[3 + count:]
-
-    def _read_type(self, sim, word):
-        try:
-            kind = int(word)
-        except ValueError:
-            raise ScriptError(f"type must be a whole number (got {word})") from None
+    def _primitive(self, sim, words, shear):
+        _, kind, (style, *values) = words
         if not 1 <= kind <= sim.ntypes:
-            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {word})")
-        return kind
-
-    def _read_meshes(self, sim, words):
-        if len(words) < 2 or words[0] != "n_meshes":
-            raise ScriptError(f"mesh takes n_meshes N meshes ID1 ... IDN; usage: {self.usage}")
-        try:
-            count = int(words[1])
-        except ValueError:
-            raise ScriptError(f"n_meshes must be a whole number (got {words[1]})") from None
-        if count < 1:
-            raise ScriptError(f"n_meshes must be > 0 (got {words[1]})")
-        if len(words) < 3 or words[2] != "meshes":
-            raise ScriptError(f"expected meshes ID1 ... ID{count} after n_meshes {count}")
-        ids = words[3:3 + count]
-        if len(ids) < count:
-            raise ScriptError(f"meshes needs {count} mesh ID(s) (got {' '.join(ids) or 'none'})")
-        self.meshes = [mesh_fix(sim, ident) for ident in ids]
-        if len(set(ids)) != len(ids):
-            raise ScriptError(f"a mesh is named twice in meshes {' '.join(ids)}")
-        return words[3 + count:]
-
-    def _read_options(self, words):
-        self.store = None
-        self.shear = np.zeros(3)
-        self.spin = 0.0
-        k = 0
-        while k < len(words):
-            word = words[k]
-            if word == "shear":
-                if self.primitive is None:
-                    raise ScriptError("shear moves primitive walls; move meshes with fix move/mesh")
-                if len(words) < k + 3:
-                    raise ScriptError(f"shear takes DIM V (got {' '.join(words[k + 1:]) or 'nothing'})")
-                dim, speed = words[k + 1], words[k + 2]
-                if dim not in AXES:
-                    raise ScriptError(f"shear dimension must be x, y or z (got {dim})")
-                (value,) = [number(text, "shear velocity", representable=True) for text in [speed]]
-                axis = AXES[dim]
-                if self.wallstyle <= ZPLANE:
-                    if axis == self.wallstyle:
-                        raise ScriptError(f"shear {dim} would move a {self.primitive} wall along its own normal; "
-                                          "shear along a direction in the plane")
-                    self.shear[axis] = value
-                elif axis == self.wallstyle - XCYLINDER:
-                    self.shear[axis] = value
-                else:
-                    self.spin = value
-                k += 3
-            elif word == "store_force":
-                if k + 1 >= len(words) or words[k + 1] not in ("yes", "no"):
-                    raise ScriptError("store_force must be yes or no")
-                if words[k + 1] == "yes":
-                    self.store = f"force_{self.id}"
-                    self.sim.particles.request(self.store, width=3)
-                k += 2
+            raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {kind})")
+        self.wall_type = kind
+        self.wallstyle = PRIMITIVES[style]
+        self.position = values[0] if len(values) == 1 else 0.0
+        self.cylinder = np.array(values if len(values) == 3 else [0.0, 0.0, 0.0])
+        self.primitive = style
+        if shear is not None:
+            dim, value = shear
+            axis = AXES[dim]
+            if self.wallstyle <= ZPLANE or axis == self.wallstyle - XCYLINDER:
+                self.shear[axis] = value
             else:
-                raise ScriptError(f"unknown keyword {word}; usage: {self.usage}")
+                self.spin = value
 
     # ---- hooks ----
     def setup(self, sim):

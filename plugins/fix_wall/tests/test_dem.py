@@ -298,14 +298,15 @@ def test_a_region_written_before_surface_buffers_still_makes_a_wall(scene):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("hertz region floor 0.8 1e4 0.3", "contact model must be lsd (got hertz)"),
+    ("hertz region floor 0.8 1e4 0.3", "model must be one of 'lsd' (got hertz)"),
     ("lsd 0.8 1e4 0.3", "expected at least one region R after lsd"),
     ("lsd region nowhere 0.8 1e4 0.3", "region nowhere is not defined"),
     ("lsd region lump 0.8 1e4 0.3", "region lump (test/wall_lump) has no surface to act as a wall"),
-    ("lsd region floor 0.8 1e4", "expected e kn Cn kt Ct mu cutoff, or e kn mu [cutoff]"),
+    ("lsd region floor 0.8 1e4", "law must be number number number number number number number or number number number "
+     "number or number number number (got 0.8 1e4)"),
     ("lsd region floor 1.5 1e4 0.3", "e must be in (0, 1] (got 1.5)"),
     ("lsd region floor 0.8 -1 0.3", "kn must be > 0 (got -1)"),
-    ("lsd region floor 0.8 1e4 x", "wall/dem parameter must be a number (got x)"),
+    ("lsd region floor 0.8 1e4 x", "law must be a finite number (got x)"),
     ("lsd region floor 0.8 1e4 1 1 -1 0.3 0.5", "Ct must be >= 0 (got -1)"),
 ])
 def test_bad_arguments(scene, words, message):

@@ -446,6 +446,16 @@ def test_placement_is_applied_in_the_order_given(data):
     np.testing.assert_allclose(corner, [[3, 2, 0], [4, 2, 0], [-1, 2, 0]], atol=1e-14)
 
 
+def test_a_placement_given_again_is_applied_again_in_its_place(data):
+    """LIGGGHTS: each scale, move and rotate acts once where it is written, repeated ones too, also
+    when other keywords stand between them."""
+    sim = make_box(box="-9 9 -9 9 -9 9", particle_style="sphere")
+    sim.command(f"fix w all wall/mesh file {data}/square.stl scale 2 move 1 0 0 model lsd 0.8 1e4 0.3 "
+                "scale 2 rotate axis 0 0 1 angle 90 move 0 0 1")
+    # (1, 1, 0) -> (2, 2, 0) -> (3, 2, 0) -> (6, 4, 0) -> (-4, 6, 0) -> (-4, 6, 1)
+    np.testing.assert_allclose(sim.fixes["w"].vertices[2], [-4, 6, 1], atol=1e-14)
+
+
 def test_relative_file_names_are_read_from_the_script_folder(data, tmp_path):
     script = tmp_path / "in.mesh"
     script.write_text(f"particle_style sphere\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box\n"
@@ -459,23 +469,23 @@ def test_relative_file_names_are_read_from_the_script_folder(data, tmp_path):
 
 @pytest.mark.parametrize("words, message", [
     ("model lsd 0.8 1e4 0.3", "missing keyword file"),
-    ("file {data}/square.stl", "missing keyword model"),
+    ("file {data}/square.stl", "missing argument model"),
     ("file {data}/square.stl spin 1 model lsd 0.8 1e4 0.3", "unknown keyword spin"),
     ("file {data}/square.stl scale 0 model lsd 0.8 1e4 0.3", "scale must be > 0 (got 0)"),
     ("file {data}/square.stl move 1 2 model lsd 0.8 1e4 0.3", "keyword move needs 3 value(s) (got 1 2)"),
     ("file {data}/square.stl rotate 0 0 1 angle 30 x model lsd 0.8 1e4 0.3",
-     "rotate takes axis AX AY AZ angle DEG"),
+     "placement rotate must be one of 'axis' (got 0)"),
     ("file {data}/square.stl rotate axis 0 0 0 angle 30 model lsd 0.8 1e4 0.3",
      "rotate axis must not be zero"),
     ("file {data}/square.stl omega 0 0 1 at 0 0 0 model lsd 0.8 1e4 0.3",
-     "omega takes WX WY WZ about PX PY PZ"),
+     "omega must be one of 'about' (got at)"),
     ("file {data}/square.stl surface_vel 1 0 0 velocity 0 0 1 model lsd 0.8 1e4 0.3",
      "surface_vel (a conveyor) cannot be combined with velocity or omega"),
-    ("file {data}/square.stl model lsd 0.8 1e4", "model lsd takes e kn Cn kt Ct mu, or e kn mu"),
+    ("file {data}/square.stl model lsd 0.8 1e4", "model lsd takes number number number number number number or number number number (got 0.8 1e4)"),
     ("file {data}/square.stl model hertz 1e5 0.7 0.8 0.3", "nu must be in (-1, 0.5) (got 0.7)"),
     ("file {data}/square.stl model jkr 1", "model must be one of lsd, hertz (got jkr)"),
     ("file {data}/square.stl model lsd 0.8 1e308 0.3",
-     "model lsd parameter must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e308)"),
+     "model must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e+308)"),
 ])
 def test_bad_arguments(data, words, message):
     sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")

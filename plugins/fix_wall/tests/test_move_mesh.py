@@ -173,9 +173,9 @@ def test_a_mesh_that_does_not_move_has_no_wall_velocity(data):
 @pytest.mark.parametrize("words, message", [
     ("mesh nothere linear 1 0 0", "fix nothere is not defined"),
     ("mesh cad spin 1 0 0", "motion must be one of linear, linear/variable, wiggle, rotate"),
-    ("mesh cad linear 1 0", "linear: it needs 3 value(s) (got 1 0)"),
-    ("mesh cad linear 1 0 0 5", "linear: unexpected words 5"),
-    ("mesh cad wiggle amplitude 1 0 0 every 2", "wiggle: expected keyword period (got every)"),
+    ("mesh cad linear 1 0", "motion linear takes 3 value(s): number number number (got 1 0)"),
+    ("mesh cad linear 1 0 0 5", "unknown keyword 5 (known: origin, axis, order, amplitude, phase, period, omega)"),
+    ("mesh cad wiggle amplitude 1 0 0 every 2", "amplitude must be a finite number (got every)"),
     ("mesh cad rotate origin 0 0 0 axis 0 0 0 period 1", "rotate axis must not be zero"),
     ("mesh cad rotate origin 0 0 0 axis 0 0 1 period -1", "rotate: period must be > 0 (got -1)"),
     ("mesh cad viblin axis 0 0 1 order 11 amplitude 1 phase 0 period 1",
@@ -183,8 +183,12 @@ def test_a_mesh_that_does_not_move_has_no_wall_velocity(data):
     ("mesh cad viblin axis 0 0 1 order 2 amplitude 1 phase 0 period 1",
      "viblin: amplitude needs 2 value(s) (got 1)"),
     ("mesh cad linear/variable 1 2 3", "linear/variable: expected a variable v_NAME (got 1)"),
-    ("mesh cad linear abc 0 0", "linear velocity must be a number (got abc)"),
-    ("cad linear 1 0 0", "expected mesh MESH_ID and a motion"),
+    ("mesh cad wiggle amplitude 1 0 0", "wiggle: expected keyword period; usage: wiggle amplitude AX AY AZ period T"),
+    ("mesh cad linear 1 0 0 period 2", "linear takes no period"),
+    ("linear 1 0 0", "expected mesh MESH_ID and a motion"),
+    ("mesh cad linear abc 0 0", "motion must be a finite number (got abc)"),
+    ("cad linear 1 0 0", "motion must be one of linear, linear/variable, wiggle, rotate, rotate/variable, "
+     "riggle, viblin, vibrot (got cad)"),
 ])
 def test_bad_move_mesh_words(data, words, message):
     sim, _ = mesh_scene(data)
@@ -194,6 +198,22 @@ def test_bad_move_mesh_words(data, words, message):
     assert "\n" not in str(info.value)
 
 
+def test_the_keywords_of_a_motion_stand_in_any_order(data):
+    """LIGGGHTS writes origin, axis, period in that order; any order means the same turn: a quarter
+    period turns the mesh by 90 degrees about the axis through the origin, which stays where it is."""
+    poses = []
+    for words in ("rotate origin 1 0 0 axis 0 0 1 period 2", "rotate period 2 axis 0 0 1 origin 1 0 0"):
+        sim, _ = mesh_scene(data, words)
+        mover = sim.fixes["m0"]
+        mover.elapsed = 0.5
+        poses.append(mover.pose())
+    for first, second in zip(*poses):
+        np.testing.assert_array_equal(first, second)
+    rotation, shift = poses[0][:2]
+    np.testing.assert_allclose(rotation @ [1.0, 0.0, 0.0] + shift, [1.0, 0.0, 0.0], atol=1e-15)
+    np.testing.assert_allclose(rotation @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], atol=1e-15)
+
+
 def test_a_conveyor_cannot_be_moved(data):
     sim, _ = mesh_scene(data, extra="surface_vel 1 0 0")
     with pytest.raises(ScriptError, match="a conveyor cannot also be moved"):
@@ -201,17 +221,20 @@ def test_a_conveyor_cannot_be_moved(data):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("type 1", "missing keyword file"),
+    ("type 1", "missing argument file"),
     ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
-    ("file {data}/square.stl type x", "type must be a whole number (got x)"),
+    ("file {data}/square.stl type x", "type must be an integer (got x)"),
     ("file {data}/square.stl curvature 120", "curvature must be in (0, 90] degrees (got 120)"),
-    ("file {data}/square.stl precision 1e-5", "keyword precision is not supported"),
+    ("file {data}/square.stl precision 1e-5", "keyword precision of fix mesh/surface: pdps merges only identical nodes (meshio)"),
     ("file {data}/square.stl heal auto_remove_duplicates", "heal auto_remove_duplicates is not supported"),
     ("file {data}/square.stl surface_ang_vel origin 0 0 0 axis 0 0 1 spin 1",
-     "surface_ang_vel takes origin OX OY OZ axis AX AY AZ omega W"),
+     "surface_ang_vel must be one of 'omega' (got spin)"),
     ("file {data}/square.stl scale 0", "scale must be > 0 (got 0)"),
     ("file {data}/nothere.stl", "mesh file {data}/nothere.stl does not exist"),
     ("file {data}/square.stl wobble 1", "unknown keyword wobble"),
+    ("file {data}/square.stl element_exclusion_list read ex.txt",
+     "keyword element_exclusion_list of fix mesh/surface: pdps keeps every triangle of the file"),
+    ("file {data}/square.stl scale 2 scale x", "placement scale must be a finite number (got x)"),
 ])
 def test_bad_mesh_surface_words(data, words, message):
     sim = make_box(box="-4 4 -4 4 -4 4", particle_style="sphere")

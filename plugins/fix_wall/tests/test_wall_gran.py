@@ -166,11 +166,8 @@ def test_a_sphere_arriving_from_far_between_rebuilds_bounces_as_if_always_watche
     ("hooke -1 NULL 1 NULL 0.5 1 zplane 0 NULL", "Kn must be >= 0 (got -1)"),
     ("hooke 1 NULL 1 NULL 0.5 2 zplane 0 NULL", "dampflag must be <= 1 (got 2)"),
     ("hooke 1 NULL 1 NULL 20000 1 zplane 0 NULL", "xmu must be <= 10000 (got 20000)"),
-    ("hooke 1 NULL 1 NULL 0.5 1 zplane 0", "missing argument hi; usage: fix ID GROUP wall/gran "
-     "hooke|hooke/history|hertz/history Kn Kt gamma_n gamma_t xmu dampflag [limit_damping] "
-     "xplane|yplane|zplane LO HI | zcylinder RADIUS [wiggle dim A T] [shear dim V]"),
-    ("hooke 1 NULL 1 NULL 0.5 1 plane 0 1", "wallstyle must be one of 'xplane', 'yplane', 'zplane' or "
-     "'zcylinder' (got plane)"),
+    ("hooke 1 NULL 1 NULL 0.5 1 zplane 0", "wallstyle zplane takes 2 value(s): number number (got 0)"),
+    ("hooke 1 NULL 1 NULL 0.5 1 plane 0 1", "wallstyle must be one of xplane, yplane, zplane, zcylinder (got plane)"),
     ("hooke 1 NULL 1 NULL 0.5 1 xplane 0 NULL", "xplane needs a box not periodic in x (boundary f or s there)"),
     ("hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL shear z 1", "shear z would move a zplane wall along its own "
      "normal; shear along a direction in the plane"),

@@ -138,23 +138,25 @@ def test_a_turning_cylinder_carries_a_sphere_at_its_surface_speed():
 
 
 @pytest.mark.parametrize("words, message", [
-    ("model hertz primitive type 2 zplane 0", "missing keyword tangential"),
-    ("model jkr tangential history primitive type 2 zplane 0", "model must be one of hertz, hooke (got jkr)"),
-    ("model hertz tangential history", "expected primitive or mesh after the model keywords (got nothing)"),
+    ("model hertz primitive type 2 zplane 0", "missing argument tangential"),
+    ("model jkr tangential history primitive type 2 zplane 0", "model must be one of 'hertz' or 'hooke' (got jkr)"),
+    ("model hertz tangential history", "expected primitive or mesh (got neither); usage: "),
     ("model hertz tangential history primitive type 3 zplane 0",
      "type must be from 1 to 2, the number of types (got 3)"),
-    ("model hertz tangential history primitive type 2 wplane 0", "primitive wall style must be one of"),
-    ("model hertz tangential history primitive type 2 zcylinder 1 0", "zcylinder takes 3 value(s) (got 1 0)"),
+    ("model hertz tangential history primitive type 2 wplane 0", "primitive must be one of xplane, yplane, zplane, xcylinder, ycylinder, zcylinder (got wplane)"),
+    ("model hertz tangential history primitive type 2 zcylinder 1 0", "primitive zcylinder takes 3 value(s): number number number (got 1 0)"),
     ("model hertz tangential history primitive type 2 zcylinder -1 0 0", "zcylinder radius must be > 0 (got -1)"),
     ("model hertz tangential history primitive type 2 zplane 0 shear z 1",
      "shear z would move a zplane wall along its own normal"),
-    ("model hertz tangential history primitive type 2 zplane 0 shear q 1", "shear dimension must be x, y or z"),
+    ("model hertz tangential history primitive type 2 zplane 0 shear q 1", "shear must be one of 'x', 'y' or 'z' (got q)"),
     ("model hertz tangential history primitive type 2 zplane 0 wiggle", "unknown keyword wiggle"),
     ("model hertz tangential history mesh n_meshes 1 meshes nothere", "fix nothere is not defined"),
     ("model hertz tangential history mesh n_meshes 2 meshes m1", "meshes needs 2 mesh ID(s) (got m1)"),
     ("model hertz tangential history mesh n_meshes 1 meshes m1", "fix m1 (property/global) is not a fix mesh/surface"),
     ("model hertz tangential history mesh n_meshes 0 meshes", "n_meshes must be > 0 (got 0)"),
     ("model hertz tangential history primitive type 2 zplane 0 store_force maybe", "store_force must be yes or no"),
+    ("model hertz tangential history primitive type 2 zplane 0 mesh n_meshes 1 meshes m1",
+     "expected primitive or mesh (got both)"),
 ])
 def test_bad_words(words, message):
     sim = make_box(MATERIAL, box="-4 4 -4 4 -4 4", particle_style="sphere", ntypes=2, boundary="f f f")
@@ -162,6 +164,21 @@ def test_bad_words(words, message):
         sim.command("fix w all wall/gran " + words)
     assert message in str(info.value)
     assert "\n" not in str(info.value)
+
+
+def test_the_keywords_stand_in_any_order():
+    """LIGGGHTS writes the model keywords first; any order, and 2.x's settings after the geometry,
+    give the same wall."""
+    sim = make_box(MATERIAL, box="-4 4 -4 4 -4 4", particle_style="sphere", ntypes=2, boundary="f f f")
+    sim.command("fix a all wall/gran model hooke tangential no_history limitForce on primitive type 2 zplane 0.5 "
+                "store_force yes")
+    sim.command("fix b all wall/gran primitive type 2 zplane 0.5 limitForce on store_force yes tangential no_history "
+                "model hooke")
+    a, b = sim.fixes["a"], sim.fixes["b"]
+    np.testing.assert_array_equal(a.models, b.models)
+    assert a.models[0] == 1 and a.models[1] == 1 and a.models[5] == 1      # hooke, no_history, limitForce on
+    assert (a.wall_type, a.wallstyle, a.position) == (b.wall_type, b.wallstyle, b.position) == (2, 2, 0.5)
+    assert a.store == "force_a" and b.store == "force_b"
 
 
 def test_a_missing_material_is_named_at_the_run():
