@@ -159,10 +159,8 @@ def _hand_parsed(cls):
 NOT_YET_DECLARED = {
     ("pair", "formula"), ("pair", "hybrid"), ("pair", "hybrid/overlay"),
     ("fix", "ave/spatial"), ("fix", "ave/time"), ("fix", "deform"),
-    ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
     ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"),
-    ("fix", "move/mesh"), ("fix", "particledistribution/discrete"),
-    ("fix", "particletemplate/sphere"), ("fix", "property/global"),
+    ("fix", "move/mesh"), ("fix", "property/global"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
     ("fix", "wall/mesh"), ("analyze", "ave/space"), ("analyze", "ave/time"),
     ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
