@@ -42,8 +42,12 @@ from .size_distribution import Distribution
 Density = tuple[Literal["constant"], float] | tuple[Literal["uniform", "gaussian", "lognormal"], float, float]
 Radius = (tuple[Literal["constant"], float]
           | tuple[Literal["uniform", "gaussian", "lognormal"], Literal["number", "mass"], float, float])
-# lognormal's MU and SIGMA are those of ln of the value
-SPREAD = {"uniform": "{0}", "gaussian": "{0}", "lognormal": "dimensionless"}
+
+
+def units(kind):
+    """The units of a distribution's values by its style word (lognormal's MU and SIGMA are those of
+    ln of the value)."""
+    return {"constant": kind, "uniform": kind, "gaussian": kind, "lognormal": "dimensionless"}
 
 
 class FixParticleTemplateSphere(Fix):
@@ -54,10 +58,8 @@ class FixParticleTemplateSphere(Fix):
     class Args(StyleArgs):
         seed: WholeNumber = param(ge=1, unit="1")
         atom_type: WholeNumber = keyword(1, ge=1, unit="1")
-        density: Density | None = keyword(None, unit={"constant": "density", **{
-            style: unit.format("density") for style, unit in SPREAD.items()}})
-        radius: Radius | None = keyword(None, unit={"constant": "distance", **{
-            style: unit.format("distance") for style, unit in SPREAD.items()}})
+        density: Density | None = keyword(None, unit=units("density"))
+        radius: Radius | None = keyword(None, unit=units("distance"))
         volume_limit: float = keyword(1e-12, gt=0, unit="volume")
 
     @classmethod
