@@ -160,7 +160,7 @@ NOT_YET_DECLARED = {
     ("pair", "formula"), ("pair", "hybrid"), ("pair", "hybrid/overlay"),
     ("fix", "ave/spatial"), ("fix", "ave/time"), ("fix", "deform"),
     ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"),
-    ("fix", "move/mesh"), ("fix", "property/global"),
+    ("fix", "move/mesh"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
     ("fix", "wall/mesh"), ("analyze", "ave/space"), ("analyze", "ave/time"),
     ("dump", "mesh/gran/VTK"), ("dump", "mesh/vtk"),
