@@ -37,7 +37,7 @@ import numpy as np
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs, WholeNumber
+from .insertion import FixInsert, InsertArgs, WholeNumber, require
 from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")
@@ -59,8 +59,7 @@ class FixInsertPack(InRegion, FixInsert):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        if args.region is None:
-            raise ScriptError(f"missing keyword region; usage: {cls.usage}")
+        require(cls, args, "region")
         targets = [t for t in TARGETS if getattr(args, t) is not None]
         if len(targets) != 1:
             raise ScriptError("give exactly one of volumefraction_region, particles_in_region, mass_in_region "

@@ -29,7 +29,7 @@ from typing import Literal
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs, WholeNumber, positive
+from .insertion import FixInsert, InsertArgs, WholeNumber, positive, require
 from .region_volume import InRegion, insertion_region
 
 
@@ -91,11 +91,9 @@ class FixInsertRateRegion(InRegion, FixInsert):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        if args.region is None:
-            raise ScriptError(f"missing keyword region; usage: {cls.usage}")
+        require(cls, args, "region")
         check_rate(cls, args)
-        if args.insert_every is None:
-            raise ScriptError(f"missing keyword insert_every; usage: {cls.usage}")
+        require(cls, args, "insert_every")
 
     def read_style(self, sim, args):
         self.region = insertion_region(sim, args.region)

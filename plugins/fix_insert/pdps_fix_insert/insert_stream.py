@@ -36,14 +36,12 @@ Example (LIGGGHTS's chute tutorial)::
         insert_every 1000 overlapcheck yes all_in no vel constant 0.0 0.0 -1.0 insertion_face inface
 """
 
-import math
-
 import numpy as np
 from numba import njit
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import WholeNumber, FixInsert
+from .insertion import FixInsert, WholeNumber, require
 from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
 
@@ -91,8 +89,7 @@ class FixInsertStream(FixInsert):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        if args.insertion_face is None:
-            raise ScriptError(f"missing keyword insertion_face; usage: {cls.usage}")
+        require(cls, args, "insertion_face")
         if args.extrude_length is not None and args.insert_every is not None:
             raise ScriptError("must not provide both 'insert_every' and 'extrude_length' (LIGGGHTS)")
         if args.extrude_length is None and args.insert_every is None:

@@ -82,6 +82,13 @@ class InsertArgs(StyleArgs):
     omega: tuple[Literal["constant"], float, float, float] | None = keyword(None, unit="1/time")
 
 
+def require(cls, args, *names):
+    """A one-line error for the first of ``names`` (LIGGGHTS's required keywords) the line lacks."""
+    for needed in names:
+        if getattr(args, needed) is None:
+            raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
+
+
 def positive(args, name):
     """A number keyword that may be INF (nparticles, mass): refused at or below 0."""
     value = getattr(args, name)
@@ -99,9 +106,7 @@ class FixInsert(Fix):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        for needed in ("seed", "distributiontemplate"):
-            if getattr(args, needed) is None:
-                raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
+        require(cls, args, "seed", "distributiontemplate")
         if isinstance(args.insert_every, int) and args.insert_every < 1:
             raise ScriptError(f"insert_every must be >= 1 (got {args.insert_every})")
         if args.vel is not None and any(v < 0 for v in args.vel[4:]):

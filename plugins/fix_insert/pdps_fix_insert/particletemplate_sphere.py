@@ -35,7 +35,7 @@ from typing import Literal
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
-from .insertion import WholeNumber
+from .insertion import WholeNumber, require
 from .size_distribution import Distribution
 
 # a density's style word, then its values; a radius's style word, then number|mass (but constant), then its values
@@ -65,9 +65,7 @@ class FixParticleTemplateSphere(Fix):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        for needed in ("density", "radius"):
-            if getattr(args, needed) is None:
-                raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
+        require(cls, args, "density", "radius")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
