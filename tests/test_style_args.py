@@ -158,7 +158,7 @@ def _hand_parsed(cls):
 # styles still reading raw words: each must fail the check below, so that one converted leaves the list
 NOT_YET_DECLARED = {
     ("pair", "formula"), ("pair", "hybrid"), ("pair", "hybrid/overlay"),
-    ("fix", "ave/spatial"), ("fix", "ave/time"), ("fix", "deform"),
+    ("fix", "ave/spatial"), ("fix", "ave/time"),
     ("fix", "mesh/surface"), ("fix", "mesh/surface/planar"), ("fix", "mesh/surface/stress"),
     ("fix", "move/mesh"),
     ("fix", "wall/dem"), ("fix", "wall/gran"),
