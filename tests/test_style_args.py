@@ -240,15 +240,6 @@ def _hand_parsed(cls):
     return any("parse" in vars(klass) for klass in cls.__mro__ if not klass.__module__.startswith("pdps_core"))
 
 
-# styles still reading raw words: each must fail the check below, so that one converted leaves the list
-NOT_YET_DECLARED = {
-    ("fix", "deform"),
-    ("fix", "insert/pack"), ("fix", "insert/rate/region"), ("fix", "insert/stream"),
-    ("fix", "particledistribution/discrete"),
-    ("fix", "particletemplate/sphere"), ("fix", "property/global"),
-}
-
-
 @pytest.mark.parametrize("kind, name", _styles())
 def test_every_style_declares_each_argument_with_its_unit(kind, name):
     cls = registry.lookup(kind, name)
@@ -260,10 +251,7 @@ def test_every_style_declares_each_argument_with_its_unit(kind, name):
                 problems.append(f"{label} is a list of raw words (declare each value, or names=...)")
             if _numeric(info.annotation) and not unit_of(info):
                 problems.append(f"{label} is a number without a unit")
-    if (kind, name) in NOT_YET_DECLARED:
-        assert problems, f"{kind} {name} declares its arguments now: take it off NOT_YET_DECLARED"
-    else:
-        assert not problems, f"{kind} {name}: " + "; ".join(problems)
+    assert not problems, f"{kind} {name}: " + "; ".join(problems)
 
 
 @pytest.mark.parametrize("kind, name", _styles())

@@ -35,42 +35,46 @@ import math
 
 import numpy as np
 
-from pdps_core.api import ScriptError, number
+from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, whole_number
+from .insertion import FixInsert, InsertArgs, WholeNumber, require
 from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")
+NTRY_MC_MAX = 100_000_000
 
 
 class FixInsertPack(InRegion, FixInsert):
     name = "insert/pack"
     usage = ("fix ID GROUP insert/pack seed S distributiontemplate DIST [keywords] region REGION "
              "volumefraction_region VF | particles_in_region N | mass_in_region M [ntry_mc N]")
-    STYLE_ARITY = {"region": 1, "volumefraction_region": 1, "particles_in_region": 1, "mass_in_region": 1,
-                   "ntry_mc": 1}
 
-    def read_style(self, sim, given):
-        if "region" not in given:
-            raise ScriptError(f"missing keyword region; usage: {self.usage}")
-        self.region = insertion_region(sim, given["region"][0])
-        targets = [t for t in TARGETS if t in given]
+    class Args(InsertArgs):
+        region: str | None = keyword(None)
+        volumefraction_region: float | None = keyword(None, unit="dimensionless")
+        particles_in_region: WholeNumber | None = keyword(None, ge=0, unit="particles")
+        mass_in_region: float | None = keyword(None, gt=0, unit="mass")
+        ntry_mc: WholeNumber = keyword(100_000, ge=1000, unit="1")
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        require(cls, args, "region")
+        targets = [t for t in TARGETS if getattr(args, t) is not None]
         if len(targets) != 1:
             raise ScriptError("give exactly one of volumefraction_region, particles_in_region, mass_in_region "
                               f"(got {', '.join(targets) or 'none'})")
-        self.target = targets[0]
-        word = given[self.target][0]
-        if self.target == "particles_in_region":
-            self.amount = whole_number(word, "particles_in_region", low=0)
-        else:
-            self.amount = number(word, self.target)
-            if self.target == "volumefraction_region" and not 0 < self.amount < 1:
-                raise ScriptError(f"volumefraction_region must be > 0 and < 1 (got {word})")
-            if self.target == "mass_in_region" and not self.amount > 0:
-                raise ScriptError(f"mass_in_region must be > 0 (got {word})")
-        self.ntry_mc = whole_number(given["ntry_mc"][0], "ntry_mc", low=1000) if "ntry_mc" in given else 100_000
-        if self.ntry_mc > 100_000_000:
-            raise ScriptError(f"ntry_mc must be at most 100000000 (got {given['ntry_mc'][0]})")
+        fraction = args.volumefraction_region
+        if fraction is not None and not 0 < fraction < 1:
+            raise ScriptError(f"volumefraction_region must be > 0 and < 1 (got {fraction:g})")
+        if args.ntry_mc > NTRY_MC_MAX:
+            raise ScriptError(f"ntry_mc must be at most {NTRY_MC_MAX} (got {args.ntry_mc:g})")
+
+    def read_style(self, sim, args):
+        self.region = insertion_region(sim, args.region)
+        self.target = next(t for t in TARGETS if getattr(args, t) is not None)
+        self.amount = getattr(args, self.target)
+        self.ntry_mc = args.ntry_mc
         self.volume = None
 
     def wanted(self, sim):

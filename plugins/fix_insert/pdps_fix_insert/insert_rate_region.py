@@ -25,42 +25,47 @@ Example::
 """
 
 import math
+from typing import Literal
 
-from pdps_core.api import ScriptError, number
+from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, whole_number
+from .insertion import FixInsert, InsertArgs, WholeNumber, positive, require
 from .region_volume import InRegion, insertion_region
 
-RATE_ARITY = {"nparticles": 1, "mass": 1, "particlerate": 1, "massrate": 1}
+
+class RateArgs(InsertArgs):
+    """The total and the rate of the rate-based insertion fixes."""
+    nparticles: WholeNumber | Literal["INF"] | None = keyword(None, unit="particles")
+    mass: float | Literal["INF"] | None = keyword(None, unit="mass")
+    particlerate: float | None = keyword(None, gt=0, unit="particles/time")
+    massrate: float | None = keyword(None, gt=0, unit="mass/time")
 
 
-def read_rate(fix, given, every_needed=True):
-    """The total and the rate (nparticles|mass, particlerate|massrate), as particle counts."""
-    totals = [k for k in ("nparticles", "mass") if k in given]
-    rates = [k for k in ("particlerate", "massrate") if k in given]
+def check_rate(fix, args):
+    """One total (nparticles|mass) and one rate (particlerate|massrate), each > 0, and insert_every
+    a number of steps where given."""
+    totals = [k for k in ("nparticles", "mass") if getattr(args, k) is not None]
+    rates = [k for k in ("particlerate", "massrate") if getattr(args, k) is not None]
     if len(totals) != 1:
         raise ScriptError(f"give one of nparticles, mass (got {', '.join(totals) or 'none'})")
     if len(rates) != 1:
         raise ScriptError(f"give one of particlerate, massrate (got {', '.join(rates) or 'none'})")
-    if every_needed and "insert_every" not in given:
-        raise ScriptError(f"missing keyword insert_every; usage: {fix.usage}")
-    if fix.every is None:
+    positive(args, "nparticles")
+    positive(args, "mass")
+    if args.insert_every == "once":
         raise ScriptError(f"insert_every must be a number of steps for fix {fix.name} (got once)")
+
+
+def read_rate(fix, args):
+    """The total and the rate, as particle counts."""
     mass = fix.distribution.mass_expected
-    word = given[totals[0]][0]
-    if word == "INF":
+    if args.nparticles == "INF" or args.mass == "INF":
         fix.total = math.inf
-    elif totals[0] == "nparticles":
-        fix.total = whole_number(word, "nparticles", low=1)
+    elif args.nparticles is not None:
+        fix.total = args.nparticles
     else:
-        value = number(word, "mass")
-        if not value > 0:
-            raise ScriptError(f"mass must be > 0 (got {word})")
-        fix.total = max(1, round(value / mass))
-    rate = number(given[rates[0]][0], rates[0])
-    if not rate > 0:
-        raise ScriptError(f"{rates[0]} must be > 0 (got {given[rates[0]][0]})")
-    fix.rate = rate if rates[0] == "particlerate" else rate / mass
+        fix.total = max(1, round(args.mass / mass))
+    fix.rate = args.particlerate if args.particlerate is not None else args.massrate / mass
 
 
 def rate_count(fix, sim):
@@ -77,14 +82,22 @@ class FixInsertRateRegion(InRegion, FixInsert):
     name = "insert/rate/region"
     usage = ("fix ID GROUP insert/rate/region seed S distributiontemplate DIST nparticles N|INF | mass M|INF "
              "particlerate R | massrate R insert_every N region REGION [keywords]")
-    STYLE_ARITY = {**RATE_ARITY, "region": 1, "ntry_mc": 1}
     once_by_default = False
 
-    def read_style(self, sim, given):
-        if "region" not in given:
-            raise ScriptError(f"missing keyword region; usage: {self.usage}")
-        self.region = insertion_region(sim, given["region"][0])
-        read_rate(self, given)
+    class Args(RateArgs):
+        region: str | None = keyword(None)
+        ntry_mc: WholeNumber | None = keyword(None, ge=1, unit="1")    # LIGGGHTS's; read and not needed
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        require(cls, args, "region")
+        check_rate(cls, args)
+        require(cls, args, "insert_every")
+
+    def read_style(self, sim, args):
+        self.region = insertion_region(sim, args.region)
+        read_rate(self, args)
         self.wanted_so_far = 0
 
     def events_done_after(self):

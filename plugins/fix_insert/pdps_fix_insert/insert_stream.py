@@ -36,15 +36,13 @@ Example (LIGGGHTS's chute tutorial)::
         insert_every 1000 overlapcheck yes all_in no vel constant 0.0 0.0 -1.0 insertion_face inface
 """
 
-import math
-
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError, number
+from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, whole_number
-from .insert_rate_region import RATE_ARITY, rate_count, read_rate
+from .insertion import FixInsert, WholeNumber, require
+from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
 
 # columns of the per-particle flight record: release time (0: free), insertion time, insertion
@@ -81,35 +79,37 @@ class FixInsertStream(FixInsert):
     usage = ("fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF "
              "particlerate R | massrate R vel constant VX VY VZ insertion_face MESH "
              "insert_every N [duration D] | extrude_length L [keywords]")
-    STYLE_ARITY = {**RATE_ARITY, "insertion_face": 1, "extrude_length": 1, "duration": 1}
     once_by_default = False
 
-    def read_style(self, sim, given):
-        if "insertion_face" not in given:
-            raise ScriptError(f"missing keyword insertion_face; usage: {self.usage}")
-        name = given["insertion_face"][0]
+    class Args(RateArgs):
+        insertion_face: str | None = keyword(None)
+        extrude_length: float | None = keyword(None, gt=0, unit="distance")
+        duration: WholeNumber | None = keyword(None, ge=1, unit="timesteps")
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        require(cls, args, "insertion_face")
+        if args.extrude_length is not None and args.insert_every is not None:
+            raise ScriptError("must not provide both 'insert_every' and 'extrude_length' (LIGGGHTS)")
+        if args.extrude_length is None and args.insert_every is None:
+            raise ScriptError("must define either 'insert_every' or 'extrude_length' (LIGGGHTS)")
+        if args.extrude_length is not None and args.duration is not None:
+            raise ScriptError("must not provide both 'extrude_length' and 'duration' (LIGGGHTS)")
+        if args.duration is not None and isinstance(args.insert_every, int) and args.duration > args.insert_every:
+            raise ScriptError(f"duration must not exceed insert_every (got {args.duration} > {args.insert_every})")
+        if args.vel is None:
+            raise ScriptError("insert/stream needs vel constant|uniform|gaussian: the particles cross the face at it")
+        if args.all_in == "yes":
+            raise ScriptError("all_in yes is not supported by insert/stream")
+        check_rate(cls, args)
+
+    def read_style(self, sim, args):
+        name = args.insertion_face
         self.face = sim.fixes.get(name)
         if not hasattr(self.face, "triangles") or not hasattr(self.face, "vertices"):
             raise ScriptError(f"insertion_face {name} is not a fix mesh/surface")
-        if "extrude_length" in given and "insert_every" in given:
-            raise ScriptError("must not provide both 'insert_every' and 'extrude_length' (LIGGGHTS)")
-        if "extrude_length" not in given and "insert_every" not in given:
-            raise ScriptError("must define either 'insert_every' or 'extrude_length' (LIGGGHTS)")
-        if "extrude_length" in given and "duration" in given:
-            raise ScriptError("must not provide both 'extrude_length' and 'duration' (LIGGGHTS)")
-        self.extrude_length, self.duration = None, None
-        if "extrude_length" in given:
-            self.extrude_length = number(given["extrude_length"][0], "extrude_length")
-            if not self.extrude_length > 0:
-                raise ScriptError(f"extrude_length must be > 0 (got {given['extrude_length'][0]})")
-        elif "duration" in given:
-            self.duration = whole_number(given["duration"][0], "duration", low=1)
-            if self.duration > self.every:
-                raise ScriptError(f"duration must not exceed insert_every (got {self.duration} > {self.every})")
-        if "vel" not in given:
-            raise ScriptError("insert/stream needs vel constant|uniform|gaussian: the particles cross the face at it")
-        if self.all_in:
-            raise ScriptError("all_in yes is not supported by insert/stream")
+        self.extrude_length, self.duration = args.extrude_length, args.duration
         normals = self.face.face_normal
         if not (np.abs(normals @ normals[0]) > 1.0 - 1e-6).all():
             raise ScriptError(f"insertion_face {name} must be planar (LIGGGHTS)")
@@ -121,7 +121,7 @@ class FixInsertStream(FixInsert):
         self.normal = normal
         self.v_normal = along * normal                # LIGGGHTS's v_normal: the particles' flight
         self.speed = along
-        read_rate(self, given, every_needed=False)
+        read_rate(self, args)
         self.wanted_so_far = 0
         self.flight_name = f"flight_{self.id}"
         sim.particles.request(self.flight_name, width=FLIGHT_WIDTH, ghost=False)

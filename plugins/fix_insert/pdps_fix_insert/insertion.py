@@ -27,128 +27,119 @@ seeds each rank differently, so its particles depend on the rank count.) Output:
 """
 
 import math
+from typing import Annotated, Literal, NamedTuple
 
 import numpy as np
+from pydantic import BeforeValidator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, number, yes_no
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
 
 from .placement import grid, place
 
-GENERAL = {"seed": 1, "distributiontemplate": 1, "verbose": 1, "maxattempt": 1, "insert_every": 1,
-           "start": 1, "overlapcheck": 1, "all_in": 1, "random_distribute": 1, "orientation": 1,
-           "set_property": 2,
-           "vel": lambda rest: _velocity_words(rest),
-           "omega": lambda rest: 4}
-VELOCITY_STYLES = {"constant": 3, "uniform": 6, "gaussian": 6}
-
-
-def _velocity_words(rest):
-    style = rest[0] if rest else ""
-    if style not in VELOCITY_STYLES:
-        raise ScriptError(f"vel must be constant, uniform or gaussian (got {style or 'nothing'})")
-    return 1 + VELOCITY_STYLES[style]
 POOL_LIMIT = 4_000_000       # candidate positions drawn per insertion at most
 MAX_AT_ONCE = 10_000_000     # particles one insertion may add
 
 
-# ---- words ---------------------------------------------------------------------------------------
-def whole_number(word, what, low=None):
-    """An integer; also written as a float with no fraction ("1.", as LIGGGHTS's tutorials write seeds,
-    which its atoi reads)."""
-    try:
-        value = int(word)
-    except ValueError:
+def _whole(word):
+    """A word written as a float with no fraction ("1.", as LIGGGHTS's tutorials write seeds, which
+    its atoi reads) is that integer; any other word is left for pydantic to judge."""
+    if isinstance(word, str):
         try:
-            number_value = float(word)
+            value = float(word)
         except ValueError:
-            number_value = math.nan
-        if not (math.isfinite(number_value) and number_value == int(number_value)):
-            raise ScriptError(f"{what} must be a whole number (got {word})") from None
-        value = int(number_value)
-    if low is not None and value < low:
-        raise ScriptError(f"{what} must be >= {low} (got {word})")
-    return value
+            return word
+        if math.isfinite(value) and value == int(value):
+            return int(value)
+    return word
 
 
-def read_keywords(words, arity):
-    """{keyword: its words} from LIGGGHTS's keyword/value lists; ``arity[keyword]`` is how many words
-    follow it, or a function of those words saying so (``vel constant ...`` / ``vel uniform ...``).
-    A keyword given twice: the later holds."""
-    given, i = {}, 0
-    while i < len(words):
-        word = words[i]
-        if word not in arity:
-            raise ScriptError(f"unknown keyword {word} (known: {', '.join(arity)})")
-        count = arity[word]
-        if callable(count):
-            count = count(words[i + 1:])
-        values = words[i + 1:i + 1 + count]
-        if len(values) < count:
-            raise ScriptError(f"keyword {word} needs {count} value(s) (got {len(values)})")
-        given[word] = values
-        i += 1 + count
-    return given
+WholeNumber = Annotated[int, BeforeValidator(_whole)]
+YesNo = Literal["yes", "no"]
+Velocity = (tuple[Literal["constant"], float, float, float]
+            | tuple[Literal["uniform", "gaussian"], float, float, float, float, float, float])
+
+
+class Property(NamedTuple):
+    name: str
+    value: float
+
+
+class InsertArgs(StyleArgs):
+    """LIGGGHTS's general keywords of the insertion fixes, in any order; a keyword given twice: the
+    later holds."""
+    seed: WholeNumber | None = keyword(None, ge=1, unit="1")
+    distributiontemplate: str | None = keyword(None)
+    verbose: YesNo = keyword("no")
+    maxattempt: WholeNumber = keyword(50, ge=1, unit="1")
+    insert_every: Literal["once"] | WholeNumber | None = keyword(None, unit="timesteps")
+    start: WholeNumber | None = keyword(None, ge=0, unit="timesteps")
+    overlapcheck: YesNo = keyword("yes")
+    all_in: YesNo = keyword("no")
+    random_distribute: Literal["exact", "uncorrelated"] | None = keyword(None)
+    orientation: Literal["random", "template"] | None = keyword(None)
+    set_property: Property | None = keyword(None, unit=("1", "as the property"))
+    vel: Velocity | None = keyword(None, unit="velocity")
+    omega: tuple[Literal["constant"], float, float, float] | None = keyword(None, unit="1/time")
+
+
+def require(cls, args, *names):
+    """A one-line error for the first of ``names`` (LIGGGHTS's required keywords) the line lacks."""
+    for needed in names:
+        if getattr(args, needed) is None:
+            raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
+
+
+def positive(args, name):
+    """A number keyword that may be INF (nparticles, mass): refused at or below 0."""
+    value = getattr(args, name)
+    if value is not None and value != "INF" and not value > 0:
+        raise ScriptError(f"{name} must be > 0 (got {value:g})")
 
 
 class FixInsert(Fix):
-    """The machinery; a style sets ``STYLE_ARITY`` (its own keywords), ``read_style(sim, given)``,
+    """The machinery; a style adds its own keywords to ``InsertArgs``, and sets ``read_style(sim, args)``,
     ``wanted(sim)`` (how many particles this step), ``draw_points(rng, n)`` (candidate centres,
     uniform over its volume) and ``clearance(points, reach)`` (distance to its surface, for all_in)."""
-    STYLE_ARITY = {}
     once_by_default = True
+    Args = InsertArgs
 
-    class Args(StyleArgs):
-        words: list[str] = []
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        require(cls, args, "seed", "distributiontemplate")
+        if isinstance(args.insert_every, int) and args.insert_every < 1:
+            raise ScriptError(f"insert_every must be >= 1 (got {args.insert_every})")
+        if args.vel is not None and any(v < 0 for v in args.vel[4:]):
+            spread = " ".join(f"{v:g}" for v in args.vel[4:])
+            raise ScriptError(f"vel {args.vel[0]}: the spread must be >= 0 (got {spread})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         if sim.dimension != 3:
             raise ScriptError(f"fix {self.name} inserts spheres in 3-d only (as LIGGGHTS)")
-        given = read_keywords(list(args.words), {**GENERAL, **self.STYLE_ARITY})
-        for needed in ("seed", "distributiontemplate"):
-            if needed not in given:
-                raise ScriptError(f"missing keyword {needed}; usage: {self.usage}")
-        self.seed = whole_number(given["seed"][0], "seed", low=1)
-        name = given["distributiontemplate"][0]
+        self.seed = args.seed
+        name = args.distributiontemplate
         self.distribution = sim.fixes.get(name)
         if getattr(self.distribution, "name", None) != "particledistribution/discrete":
             known = [k for k, f in sim.fixes.items() if f.name == "particledistribution/discrete"]
             raise ScriptError(f"distributiontemplate {name} is not a fix particledistribution/discrete "
                               f"(defined: {', '.join(known) or 'none'})")
-        self.verbose = yes_no(given["verbose"][0], "verbose") if "verbose" in given else False
-        self.max_attempt = whole_number(given["maxattempt"][0], "maxattempt", low=1) if "maxattempt" in given else 50
-        every = given.get("insert_every", ["once" if self.once_by_default else "1"])[0]
-        self.every = None if every == "once" else whole_number(every, "insert_every", low=1)
-        self.start = whole_number(given["start"][0], "start", low=0) if "start" in given else None
-        self.overlap_check = yes_no(given["overlapcheck"][0], "overlapcheck") if "overlapcheck" in given else True
-        self.all_in = yes_no(given["all_in"][0], "all_in") if "all_in" in given else False
-        if "random_distribute" in given and given["random_distribute"][0] not in ("exact", "uncorrelated"):
-            raise ScriptError(f"random_distribute must be exact or uncorrelated (got {given['random_distribute'][0]})")
-        if "orientation" in given and given["orientation"][0] not in ("random", "template"):
-            raise ScriptError(f"orientation must be random or template (got {given['orientation'][0]})")
+        self.verbose = args.verbose == "yes"
+        self.max_attempt = args.maxattempt
+        every = args.insert_every or ("once" if self.once_by_default else 1)
+        self.every = None if every == "once" else every
+        self.start = args.start
+        self.overlap_check = args.overlapcheck == "yes"
+        self.all_in = args.all_in == "yes"
         self.velocity_style, self.velocity_mean, self.velocity_spread = "constant", np.zeros(3), np.zeros(3)
-        if "vel" in given:
-            words = given["vel"]
-            if words[0] not in ("constant", "uniform", "gaussian"):
-                raise ScriptError(f"vel must be constant, uniform or gaussian (got {words[0]})")
-            values = [number(w, f"vel {words[0]}") for w in words[1:]]
-            self.velocity_style = words[0]
-            self.velocity_mean = np.array(values[:3])
-            if len(values) > 3:
-                self.velocity_spread = np.array(values[3:])
-                if (self.velocity_spread < 0).any():
-                    raise ScriptError(f"vel {words[0]}: the spread must be >= 0 (got {' '.join(words[4:])})")
-        self.omega = np.zeros(3)
-        if "omega" in given:
-            words = given["omega"]
-            if words[0] != "constant":
-                raise ScriptError(f"omega takes constant WX WY WZ (got {words[0]})")
-            self.omega = np.array([number(w, "omega") for w in words[1:]])
-        self.set_property = None
-        if "set_property" in given:
-            prop, value = given["set_property"]
-            self.set_property = (prop, number(value, f"set_property {prop}"))
-        self.read_style(sim, given)
+        if args.vel is not None:
+            self.velocity_style = args.vel[0]
+            self.velocity_mean = np.array(args.vel[1:4])
+            if len(args.vel) > 4:
+                self.velocity_spread = np.array(args.vel[4:])
+        self.omega = np.zeros(3) if args.omega is None else np.array(args.omega[1:])
+        self.set_property = None if args.set_property is None else tuple(args.set_property)
+        self.read_style(sim, args)
         self.inserted = 0
         self.inserted_mass = 0.0
         self.events = 0
@@ -156,7 +147,7 @@ class FixInsert(Fix):
         self.finished = False
 
     # ---- what a style defines ----
-    def read_style(self, sim, given):
+    def read_style(self, sim, args):
         raise NotImplementedError
 
     def wanted(self, sim):

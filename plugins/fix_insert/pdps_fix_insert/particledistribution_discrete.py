@@ -28,12 +28,19 @@ Example::
     fix pdd all particledistribution/discrete 32452843 2 pts1 0.3 pts2 0.7
 """
 
+from typing import NamedTuple
+
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, number
+from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from .insertion import whole_number
+from .insertion import WholeNumber
 from .particletemplate_sphere import FixParticleTemplateSphere
+
+
+class Share(NamedTuple):
+    template: str
+    fraction: float
 
 
 class FixParticleDistributionDiscrete(Fix):
@@ -41,28 +48,29 @@ class FixParticleDistributionDiscrete(Fix):
     usage = "fix ID GROUP particledistribution/discrete SEED N TEMPLATE1 FRACTION1 ... TEMPLATEN FRACTIONN"
 
     class Args(StyleArgs):
-        words: list[str] = []
+        seed: WholeNumber = param(ge=1, unit="1")
+        count: WholeNumber = param(ge=1, unit="1", alias="N")
+        templates: list[Share] = param(default_factory=list, unit=("1", "dimensionless"))
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        if len(args.templates) != args.count:
+            raise ScriptError(f"expected {min(args.count, 10 ** 6)} template/fraction pairs (got "
+                              f"{2 * len(args.templates)} words after N)")
+        for name, fraction in args.templates:
+            if not 0 < fraction <= 1:
+                raise ScriptError(f"mass fraction of {name} must be > 0 and <= 1 (got {fraction:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        if len(words) < 2:
-            raise ScriptError(f"expected SEED and N; usage: {self.usage}")
-        self.seed = whole_number(words[0], "seed", low=1)
-        count = whole_number(words[1], "number of templates", low=1)
-        if len(words) - 2 != 2 * count:
-            raise ScriptError(f"expected {min(count, 10 ** 6)} template/fraction pairs (got {len(words) - 2} "
-                              "words after N)")
-        pairs = words[2:]
+        self.seed = args.seed
         self.templates, fractions = [], []
-        for name, word in zip(pairs[::2], pairs[1::2]):
+        for name, fraction in args.templates:
             template = sim.fixes.get(name)
             if not isinstance(template, FixParticleTemplateSphere):
                 known = [k for k, f in sim.fixes.items() if isinstance(f, FixParticleTemplateSphere)]
                 raise ScriptError(f"{name} is not a fix particletemplate/sphere (defined: {', '.join(known) or 'none'})")
-            fraction = number(word, f"mass fraction of {name}")
-            if not 0 < fraction <= 1:
-                raise ScriptError(f"mass fraction of {name} must be > 0 and <= 1 (got {word})")
             self.templates.append(template)
             fractions.append(fraction)
         total = sum(fractions)

@@ -31,11 +31,23 @@ Example::
 """
 
 import math
+from typing import Literal
 
-from pdps_core.api import ScriptError, StyleArgs, Fix
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
-from .insertion import read_keywords, whole_number
+from .insertion import WholeNumber, require
 from .size_distribution import Distribution
+
+# a density's style word, then its values; a radius's style word, then number|mass (but constant), then its values
+Density = tuple[Literal["constant"], float] | tuple[Literal["uniform", "gaussian", "lognormal"], float, float]
+Radius = (tuple[Literal["constant"], float]
+          | tuple[Literal["uniform", "gaussian", "lognormal"], Literal["number", "mass"], float, float])
+
+
+def units(kind):
+    """The units of a distribution's values by its style word (lognormal's MU and SIGMA are those of
+    ln of the value)."""
+    return {"constant": kind, "uniform": kind, "gaussian": kind, "lognormal": "dimensionless"}
 
 
 class FixParticleTemplateSphere(Fix):
@@ -44,32 +56,26 @@ class FixParticleTemplateSphere(Fix):
              "[volume_limit V]")
 
     class Args(StyleArgs):
-        words: list[str] = []
+        seed: WholeNumber = param(ge=1, unit="1")
+        atom_type: WholeNumber = keyword(1, ge=1, unit="1")
+        density: Density | None = keyword(None, unit=units("density"))
+        radius: Radius | None = keyword(None, unit=units("distance"))
+        volume_limit: float = keyword(1e-12, gt=0, unit="volume")
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        require(cls, args, "density", "radius")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        words = list(args.words)
-        if not words:
-            raise ScriptError(f"missing argument seed; usage: {self.usage}")
-        self.seed = whole_number(words[0], "seed", low=1)
-        given = read_keywords(words[1:], {
-            "atom_type": 1, "volume_limit": 1,
-            "density": lambda rest: Distribution.word_count(rest, radius=False),
-            "radius": lambda rest: Distribution.word_count(rest, radius=True),
-        })
-        self.atom_type = whole_number(given["atom_type"][0], "atom_type", low=1) if "atom_type" in given else 1
+        self.seed = args.seed
+        self.atom_type = args.atom_type
         if sim.ntypes and self.atom_type > sim.ntypes:
             raise ScriptError(f"atom_type must be from 1 to {sim.ntypes}, the number of types (got {self.atom_type})")
-        for needed in ("density", "radius"):
-            if needed not in given:
-                raise ScriptError(f"missing keyword {needed}; usage: {self.usage}")
-        self.density = Distribution.read(given["density"], "density", radius=False)
-        self.radius = Distribution.read(given["radius"], "radius", radius=True)
-        limit = 1e-12
-        if "volume_limit" in given:
-            limit = float(given["volume_limit"][0]) if _finite(given["volume_limit"][0]) else -1.0
-            if not limit > 0:
-                raise ScriptError(f"volume_limit must be a number > 0 (got {given['volume_limit'][0]})")
+        self.density = Distribution.read(args.density, "density", radius=False)
+        self.radius = Distribution.read(args.radius, "radius", radius=True)
+        limit = args.volume_limit
         self.volume_expected = 4.0 / 3.0 * math.pi * self.radius.mean_of(3)
         if self.volume_expected < limit:
             raise ScriptError(f"the expected particle volume {self.volume_expected:.3g} is below volume_limit "
@@ -80,10 +86,3 @@ class FixParticleTemplateSphere(Fix):
     def draw(self, rng, n):
         """(radii, densities) of n particles."""
         return self.radius.draw(rng, n), self.density.draw(rng, n)
-
-
-def _finite(word):
-    try:
-        return math.isfinite(float(word))
-    except ValueError:
-        return False

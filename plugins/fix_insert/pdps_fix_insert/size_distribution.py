@@ -27,10 +27,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pdps_core.api import ScriptError, number
+from pdps_core.api import ScriptError
 
 
-# words after the style name: radius styles take number|mass first
+# numbers after the style word (a radius's not constant: after number|mass)
 ARITY = {"constant": 1, "uniform": 2, "gaussian": 2, "lognormal": 2}
 
 
@@ -42,28 +42,27 @@ class Distribution:
     b: float = 0.0      # high end or deviation
 
     @classmethod
-    def read(cls, words, what, radius):
-        """From the words after ``radius`` or ``density`` (their count checked by the caller's
-        keyword table through ``word_count``)."""
-        style = words[0]
+    def read(cls, values, what, radius):
+        """From what follows ``radius`` or ``density``: the style word, ``number``/``mass`` for a
+        radius not constant, then the numbers (as the template's ``Args`` read them, or words)."""
+        style = values[0]
         if style not in ARITY:
             raise ScriptError(f"{what} style must be constant, uniform, gaussian or lognormal (got {style})")
         basis = "number"
-        rest = words[1:]
+        rest = values[1:]
         if radius and style != "constant":
             basis, rest = rest[0], rest[1:]
             if basis not in ("number", "mass"):
                 raise ScriptError(f"{what} {style}: expected number or mass (got {basis})")
-        values = [number(w, f"{what} {style}") for w in rest]
-        a, b = (values + [0.0])[:2]
+        a, b = ([float(v) for v in rest] + [0.0])[:2]
         if style == "constant" and a <= 0:
-            raise ScriptError(f"{what} constant must be > 0 (got {rest[0]})")
+            raise ScriptError(f"{what} constant must be > 0 (got {a:g})")
         if style == "uniform" and not 0 < a < b:
-            raise ScriptError(f"{what} uniform needs 0 < low < high (got {rest[0]} {rest[1]})")
+            raise ScriptError(f"{what} uniform needs 0 < low < high (got {a:g} {b:g})")
         if style in ("gaussian", "lognormal") and b <= 0:
-            raise ScriptError(f"{what} {style}: sigma must be > 0 (got {rest[1]})")
+            raise ScriptError(f"{what} {style}: sigma must be > 0 (got {b:g})")
         if style == "lognormal" and basis == "mass" and b > 1.0:
-            raise ScriptError(f"{what} lognormal mass: sigma must be <= 1 (got {rest[1]}): beyond, the number "
+            raise ScriptError(f"{what} lognormal mass: sigma must be <= 1 (got {b:g}): beyond, the number "
                               "distribution's peak lies more than 3 sigma below the cut")
         if style == "gaussian":
             if basis == "mass":
@@ -78,19 +77,10 @@ class Distribution:
         except OverflowError:
             fine = False
         if not fine:
-            shown = " ".join(words)
+            shown = " ".join(v if isinstance(v, str) else f"{v:g}" for v in values)
             hint = " (mu and sigma are those of ln of the value)" if style == "lognormal" else ""
             raise ScriptError(f"{what} {shown}: the values would not be finite numbers below 1e100{hint}")
         return made
-
-    @staticmethod
-    def word_count(words, radius):
-        """How many words ``radius``/``density`` takes, from the style word (and basis) after it."""
-        if not words:
-            return 1
-        style = words[0]
-        extra = 1 if radius and style != "constant" else 0
-        return 1 + extra + ARITY.get(style, 0)
 
     # ---- the number density of the values ----
     def support(self):

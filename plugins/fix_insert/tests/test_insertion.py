@@ -173,7 +173,7 @@ def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
     ("fix ins all insert/pack seed 0 distributiontemplate pdd1 region bc particles_in_region 5",
      "seed must be >= 1 (got 0)"),
     ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 vel sideways 1 2 3",
-     "vel must be constant, uniform or gaussian (got sideways)"),
+     "vel must be one of constant, uniform, gaussian (got sideways)"),
     ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 sideways 1",
      "unknown keyword sideways (known: seed, distributiontemplate, verbose, maxattempt, insert_every, start, "
      "overlapcheck, all_in, random_distribute, orientation, set_property, vel, omega, region, "
@@ -186,15 +186,15 @@ def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
      "radius STYLE ... [volume_limit V]"),
     ("fix d2 all particledistribution/discrete 1 2 pts1 0.5",
      "expected 2 template/fraction pairs (got 2 words after N)"),
-    ("fix d2 all particledistribution/discrete 1.5 1 pts1 1.0", "seed must be a whole number (got 1.5)"),
+    ("fix d2 all particledistribution/discrete 1.5 1 pts1 1.0", "seed must be an integer (got 1.5)"),
     ("fix d2 all particledistribution/discrete 1 1e30 pts1 1.0", "expected 1000000 template/fraction pairs (got 2 words after N)"),
     ("fix t2 all particletemplate/sphere 1 atom_type 1 density lognormal 2500 0.1 radius constant 0.001",
      "density lognormal 2500 0.1: the values would not be finite numbers below 1e100 (mu and sigma are those "
      "of ln of the value)"),
     ("fix t2 all particletemplate/sphere 1 atom_type 1 density constant 1 radius constant 1e200",
-     "radius constant 1e200: the values would not be finite numbers below 1e100"),
+     "radius must be 0 or of magnitude from 1e-50 to 1e+50 (got 1e+200)"),
     ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc volumefraction_region 0.2 ntry_mc 1e13",
-     "ntry_mc must be at most 100000000 (got 1e13)"),
+     "ntry_mc must be at most 100000000 (got 1e+13)"),
     ("region out block -0.01 0.01 -0.01 0.01 0 0.01 side out units box\n"
      "fix ins all insert/pack seed 1 distributiontemplate pdd1 region out particles_in_region 5",
      "region out has side out: insertion needs a region whose inside is the insertion volume"),

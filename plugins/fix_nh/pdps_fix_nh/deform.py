@@ -49,16 +49,36 @@ Examples::
 """
 
 import math
+from typing import Annotated, Literal
 
 import numpy as np
 from numba import njit
+from pydantic import BeforeValidator
+from pydantic_core import PydanticCustomError
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, VariableRef, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, VariableRef, keyword, param
 
-ARITY = {"final": 2, "delta": 2, "scale": 1, "vel": 1, "erate": 1, "trate": 1, "volume": 0, "wiggle": 2,
-         "variable": 2}
-REFUSED = {"xy", "xz", "yz"}
 LINEAR = ("final", "delta", "scale", "vel", "erate")
+
+
+def _variable(word):
+    if not isinstance(word, str):
+        return word             # a VariableRef, or its JSON form in a restart
+    if not (word.startswith("v_") and len(word) > 2):
+        raise PydanticCustomError("variable", "variable takes two equal-style variables v_LENGTH v_RATE")
+    return VariableRef(word[2:])
+
+
+Variable = Annotated[VariableRef, BeforeValidator(_variable)]
+# how one axis changes: its style word, then that style's values
+Change = (tuple[Literal["final", "delta"], float, float]
+          | tuple[Literal["scale", "vel", "erate", "trate"], float]
+          | Literal["volume"]
+          | tuple[Literal["wiggle"], float, float]
+          | tuple[Literal["variable"], Variable, Variable])
+CHANGE_UNITS = {"final": "distance", "delta": "distance", "scale": "dimensionless", "vel": "velocity",
+                "erate": "1/time", "trate": "1/time", "wiggle": ("distance", "time"),
+                "variable": ("distance", "velocity")}
 
 
 @njit(cache=True)
@@ -79,63 +99,43 @@ class FixDeform(Fix):
     usage = ("fix ID GROUP deform N x|y|z final|delta|scale|vel|erate|trate|volume|wiggle|variable VALUES... "
              "[remap x|v|none] [flip yes|no] [units lattice|box]")
 
+    refused = dict.fromkeys(("xy", "xz", "yz"), "pdps boxes are orthogonal (no tilt), so only x, y and z can deform")
+
     class Args(StyleArgs):
         every: int = param(ge=1, unit="timesteps")
-        words: list[str] = []
+        x: Change | None = keyword(None, unit=CHANGE_UNITS)
+        y: Change | None = keyword(None, unit=CHANGE_UNITS)
+        z: Change | None = keyword(None, unit=CHANGE_UNITS)
+        remap: Literal["x", "v", "none"] = keyword("x")
+        flip: Literal["yes", "no"] = keyword("yes")     # of tilted boxes: read, no effect here
+        units: Literal["lattice", "box"] = keyword("lattice")
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        changes = [(axis, getattr(args, axis)) for axis in "xyz" if getattr(args, axis) is not None]
+        if not changes:
+            raise ScriptError("fix deform needs at least one of x, y, z with a style")
+        for axis, change in changes:
+            if change[0] == "wiggle" and change[2] <= 0:
+                raise ScriptError(f"{axis} wiggle: the period must be > 0 (got {change[2]:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         sim.require_box("fix deform")
-        words, k = list(args.words), 0
+        if args.z is not None and sim.dimension == 2:
+            raise ScriptError("z: a 2-d simulation's box cannot deform along z")
         self.axes = {}                  # axis -> (style, values)
-        self.remap, self.units = "x", "lattice"
-        while k < len(words):
-            word = words[k]
-            if word in ("x", "y", "z"):
-                style = words[k + 1] if k + 1 < len(words) else "none"
-                if style not in ARITY:
-                    raise ScriptError(f"{word} {style}: styles are final, delta, scale, vel, erate, trate, volume, "
-                                      "wiggle and variable")
-                d = "xyz".index(word)
-                if d == 2 and sim.dimension == 2:
-                    raise ScriptError("z: a 2-d simulation's box cannot deform along z")
-                self.axes[d] = (style, self._values(word, style, words[k + 2:k + 2 + ARITY[style]]))
-                k += 2 + ARITY[style]
-            elif word in REFUSED:
-                raise ScriptError(f"{word}: pdps boxes are orthogonal (no tilt), so only x, y and z can deform")
-            elif word in ("remap", "flip", "units"):
-                value = words[k + 1] if k + 1 < len(words) else ""
-                allowed = {"remap": ("x", "v", "none"), "flip": ("yes", "no"), "units": ("lattice", "box")}[word]
-                if value not in allowed:
-                    raise ScriptError(f"{word} must be one of {', '.join(allowed)} (got {value or 'nothing'})")
-                if word != "flip":
-                    setattr(self, word, value)
-                k += 2
-            else:
-                raise ScriptError(f"unknown keyword {word} (known: x, y, z, remap, flip, units)")
-        if not self.axes:
-            raise ScriptError("fix deform needs at least one of x, y, z with a style")
+        for d, change in enumerate((args.x, args.y, args.z)):
+            if change == "volume":
+                self.axes[d] = ("volume", [])
+            elif change is not None:
+                self.axes[d] = (change[0], list(change[1:]))
+        self.remap, self.units = args.remap, args.units
         self.links = {d: self._volume_links(d) for d, (style, _) in self.axes.items() if style == "volume"}
         self.deformed_axes = tuple(sorted(self.axes))
         if self.remap == "v":
             self.per_atom = (("deform_image", 3, np.int32),)
-
-    @staticmethod
-    def _values(word, style, values):
-        if style == "variable":
-            if len(values) != 2 or not all(v.startswith("v_") and len(v) > 2 for v in values):
-                raise ScriptError(f"{word} variable takes two variables v_LENGTH v_RATE (got "
-                                  f"{' '.join(values) or 'none'})")
-            return [VariableRef(v[2:]) for v in values]
-        try:
-            numbers = [float(v) for v in values]
-        except ValueError:
-            numbers = []
-        if len(numbers) != ARITY[style] or not all(math.isfinite(v) for v in numbers):
-            raise ScriptError(f"{word} {style} takes {ARITY[style]} number(s) (got {' '.join(values) or 'none'})")
-        if style == "wiggle" and numbers[1] <= 0:
-            raise ScriptError(f"{word} wiggle: the period must be > 0 (got {numbers[1]:g})")
-        return numbers
 
     def _volume_links(self, d):
         """LAMMPS's links of a volume axis: (kind, fixed, dynamic1, dynamic2). One other axis

@@ -208,19 +208,20 @@ def test_nh_refused_at_the_run(setup, message):
 @pytest.mark.parametrize("line, message", [
     ("fix 2 all deform 1", "fix deform needs at least one of x, y, z with a style"),
     ("fix 2 all deform 0 x erate 0.1", "every must be >= 1 (got 0)"),
-    ("fix 2 all deform 1 x shear 1", "x shear: styles are final, delta, scale, vel, erate, trate, volume, wiggle "
-                                     "and variable"),
+    ("fix 2 all deform 1 x shear 1", "x must be one of final, delta, scale, vel, erate, trate, volume, wiggle, "
+                                     "variable (got shear)"),
     ("fix 2 all deform 1 x volume", "x volume: another of x, y, z must change by a style other than volume for "
                                     "this one to keep the volume"),
     ("fix 2 all deform 1 x volume y volume z erate 0.1 z volume",
      "x volume: another of x, y, z must change by a style other than volume for this one to keep the volume"),
     ("fix 2 all deform 1 x wiggle 0.1 0", "x wiggle: the period must be > 0 (got 0)"),
-    ("fix 2 all deform 1 x wiggle 0.1", "x wiggle takes 2 number(s) (got 0.1)"),
-    ("fix 2 all deform 1 y variable v_a b", "y variable takes two variables v_LENGTH v_RATE (got v_a b)"),
-    ("fix 2 all deform 1 x final 0", "x final takes 2 number(s) (got 0)"),
-    ("fix 2 all deform 1 y scale big", "y scale takes 1 number(s) (got big)"),
-    ("fix 2 all deform 1 xy erate 0.1", "xy: pdps boxes are orthogonal (no tilt), so only x, y and z can deform"),
-    ("fix 2 all deform 1 x erate 0.1 remap y", "remap must be one of x, v, none (got y)"),
+    ("fix 2 all deform 1 x wiggle 0.1", "x wiggle takes 2 value(s): number number (got 0.1)"),
+    ("fix 2 all deform 1 y variable v_a b", "y: variable takes two equal-style variables v_LENGTH v_RATE (got b)"),
+    ("fix 2 all deform 1 x final 0", "x final takes 2 value(s): number number (got 0)"),
+    ("fix 2 all deform 1 y scale big", "y must be a finite number (got big)"),
+    ("fix 2 all deform 1 xy erate 0.1",
+     "keyword xy of fix deform: pdps boxes are orthogonal (no tilt), so only x, y and z can deform"),
+    ("fix 2 all deform 1 x erate 0.1 remap y", "remap must be one of 'x', 'v' or 'none' (got y)"),
     ("fix 2 all deform 1 x erate 0.1 shape no", "unknown keyword shape (known: x, y, z, remap, flip, units)"),
 ])
 def test_bad_deform(line, message):

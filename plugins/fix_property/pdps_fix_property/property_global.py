@@ -34,15 +34,33 @@ Example (LIGGGHTS's material block for two types)::
     fix m5 all property/global characteristicVelocity scalar 2.
 """
 
-from typing import Literal
+from typing import Annotated, Literal, NewType
 
 import numpy as np
+from pydantic import BeforeValidator
+from pydantic_core import PydanticCustomError
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, number, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
 PER_TYPE = ("vector", "atomtype", "peratomtype")
 PER_TYPE_PAIR = ("atomtypepair", "peratomtypepair")
-STYLES = ("scalar",) + PER_TYPE + ("matrix",) + PER_TYPE_PAIR
+MAX_COLUMNS = 10000
+
+
+def _columns(word):
+    try:
+        value = int(word)
+    except (TypeError, ValueError):
+        raise PydanticCustomError("columns", "the number of columns must be an integer") from None
+    if not 1 <= value <= MAX_COLUMNS:
+        raise PydanticCustomError("columns", f"the number of columns must be from 1 to {MAX_COLUMNS}")
+    return value
+
+
+# the number of columns of a table, its values following (not a count of the words after it)
+Columns = Annotated[NewType("columns", int), BeforeValidator(_columns)]
+Table = (tuple[Literal[("scalar",) + PER_TYPE], tuple[float, ...]]
+         | tuple[Literal[("matrix",) + PER_TYPE_PAIR], Columns, tuple[float, ...]])
 
 
 class FixPropertyGlobal(Fix):
@@ -52,43 +70,39 @@ class FixPropertyGlobal(Fix):
 
     class Args(StyleArgs):
         variable: str = param(description="the property's name")
-        style: Literal[STYLES]
-        values: list[str] = []
+        values: Table = param(unit="as the property", description="the style word, then its values")
+
+        @property
+        def style(self):
+            """The style word as written (LIGGGHTS's spellings: atomtype, peratomtype, ...)."""
+            return self.values[0]
+
+    @classmethod
+    def check_args(cls, args):
+        super().check_args(args)
+        name, style = args.variable, args.style
+        values = args.values[-1]
+        if not values:
+            raise ScriptError(f"{name} {style}: expected at least one value; usage: {cls.usage}")
+        if style == "scalar" and len(values) != 1:
+            raise ScriptError(f"{name} scalar takes one value (got {len(values)})")
+        if style == "matrix" and len(values) % args.values[1]:
+            raise ScriptError(f"{name} matrix: {len(values)} values do not fill rows of {args.values[1]} columns")
+        if style in PER_TYPE_PAIR:
+            n = args.values[1]
+            if len(values) != n * n:
+                raise ScriptError(f"{name} {style} {n}: expected {n} x {n} = {n * n} values (got {len(values)})")
+            table = np.array(values).reshape(n, n)
+            if not np.array_equal(table, table.T):
+                i, j = (int(k) + 1 for k in np.argwhere(table != table.T)[0])
+                raise ScriptError(f"{name} {style}: the table must be symmetric (value {i},{j} is "
+                                  f"{table[i - 1, j - 1]:g}, value {j},{i} is {table[j - 1, i - 1]:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        name, words = args.variable, list(args.values)
-        self.variable = name
-        self.columns = 1
-        if args.style in ("matrix",) + PER_TYPE_PAIR:
-            if not words:
-                raise ScriptError(f"{name} {args.style}: expected the number of columns, then the values; "
-                                  f"usage: {self.usage}")
-            try:
-                self.columns = int(words[0])
-            except ValueError:
-                raise ScriptError(f"{name} {args.style}: the number of columns must be an integer "
-                                  f"(got {words[0]})") from None
-            if not 1 <= self.columns <= 10000:
-                raise ScriptError(f"{name} {args.style}: the number of columns must be from 1 to 10000 "
-                                  f"(got {words[0]})")
-            words = words[1:]
-        if not words:
-            raise ScriptError(f"{name} {args.style}: expected at least one value; usage: {self.usage}")
-        values = np.array([number(w, f"{name} {args.style}") for w in words])
-        if args.style == "scalar" and len(values) != 1:
-            raise ScriptError(f"{name} scalar takes one value (got {len(values)})")
-        if args.style == "matrix" and len(values) % self.columns:
-            raise ScriptError(f"{name} matrix: {len(values)} values do not fill rows of {self.columns} columns")
-        if args.style in PER_TYPE_PAIR:
-            n = self.columns
-            if len(values) != n * n:
-                raise ScriptError(f"{name} {args.style} {n}: expected {n} x {n} = {n * n} values (got {len(values)})")
-            table = values.reshape(n, n)
-            if not np.array_equal(table, table.T):
-                i, j = (int(k) + 1 for k in np.argwhere(table != table.T)[0])
-                raise ScriptError(f"{name} {args.style}: the table must be symmetric (value {i},{j} is "
-                                  f"{table[i - 1, j - 1]:g}, value {j},{i} is {table[j - 1, i - 1]:g})")
-        self.style = "scalar" if args.style == "scalar" else (
-            "per_type" if args.style in PER_TYPE else "per_type_pair" if args.style in PER_TYPE_PAIR else "matrix")
-        self.values = values
+        style = args.style
+        self.variable = args.variable
+        self.columns = args.values[1] if len(args.values) == 3 else 1
+        self.style = "scalar" if style == "scalar" else (
+            "per_type" if style in PER_TYPE else "per_type_pair" if style in PER_TYPE_PAIR else "matrix")
+        self.values = np.array(args.values[-1], dtype=float, ndmin=1)

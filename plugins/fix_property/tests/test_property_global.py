@@ -48,18 +48,18 @@ def test_scalar_with_two_values_is_refused(pdps_cli):
     ("fix a all property/global coefficientFriction peratomtypepair 2 0.1 0.2 0.2",
      "fix: coefficientFriction peratomtypepair 2: expected 2 x 2 = 4 values (got 3)"),
     ("fix a all property/global coefficientFriction peratomtypepair two 0.1",
-     "fix: coefficientFriction peratomtypepair: the number of columns must be an integer (got two)"),
+     "fix: values: the number of columns must be an integer (got two)"),
     ("fix a all property/global table matrix 4 1 2 3", "fix: table matrix: 3 values do not fill rows of 4 columns"),
     ("fix a all property/global youngsModulus peratomtype", "fix: youngsModulus peratomtype: expected at least "
      "one value; usage: " + "fix ID GROUP property/global NAME scalar V | vector|atomtype|peratomtype V1 V2 ... | "
      "matrix|atomtypepair|peratomtypepair N V11 ... VNN"),
     ("fix a all property/global youngsModulus peratomtype 5e6 abc",
-     "fix: youngsModulus peratomtype must be a number (got abc)"),
+     "fix: values must be a finite number (got abc)"),
     ("fix a all property/global youngsModulus peratomtype 5e6 inf",
-     "fix: youngsModulus peratomtype must be finite (got inf)"),
+     "fix: values must be a finite number (got inf)"),
     ("fix a all property/global youngsModulus perparticle 5e6",
-     "fix: style must be one of 'scalar', 'vector', 'atomtype', 'peratomtype', 'matrix', 'atomtypepair' or "
-     "'peratomtypepair' (got perparticle)"),
+     "fix: values must be one of scalar, vector, atomtype, peratomtype, matrix, atomtypepair, peratomtypepair "
+     "(got perparticle)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
     assert_refused(pdps_cli(SETUP + line + "\n"), 6, message)
