@@ -58,10 +58,12 @@ class GlobalProperty(Protocol):
 
 @runtime_checkable
 class TriangleSurface(Protocol):
-    """A fix holding a triangulated surface (fix wall/mesh, mesh/surface): what mesh dumps write."""
+    """A fix holding a triangulated surface (fix wall/mesh, mesh/surface): what mesh dumps write and
+    an insertion face (fix insert/stream) is."""
 
     vertices: np.ndarray    # (n, 3) corner positions now (distance)
     triangles: np.ndarray   # (m, 3) corner rows of each triangle
+    face_normal: np.ndarray  # (m, 3) unit normals, right-hand rule over each triangle's corners
     moving: bool            # whether the corners move during a run
 
 

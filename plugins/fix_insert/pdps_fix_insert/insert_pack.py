@@ -37,7 +37,8 @@ import numpy as np
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs, WholeNumber, require
+from .insertion import FixInsert, InsertArgs
+from .keywords import WholeNumber, require
 from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")

@@ -29,7 +29,8 @@ from typing import Literal
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs, WholeNumber, positive, require
+from .insertion import FixInsert, InsertArgs, positive
+from .keywords import WholeNumber, require
 from .region_volume import InRegion, insertion_region
 
 

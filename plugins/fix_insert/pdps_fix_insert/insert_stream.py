@@ -39,9 +39,10 @@ Example (LIGGGHTS's chute tutorial)::
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ScriptError, keyword
+from pdps_core.api import ScriptError, TriangleSurface, keyword
 
-from .insertion import FixInsert, WholeNumber, require
+from .insertion import FixInsert
+from .keywords import WholeNumber, require
 from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
 
@@ -107,7 +108,7 @@ class FixInsertStream(FixInsert):
     def read_style(self, sim, args):
         name = args.insertion_face
         self.face = sim.fixes.get(name)
-        if not hasattr(self.face, "triangles") or not hasattr(self.face, "vertices"):
+        if not isinstance(self.face, TriangleSurface):
             raise ScriptError(f"insertion_face {name} is not a fix mesh/surface")
         self.extrude_length, self.duration = args.extrude_length, args.duration
         normals = self.face.face_normal

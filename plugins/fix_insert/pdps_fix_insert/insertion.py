@@ -27,33 +27,19 @@ seeds each rank differently, so its particles depend on the rank count.) Output:
 """
 
 import math
-from typing import Annotated, Literal, NamedTuple
+from typing import Literal, NamedTuple
 
 import numpy as np
-from pydantic import BeforeValidator
-
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
 
+from .particledistribution_discrete import FixParticleDistributionDiscrete
 from .placement import grid, place
+from .keywords import WholeNumber, require
 
 POOL_LIMIT = 4_000_000       # candidate positions drawn per insertion at most
 MAX_AT_ONCE = 10_000_000     # particles one insertion may add
 
 
-def _whole(word):
-    """A word written as a float with no fraction ("1.", as LIGGGHTS's tutorials write seeds, which
-    its atoi reads) is that integer; any other word is left for pydantic to judge."""
-    if isinstance(word, str):
-        try:
-            value = float(word)
-        except ValueError:
-            return word
-        if math.isfinite(value) and value == int(value):
-            return int(value)
-    return word
-
-
-WholeNumber = Annotated[int, BeforeValidator(_whole)]
 YesNo = Literal["yes", "no"]
 Velocity = (tuple[Literal["constant"], float, float, float]
             | tuple[Literal["uniform", "gaussian"], float, float, float, float, float, float])
@@ -80,13 +66,6 @@ class InsertArgs(StyleArgs):
     set_property: Property | None = keyword(None, unit=("1", "as the property"))
     vel: Velocity | None = keyword(None, unit="velocity")
     omega: tuple[Literal["constant"], float, float, float] | None = keyword(None, unit="1/time")
-
-
-def require(cls, args, *names):
-    """A one-line error for the first of ``names`` (LIGGGHTS's required keywords) the line lacks."""
-    for needed in names:
-        if getattr(args, needed) is None:
-            raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
 
 
 def positive(args, name):
@@ -120,8 +99,8 @@ class FixInsert(Fix):
         self.seed = args.seed
         name = args.distributiontemplate
         self.distribution = sim.fixes.get(name)
-        if getattr(self.distribution, "name", None) != "particledistribution/discrete":
-            known = [k for k, f in sim.fixes.items() if f.name == "particledistribution/discrete"]
+        if not isinstance(self.distribution, FixParticleDistributionDiscrete):
+            known = [k for k, f in sim.fixes.items() if isinstance(f, FixParticleDistributionDiscrete)]
             raise ScriptError(f"distributiontemplate {name} is not a fix particledistribution/discrete "
                               f"(defined: {', '.join(known) or 'none'})")
         self.verbose = args.verbose == "yes"

@@ -34,7 +34,7 @@ import numpy as np
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from .insertion import WholeNumber
+from .keywords import WholeNumber
 from .particletemplate_sphere import FixParticleTemplateSphere
 
 

@@ -35,7 +35,7 @@ from typing import Literal
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
-from .insertion import WholeNumber, require
+from .keywords import WholeNumber, require
 from .size_distribution import Distribution
 
 # a density's style word, then its values; a radius's style word, then number|mass (but constant), then its values
