@@ -240,15 +240,17 @@ def defaults(model):
 
 
 def models(cls):
-    """The style's argument models: Args, Coeff, then any other nested StyleArgs class, with the
-    script line each one reads."""
+    """The style's argument models: Args, Coeff, then any other nested StyleArgs class, then those
+    of the other spellings of its name (``spellings()``, labelled ``Class.Args``)."""
     found = {}
     for klass in reversed(cls.__mro__):
         for attr, value in vars(klass).items():
             if isinstance(value, type) and issubclass(value, StyleArgs) and value is not StyleArgs:
                 found[attr] = value
     ordered = sorted(found, key=lambda attr: ({"Args": 0, "Coeff": 1}.get(attr, 2), attr))
-    return [(attr, found[attr]) for attr in ordered if found[attr].model_fields]
+    own = [(attr, found[attr]) for attr in ordered if found[attr].model_fields]
+    return own + [(f"{other.__name__}.{attr}", model) for other in cls.spellings() for attr, model in models(other)
+                  if model not in dict(own).values()]
 
 
 def _command(cls, attr):
@@ -278,10 +280,14 @@ def document(entry, cls):
         out += ["Description:", "", description, ""]
     out += ["Parameters:", ""]
     declared = models(cls)
+    spelled = {other.__name__: other for other in cls.spellings()}
     for attr, model in declared:
         heading = inspect.getdoc(model) if model.__doc__ else None
         command = _command(cls, attr)
         title = command if attr in ("Args", "Coeff") else f"{attr}: {heading or command}"
+        owner, _, inner = attr.partition(".")
+        if owner in spelled:
+            title = f"or, as {_command(spelled[owner], inner) or attr}"
         out += [title.splitlines()[0] if title else attr] + parameter_lines(model) + [""]
     if not declared:
         out += ["(none)", ""]

@@ -627,6 +627,12 @@ class Style:
         a ScriptError for a bad combination."""
 
     @classmethod
+    def spellings(cls):
+        """The classes ``respell`` may hand this style's lines to (another spelling of its name with
+        arguments of its own), so that ``pdps doc`` shows their parameters too; () by default."""
+        return ()
+
+    @classmethod
     def respell(cls, dialect, words):
         """(class, words) when, in ``dialect`` (its name: pdps, lammps, liggghts), this style's name
         with these words spells another style of the same plugin, as LIGGGHTS 2.x's ``pair_style

@@ -230,6 +230,11 @@ class FixWallGran(Fix):
         return FixWallGranModel(sim, id, group, args)
 
     @classmethod
+    def spellings(cls):
+        from .wall_gran_model import FixWallGranModel
+        return (FixWallGranModel,)
+
+    @classmethod
     def respell(cls, dialect, words):
         # LIGGGHTS's spelling (``wall/gran model ...``, its keywords in any order) is a style of its own
         if "model" in words:

@@ -24,6 +24,11 @@ class LiggghtsWallSpelling(Fix):
     """A LIGGGHTS 2.x wall name: only ever respelled, never made."""
 
     @classmethod
+    def spellings(cls):
+        from .wall_gran_model import FixWallGranModel
+        return (FixWallGranModel,)
+
+    @classmethod
     def respell(cls, dialect, words):
         today = liggghts2.MODELS[cls.name[len("wall/"):]]
         if dialect != "liggghts":

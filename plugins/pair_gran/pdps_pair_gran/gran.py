@@ -176,6 +176,13 @@ class PairGran(Pair):
     history_name = PAIR_SHEAR
 
     @classmethod
+    def spellings(cls):
+        if cls.name not in liggghts2.MODELS:
+            return ()
+        from .gran_model import PairGranModel
+        return (PairGranModel,)
+
+    @classmethod
     def respell(cls, dialect, words):
         """In a LIGGGHTS script, this style without coefficients is its 2.x spelling of pair gran."""
         if dialect != "liggghts" or cls.name not in liggghts2.MODELS:
