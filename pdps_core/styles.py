@@ -595,6 +595,11 @@ def parse_args(model, words, usage="", refused=None):
         else:
             values[word] = value
         i = end
+    # a keyword declared without a default (LIGGGHTS's seed, model, ...) must be given
+    missing = next((name for name, info in fields.items() if _is_keyword(info) and info.is_required()
+                    and name not in values), None)
+    if missing is not None:
+        raise ScriptError(f"missing keyword {missing}" + (f"; usage: {usage}" if usage else ""))
     try:
         return model(**values)
     except ValidationError as exc:

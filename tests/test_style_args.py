@@ -209,6 +209,17 @@ def test_a_run_that_another_argument_follows_ends_at_a_word_that_starts_no_entry
         parse_args(Written, "output interpolate stress".split())
 
 
+class Seeded(StyleArgs):
+    seed: int = keyword(..., ge=1, unit="1")
+    region: str | None = keyword(None, names="region ID")
+
+
+def test_a_keyword_without_a_default_must_be_given():
+    assert parse_args(Seeded, "region r seed 5".split()).seed == 5
+    with pytest.raises(ScriptError, match=r"^missing keyword seed; usage: fix ID all insert seed S$"):
+        parse_args(Seeded, "region r".split(), "fix ID all insert seed S")
+
+
 # ---- every style of the registry declares its arguments ------------------------------------------
 def _numeric(annotation):
     """Whether a value of ``annotation`` holds a number anywhere (a tuple member, a union member)."""

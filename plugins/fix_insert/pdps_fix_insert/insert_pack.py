@@ -38,7 +38,7 @@ import numpy as np
 from pdps_core.api import ScriptError, keyword
 
 from .insertion import FixInsert, InsertArgs
-from .keywords import WholeNumber, require
+from .whole_number import WholeNumber
 from .region_volume import InRegion, insertion_region, region_volume
 
 TARGETS = ("volumefraction_region", "particles_in_region", "mass_in_region")
@@ -51,7 +51,7 @@ class FixInsertPack(InRegion, FixInsert):
              "volumefraction_region VF | particles_in_region N | mass_in_region M [ntry_mc N]")
 
     class Args(InsertArgs):
-        region: str | None = keyword(None)
+        region: str = keyword(..., names="region ID")
         volumefraction_region: float | None = keyword(None, unit="dimensionless")
         particles_in_region: WholeNumber | None = keyword(None, ge=0, unit="particles")
         mass_in_region: float | None = keyword(None, gt=0, unit="mass")
@@ -60,7 +60,6 @@ class FixInsertPack(InRegion, FixInsert):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        require(cls, args, "region")
         targets = [t for t in TARGETS if getattr(args, t) is not None]
         if len(targets) != 1:
             raise ScriptError("give exactly one of volumefraction_region, particles_in_region, mass_in_region "

@@ -30,7 +30,7 @@ from typing import Literal
 from pdps_core.api import ScriptError, keyword
 
 from .insertion import FixInsert, InsertArgs, positive
-from .keywords import WholeNumber, require
+from .whole_number import WholeNumber
 from .region_volume import InRegion, insertion_region
 
 
@@ -86,15 +86,14 @@ class FixInsertRateRegion(InRegion, FixInsert):
     once_by_default = False
 
     class Args(RateArgs):
-        region: str | None = keyword(None)
+        region: str = keyword(..., names="region ID")
+        insert_every: Literal["once"] | WholeNumber = keyword(..., unit="timesteps")
         ntry_mc: WholeNumber | None = keyword(None, ge=1, unit="1")    # LIGGGHTS's; read and not needed
 
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        require(cls, args, "region")
         check_rate(cls, args)
-        require(cls, args, "insert_every")
 
     def read_style(self, sim, args):
         self.region = insertion_region(sim, args.region)

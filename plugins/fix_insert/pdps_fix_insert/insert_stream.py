@@ -42,7 +42,7 @@ from numba import njit
 from pdps_core.api import ScriptError, TriangleSurface, keyword
 
 from .insertion import FixInsert
-from .keywords import WholeNumber, require
+from .whole_number import WholeNumber
 from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
 
@@ -83,14 +83,13 @@ class FixInsertStream(FixInsert):
     once_by_default = False
 
     class Args(RateArgs):
-        insertion_face: str | None = keyword(None)
+        insertion_face: str = keyword(..., names="fix mesh/surface ID")
         extrude_length: float | None = keyword(None, gt=0, unit="distance")
         duration: WholeNumber | None = keyword(None, ge=1, unit="timesteps")
 
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        require(cls, args, "insertion_face")
         if args.extrude_length is not None and args.insert_every is not None:
             raise ScriptError("must not provide both 'insert_every' and 'extrude_length' (LIGGGHTS)")
         if args.extrude_length is None and args.insert_every is None:

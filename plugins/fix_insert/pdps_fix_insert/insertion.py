@@ -34,7 +34,7 @@ from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
 
 from .particledistribution_discrete import FixParticleDistributionDiscrete
 from .placement import grid, place
-from .keywords import WholeNumber, require
+from .whole_number import WholeNumber
 
 POOL_LIMIT = 4_000_000       # candidate positions drawn per insertion at most
 MAX_AT_ONCE = 10_000_000     # particles one insertion may add
@@ -53,8 +53,8 @@ class Property(NamedTuple):
 class InsertArgs(StyleArgs):
     """LIGGGHTS's general keywords of the insertion fixes, in any order; a keyword given twice: the
     later holds."""
-    seed: WholeNumber | None = keyword(None, ge=1, unit="1")
-    distributiontemplate: str | None = keyword(None)
+    seed: WholeNumber = keyword(..., ge=1, unit="1")
+    distributiontemplate: str = keyword(..., names="fix particledistribution/discrete ID")
     verbose: YesNo = keyword("no")
     maxattempt: WholeNumber = keyword(50, ge=1, unit="1")
     insert_every: Literal["once"] | WholeNumber | None = keyword(None, unit="timesteps")
@@ -85,7 +85,6 @@ class FixInsert(Fix):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        require(cls, args, "seed", "distributiontemplate")
         if isinstance(args.insert_every, int) and args.insert_every < 1:
             raise ScriptError(f"insert_every must be >= 1 (got {args.insert_every})")
         if args.vel is not None and any(v < 0 for v in args.vel[4:]):

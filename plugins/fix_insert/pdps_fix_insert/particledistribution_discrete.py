@@ -34,7 +34,7 @@ import numpy as np
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from .keywords import WholeNumber
+from .whole_number import WholeNumber
 from .particletemplate_sphere import FixParticleTemplateSphere
 
 

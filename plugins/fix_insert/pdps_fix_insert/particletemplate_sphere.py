@@ -35,7 +35,7 @@ from typing import Literal
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
-from .keywords import WholeNumber, require
+from .whole_number import WholeNumber
 from .size_distribution import Distribution
 
 # a density's style word, then its values; a radius's style word, then number|mass (but constant), then its values
@@ -58,14 +58,13 @@ class FixParticleTemplateSphere(Fix):
     class Args(StyleArgs):
         seed: WholeNumber = param(ge=1, unit="1")
         atom_type: WholeNumber = keyword(1, ge=1, unit="1")
-        density: Density | None = keyword(None, unit=units("density"))
-        radius: Radius | None = keyword(None, unit=units("distance"))
+        density: Density = keyword(..., unit=units("density"))
+        radius: Radius = keyword(..., unit=units("distance"))
         volume_limit: float = keyword(1e-12, gt=0, unit="volume")
 
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
-        require(cls, args, "density", "radius")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

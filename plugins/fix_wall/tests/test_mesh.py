@@ -469,7 +469,7 @@ def test_relative_file_names_are_read_from_the_script_folder(data, tmp_path):
 
 @pytest.mark.parametrize("words, message", [
     ("model lsd 0.8 1e4 0.3", "missing keyword file"),
-    ("file {data}/square.stl", "missing argument model"),
+    ("file {data}/square.stl", "missing keyword model"),
     ("file {data}/square.stl spin 1 model lsd 0.8 1e4 0.3", "unknown keyword spin"),
     ("file {data}/square.stl scale 0 model lsd 0.8 1e4 0.3", "scale must be > 0 (got 0)"),
     ("file {data}/square.stl move 1 2 model lsd 0.8 1e4 0.3", "keyword move needs 3 value(s) (got 1 2)"),

@@ -221,7 +221,7 @@ def test_a_conveyor_cannot_be_moved(data):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("type 1", "missing argument file"),
+    ("type 1", "missing keyword file"),
     ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
     ("file {data}/square.stl type x", "type must be an integer (got x)"),
     ("file {data}/square.stl curvature 120", "curvature must be in (0, 90] degrees (got 120)"),

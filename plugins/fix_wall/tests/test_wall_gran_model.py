@@ -138,7 +138,7 @@ def test_a_turning_cylinder_carries_a_sphere_at_its_surface_speed():
 
 
 @pytest.mark.parametrize("words, message", [
-    ("model hertz primitive type 2 zplane 0", "missing argument tangential"),
+    ("model hertz primitive type 2 zplane 0", "missing keyword tangential"),
     ("model jkr tangential history primitive type 2 zplane 0", "model must be one of 'hertz' or 'hooke' (got jkr)"),
     ("model hertz tangential history", "expected primitive or mesh (got neither); usage: "),
     ("model hertz tangential history primitive type 3 zplane 0",

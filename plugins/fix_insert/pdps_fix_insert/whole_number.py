@@ -1,12 +1,9 @@
-"""What the arguments of LIGGGHTS's insertion fixes share: counts and seeds as its scripts write them
-(its atoi reads "1." as 1), and required keywords named when a line lacks one."""
+"""Counts and seeds as LIGGGHTS's insertion fixes read them: its atoi reads "1." as 1."""
 
 import math
 from typing import Annotated
 
 from pydantic import BeforeValidator
-
-from pdps_core.api import ScriptError
 
 
 def _whole(word):
@@ -23,10 +20,3 @@ def _whole(word):
 
 
 WholeNumber = Annotated[int, BeforeValidator(_whole)]
-
-
-def require(cls, args, *names):
-    """A one-line error for the first of ``names`` (LIGGGHTS's required keywords) the line lacks."""
-    for needed in names:
-        if getattr(args, needed) is None:
-            raise ScriptError(f"missing keyword {needed}; usage: {cls.usage}")
