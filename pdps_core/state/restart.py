@@ -121,7 +121,7 @@ def capture(sim):
         "virial_step": None if parallel else sim.run_state.virial_step,
     }
     for kind, table in STYLE_TABLES:
-        header[table] = [{"id": s.id, "group": s.group, "style": s.name,
+        header[table] = [{"id": s.id, "group": s.group, "style": s.name, **_spelling(kind, s),
                           "args": _dump_args(f"{kind} {s.id}", s.args),
                           "state": states.encode(f"{kind} {s.id}", s)}
                          for s in getattr(sim, table).values()]
@@ -601,7 +601,7 @@ def restore(sim, header, arrays):
         setattr(sim.styles, table, styles)
         for record in header[table]:
             what = f"{kind} {record['id']}"
-            cls = registry.lookup(kind, record["style"])
+            cls = _spelled(registry.lookup(kind, record["style"]), record, what)
             style = cls(sim, record["id"], record["group"], _load_args(cls.Args, record["args"], what))
             sim.particles.request_all(cls.per_atom)
             styles[record["id"]] = style
@@ -728,6 +728,25 @@ def _exclusions(neighbor, record, ntypes, groups):
             neighbor.excluded_molecules.append((str(group), str(kind)))
     except (TypeError, ValueError, KeyError) as exc:
         raise ScriptError(f"neighbor exclusions: {exc} (a damaged restart file)") from None
+
+
+def _spelling(kind, style):
+    """{"spelling": class name} for a style made by another spelling of its name (``respell``: fix
+    wall/gran's LIGGGHTS spelling), which a restart must make again; {} for the registered class."""
+    if type(style) is registry.lookup(kind, style.name):
+        return {}
+    return {"spelling": type(style).__name__}
+
+
+def _spelled(cls, record, what):
+    """The class a restart record makes: the registered one, or the spelling it names."""
+    name = record.get("spelling")
+    if name is None:
+        return cls
+    found = next((other for other in cls.spellings() if other.__name__ == name), None)
+    if found is None:
+        raise ScriptError(f"{what}: the file spells {record['style']} as {name!r:.40}, which the style does not know")
+    return found
 
 
 def _load_args(model, data, what):

@@ -95,7 +95,6 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
-from pydantic import model_validator
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 from pdps_granular_contact import contact_models, lammps_classic
@@ -213,21 +212,6 @@ class FixWallGran(Fix):
                                            "zcylinder RADIUS": ("1", "distance")})
         wiggle: tuple[Axis, float, float] | None = keyword(None, unit=("1", "distance", "time"))
         shear: tuple[Axis, float] | None = keyword(None, unit=("1", "velocity"))
-
-        @model_validator(mode="wrap")
-        @classmethod
-        def _liggghts_spelling(cls, data, handler):
-            # a restart file names the style wall/gran and holds LIGGGHTS's spelling's own arguments
-            if isinstance(data, dict) and "model" in data:
-                from .wall_gran_model import FixWallGranModel
-                return FixWallGranModel.Args.model_validate(data)
-            return handler(data)
-
-    def __new__(cls, sim, id, group, args):
-        if isinstance(args, cls.Args):
-            return super().__new__(cls)
-        from .wall_gran_model import FixWallGranModel
-        return FixWallGranModel(sim, id, group, args)
 
     @classmethod
     def spellings(cls):
