@@ -98,7 +98,8 @@ def _liggghts_marker(words):
     """The LIGGGHTS-only spelling on a line (``pair_style gran``, ``fix ID G mesh/surface``), or None."""
     name = words[0]
     style = words[3] if name in ("fix", "compute") and len(words) > 3 else (words[1] if len(words) > 1 else None)
-    if name == "fix" and style == "wall/gran" and len(words) > 4 and words[4] == "model":
+    # the word respell looks for: LIGGGHTS's keywords stand in any order
+    if name == "fix" and style == "wall/gran" and "model" in words[4:]:
         return "fix wall/gran model"
     return f"{name} {style}" if (name, style) in LIGGGHTS_ONLY else None
 
