@@ -190,7 +190,7 @@ def test_gravity_is_mass_times_g_along_the_normalised_direction(spheres, words, 
 @pytest.mark.parametrize("fix, message", [
     ("viscous", "missing argument gamma; usage: fix ID GROUP viscous GAMMA [scale TYPE RATIO]..."),
     ("viscous -1", "gamma must be >= 0 (got -1)"),
-    ("acc", "missing argument gravity"),
+    ("acc", "missing keyword gravity; usage: fix ID GROUP acc gravity DIM VALUE [region RID]"),
     ("acc gravity w 1", "gravity must be one of 'x', 'y' or 'z' (got w)"),
     ("acc gravity z 1 region nowhere", "region nowhere is not defined (defined: box)"),
     ("addforce", "nothing to add: give FX FY FZ, drag_stokes MU or buoyancy DIM RHO G"),

@@ -33,7 +33,8 @@ def error_of(script):
     ("pair_style dem/lsd 0.3 1.0\npair_coeff * * 1000 16.6016 314.29 6.3008 -0.5",
      "pair_coeff: mu must be >= 0 (got -0.5)"),
     ("pair_style dem/lsd 0.3 1.0\npair_coeff * * kn 1000 e 0 mu 0.5", "pair_coeff: e must be > 0 (got 0)"),
-    ("pair_style dem/lsd 0.3 1.0\npair_coeff * * kn 1000 e 0.5", "pair_coeff: missing argument mu"),
+    ("pair_style dem/lsd 0.3 1.0\npair_coeff * * kn 1000 e 0.5", "pair_coeff: missing keyword mu; usage: kn cn kt ct mu [cutoff]  or  "
+     "kn KN [kt KT] [e E] mu MU [ct CT] [cutoff RC]"),
     ("pair_style dem/lsd 0.3 1.0\npair_coeff * * kn 1000 mu 0.5 gamma 3",
      "pair_coeff: unknown keyword gamma (known: kn, kt, e, mu, ct, cutoff)"),
     ("pair_style dem/hertz\npair_coeff * * 1e6 0.6 0.5 0.5", "pair_coeff: poisson must be <= 0.5 (got 0.6)"),
