@@ -60,6 +60,7 @@ def prepare():
     line turns into its one "internal error" line (the fuzz reports show where it came from)."""
     from pdps_core import cli, simulation
     from pdps_core.errors import ScriptError
+    from pdps_core.script.interpreter import Script
     import pdps_core.commands  # noqa: F401  (the command table, for telling log files apart)
 
     created = simulation.Simulation.__init__
@@ -69,15 +70,16 @@ def prepare():
         created(self, *args, **kwargs)
 
     simulation.Simulation.__init__ = tracked
-    execute = simulation.Simulation.execute
+    # every command, a script's line or a typed call, goes through the script's execute
+    execute = Script.execute
 
     def counted(self, words):
         try:
             return execute(self, words)
         finally:
-            record_particles(self)
+            record_particles(self.sim)
 
-    simulation.Simulation.execute = counted
+    Script.execute = counted
     fail = cli._fail
 
     def recording_fail(sim, message, debug, alone=False):

@@ -153,3 +153,22 @@ def test_the_corpus_holds_every_kind_of_seed():
     assert read_back["lammps_after_run"].startswith(b"dialect lammps\nread_restart r.restart\n")
     assert read_back["restart_groups"].startswith(b"read_restart r.restart\n")
     assert read_back["liggghts_gran"].startswith(b"dialect liggghts\nread_restart r.restart\n")
+
+
+def test_the_particle_count_is_written_after_every_command(tmp_path):
+    """runner.py reads it when it must kill a case that never let the watchdog look again (one
+    spinning in C): after each command, a script's line or a typed call, not only at the
+    watchdog's samples."""
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+    code = ("from tests.fuzz import classify\n"
+            "classify.prepare()\n"
+            "from pdps_core.api import Simulation\n"
+            "sim = Simulation(screen=False, log=None)\n"
+            "sim.command('region box block 0 4 0 4 0 4\\ncreate_box 1 box\\ncreate_atoms 1 random 9 5 box')\n")
+    root = Path(__file__).resolve().parents[2]
+    subprocess.run([sys.executable, "-c", code], cwd=tmp_path, check=True, env={"PYTHONPATH": str(root)},
+                   timeout=120)
+    assert json.loads((tmp_path / "watchdog.json").read_text()) == {"particles": 9}
