@@ -531,10 +531,11 @@ def parse_args(model, words, usage="", refused=None):
     keywords = {n: f for n, f in fields.items() if _is_keyword(f)}
     spelled = {}        # the first word of an entry of a keyword(spelled_by_entries=True): (field, its tuple)
     for n, f in list(keywords.items()):
-        for word, choice in _entry_spellings(f).items():
+        spellings = _entry_spellings(f)
+        for word, choice in spellings.items():
             spelled[word] = (n, choice)
             keywords[word] = f
-        if _entry_spellings(f):
+        if spellings:
             del keywords[n]
     values, i = {}, 0
     for k, (name, info) in enumerate(positional):

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import Simulation
 from pdps_core.testing import ConstantForce, Record, SphereVerlet, assert_refused, recorded_case, register_styles
 
 DATA = Path(__file__).parent / "data" / "wall_gran"
