@@ -14,19 +14,20 @@ from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
+from .pair_loop import generated_module
 from .random import pair_gaussian, pair_uniform, particle_gaussians, particle_uniforms, philox4x32
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
 from .state.limits import check_bins, check_images
 from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
-                     StyleArgs, StyleName, SurfaceContacts, VariableRef, keyword, param, parse_args, peratom_column,
-                     registry)
+                     StyleArgs, StyleName, SubModel, SurfaceContacts, VariableRef, keyword, param, parse_args,
+                     peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
-           "Simulation", "SimulationError", "StyleArgs", "StyleName", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "integer",
+           "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
            "type_range", "yes_no"]

@@ -47,7 +47,8 @@ def _parser():
     styles.add_argument("-v", "--verbose", action="store_true",
                         help="also each style's hooks, needs and contributions")
     doc = sub.add_parser("doc", help="show a style's documentation")
-    doc.add_argument("kind", choices=["pair", "fix", "compute", "analyze", "dump", "region"])
+    doc.add_argument("kind", help="pair, fix, compute, analyze, dump, region, or a sub-model kind such as "
+                                   "gran.cohesion (pdps styles lists them)")
     doc.add_argument("style")
     new = sub.add_parser("new-plugin", help="write a working, tested plugin skeleton")
     new.add_argument("name", help="the plugin: distribution pdps-KIND-NAME, package pdps_KIND_NAME")
@@ -142,6 +143,9 @@ def _styles(verbose):
 def _doc(kind, style):
     from .styledoc import document
     from .styles import IN_PROCESS, StyleEntry, registry
+    if kind not in registry.kinds():
+        print(f"ERROR: unknown kind {kind} (installed: {', '.join(registry.kinds())})", file=sys.stderr)
+        return 1
     try:
         cls = registry.lookup(kind, style)
     except ScriptError as exc:

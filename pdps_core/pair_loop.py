@@ -357,10 +357,27 @@ def loops_for(nparams, law=None, source=None, name="law", masked=False):
         binding, keyed, origin = law_definition(law)
     pair_coeff = "(" + "".join(f"coeff[ti, tj, {k}], " for k in range(max(nparams, 1))) + ")"
     text = _source(origin, binding, pair_coeff, masked)
-    digest = hashlib.sha256(keyed + _RANDOM_SOURCE + text.encode()).hexdigest()[:16]
-    if digest in _loaded:
-        return _loaded[digest]
-    module_name = f"pdps_pair_loop_{re.sub(r'[^A-Za-z0-9]', '_', origin)}_{digest}"
+    module = generated_module(origin, text, keyed + _RANDOM_SOURCE)
+    if module.__name__ in _loaded:
+        return _loaded[module.__name__]
+    variants = {**VARIANTS, **TALLY_VARIANTS, **CELL_VARIANTS}
+    loops = {key: getattr(module, name) for key, (name, _) in variants.items()}
+    loops["single"] = module.single
+    loops.update({(*key, "one type"): getattr(module, name + "_one_type")
+                  for key, (name, _) in {**VARIANTS, **CELL_VARIANTS}.items()})
+    _loaded[module.__name__] = loops
+    return loops
+
+
+def generated_module(origin, text, keyed=b""):
+    """The Python module of source ``text`` (numba functions with ``cache=True``), written once into
+    the cache folder under a name carrying ``origin`` and a hash of ``text`` and ``keyed`` (the bytes
+    of whatever the text imports and numba's cache would not see change: the source files of the
+    functions it calls), and imported; the same module object on a second call."""
+    digest = hashlib.sha256(keyed + text.encode()).hexdigest()[:16]
+    module_name = f"pdps_generated_{re.sub(r'[^A-Za-z0-9]', '_', origin)}_{digest}"
+    if module_name in sys.modules:
+        return sys.modules[module_name]
     folder = cache_dir()
     path = os.path.join(folder, module_name + ".py")
     if not os.path.exists(path):
@@ -373,11 +390,5 @@ def loops_for(nparams, law=None, source=None, name="law", masked=False):
     module = importlib.util.module_from_spec(spec)
     sys.modules[module_name] = module
     spec.loader.exec_module(module)
-    variants = {**VARIANTS, **TALLY_VARIANTS, **CELL_VARIANTS}
-    loops = {key: getattr(module, name) for key, (name, _) in variants.items()}
-    loops["single"] = module.single
-    loops.update({(*key, "one type"): getattr(module, name + "_one_type")
-                  for key, (name, _) in {**VARIANTS, **CELL_VARIANTS}.items()})
-    _loaded[digest] = loops
-    return _loaded[digest]
+    return module
 

@@ -60,17 +60,23 @@ class StyleName:
     """``Annotated[str, StyleName("pair")]``: a word naming an installed style of a kind. As the first
     member of a run's entry (``tuple[Annotated[str, StyleName("pair")], tuple[str, ...]]``) it opens
     a section that takes the words up to the next style name: pair hybrid's sub-styles, each with
-    the words its own ``parse`` reads."""
+    the words its own ``parse`` reads. For a sub-model kind (``StyleName("gran.rolling", also=("off",))``)
+    the word is one of the installed sub-models' names or of ``also``, told as a choice is."""
 
-    def __init__(self, kind):
+    def __init__(self, kind, also=()):
         self.kind = kind
+        self.also = tuple(also)
 
     def names(self):
-        return tuple(registry.names(self.kind))
+        return self.also + tuple(name for name in registry.names(self.kind) if name not in self.also)
 
     def __get_pydantic_core_schema__(self, source, handler):
         def installed(word):
             if word not in self.names():
+                if is_sub_model_kind(self.kind):
+                    quoted = [f"'{name}'" for name in self.names()]
+                    expected = " or ".join([", ".join(quoted[:-1]), quoted[-1]] if len(quoted) > 1 else quoted)
+                    raise PydanticCustomError("literal_error", "must be one of {expected}", {"expected": expected})
                 raise PydanticCustomError("style_name", f"must name an installed {self.kind} style")
             return word
         return core_schema.no_info_after_validator_function(installed, handler(source))
@@ -273,8 +279,9 @@ def _first_words(annotation):
 
 def describe_type(annotation):
     """How a script writes a value of ``annotation``: "number", "vector X Y Z | chute ANGLE", ..."""
-    if _style_name(annotation) is not None:
-        return f"{_style_name(annotation).kind.upper()}-STYLE"
+    named = _style_name(annotation)
+    if named is not None:
+        return "|".join(named.names()) if is_sub_model_kind(named.kind) else f"{named.kind.upper()}-STYLE"
     if member_names(annotation):
         return " ".join(member_names(annotation))
     annotation = _bare(annotation)
@@ -1238,8 +1245,28 @@ class SurfaceContacts:
         return self.index[:count], self.distance[:count], self.normal[:count], self.element[:count]
 
 
+class SubModel(Style):
+    """A part a style is composed of rather than a style of its own: one term of a granular contact
+    (its normal force, its rolling friction, ...), named by a word among the host style's arguments.
+    Its kind is two words, ``FAMILY.PART`` (``gran.cohesion``), and it is found in the entry-point
+    group ``pdps.FAMILY.PART`` like any style, so ``pdps doc gran.cohesion sjkr`` shows it and a
+    distribution can add one; what it computes and how the host calls it is the family's contract
+    (the library that defines the family's base class), not the core's."""
+    kind = ""
+
+
 BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,
          "region": Region}
+
+
+def base_of(kind):
+    """The class every style of ``kind`` derives from: SubModel for a two-word kind (``gran.normal``)."""
+    return BASES.get(kind, SubModel if is_sub_model_kind(kind) else None)
+
+
+def is_sub_model_kind(kind):
+    family, dot, part = kind.partition(".")
+    return bool(dot and family.isidentifier() and part.isidentifier())
 
 
 # ---- registry -----------------------------------------------------------------------------------
@@ -1307,6 +1334,7 @@ class Registry:
     def __init__(self):
         self._local = {kind: {} for kind in KINDS}
         self._entry_points = None
+        self._sub_model_kinds = ()
         self._disabled = set()
         self._loaded = {}
 
@@ -1316,7 +1344,11 @@ class Registry:
             found = {kind: {} for kind in KINDS}
             # one pass over the installed distributions' metadata, not one per kind (60 ms at start-up)
             installed = metadata.entry_points()
-            for kind in KINDS:
+            parts = sorted({group[len("pdps."):] for group in installed.groups if group.startswith("pdps.")
+                            and is_sub_model_kind(group[len("pdps."):])})
+            self._sub_model_kinds = tuple(parts)
+            for kind in (*KINDS, *parts):
+                found[kind] = {}
                 for ep in installed.select(group=f"pdps.{kind}"):
                     dist = ep.dist.name if ep.dist is not None else "?"
                     claims = found[kind].setdefault(ep.name, {})
@@ -1328,26 +1360,34 @@ class Registry:
     def _enabled(self, claims):
         return {dist: ep for dist, ep in claims.items() if canonicalize_name(dist) not in self._disabled}
 
+    def kinds(self):
+        """The style kinds, then the sub-model kinds installed distributions or this process name."""
+        self._scan()
+        local = [kind for kind in self._local if kind not in KINDS]
+        return (*KINDS, *sorted(set(self._sub_model_kinds) | set(local)))
+
     def register(self, kind, name, cls):
         """Make a style class available in this process (for Python users and tests)."""
-        self._local[kind][name] = cls
+        if base_of(kind) is None:
+            raise ValueError(f"unknown style kind {kind}")
+        self._local.setdefault(kind, {})[name] = cls
         self._loaded.pop((kind, name), None)
 
     def names(self, kind):
-        enabled = {name for name, claims in self._scan()[kind].items() if self._enabled(claims)}
-        return sorted(enabled | set(self._local[kind]))
+        enabled = {name for name, claims in self._scan().get(kind, {}).items() if self._enabled(claims)}
+        return sorted(enabled | set(self._local.get(kind, {})))
 
     def entries(self):
         """Every installed style (disabled ones marked) and every in-process one, by kind and name."""
         rows = []
-        for kind in KINDS:
-            claims_by_name = self._scan()[kind]
+        for kind in self.kinds():
+            claims_by_name = self._scan().get(kind, {})
             for name, claims in sorted(claims_by_name.items()):
                 enabled = self._enabled(claims)
                 for dist, ep in claims.items():
                     version = ep.dist.version if ep.dist is not None else "?"
                     rows.append(StyleEntry(kind, name, dist, version, ep.value, dist not in enabled))
-            for name, cls in sorted(self._local[kind].items()):
+            for name, cls in sorted(self._local.get(kind, {}).items()):
                 rows.append(StyleEntry(kind, name, IN_PROCESS, "", f"{cls.__module__}:{cls.__qualname__}"))
         return rows
 
@@ -1380,7 +1420,7 @@ class Registry:
 
     def checked(self, kind, name, cls):
         """``cls`` if it is a style class of ``kind``, else a one-line error naming ``name``."""
-        base = BASES[kind]
+        base = base_of(kind)
         if not (isinstance(cls, type) and issubclass(cls, base)):
             raise ScriptError(f"{kind} style {name} is not a {base.__name__} subclass")
         return cls
@@ -1389,10 +1429,10 @@ class Registry:
         key = (kind, name)
         if key in self._loaded:
             return self._loaded[key]
-        if name in self._local[kind]:
+        if name in self._local.get(kind, {}):
             cls = self._local[kind][name]
         else:
-            claims = self._scan()[kind].get(name, {})
+            claims = self._scan().get(kind, {}).get(name, {})
             enabled = self._enabled(claims)
             if not enabled:
                 known = self.names(kind)

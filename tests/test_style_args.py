@@ -243,7 +243,7 @@ def _raw_words(annotation):
 def _styles():
     """Every installed style (not those tests register in process)."""
     return sorted({(entry.kind, entry.name) for entry in registry.entries()
-                   if entry.dist != IN_PROCESS and not entry.disabled}, key=lambda e: (KINDS.index(e[0]), e[1]))
+                   if entry.dist != IN_PROCESS and not entry.disabled}, key=lambda e: (registry.kinds().index(e[0]), e[1]))
 
 
 def _hand_parsed(cls):

@@ -9,8 +9,9 @@ Columns, in this order whatever the order of the keywords (LIGGGHTS's):
 - ``force`` (3): the contact force on i (force; :math:`-` on j);
 - ``torque`` (3): :math:`-\mathbf{n}\times\mathbf{F}_t`, the torque of the tangential force on i
   divided by its lever arm (force; rolling friction torques are not included, as LIGGGHTS);
-- ``history`` (6 with pair gran: the tangential spring, then the epsd rolling spring torque, as i
-  sees them);
+- ``history``: the values the contact keeps, as i sees them: the tangential spring (3, tangential
+  history), then the rolling spring torque (3, rolling_friction epsd or epsd2); none with
+  no_history and no spring of rolling (as LIGGGHTS's contact history, read from its source);
 - ``contactArea`` (1): :math:`\pi a^2`, the circle where the spheres intersect (area; the smaller
   sphere's cross-section once its centre is inside the other);
 - ``delta`` (1): the overlap :math:`R_i + R_j - r` (distance);

@@ -48,7 +48,7 @@ set atom 3 vy 0.2
 def test_rows_hold_the_pair_styles_contacts():
     sim = chain("compute c all pair/gran/local pos vel id force torque history contactArea delta\nrun 0")
     rows = sim.computes["c"].local(sim)
-    assert rows.shape == (2, 6 + 6 + 3 + 3 + 3 + 6 + 1 + 1)
+    assert rows.shape == (2, 6 + 6 + 3 + 3 + 3 + 3 + 1 + 1)
     p = sim.particles
     ids = rows[:, 12:14].astype(int)
     assert sorted(map(tuple, np.sort(ids, axis=1))) == [(1, 2), (2, 3)]
@@ -64,12 +64,12 @@ def test_rows_hold_the_pair_styles_contacts():
         np.testing.assert_array_equal(row[0:6], np.concatenate([xi, xj]))
         np.testing.assert_array_equal(row[6:12], np.concatenate([p.v[p.index_of_tag(a)], p.v[p.index_of_tag(b)]]))
         r = np.linalg.norm(xi - xj)
-        assert row[28] == pytest.approx(D - r, rel=1e-12)
-        assert row[27] == pytest.approx(math.pi * ((D / 2) ** 2 - (r / 2) ** 2), rel=1e-9)
+        assert row[25] == pytest.approx(D - r, rel=1e-12)
+        assert row[24] == pytest.approx(math.pi * ((D / 2) ** 2 - (r / 2) ** 2), rel=1e-9)
     # torque column: the tangential force's torque on i over its lever arm R - delta/2, which both
     # spheres of a contact feel; sphere 1 has one contact and no rolling friction: its whole torque
     k = int(np.flatnonzero((ids == 1).any(axis=1))[0])
-    arm = D / 2 - 0.5 * rows[k, 28]
+    arm = D / 2 - 0.5 * rows[k, 25]
     torque_1 = sim.particles.torque[p.index_of_tag(1)]
     assert np.abs(torque_1).max() > 0
     np.testing.assert_allclose(arm * rows[k, 18:21], torque_1, rtol=1e-12)
@@ -78,7 +78,7 @@ def test_rows_hold_the_pair_styles_contacts():
 def test_default_columns_and_heat_flux():
     sim = chain("fix heat all heat/gran initial_temperature 300\nset atom 1 property/atom Temp 400\n"
                 "compute c all pair/gran/local\ncompute h all pair/gran/local id heatFlux\nrun 0")
-    assert sim.computes["c"].local(sim).shape == (2, 6 + 6 + 3 + 3 + 3 + 6 + 1)
+    assert sim.computes["c"].local(sim).shape == (2, 6 + 6 + 3 + 3 + 3 + 3 + 1)
     rows = sim.computes["h"].local(sim)
     p = sim.particles
     flux_into_1 = sum(row[3] if row[0] == 1 else -row[3] for row in rows if 1 in row[:2])
@@ -128,11 +128,11 @@ def test_no_contacts_is_a_table_of_no_rows_that_dump_local_writes(tmp_path):
     dump = tmp_path / "dump.local"
     sim = chain("set atom 2 x 0.02\nset atom 3 x -0.03\n"
                 "compute c all pair/gran/local pos vel id force torque history contactArea delta\n"
-                f"dump d all local 1 {dump} c_c[1] c_c[13] c_c[29]\nrun 2")
-    assert sim.computes["c"].local(sim).shape == (0, 6 + 6 + 3 + 3 + 3 + 6 + 1 + 1)
+                f"dump d all local 1 {dump} c_c[1] c_c[13] c_c[26]\nrun 2")
+    assert sim.computes["c"].local(sim).shape == (0, 6 + 6 + 3 + 3 + 3 + 3 + 1 + 1)
     text = dump.read_text().split("ITEM: TIMESTEP\n")[1:]
     assert len(text) == 3
     for block in text:
         lines = block.splitlines()
         assert lines[1:3] == ["ITEM: NUMBER OF ENTRIES", "0"]
-        assert lines[-1] == "ITEM: ENTRIES c_c[1] c_c[13] c_c[29]"
+        assert lines[-1] == "ITEM: ENTRIES c_c[1] c_c[13] c_c[26]"

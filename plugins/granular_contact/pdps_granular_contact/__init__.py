@@ -1,5 +1,12 @@
-"""pdps granular contact laws: a library the granular packs depend on (no styles, no entry points).
+"""pdps granular contacts: a library the granular packs depend on, and the sub-models of its
+contact laws.
 
-``contact_models`` holds the laws as numba functions over scalars and 3-vectors; the per-contact history
-they update is the core's ``pdps_core.api.ContactHistory``.
+``composition`` builds a contact law from sub-models (normal, damping, cohesion, tangential,
+rolling, twisting, heat, surface) found through the entry-point groups ``pdps.FAMILY.PART`` and
+generates the one contact loop pair styles and walls call; ``gran`` holds LIGGGHTS's sub-models
+(``pair_style gran model ...``). ``contact_models`` and ``lammps_classic`` hold the laws the other
+styles call directly; ``contact_slots`` the bookkeeping of the per-contact history
+(``pdps_core.api.ContactHistory``).
 """
+
+PDPS_API = ">=1.0,<2"

@@ -317,3 +317,66 @@ def store_spring(history, owner, i, j, slot_i, slot_j, shear):
         history[i, 3 * slot_i + d] = shear[d]
         if slot_j >= 0:
             history[jo, 3 * slot_j + d] = -shear[d]
+
+
+@njit(cache=True, inline="always")
+def wall_slots(i, start, end, distance, normal, key, reach, partner, values, normal_at, update,
+               used, slots, transfer_cos):
+    """The history slot of each of particle i's wall contacts ``start..end`` into
+    ``slots[c - start]`` (-1: none, for contacts at distance >= reach). A contact keeps the slot of
+    its wall element (``key``); with ``update`` a new one continues a contact that just ended with
+    nearly the same normal (cosine above ``transfer_cos``; the normal is stored at ``normal_at`` in
+    each slot's values), the slots of contacts
+    that ended are freed, and the remaining new contacts open zeroed slots. Returns False when
+    particle i has no free slot."""
+    capacity = partner.shape[1]
+    width = values.shape[1] // capacity
+    for s in range(capacity):
+        used[s] = False
+    # contacts already known keep their slot
+    for c in range(start, end):
+        slots[c - start] = -1
+        if distance[c] < reach:
+            s = -1
+            for k in range(capacity):
+                if partner[i, k] == key[c]:
+                    s = k
+            slots[c - start] = s
+            if s >= 0:
+                used[s] = True
+    if not update:
+        return True
+    # a new contact continues one that just ended with nearly the same normal
+    for c in range(start, end):
+        if distance[c] < reach and slots[c - start] < 0:
+            best, best_cos = -1, transfer_cos
+            for k in range(capacity):
+                if partner[i, k] >= 0 and not used[k]:
+                    at = k * width + normal_at
+                    cos = (normal[c, 0] * values[i, at] + normal[c, 1] * values[i, at + 1]
+                           + normal[c, 2] * values[i, at + 2])
+                    if cos > best_cos:
+                        best, best_cos = k, cos
+            if best >= 0:
+                partner[i, best] = key[c]
+                used[best] = True
+                slots[c - start] = best
+    # contacts that ended free their slot, then the remaining new ones open one
+    for k in range(capacity):
+        if partner[i, k] >= 0 and not used[k]:
+            partner[i, k] = -1
+    for c in range(start, end):
+        if distance[c] < reach and slots[c - start] < 0:
+            s = -1
+            for k in range(capacity):
+                if partner[i, k] < 0:
+                    s = k
+                    break
+            if s < 0:
+                return False
+            partner[i, s] = key[c]
+            for h in range(width):
+                values[i, s * width + h] = 0.0
+            used[s] = True
+            slots[c - start] = s
+    return True

@@ -274,11 +274,12 @@ def find_property(sim, name):
     return found
 
 
-def read_property(sim, name, ntypes, who):
-    """The values of property ``name`` checked as PROPERTIES says: a float (scalar), an array of
-    ntypes + 1 (per type, index 0 unused) or of (ntypes + 1, ntypes + 1) (per type pair). Missing,
-    wrongly shaped or out-of-range values raise a one-line ScriptError naming the fix."""
-    form, spelling, valid, bounds = PROPERTIES[name]
+def read_property(sim, name, ntypes, who, spec=None):
+    """The values of property ``name`` checked as PROPERTIES (or ``spec``, a tuple of that form, for
+    a property a sub-model declares) says: a float (scalar), an array of ntypes + 1 (per type, index
+    0 unused) or of (ntypes + 1, ntypes + 1) (per type pair). Missing, wrongly shaped or out-of-range
+    values raise a one-line ScriptError naming the fix."""
+    form, spelling, valid, bounds = spec or PROPERTIES[name]
     fix = find_property(sim, name)
     if fix is None:
         example = {"scalar": "VALUE", "per_type": "V1 ... V" + str(ntypes),

@@ -16,8 +16,12 @@ at :math:`R_{i,j} - \delta/2` from the centres (LIGGGHTS's lever arms) and slide
 
 The force on i is :math:`F_n\mathbf{n} + \mathbf{F}_t` (:math:`-` that on j), the torques
 :math:`-(R_{i,j} - \delta/2)\,\mathbf{n}\times\mathbf{F}_t`, and the rolling torque
-:math:`\mp\mathbf{M}_r`; the laws (hertz, hooke; history, no_history; cdt, epsd, epsd2; sjkr,
-sjkr2) and their formulas are ``pdps_granular_contact.liggghts``, which walls share.
+:math:`\mp\mathbf{M}_r`. The law is composed of sub-models (``pdps_granular_contact.composition``),
+one per model word, which walls share: LIGGGHTS's (hertz, hooke; history, no_history; cdt, epsd,
+epsd2; sjkr, sjkr2; surface default) are ``pdps_granular_contact.gran``, each module with its
+formulas (``pdps doc gran.normal hertz``), and a distribution may add others (entry-point groups
+``pdps.gran.normal``, ``pdps.gran.tangential``, ``pdps.gran.rolling``, ``pdps.gran.cohesion``,
+``pdps.gran.surface``).
 
 Syntax (the words in any order after ``gran``, LIGGGHTS's)::
 
@@ -44,8 +48,8 @@ coefficientRollingFriction, coefficientRollingViscousDamping and cohesionEnergyD
 of each run: a missing one, a wrong count of values or a value out of range stops the run with one
 line naming the property and the fix.
 
-The contact history holds the tangential spring and the epsd/epsd2 rolling spring torque on both
-spheres (pdps_pair_gran.gran: slots keyed by the partner's tag, the partner's copy negated, ghost
+The contact history holds what the sub-models keep (the tangential spring, then the epsd/epsd2
+rolling spring torque) on both spheres (pdps_pair_gran.gran: slots keyed by the partner's tag, the partner's copy negated, ghost
 rows sent back to their owners in parallel runs). Needs ``atom_style granular`` (= sphere). No
 potential energy is reported; the neighbor cutoff is the largest :math:`R_i + R_j` present.
 
@@ -68,155 +72,42 @@ Example (LIGGGHTS)::
 """
 
 import math
-from typing import Literal
+from typing import Annotated, Literal
 
 import numpy as np
-from numba import njit
 
-from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, find_slot, keyword
-from pdps_granular_contact import contact_models, liggghts
-from pdps_granular_contact.contact_slots import HeldRows, Mirrors, load_history, pack_slots, store_history
+from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, StyleName, keyword
+from pdps_granular_contact import contact_models
+from pdps_granular_contact.composition import ContactModel, Material
+from pdps_granular_contact.contact_models import NO_BODY_MASS
+from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
+from pdps_granular_contact.contact_state import SIZE
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
 OnOff = Literal["on", "off"]
+# the model words and the contact parts they name (pdps_granular_contact.composition.PARTS)
+PART_WORDS = {"model": "normal", "tangential": "tangential", "cohesion": "cohesion", "rolling_friction": "rolling",
+              "surface": "surface"}
+# LIGGGHTS's model settings, handed to every sub-model
+SETTINGS = ("tangential_damping", "limitForce")
 
 
-# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
-# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
-# here allocates
-@njit(cache=True, _nrt=False)
-def gran_model_compute(x, v, omega, radius, rmass, type_, mask, f, torque, tag, owner, offsets, neighbors,
-                       nlocal, models, table, charvel, nktv2p, freeze_bit, dt, update, partner, history,
-                       touched, touching, ntouching, n, vtr, wr, hist, force, tangential, roll):
-    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full. The list entries of the contacts, in list order, go into ``touching``
-    and their number into ``ntouching[0]`` (for the end-of-step sweep). The last seven arrays are
-    one contact's scratch (3 each; ``hist`` HISTORY_WIDTH)."""
-    m = 0
-    for i in range(nlocal):
-        xi0 = x[i, 0]
-        xi1 = x[i, 1]
-        xi2 = x[i, 2]
-        radi = radius[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            # most listed pairs (within the skin) do not touch: only their distance is measured
-            delx = xi0 - x[j, 0]
-            dely = xi1 - x[j, 1]
-            delz = xi2 - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            radsum = radi + radius[j]
-            if rsq >= radsum * radsum or rsq == 0.0:
-                continue
-            r = math.sqrt(rsq)
-            n[0] = delx / r
-            n[1] = dely / r
-            n[2] = delz / r
-            overlap = radsum - r
-            arm_i = radi - 0.5 * overlap
-            arm_j = radius[j] - 0.5 * overlap
-            vr0 = v[i, 0] - v[j, 0]
-            vr1 = v[i, 1] - v[j, 1]
-            vr2 = v[i, 2] - v[j, 2]
-            v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-            w0 = arm_i * omega[i, 0] + arm_j * omega[j, 0]
-            w1 = arm_i * omega[i, 1] + arm_j * omega[j, 1]
-            w2 = arm_i * omega[i, 2] + arm_j * omega[j, 2]
-            vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-            vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-            vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-            for d in range(3):
-                wr[d] = omega[i, d] - omega[j, d]
-            m_eff = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
-            if mask[i] & freeze_bit:
-                m_eff = rmass[j]
-            if mask[j] & freeze_bit:
-                m_eff = rmass[i]
-            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
-            if update and (slot_i < 0 or slot_j < 0):
-                return tag[i] if slot_i < 0 else tag[j]
-            touching[m] = k
-            m += 1
-            liggghts.liggghts_contact(models, False, table, type_[i], type_[j], r, radi, radius[j], rmass[i],
-                                      rmass[j], m_eff, n, v_n, vtr, wr, charvel, nktv2p, dt, update, hist,
-                                      force, tangential, roll)
-            if update or slot_i >= 0:
-                store_history(history, owner, i, j, slot_i, slot_j, hist)
-            cx = n[1] * tangential[2] - n[2] * tangential[1]
-            cy = n[2] * tangential[0] - n[0] * tangential[2]
-            cz = n[0] * tangential[1] - n[1] * tangential[0]
-            for d in range(3):
-                f[i, d] += force[d]
-                f[j, d] -= force[d]
-            torque[i, 0] -= arm_i * cx + roll[0]
-            torque[i, 1] -= arm_i * cy + roll[1]
-            torque[i, 2] -= arm_i * cz + roll[2]
-            torque[j, 0] += roll[0] - arm_j * cx
-            torque[j, 1] += roll[1] - arm_j * cy
-            torque[j, 2] += roll[2] - arm_j * cz
-    ntouching[0] = m
-    return -1
+class GranModelArgs(StyleArgs):
+    """LIGGGHTS's model words: a sub-model of each part (installed ones: ``pdps doc gran.PART NAME``)
+    and the settings."""
+    model: Annotated[str, StyleName("gran.normal")] = keyword(...)
+    tangential: Annotated[str, StyleName("gran.tangential")] = keyword(...)
+    rolling_friction: Annotated[str, StyleName("gran.rolling", also=("off",))] = keyword("off")
+    cohesion: Annotated[str, StyleName("gran.cohesion", also=("off",))] = keyword("off")
+    surface: Annotated[str, StyleName("gran.surface")] = keyword("default")
+    tangential_damping: OnOff = keyword("on")
+    limitForce: OnOff = keyword("off")
 
-
-@njit(cache=True)
-def gran_model_contacts(x, v, omega, radius, rmass, type_, mask, tag, offsets, neighbors, nlocal, models, table,
-                        charvel, nktv2p, freeze_bit, dt, partner, history, groupbit, rows, force_out, tangential_out,
-                        hist_out, n, vtr, wr, hist, force, tangential, roll):
-    """Every contact of the half list whose two particles are in ``groupbit``, evaluated as the
-    setup force computation does (nothing stored): returns how many; their rows (i, j), forces on
-    i, tangential parts and history values (as i sees them) into the ``*_out`` arrays."""
-    count = 0
-    width = len(hist)
-    for i in range(nlocal):
-        if not mask[i] & groupbit:
-            continue
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            if not mask[j] & groupbit:
-                continue
-            delx = x[i, 0] - x[j, 0]
-            dely = x[i, 1] - x[j, 1]
-            delz = x[i, 2] - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            radsum = radius[i] + radius[j]
-            if rsq >= radsum * radsum or rsq == 0.0:
-                continue
-            r = math.sqrt(rsq)
-            n[0] = delx / r
-            n[1] = dely / r
-            n[2] = delz / r
-            arm_i = radius[i] - 0.5 * (radsum - r)
-            arm_j = radius[j] - 0.5 * (radsum - r)
-            v_n = (v[i, 0] - v[j, 0]) * n[0] + (v[i, 1] - v[j, 1]) * n[1] + (v[i, 2] - v[j, 2]) * n[2]
-            w0 = arm_i * omega[i, 0] + arm_j * omega[j, 0]
-            w1 = arm_i * omega[i, 1] + arm_j * omega[j, 1]
-            w2 = arm_i * omega[i, 2] + arm_j * omega[j, 2]
-            vtr[0] = v[i, 0] - v[j, 0] - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-            vtr[1] = v[i, 1] - v[j, 1] - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-            vtr[2] = v[i, 2] - v[j, 2] - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-            for d in range(3):
-                wr[d] = omega[i, d] - omega[j, d]
-            m_eff = rmass[i] * rmass[j] / (rmass[i] + rmass[j])
-            if mask[i] & freeze_bit:
-                m_eff = rmass[j]
-            if mask[j] & freeze_bit:
-                m_eff = rmass[i]
-            slot = find_slot(partner, i, tag[j])
-            for d in range(width):
-                hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
-            for d in range(width):
-                hist_out[count, d] = hist[d]
-            liggghts.liggghts_contact(models, False, table, type_[i], type_[j], r, radius[i], radius[j], rmass[i],
-                                      rmass[j], m_eff, n, v_n, vtr, wr, charvel, nktv2p, dt, False, hist, force,
-                                      tangential, roll)
-            rows[count, 0] = i
-            rows[count, 1] = j
-            for d in range(3):
-                force_out[count, d] = force[d]
-                tangential_out[count, d] = tangential[d]
-            count += 1
-    return count
+    def contact_model(self):
+        """The composed law these words name."""
+        chosen = {part: getattr(self, word) for word, part in PART_WORDS.items() if getattr(self, word) != "off"}
+        return ContactModel("gran", chosen, {name: getattr(self, name) for name in SETTINGS})
 
 
 class PairGranModel(PairGran):
@@ -224,16 +115,9 @@ class PairGranModel(PairGran):
     usage = ("pair_style gran model hertz|hooke tangential history|no_history [rolling_friction off|cdt|epsd|epsd2] "
              "[cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] [max_contacts N]")
     coeff_usage = "(no coefficients: pair_coeff * *; the material comes from fix property/global)"
-    history_width = liggghts.HISTORY_WIDTH
     history_name = "gran_model_history"
 
-    class Args(StyleArgs):
-        model: Literal["hertz", "hooke"] = keyword(...)
-        tangential: Literal["history", "no_history"] = keyword(...)
-        rolling_friction: Literal["off", "cdt", "epsd", "epsd2"] = keyword("off")
-        cohesion: Literal["off", "sjkr", "sjkr2"] = keyword("off")
-        tangential_damping: OnOff = keyword("on")
-        limitForce: OnOff = keyword("off")
+    class Args(GranModelArgs):
         max_contacts: int = keyword(DEFAULT_CONTACTS, ge=2, le=1000, unit="dimensionless")
 
     def __init__(self, sim, args):
@@ -243,24 +127,23 @@ class PairGranModel(PairGran):
         self._rows = self._touching = self._rows_of = None
         self.held, self.mirrors = HeldRows(), Mirrors()
         self._ntouching = np.zeros(1, dtype=np.int64)
-        self._scratch = tuple(np.zeros(3) for _ in range(3))
-        self._contact = (np.zeros(liggghts.HISTORY_WIDTH),) + tuple(np.zeros(3) for _ in range(3))
-        self.models = np.array([liggghts.NORMAL_MODELS[args.model], liggghts.TANGENTIAL_MODELS[args.tangential],
-                                liggghts.ROLLING_MODELS[args.rolling_friction],
-                                liggghts.COHESION_MODELS[args.cohesion], args.tangential_damping == "on",
-                                args.limitForce == "on", sim.dimension], dtype=np.int64)
-        self.table, self.charvel = None, 0.0
+        self.contact_model = args.contact_model()
+        self.history_width = self.contact_model.history_width
+        self._state = np.zeros(SIZE)
+        self._hist = np.zeros(max(self.history_width, 1))
+        self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 2)), 2)
+        self.contact_coeff = self.kernels = None
 
     def init(self, ntypes):
         sim = self.sim
         if "sphere" not in sim.particle_styles:
             raise ScriptError(f"pair {self.name} needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
-        self.models[6] = sim.dimension
-        self.table, self.charvel = liggghts.material_table(sim, self.models, ntypes, f"pair {self.name}")
-        self.youngs = liggghts.read_property(sim, "youngsModulus", ntypes, f"pair {self.name}")
-        self.poisson = liggghts.read_property(sim, "poissonsRatio", ntypes, f"pair {self.name}")
-        self.open_history()
+        self.material = Material(sim, ntypes, f"pair {self.name}")
+        self.contact_coeff = self.contact_model.bind(self.material)
+        self.kernels = self.contact_model.kernels()
+        if self.history_width > 0:
+            self.open_history()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
         self.check_box()
@@ -274,10 +157,15 @@ class PairGranModel(PairGran):
         nu)); LIGGGHTS's Hertz estimate, for hooke models too (its check/timestep/gran: each particle
         against its copy with m* its full mass, R* = R/2, Y* of its type, at twice the largest speed,
         2.87 (m*^2 / (R* Y*^2 v))^(1/5)); and the shortest contact of the lightest particle of each
-        type hitting its copy, with m* = m/2 (module docstring; the run's own warning). None where there
-        is nothing to time (no particles; for hertz, nothing moving)."""
+        type hitting its copy, with m* = m/2 (module docstring; the run's own warning): the Hertz
+        time for every normal model but hooke. None where there is nothing to time (no particles;
+        for hertz, nothing moving)."""
         p = sim.particles
         nl = p.nlocal
+        youngs = self.material.property("youngsModulus")
+        poisson = self.material.property("poissonsRatio")
+        y_star_table = self.material.youngs_effective()
+        hooke = self.args.model == "hooke"
         rayleigh = math.inf
         for t in range(1, sim.ntypes + 1):
             of_type = p.type[:nl] == t
@@ -286,14 +174,14 @@ class PairGranModel(PairGran):
             radius, mass = p.radius[:nl][of_type], p.rmass[:nl][of_type]
             density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
             k = int(np.argmin(radius * np.sqrt(density)))
-            shear = self.youngs[t] / (2.0 * (1.0 + self.poisson[t]))
-            rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, self.poisson[t]))
+            shear = youngs[t] / (2.0 * (1.0 + poisson[t]))
+            rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, poisson[t]))
         rayleigh = sim.comm.min(rayleigh)
         shortest, hertz = math.inf, math.inf
         speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
         for t in range(1, sim.ntypes + 1):
             of_type = p.type[:nl] == t
-            y_star = self.table[liggghts.Y_STAR, t, t]
+            y_star = y_star_table[t, t]
             if speed > 0.0 and of_type.any():
                 mass, radius = p.rmass[:nl][of_type], p.radius[:nl][of_type]
                 k = int(np.argmin(mass * mass / radius))
@@ -304,36 +192,49 @@ class PairGranModel(PairGran):
             rows = np.flatnonzero(of_type & (p.rmass[:nl] == lightest))
             radius = sim.comm.min(float(p.radius[:nl][rows].min()) if len(rows) else math.inf)
             m_eff, r_eff = 0.5 * lightest, 0.5 * radius
-            if self.models[0] == liggghts.HERTZ:
+            if not hooke:
                 if speed > 0.0:
                     shortest = min(shortest, contact_models.hertz_contact_time(y_star, r_eff, m_eff, 2.0 * speed))
                 continue
-            kn, _, gamma_n, _ = liggghts.normal_constants(liggghts.HOOKE, self.table, t, t, r_eff, m_eff, 0.0,
-                                                          self.charvel, sim.units.nktv2p, True)
+            # LIGGGHTS's hooke: Hertz's stiffness at the characteristic velocity (gran.normal hooke)
+            charvel = self.material.property("characteristicVelocity")
+            log_e = math.log(self.material.property("coefficientRestitution")[t, t])
+            root = math.sqrt(r_eff)
+            kn = 16.0 / 15.0 * root * y_star * (15.0 * m_eff * charvel ** 2 / (16.0 * root * y_star)) ** 0.2
+            gamma_n = math.sqrt(4.0 * m_eff * kn * log_e ** 2 / (log_e ** 2 + math.pi ** 2))
+            kn /= sim.units.nktv2p
             rate = kn / m_eff - (gamma_n / (2.0 * m_eff)) ** 2
             shortest = min(shortest, math.pi / math.sqrt(rate) if rate > 0 else math.pi * math.sqrt(m_eff / kn))
         hertz = sim.comm.min(hertz)
         return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
                 "hertz": hertz if math.isfinite(hertz) else None, "contact": shortest}
 
+    def _history_arrays(self):
+        if self.history is None:
+            return self._no_history[0], self._no_history[1]
+        return self.history.partner, self.history.values
+
     def contacts(self, sim, group="all"):
         """The contacts of owned particles with both particles in ``group``, as the forces of this
         moment give them (velocities, spins and springs now; nothing advanced): a dict of arrays
         over the contacts, "i" and "j" (particle rows, j possibly a ghost), "force" (on i),
-        "tangential" (its tangential part) and "history" (the HISTORY_WIDTH values as i sees them)
+        "tangential" (its tangential part) and "history" (the contact's history values as i sees
+        them: the tangential spring, then the rolling spring torque where the models keep them)
         (compute pair/gran/local reads it)."""
         p = sim.particles
         nlist = sim.pair_list
         size = max(len(nlist.neighbors), 1)
         rows = np.zeros((size, 2), dtype=np.int64)
         force, tangential = np.zeros((size, 3)), np.zeros((size, 3))
-        hist = np.zeros((size, liggghts.HISTORY_WIDTH))
+        width = self.history_width
+        hist = np.zeros((size, width))
         a = p.arrays
-        count = gran_model_contacts(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["type"], a["mask"], a["tag"],
-                                    nlist.offsets, nlist.neighbors, p.nlocal, self.models, self.table, self.charvel,
-                                    sim.units.nktv2p, self.freeze_bit, sim.dt, self.history.partner,
-                                    self.history.values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
-                                    hist, self._scratch[0], self._scratch[1], self._scratch[2], *self._contact)
+        partner, values = self._history_arrays()
+        count = self.kernels.pair_contacts(
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["tag"],
+            nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit, sim.dt, sim.dimension,
+            partner if width else partner[:0], values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
+            hist, self._state, self._hist[:width])
         return {"i": rows[:count, 0], "j": rows[:count, 1], "force": force[:count],
                 "tangential": tangential[:count], "history": hist[:count]}
 
@@ -341,18 +242,20 @@ class PairGranModel(PairGran):
         p = sim.particles
         update = not sim.in_setup
         owner = sim.comm.owners(p)
-        partner, values, capacity = self.history.partner, self.history.values, self.history.capacity
-        if not update:
+        with_history = self.history is not None
+        partner, values = self._history_arrays()
+        capacity = partner.shape[1]
+        if with_history and not update:
             pack_slots(partner, values, p.nall)
-        touched = self.touched_flags(p.nall, capacity)
+        touched = self.touched_flags(p.nall if with_history else 1, capacity)
         rows, touching, _ = self.list_rows(nlist, p.nlocal)
         a = p.arrays
-        bad = gran_model_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a["type"], a["mask"], a["f"],
-                                 a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.models,
-                                 self.table, self.charvel, sim.units.nktv2p, self.freeze_bit, sim.dt, update,
-                                 partner, values, touched, touching, self._ntouching, self._scratch[0],
-                                 self._scratch[1], self._scratch[2], *self._contact)
-        if bad < 0 and update:
+        bad = self.kernels.pair_forces(
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
+            a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
+            sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, self._state,
+            self._hist)
+        if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
                 self.forget_stale(sim, nlist, owner, touched, rows, touching, int(self._ntouching[0]))

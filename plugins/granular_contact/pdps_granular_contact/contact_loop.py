@@ -1,0 +1,318 @@
+"""The parts of the generated contact loops (composition.ContactModel.kernels) that do not depend on
+the sub-models: filling a contact's quantities (contact_state) from the particle arrays, applying
+its forces and torques, and the loop templates themselves. A generated module imports everything
+here, then defines ``contact(c, coeff, ti, tj, hist)`` (the sub-models in order) and the loops below.
+"""
+
+import math
+
+from numba import njit
+
+from pdps_core.api import find_slot
+
+from .contact_models import contact_mass
+from .contact_slots import load_history, store_history, wall_slots
+from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ,
+                            M_EFF, NX, NY, NZ, R, RADIUS_I, RADIUS_J, R_EFF, UPDATE, VX, VY, VZ, WALL, WIX, WIY, WIZ,
+                            WJX, WJY, WJZ, ARM_I, ARM_J)
+
+__all__ = ["math", "find_slot", "load_history", "store_history", "wall_slots", "set_run", "fill_pair", "fill_wall",
+           "apply_pair", "apply_wall", "tangential_torque"]
+
+
+@njit(cache=True)
+def set_run(c, dt, update, dimension):
+    """What every contact of this force computation shares."""
+    c[DT] = dt
+    c[UPDATE] = 1.0 if update else 0.0
+    c[DIMENSION] = dimension
+
+
+@njit(cache=True)
+def fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq):
+    """Spheres i and j at separation (delx, dely, delz) = x_i - x_j, rsq > 0, touching."""
+    r = math.sqrt(rsq)
+    c[R] = r
+    c[RADIUS_I] = radius[i]
+    c[RADIUS_J] = radius[j]
+    c[DELTA] = radius[i] + radius[j] - r
+    c[R_EFF] = radius[i] * radius[j] / (radius[i] + radius[j])
+    c[WALL] = 0.0
+    c[NX] = delx / r
+    c[NY] = dely / r
+    c[NZ] = delz / r
+    m_i = contact_mass(rmass, body_mass, i)
+    m_j = contact_mass(rmass, body_mass, j)
+    c[MASS_I] = m_i
+    c[MASS_J] = m_j
+    m_eff = m_i * m_j / (m_i + m_j)
+    # a particle held at rest (fix freeze) meets the other with the other's mass
+    if mask[i] & freeze_bit:
+        m_eff = m_j
+    if mask[j] & freeze_bit:
+        m_eff = m_i
+    c[M_EFF] = m_eff
+    c[VX] = v[i, 0] - v[j, 0]
+    c[VY] = v[i, 1] - v[j, 1]
+    c[VZ] = v[i, 2] - v[j, 2]
+    c[WIX] = omega[i, 0]
+    c[WIY] = omega[i, 1]
+    c[WIZ] = omega[i, 2]
+    c[WJX] = omega[j, 0]
+    c[WJY] = omega[j, 1]
+    c[WJZ] = omega[j, 2]
+
+
+@njit(cache=True)
+def fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k):
+    """Particle i whose centre is ``distance[k]`` < R_i from a wall element, normal ``normal[k]`` from
+    the surface to the centre, the wall moving at ``wall_velocity[k]`` at the contact point."""
+    c[R] = distance[k]
+    c[RADIUS_I] = radius[i]
+    c[RADIUS_J] = 0.0
+    c[DELTA] = radius[i] - distance[k]
+    c[R_EFF] = radius[i]
+    c[WALL] = 1.0
+    c[NX] = normal[k, 0]
+    c[NY] = normal[k, 1]
+    c[NZ] = normal[k, 2]
+    c[MASS_I] = rmass[i]
+    c[MASS_J] = 0.0
+    c[M_EFF] = rmass[i]
+    c[VX] = v[i, 0] - wall_velocity[k, 0]
+    c[VY] = v[i, 1] - wall_velocity[k, 1]
+    c[VZ] = v[i, 2] - wall_velocity[k, 2]
+    c[WIX] = omega[i, 0]
+    c[WIY] = omega[i, 1]
+    c[WIZ] = omega[i, 2]
+    c[WJX] = 0.0
+    c[WJY] = 0.0
+    c[WJZ] = 0.0
+
+
+@njit(cache=True)
+def tangential_torque(c, arm, out):
+    """-arm n x F_t into ``out`` (3)."""
+    out[0] = -arm * (c[NY] * c[FTZ] - c[NZ] * c[FTY])
+    out[1] = -arm * (c[NZ] * c[FTX] - c[NX] * c[FTZ])
+    out[2] = -arm * (c[NX] * c[FTY] - c[NY] * c[FTX])
+
+
+@njit(cache=True)
+def apply_pair(c, f, torque, i, j):
+    """Force F_n n + F_t on i and its negative on j; torques -a n x F_t on both, and the rolling and
+    twisting torques (-M on i, +M on j)."""
+    fx = c[FN] * c[NX] + c[FTX]
+    fy = c[FN] * c[NY] + c[FTY]
+    fz = c[FN] * c[NZ] + c[FTZ]
+    f[i, 0] += fx
+    f[i, 1] += fy
+    f[i, 2] += fz
+    f[j, 0] -= fx
+    f[j, 1] -= fy
+    f[j, 2] -= fz
+    cx = c[NY] * c[FTZ] - c[NZ] * c[FTY]
+    cy = c[NZ] * c[FTX] - c[NX] * c[FTZ]
+    cz = c[NX] * c[FTY] - c[NY] * c[FTX]
+    mx = c[MRX] + c[MTX]
+    my = c[MRY] + c[MTY]
+    mz = c[MRZ] + c[MTZ]
+    torque[i, 0] -= c[ARM_I] * cx + mx
+    torque[i, 1] -= c[ARM_I] * cy + my
+    torque[i, 2] -= c[ARM_I] * cz + mz
+    torque[j, 0] += mx - c[ARM_J] * cx
+    torque[j, 1] += my - c[ARM_J] * cy
+    torque[j, 2] += mz - c[ARM_J] * cz
+
+
+@njit(cache=True)
+def apply_wall(c, f, torque, i, force, tangential):
+    """Force and torque on particle i from a wall contact; the force into ``force`` (3), the torque
+    of the tangential force alone into ``tangential`` (3)."""
+    force[0] = c[FN] * c[NX] + c[FTX]
+    force[1] = c[FN] * c[NY] + c[FTY]
+    force[2] = c[FN] * c[NZ] + c[FTZ]
+    tangential_torque(c, c[ARM_I], tangential)
+    for d in range(3):
+        f[i, d] += force[d]
+    torque[i, 0] += tangential[0] - c[MRX] - c[MTX]
+    torque[i, 1] += tangential[1] - c[MRY] - c[MTY]
+    torque[i, 2] += tangential[2] - c[MRZ] - c[MTZ]
+
+
+# _nrt=False in the loops below: the contact helpers store into arrays under branches, where numba
+# keeps an atomic, out-of-line reference count of every array they take around each call (numba
+# issue #2350); nothing here allocates
+PAIR_FORCES = '''
+
+@njit(cache=True, _nrt=False)
+def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
+                nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
+                c, hist):
+    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
+    slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
+    number into ``ntouching[0]`` (the end-of-step sweep of the history reads them)."""
+    set_run(c, dt, update, dimension)
+    m = 0
+    for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
+        radi = radius[i]
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            # most listed pairs (within the skin) do not touch: only their distance is measured
+            delx = xi0 - x[j, 0]
+            dely = xi1 - x[j, 1]
+            delz = xi2 - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            radsum = radi + radius[j]
+            # coincident centres have no normal: no force
+            if rsq >= radsum * radsum or rsq == 0.0:
+                continue
+            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
+            if update and (slot_i < 0 or slot_j < 0):
+                return tag[i] if slot_i < 0 else tag[j]
+            touching[m] = k
+            m += 1
+            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+            contact(c, coeff, type_[i], type_[j], hist)
+            if update or slot_i >= 0:
+                store_history(history, owner, i, j, slot_i, slot_j, hist)
+            apply_pair(c, f, torque, i, j)
+    ntouching[0] = m
+    return -1
+'''
+
+PAIR_FORCES_NO_HISTORY = '''
+
+@njit(cache=True, _nrt=False)
+def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
+                nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
+                c, hist):
+    """Contact forces and torques of a half list (no history kept); returns -1."""
+    set_run(c, dt, update, dimension)
+    m = 0
+    for i in range(nlocal):
+        xi0 = x[i, 0]
+        xi1 = x[i, 1]
+        xi2 = x[i, 2]
+        radi = radius[i]
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            delx = xi0 - x[j, 0]
+            dely = xi1 - x[j, 1]
+            delz = xi2 - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            radsum = radi + radius[j]
+            if rsq >= radsum * radsum or rsq == 0.0:
+                continue
+            touching[m] = k
+            m += 1
+            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+            contact(c, coeff, type_[i], type_[j], hist)
+            apply_pair(c, f, torque, i, j)
+    ntouching[0] = m
+    return -1
+'''
+
+PAIR_CONTACTS = '''
+
+@njit(cache=True, _nrt=False)
+def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offsets, neighbors, nlocal, coeff,
+                  freeze_bit, dt, dimension, partner, history, groupbit, rows, force_out, tangential_out, hist_out,
+                  c, hist):
+    """Every contact of the half list whose two particles are in ``groupbit``, evaluated as the
+    setup force computation does (nothing stored): returns how many; their rows (i, j), forces on
+    i, tangential parts and history values (as i sees them) into the ``*_out`` arrays."""
+    set_run(c, dt, False, dimension)
+    count = 0
+    width = len(hist)
+    for i in range(nlocal):
+        if not mask[i] & groupbit:
+            continue
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            if not mask[j] & groupbit:
+                continue
+            delx = x[i, 0] - x[j, 0]
+            dely = x[i, 1] - x[j, 1]
+            delz = x[i, 2] - x[j, 2]
+            rsq = delx * delx + dely * dely + delz * delz
+            radsum = radius[i] + radius[j]
+            if rsq >= radsum * radsum or rsq == 0.0:
+                continue
+            slot = find_slot(partner, i, tag[j]) if len(partner) > 0 else -1
+            for d in range(width):
+                hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
+                hist_out[count, d] = hist[d]
+            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+            contact(c, coeff, type_[i], type_[j], hist)
+            rows[count, 0] = i
+            rows[count, 1] = j
+            force_out[count, 0] = c[FN] * c[NX] + c[FTX]
+            force_out[count, 1] = c[FN] * c[NY] + c[FTY]
+            force_out[count, 2] = c[FN] * c[NZ] + c[FTZ]
+            tangential_out[count, 0] = c[FTX]
+            tangential_out[count, 1] = c[FTY]
+            tangential_out[count, 2] = c[FTZ]
+            count += 1
+    return count
+'''
+
+# A wall contact's values: the sub-models' history, then the contact's last normal (for handing the
+# contact on between the faces of a mesh: wall_slots)
+WALL_FORCES = '''
+
+@njit(cache=True, _nrt=False)
+def wall_forces(i, count, distance, normal, key, touch, wall_velocity, v, omega, f, torque, radius, rmass, ptype,
+                wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist, force, tangential,
+                contact_force, log, logged, transfer_cos):
+    """Force and torque on particle i from its wall contacts 0..count (distance of i's centre from
+    the element ``key[k]``, normal from the surface to the centre, contact point ``touch[k]``, the
+    wall's velocity there), each contact's force into ``contact_force``; with a ``log`` of rows
+    (row, element, contact point, wall velocity, force, tangential torque, overlap, area, history),
+    one row per touching contact after ``logged[0]`` (which counts them). Returns False when i has
+    no free history slot."""
+    set_run(c, dt, update, dimension)
+    width = len(hist)
+    stride = values.shape[1] // partner.shape[1]
+    r_i = radius[i]
+    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, width, update, used, slots,
+                      transfer_cos):
+        return False
+    for k in range(count):
+        for d in range(3):
+            contact_force[k, d] = 0.0
+        if distance[k] >= r_i:
+            continue
+        s = slots[k]
+        for h in range(width):
+            hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
+        fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k)
+        contact(c, coeff, ptype[i], wall_type, hist)
+        if s >= 0:
+            for h in range(width):
+                values[i, s * stride + h] = hist[h]
+            if update:
+                for d in range(3):
+                    values[i, s * stride + width + d] = normal[k, d]
+        apply_wall(c, f, torque, i, force, tangential)
+        for d in range(3):
+            contact_force[k, d] = force[d]
+        row = logged[0]
+        if row < log.shape[0]:
+            log[row, 0] = i
+            log[row, 1] = key[k]
+            for d in range(3):
+                log[row, 2 + d] = touch[k, d]
+                log[row, 5 + d] = wall_velocity[k, d]
+                log[row, 8 + d] = force[d]
+                log[row, 11 + d] = tangential[d]
+            log[row, 14] = c[DELTA]
+            log[row, 15] = math.pi * (r_i * r_i - distance[k] * distance[k])
+            for h in range(min(width, log.shape[1] - 16)):
+                log[row, 16 + h] = hist[h]
+            logged[0] = row + 1
+    return True
+'''

@@ -1,0 +1,56 @@
+r"""The quantities of one granular contact, as the slots of one float64 array ``c`` that the contact
+loop fills and every sub-model reads and writes (LAMMPS's GranularModel members, LIGGGHTS's
+SurfacesIntersectData). A sub-model reads the slots of the kinds called before it and writes its own:
+
+    from pdps_granular_contact.contact_state import DELTA, R_EFF, FN
+
+    @njit(cache=True)
+    def hertz_force(c, k, hist, h):
+        c[FN] = k[0] * math.sqrt(c[R_EFF] * c[DELTA]) * c[DELTA]
+
+Body i is a particle, body j a particle or a wall (``WALL`` 1, ``RADIUS_J`` and ``MASS_J`` 0). The
+normal :math:`\mathbf{n}` points from j to i; forces are those on i (j gets their negatives),
+torques are i's; units are the run's.
+
+Filled by the loop, before any sub-model:
+
+- ``R``: distance of the centres (of i's centre from the wall's surface); ``DELTA``: overlap
+  :math:`\delta = R_i + R_j - r` (:math:`R_i - r` against a wall), > 0
+- ``RADIUS_I``, ``RADIUS_J``, ``MASS_I``, ``MASS_J``; ``R_EFF`` :math:`R_iR_j/(R_i+R_j)` (:math:`R_i`
+  against a wall); ``M_EFF`` :math:`m_im_j/(m_i+m_j)`, the other body's mass when one is held at
+  rest (fix freeze), a rigid body's mass for a particle in one, :math:`m_i` against a wall
+- ``NX``..``NZ`` the normal; ``VX``..``VZ`` :math:`\mathbf{v}_i - \mathbf{v}_j` (the wall's
+  velocity at the contact point for a wall); ``WIX``..``WIZ``, ``WJX``..``WJZ`` the spins
+- ``DT`` the timestep; ``UPDATE`` 1 when the contact's history advances (0 in a run's setup force
+  computation, which reads the history and changes nothing: LAMMPS's and LIGGGHTS's
+  ``shearupdate``); ``DIMENSION`` 2 or 3; ``TEMPERATURE_I``, ``TEMPERATURE_J`` where heat is
+  conducted
+
+Written by the sub-models, in the order the loop calls them (surface, normal, damping, cohesion,
+tangential, rolling, twisting, heat):
+
+- surface: ``ARM_I``, ``ARM_J`` (centre to contact point), ``VN`` :math:`(\mathbf{v}_i -
+  \mathbf{v}_j)\cdot\mathbf{n}`, ``VTX``..``VTZ`` the sliding velocity of the contact points,
+  ``WRX``..``WRZ`` the relative spin :math:`\boldsymbol\omega_i - \boldsymbol\omega_j`
+- normal (and damping, cohesion): ``FN`` the normal force along n; ``FN_LIMIT`` the normal force
+  the tangential Coulomb limit and the rolling cap read; ``KN``, ``KT``, ``GAMMA_N``, ``GAMMA_T``
+  the stiffnesses and dampings of this overlap (LIGGGHTS's normal models give the tangential ones)
+- tangential: ``FTX``..``FTZ`` the tangential force; its torque on each body is the loop's
+  (:math:`-a\,\mathbf{n}\times\mathbf{F}_t` with the arm a of the body)
+- rolling, twisting: ``MRX``..``MRZ``, ``MTX``..``MTZ``: torques :math:`\mathbf{M}`, i gets
+  :math:`-\mathbf{M}` and j :math:`+\mathbf{M}`
+- heat: ``HEAT`` the heat flow into i (power)
+
+Every slot a sub-model writes is zeroed by the loop before the first sub-model of each contact, so
+a kind no model fills contributes nothing.
+"""
+
+(R, DELTA, RADIUS_I, RADIUS_J, MASS_I, MASS_J, R_EFF, M_EFF, WALL,
+ NX, NY, NZ, VX, VY, VZ, WIX, WIY, WIZ, WJX, WJY, WJZ, DT, UPDATE, DIMENSION, TEMPERATURE_I, TEMPERATURE_J,
+ ARM_I, ARM_J, VN, VTX, VTY, VTZ, WRX, WRY, WRZ,
+ FN, FN_LIMIT, KN, KT, GAMMA_N, GAMMA_T,
+ FTX, FTY, FTZ, MRX, MRY, MRZ, MTX, MTY, MTZ, HEAT) = range(51)
+
+SIZE = 51
+# the slots the sub-models write, zeroed before each contact
+FIRST_OUTPUT = ARM_I

@@ -1,0 +1,43 @@
+r"""Surface ``default`` of LIGGGHTS's granular models: spheres. The contact point lies half the
+overlap inside each surface, so the lever arms from the centres are :math:`a_{i,j} = R_{i,j} -
+\delta/2` (:math:`a_j = 0` against a wall, which does not turn), and the contact points slide at
+
+.. math::
+
+    \mathbf{v}_{tr} = \mathbf{v}_t - (a_i\boldsymbol\omega_i + a_j\boldsymbol\omega_j)\times\mathbf{n},
+    \qquad v_n = (\mathbf{v}_i - \mathbf{v}_j)\cdot\mathbf{n}
+
+with the relative spin :math:`\boldsymbol\omega_r = \boldsymbol\omega_i - \boldsymbol\omega_j`.
+No coefficients, no history. Syntax: ``surface default`` (LIGGGHTS's default; the only surface).
+"""
+
+from numba import njit
+
+from pdps_granular_contact.contact_state import (ARM_I, ARM_J, DELTA, NX, NY, NZ, RADIUS_I, RADIUS_J, VN, VTX, VTY,
+                                                 VTZ, VX, VY, VZ, WALL, WIX, WIY, WIZ, WJX, WJY, WJZ, WRX, WRY, WRZ)
+
+from .base import GranSubModel
+
+
+@njit(cache=True)
+def sphere_kinematics(c, k, hist, h):
+    half = 0.5 * c[DELTA]
+    c[ARM_I] = c[RADIUS_I] - half
+    c[ARM_J] = 0.0 if c[WALL] > 0.0 else c[RADIUS_J] - half
+    vn = c[VX] * c[NX] + c[VY] * c[NY] + c[VZ] * c[NZ]
+    c[VN] = vn
+    w0 = c[ARM_I] * c[WIX] + c[ARM_J] * c[WJX]
+    w1 = c[ARM_I] * c[WIY] + c[ARM_J] * c[WJY]
+    w2 = c[ARM_I] * c[WIZ] + c[ARM_J] * c[WJZ]
+    c[VTX] = c[VX] - vn * c[NX] - (w1 * c[NZ] - w2 * c[NY])
+    c[VTY] = c[VY] - vn * c[NY] - (w2 * c[NX] - w0 * c[NZ])
+    c[VTZ] = c[VZ] - vn * c[NZ] - (w0 * c[NY] - w1 * c[NX])
+    c[WRX] = c[WIX] - c[WJX]
+    c[WRY] = c[WIY] - c[WJY]
+    c[WRZ] = c[WIZ] - c[WJZ]
+
+
+class SurfaceDefault(GranSubModel):
+    kind = "gran.surface"
+    name = "default"
+    compute = sphere_kinematics
