@@ -38,7 +38,7 @@ Needs ``pair_style gran``. Example::
 import numpy as np
 
 from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs, param
-from pdps_granular_contact.liggghts import intersection_area
+from pdps_granular_contact.contact_models import intersection_area
 
 # keyword -> columns, in LIGGGHTS's order
 COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1, "delta": 1,

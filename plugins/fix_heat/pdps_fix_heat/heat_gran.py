@@ -68,7 +68,8 @@ from numba import njit
 from pydantic import PositiveFloat, model_validator
 
 from pdps_core.api import Fix, HeatTransport, ScriptError, StyleArgs, keyword
-from pdps_granular_contact.liggghts import intersection_area, read_property
+from pdps_granular_contact.contact_models import intersection_area
+from pdps_granular_contact.material import read_property
 
 OVERLAP, CONSTANT, PROJECTION = 0, 1, 2
 AREAS = {"overlap": OVERLAP, "constant": CONSTANT, "projection": PROJECTION}

@@ -30,7 +30,7 @@ def test_each_property_global_form_is_read(line, kind, values):
 
 
 def test_the_later_of_two_fixes_of_one_name_holds():
-    from pdps_granular_contact.liggghts import read_property
+    from pdps_granular_contact.material import read_property
     sim = Simulation(screen=False, log=None)
     sim.command(SETUP + "fix a all property/global youngsModulus peratomtype 1e6 2e6\n"
                 "fix b all property/global youngsModulus peratomtype 3e6 4e6\n")

@@ -13,8 +13,8 @@ chosen by the keywords, always in LIGGGHTS's order whatever order they are given
 - ``force`` (3): the contact force on the particle (force);
 - ``torque`` (3): the torque of the contact's tangential force on the particle divided by the
   particle's radius (force; without rolling friction, as LIGGGHTS);
-- ``history`` (6): the contact's history (tangential spring, 3 values; the epsd/epsd2 rolling
-  spring torque, 3 values; as pair gran's);
+- ``history``: the contact's history, as many values as its law keeps (tangential spring, 3
+  values, with tangential history; the epsd/epsd2 rolling spring torque, 3 values; as pair gran's);
 - ``contactArea`` (1): :math:`\pi(R^2 - d^2)`, the area of the circle where the sphere meets the
   wall's plane (distance^2);
 - ``delta`` (1): the overlap :math:`R - d` (distance).
@@ -40,7 +40,8 @@ from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
 from .wall_contact import LOG_COLUMNS
 from .wall_gran_model import FixWallGranModel
 
-KEYWORDS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": 6, "contactArea": 1,
+# columns of each keyword; history's are as many as the wall's contact law keeps
+KEYWORDS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1,
             "delta": 1}
 DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
 COLUMN = {name: k for k, name in enumerate(LOG_COLUMNS)}
@@ -66,7 +67,6 @@ class ComputeWallGranLocal(Compute):
                 raise ScriptError(f"unknown keyword {word} (known: {', '.join(KEYWORDS)}, wall)")
         chosen = set(words) or set(DEFAULT)
         self.keywords = [name for name in KEYWORDS if name in chosen]
-        self.columns = sum(KEYWORDS[name] for name in self.keywords)
 
     def wall(self, sim):
         if self.wall_id is not None:
@@ -85,8 +85,10 @@ class ComputeWallGranLocal(Compute):
         """This rank's contacts, one row each: (rows, columns) floats in the keywords' order."""
         p = sim.particles
         in_group = p.mask & sim.groups.bit(self.group)
+        wall = self.wall(sim)
+        columns = sum(KEYWORDS[name] or wall.contact_model.history_width for name in self.keywords)
         blocks = []
-        for number, log in self.wall(sim).contact_log(sim):
+        for number, log in wall.contact_log(sim):
             rows = log[:, COLUMN["row"]].astype(np.int64)
             keep = in_group[rows] != 0
             log, rows = log[keep], rows[keep]
@@ -97,11 +99,11 @@ class ComputeWallGranLocal(Compute):
                        p.tag[rows].astype(np.float64)[:, None]],
                 "force": [log[:, COLUMN["fx"]:COLUMN["fz"] + 1]],
                 "torque": [log[:, COLUMN["tx"]:COLUMN["tz"] + 1] / p.radius[rows][:, None]],
-                "history": [log[:, COLUMN["history0"]:]],
+                "history": [log[:, len(LOG_COLUMNS):]],
                 "contactArea": [log[:, [COLUMN["area"]]]],
                 "delta": [log[:, [COLUMN["delta"]]]],
             }
             blocks.append(np.hstack([part for name in self.keywords for part in parts[name]]))
         if not blocks:
-            return np.zeros((0, self.columns))
-        return np.vstack(blocks).reshape(-1, self.columns)
+            return np.zeros((0, columns))
+        return np.vstack(blocks).reshape(-1, columns)

@@ -87,10 +87,9 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, keyword, observables
-from pdps_granular_contact import liggghts
 
-from .wall_contact import (HISTORY_WIDTH, LOG_COLUMNS, TRANSFER_COS, ContactLaw, check_law_numbers,
-                           forget_far, liggghts_wall_contacts, particle_wall_contacts)
+from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
+                           particle_wall_contacts)
 
 MAX_CELLS_PER_AXIS = 64
 MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the coordinates) are one
@@ -448,7 +447,6 @@ def tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, 
 
 
 # the law families of mesh_wall_forces
-PDPS_LAWS, LIGGGHTS_LAWS = 0, 1
 
 
 def mesh_scratch(most, slots):
@@ -457,8 +455,80 @@ def mesh_scratch(most, slots):
     return (np.empty(most, dtype=np.int64), np.empty((most, 3)), np.empty(most), np.empty(most, dtype=np.bool_),
             np.empty(most, dtype=np.bool_), np.empty(most), np.empty((most, 3)), np.empty(most, dtype=np.int64),
             np.empty((most, 3)), np.empty((most, 3)), np.empty((most, 3)), np.empty(slots, dtype=np.bool_),
-            np.empty(most, dtype=np.int64), np.empty((1, 3)), np.empty(3), np.empty(3), np.empty(3), np.empty(3),
-            np.empty(liggghts.HISTORY_WIDTH), np.empty(3), np.empty(3), np.empty(3))
+            np.empty(most, dtype=np.int64), np.empty((1, 3)), np.empty(3), np.empty(3), np.empty(3), np.empty(3))
+
+
+@njit(cache=True)
+def mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity, spin, pivot,
+                      belt, conveyor, tri, point, gap, on_face, keep, probe, base, distance, normal, key, touch,
+                      wall_velocity):
+    """Particle i's contacts (the k-th visited) with its candidate triangles (module docstring) into
+    rows ``base``.. of ``distance``, ``normal`` (surface to centre), ``key`` (triangle), ``touch``
+    (contact point) and ``wall_velocity`` (the wall's there); returns how many."""
+    r = radius[i]
+    xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
+    tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
+    nc = 0
+    for m in range(offsets[k], offsets[k + 1]):
+        t = candidates[m]
+        inside = closest_on_triangle(xi, yi, zi, vertices[triangles[t, 0]],
+                                     vertices[triangles[t, 1]], vertices[triangles[t, 2]],
+                                     point[nc])
+        g = math.sqrt((xi - point[nc, 0]) ** 2 + (yi - point[nc, 1]) ** 2
+                      + (zi - point[nc, 2]) ** 2)
+        if g < r:
+            tri[nc] = t
+            gap[nc] = g
+            on_face[nc] = inside
+            keep[nc] = True
+            nc += 1
+    # an edge or corner point lying on another touched triangle whose closest point is
+    # elsewhere is not a local closest point; equal points are one contact
+    for a in range(nc):
+        if on_face[a]:
+            continue
+        for b in range(nc):
+            if b == a:
+                continue
+            if separation(point, a, point, b) <= tolerance:
+                continue
+            t = tri[b]
+            closest_on_triangle(point[a, 0], point[a, 1], point[a, 2],
+                                vertices[triangles[t, 0]], vertices[triangles[t, 1]],
+                                vertices[triangles[t, 2]], probe[0])
+            if separation(probe, 0, point, a) <= tolerance:
+                keep[a] = False
+                break
+    for a in range(nc):
+        if not keep[a]:
+            continue
+        for b in range(a):
+            if keep[b] and separation(point, a, point, b) <= tolerance:
+                keep[a] = False
+                break
+    count = 0
+    for a in range(nc):
+        if not keep[a]:
+            continue
+        t = tri[a]
+        row = base + count
+        distance[row] = gap[a]
+        key[row] = t
+        for d in range(3):
+            touch[row, d] = point[a, d]
+        if gap[a] > tolerance:
+            normal[row, 0] = (xi - point[a, 0]) / gap[a]
+            normal[row, 1] = (yi - point[a, 1]) / gap[a]
+            normal[row, 2] = (zi - point[a, 2]) / gap[a]
+        else:
+            for d in range(3):
+                normal[row, d] = face_normal[t, d]
+        if conveyor:
+            belt_on_face(belt, face_normal[t], wall_velocity[row])
+        else:
+            rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[row])
+        count += 1
+    return count
 
 
 # _nrt=False: without numba's reference counting. Its helpers take array views and store under
@@ -468,99 +538,29 @@ def mesh_scratch(most, slots):
 # scratch rows come in.
 @njit(cache=True, _nrt=False)
 def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
-                     mass, v, omega, f, torque, rotation, partner, values, family, model, laws,
-                     models, table, charvel, nktv2p, wall_type, dt, update, velocity, spin, pivot,
-                     belt, conveyor, tally, reference, face_force, mesh_torque, wear_k, face_wear,
-                     face_area, transfer_cos, log, logged, scratch):
-    """Contacts of the chosen particles with their candidate triangles (module docstring), then the
-    forces: with ``family`` PDPS_LAWS the lsd/hertz law of each particle's type (``model``,
-    ``laws``: rows of ``wall_contact.LAW_COLUMNS``), with LIGGGHTS_LAWS LIGGGHTS's models
-    (``models``, ``table``, ``charvel``, ``nktv2p``; the mesh's material ``wall_type``; contacts
-    logged into ``log`` as wall_contact.liggghts_wall_contacts does). With ``tally`` the forces on
-    the wall are summed per triangle into ``face_force``, their torque about ``reference`` into
-    ``mesh_torque`` and the wear into ``face_wear`` (tally_wall_forces). ``scratch``: mesh_scratch
-    for the most candidates of a particle. Returns -1, or the index of a particle whose contact
-    history overflowed."""
+                     mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update, velocity, spin,
+                     pivot, belt, conveyor, tally, reference, face_force, mesh_torque, wear_k, face_wear,
+                     face_area, transfer_cos, scratch):
+    """Contacts of the chosen particles with their candidate triangles (mesh_contact_rows), then
+    the forces of the lsd/hertz law of each particle's type (``model``, ``laws``: rows of
+    ``wall_contact.LAW_COLUMNS``). With ``tally`` the forces on the wall are summed per triangle
+    into ``face_force``, their torque about ``reference`` into ``mesh_torque`` and the wear into
+    ``face_wear`` (tally_wall_forces). ``scratch``: mesh_scratch for the most candidates of a
+    particle. Returns -1, or the index of a particle whose contact history overflowed."""
     (tri, point, gap, on_face, keep, distance, normal, key, touch, wall_velocity, contact_force, used, slots,
-     probe, n, rel, force, spring, hist, tangential, roll, wr) = scratch
+     probe, n, rel, force, spring) = scratch
     for k in range(len(chosen)):
         i = chosen[k]
-        r = radius[i]
-        xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
-        tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
-        nc = 0
-        for m in range(offsets[k], offsets[k + 1]):
-            t = candidates[m]
-            inside = closest_on_triangle(xi, yi, zi, vertices[triangles[t, 0]],
-                                         vertices[triangles[t, 1]], vertices[triangles[t, 2]],
-                                         point[nc])
-            g = math.sqrt((xi - point[nc, 0]) ** 2 + (yi - point[nc, 1]) ** 2
-                          + (zi - point[nc, 2]) ** 2)
-            if g < r:
-                tri[nc] = t
-                gap[nc] = g
-                on_face[nc] = inside
-                keep[nc] = True
-                nc += 1
-        # an edge or corner point lying on another touched triangle whose closest point is
-        # elsewhere is not a local closest point; equal points are one contact
-        for a in range(nc):
-            if on_face[a]:
-                continue
-            for b in range(nc):
-                if b == a:
-                    continue
-                if separation(point, a, point, b) <= tolerance:
-                    continue
-                t = tri[b]
-                closest_on_triangle(point[a, 0], point[a, 1], point[a, 2],
-                                    vertices[triangles[t, 0]], vertices[triangles[t, 1]],
-                                    vertices[triangles[t, 2]], probe[0])
-                if separation(probe, 0, point, a) <= tolerance:
-                    keep[a] = False
-                    break
-        for a in range(nc):
-            if not keep[a]:
-                continue
-            for b in range(a):
-                if keep[b] and separation(point, a, point, b) <= tolerance:
-                    keep[a] = False
-                    break
-        count = 0
-        for a in range(nc):
-            if not keep[a]:
-                continue
-            t = tri[a]
-            distance[count] = gap[a]
-            key[count] = t
-            for d in range(3):
-                touch[count, d] = point[a, d]
-            if gap[a] > tolerance:
-                normal[count, 0] = (xi - point[a, 0]) / gap[a]
-                normal[count, 1] = (yi - point[a, 1]) / gap[a]
-                normal[count, 2] = (zi - point[a, 2]) / gap[a]
-            else:
-                for d in range(3):
-                    normal[count, d] = face_normal[t, d]
-            if conveyor:
-                belt_on_face(belt, face_normal[t], wall_velocity[count])
-            else:
-                rigid_velocity(point[a], velocity, spin, pivot, wall_velocity[count])
-            count += 1
-        if family == PDPS_LAWS:
-            t = ptype[i]
-            ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, r, mass[i],
-                                        v, omega, f, torque, rotation, partner, values, model,
-                                        laws[t, 0], laws[t, 1], laws[t, 2], laws[t, 3], laws[t, 4],
-                                        laws[t, 5] != 0.0, laws[t, 6], laws[t, 7], laws[t, 8], dt,
-                                        update, used, slots, n, rel, force, spring, contact_force,
-                                        transfer_cos)
-        else:
-            ok = liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v,
-                                        omega, f, torque, radius, mass, ptype, wall_type, models,
-                                        table, charvel, nktv2p, dt, update, partner, values, used,
-                                        slots, hist, force, tangential, roll, n, rel, wr,
-                                        contact_force, log, logged, transfer_cos)
+        count = mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity,
+                                  spin, pivot, belt, conveyor, tri, point, gap, on_face, keep, probe, 0, distance,
+                                  normal, key, touch, wall_velocity)
+        t = ptype[i]
+        ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, radius[i], mass[i],
+                                    v, omega, f, torque, rotation, partner, values, model,
+                                    laws[t, 0], laws[t, 1], laws[t, 2], laws[t, 3], laws[t, 4],
+                                    laws[t, 5] != 0.0, laws[t, 6], laws[t, 7], laws[t, 8], dt,
+                                    update, used, slots, n, rel, force, spring, contact_force,
+                                    transfer_cos)
         if not ok:
             return i
         if tally:
@@ -568,6 +568,33 @@ def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles,
                               ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear,
                               face_area)
     return -1
+
+
+@njit(cache=True, _nrt=False)
+def mesh_contact_table(chosen, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity, spin,
+                       pivot, belt, conveyor, scratch, starts, table):
+    """Every chosen particle's contacts with its candidate triangles, one after the other: particle
+    k's are rows starts[k] .. starts[k + 1] of ``table`` (distance, normal, key, touch,
+    wall_velocity: WallContactTable's arrays), for a composed contact loop."""
+    tri, point, gap, on_face, keep, probe = scratch[0], scratch[1], scratch[2], scratch[3], scratch[4], scratch[13]
+    distance, normal, key, touch, wall_velocity = table
+    base = 0
+    for k in range(len(chosen)):
+        starts[k] = base
+        base += mesh_contact_rows(k, chosen[k], offsets, candidates, x, vertices, triangles, face_normal, radius,
+                                  velocity, spin, pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
+                                  base, distance, normal, key, touch, wall_velocity)
+    starts[len(chosen)] = base
+
+
+@njit(cache=True, _nrt=False)
+def tally_table(chosen, starts, key, touch, contact_force, x, v, wall_velocity, face_normal, ptype, dt, reference,
+                face_force, mesh_torque, wear_k, face_wear, face_area):
+    """tally_wall_forces for every chosen particle's rows of a contact table."""
+    for k in range(len(chosen)):
+        a, b = starts[k], starts[k + 1]
+        tally_wall_forces(b - a, key[a:b], touch[a:b], contact_force[a:b], chosen[k], x, v, wall_velocity[a:b],
+                          face_normal, ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear, face_area)
 
 
 class MeshContacts:
@@ -688,22 +715,14 @@ class MeshContacts:
         bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, p.type, mesh.vertices,
                                mesh.triangles, mesh.face_normal, radius, observables.masses(sim),
                                p.v, omega, p.f, torque, rotation, self.history.partner,
-                               self.history.values, PDPS_LAWS, model, table, *NO_LIGGGHTS_LAW,
-                               sim.dt, update, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt,
-                               mesh.conveyor, tally is not None, *(NO_TALLY if tally is None else tally),
-                               mesh.transfer_cos, *NO_LOG, self.scratch())
+                               self.history.values, model, table, sim.dt, update, mesh.velocity, mesh.spin,
+                               mesh.pivot, mesh.belt, mesh.conveyor, tally is not None,
+                               *(NO_TALLY if tally is None else tally), mesh.transfer_cos, self.scratch())
         if bad >= 0:
             self.history.overflowed(p.tag[bad])
 
 
 NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3), np.zeros(0), np.zeros(0), np.zeros(0))
-
-
-# unused arguments of mesh_wall_forces: LIGGGHTS's law (models, table, charvel, nktv2p, wall type),
-# PDPS's law table, and a contact log
-NO_LIGGGHTS_LAW = (np.zeros(7, dtype=np.int64), np.zeros((1, 1, 1)), 0.0, 1.0, 0)
-NO_PDPS_LAW = (0, np.zeros((1, 9)))
-NO_LOG = (np.zeros((0, len(LOG_COLUMNS))), np.zeros(1, dtype=np.int64))
 
 
 def no_wear(tally):

@@ -50,7 +50,7 @@ from typing import Literal
 import numpy as np
 
 from pdps_core.api import ScriptError, keyword
-from pdps_granular_contact.liggghts import find_property
+from pdps_granular_contact.material import find_property
 
 from .mesh_surface import FixMeshSurface
 

@@ -21,10 +21,10 @@ of the same wall closes, with a normal within about 6 degrees of it (``TRANSFER_
 ``curvature``), takes over its spring: a sphere rolling from one triangle of a tessellated surface
 onto the next keeps its static friction (``wall_slots``).
 
-LIGGGHTS's walls (fix wall/gran model ...) use LIGGGHTS's laws instead
-(``pdps_granular_contact.liggghts`` with the wall as body j; ``liggghts_wall_contacts``): their
-contacts keep the law's history (tangential spring, rolling spring) and the last normal, and can be
-logged one row per contact (``LOG_COLUMNS``) for compute wall/gran/local.
+LIGGGHTS's walls (fix wall/gran model ...) compose their law of sub-models instead
+(``pdps_granular_contact.composition``, whose generated ``wall_forces`` takes a ``WallContactTable``):
+their contacts keep the law's history (tangential spring, rolling spring) and the last normal, and
+can be logged one row per contact (``LOG_COLUMNS``, then the history) for compute wall/gran/local.
 """
 
 import math
@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ScriptError
-from pdps_granular_contact import contact_models, liggghts
+from pdps_granular_contact import contact_models
 from pdps_granular_contact.contact_slots import wall_slots
 
 LSD, HERTZ = 0, 1
@@ -42,14 +42,38 @@ LSD, HERTZ = 0, 1
 LAW_COLUMNS = ("kn", "cn", "kt", "ct", "mu", "per_mass", "e_star", "g_star", "beta")
 HISTORY_WIDTH = 6           # tangential spring (3) and the contact's last normal (3)
 TRANSFER_COS = 0.995        # a new contact whose normal is this close to one just ended continues it
-# LIGGGHTS's laws (fix wall/gran model ...): a contact's values are the law's history, then its last
-# normal (for handing it on between faces)
-LIGGGHTS_WIDTH = liggghts.HISTORY_WIDTH + 3
-LIGGGHTS_NORMAL_AT = liggghts.HISTORY_WIDTH
-# the columns of a LIGGGHTS wall's contact log (compute wall/gran/local reads them): t is the torque
-# of the tangential force alone (without rolling friction)
-LOG_COLUMNS = (("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",
-                "delta", "area") + tuple(f"history{h}" for h in range(liggghts.HISTORY_WIDTH)))
+# the columns of a LIGGGHTS wall's contact log (compute wall/gran/local reads them), then the
+# contact's history values (as many as its composed law keeps): t is the torque of the tangential
+# force alone (without rolling friction)
+LOG_COLUMNS = ("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "fy", "fz", "tx", "ty", "tz",
+               "delta", "area")
+
+
+class WallContactTable:
+    """Particles' contacts with a wall, one after the other (particle k's are rows starts[k] ..
+    starts[k + 1]): distance of the centre from the element, normal from the surface to the centre,
+    the element's key, the contact point, the wall's velocity there, and (written by the force loop)
+    the contact's force. Grows by a quarter when short and is kept between steps."""
+
+    def __init__(self):
+        self.rows = -1
+        self.starts = np.zeros(1, dtype=np.int64)
+        self.room(0, 0)
+
+    def room(self, particles, rows):
+        """Arrays for ``particles`` particles and ``rows`` contacts at most."""
+        if len(self.starts) < particles + 1:
+            self.starts = np.zeros(particles + particles // 4 + 2, dtype=np.int64)
+        if rows > self.rows:
+            size = rows + rows // 4 + 4
+            self.rows = size
+            self.distance, self.key = np.empty(size), np.empty(size, dtype=np.int64)
+            self.normal, self.touch, self.wall_velocity, self.contact_force = (np.empty((size, 3)) for _ in range(4))
+        return self
+
+    def arrays(self):
+        """(distance, normal, key, touch, wall_velocity)."""
+        return self.distance, self.normal, self.key, self.touch, self.wall_velocity
 
 
 class ContactLaw:
@@ -195,75 +219,3 @@ def forget_far(partner, chosen, near):
             i = chosen[k]
             for s in range(partner.shape[1]):
                 partner[i, s] = -1
-
-
-@njit(cache=True)
-def liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega, f,
-                           torque, radius, rmass, ptype, wall_type, models, table, charvel, nktv2p,
-                           dt, update, partner, values, used, slots, hist, force, tangential, roll,
-                           n, vtr, wr, contact_force, log, logged, transfer_cos):
-    """Force and torque on particle i from its wall contacts 0..count (module docstring), each
-    contact's force into ``contact_force``; with a ``log`` of rows (LOG_COLUMNS), one row per
-    touching contact after ``logged[0]`` (which counts them). Returns False when i has no free
-    history slot."""
-    r_i = radius[i]
-    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, LIGGGHTS_NORMAL_AT, update,
-                      used, slots, transfer_cos):
-        return False
-    width = values.shape[1] // partner.shape[1]
-    for c in range(count):
-        for d in range(3):
-            contact_force[c, d] = 0.0
-        if distance[c] >= r_i:
-            continue
-        overlap = r_i - distance[c]
-        arm = r_i - 0.5 * overlap
-        for d in range(3):
-            n[d] = normal[c, d]
-        vr0 = v[i, 0] - wall_velocity[c, 0]
-        vr1 = v[i, 1] - wall_velocity[c, 1]
-        vr2 = v[i, 2] - wall_velocity[c, 2]
-        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-        w0, w1, w2 = arm * omega[i, 0], arm * omega[i, 1], arm * omega[i, 2]
-        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-        for d in range(3):
-            wr[d] = omega[i, d]
-        s = slots[c]
-        for h in range(liggghts.HISTORY_WIDTH):
-            hist[h] = values[i, s * width + h] if s >= 0 else 0.0
-        liggghts.liggghts_contact(models, True, table, ptype[i], wall_type, distance[c], r_i, 0.0,
-                                  rmass[i], 0.0, rmass[i], n, v_n, vtr, wr, charvel, nktv2p, dt,
-                                  update, hist, force, tangential, roll)
-        if s >= 0:
-            for h in range(liggghts.HISTORY_WIDTH):
-                values[i, s * width + h] = hist[h]
-            if update:
-                for d in range(3):
-                    values[i, s * width + LIGGGHTS_NORMAL_AT + d] = n[d]
-        for d in range(3):
-            f[i, d] += force[d]
-            contact_force[c, d] = force[d]
-        # the torque of the tangential force; the rolling torque comes on top
-        tx = -arm * (n[1] * tangential[2] - n[2] * tangential[1])
-        ty = -arm * (n[2] * tangential[0] - n[0] * tangential[2])
-        tz = -arm * (n[0] * tangential[1] - n[1] * tangential[0])
-        torque[i, 0] += tx - roll[0]
-        torque[i, 1] += ty - roll[1]
-        torque[i, 2] += tz - roll[2]
-        row = logged[0]
-        if row < log.shape[0]:
-            log[row, 0] = i
-            log[row, 1] = key[c]
-            for d in range(3):
-                log[row, 2 + d] = touch[c, d]
-                log[row, 5 + d] = wall_velocity[c, d]
-                log[row, 8 + d] = force[d]
-            log[row, 11], log[row, 12], log[row, 13] = tx, ty, tz
-            log[row, 14] = overlap
-            log[row, 15] = math.pi * (r_i * r_i - distance[c] * distance[c])
-            for h in range(liggghts.HISTORY_WIDTH):
-                log[row, 16 + h] = hist[h]
-            logged[0] = row + 1
-    return True

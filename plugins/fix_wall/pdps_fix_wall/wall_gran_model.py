@@ -3,7 +3,8 @@ r"""Fix ``wall/gran model ...``: LIGGGHTS's granular walls, primitive (planes, c
 (LIGGGHTS's fix wall/gran; the LAMMPS spelling ``fix wall/gran hooke|hooke/history|hertz/history ...``
 is pdps_fix_wall.wall_gran).
 
-Contact law: ``pdps_granular_contact.liggghts`` with the wall as body j (``pdps doc pair gran``):
+Contact law: composed of LIGGGHTS's sub-models as pair gran's (``pdps doc pair gran``; the
+generated ``wall_forces`` of ``pdps_granular_contact.composition``), with the wall as body j:
 :math:`R^* = R_i`, :math:`m^* = m_i`, no spin of the wall; the material of the type pair (particle's
 type, the wall's ``type``) from ``fix property/global`` (youngsModulus, poissonsRatio,
 coefficientRestitution, coefficientFriction; coefficientRollingFriction,
@@ -14,8 +15,9 @@ d`, normal :math:`\mathbf{n}` from the wall to its centre, contact point p) with
 sliding velocity :math:`\mathbf{v}_{tr} = \mathbf{v}_t - (R_i - \delta/2)\,\boldsymbol\omega_i\times
 \mathbf{n}` and gets the force :math:`\mathbf{F}` of the law, the torque :math:`-(R_i -
 \delta/2)\,\mathbf{n}\times\mathbf{F}_t - \mathbf{M}_r` (rolling friction :math:`\mathbf{M}_r`).
-Each contact keeps its tangential spring and rolling torque per particle and wall element (as
-fix wall/mesh keeps them, handed on from one triangle to the next).
+Each contact keeps what its sub-models keep (tangential spring, rolling torque) and its last normal,
+per particle and wall element (as fix wall/mesh keeps them, handed on from one triangle to the
+next).
 
 Walls:
 
@@ -36,10 +38,9 @@ with angular velocity V (rad/time: LIGGGHTS multiplies the axis by V; the wall v
 the contact point, :math:`V\hat{\mathbf{a}}\times\boldsymbol\rho` with :math:`\boldsymbol\rho` from
 the axis to p, where LIGGGHTS takes it at the particle's centre). Only the friction feels it.
 
-Keywords, in any order (LIGGGHTS writes the model's first): ``model hertz|hooke`` and
-``tangential history|no_history`` (required), ``rolling_friction
-off|cdt|epsd|epsd2``, ``cohesion off|sjkr|sjkr2``, ``tangential_damping on|off``, ``limitForce
-on|off`` (as pair gran). ``store_force yes`` keeps each particle's wall force of the step (force
+Keywords, in any order (LIGGGHTS writes the model's first): ``model`` and ``tangential``
+(required), ``rolling_friction``, ``cohesion``, ``surface`` and the model settings, as pair gran
+takes them (``pdps doc pair gran``; any sub-model installed, ``pdps doc gran.PART NAME``). ``store_force yes`` keeps each particle's wall force of the step (force
 units, 3 values; all the wall's contacts summed) in the per-atom property ``force_ID``: dump custom
 reads it as ``f_ID[k]``, or as LIGGGHTS's ``f_force_ID[k]`` (from 0) in the LIGGGHTS dialect.
 
@@ -49,8 +50,8 @@ triangles, re-listed only after a particle or vertex has moved half the skin.
 
 Syntax::
 
-    fix ID GROUP wall/gran model hertz|hooke tangential history|no_history
-        [rolling_friction ...] [cohesion ...] [tangential_damping on|off] [limitForce on|off]
+    fix ID GROUP wall/gran model NORMAL tangential history|no_history
+        [rolling_friction ...] [cohesion ...] [SETTING on|off ...]
         primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2  [shear DIM V]
       | mesh n_meshes N meshes ID1 ... IDN
         [store_force yes|no]
@@ -73,12 +74,13 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, keyword
-from pdps_granular_contact import liggghts
+from pdps_core.api import ContactHistory, Fix, ScriptError, keyword
+from pdps_granular_contact.material import Material
+from pdps_granular_contact.contact_state import SIZE
+from pdps_granular_contact.gran.words import GranModelArgs
 
-from .mesh import (LIGGGHTS_LAWS, NO_PDPS_LAW, NO_TALLY, MeshContacts, mesh_fix, mesh_wall_forces,
-                   no_wear)
-from .wall_contact import LIGGGHTS_WIDTH, LOG_COLUMNS, TRANSFER_COS, forget_far, liggghts_wall_contacts
+from .mesh import MeshContacts, mesh_contact_table, mesh_fix, no_wear, tally_table
+from .wall_contact import LOG_COLUMNS, TRANSFER_COS, WallContactTable, forget_far
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
 PRIMITIVES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "xcylinder": XCYLINDER,
@@ -86,23 +88,21 @@ PRIMITIVES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "xcylinder":
 PrimitiveWords = (tuple[Literal["xplane", "yplane", "zplane"], float]
                   | tuple[Literal["xcylinder", "ycylinder", "zcylinder"], float, float, float])
 AXES = {"x": 0, "y": 1, "z": 2}
-WIDTH = LIGGGHTS_WIDTH
 
 
 @njit(cache=True)
-def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance, normal,
-                      wall_velocity):
-    """Particle i's contact with the primitive wall into row 0 of ``distance``, ``normal`` and
+def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, row, distance, normal, wall_velocity):
+    """Particle i's contact with the primitive wall into ``row`` of ``distance``, ``normal`` and
     ``wall_velocity``; returns False when its centre lies on the wall (no normal)."""
     for d in range(3):
-        wall_velocity[0, d] = shear[d]
-        normal[0, d] = 0.0
+        wall_velocity[row, d] = shear[d]
+        normal[row, d] = 0.0
     if wallstyle <= ZPLANE:
         gap = x[i, wallstyle] - position
         if gap == 0.0:
             return False
-        distance[0] = abs(gap)
-        normal[0, wallstyle] = 1.0 if gap > 0.0 else -1.0
+        distance[row] = abs(gap)
+        normal[row, wallstyle] = 1.0 if gap > 0.0 else -1.0
         return True
     axis = wallstyle - XCYLINDER
     a, b = (axis + 1) % 3, (axis + 2) % 3
@@ -113,53 +113,34 @@ def primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance
         return False
     radius = cylinder[0]
     outward = 1.0 if across > radius else -1.0
-    distance[0] = abs(across - radius)
-    normal[0, a] = outward * da / across
-    normal[0, b] = outward * db / across
+    distance[row] = abs(across - radius)
+    normal[row, a] = outward * da / across
+    normal[row, b] = outward * db / across
     if spin != 0.0:
         # turning about the axis: spin e_axis x rho, rho from the axis to the contact point
         ra, rb = radius * da / across, radius * db / across
-        wall_velocity[0, a] = -spin * rb
-        wall_velocity[0, b] = spin * ra
-        wall_velocity[0, axis] = 0.0
+        wall_velocity[row, a] = -spin * rb
+        wall_velocity[row, b] = spin * ra
+        wall_velocity[row, axis] = 0.0
     return True
 
 
-def primitive_scratch(slots):
-    """The rows liggghts_primitive_forces works in, for ``slots`` history slots a particle: made
-    outside the kernel, which then allocates nothing."""
-    return (np.empty(1), np.empty((1, 3)), np.empty((1, 3)), np.zeros(1, dtype=np.int64), np.empty((1, 3)),
-            np.empty((1, 3)), np.empty(slots, dtype=np.bool_), np.empty(1, dtype=np.int64),
-            np.empty(liggghts.HISTORY_WIDTH), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3),
-            np.empty(3))
-
-
-# _nrt=False: no reference counting of the arrays liggghts_wall_contacts takes (it stores under
-# branches, where numba keeps an atomic incref and decref of each around every call: numba issue
-# #2350): examples/liggghts, steps 8,000-10,000 (its zcylinder shell), 151 -> 45 us a step.
-# Nothing here allocates.
-@njit(cache=True, _nrt=False)
-def liggghts_primitive_forces(near, count_near, x, v, omega, f, torque, radius, rmass, ptype,
-                              wallstyle, position, cylinder, shear, spin, wall_type, models, table,
-                              charvel, nktv2p, dt, update, partner, values, log, logged, scratch):
-    """The primitive wall's forces on the particles ``near[:count_near]``, logged as
-    liggghts_wall_contacts does (``scratch``: primitive_scratch). Returns -1, or the index of a
-    particle whose contact history overflowed."""
-    (distance, touch, normal, key, wall_velocity, contact_force, used, slots, hist, force, tangential, roll, n, vtr,
-     wr) = scratch
+@njit(cache=True)
+def primitive_table(near, count_near, x, wallstyle, position, cylinder, shear, spin, starts, distance, normal, key,
+                    touch, wall_velocity):
+    """The primitive wall's contacts of the particles ``near[:count_near]`` (one each at most, key 0)
+    as a contact table: particle k's rows are starts[k] .. starts[k + 1]."""
+    base = 0
     for k in range(count_near):
         i = near[k]
-        count = 1 if primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, distance,
-                                       normal, wall_velocity) else 0
-        for d in range(3):
-            touch[0, d] = x[i, d] - distance[0] * normal[0, d]
-        if not liggghts_wall_contacts(i, count, distance, normal, key, touch, wall_velocity, v, omega,
-                                      f, torque, radius, rmass, ptype, wall_type, models, table,
-                                      charvel, nktv2p, dt, update, partner, values, used, slots,
-                                      hist, force, tangential, roll, n, vtr, wr, contact_force, log,
-                                      logged, TRANSFER_COS):
-            return i
-    return -1
+        starts[k] = base
+        if primitive_contact(x, i, wallstyle, position, cylinder, shear, spin, base, distance, normal,
+                             wall_velocity):
+            key[base] = 0
+            for d in range(3):
+                touch[base, d] = x[i, d] - distance[base] * normal[base, d]
+            base += 1
+    starts[count_near] = base
 
 
 @njit(cache=True)
@@ -180,18 +161,12 @@ def near_primitive(x, radius, chosen, wallstyle, position, cylinder, margin, fla
 class FixWallGranModel(Fix):
     name = "wall/gran"
     minimize_idle = True         # LAMMPS's fix wall/gran has no min_post_force (recorded: a minimization ignores it)
-    usage = ("fix ID GROUP wall/gran model hertz|hooke tangential history|no_history [rolling_friction "
-             "off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] "
-             "primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 [shear DIM V] | "
-             "mesh n_meshes N meshes ID1 ... IDN [store_force yes|no]")
+    usage = ("fix ID GROUP wall/gran model hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis tangential "
+             "history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2] "
+             "[SETTING on|off] primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2 "
+             "[shear DIM V] | mesh n_meshes N meshes ID1 ... IDN [store_force yes|no]")
 
-    class Args(StyleArgs):
-        model: Literal[tuple(liggghts.NORMAL_MODELS)] = keyword(...)
-        tangential: Literal[tuple(liggghts.TANGENTIAL_MODELS)] = keyword(...)
-        rolling_friction: Literal[tuple(liggghts.ROLLING_MODELS)] = keyword("off")
-        cohesion: Literal[tuple(liggghts.COHESION_MODELS)] = keyword("off")
-        tangential_damping: Literal["on", "off"] = keyword("on")
-        limitForce: Literal["on", "off"] = keyword("off")
+    class Args(GranModelArgs):
         primitive: tuple[Literal["type"], int, PrimitiveWords] | None = keyword(None, unit={
             "type N xplane|yplane|zplane C": ("1", "1", "1", "distance"),
             "type N xcylinder|ycylinder|zcylinder R C1 C2": ("1", "1", "1", "distance", "distance", "distance")})
@@ -228,10 +203,11 @@ class FixWallGranModel(Fix):
         if "sphere" not in sim.particle_styles:
             raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
-        self.models = np.array([liggghts.NORMAL_MODELS[args.model], liggghts.TANGENTIAL_MODELS[args.tangential],
-                                liggghts.ROLLING_MODELS[args.rolling_friction],
-                                liggghts.COHESION_MODELS[args.cohesion], int(args.tangential_damping == "on"),
-                                int(args.limitForce == "on"), sim.dimension], dtype=np.int64)
+        self.contact_model = args.contact_model()
+        # a wall contact keeps the law's history, then its last normal (wall_slots hands it on)
+        width = self.contact_model.history_width + 3
+        self._state, self._hist = np.zeros(SIZE), np.zeros(self.contact_model.history_width)
+        self._vectors = (np.zeros(3), np.zeros(3))
         self.meshes, self.primitive = [], None
         self.shear, self.spin = np.zeros(3), 0.0
         if args.primitive is not None:
@@ -242,13 +218,15 @@ class FixWallGranModel(Fix):
         if args.store_force:
             self.store = f"force_{self.id}"
             sim.particles.request(self.store, width=3)
-        self.table, self.charvel = None, 0.0
-        self.history = ContactHistory(sim, f"wall_{id}", width=WIDTH) if self.primitive is not None else None
-        self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=WIDTH)
+        self.contact_coeff = self.kernels = None
+        self.history = ContactHistory(sim, f"wall_{id}", width=width) if self.primitive is not None else None
+        self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=width)
                               for mesh in self.meshes]
+        self.table = WallContactTable()
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
-        self._primitive_rows, self._primitive_slots = None, 0      # primitive_scratch, for that many slots
+        self._used = np.zeros(0, dtype=np.bool_)
+        self._slots = np.zeros(0, dtype=np.int64)
         self._not_logged = np.zeros(1, dtype=np.int64)
 
     def _primitive(self, sim, words, shear):
@@ -270,9 +248,9 @@ class FixWallGranModel(Fix):
 
     # ---- hooks ----
     def setup(self, sim):
-        ntypes = sim.ntypes
-        self.models[6] = sim.dimension
-        self.table, self.charvel = liggghts.material_table(sim, self.models, ntypes, f"fix {self.id} (wall/gran)")
+        self.material = Material(sim, sim.ntypes, f"fix {self.id} (wall/gran)")
+        self.contact_coeff = self.contact_model.bind(self.material)
+        self.kernels = self.contact_model.kernels()
         for contacts in self.mesh_contacts:
             contacts.setup()
         if self.primitive is not None:
@@ -299,59 +277,59 @@ class FixWallGranModel(Fix):
     def contact_log(self, sim):
         """Every contact of the current step, recomputed without touching forces or histories:
         [(wall number, rows)] with one row per contact, LOG_COLUMNS (particle row, element, ...)."""
-        if self.table is None:
+        if self.kernels is None:
             raise ScriptError(f"fix {self.id} (wall/gran) has not computed contacts yet (run 0 first)")
         p = sim.particles
         scratch = {"f": np.zeros_like(p.f), "torque": np.zeros_like(p.torque)}
         return self._forces(sim, update=False, log=True, scratch=scratch)
 
-    def _scratch(self, history):
-        """primitive_scratch for the history's slots, made again if their number changed."""
-        slots = history.partner.shape[1]
-        if self._primitive_rows is None or self._primitive_slots != slots:
-            self._primitive_rows, self._primitive_slots = primitive_scratch(slots), slots
-        return self._primitive_rows
-
     def _forces(self, sim, update, log=False, scratch=None):
         p = sim.particles
         f, torque = (scratch["f"], scratch["torque"]) if scratch else (p.f, p.torque)
-        common = (p.x, p.v, p.omega, f, torque, p.radius, p.rmass, p.type)
-        law = (self.models, self.table, self.charvel, sim.units.nktv2p, sim.dt, update)
+        table = self.table
         logs = []
         if self.primitive is not None:
-            history = self.history
-            values = history.values.copy() if log else history.values
-            rows, logged = self._log_buffer(self._count if (log or self.store) else 0)
-            bad = liggghts_primitive_forces(self._near, self._count, *common, self.wallstyle, self.position,
-                                            self.cylinder, self.shear, self.spin, self.wall_type, *law,
-                                            history.partner, values, rows, logged, self._scratch(history))
-            if bad >= 0:
-                history.overflowed(p.tag[bad])
-            logs = [(0, rows[:logged[0]])]
-            if self.store and not log:
-                self._store_forces(sim, logs)
-            return logs
+            table.room(self._count, self._count)
+            primitive_table(self._near, self._count, p.x, self.wallstyle, self.position, self.cylinder, self.shear,
+                            self.spin, table.starts, *table.arrays())
+            logs.append((0, self._wall_forces(sim, self._near, self._count, self.history, self.wall_type, f, torque,
+                                              update, log)))
         for number, (mesh, contacts) in enumerate(zip(self.meshes, self.mesh_contacts)):
             near, offsets, triangles = contacts.candidates_now(sim)
+            table.room(len(near), int(offsets[-1]))
+            mesh_contact_table(near, offsets, triangles, p.x, mesh.vertices, mesh.triangles, mesh.face_normal,
+                               p.radius, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
+                               contacts.scratch(), table.starts, table.arrays())
+            logs.append((number, self._wall_forces(sim, near, len(near), contacts.history, mesh.material_type, f,
+                                                   torque, update, log)))
             tally = None if log else mesh.tally()
-            if tally is not None and not update:
-                tally = no_wear(tally)
-            history = contacts.history
-            values = history.values.copy() if log else history.values
-            rows, logged = self._log_buffer(offsets[-1] if (log or self.store) else 0)
-            bad = mesh_wall_forces(near, offsets, triangles, p.x, p.type, mesh.vertices, mesh.triangles,
-                                   mesh.face_normal, p.radius, p.rmass, p.v, p.omega, f, torque, True,
-                                   history.partner, values, LIGGGHTS_LAWS, *NO_PDPS_LAW, self.models, self.table,
-                                   self.charvel, sim.units.nktv2p, mesh.material_type, sim.dt, update,
-                                   mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
-                                   tally is not None, *(NO_TALLY if tally is None else tally), mesh.transfer_cos,
-                                   rows, logged, contacts.scratch())
-            if bad >= 0:
-                history.overflowed(p.tag[bad])
-            logs.append((number, rows[:logged[0]]))
+            if tally is not None:
+                if not update:
+                    tally = no_wear(tally)
+                tally_table(near, table.starts, table.key, table.touch, table.contact_force, p.x, p.v,
+                            table.wall_velocity, mesh.face_normal, p.type, sim.dt, *tally)
         if self.store and not log:
             self._store_forces(sim, logs)
         return logs
+
+    def _wall_forces(self, sim, rows, nrows, history, wall_type, f, torque, update, log):
+        """The composed law on the contact table's rows; the contacts' log (rows of LOG_COLUMNS and
+        the history) when asked for it or for store_force."""
+        p = sim.particles
+        table = self.table
+        values = history.values.copy() if log else history.values
+        slots = history.partner.shape[1]
+        most = int(np.diff(table.starts[:nrows + 1]).max()) if nrows else 0
+        if len(self._used) < slots or len(self._slots) < most:
+            self._used, self._slots = np.zeros(slots, dtype=np.bool_), np.zeros(most + most // 4 + 4, dtype=np.int64)
+        buffer, logged = self._log_buffer(int(table.starts[nrows]) if (log or self.store) else 0)
+        bad = self.kernels.wall_forces(
+            rows, table.starts, nrows, *table.arrays(), p.v, p.omega, f, torque, p.radius, p.rmass, p.type,
+            wall_type, self.contact_coeff, sim.dt, update, sim.dimension, history.partner, values, self._used,
+            self._slots, self._state, self._hist, *self._vectors, table.contact_force, buffer, logged, TRANSFER_COS)
+        if bad >= 0:
+            history.overflowed(p.tag[bad])
+        return buffer[:logged[0]]
 
     def _store_forces(self, sim, logs):
         """store_force yes: each particle's wall force this step, from the contacts' log."""
@@ -370,9 +348,8 @@ class FixWallGranModel(Fix):
         return p.arrays[self.store][: p.nlocal]
 
     def _log_buffer(self, most):
+        columns = len(LOG_COLUMNS) + self.contact_model.history_width
         if most == 0:
-            return NO_LOG, self._not_logged
-        return np.zeros((most, len(LOG_COLUMNS))), np.zeros(1, dtype=np.int64)
-
-
-NO_LOG = np.zeros((0, len(LOG_COLUMNS)))
+            self._not_logged[0] = 0
+            return np.zeros((0, columns)), self._not_logged
+        return np.zeros((most, columns)), np.zeros(1, dtype=np.int64)

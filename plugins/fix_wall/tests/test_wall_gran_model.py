@@ -139,7 +139,7 @@ def test_a_turning_cylinder_carries_a_sphere_at_its_surface_speed():
 
 @pytest.mark.parametrize("words, message", [
     ("model hertz primitive type 2 zplane 0", "missing keyword tangential"),
-    ("model jkr tangential history primitive type 2 zplane 0", "model must be one of 'hertz' or 'hooke' (got jkr)"),
+    ("model jkr tangential history primitive type 2 zplane 0", "model must be one of 'hertz', 'hertz/stiffness', 'hooke', 'hooke/hysteresis' or 'hooke/stiffness' (got jkr)"),
     ("model hertz tangential history", "expected primitive or mesh (got neither); usage: "),
     ("model hertz tangential history primitive type 3 zplane 0",
      "type must be from 1 to 2, the number of types (got 3)"),
@@ -175,8 +175,9 @@ def test_the_keywords_stand_in_any_order():
     sim.command("fix b all wall/gran primitive type 2 zplane 0.5 limitForce on store_force yes tangential no_history "
                 "model hooke")
     a, b = sim.fixes["a"], sim.fixes["b"]
-    np.testing.assert_array_equal(a.models, b.models)
-    assert a.models[0] == 1 and a.models[1] == 1 and a.models[5] == 1      # hooke, no_history, limitForce on
+    assert a.args == b.args
+    assert (a.args.model, a.args.tangential, a.args.limitForce) == ("hooke", "no_history", "on")
+    assert [m.name for m in a.contact_model.sub_models] == ["default", "hooke", "no_history"]
     assert (a.wall_type, a.wallstyle, a.position) == (b.wall_type, b.wallstyle, b.position) == (2, 2, 0.5)
     assert a.store == "force_a" and b.store == "force_b"
 

@@ -44,7 +44,6 @@ import numpy as np
 from pdps_core.api import ScriptError, SubModel, generated_module, registry
 
 from . import contact_loop, contact_state
-from .contact_models import restitution_beta, shear_effective, youngs_effective
 
 PARTS = ("surface", "normal", "damping", "cohesion", "tangential", "rolling", "twisting", "heat")
 
@@ -56,18 +55,32 @@ class ContactSubModel(SubModel):
     (``pdps doc gran.cohesion NAME``): the formula, each coefficient with its unit, the paper."""
     history_width: ClassVar[int] = 0
     compute: ClassVar = None
+    # the host's model settings this sub-model reads, with their defaults (LIGGGHTS's registerSettings):
+    # {"tangential_damping": "on", "limitForce": "off"}
+    settings_read: ClassVar[dict] = {}
     # material properties of its own (LIGGGHTS's are known): name -> (form, how fix property/global
     # spells it, a check of one value, the check in words), e.g. {"hamakerConstant": ("per_type_pair",
     # "peratomtypepair", lambda a: a > 0, "> 0")}
     properties: ClassVar[dict] = {}
 
     def __init__(self, settings):
-        """``settings``: the host style's model settings by word (``{"tangential_damping": "on"}``)."""
-        self.settings = settings
+        """``settings``: the host style's model settings given in the script, by word
+        (``{"tangential_damping": "off"}``); those it reads (``settings_read``) are kept, with the
+        defaults of those not given."""
+        self.settings = {name: settings.get(name, default) for name, default in self.settings_read.items()}
+
+    def on(self, setting):
+        """An on/off setting this sub-model reads, as 1.0 or 0.0 (a coefficient column)."""
+        return 1.0 if self.settings[setting] == "on" else 0.0
 
     @property
     def part(self):
         return self.kind.partition(".")[2]
+
+    def contact_time(self, material, t, m_eff, r_eff, speed):
+        """A normal model's duration of a contact of two bodies of type t (effective mass and radius)
+        meeting at ``speed``, for the time-step advice; None where it gives none."""
+        return None
 
     def coefficients(self, material):
         """This model's coefficients of every type pair: an array (ntypes + 1, ntypes + 1, n), row
@@ -75,69 +88,13 @@ class ContactSubModel(SubModel):
         return material.columns()
 
 
-class Material:
-    """LIGGGHTS's material of types 1..ntypes, from its ``fix property/global`` commands, read when a
-    sub-model asks (``liggghts.read_property`` checks each property's form and range); ``who`` names
-    the style in errors. A wall reads it with ntypes covering its own type."""
-
-    def __init__(self, sim, ntypes, who):
-        self.sim, self.ntypes, self.who = sim, ntypes, who
-        self._read = {}
-        self.declared = {}      # properties sub-models declare (ContactSubModel.properties)
-
-    def property(self, name):
-        """The property's values: a float (scalar), per type (ntypes + 1, index 0 unused) or per
-        type pair ((ntypes + 1, ntypes + 1))."""
-        if name not in self._read:
-            from .liggghts import read_property
-            self._read[name] = read_property(self.sim, name, self.ntypes, self.who, self.declared.get(name))
-        return self._read[name]
-
-    def columns(self, *tables):
-        """Per-type-pair tables (or scalars, the same for every pair) stacked as coefficient columns."""
-        n = self.ntypes + 1
-        out = np.zeros((n, n, len(tables)))
-        for k, table in enumerate(tables):
-            out[:, :, k] = table
-        return out
-
-    def pairs(self, function, *names):
-        """A per-type-pair table of ``function(values of names for type i ..., for type j ...)``
-        over per-type properties (effective moduli)."""
-        values = [self.property(name) for name in names]
-        table = np.zeros((self.ntypes + 1, self.ntypes + 1))
-        for i in range(1, self.ntypes + 1):
-            for j in range(1, self.ntypes + 1):
-                table[i, j] = function(*[v[i] for v in values], *[v[j] for v in values])
-        return table
-
-    def youngs_effective(self):
-        """Y* of every type pair: 1/Y* = (1 - nu_i^2)/Y_i + (1 - nu_j^2)/Y_j."""
-        return self.pairs(lambda yi, ni, yj, nj: youngs_effective(yi, ni, yj, nj), "youngsModulus", "poissonsRatio")
-
-    def shear_effective(self):
-        """G* of every type pair: 1/G* = 2(2 - nu_i)(1 + nu_i)/Y_i + 2(2 - nu_j)(1 + nu_j)/Y_j."""
-        return self.pairs(lambda yi, ni, yj, nj: shear_effective(yi, ni, yj, nj), "youngsModulus", "poissonsRatio")
-
-    def restitution_beta(self):
-        """beta = ln e / sqrt(ln^2 e + pi^2) of every type pair."""
-        e = self.property("coefficientRestitution")
-        beta = np.zeros_like(e)
-        beta[1:, 1:] = np.vectorize(restitution_beta)(e[1:, 1:])
-        return beta
-
-    def log_restitution(self):
-        e = self.property("coefficientRestitution")
-        out = np.zeros_like(e)
-        out[1:, 1:] = np.log(e[1:, 1:])
-        return out
-
-
 class ContactModel:
     """The sub-models of one contact law, their history layout and their coefficient columns.
 
     ``chosen``: part -> script word (parts not named are not called; ``surface`` defaults to
-    ``default``); ``settings``: the host style's model settings, handed to every sub-model."""
+    ``default``); ``settings``: the model settings the script gives (word -> value), each read by
+    the sub-models that declare it (``settings_read``); one no chosen sub-model reads is refused, as
+    LIGGGHTS refuses a setting no model of the line registers."""
 
     def __init__(self, family, chosen, settings=None):
         self.family = family
@@ -152,7 +109,13 @@ class ContactModel:
                 if not (isinstance(cls, type) and issubclass(cls, ContactSubModel) and cls.compute is not None):
                     raise ScriptError(f"{family}.{part} {chosen[part]} is not a contact sub-model with a compute "
                                       "function")
-                self.sub_models.append(cls(settings or {}))
+                self.sub_models.append(cls({name: value for name, value in (settings or {}).items()
+                                            if value is not None}))
+        given = {name: value for name, value in (settings or {}).items() if value is not None}
+        unread = [name for name in given if not any(name in m.settings_read for m in self.sub_models)]
+        if unread:
+            named = " ".join(f"{m.part} {m.name}" for m in self.sub_models if m.part != "surface")
+            raise ScriptError(f"{unread[0]} is not a setting of the chosen models ({named})")
         self.history_offsets, offset = [], 0
         for model in self.sub_models:
             self.history_offsets.append(offset)

@@ -265,54 +265,59 @@ def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offse
 WALL_FORCES = '''
 
 @njit(cache=True, _nrt=False)
-def wall_forces(i, count, distance, normal, key, touch, wall_velocity, v, omega, f, torque, radius, rmass, ptype,
-                wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist, force, tangential,
-                contact_force, log, logged, transfer_cos):
-    """Force and torque on particle i from its wall contacts 0..count (distance of i's centre from
-    the element ``key[k]``, normal from the surface to the centre, contact point ``touch[k]``, the
-    wall's velocity there), each contact's force into ``contact_force``; with a ``log`` of rows
-    (row, element, contact point, wall velocity, force, tangential torque, overlap, area, history),
-    one row per touching contact after ``logged[0]`` (which counts them). Returns False when i has
-    no free history slot."""
+def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity, v, omega, f, torque, radius, rmass,
+                ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist, force,
+                tangential, contact_force, log, logged, transfer_cos):
+    """Force and torque on each particle rows[k] (k < nrows) from its wall contacts starts[k] ..
+    starts[k + 1] (distance of its centre from the element ``key``, normal from the surface to the
+    centre, contact point ``touch``, the wall's velocity there), each contact's force into
+    ``contact_force``; with a ``log`` of rows (particle row, element, contact point, wall velocity,
+    force, torque of the tangential force, overlap, area, history), one row per touching contact
+    after ``logged[0]`` (which counts them). Returns -1, or the row of a particle with no free history
+    slot."""
     set_run(c, dt, update, dimension)
     width = len(hist)
     stride = values.shape[1] // partner.shape[1]
-    r_i = radius[i]
-    if not wall_slots(i, 0, count, distance, normal, key, r_i, partner, values, width, update, used, slots,
-                      transfer_cos):
-        return False
-    for k in range(count):
-        for d in range(3):
-            contact_force[k, d] = 0.0
-        if distance[k] >= r_i:
-            continue
-        s = slots[k]
-        for h in range(width):
-            hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
-        fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k)
-        contact(c, coeff, ptype[i], wall_type, hist)
-        if s >= 0:
-            for h in range(width):
-                values[i, s * stride + h] = hist[h]
-            if update:
-                for d in range(3):
-                    values[i, s * stride + width + d] = normal[k, d]
-        apply_wall(c, f, torque, i, force, tangential)
-        for d in range(3):
-            contact_force[k, d] = force[d]
-        row = logged[0]
-        if row < log.shape[0]:
-            log[row, 0] = i
-            log[row, 1] = key[k]
+    for q in range(nrows):
+        i = rows[q]
+        start = starts[q]
+        end = starts[q + 1]
+        r_i = radius[i]
+        if not wall_slots(i, start, end, distance, normal, key, r_i, partner, values, width, update, used, slots,
+                          transfer_cos):
+            return i
+        for k in range(start, end):
             for d in range(3):
-                log[row, 2 + d] = touch[k, d]
-                log[row, 5 + d] = wall_velocity[k, d]
-                log[row, 8 + d] = force[d]
-                log[row, 11 + d] = tangential[d]
-            log[row, 14] = c[DELTA]
-            log[row, 15] = math.pi * (r_i * r_i - distance[k] * distance[k])
-            for h in range(min(width, log.shape[1] - 16)):
-                log[row, 16 + h] = hist[h]
-            logged[0] = row + 1
-    return True
+                contact_force[k, d] = 0.0
+            if distance[k] >= r_i:
+                continue
+            s = slots[k - start]
+            for h in range(width):
+                hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
+            fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k)
+            contact(c, coeff, ptype[i], wall_type, hist)
+            if s >= 0:
+                for h in range(width):
+                    values[i, s * stride + h] = hist[h]
+                if update:
+                    for d in range(3):
+                        values[i, s * stride + width + d] = normal[k, d]
+            apply_wall(c, f, torque, i, force, tangential)
+            for d in range(3):
+                contact_force[k, d] = force[d]
+            row = logged[0]
+            if row < log.shape[0]:
+                log[row, 0] = i
+                log[row, 1] = key[k]
+                for d in range(3):
+                    log[row, 2 + d] = touch[k, d]
+                    log[row, 5 + d] = wall_velocity[k, d]
+                    log[row, 8 + d] = force[d]
+                    log[row, 11 + d] = tangential[d]
+                log[row, 14] = c[DELTA]
+                log[row, 15] = math.pi * (r_i * r_i - distance[k] * distance[k])
+                for h in range(min(width, log.shape[1] - 16)):
+                    log[row, 16 + h] = hist[h]
+                logged[0] = row + 1
+    return -1
 '''

@@ -149,6 +149,13 @@ def lsd_contact_time(kn, cn, m_star):
     return math.pi / math.sqrt(kn / m_star - (cn / (2.0 * m_star)) ** 2)
 
 
+def spring_dashpot_time(kn, gamma_n, m_star):
+    """Duration of a linear spring-dashpot contact F = kn delta - gamma_n v_n: pi / sqrt(kn/m* -
+    (gamma_n / 2m*)^2); an overdamped one counts with its undamped pi sqrt(m*/kn)."""
+    rate = kn / m_star - (gamma_n / (2.0 * m_star)) ** 2
+    return math.pi / math.sqrt(rate) if rate > 0.0 else math.pi * math.sqrt(m_star / kn)
+
+
 def hertz_contact_time(e_star, r_star, m_star, v_impact):
     """Duration of an elastic Hertz contact at impact speed v: 2.868 (m*^2 / (R* E*^2 v))^(1/5)."""
     return 2.868 * (m_star ** 2 / (r_star * e_star ** 2 * v_impact)) ** 0.2
@@ -157,3 +164,11 @@ def hertz_contact_time(e_star, r_star, m_star, v_impact):
 def rayleigh_time(radius, density, shear_modulus, poisson):
     """Rayleigh time pi R sqrt(rho/G) / (0.1631 nu + 0.8766), as LIGGGHTS's check/timestep/gran."""
     return math.pi * radius * math.sqrt(density / shear_modulus) / (0.1631 * poisson + 0.8766)
+
+
+def intersection_area(r, ri, rj):
+    """pi a^2 of the circle where spheres at distances r intersect (arrays); the smaller one's
+    cross-section once its centre is inside the other, as the cohesion laws (contact_area) and
+    LIGGGHTS 3.8's heat transfer take it."""
+    circle = -0.25 * math.pi * (r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj) / r ** 2
+    return np.where(r < np.maximum(ri, rj), math.pi * np.minimum(ri, rj) ** 2, circle)

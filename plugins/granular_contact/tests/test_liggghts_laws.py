@@ -1,66 +1,112 @@
-"""LIGGGHTS's contact models (pdps_granular_contact.liggghts) against closed-form results: a sphere
-rolling on a plane stops where each rolling-friction model's deceleration puts it, and the cohesion
-models' forces and pull-off forces. Integrated here with a small velocity-Verlet loop over the law of
-one contact, the plane being the law's wall (as fix wall/gran model calls it)."""
+"""LIGGGHTS's contact sub-models (pdps_granular_contact.gran, composed by
+pdps_granular_contact.composition) against closed-form results: a sphere rolling on a plane stops
+where each rolling-friction model's deceleration puts it, and the cohesion models' forces and
+pull-off forces. Integrated here with a small velocity-Verlet loop over the composed law of one
+contact, the plane being the law's wall (as fix wall/gran model calls it)."""
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from pdps_granular_contact import liggghts as lg
+
+from pdps_granular_contact import contact_state as cs
+from pdps_granular_contact.composition import ContactModel
+from pdps_granular_contact.material import Material
+from pdps_granular_contact.contact_models import shear_effective, youngs_effective
+from pdps_granular_contact.gran.cohesion_sjkr import sjkr_area
 
 R, RHO, G = 0.005, 2500.0, 9.81
 MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
 INERTIA = 0.4 * MASS * R ** 2
 YOUNGS, POISSON = 5.0e6, 0.45
+Y_STAR = youngs_effective(YOUNGS, POISSON, YOUNGS, POISSON)
+G_STAR = shear_effective(YOUNGS, POISSON, YOUNGS, POISSON)
 
 
-def table(mu_roll=0.0, eta_roll=0.0, cohesion=0.0, e=0.5, mu=0.5):
-    """A material table for one type touching itself (a wall of the particle's own material)."""
-    t = np.zeros((len(lg.MATERIAL), 2, 2))
-    t[lg.Y_STAR, 1, 1] = lg.youngs_effective(YOUNGS, POISSON, YOUNGS, POISSON)
-    t[lg.G_STAR, 1, 1] = lg.shear_effective(YOUNGS, POISSON, YOUNGS, POISSON)
-    t[lg.BETA, 1, 1] = lg.restitution_beta(e)
-    t[lg.LOG_E, 1, 1] = math.log(e)
-    t[lg.MU, 1, 1], t[lg.MU_ROLL, 1, 1], t[lg.ETA_ROLL, 1, 1] = mu, mu_roll, eta_roll
-    t[lg.COHESION, 1, 1] = cohesion
-    return t
+class Preset(Material):
+    """One particle type's material given as numbers, not read from a script."""
+
+    def __init__(self, values):
+        self.sim, self.ntypes, self.who = SimpleNamespace(units=SimpleNamespace(nktv2p=1.0)), 1, "test"
+        self._read, self.declared = dict(values), {}
 
 
-def models(rolling="off", cohesion="off", normal="hertz"):
-    return np.array([lg.NORMAL_MODELS[normal], lg.HISTORY, lg.ROLLING_MODELS[rolling],
-                     lg.COHESION_MODELS[cohesion], 1, 0, 3], dtype=np.int64)
+def per_pair(value):
+    table = np.zeros((2, 2))
+    table[1, 1] = value
+    return table
 
 
-def resting_overlap(mat):
+class Law:
+    """The composed law of LIGGGHTS's words on one contact (type 1 with type 1)."""
+
+    def __init__(self, rolling="off", cohesion="off", normal="hertz", mu_roll=0.0, eta_roll=0.0, k=0.0, e=0.5,
+                 mu=0.5):
+        chosen = {"normal": normal, "tangential": "history"}
+        chosen.update({part: word for part, word in (("rolling", rolling), ("cohesion", cohesion)) if word != "off"})
+        self.model = ContactModel("gran", chosen, {"tangential_damping": "on", "limitForce": "off"})
+        material = Preset({"youngsModulus": np.array([0.0, YOUNGS]), "poissonsRatio": np.array([0.0, POISSON]),
+                           "coefficientRestitution": per_pair(e), "coefficientFriction": per_pair(mu),
+                           "coefficientRollingFriction": per_pair(mu_roll),
+                           "coefficientRollingViscousDamping": per_pair(eta_roll),
+                           "cohesionEnergyDensity": per_pair(k), "characteristicVelocity": 1.0})
+        self.coeff = self.model.bind(material)
+        self.contact = self.model.kernels().contact
+        self.c = np.zeros(cs.SIZE)
+        self.hist = np.zeros(self.model.history_width)
+
+    def at(self, what):
+        return self.hist[self.model.history_at(what):]
+
+    def __call__(self, r, radius_i, radius_j, n, v, w_i, w_j=(0.0, 0.0, 0.0), dt=1e-6, update=True):
+        """The contact's quantities after the sub-models (contact_state slots); radius_j 0: a wall."""
+        c, wall = self.c, radius_j == 0.0
+        c[cs.R], c[cs.RADIUS_I], c[cs.RADIUS_J] = r, radius_i, radius_j
+        c[cs.DELTA] = radius_i + radius_j - r
+        c[cs.R_EFF] = radius_i if wall else radius_i * radius_j / (radius_i + radius_j)
+        c[cs.MASS_I], c[cs.MASS_J] = MASS, 0.0 if wall else MASS
+        c[cs.M_EFF] = MASS if wall else MASS / 2
+        c[cs.WALL] = 1.0 if wall else 0.0
+        c[cs.NX:cs.NZ + 1], c[cs.VX:cs.VZ + 1] = n, v
+        c[cs.WIX:cs.WIZ + 1], c[cs.WJX:cs.WJZ + 1] = w_i, w_j
+        c[cs.DT], c[cs.UPDATE], c[cs.DIMENSION] = dt, 1.0 if update else 0.0, 3.0
+        self.contact(c, self.coeff, 1, 1, self.hist)
+        return c
+
+    def force(self):
+        c = self.c
+        return c[cs.FN] * c[cs.NX:cs.NZ + 1] + c[cs.FTX:cs.FTZ + 1]
+
+    def tangential(self):
+        return self.c[cs.FTX:cs.FTZ + 1].copy()
+
+    def roll(self):
+        return self.c[cs.MRX:cs.MRZ + 1].copy()
+
+
+def resting_overlap():
     """Hertz overlap under the weight: m g = 4/3 Y* sqrt(R) delta^3/2."""
-    return (MASS * G / (4.0 / 3.0 * mat[lg.Y_STAR, 1, 1] * math.sqrt(R))) ** (2.0 / 3.0)
+    return (MASS * G / (4.0 / 3.0 * Y_STAR * math.sqrt(R))) ** (2.0 / 3.0)
 
 
 def roll(rolling, mu_roll, v0, dt=1e-5, eta_roll=0.01):
     """A sphere rolling without slipping along +x on the plane z = 0 under gravity, started at its
     resting overlap; returns (distance rolled when its velocity first reverses or vanishes, overlap)."""
-    mat = table(mu_roll, eta_roll)
-    mods = models(rolling)
-    delta = resting_overlap(mat)
+    law = Law(rolling, mu_roll=mu_roll, eta_roll=eta_roll)
+    delta = resting_overlap()
     x = np.array([0.0, 0.0, R - delta])
     arm = R - 0.5 * delta
     v = np.array([v0, 0.0, 0.0])
     w = np.array([0.0, v0 / arm, 0.0])
     n = np.array([0.0, 0.0, 1.0])
-    hist = np.zeros(lg.HISTORY_WIDTH)
-    force, tangential, torque_roll = np.zeros(3), np.zeros(3), np.zeros(3)
-    vtr = np.zeros(3)
 
     def forces():
         r = x[2]
         a = R - 0.5 * (R - r)
-        vn = v @ n
-        vtr[:] = v - vn * n - a * np.cross(w, n)
-        lg.liggghts_contact(mods, True, mat, 1, 1, r, R, 0.0, MASS, 0.0, MASS, n, vn, vtr, w, 0.0, 1.0, dt,
-                            True, hist, force, tangential, torque_roll)
-        f = force + np.array([0.0, 0.0, -MASS * G])
-        t = -a * np.cross(n, tangential) - torque_roll
+        law(r, R, 0.0, n, v, w, dt=dt)
+        f = law.force() + np.array([0.0, 0.0, -MASS * G])
+        t = -a * np.cross(n, law.tangential()) - law.roll()
         return f, t
 
     f, t = forces()
@@ -84,8 +130,8 @@ def stop_distance(torque, v0, delta):
 
 
 @pytest.mark.parametrize("rolling, torque_of", [
-    # cdt: mu_r k_n delta (R - delta/2) against a wall, k_n delta = m g at rest
-    ("cdt", lambda mu_r, delta: mu_r * MASS * G * (R - 0.5 * delta)),
+    # cdt: mu_r k_n delta R against a wall (R* = R), k_n delta = m g at rest
+    ("cdt", lambda mu_r, delta: mu_r * MASS * G * R),
     # epsd, epsd2: the spring torque capped at mu_r |F_n| R
     ("epsd", lambda mu_r, delta: mu_r * MASS * G * R),
     ("epsd2", lambda mu_r, delta: mu_r * MASS * G * R),
@@ -110,36 +156,29 @@ def test_without_rolling_friction_the_sphere_rolls_on():
 
 def roll_for(rolling, steps, dt=1e-5):
     """Distance rolled in ``steps`` steps at 0.1 m/s (no stop expected)."""
-    mat, mods = table(0.0), models(rolling)
-    delta = resting_overlap(mat)
+    law = Law(rolling)
+    delta = resting_overlap()
     x, v = np.array([0.0, 0.0, R - delta]), np.array([0.1, 0.0, 0.0])
     arm = R - 0.5 * delta
     w, n = np.array([0.0, 0.1 / arm, 0.0]), np.array([0.0, 0.0, 1.0])
-    hist, force, tangential, torque_roll = np.zeros(lg.HISTORY_WIDTH), np.zeros(3), np.zeros(3), np.zeros(3)
     for _ in range(steps):
-        vn = v @ n
-        vtr = v - vn * n - (R - 0.5 * (R - x[2])) * np.cross(w, n)
-        lg.liggghts_contact(mods, True, mat, 1, 1, x[2], R, 0.0, MASS, 0.0, MASS, n, vn, vtr, w, 0.0, 1.0, dt,
-                            True, hist, force, tangential, torque_roll)
-        v += dt * (force + [0.0, 0.0, -MASS * G]) / MASS
-        w += dt * (-(R - 0.5 * (R - x[2])) * np.cross(n, tangential) - torque_roll) / INERTIA
+        law(x[2], R, 0.0, n, v, w, dt=dt)
+        v += dt * (law.force() + [0.0, 0.0, -MASS * G]) / MASS
+        w += dt * (-(R - 0.5 * (R - x[2])) * np.cross(n, law.tangential()) - law.roll()) / INERTIA
         x += dt * v
     return x[0], delta
 
 
 def pair_force(cohesion, r, k, radius_i=R, radius_j=R):
     """Normal force of two spheres at rest, centres r apart (positive: repulsive)."""
-    mat = table(cohesion=k)
-    n, zero = np.array([1.0, 0.0, 0.0]), np.zeros(3)
-    out = [np.zeros(3) for _ in range(3)]
-    return lg.liggghts_contact(models(cohesion=cohesion), False, mat, 1, 1, r, radius_i, radius_j, MASS, MASS,
-                               MASS / 2, n, 0.0, zero, zero, 0.0, 1.0, 1e-6, False, np.zeros(lg.HISTORY_WIDTH),
-                               *out)
+    law = Law(cohesion=cohesion, k=k)
+    zero = np.zeros(3)
+    return law(r, radius_i, radius_j, np.array([1.0, 0.0, 0.0]), zero, zero, update=False)[cs.FN]
 
 
 def hertz(delta, radius_i=R, radius_j=R):
     r_star = radius_i * radius_j / (radius_i + radius_j)
-    return 4.0 / 3.0 * lg.youngs_effective(YOUNGS, POISSON, YOUNGS, POISSON) * math.sqrt(r_star * delta) * delta
+    return 4.0 / 3.0 * Y_STAR * math.sqrt(r_star * delta) * delta
 
 
 @pytest.mark.parametrize("cohesion, area", [
@@ -163,7 +202,7 @@ def test_pull_off_force_of_two_spheres(cohesion):
     delta^2/4), the maximum at sqrt(delta) = (sqrt(9/4 c^2 + 2 pi^2 k^2 R) - 3/2 c) / (pi k); with
     sjkr2 A = 2 pi R delta, at sqrt(delta) = 4 pi k R / (3 c)."""
     k = 5.0e4
-    c = 4.0 / 3.0 * lg.youngs_effective(YOUNGS, POISSON, YOUNGS, POISSON) * math.sqrt(R / 2)
+    c = 4.0 / 3.0 * Y_STAR * math.sqrt(R / 2)
     if cohesion == "sjkr":
         root = (math.sqrt(2.25 * c * c + 2 * math.pi ** 2 * k * k * R) - 1.5 * c) / (math.pi * k)
         pull_off = k * math.pi * (R * root ** 2 - root ** 4 / 4) - c * root ** 3
@@ -184,30 +223,26 @@ def test_rolling_spring_grows_then_caps_and_epsd_damps_below_the_cap(rolling):
     epsd adds eta_r 2 sqrt(I_r k_r) omega_r (not stored), I_r = 1.4 (m R^2)/2; the cap is
     mu_r |F_n| R*."""
     mu_r, eta, dt, delta = 0.3, 0.4, 1e-6, 2e-5
-    mat = table(mu_roll=mu_r, eta_roll=eta)
-    mods = models(rolling)
+    law = Law(rolling, mu_roll=mu_r, eta_roll=eta)
     n, zero = np.array([1.0, 0.0, 0.0]), np.zeros(3)
     spin = np.array([0.0, 0.0, 4.0])
-    hist = np.zeros(lg.HISTORY_WIDTH)
-    force, tangential, torque = np.zeros(3), np.zeros(3), np.zeros(3)
     r_star = R / 2
-    y_star, g_star = mat[lg.Y_STAR, 1, 1], mat[lg.G_STAR, 1, 1]
+    y_star, g_star = Y_STAR, G_STAR
     kn = 4 / 3 * y_star * math.sqrt(r_star * delta)
     kt = 8 * g_star * math.sqrt(r_star * delta)
     kr = 2.25 * kn * mu_r ** 2 * r_star ** 2 if rolling == "epsd" else kt * r_star ** 2
     cap = mu_r * kn * delta * r_star
     damping = eta * 2 * math.sqrt(1.4 * MASS * R ** 2 / 2 * kr) if rolling == "epsd" else 0.0
+    # spins +4 and -4 about z: the relative spin 8, the contact points rolling on each other
     for step in range(1, 4):
-        fn = lg.liggghts_contact(mods, False, mat, 1, 1, 2 * R - delta, R, R, MASS, MASS, MASS / 2, n, 0.0, zero,
-                                 spin, 0.0, 1.0, dt, True, hist, force, tangential, torque)
-        assert fn == pytest.approx(kn * delta, rel=1e-12)
-        assert hist[5] == pytest.approx(kr * dt * 4.0 * step, rel=1e-12)
-        assert torque[2] == pytest.approx(kr * dt * 4.0 * step + damping * 4.0, rel=1e-12)
+        c = law(2 * R - delta, R, R, n, zero, spin / 2, -spin / 2, dt=dt)
+        assert c[cs.FN] == pytest.approx(kn * delta, rel=1e-12)
+        assert law.at("rolling")[2] == pytest.approx(kr * dt * 4.0 * step, rel=1e-12)
+        assert c[cs.MRZ] == pytest.approx(kr * dt * 4.0 * step + damping * 4.0, rel=1e-12)
     for _ in range(int(cap / (kr * dt * 4.0)) + 5):
-        lg.liggghts_contact(mods, False, mat, 1, 1, 2 * R - delta, R, R, MASS, MASS, MASS / 2, n, 0.0, zero, spin,
-                            0.0, 1.0, dt, True, hist, force, tangential, torque)
-    assert torque[2] == pytest.approx(cap, rel=1e-12)
-    assert hist[5] == pytest.approx(cap, rel=1e-12)
+        c = law(2 * R - delta, R, R, n, zero, spin / 2, -spin / 2, dt=dt)
+    assert c[cs.MRZ] == pytest.approx(cap, rel=1e-12)
+    assert law.at("rolling")[2] == pytest.approx(cap, rel=1e-12)
 
 
 def test_sjkr_area_of_a_sphere_whose_centre_is_inside_the_other():
@@ -215,7 +250,7 @@ def test_sjkr_area_of_a_sphere_whose_centre_is_inside_the_other():
     (the intersection circle shrinks to nothing and its formula turns negative inside)."""
     small = 0.2 * R
     for r in (0.5 * (R - small), 0.999 * R):
-        assert lg.contact_area(lg.SJKR, False, r, R, small) == pytest.approx(math.pi * small ** 2, rel=1e-15)
-        assert lg.contact_area(lg.SJKR, False, r, small, R) == pytest.approx(math.pi * small ** 2, rel=1e-15)
+        assert sjkr_area(r, R, small, False) == pytest.approx(math.pi * small ** 2, rel=1e-15)
+        assert sjkr_area(r, small, R, False) == pytest.approx(math.pi * small ** 2, rel=1e-15)
     # just outside that regime the circle is still there and nearly that big (a^2 = s^2 - s^4/4R^2 at r = R)
-    assert 0.98 * math.pi * small ** 2 < lg.contact_area(lg.SJKR, False, 1.001 * R, R, small) < math.pi * small ** 2
+    assert 0.98 * math.pi * small ** 2 < sjkr_area(1.001 * R, R, small, False) < math.pi * small ** 2

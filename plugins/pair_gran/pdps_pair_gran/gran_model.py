@@ -17,28 +17,37 @@ at :math:`R_{i,j} - \delta/2` from the centres (LIGGGHTS's lever arms) and slide
 The force on i is :math:`F_n\mathbf{n} + \mathbf{F}_t` (:math:`-` that on j), the torques
 :math:`-(R_{i,j} - \delta/2)\,\mathbf{n}\times\mathbf{F}_t`, and the rolling torque
 :math:`\mp\mathbf{M}_r`. The law is composed of sub-models (``pdps_granular_contact.composition``),
-one per model word, which walls share: LIGGGHTS's (hertz, hooke; history, no_history; cdt, epsd,
-epsd2; sjkr, sjkr2; surface default) are ``pdps_granular_contact.gran``, each module with its
-formulas (``pdps doc gran.normal hertz``), and a distribution may add others (entry-point groups
-``pdps.gran.normal``, ``pdps.gran.tangential``, ``pdps.gran.rolling``, ``pdps.gran.cohesion``,
-``pdps.gran.surface``).
+one per model word, which walls share: LIGGGHTS's (hertz, hooke, hertz/stiffness, hooke/stiffness,
+hooke/hysteresis; history, no_history; cdt, epsd, epsd2, epsd3; sjkr, sjkr2; surface default) are
+``pdps_granular_contact.gran``, each module with its formulas (``pdps doc gran.normal hertz``), and
+a distribution may add others (entry-point groups ``pdps.gran.normal``, ``pdps.gran.tangential``,
+``pdps.gran.rolling``, ``pdps.gran.cohesion``, ``pdps.gran.surface``; plugins/contact_vdw). Each
+model of LIGGGHTS 3.8.0 gives LIGGGHTS's trajectory of two colliding spheres and of a sphere on a
+wall to round-off (tests/test_gran_submodels.py).
 
 Syntax (the words in any order after ``gran``, LIGGGHTS's)::
 
-    pair_style gran model hertz|hooke tangential history|no_history
-               [rolling_friction off|cdt|epsd|epsd2] [cohesion off|sjkr|sjkr2]
-               [tangential_damping on|off] [limitForce on|off] [max_contacts N]
+    pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis
+               tangential history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3]
+               [cohesion off|sjkr|sjkr2] [surface default] [SETTING on|off ...] [max_contacts N]
     pair_coeff * *
 
 - ``model``: normal model; hertz needs youngsModulus, poissonsRatio, coefficientRestitution;
-  hooke also characteristicVelocity (its stiffness is the Hertz one at that impact speed).
+  hooke also characteristicVelocity (its stiffness is the Hertz one at that impact speed);
+  hooke/hysteresis also coefficientMaxElasticStiffness, coefficientAdhesionStiffness,
+  coefficientPlasticityDepth; hooke/stiffness and hertz/stiffness kn, kt, gamman, gammat
+  (gamman_abs, gammat_abs with absolute_damping on).
 - ``tangential``: history (a spring per contact with Coulomb's limit) or no_history (viscous
   friction capped at Coulomb's limit); both read coefficientFriction.
-- ``rolling_friction`` (default off): reads coefficientRollingFriction; epsd also
-  coefficientRollingViscousDamping.
+- ``rolling_friction`` (default off): reads coefficientRollingFriction; epsd and epsd3 also
+  coefficientRollingViscousDamping, epsd3 rollingStiffness.
 - ``cohesion`` (default off): reads cohesionEnergyDensity (energy/volume).
-- ``tangential_damping`` (default on), ``limitForce`` (default off: a contact may pull at its end,
-  which gives the restitution coefficient exactly; on: :math:`F_n \ge 0` before cohesion).
+- settings, each read by the models that declare it (LIGGGHTS refuses one no model of the line
+  reads, and so does pdps): ``tangential_damping`` (default on), ``limitForce`` (default off: a
+  contact may pull at its end, which gives the restitution coefficient exactly; on: :math:`F_n \ge
+  0` before cohesion), ``absolute_damping`` (hooke/stiffness, default off), ``tangential_reduce``
+  (sjkr, sjkr2, default off: on, the cohesion lowers the Coulomb limit and the rolling cap),
+  ``torsionTorque`` (rolling models, default off: on, the spin about the normal is resisted too).
 - ``max_contacts N`` (pdps keyword, default 16): contacts a particle can hold at once.
 
 Material, from ``fix property/global`` (LIGGGHTS's names; ``fix_property``): youngsModulus
@@ -72,48 +81,25 @@ Example (LIGGGHTS)::
 """
 
 import math
-from typing import Annotated, Literal
 
 import numpy as np
 
-from pdps_core.api import Pair, ScriptError, SimulationError, StyleArgs, StyleName, keyword
+from pdps_core.api import Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.composition import ContactModel, Material
+from pdps_granular_contact.material import Material, find_property
+from pdps_granular_contact.gran.words import GranModelArgs
 from pdps_granular_contact.contact_models import NO_BODY_MASS
 from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 from pdps_granular_contact.contact_state import SIZE
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
-OnOff = Literal["on", "off"]
-# the model words and the contact parts they name (pdps_granular_contact.composition.PARTS)
-PART_WORDS = {"model": "normal", "tangential": "tangential", "cohesion": "cohesion", "rolling_friction": "rolling",
-              "surface": "surface"}
-# LIGGGHTS's model settings, handed to every sub-model
-SETTINGS = ("tangential_damping", "limitForce")
-
-
-class GranModelArgs(StyleArgs):
-    """LIGGGHTS's model words: a sub-model of each part (installed ones: ``pdps doc gran.PART NAME``)
-    and the settings."""
-    model: Annotated[str, StyleName("gran.normal")] = keyword(...)
-    tangential: Annotated[str, StyleName("gran.tangential")] = keyword(...)
-    rolling_friction: Annotated[str, StyleName("gran.rolling", also=("off",))] = keyword("off")
-    cohesion: Annotated[str, StyleName("gran.cohesion", also=("off",))] = keyword("off")
-    surface: Annotated[str, StyleName("gran.surface")] = keyword("default")
-    tangential_damping: OnOff = keyword("on")
-    limitForce: OnOff = keyword("off")
-
-    def contact_model(self):
-        """The composed law these words name."""
-        chosen = {part: getattr(self, word) for word, part in PART_WORDS.items() if getattr(self, word) != "off"}
-        return ContactModel("gran", chosen, {name: getattr(self, name) for name in SETTINGS})
-
-
 class PairGranModel(PairGran):
     name = "gran"
-    usage = ("pair_style gran model hertz|hooke tangential history|no_history [rolling_friction off|cdt|epsd|epsd2] "
-             "[cohesion off|sjkr|sjkr2] [tangential_damping on|off] [limitForce on|off] [max_contacts N]")
+    usage = ("pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis tangential "
+             "history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2] "
+             "[surface default] [tangential_damping|limitForce|absolute_damping|tangential_reduce|torsionTorque on|off] "
+             "[max_contacts N]")
     coeff_usage = "(no coefficients: pair_coeff * *; the material comes from fix property/global)"
     history_name = "gran_model_history"
 
@@ -154,58 +140,42 @@ class PairGranModel(PairGran):
     def timestep_limits(self, sim):
         """{"rayleigh": t_R, "hertz": t_H, "contact": t}: the smallest Rayleigh time of the particles
         present (LIGGGHTS's check/timestep/gran: pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = Y / 2(1 +
-        nu)); LIGGGHTS's Hertz estimate, for hooke models too (its check/timestep/gran: each particle
+        nu)); LIGGGHTS's Hertz estimate, for every normal model (its check/timestep/gran: each particle
         against its copy with m* its full mass, R* = R/2, Y* of its type, at twice the largest speed,
-        2.87 (m*^2 / (R* Y*^2 v))^(1/5)); and the shortest contact of the lightest particle of each
-        type hitting its copy, with m* = m/2 (module docstring; the run's own warning): the Hertz
-        time for every normal model but hooke. None where there is nothing to time (no particles;
-        for hertz, nothing moving)."""
+        2.87 (m*^2 / (R* Y*^2 v))^(1/5)); both only where the material gives Young's moduli (the
+        stiffness models need none); and the shortest contact of the lightest particle of each type
+        hitting its copy at twice the largest speed, with m* = m/2, R* = R/2, as the normal model
+        times it (``contact_time``; the run's own warning). None where there is nothing to time (no
+        particles; for Hertz, nothing moving)."""
         p = sim.particles
         nl = p.nlocal
-        youngs = self.material.property("youngsModulus")
-        poisson = self.material.property("poissonsRatio")
-        y_star_table = self.material.youngs_effective()
-        hooke = self.args.model == "hooke"
-        rayleigh = math.inf
-        for t in range(1, sim.ntypes + 1):
-            of_type = p.type[:nl] == t
-            if not of_type.any():
-                continue
-            radius, mass = p.radius[:nl][of_type], p.rmass[:nl][of_type]
-            density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
-            k = int(np.argmin(radius * np.sqrt(density)))
-            shear = youngs[t] / (2.0 * (1.0 + poisson[t]))
-            rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, poisson[t]))
-        rayleigh = sim.comm.min(rayleigh)
-        shortest, hertz = math.inf, math.inf
+        normal = self.contact_model.part("normal")
+        with_youngs = find_property(sim, "youngsModulus") is not None
+        rayleigh, shortest, hertz = math.inf, math.inf, math.inf
         speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
         for t in range(1, sim.ntypes + 1):
             of_type = p.type[:nl] == t
-            y_star = y_star_table[t, t]
-            if speed > 0.0 and of_type.any():
-                mass, radius = p.rmass[:nl][of_type], p.radius[:nl][of_type]
-                k = int(np.argmin(mass * mass / radius))
-                hertz = min(hertz, 2.87 * (mass[k] ** 2 / (0.5 * radius[k] * y_star ** 2 * 2.0 * speed)) ** 0.2)
+            if with_youngs and of_type.any():
+                youngs = self.material.property("youngsModulus")[t]
+                poisson = self.material.property("poissonsRatio")[t]
+                radius, mass = p.radius[:nl][of_type], p.rmass[:nl][of_type]
+                density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
+                k = int(np.argmin(radius * np.sqrt(density)))
+                shear = youngs / (2.0 * (1.0 + poisson))
+                rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, poisson))
+                if speed > 0.0:
+                    y_star = self.material.youngs_effective()[t, t]
+                    k = int(np.argmin(mass * mass / radius))
+                    hertz = min(hertz, 2.87 * (mass[k] ** 2 / (0.5 * radius[k] * y_star ** 2 * 2.0 * speed)) ** 0.2)
             lightest = sim.comm.min(float(p.rmass[:nl][of_type].min()) if of_type.any() else math.inf)
             if not math.isfinite(lightest):
                 continue
             rows = np.flatnonzero(of_type & (p.rmass[:nl] == lightest))
             radius = sim.comm.min(float(p.radius[:nl][rows].min()) if len(rows) else math.inf)
-            m_eff, r_eff = 0.5 * lightest, 0.5 * radius
-            if not hooke:
-                if speed > 0.0:
-                    shortest = min(shortest, contact_models.hertz_contact_time(y_star, r_eff, m_eff, 2.0 * speed))
-                continue
-            # LIGGGHTS's hooke: Hertz's stiffness at the characteristic velocity (gran.normal hooke)
-            charvel = self.material.property("characteristicVelocity")
-            log_e = math.log(self.material.property("coefficientRestitution")[t, t])
-            root = math.sqrt(r_eff)
-            kn = 16.0 / 15.0 * root * y_star * (15.0 * m_eff * charvel ** 2 / (16.0 * root * y_star)) ** 0.2
-            gamma_n = math.sqrt(4.0 * m_eff * kn * log_e ** 2 / (log_e ** 2 + math.pi ** 2))
-            kn /= sim.units.nktv2p
-            rate = kn / m_eff - (gamma_n / (2.0 * m_eff)) ** 2
-            shortest = min(shortest, math.pi / math.sqrt(rate) if rate > 0 else math.pi * math.sqrt(m_eff / kn))
-        hertz = sim.comm.min(hertz)
+            duration = normal.contact_time(self.material, t, 0.5 * lightest, 0.5 * radius, 2.0 * speed)
+            if duration is not None:
+                shortest = min(shortest, duration)
+        rayleigh, hertz = sim.comm.min(rayleigh), sim.comm.min(hertz)
         return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
                 "hertz": hertz if math.isfinite(hertz) else None, "contact": shortest}
 

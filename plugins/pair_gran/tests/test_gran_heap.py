@@ -29,12 +29,12 @@ fix floor all wall/gran model hertz tangential history rolling_friction cdt cohe
 fix integr all nve/sphere
 fix g all gravity 9.81 vector 0 0 -1
 thermo_modify lost ignore
-run 32000
+run 40000
 """
 
 
 def heap(k):
-    """(angle of the heap's flank in degrees, particles, largest speed) after 1.28 s: the top of
+    """(angle of the heap's flank in degrees, particles, largest speed) after 1.6 s: the top of
     the heap in rings of width D about its axis, fitted with a line where it is above the first
     layer."""
     sim = Simulation(screen=False, log=None, dialect="liggghts")
@@ -59,7 +59,9 @@ def test_a_cohesive_heap_stands_steeper():
     assert n_dry == n_wet == 175
     # settled: no sphere faster than 5 cm/s (the column fell at up to 1.3 m/s)
     assert v_dry < 0.05 and v_wet < 0.05
-    # measured 11 and 37 degrees (25 while cohesion cut the Coulomb limit, which LIGGGHTS does only
-    # with tangential_reduce on; the cohesive heap then needs 1.28 s rather than 0.88 s to settle)
+    # measured 9 and 38 degrees at 1.6 s (11 and 37 at 1.28 s while rolling friction against the
+    # floor took R - delta/2 as its arm, not LIGGGHTS's R: the cohesive heap then still crept at
+    # 5.6 cm/s at 1.28 s; 25 degrees while cohesion cut the Coulomb limit, which LIGGGHTS does only
+    # with tangential_reduce on)
     assert 5.0 < dry < 25.0
     assert wet > dry + 8.0

@@ -6,7 +6,3 @@ from pdps_granular_contact.composition import ContactSubModel
 class GranSubModel(ContactSubModel):
     """A sub-model of LIGGGHTS's ``pair gran`` and ``fix wall/gran model``: coefficients from the
     material of ``fix property/global``, settings from the model words (``tangential_damping off``)."""
-
-    def on(self, setting, default):
-        """A LIGGGHTS on/off setting of the host's words as 1.0 or 0.0."""
-        return 1.0 if self.settings.get(setting, default) == "on" else 0.0

@@ -9,8 +9,8 @@ the area of their contact circle,
 (:math:`A = \pi(R_i^2 - r^2)` against a wall at distance r; :math:`\pi\min(R_i,R_j)^2` once the
 smaller sphere's centre is inside the other, where that circle shrinks and vanishes). k is the
 cohesion energy density (energy/volume) of ``fix property/global cohesionEnergyDensity
-peratomtypepair``. The tangential Coulomb limit and the rolling cap do not see it (LIGGGHTS's
-default ``tangential_reduce off``).
+peratomtypepair``. The tangential Coulomb limit and the rolling cap do not see it, unless the
+setting ``tangential_reduce on`` (LIGGGHTS's; default off).
 
 Syntax: ``pair_style gran model ... cohesion sjkr``
 """
@@ -19,7 +19,7 @@ import math
 
 from numba import njit
 
-from pdps_granular_contact.contact_state import FN, R, RADIUS_I, RADIUS_J, WALL
+from pdps_granular_contact.contact_state import FN, FN_LIMIT, R, RADIUS_I, RADIUS_J, WALL
 
 from .base import GranSubModel
 
@@ -37,14 +37,18 @@ def sjkr_area(r, radius_i, radius_j, wall):
 
 @njit(cache=True)
 def sjkr_force(c, k, hist, h):
-    """k: cohesion energy density."""
-    c[FN] -= k[0] * sjkr_area(c[R], c[RADIUS_I], c[RADIUS_J], c[WALL] > 0.0)
+    """k: cohesion energy density, tangential_reduce (1/0)."""
+    pull = k[0] * sjkr_area(c[R], c[RADIUS_I], c[RADIUS_J], c[WALL] > 0.0)
+    c[FN] -= pull
+    if k[1] != 0.0:
+        c[FN_LIMIT] -= pull
 
 
 class CohesionSJKR(GranSubModel):
     kind = "gran.cohesion"
     name = "sjkr"
     compute = sjkr_force
+    settings_read = {"tangential_reduce": "off"}
 
     def coefficients(self, material):
-        return material.columns(material.property("cohesionEnergyDensity"))
+        return material.columns(material.property("cohesionEnergyDensity"), self.on("tangential_reduce"))

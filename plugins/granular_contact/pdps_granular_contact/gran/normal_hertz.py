@@ -27,6 +27,8 @@ from numba import njit
 
 from pdps_granular_contact.contact_state import (DELTA, FN, FN_LIMIT, GAMMA_N, GAMMA_T, KN, KT, M_EFF, R_EFF, VN)
 
+from pdps_granular_contact.contact_models import hertz_contact_time
+
 from .base import GranSubModel
 
 SQRT_FIVE_SIXTHS = math.sqrt(5.0 / 6.0)
@@ -57,8 +59,15 @@ class NormalHertz(GranSubModel):
     kind = "gran.normal"
     name = "hertz"
     compute = hertz_force
+    settings_read = {"tangential_damping": "on", "limitForce": "off"}
+
+    def contact_time(self, material, t, m_eff, r_eff, speed):
+        """The elastic Hertz time at that speed (none when nothing moves)."""
+        if speed <= 0.0:
+            return None
+        return hertz_contact_time(material.youngs_effective()[t, t], r_eff, m_eff, speed)
 
     def coefficients(self, material):
         return material.columns(material.youngs_effective(), material.shear_effective(), material.restitution_beta(),
-                                self.on("tangential_damping", "on"), self.on("limitForce", "off"),
+                                self.on("tangential_damping"), self.on("limitForce"),
                                 material.sim.units.nktv2p)

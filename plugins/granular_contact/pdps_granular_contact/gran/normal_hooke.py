@@ -20,18 +20,25 @@ from numba import njit
 
 from pdps_granular_contact.contact_state import (DELTA, FN, FN_LIMIT, GAMMA_N, GAMMA_T, KN, KT, M_EFF, R_EFF, VN)
 
+from pdps_granular_contact.contact_models import spring_dashpot_time
+
 from .base import GranSubModel
+
+
+@njit(cache=True)
+def hooke_constants(y_star, log_e, charvel, m_eff, r_eff):
+    """(k_n before nktv2p, gamma_n) of the module docstring."""
+    root = math.sqrt(r_eff)
+    kn = 16.0 / 15.0 * root * y_star * (15.0 * m_eff * charvel * charvel / (16.0 * root * y_star)) ** 0.2
+    # e = 1 (log e = 0): no damping, the limit of the formula
+    gamma_n = math.sqrt(4.0 * m_eff * kn * log_e * log_e / (log_e * log_e + math.pi * math.pi))
+    return kn, gamma_n
 
 
 @njit(cache=True)
 def hooke_force(c, k, hist, h):
     """k: Y*, ln e, V, tangential_damping (1/0), limitForce (1/0), nktv2p."""
-    m_eff = c[M_EFF]
-    root = math.sqrt(c[R_EFF])
-    kn = 16.0 / 15.0 * root * k[0] * (15.0 * m_eff * k[2] * k[2] / (16.0 * root * k[0])) ** 0.2
-    log_e = k[1]
-    # e = 1 (log e = 0): no damping, the limit of the formula
-    gamma_n = math.sqrt(4.0 * m_eff * kn * log_e * log_e / (log_e * log_e + math.pi * math.pi))
+    kn, gamma_n = hooke_constants(k[0], k[1], k[2], c[M_EFF], c[R_EFF])
     c[KN] = kn / k[5]
     c[KT] = kn / k[5]
     c[GAMMA_N] = gamma_n
@@ -47,8 +54,14 @@ class NormalHooke(GranSubModel):
     kind = "gran.normal"
     name = "hooke"
     compute = hooke_force
+    settings_read = {"tangential_damping": "on", "limitForce": "off"}
+
+    def contact_time(self, material, t, m_eff, r_eff, speed):
+        kn, gamma_n = hooke_constants(material.youngs_effective()[t, t], material.log_restitution()[t, t],
+                                      material.property("characteristicVelocity"), m_eff, r_eff)
+        return spring_dashpot_time(kn / material.sim.units.nktv2p, gamma_n, m_eff)
 
     def coefficients(self, material):
         return material.columns(material.youngs_effective(), material.log_restitution(),
-                                material.property("characteristicVelocity"), self.on("tangential_damping", "on"),
-                                self.on("limitForce", "off"), material.sim.units.nktv2p)
+                                material.property("characteristicVelocity"), self.on("tangential_damping"),
+                                self.on("limitForce"), material.sim.units.nktv2p)

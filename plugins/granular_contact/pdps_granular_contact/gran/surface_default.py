@@ -7,13 +7,15 @@ overlap inside each surface, so the lever arms from the centres are :math:`a_{i,
     \mathbf{v}_{tr} = \mathbf{v}_t - (a_i\boldsymbol\omega_i + a_j\boldsymbol\omega_j)\times\mathbf{n},
     \qquad v_n = (\mathbf{v}_i - \mathbf{v}_j)\cdot\mathbf{n}
 
-with the relative spin :math:`\boldsymbol\omega_r = \boldsymbol\omega_i - \boldsymbol\omega_j`.
-No coefficients, no history. Syntax: ``surface default`` (LIGGGHTS's default; the only surface).
+with the relative spin :math:`\boldsymbol\omega_r = \boldsymbol\omega_i - \boldsymbol\omega_j`
+that the rolling models read; against a wall at distance r from i's centre LIGGGHTS gives them
+:math:`\boldsymbol\omega_r = \frac{R_i - \delta/2}{r}\boldsymbol\omega_i` (its surface model's
+``wr``; read from LIGGGHTS's surface_model_default.h). No coefficients, no history. Syntax: ``surface default`` (LIGGGHTS's default; the only surface).
 """
 
 from numba import njit
 
-from pdps_granular_contact.contact_state import (ARM_I, ARM_J, DELTA, NX, NY, NZ, RADIUS_I, RADIUS_J, VN, VTX, VTY,
+from pdps_granular_contact.contact_state import (ARM_I, ARM_J, DELTA, NX, NY, NZ, R, RADIUS_I, RADIUS_J, VN, VTX, VTY,
                                                  VTZ, VX, VY, VZ, WALL, WIX, WIY, WIZ, WJX, WJY, WJZ, WRX, WRY, WRZ)
 
 from .base import GranSubModel
@@ -32,9 +34,15 @@ def sphere_kinematics(c, k, hist, h):
     c[VTX] = c[VX] - vn * c[NX] - (w1 * c[NZ] - w2 * c[NY])
     c[VTY] = c[VY] - vn * c[NY] - (w2 * c[NX] - w0 * c[NZ])
     c[VTZ] = c[VZ] - vn * c[NZ] - (w0 * c[NY] - w1 * c[NX])
-    c[WRX] = c[WIX] - c[WJX]
-    c[WRY] = c[WIY] - c[WJY]
-    c[WRZ] = c[WIZ] - c[WJZ]
+    if c[WALL] > 0.0:
+        scale = c[ARM_I] / c[R]
+        c[WRX] = scale * c[WIX]
+        c[WRY] = scale * c[WIY]
+        c[WRZ] = scale * c[WIZ]
+    else:
+        c[WRX] = c[WIX] - c[WJX]
+        c[WRY] = c[WIY] - c[WJY]
+        c[WRZ] = c[WIZ] - c[WJZ]
 
 
 class SurfaceDefault(GranSubModel):

@@ -1,0 +1,31 @@
+"""Each of LIGGGHTS's contact sub-models gives LIGGGHTS's trajectory: two spheres of two materials
+meeting off-centre with spin (pair gran), and a sphere bouncing and rolling on a primitive wall (fix
+wall/gran model), under every normal, tangential, rolling and cohesion model and setting pdps has;
+every coordinate, velocity and spin equals LIGGGHTS 3.8.0's at the end (recorded by
+benchmarks/liggghts_references/contacts.py into data/liggghts_submodels.json, with the scripts)."""
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pdps_core.api import Simulation
+from pdps_core.testing import liggghts_material  # noqa: F401  (the recorder writes the material with it)
+
+TABLE = json.loads((Path(__file__).parent / "data" / "liggghts_submodels.json").read_text())["cases"]
+
+
+@pytest.mark.parametrize("case", sorted(TABLE))
+def test_trajectory_as_liggghts(case):
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(TABLE[case]["script"])
+    p = sim.particles
+    order = np.argsort(p.tag[:p.nlocal])
+    got = np.hstack([p.x[order], p.v[order], p.omega[order]])
+    want = np.array(TABLE[case]["state"])
+    scale = np.abs(want).max(axis=0)
+    # relative to each column's largest value: round-off of thousands of steps summed in another order
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-9 * scale.max())
+    error = np.abs(got - want) / np.maximum(scale, 1e-300)
+    assert error.max() < 1e-8, (case, error.max(axis=0))
