@@ -8,7 +8,7 @@
     pdps styles [-v]            every installed style, by kind, with its distribution and version, marked
                                 broken, incompatible or disabled where it is; -v: hooks, needs, contributions
     pdps doc KIND STYLE         a style's manual page (imports only that style)
-    pdps new-plugin NAME [--kind pair|fix|compute|region|dump] [--style STYLE]
+    pdps new-plugin NAME [--kind pair|fix|compute|region|dump|contact] [--style STYLE]
                                 a working, tested plugin skeleton in plugins/KIND_NAME
 """
 
@@ -52,8 +52,8 @@ def _parser():
     doc.add_argument("style")
     new = sub.add_parser("new-plugin", help="write a working, tested plugin skeleton")
     new.add_argument("name", help="the plugin: distribution pdps-KIND-NAME, package pdps_KIND_NAME")
-    new.add_argument("--kind", default="fix", choices=["pair", "fix", "compute", "region", "dump"],
-                     help="the kind of style (default fix)")
+    new.add_argument("--kind", default="fix", choices=["pair", "fix", "compute", "region", "dump", "contact"],
+                     help="the kind of style (default fix; contact: a granular contact sub-model)")
     new.add_argument("--style", help="the style name scripts use (default NAME; may contain /)")
     new.add_argument("--dir", default="plugins", help="where to put it (default plugins/)")
     return parser

@@ -10,7 +10,10 @@ and the kind of quantity of each parameter) and tests that pass as written:
 - region: a sphere (``inside``, ``bounds``);
 - dump: positions in the xyz format;
 - pair: a soft harmonic repulsion as a force law in the core's pair loop (per-type tables,
-  energy, mixing), tested against finite differences of its energy.
+  energy, mixing), tested against finite differences of its energy;
+- contact: a cohesion sub-model of LIGGGHTS's granular contacts (a constant pull while bodies
+  touch, from a material property of its own), composed by pdps_granular_contact into pair gran
+  and fix wall/gran (``cohesion STYLE``), tested against Hertz's force less the pull.
 
 NAME names the distribution (``pdps-KIND-NAME``) and the package (``pdps_KIND_NAME``); STYLE (default
 NAME) is the name scripts use and may contain ``/`` (``lj/cut``: module ``lj_cut.py``).
@@ -24,7 +27,7 @@ from string import Template
 from .errors import ScriptError
 from .styles import API_VERSION
 
-KINDS = ("pair", "fix", "compute", "region", "dump")
+KINDS = ("pair", "fix", "compute", "region", "dump", "contact")
 API_RANGE = f">={API_VERSION},<{int(API_VERSION.split('.')[0]) + 1}"
 
 
@@ -34,7 +37,10 @@ TEMPLATE_FOLDER = files("pdps_core") / "plugin_templates"
 # kind -> (module template, test template, base class)
 TEMPLATES = {"fix": ("fix", "fix_test", "Fix"), "compute": ("compute", "compute_test", "Compute"),
              "region": ("region", "region_test", "Region"), "dump": ("dump", "dump_test", "Dump"),
-             "pair": ("pair", "pair_test", "Pair")}
+             "pair": ("pair", "pair_test", "Pair"), "contact": ("contact", "contact_test", "Cohesion")}
+# the entry-point group (pdps.GROUP), what the plugin holds and the distributions it needs, where a
+# kind is not a style of its own
+GROUPS = {"contact": ("gran.cohesion", "cohesion sub-model", '"pdps-core", "pdps-granular-contact", "numba"')}
 
 
 def template(name, ext="py"):
@@ -43,7 +49,8 @@ def template(name, ext="py"):
 
 EXAMPLES = {"fix": "fix ID GROUP {style} DVX DVY DVZ", "compute": "compute ID GROUP {style}",
             "region": "region ID {style} XC YC ZC RADIUS", "dump": "dump ID GROUP {style} N FILE",
-            "pair": "pair_style {style} RC"}
+            "pair": "pair_style {style} RC",
+            "contact": "pair_style gran model hertz tangential history cohesion {style}"}
 
 NAME = re.compile(r"[a-z][a-z0-9_]*(/[a-z0-9_]+)*")
 # a style name as scripts spell it: LIGGGHTS's have capitals (dump mesh/gran/VTK)
@@ -65,7 +72,9 @@ def new_plugin(name, directory="plugins", kind="fix", style=None):
         raise ScriptError(f"{root} already exists")
     module_name, test_name, prefix = TEMPLATES[kind]
     module = style.replace("/", "_").lower()
-    values = dict(kind=kind, style=style, module=module, package=f"pdps_{kind}_{ident}",
+    group, what, dependencies = GROUPS.get(kind, (kind, f"{kind} style", '"pdps-core"'))
+    values = dict(kind=kind, style=style, module=module, package=f"pdps_{kind}_{ident}", group=group, what=what,
+                  dependencies=dependencies,
                   dist=f"pdps-{kind}-{ident.replace('_', '-')}", api_range=API_RANGE,
                   cls=prefix + "".join(part.capitalize() for part in module.split("_")))
     package = root / values["package"]

@@ -17,7 +17,10 @@ PLUGINS = {       # kind -> (new-plugin words, style, folder, package, module)
     "dump": (["xyz", "--kind", "dump"], "xyz", "dump_xyz", "pdps_dump_xyz", "xyz"),
     "pair": (["soft/harmonic", "--kind", "pair"], "soft/harmonic", "pair_soft_harmonic",
              "pdps_pair_soft_harmonic", "soft_harmonic"),
+    "contact": (["sticky", "--kind", "contact"], "sticky", "contact_sticky", "pdps_contact_sticky", "sticky"),
 }
+# the kind `pdps styles` lists: a contact plugin holds a sub-model of pair gran's cohesion
+LISTED = {"contact": "gran.cohesion"}
 
 
 def pdps(*argv, cwd, env=None):
@@ -54,7 +57,8 @@ def test_names_entry_points_and_declared_api_range(installed):
         assert (plugin / "tests" / f"test_{module}.py").exists()
 
 
-@pytest.mark.parametrize("kind, passed", [("fix", 2), ("compute", 3), ("region", 3), ("dump", 2), ("pair", 10)])
+@pytest.mark.parametrize("kind, passed", [("fix", 2), ("compute", 3), ("region", 3), ("dump", 2), ("pair", 10),
+                                          ("contact", 2)])
 def test_skeleton_passes_its_own_tests_as_installed(installed, kind, passed):
     root, env = installed
     plugin = root / PLUGINS[kind][2]
@@ -108,7 +112,7 @@ def test_styles_and_doc_show_the_installed_skeletons(installed):
     rows = {tuple(line.split()) for line in listed.stdout.splitlines()}
     for kind, (_, style, folder, _, _) in PLUGINS.items():
         dist = "pdps-" + folder.replace("_", "-")
-        assert (kind, style, dist, "0.1.0") in rows          # loaded, compatible: no mark
+        assert (LISTED.get(kind, kind), style, dist, "0.1.0") in rows          # loaded, compatible: no mark
     doc = pdps("doc", "pair", "soft/harmonic", cwd=root, env=env)
     page = doc.stdout.splitlines()
     assert page[0] == "pair style soft/harmonic  (pdps-pair-soft-harmonic 0.1.0)"
