@@ -8,7 +8,7 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
-from .capabilities import (ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
+from .capabilities import (ContactConduction, ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
                            TriangleSurface)
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
@@ -24,7 +24,7 @@ from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, 
                      StyleArgs, StyleName, SubModel, SurfaceContacts, VariableRef, keyword, param, parse_args,
                      peratom_column, registry)
 
-__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactHistory", "ContactTable", "ContactTimes",
+__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",

@@ -40,9 +40,23 @@ class HeatTransport(Protocol):
     simulation. ``contact_heat_flux(sim, i, j, r)`` gives, for contacts between particle rows i and
     j at distances r (n each), the heat flowing into i from j (power: energy/time), by the fix's
     own conduction law and the current temperatures; valid once a run has started (compute
-    pair/gran/local's heatFlux reads it)."""
+    pair/gran/local's heatFlux reads it). ``contact_heat_model(sim)`` is that law as the contact part
+    a ContactConduction pair style composes into its contacts at a run's start (its own family's
+    object; its material read then)."""
 
     def contact_heat_flux(self, sim, i, j, r): ...
+
+    def contact_heat_model(self, sim): ...
+
+
+@runtime_checkable
+class ContactConduction(Protocol):
+    """A pair style whose contacts conduct the heat of the HeatTransport fix (pair gran): at each
+    force computation, ``conducts_heat(sim)`` true, it composes the fix's ``contact_heat_model(sim)``
+    into its contact law and fills the per-atom ``heatFlux`` and ``directionalHeatFlux`` of owned and
+    ghost rows, which the fix sums onto the owners and integrates."""
+
+    def conducts_heat(self, sim) -> bool: ...
 
 
 @runtime_checkable

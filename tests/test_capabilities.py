@@ -7,13 +7,15 @@ from pathlib import Path
 
 import pytest
 
-from pdps_core.api import ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues, registry
+from pdps_core.api import (ContactConduction, ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues,
+                           registry)
 from pdps_core.styles import IN_PROCESS
 
 ROOT = Path(__file__).parents[1]
 
 METHOD_CAPABILITIES = {
     ContactTable: {("pair", "gran"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
+    ContactConduction: {("pair", "gran")},
     ContactTimes: {("pair", "gran"), ("pair", "gran/hooke"), ("pair", "gran/hooke/history"),
                    ("pair", "gran/hertz/history"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
     HeatTransport: {("fix", "heat/gran"), ("fix", "heat/gran/conduction")},
@@ -54,7 +56,8 @@ def test_no_plugin_tests_another_distributions_style_by_its_name():
     for path in sorted(ROOT.glob("plugins/*/pdps_*/**/*.py")):
         if "build" in path.parts:
             continue
-        own = (path.parents[1] / "pyproject.toml").read_text()
+        # the distribution's own pyproject, above the package and any sub-package
+        own = next(parent / "pyproject.toml" for parent in path.parents if (parent / "pyproject.toml").exists()).read_text()
         for number, line in enumerate(path.read_text().splitlines(), 1):
             match = NAMED.search(line)
             if match is None or ".dialect.name" in line or ".units.name" in line or ".variable.name" in line:

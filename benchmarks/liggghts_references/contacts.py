@@ -91,7 +91,8 @@ run 20000
 """
 
 CASES = {
-    "pair": ["hooke tangential no_history", "hooke/stiffness tangential history",
+    "pair": ["hertz tangential history", "hooke tangential history", "hertz tangential history rolling_friction cdt",
+             "hertz tangential history cohesion sjkr", "hooke tangential no_history", "hooke/stiffness tangential history",
              "hooke/stiffness tangential history absolute_damping on", "hertz/stiffness tangential history",
              "hooke/hysteresis tangential history", "hertz tangential history rolling_friction epsd",
              "hertz tangential history rolling_friction epsd2", "hertz tangential history rolling_friction epsd3",

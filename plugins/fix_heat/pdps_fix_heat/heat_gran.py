@@ -32,8 +32,10 @@ h(1/m_1c_1 + 1/m_2c_2)`.
 
 Material from ``fix property/global`` (per type, ``peratomtype``): ``thermalConductivity`` (>= 0,
 energy/(time distance temperature)) and ``thermalCapacity`` (> 0, energy/(mass temperature)); read
-at the start of each run. Needs ``pair_style gran`` (or another granular pair style: the contacts
-are those of the pair style's neighbor list) and spheres.
+at the start of each run. Needs ``pair_style gran`` and spheres: the conduction is a part of pair
+gran's composed contacts (``pdps_granular_contact.gran.heat_conduction``, composed in at each run's
+start), computed in the same pass over the contacts as their forces; the fix sums the fluxes of
+ghosts onto their owners and advances the temperatures.
 
 Per-atom values: ``Temp`` (temperature), ``heatFlux`` (the summed :math:`Q` of the last step,
 energy/time), ``heatSource`` (S, 0 unless set) and ``directionalHeatFlux`` (3: half of each
@@ -67,61 +69,10 @@ import numpy as np
 from numba import njit
 from pydantic import PositiveFloat, model_validator
 
-from pdps_core.api import Fix, HeatTransport, ScriptError, StyleArgs, keyword
+from pdps_core.api import ContactConduction, Fix, HeatTransport, ScriptError, StyleArgs, keyword
 from pdps_granular_contact.contact_models import intersection_area
+from pdps_granular_contact.gran.heat_conduction import AREAS, CONSTANT, OVERLAP, HeatConduction
 from pdps_granular_contact.material import read_property
-
-OVERLAP, CONSTANT, PROJECTION = 0, 1, 2
-AREAS = {"overlap": OVERLAP, "constant": CONSTANT, "projection": PROJECTION}
-
-
-@njit(cache=True)
-def conduction(x, radius, temp, type_, conductivity, offsets, neighbors, nlocal, mode, area_constant,
-               heat_flux, directional):
-    """Heat fluxes of the contacts of a half list into ``heat_flux`` and ``directional`` (owned and
-    ghost rows, zeroed first; the caller sums ghosts onto their owners)."""
-    for i in range(len(heat_flux)):
-        heat_flux[i] = 0.0
-        for d in range(3):
-            directional[i, d] = 0.0
-    for i in range(nlocal):
-        xi0 = x[i, 0]
-        xi1 = x[i, 1]
-        xi2 = x[i, 2]
-        ri = radius[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            dx = xi0 - x[j, 0]
-            dy = xi1 - x[j, 1]
-            dz = xi2 - x[j, 2]
-            rsq = dx * dx + dy * dy + dz * dz
-            rj = radius[j]
-            if rsq >= (ri + rj) * (ri + rj) or rsq == 0.0:
-                continue
-            ki, kj = conductivity[type_[i]], conductivity[type_[j]]
-            if ki <= 0.0 or kj <= 0.0:
-                continue
-            if mode == OVERLAP:
-                r = math.sqrt(rsq)
-                if r < max(ri, rj):
-                    area = math.pi * min(ri, rj) ** 2
-                else:
-                    area = -0.25 * math.pi * ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj)) / rsq
-            elif mode == CONSTANT:
-                area = area_constant
-            else:
-                area = math.pi * max(ri, rj) ** 2
-            if area <= 0.0:
-                continue
-            flux = 4.0 * ki * kj / (ki + kj) * math.sqrt(area) * (temp[j] - temp[i])
-            heat_flux[i] += flux
-            heat_flux[j] -= flux
-            directional[i, 0] += 0.5 * flux * dx
-            directional[i, 1] += 0.5 * flux * dy
-            directional[i, 2] += 0.5 * flux * dz
-            directional[j, 0] += 0.5 * flux * dx
-            directional[j, 1] += 0.5 * flux * dy
-            directional[j, 2] += 0.5 * flux * dz
 
 
 @njit(cache=True)
@@ -180,8 +131,9 @@ class FixHeatGran(Fix):
     def init_run(self, sim):
         if not sim.particles.has("radius") or not sim.particles.has("rmass"):
             raise ScriptError(f"fix {self.id} ({self.name}) needs atom_style granular or sphere")
-        if sim.pair is None:
-            raise ScriptError(f"fix {self.id} ({self.name}) needs a granular pair style (its contacts carry the heat)")
+        if not isinstance(sim.pair, ContactConduction):
+            raise ScriptError(f"fix {self.id} ({self.name}) needs pair_style gran (LIGGGHTS's), whose contacts "
+                              "carry the heat")
         self.conductivity = read_property(sim, "thermalConductivity", sim.ntypes, f"fix {self.id} ({self.name})")
         self.capacity = read_property(sim, "thermalCapacity", sim.ntypes, f"fix {self.id} ({self.name})")
         self.groupbit = np.uint32(sim.groups.bit(self.group))
@@ -193,12 +145,18 @@ class FixHeatGran(Fix):
         self.conduct(sim)
 
     def conduct(self, sim):
-        p = sim.particles
-        nlist = sim.pair_list
-        a = p.arrays
-        conduction(a["x"], a["radius"], a["Temp"], a["type"], self.conductivity, nlist.offsets, nlist.neighbors,
-                   p.nlocal, self.mode, self.area_constant, a["heatFlux"], a["directionalHeatFlux"])
-        sim.comm.reverse_comm(p, ("heatFlux", "directionalHeatFlux"))
+        """The pair style's contacts filled each particle's heat flux in its force computation
+        (ContactConduction): ghosts' go to their owners."""
+        sim.comm.reverse_comm(sim.particles, ("heatFlux", "directionalHeatFlux"))
+
+    def contact_heat_model(self, sim):
+        """The conduction law as a contact part (HeatTransport): pdps_granular_contact's gran.heat
+        conduction, with this fix's contact area and the conductivities it reads now."""
+        area = self.args.contact_area
+        constant = isinstance(area, tuple)
+        model = HeatConduction({"contact_area": "constant" if constant else area, "area": area[1] if constant else 0.0})
+        model.conductivity = read_property(sim, "thermalConductivity", sim.ntypes, f"fix {self.id} ({self.name})")
+        return model
 
     def contact_heat_flux(self, sim, i, j, r):
         """Heat into i from j of each contact (the HeatTransport capability), by the docstring's

@@ -104,7 +104,10 @@ class ContactModel:
             raise ScriptError(f"unknown contact part {unknown[0]} (parts: {', '.join(PARTS)})")
         self.sub_models = []
         for part in PARTS:
-            if part in chosen:
+            if isinstance(chosen.get(part), ContactSubModel):
+                # a sub-model another style composes in (fix heat/gran's conduction), made by it
+                self.sub_models.append(chosen[part])
+            elif part in chosen:
                 cls = registry.lookup(f"{family}.{part}", chosen[part])
                 if not (isinstance(cls, type) and issubclass(cls, ContactSubModel) and cls.compute is not None):
                     raise ScriptError(f"{family}.{part} {chosen[part]} is not a contact sub-model with a compute "
@@ -166,7 +169,11 @@ class ContactModel:
                   '    """The sub-models in order, on the contact in c."""',
                   "    for s in range(FIRST_OUTPUT, SIZE):", "        c[s] = 0.0", *calls]
         with_history = self.history_width > 0
-        lines.append(contact_loop.PAIR_FORCES if with_history else contact_loop.PAIR_FORCES_NO_HISTORY)
+        heat = self.part("heat") is not None
+        lines.append(contact_loop.PAIR_FORCES.format(
+            load=contact_loop.LOAD if with_history else "", store=contact_loop.STORE if with_history else "",
+            heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
+            heat_apply=contact_loop.HEAT_APPLY if heat else ""))
         lines.append(contact_loop.PAIR_CONTACTS)
         lines.append(contact_loop.WALL_FORCES)
         return "\n".join(lines) + "\n", b"".join(keyed)

@@ -12,12 +12,12 @@ from pdps_core.api import find_slot
 
 from .contact_models import contact_mass
 from .contact_slots import load_history, store_history, wall_slots
-from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ,
+from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, HEAT, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ,
                             M_EFF, NX, NY, NZ, R, RADIUS_I, RADIUS_J, R_EFF, UPDATE, VX, VY, VZ, WALL, WIX, WIY, WIZ,
                             WJX, WJY, WJZ, ARM_I, ARM_J)
 
 __all__ = ["math", "find_slot", "load_history", "store_history", "wall_slots", "set_run", "fill_pair", "fill_wall",
-           "apply_pair", "apply_wall", "tangential_torque"]
+           "apply_pair", "apply_wall", "apply_heat", "tangential_torque"]
 
 
 @njit(cache=True)
@@ -140,6 +140,35 @@ def apply_wall(c, f, torque, i, force, tangential):
     torque[i, 2] += tangential[2] - c[MRZ] - c[MTZ]
 
 
+# the heat conduction of a contact, where a heat model is composed (fix heat/gran's): the fluxes of
+# owned and ghost rows are zeroed first, ghosts' summed onto their owners by the fix afterwards
+HEAT_ZERO = """    for i in range(len(heat_flux)):
+        heat_flux[i] = 0.0
+        for d in range(3):
+            directional[i, d] = 0.0
+"""
+HEAT_FILL = """            c[TEMPERATURE_I] = temp[i]
+            c[TEMPERATURE_J] = temp[j]
+"""
+HEAT_APPLY = """            apply_heat(c, heat_flux, directional, i, j, delx, dely, delz)
+"""
+
+
+@njit(cache=True)
+def apply_heat(c, heat_flux, directional, i, j, delx, dely, delz):
+    """The contact's heat Q into i and -Q into j; half of Q (x_i - x_j) to each one's directional flux."""
+    q = c[HEAT]
+    heat_flux[i] += q
+    heat_flux[j] -= q
+    half = 0.5 * q
+    directional[i, 0] += half * delx
+    directional[i, 1] += half * dely
+    directional[i, 2] += half * delz
+    directional[j, 0] += half * delx
+    directional[j, 1] += half * dely
+    directional[j, 2] += half * delz
+
+
 # _nrt=False in the loops below: the contact helpers store into arrays under branches, where numba
 # keeps an atomic, out-of-line reference count of every array they take around each call (numba
 # issue #2350); nothing here allocates
@@ -148,12 +177,12 @@ PAIR_FORCES = '''
 @njit(cache=True, _nrt=False)
 def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                 nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                c, hist):
+                c, hist, temp, heat_flux, directional):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
     slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
     number into ``ntouching[0]`` (the end-of-step sweep of the history reads them)."""
     set_run(c, dt, update, dimension)
-    m = 0
+{heat_zero}    m = 0
     for i in range(nlocal):
         xi0 = x[i, 0]
         xi1 = x[i, 1]
@@ -170,51 +199,23 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
             # coincident centres have no normal: no force
             if rsq >= radsum * radsum or rsq == 0.0:
                 continue
-            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
+{load}            touching[m] = k
+            m += 1
+            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+{heat_fill}            contact(c, coeff, type_[i], type_[j], hist)
+{store}            apply_pair(c, f, torque, i, j)
+{heat_apply}    ntouching[0] = m
+    return -1
+'''
+
+# the history of a contact (composed laws that keep some), loaded and stored on both particles
+LOAD = """            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
-            touching[m] = k
-            m += 1
-            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-            contact(c, coeff, type_[i], type_[j], hist)
-            if update or slot_i >= 0:
+"""
+STORE = """            if update or slot_i >= 0:
                 store_history(history, owner, i, j, slot_i, slot_j, hist)
-            apply_pair(c, f, torque, i, j)
-    ntouching[0] = m
-    return -1
-'''
-
-PAIR_FORCES_NO_HISTORY = '''
-
-@njit(cache=True, _nrt=False)
-def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
-                nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                c, hist):
-    """Contact forces and torques of a half list (no history kept); returns -1."""
-    set_run(c, dt, update, dimension)
-    m = 0
-    for i in range(nlocal):
-        xi0 = x[i, 0]
-        xi1 = x[i, 1]
-        xi2 = x[i, 2]
-        radi = radius[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            delx = xi0 - x[j, 0]
-            dely = xi1 - x[j, 1]
-            delz = xi2 - x[j, 2]
-            rsq = delx * delx + dely * dely + delz * delz
-            radsum = radi + radius[j]
-            if rsq >= radsum * radsum or rsq == 0.0:
-                continue
-            touching[m] = k
-            m += 1
-            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-            contact(c, coeff, type_[i], type_[j], hist)
-            apply_pair(c, f, torque, i, j)
-    ntouching[0] = m
-    return -1
-'''
+"""
 
 PAIR_CONTACTS = '''
 

@@ -50,7 +50,8 @@ class Law:
                            "coefficientRestitution": per_pair(e), "coefficientFriction": per_pair(mu),
                            "coefficientRollingFriction": per_pair(mu_roll),
                            "coefficientRollingViscousDamping": per_pair(eta_roll),
-                           "cohesionEnergyDensity": per_pair(k), "characteristicVelocity": 1.0})
+                           "cohesionEnergyDensity": per_pair(k), "characteristicVelocity": 1.0,
+                           "rollingStiffness": 2.25})
         self.coeff = self.model.bind(material)
         self.contact = self.model.kernels().contact
         self.c = np.zeros(cs.SIZE)
@@ -135,6 +136,8 @@ def stop_distance(torque, v0, delta):
     # epsd, epsd2: the spring torque capped at mu_r |F_n| R
     ("epsd", lambda mu_r, delta: mu_r * MASS * G * R),
     ("epsd2", lambda mu_r, delta: mu_r * MASS * G * R),
+    # epsd3 with rollingStiffness 2.25: epsd's spring
+    ("epsd3", lambda mu_r, delta: mu_r * MASS * G * R),
 ])
 def test_a_rolling_sphere_stops_where_the_rolling_torque_puts_it(rolling, torque_of):
     """epsd's dashpot acts until the spring reaches its cap (some 50 steps here), unbounded by the
@@ -143,7 +146,8 @@ def test_a_rolling_sphere_stops_where_the_rolling_torque_puts_it(rolling, torque
     mu_r, v0 = 0.1, 0.1
     distance, delta = roll(rolling, mu_r, v0)
     expected = stop_distance(torque_of(mu_r, delta), v0, delta)
-    assert distance == pytest.approx(expected, rel=0.02)
+    # measured: 0.003 % (cdt), 0.004 % (epsd2), 0.13 % (epsd, epsd3: the dashpot until the spring caps)
+    assert distance == pytest.approx(expected, rel=0.005)
     # about 7 mm (1.4 diameters): 0.7 m/s^2 of deceleration
     assert 0.006 < expected < 0.008
 

@@ -84,7 +84,7 @@ import math
 
 import numpy as np
 
-from pdps_core.api import Pair, ScriptError, SimulationError, keyword
+from pdps_core.api import HeatTransport, Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models
 from pdps_granular_contact.material import Material, find_property
 from pdps_granular_contact.gran.words import GranModelArgs
@@ -93,6 +93,9 @@ from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 from pdps_granular_contact.contact_state import SIZE
 
 from .gran import DEFAULT_CONTACTS, PairGran
+
+NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
+
 
 class PairGranModel(PairGran):
     name = "gran"
@@ -126,6 +129,9 @@ class PairGranModel(PairGran):
             raise ScriptError(f"pair {self.name} needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
         self.material = Material(sim, ntypes, f"pair {self.name}")
+        # a fix carrying heat through the contacts composes its conduction into them
+        heat = self.heat_fix(sim)
+        self.contact_model = self.args.contact_model(None if heat is None else heat.contact_heat_model(sim))
         self.contact_coeff = self.contact_model.bind(self.material)
         self.kernels = self.contact_model.kernels()
         if self.history_width > 0:
@@ -179,6 +185,22 @@ class PairGranModel(PairGran):
         return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
                 "hertz": hertz if math.isfinite(hertz) else None, "contact": shortest}
 
+    @staticmethod
+    def heat_fix(sim):
+        return next((fix for fix in sim.fixes.values() if isinstance(fix, HeatTransport)), None)
+
+    def conducts_heat(self, sim):
+        """Whether the contacts carry heat now (the ContactConduction capability): a fix heat/gran
+        is defined, and this pair style composes its conduction at each run's start."""
+        return self.heat_fix(sim) is not None
+
+    def _heat_arrays(self, p):
+        """(temperatures, heat flux, directional heat flux) the loop fills, or empty ones."""
+        if self.contact_model.part("heat") is None:
+            return NO_HEAT
+        a = p.arrays
+        return a["Temp"], a["heatFlux"], a["directionalHeatFlux"]
+
     def _history_arrays(self):
         if self.history is None:
             return self._no_history[0], self._no_history[1]
@@ -224,7 +246,7 @@ class PairGranModel(PairGran):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
             sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, self._state,
-            self._hist)
+            self._hist, *self._heat_arrays(p))
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:

@@ -30,7 +30,10 @@ class GranModelArgs(StyleArgs):
     tangential_reduce: OnOff | None = keyword(None)
     torsionTorque: OnOff | None = keyword(None)
 
-    def contact_model(self):
-        """The composed law these words name."""
+    def contact_model(self, heat=None):
+        """The composed law these words name; ``heat``: a heat sub-model to compose in (fix
+        heat/gran's conduction)."""
         chosen = {part: getattr(self, word) for word, part in PART_WORDS.items() if getattr(self, word) != "off"}
+        if heat is not None:
+            chosen["heat"] = heat
         return ContactModel("gran", chosen, {name: getattr(self, name) for name in SETTINGS})
