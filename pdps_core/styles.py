@@ -73,6 +73,8 @@ class StyleName:
     def __get_pydantic_core_schema__(self, source, handler):
         def installed(word):
             if word not in self.names():
+                if is_sub_model_kind(self.kind) and not registry.names(self.kind):
+                    raise PydanticCustomError("style_name", f"names no installed {self.kind} sub-model (none is)")
                 if is_sub_model_kind(self.kind):
                     quoted = [f"'{name}'" for name in self.names()]
                     expected = " or ".join([", ".join(quoted[:-1]), quoted[-1]] if len(quoted) > 1 else quoted)

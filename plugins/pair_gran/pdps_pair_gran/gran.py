@@ -235,6 +235,12 @@ class PairGran(Pair):
         if particles.has(name) and particles.arrays[name].shape[1] != capacity:
             raise ScriptError(f"max_contacts cannot change once contacts are stored "
                               f"(stored: {particles.arrays[name].shape[1]}, asked: {capacity})")
+        values = f"{self.history_name}_history"
+        if particles.has(values) and particles.arrays[values].shape[1] != capacity * self.history_width:
+            stored = particles.arrays[values].shape[1] // capacity
+            raise ScriptError(f"the contacts stored keep {stored} value(s) each, pair {self.name}'s "
+                              f"{self.history_width}: they were written under other models (a restart file of "
+                              "other model words, or of a pdps before 11-28) and cannot carry over")
         self.history = ContactHistory(self.sim, self.history_name, width=self.history_width, capacity=capacity)
 
     def largest_radii(self, ntypes):

@@ -336,3 +336,21 @@ def test_head_on_hertz_collision_is_dem_hertzs():
         records.append(np.array(velocities))
     np.testing.assert_allclose(records[0], records[1], rtol=1e-12, atol=1e-15)
     assert records[0][-1, 0] == pytest.approx(-0.5, rel=2e-3)
+
+
+def test_contacts_stored_under_other_models_do_not_carry_over(pdps_cli):
+    """A restart written with rolling friction epsd2 keeps 6 values a contact (spring and rolling
+    torque); read back under hertz with history alone (3) the run stops at its line, saying why,
+    rather than reading the springs askew."""
+    mat = material(coefficientRollingFriction=0.1)
+    written = pdps_cli("atom_style granular\nunits si\nregion reg block -1 1 -1 1 -1 1 units box\ncreate_box 1 reg\n"
+                       + mat + "pair_style gran model hertz tangential history rolling_friction epsd2\npair_coeff * *\n"
+                       "create_atoms 1 single -0.00499 0 0 units box\ncreate_atoms 1 single 0.00499 0 0 units box\n"
+                       "set type 1 diameter 0.01 density 2500\nfix integr all nve/sphere\nrun 10\n"
+                       "write_restart gran.restart\n")
+    assert written.returncode == 0, written.stderr
+    script = ("read_restart gran.restart\n" + mat
+              + "pair_style gran model hertz tangential history\npair_coeff * *\nfix integr all nve/sphere\nrun 0\n")
+    assert_refused(pdps_cli(script), script.count("\n"),
+                   "run: the contacts stored keep 6 value(s) each, pair gran's 3: they were written under other "
+                   "models (a restart file of other model words, or of a pdps before 11-28) and cannot carry over")
