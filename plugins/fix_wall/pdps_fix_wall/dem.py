@@ -17,7 +17,7 @@ per particle-wall contact):
     |\mathbf{F}_t| \le \mu\,|k_n\delta - C_n v_n|, \qquad
     \boldsymbol\tau_i = (-R_i\mathbf{n})\times\mathbf{F}_i
 
-(``pdps_granular_contact.contact_models.lsd_contact``; when the Coulomb limit is reached the spring is
+(``pdps_granular_contact.dem``: normal lsd, tangential spring; when the Coulomb limit is reached the spring is
 cut back to it). The normal force is not clipped at zero near the end of a contact, as LAMMPS by default, so
 a head-on impact rebounds with exactly
 
@@ -74,8 +74,7 @@ from numba import njit
 from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, SurfaceContacts, observables, param
 from pdps_granular_contact import contact_models
 
-from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
-                           particle_wall_contacts)
+from .wall_contact import HISTORY_WIDTH, ContactLaw, check_law_numbers, forget_far
 
 ELEMENT_BITS = 32           # history key = wall number << 32 | element id on that wall
 
@@ -83,30 +82,6 @@ ELEMENT_BITS = 32           # history key = wall number << 32 | element id on th
 class RegionWall(NamedTuple):
     region: Literal["region"]
     ID: str
-
-
-# _nrt=False: no reference counting of the arrays particle_wall_contacts takes (it stores under
-# branches, where numba keeps an atomic incref and decref around each call: numba issue #2350):
-# 1,521 spheres resting on a floor, 3,000 steps, 0.33 -> 0.14 s. Nothing here allocates.
-@njit(cache=True, _nrt=False)
-def dem_wall_forces(chosen, offsets, distance, normal, key, wall_velocity, reach, mass, body_mass, v, omega,
-                    f, torque, rotation, partner, values, model, kn, cn, kt, ct, mu, per_mass,
-                    e_star, g_star, beta, dt, update, used, slots, contact_force, n, rel, force, spring):
-    """Wall forces on the particles ``chosen``, whose contacts are ``offsets[k]..offsets[k+1]``
-    (``used``: one flag per history slot; ``slots``: one row per contact, at least; ``n``, ``rel``,
-    ``force``, ``spring``: scratch vectors). Returns -1, or the index of a particle whose contact
-    history overflowed."""
-    for k in range(len(chosen)):
-        i = chosen[k]
-        ok = particle_wall_contacts(i, offsets[k], offsets[k + 1], distance, normal, key,
-                                    wall_velocity, reach[i], contact_models.contact_mass(mass, body_mass, i), v,
-                                    omega, f, torque, rotation,
-                                    partner, values, model, kn, cn, kt, ct, mu, per_mass, e_star,
-                                    g_star, beta, dt, update, used, slots[offsets[k]:], n, rel, force,
-                                    spring, contact_force, TRANSFER_COS)
-        if not ok:
-            return i
-    return -1
 
 
 @njit(cache=True)
@@ -194,16 +169,16 @@ class FixWallDEM(Fix):
         # positions of the near particles and their contacts' offsets, in buffers kept between rebuilds
         self._x_near_rows, self._offset_rows = np.empty((0, 3)), np.empty(1, dtype=np.int64)
         self._cutoffs = np.empty(0)
-        self._still, self._slots = np.zeros((0, 3)), np.empty(0, dtype=np.int64)
+        self._still = np.zeros((0, 3))
         self._contact_force = np.empty((0, 3))
-        self._used = np.empty(self.history.capacity, dtype=np.bool_)
-        self._vectors = tuple(np.empty(3) for _ in range(4))      # dem_wall_forces' n, rel, force, spring
+        self.wall_law = self.law.wall_law()
         self._rows = [SurfaceContacts() for _ in self.regions]    # each region's contacts of a step
         # a region style written before surface_contacts took buffers (out) is called without
         self._takes_out = ["out" in inspect.signature(type(r).surface_contacts).parameters for r in self.regions]
         self._merged = (SurfaceContacts(), SurfaceContacts())      # merge_contacts' results, in turn
 
     def setup(self, sim):
+        self.wall_law.bind(self.law.tables(sim.ntypes))
         chosen = np.flatnonzero(sim.groups.select(sim, self.group))
         self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
         self.pre_neighbor(sim)
@@ -270,16 +245,14 @@ class FixWallDEM(Fix):
         contact_offsets(index, len(near), self._offsets)
         if len(self._still) < len(index):
             self._still = np.zeros((2 * len(index), 3))
-            self._slots = np.empty(2 * len(index), dtype=np.int64)
             self._contact_force = np.empty((2 * len(index), 3))
         rotation = "omega" in a and "torque" in a
-        omega = a["omega"] if rotation else a["v"]
-        torque = a["torque"] if rotation else a["f"]
+        omega, torque = (a["omega"], a["torque"]) if rotation else self.wall_law.still(sim)
         mass = a["rmass"] if "rmass" in a else observables.masses(sim)
-        bad = dem_wall_forces(near, self._offsets, distance, normal, key,
-                              self._still, self.reach(sim), mass, a.get("body_mass", contact_models.NO_BODY_MASS),
-                              a["v"], omega, a["f"], torque, rotation,
-                              self.history.partner, self.history.values, *self.law.kernel_args(),
-                              sim.dt, update, self._used, self._slots, self._contact_force, *self._vectors)
+        # a region wall stands still: no contact point is logged, no wall velocity
+        contacts = (distance, normal, key, self._still, self._still)
+        bad, _ = self.wall_law.forces(sim, near, len(near), self._offsets, contacts, self._contact_force,
+                                      self.history, 0, a["f"], torque, update, radius=self.reach(sim), mass=mass,
+                                      omega=omega, body_mass=a.get("body_mass", contact_models.NO_BODY_MASS))
         if bad >= 0:
             self.history.overflowed(p.tag[bad])

@@ -79,6 +79,7 @@ Example::
 import contextlib
 import io
 import math
+from types import SimpleNamespace
 import os
 from typing import Literal
 
@@ -88,8 +89,7 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, MeshSurface, ScriptError, StyleArgs, keyword, observables
 
-from .wall_contact import (HISTORY_WIDTH, TRANSFER_COS, ContactLaw, check_law_numbers, forget_far,
-                           particle_wall_contacts)
+from .wall_contact import HISTORY_WIDTH, TRANSFER_COS, ContactLaw, WallContactTable, check_law_numbers, forget_far
 
 MAX_CELLS_PER_AXIS = 64
 MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the coordinates) are one
@@ -446,16 +446,13 @@ def tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, 
         face_wear[t] += 2.0 * wear_k[ptype[i]] * speed * force * shape * dt / face_area[t]
 
 
-# the law families of mesh_wall_forces
 
-
-def mesh_scratch(most, slots):
-    """The rows mesh_wall_forces works in, for particles with up to ``most`` candidate triangles and
-    ``slots`` history slots each: made outside the kernel, which then allocates nothing."""
+def mesh_scratch(most):
+    """The rows mesh_contact_table works in, for particles with up to ``most`` candidate triangles:
+    made outside the kernel, which then allocates nothing (triangle, closest point, gap, on its face,
+    kept; a probe point)."""
     return (np.empty(most, dtype=np.int64), np.empty((most, 3)), np.empty(most), np.empty(most, dtype=np.bool_),
-            np.empty(most, dtype=np.bool_), np.empty(most), np.empty((most, 3)), np.empty(most, dtype=np.int64),
-            np.empty((most, 3)), np.empty((most, 3)), np.empty((most, 3)), np.empty(slots, dtype=np.bool_),
-            np.empty(most, dtype=np.int64), np.empty((1, 3)), np.empty(3), np.empty(3), np.empty(3), np.empty(3))
+            np.empty(most, dtype=np.bool_), np.empty((1, 3)))
 
 
 @njit(cache=True)
@@ -531,52 +528,13 @@ def mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_no
     return count
 
 
-# _nrt=False: without numba's reference counting. Its helpers take array views and store under
-# branches, where numba keeps an atomic incref and decref of every array around each call (numba
-# issue #2350): in examples/hopper at step 20,000 (1,394 particles near the mesh, 3,499 candidate
-# triangles, 35 contacts) a call took 1,294 us with it, 261 without. Nothing here allocates: the
-# scratch rows come in.
-@njit(cache=True, _nrt=False)
-def mesh_wall_forces(chosen, offsets, candidates, x, ptype, vertices, triangles, face_normal, radius,
-                     mass, v, omega, f, torque, rotation, partner, values, model, laws, dt, update, velocity, spin,
-                     pivot, belt, conveyor, tally, reference, face_force, mesh_torque, wear_k, face_wear,
-                     face_area, transfer_cos, scratch):
-    """Contacts of the chosen particles with their candidate triangles (mesh_contact_rows), then
-    the forces of the lsd/hertz law of each particle's type (``model``, ``laws``: rows of
-    ``wall_contact.LAW_COLUMNS``). With ``tally`` the forces on the wall are summed per triangle
-    into ``face_force``, their torque about ``reference`` into ``mesh_torque`` and the wear into
-    ``face_wear`` (tally_wall_forces). ``scratch``: mesh_scratch for the most candidates of a
-    particle. Returns -1, or the index of a particle whose contact history overflowed."""
-    (tri, point, gap, on_face, keep, distance, normal, key, touch, wall_velocity, contact_force, used, slots,
-     probe, n, rel, force, spring) = scratch
-    for k in range(len(chosen)):
-        i = chosen[k]
-        count = mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity,
-                                  spin, pivot, belt, conveyor, tri, point, gap, on_face, keep, probe, 0, distance,
-                                  normal, key, touch, wall_velocity)
-        t = ptype[i]
-        ok = particle_wall_contacts(i, 0, count, distance, normal, key, wall_velocity, radius[i], mass[i],
-                                    v, omega, f, torque, rotation, partner, values, model,
-                                    laws[t, 0], laws[t, 1], laws[t, 2], laws[t, 3], laws[t, 4],
-                                    laws[t, 5] != 0.0, laws[t, 6], laws[t, 7], laws[t, 8], dt,
-                                    update, used, slots, n, rel, force, spring, contact_force,
-                                    transfer_cos)
-        if not ok:
-            return i
-        if tally:
-            tally_wall_forces(count, key, touch, contact_force, i, x, v, wall_velocity, face_normal,
-                              ptype, dt, reference, face_force, mesh_torque, wear_k, face_wear,
-                              face_area)
-    return -1
-
-
 @njit(cache=True, _nrt=False)
 def mesh_contact_table(chosen, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity, spin,
                        pivot, belt, conveyor, scratch, starts, table):
     """Every chosen particle's contacts with its candidate triangles, one after the other: particle
     k's are rows starts[k] .. starts[k + 1] of ``table`` (distance, normal, key, touch,
     wall_velocity: WallContactTable's arrays), for a composed contact loop."""
-    tri, point, gap, on_face, keep, probe = scratch[0], scratch[1], scratch[2], scratch[3], scratch[4], scratch[13]
+    tri, point, gap, on_face, keep, probe = scratch
     distance, normal, key, touch, wall_velocity = table
     base = 0
     for k in range(len(chosen)):
@@ -621,7 +579,8 @@ class MeshContacts:
         self.x_built = np.zeros((0, 3))
         self.skin_built = None
         self.most = 0                   # the most candidate triangles of a visited particle
-        self._scratch, self._scratch_for = None, (0, 0)       # mesh_scratch and its (most, slots)
+        self._scratch, self._scratch_for = None, 0            # mesh_scratch and its most candidates
+        self.table = WallContactTable()                        # this step's contacts, for the law
 
     def setup(self):
         self.builds = 0
@@ -689,37 +648,45 @@ class MeshContacts:
         return self.near, self.offsets, self.candidates
 
     def scratch(self):
-        """mesh_scratch for the particles visited now and the history's slots (numba checks no
-        bounds: rows for fewer candidates than a particle has would be overrun)."""
-        slots = self.history.partner.shape[1]
-        if self._scratch is None or self._scratch_for[0] < self.most or self._scratch_for[1] != slots:
+        """mesh_scratch for the particles visited now (numba checks no bounds: rows for fewer
+        candidates than a particle has would be overrun)."""
+        if self._scratch is None or self._scratch_for < self.most:
             most = self.most + self.most // 4 + 4
-            self._scratch, self._scratch_for = mesh_scratch(most, slots), (most, slots)
+            self._scratch, self._scratch_for = mesh_scratch(most), most
         return self._scratch
 
-    def forces(self, sim, laws, update, tally=None):
-        """Wall forces on the group's particles with ``laws`` = (model, per-type law table);
-        ``tally``: None, or what the forces on the wall are added to (fix mesh/surface/stress's
-        tally(): reference point, face_force (m x 3), mesh_torque (3,), wear_k, face_wear,
-        face_area)."""
+    def forces(self, sim, law, update, tally=None, wall_type=0, log=False, store=False, f=None, torque=None):
+        """Wall forces on the group's particles with ``law`` (a bound WallLaw: the wall's composed
+        contact law; ``wall_type`` the wall's material type); ``tally``: None, or what the forces on
+        the wall are added to (fix mesh/surface/stress's tally(): reference point, face_force (m x 3),
+        mesh_torque (3,), wear_k, face_wear, face_area). Returns the contacts' log (LOG_COLUMNS and
+        history) with ``log`` (computed again, nothing kept: histories unchanged, forces into the
+        ``f`` and ``torque`` given) or ``store`` (this step's)."""
         p = sim.particles
         mesh = self.surface
-        self.candidates_now(sim)
-        radius = p.radius
+        near, offsets, candidates = self.candidates_now(sim)
         rotation = p.has("omega") and p.has("torque")
-        omega = p.omega if rotation else p.v
-        torque = p.torque if rotation else p.f
-        model, table = laws
-        if tally is not None and not update:
-            tally = no_wear(tally)
-        bad = mesh_wall_forces(self.near, self.offsets, self.candidates, p.x, p.type, mesh.vertices,
-                               mesh.triangles, mesh.face_normal, radius, observables.masses(sim),
-                               p.v, omega, p.f, torque, rotation, self.history.partner,
-                               self.history.values, model, table, sim.dt, update, mesh.velocity, mesh.spin,
-                               mesh.pivot, mesh.belt, mesh.conveyor, tally is not None,
-                               *(NO_TALLY if tally is None else tally), mesh.transfer_cos, self.scratch())
+        omega, torque = (p.omega, p.torque if torque is None else torque) if rotation else law.still(sim)
+        f = p.f if f is None else f
+        history = self.history
+        if log:
+            history = SimpleNamespace(partner=history.partner, values=history.values.copy(),
+                                      overflowed=history.overflowed)
+        table = self.table.room(len(near), int(offsets[-1]))
+        mesh_contact_table(near, offsets, candidates, p.x, mesh.vertices, mesh.triangles, mesh.face_normal,
+                           p.radius, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor, self.scratch(),
+                           table.starts, table.arrays())
+        bad, logged = law.forces(sim, near, len(near), table.starts, table.arrays(), table.contact_force, history,
+                                 wall_type, f, torque, update, radius=p.radius, mass=observables.masses(sim),
+                                 omega=omega, log_rows=int(table.starts[len(near)]) if (log or store) else 0,
+                                 transfer_cos=mesh.transfer_cos)
         if bad >= 0:
-            self.history.overflowed(p.tag[bad])
+            history.overflowed(p.tag[bad])
+        if tally is not None:
+            tally_table(near, table.starts, table.key, table.touch, table.contact_force, p.x, p.v,
+                        table.wall_velocity, mesh.face_normal, p.type, sim.dt,
+                        *(no_wear(tally) if not update else tally))
+        return logged
 
 
 NO_TALLY = (np.zeros(3), np.zeros((0, 3)), np.zeros(3), np.zeros(0), np.zeros(0), np.zeros(0))
@@ -767,7 +734,7 @@ class FixWallMesh(Fix):
         super().__init__(sim, id, group, args)
         self._read_args(sim, args)
         self.contacts = MeshContacts(sim, self.surface, f"wall_{id}", group)
-        self.laws = (self.law.model, self.law.table(sim.ntypes))
+        self.wall_law = self.law.wall_law()
         self.elapsed = 0.0
         if self.surface is self:
             self.vertices = self.placed
@@ -832,10 +799,9 @@ class FixWallMesh(Fix):
             raise ScriptError(f"fix {self.id} (wall/mesh) needs particle radii (particle_style sphere)")
         chosen = sim.groups.select(sim, self.group)
         self.law.check_timestep(sim, self, observables.masses(sim)[chosen])
-        if len(self.laws[1]) != sim.ntypes + 1:
-            self.laws = (self.law.model, self.law.table(sim.ntypes))
+        self.wall_law.bind(self.law.tables(sim.ntypes))
         self.contacts.setup()
-        self.contacts.forces(sim, self.laws, update=False, tally=self.surface_tally())
+        self.contacts.forces(sim, self.wall_law, update=False, tally=self.surface_tally())
 
     def pre_neighbor(self, sim):
         self.contacts.pre_neighbor(sim)
@@ -844,7 +810,7 @@ class FixWallMesh(Fix):
         self.elapsed += sim.dt
         if self.moving:
             self._place()
-        self.contacts.forces(sim, self.laws, update=True, tally=self.surface_tally())
+        self.contacts.forces(sim, self.wall_law, update=True, tally=self.surface_tally())
 
     def surface_tally(self):
         return None if self.surface is self else self.surface.tally()

@@ -1,9 +1,11 @@
 r"""What every granular wall of this package shares: the contact law's parameters read from script
-words, and the numba kernel that turns one particle's wall contacts into force and torque, keeping
-each contact's tangential history.
+words, and the composed contact law (``WallLaw``: pdps_granular_contact.composition's generated
+``wall_forces``) that turns each particle's wall contacts (``WallContactTable``) into force and
+torque, keeping each contact's history.
 
-A wall is body j of infinite mass and radius, so the shared laws of
-``pdps_granular_contact.contact_models`` take :math:`m^* = m_i` and :math:`R^* = R_i`. For a contact at
+A wall is body j of infinite mass and radius, so the contact laws take :math:`m^* = m_i` and
+:math:`R^* = R_i`. PDPS's walls (wall/dem, wall/mesh) compose PDPS's sub-models
+(``pdps_granular_contact.dem``: lsd or hertz, tangential spring; ``ContactLaw.wall_law``). For a contact at
 distance :math:`d` from the surface, with unit normal :math:`\mathbf{n}` from the surface to the centre
 of particle i and overlap :math:`\delta = R_i - d > 0`, the relative velocity of the contact points is
 
@@ -21,10 +23,9 @@ of the same wall closes, with a normal within about 6 degrees of it (``TRANSFER_
 ``curvature``), takes over its spring: a sphere rolling from one triangle of a tessellated surface
 onto the next keeps its static friction (``wall_slots``).
 
-LIGGGHTS's walls (fix wall/gran model ...) compose their law of sub-models instead
-(``pdps_granular_contact.composition``, whose generated ``wall_forces`` takes a ``WallContactTable``):
-their contacts keep the law's history (tangential spring, rolling spring) and the last normal, and
-can be logged one row per contact (``LOG_COLUMNS``, then the history) for compute wall/gran/local.
+LIGGGHTS's walls (fix wall/gran model ...) compose LIGGGHTS's sub-models: their contacts keep the
+law's history (tangential spring, rolling spring) and the last normal, and can be logged one row
+per contact (``LOG_COLUMNS``, then the history) for compute wall/gran/local.
 """
 
 import math
@@ -34,7 +35,9 @@ from numba import njit
 
 from pdps_core.api import ScriptError
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import wall_slots
+from pdps_granular_contact.composition import ContactModel
+from pdps_granular_contact.contact_state import SIZE
+from pdps_granular_contact.dem.base import Tables
 
 LSD, HERTZ = 0, 1
 # a per-type law table's columns (ContactLaw.row): one row per particle type, for walls whose law
@@ -76,6 +79,62 @@ class WallContactTable:
         return self.distance, self.normal, self.key, self.touch, self.wall_velocity
 
 
+class WallLaw:
+    """A composed contact law (pdps_granular_contact.composition.ContactModel) on a wall's contact
+    table: the generated ``wall_forces`` and what it works in, kept between steps. ``bind`` at a
+    run's start; ``forces`` each step."""
+
+    def __init__(self, model):
+        self.model = model
+        self.coeff = self.kernels = None
+        self._state, self._hist = np.zeros(SIZE), np.zeros(model.history_width)
+        self._vectors = (np.zeros(3), np.zeros(3))
+        self._used, self._slots = np.zeros(0, dtype=np.bool_), np.zeros(0, dtype=np.int64)
+        self._not_logged = np.zeros(1, dtype=np.int64)
+        self._still = (np.zeros((0, 3)), np.zeros((0, 3)))
+
+    @property
+    def log_columns(self):
+        """A contact log's columns: LOG_COLUMNS, then the contact's history."""
+        return len(LOG_COLUMNS) + self.model.history_width
+
+    def bind(self, source):
+        self.coeff = self.model.bind(source)
+        self.kernels = self.model.kernels()
+
+    def log_buffer(self, most):
+        if most == 0:
+            self._not_logged[0] = 0
+            return np.zeros((0, self.log_columns)), self._not_logged
+        return np.zeros((most, self.log_columns)), np.zeros(1, dtype=np.int64)
+
+    def still(self, sim):
+        """Zero spins and a torque sink, for particles that do not turn (no omega and torque)."""
+        n = sim.particles.nall
+        if len(self._still[0]) < n:
+            self._still = (np.zeros((n + n // 4 + 16, 3)), np.zeros((n + n // 4 + 16, 3)))
+        self._still[1][:] = 0.0
+        return self._still
+
+    def forces(self, sim, rows, nrows, starts, contacts, contact_force, history, wall_type, f, torque, update, *,
+               radius, mass, omega, body_mass=contact_models.NO_BODY_MASS, log_rows=0, transfer_cos=TRANSFER_COS):
+        """The law on the contacts of the particles ``rows[:nrows]``, particle k's rows starts[k] ..
+        starts[k + 1] of ``contacts`` (distance, normal, key, contact point, wall velocity: a
+        WallContactTable's arrays), each one's force into ``contact_force``; returns (-1 or the row of
+        a particle whose history overflowed, the contacts' log when ``log_rows``)."""
+        p = sim.particles
+        slots = history.partner.shape[1]
+        most = int(np.diff(starts[:nrows + 1]).max()) if nrows else 0
+        if len(self._used) < slots or len(self._slots) < most:
+            self._used, self._slots = np.zeros(slots, dtype=np.bool_), np.zeros(most + most // 4 + 4, dtype=np.int64)
+        buffer, logged = self.log_buffer(log_rows)
+        bad = self.kernels.wall_forces(
+            rows, starts, nrows, *contacts, p.v, omega, f, torque, radius, mass, body_mass, p.type, wall_type,
+            self.coeff, sim.dt, update, sim.dimension, history.partner, history.values, self._used, self._slots,
+            self._state, self._hist, *self._vectors, contact_force, buffer, logged, transfer_cos)
+        return bad, buffer[:logged[0]]
+
+
 class ContactLaw:
     """The wall's contact law as plain numbers for the kernel.
 
@@ -112,9 +171,28 @@ class ContactLaw:
         return cls(HERTZ, e_star=e_star, g_star=g_star, beta=contact_models.restitution_beta(e),
                    mu=mu, restitution=e)
 
-    def kernel_args(self):
-        return (self.model, self.kn, self.cn, self.kt, self.ct, self.mu, self.per_mass,
-                self.e_star, self.g_star, self.beta)
+    def wall_law(self):
+        """This law composed of PDPS's dem sub-models (lsd or hertz, tangential spring), for a wall."""
+        normal = "lsd" if self.model == LSD else "hertz"
+        return WallLaw(ContactModel("dem", {"normal": normal, "tangential": "spring"}, {"limit_damping": False}))
+
+    def tables(self, ntypes, rows=None):
+        """The dem sub-models' tables of this law for a wall (type 0: coeff[particle type, 0]), from
+        one row per particle type (``rows``: LAW_COLUMNS; default this law for every type)."""
+        rows = self.table(ntypes) if rows is None else rows
+        n = ntypes + 1
+        names = ("kn", "cn", "kt", "ct", "cn_per_root_mass", "ct_over_cn", "mu", "e_star", "g_star", "beta")
+        tables = {name: np.zeros((n, n)) for name in names}
+        for t in range(1, n):
+            kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta = rows[t]
+            per_mass = per_mass != 0.0
+            values = {"kn": kn, "cn": 0.0 if per_mass else cn, "kt": kt, "ct": 0.0 if per_mass else ct,
+                      "cn_per_root_mass": cn if per_mass else 0.0,
+                      "ct_over_cn": ct / cn if per_mass and cn > 0.0 else 0.0, "mu": mu,
+                      "e_star": e_star, "g_star": g_star, "beta": beta}
+            for name, value in values.items():
+                tables[name][t, 0] = value
+        return Tables(ntypes, tables)
 
     def row(self):
         """The law's numbers as one row of a per-type table (``LAW_COLUMNS``)."""
@@ -151,63 +229,6 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
     for name, value in (("Cn", cn), ("kt", kt), ("Ct", ct), ("mu", mu)):
         if value is not None and value < 0.0:
             raise ScriptError(f"{name} must be >= 0 (got {value:g})")
-
-
-@njit(cache=True)
-def particle_wall_contacts(i, start, end, distance, normal, key, wall_velocity, reach, mass,
-                           v, omega, f, torque, rotation, partner, values,
-                           model, kn, cn, kt, ct, mu, per_mass, e_star, g_star, beta, dt, update,
-                           used, slots, n, rel, force, spring, contact_force, transfer_cos):
-    """Force and torque on particle i from its wall contacts ``start..end`` (distance to the
-    surface, normal from surface to centre, element key, wall velocity at the contact point);
-    each contact's force on i into ``contact_force[c]`` (zero for contacts that do not touch).
-    Contacts with distance >= reach do not touch. With ``update`` the history is kept (opened,
-    taken over, closed: ``wall_slots``); without it (setup) forces use the stored springs and
-    change nothing. ``n``, ``rel``, ``force``, ``spring``: scratch vectors (3 each) of the caller.
-    Returns False when particle i has no free history slot."""
-    width = HISTORY_WIDTH
-    if not wall_slots(i, start, end, distance, normal, key, reach, partner, values, 3, update, used,
-                      slots, transfer_cos):
-        return False
-    for c in range(start, end):
-        overlap = reach - distance[c]
-        for d in range(3):
-            contact_force[c, d] = 0.0
-        if overlap <= 0.0:
-            continue
-        for d in range(3):
-            n[d] = normal[c, d]
-            rel[d] = v[i, d] - wall_velocity[c, d]
-            force[d] = 0.0
-        if rotation:
-            # omega x (-R n) is R (n x omega)
-            rel[0] += reach * (n[1] * omega[i, 2] - n[2] * omega[i, 1])
-            rel[1] += reach * (n[2] * omega[i, 0] - n[0] * omega[i, 2])
-            rel[2] += reach * (n[0] * omega[i, 1] - n[1] * omega[i, 0])
-        s = slots[c - start]
-        if update:
-            shear = values[i, s * width:s * width + 3]
-            for d in range(3):
-                values[i, s * width + 3 + d] = n[d]
-        else:
-            for d in range(3):
-                spring[d] = values[i, s * width + d] if s >= 0 else 0.0
-            shear = spring
-        if model == LSD:
-            root_mass = math.sqrt(mass) if per_mass else 1.0
-            contact_models.lsd_contact(overlap, n, rel, shear, kn, cn * root_mass, kt,
-                                       ct * root_mass, mu, dt, False, force)
-        else:
-            contact_models.hertz_contact(overlap, n, rel, shear, e_star, g_star, reach, mass, beta,
-                                         mu, dt, False, force)
-        for d in range(3):
-            f[i, d] += force[d]
-            contact_force[c, d] = force[d]
-        if rotation:
-            torque[i, 0] -= reach * (n[1] * force[2] - n[2] * force[1])
-            torque[i, 1] -= reach * (n[2] * force[0] - n[0] * force[2])
-            torque[i, 2] -= reach * (n[0] * force[1] - n[1] * force[0])
-    return True
 
 
 @njit(cache=True)

@@ -69,6 +69,7 @@ Examples::
 """
 
 import math
+from types import SimpleNamespace
 from typing import Literal
 
 import numpy as np
@@ -76,11 +77,10 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, ScriptError, keyword
 from pdps_granular_contact.material import Material
-from pdps_granular_contact.contact_state import SIZE
 from pdps_granular_contact.gran.words import GranModelArgs
 
-from .mesh import MeshContacts, mesh_contact_table, mesh_fix, no_wear, tally_table
-from .wall_contact import LOG_COLUMNS, TRANSFER_COS, WallContactTable, forget_far
+from .mesh import MeshContacts, mesh_fix
+from .wall_contact import TRANSFER_COS, WallContactTable, WallLaw, forget_far
 
 XPLANE, YPLANE, ZPLANE, XCYLINDER, YCYLINDER, ZCYLINDER = range(6)
 PRIMITIVES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "xcylinder": XCYLINDER,
@@ -204,10 +204,9 @@ class FixWallGranModel(Fix):
             raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
         self.contact_model = args.contact_model()
+        self.law = WallLaw(self.contact_model)
         # a wall contact keeps the law's history, then its last normal (wall_slots hands it on)
         width = self.contact_model.history_width + 3
-        self._state, self._hist = np.zeros(SIZE), np.zeros(self.contact_model.history_width)
-        self._vectors = (np.zeros(3), np.zeros(3))
         self.meshes, self.primitive = [], None
         self.shear, self.spin = np.zeros(3), 0.0
         if args.primitive is not None:
@@ -218,16 +217,12 @@ class FixWallGranModel(Fix):
         if args.store_force:
             self.store = f"force_{self.id}"
             sim.particles.request(self.store, width=3)
-        self.contact_coeff = self.kernels = None
         self.history = ContactHistory(sim, f"wall_{id}", width=width) if self.primitive is not None else None
         self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=width)
                               for mesh in self.meshes]
         self.table = WallContactTable()
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
-        self._used = np.zeros(0, dtype=np.bool_)
-        self._slots = np.zeros(0, dtype=np.int64)
-        self._not_logged = np.zeros(1, dtype=np.int64)
 
     def _primitive(self, sim, words, shear):
         _, kind, (style, *values) = words
@@ -248,9 +243,7 @@ class FixWallGranModel(Fix):
 
     # ---- hooks ----
     def setup(self, sim):
-        self.material = Material(sim, sim.ntypes, f"fix {self.id} (wall/gran)")
-        self.contact_coeff = self.contact_model.bind(self.material)
-        self.kernels = self.contact_model.kernels()
+        self.law.bind(Material(sim, sim.ntypes, f"fix {self.id} (wall/gran)"))
         for contacts in self.mesh_contacts:
             contacts.setup()
         if self.primitive is not None:
@@ -277,7 +270,7 @@ class FixWallGranModel(Fix):
     def contact_log(self, sim):
         """Every contact of the current step, recomputed without touching forces or histories:
         [(wall number, rows)] with one row per contact, LOG_COLUMNS (particle row, element, ...)."""
-        if self.kernels is None:
+        if self.law.kernels is None:
             raise ScriptError(f"fix {self.id} (wall/gran) has not computed contacts yet (run 0 first)")
         p = sim.particles
         scratch = {"f": np.zeros_like(p.f), "torque": np.zeros_like(p.torque)}
@@ -293,43 +286,30 @@ class FixWallGranModel(Fix):
             primitive_table(self._near, self._count, p.x, self.wallstyle, self.position, self.cylinder, self.shear,
                             self.spin, table.starts, *table.arrays())
             logs.append((0, self._wall_forces(sim, self._near, self._count, self.history, self.wall_type, f, torque,
-                                              update, log)))
+                                              update, log, TRANSFER_COS)))
         for number, (mesh, contacts) in enumerate(zip(self.meshes, self.mesh_contacts)):
-            near, offsets, triangles = contacts.candidates_now(sim)
-            table.room(len(near), int(offsets[-1]))
-            mesh_contact_table(near, offsets, triangles, p.x, mesh.vertices, mesh.triangles, mesh.face_normal,
-                               p.radius, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor,
-                               contacts.scratch(), table.starts, table.arrays())
-            logs.append((number, self._wall_forces(sim, near, len(near), contacts.history, mesh.material_type, f,
-                                                   torque, update, log)))
-            tally = None if log else mesh.tally()
-            if tally is not None:
-                if not update:
-                    tally = no_wear(tally)
-                tally_table(near, table.starts, table.key, table.touch, table.contact_force, p.x, p.v,
-                            table.wall_velocity, mesh.face_normal, p.type, sim.dt, *tally)
+            logs.append((number, contacts.forces(sim, self.law, update, tally=None if log else mesh.tally(),
+                                                 wall_type=mesh.material_type, log=log, store=bool(self.store),
+                                                 f=f, torque=torque)))
         if self.store and not log:
             self._store_forces(sim, logs)
         return logs
 
-    def _wall_forces(self, sim, rows, nrows, history, wall_type, f, torque, update, log):
+    def _wall_forces(self, sim, rows, nrows, history, wall_type, f, torque, update, log, transfer_cos):
         """The composed law on the contact table's rows; the contacts' log (rows of LOG_COLUMNS and
         the history) when asked for it or for store_force."""
         p = sim.particles
+        if log:
+            history = SimpleNamespace(partner=history.partner, values=history.values.copy(),
+                                      overflowed=history.overflowed)
+        logged = int(self.table.starts[nrows]) if (log or self.store) else 0
         table = self.table
-        values = history.values.copy() if log else history.values
-        slots = history.partner.shape[1]
-        most = int(np.diff(table.starts[:nrows + 1]).max()) if nrows else 0
-        if len(self._used) < slots or len(self._slots) < most:
-            self._used, self._slots = np.zeros(slots, dtype=np.bool_), np.zeros(most + most // 4 + 4, dtype=np.int64)
-        buffer, logged = self._log_buffer(int(table.starts[nrows]) if (log or self.store) else 0)
-        bad = self.kernels.wall_forces(
-            rows, table.starts, nrows, *table.arrays(), p.v, p.omega, f, torque, p.radius, p.rmass, p.type,
-            wall_type, self.contact_coeff, sim.dt, update, sim.dimension, history.partner, values, self._used,
-            self._slots, self._state, self._hist, *self._vectors, table.contact_force, buffer, logged, TRANSFER_COS)
+        bad, rows_logged = self.law.forces(sim, rows, nrows, table.starts, table.arrays(), table.contact_force, history,
+                                           wall_type, f, torque, update, radius=p.radius, mass=p.rmass, omega=p.omega,
+                                           log_rows=logged, transfer_cos=transfer_cos)
         if bad >= 0:
             history.overflowed(p.tag[bad])
-        return buffer[:logged[0]]
+        return rows_logged
 
     def _store_forces(self, sim, logs):
         """store_force yes: each particle's wall force this step, from the contacts' log."""
@@ -346,10 +326,3 @@ class FixWallGranModel(Fix):
             raise ScriptError(f"fix {self.id} (wall/gran) has per-atom values only with store_force yes")
         p = sim.particles
         return p.arrays[self.store][: p.nlocal]
-
-    def _log_buffer(self, most):
-        columns = len(LOG_COLUMNS) + self.contact_model.history_width
-        if most == 0:
-            self._not_logged[0] = 0
-            return np.zeros((0, columns)), self._not_logged
-        return np.zeros((most, columns)), np.zeros(1, dtype=np.int64)

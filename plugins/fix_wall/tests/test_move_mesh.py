@@ -352,7 +352,7 @@ def test_curvature_is_the_angle_within_which_a_contact_hands_its_history_on(curv
     """wall_slots with the cosine of mesh/surface's curvature: a contact that ended on triangle 5
     (normal along z, spring (1, 2, 0)) and a new one on triangle 6 whose normal is 3 degrees away:
     within curvature 5 the new contact continues the old one's spring; within 1 it starts afresh."""
-    from pdps_fix_wall.wall_contact import wall_slots
+    from pdps_granular_contact.contact_slots import wall_slots
     sim = make_box(f"fix cad all mesh/surface file {DATA}/square.stl curvature {curvature}",
                    box="-4 4 -4 4 -4 4", particle_style="sphere")
     capacity, width = 4, 6

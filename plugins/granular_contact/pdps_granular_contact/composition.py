@@ -96,8 +96,9 @@ class ContactModel:
     the sub-models that declare it (``settings_read``); one no chosen sub-model reads is refused, as
     LIGGGHTS refuses a setting no model of the line registers."""
 
-    def __init__(self, family, chosen, settings=None):
+    def __init__(self, family, chosen, settings=None, log=False):
         self.family = family
+        self.log = log          # the pair loop lists each contact and its force (ContactTable styles)
         chosen = {"surface": "default", **chosen}
         unknown = [part for part in chosen if part not in PARTS]
         if unknown:
@@ -142,7 +143,8 @@ class ContactModel:
     def kernels(self):
         """The generated module of this composition (module docstring); after ``bind``."""
         text, keyed = self._source()
-        origin = f"{self.family}_" + "_".join(f"{m.part}_{m.name}" for m in self.sub_models)
+        parts = "_".join(f"{m.part}_{m.name}" for m in self.sub_models)
+        origin = f"{self.family}_{parts}" + ("_log" if self.log else "")
         return generated_module(origin, text, keyed)
 
     def _source(self):
@@ -173,7 +175,7 @@ class ContactModel:
         lines.append(contact_loop.PAIR_FORCES.format(
             load=contact_loop.LOAD if with_history else "", store=contact_loop.STORE if with_history else "",
             heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
-            heat_apply=contact_loop.HEAT_APPLY if heat else ""))
+            heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else ""))
         lines.append(contact_loop.PAIR_CONTACTS)
         lines.append(contact_loop.WALL_FORCES)
         return "\n".join(lines) + "\n", b"".join(keyed)
@@ -183,8 +185,10 @@ class ContactModel:
     def bind(self, material):
         """The coefficient table for ``material``, remembering each model's column count (the
         generated code reads them by position)."""
+        declared = getattr(material, "declared", None)      # a material that reads properties by name
         for model in self.sub_models:
-            material.declared.update(model.properties)
+            if declared is not None:
+                declared.update(model.properties)
         tables = [np.asarray(model.coefficients(material), dtype=np.float64) for model in self.sub_models]
         n = material.ntypes + 1
         for model, table in zip(self.sub_models, tables):

@@ -17,7 +17,7 @@ from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, HEAT, MASS_
                             WJX, WJY, WJZ, ARM_I, ARM_J)
 
 __all__ = ["math", "find_slot", "load_history", "store_history", "wall_slots", "set_run", "fill_pair", "fill_wall",
-           "apply_pair", "apply_wall", "apply_heat", "tangential_torque"]
+           "apply_pair", "apply_wall", "apply_heat", "log_contact", "tangential_torque"]
 
 
 @njit(cache=True)
@@ -64,9 +64,10 @@ def fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, 
 
 
 @njit(cache=True)
-def fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k):
+def fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, k):
     """Particle i whose centre is ``distance[k]`` < R_i from a wall element, normal ``normal[k]`` from
-    the surface to the centre, the wall moving at ``wall_velocity[k]`` at the contact point."""
+    the surface to the centre, the wall moving at ``wall_velocity[k]`` at the contact point; its
+    mass a rigid body's where it is in one (``body_mass``, else empty)."""
     c[R] = distance[k]
     c[RADIUS_I] = radius[i]
     c[RADIUS_J] = 0.0
@@ -76,9 +77,10 @@ def fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k)
     c[NX] = normal[k, 0]
     c[NY] = normal[k, 1]
     c[NZ] = normal[k, 2]
-    c[MASS_I] = rmass[i]
+    m_i = contact_mass(rmass, body_mass, i)
+    c[MASS_I] = m_i
     c[MASS_J] = 0.0
-    c[M_EFF] = rmass[i]
+    c[M_EFF] = m_i
     c[VX] = v[i, 0] - wall_velocity[k, 0]
     c[VY] = v[i, 1] - wall_velocity[k, 1]
     c[VZ] = v[i, 2] - wall_velocity[k, 2]
@@ -177,10 +179,12 @@ PAIR_FORCES = '''
 @njit(cache=True, _nrt=False)
 def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                 nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                c, hist, temp, heat_flux, directional):
+                c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
     slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
-    number into ``ntouching[0]`` (the end-of-step sweep of the history reads them)."""
+    number into ``ntouching[0]`` (the end-of-step sweep of the history reads them); where the
+    composition logs its contacts, (i, j) and the force on i into ``log_pairs``, ``log_force``
+    after ``logged[0]``."""
     set_run(c, dt, update, dimension)
 {heat_zero}    m = 0
     for i in range(nlocal):
@@ -204,9 +208,26 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
             fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
 {heat_fill}            contact(c, coeff, type_[i], type_[j], hist)
 {store}            apply_pair(c, f, torque, i, j)
-{heat_apply}    ntouching[0] = m
+{heat_apply}{log}    ntouching[0] = m
     return -1
 '''
+
+# each contact and its force on i, for a style that lists its last force computation's contacts
+LOG = """            log_contact(c, log_pairs, log_force, logged, i, j)
+"""
+
+
+@njit(cache=True)
+def log_contact(c, log_pairs, log_force, logged, i, j):
+    m = logged[0]
+    if m < log_pairs.shape[0]:
+        log_pairs[m, 0] = i
+        log_pairs[m, 1] = j
+        log_force[m, 0] = c[FN] * c[NX] + c[FTX]
+        log_force[m, 1] = c[FN] * c[NY] + c[FTY]
+        log_force[m, 2] = c[FN] * c[NZ] + c[FTZ]
+        logged[0] = m + 1
+
 
 # the history of a contact (composed laws that keep some), loaded and stored on both particles
 LOAD = """            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
@@ -267,8 +288,8 @@ WALL_FORCES = '''
 
 @njit(cache=True, _nrt=False)
 def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity, v, omega, f, torque, radius, rmass,
-                ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist, force,
-                tangential, contact_force, log, logged, transfer_cos):
+                body_mass, ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist,
+                force, tangential, contact_force, log, logged, transfer_cos):
     """Force and torque on each particle rows[k] (k < nrows) from its wall contacts starts[k] ..
     starts[k + 1] (distance of its centre from the element ``key``, normal from the surface to the
     centre, contact point ``touch``, the wall's velocity there), each contact's force into
@@ -295,7 +316,7 @@ def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity
             s = slots[k - start]
             for h in range(width):
                 hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
-            fill_wall(c, v, omega, radius, rmass, i, distance, normal, wall_velocity, k)
+            fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, k)
             contact(c, coeff, ptype[i], wall_type, hist)
             if s >= 0:
                 for h in range(width):

@@ -1,5 +1,7 @@
-r"""What the DEM pair styles share: contact geometry, per-contact history on both particles, forces
-and torques on both particles, and the base class that declares what granular contacts need.
+r"""What the DEM pair styles share: the base class that declares what granular contacts need, the
+per-contact history on both particles, and the contact loop: pdps_granular_contact's composed one
+(``composition``), of PDPS's sub-models (``pdps_granular_contact.dem``: surface default, normal lsd
+or hertz, tangential spring), which logs each contact for ContactTable.
 
 Geometry of a contact between spheres i and j (radii :math:`R_i, R_j`) at distance :math:`r <
 R_i + R_j`: overlap :math:`\delta = R_i + R_j - r`, unit normal :math:`\mathbf{n} = (\mathbf{x}_i -
@@ -42,68 +44,12 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError
 from pdps_granular_contact import contact_models
-from pdps_granular_contact.contact_slots import (PAIR_SHEAR, HeldRows, Mirrors, contact_rows, load_spring,
-                                                  pack_slots, store_spring)
+from pdps_granular_contact.composition import ContactModel
+from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, contact_rows, pack_slots
+from pdps_granular_contact.contact_state import SIZE
+from pdps_granular_contact.dem.base import Tables
 DEFAULT_CONTACTS = 16
-
-
-@njit(cache=True)
-def contact_geometry(x, radius, i, j, n):
-    """Overlap of spheres i and j (<= 0: no contact) and their lever arms; the normal into ``n``."""
-    delx = x[i, 0] - x[j, 0]
-    dely = x[i, 1] - x[j, 1]
-    delz = x[i, 2] - x[j, 2]
-    rsq = delx * delx + dely * dely + delz * delz
-    radsum = radius[i] + radius[j]
-    if rsq >= radsum * radsum or rsq == 0.0:
-        # coincident centres have no normal: such a pair exerts no force (as PDPS and LAMMPS)
-        return 0.0, 0.0, 0.0
-    r = math.sqrt(rsq)
-    n[0] = delx / r
-    n[1] = dely / r
-    n[2] = delz / r
-    overlap = radsum - r
-    return overlap, radius[i] - 0.5 * overlap, radius[j] - 0.5 * overlap
-
-
-@njit(cache=True)
-def contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel):
-    """Relative velocity of the contact points of i and j into ``vrel``."""
-    wx = arm_i * omega[i, 0] + arm_j * omega[j, 0]
-    wy = arm_i * omega[i, 1] + arm_j * omega[j, 1]
-    wz = arm_i * omega[i, 2] + arm_j * omega[j, 2]
-    vrel[0] = v[i, 0] - v[j, 0] - (wy * n[2] - wz * n[1])
-    vrel[1] = v[i, 1] - v[j, 1] - (wz * n[0] - wx * n[2])
-    vrel[2] = v[i, 2] - v[j, 2] - (wx * n[1] - wy * n[0])
-
-
-@njit(cache=True)
-def apply_contact(f, torque, i, j, n, force, arm_i, arm_j):
-    """Force on i and its reaction on j; the torques of the force about both centres."""
-    cx = n[1] * force[2] - n[2] * force[1]
-    cy = n[2] * force[0] - n[0] * force[2]
-    cz = n[0] * force[1] - n[1] * force[0]
-    for d in range(3):
-        f[i, d] += force[d]
-        f[j, d] -= force[d]
-    torque[i, 0] -= arm_i * cx
-    torque[i, 1] -= arm_i * cy
-    torque[i, 2] -= arm_i * cz
-    torque[j, 0] -= arm_j * cx
-    torque[j, 1] -= arm_j * cy
-    torque[j, 2] -= arm_j * cz
-
-
-@njit(cache=True)
-def log_contact(log_pairs, log_force, logged, i, j, force):
-    """Remember a contact and the force on i, for contacts (compute pair/contact)."""
-    m = logged[0]
-    if m < log_pairs.shape[0]:
-        log_pairs[m, 0] = i
-        log_pairs[m, 1] = j
-        for d in range(3):
-            log_force[m, d] = force[d]
-        logged[0] = m + 1
+NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
 
 
 @njit(cache=True)
@@ -121,66 +67,6 @@ def first_coincident(x, radius, offsets, neighbors, nlocal):
     return -1, -1
 
 
-# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
-# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
-# here allocates
-@njit(cache=True, _nrt=False)
-def contact_compute(x, v, omega, radius, rmass, body_mass, f, torque, type_, tag, owner, offsets, neighbors,
-                    nlocal, hertz, law, dt, update, limit_damping, partner, history, touched,
-                    log_pairs, log_force, logged, n, vrel, shear, force):
-    """Contact forces and torques of a half list; returns -1, or the tag of a particle whose
-    contact slots are full. ``law`` holds the per-type-pair tables of the contact law: for the
-    linear law kn, cn, kt, ct, cn_per_root_mass, ct_over_cn, mu; for Hertz e_star, g_star, beta, mu.
-    ``n``, ``vrel``, ``shear``, ``force`` (3 each): one contact's normal, contact velocity, spring and
-    force."""
-    # setup (not update): the spring acts as stored, not advanced, as at the end of the last step
-    spring_dt = dt if update else 0.0
-    for i in range(nlocal):
-        ti = type_[i]
-        xi0 = x[i, 0]
-        xi1 = x[i, 1]
-        xi2 = x[i, 2]
-        radi = radius[i]
-        for k in range(offsets[i], offsets[i + 1]):
-            j = neighbors[k]
-            # most listed pairs (within the skin) do not touch: only their distance is measured
-            delx = xi0 - x[j, 0]
-            dely = xi1 - x[j, 1]
-            delz = xi2 - x[j, 2]
-            radsum = radi + radius[j]
-            if delx * delx + dely * dely + delz * delz >= radsum * radsum:
-                continue
-            overlap, arm_i, arm_j = contact_geometry(x, radius, i, j, n)
-            if overlap <= 0.0:
-                continue
-            tj = type_[j]
-            contact_velocity(v, omega, i, j, n, arm_i, arm_j, vrel)
-            m_i = contact_models.contact_mass(rmass, body_mass, i)
-            m_j = contact_models.contact_mass(rmass, body_mass, j)
-            m_star = m_i * m_j / (m_i + m_j)
-            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
-                return tag[i] if slot_i < 0 else tag[j]
-            force[:] = 0.0
-            if hertz:
-                r_star = radius[i] * radius[j] / (radius[i] + radius[j])
-                contact_models.hertz_contact(overlap, n, vrel, shear, law[0, ti, tj], law[1, ti, tj],
-                                             r_star, m_star, law[2, ti, tj], law[3, ti, tj], spring_dt,
-                                             limit_damping, force)
-            else:
-                # restitution form: damping from the two masses of this contact
-                damping = law[4, ti, tj] * math.sqrt(m_star)
-                contact_models.lsd_contact(overlap, n, vrel, shear, law[0, ti, tj],
-                                           law[1, ti, tj] + damping, law[2, ti, tj],
-                                           law[3, ti, tj] + law[5, ti, tj] * damping, law[6, ti, tj],
-                                           spring_dt, limit_damping, force)
-            if update:
-                store_spring(history, owner, i, j, slot_i, slot_j, shear)
-            apply_contact(f, torque, i, j, n, force, arm_i, arm_j)
-            log_contact(log_pairs, log_force, logged, i, j, force)
-    return -1
-
-
 class GranularPair(Pair):
     """Base of the DEM pair styles: spheres with radius, per-particle mass and rotation, ghosts that
     carry v and omega, and a tangential spring per contact."""
@@ -193,7 +79,10 @@ class GranularPair(Pair):
         self.history = None
         self._touched = None
         self._law = None
-        self._scratch = tuple(np.zeros(3) for _ in range(4))
+        self.contact_model = ContactModel("dem", {"normal": self.normal_model, "tangential": "spring"},
+                                          {"limit_damping": args.limit_damping}, log=True)
+        self._state, self._hist = np.zeros(SIZE), np.zeros(self.contact_model.history_width)
+        self._touching, self._ntouching = np.zeros(1, dtype=np.int32), np.zeros(1, dtype=np.int64)
         self._log_pairs = None
         self._logged = np.zeros(1, dtype=np.int64)
         self.held, self.mirrors = HeldRows(), Mirrors()
@@ -349,16 +238,21 @@ class GranularPair(Pair):
         return {"i": pairs[chosen, 0], "j": pairs[chosen, 1], "force": force[chosen]}
 
     def kernel(self, sim, nlist, update, owner, partner, values, touched):
+        """The composed contact loop (pdps_granular_contact.dem's sub-models: surface default, the
+        style's normal model, tangential spring), logging its contacts."""
         p = sim.particles
         a = p.arrays
         if self._law is None:
-            self._law = self.law_table()
-        return contact_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
-                               a.get("body_mass", contact_models.NO_BODY_MASS), a["f"], a["torque"], a["type"],
-                               a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.hertz, self._law,
-                               sim.dt, update, self.args.limit_damping, partner, values, touched,
-                               *self.contact_log(nlist), *self._scratch)
+            self._law = self.contact_model.bind(Tables(sim.ntypes, self.law_tables()))
+            self.kernels = self.contact_model.kernels()
+        if len(self._touching) < len(nlist.neighbors):
+            self._touching = np.empty(len(nlist.neighbors) + len(nlist.neighbors) // 4 + 16, dtype=np.int32)
+        return self.kernels.pair_forces(
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
+            a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal,
+            self._law, np.uint32(0), sim.dt, update, sim.dimension, partner, values, touched, self._touching,
+            self._ntouching, self._state, self._hist, *NO_HEAT, *self.contact_log(nlist))
 
-    def law_table(self):
-        """The contact law's per-type-pair tables, stacked in the order contact_compute reads them."""
+    def law_tables(self):
+        """The contact law's per-type-pair tables by the names its sub-models read."""
         raise NotImplementedError

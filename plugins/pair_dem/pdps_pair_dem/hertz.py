@@ -23,7 +23,7 @@ per particle) touch when :math:`r < R_i + R_j`. Per contact:
     C_n = -2\sqrt{5/6}\,\beta\sqrt{S_n m^*}, \quad C_t = -2\sqrt{5/6}\,\beta\sqrt{S_t m^*}, \quad
     \beta = \frac{\ln e}{\sqrt{\ln^2 e + \pi^2}}
 
-(``pdps_granular_contact.contact_models.hertz_contact``; overlap, normal, contact-point velocity, the spring
+(``pdps_granular_contact.dem.normal_hertz`` and ``tangential_spring``; overlap, normal, contact-point velocity, the spring
 :math:`\boldsymbol{\xi}` kept per contact and the torques are those of pdps_pair_dem.granular). The
 damping grows as :math:`\delta^{1/4}`, which makes the restitution coefficient independent of the
 impact speed and equal to e. No potential energy is reported (the contact dissipates; pe stays 0); the
@@ -143,11 +143,11 @@ class PairDEMHertz(GranularPair):
             table[i, j] = table[j, i] = value
         return self.contact_reach(i, j)
 
-    hertz = True
+    normal_model = "hertz"
 
-    def law_table(self):
-        # the rows contact_compute reads for the Hertz law (granular.py)
-        return np.stack([self.e_star, self.g_star, self.beta, self.mu])
+    def law_tables(self):
+        """The tables the dem sub-models read (pdps_granular_contact.dem.normal_hertz, tangential_spring)."""
+        return {"e_star": self.e_star, "g_star": self.g_star, "beta": self.beta, "mu": self.mu}
 
     def timestep_limits(self, sim):
         """Rayleigh and Hertz times of the particles now present (docstring)."""

@@ -16,7 +16,7 @@ force on i is
 and :math:`-\mathbf{F}` on j. :math:`\boldsymbol{\xi}` is the tangential spring of the contact: it
 grows by :math:`\mathbf{v}_t\Delta t` each step, is turned into the current tangent plane, and is cut
 back when the contact slides so that :math:`|\mathbf{F}_t| = \mu|F_n|` (the law is
-``pdps_granular_contact.contact_models.lsd_contact``). It lives as long as the contact, survives neighbor list
+``pdps_granular_contact.dem.normal_lsd`` and ``tangential_spring``). It lives as long as the contact, survives neighbor list
 rebuilds and re-sorting, and is freed when the spheres separate. Both spheres get the torque of
 :math:`\mathbf{F}` about their centres. No potential energy is reported (the contact dissipates; pe
 stays 0); the virial is the core's :math:`\sum \mathbf{r}\cdot\mathbf{f}`.
@@ -151,12 +151,12 @@ class PairDEMLsd(GranularPair):
         cutoff = c.cutoff if c.cutoff is not None else self.args.cutoff
         return max(cutoff, self.contact_reach(i, j))
 
-    hertz = False
+    normal_model = "lsd"
 
-    def law_table(self):
-        # the rows contact_compute reads for the linear law (granular.py)
-        return np.stack([self.kn, self.cn, self.kt, self.ct, self.cn_per_root_mass, self.ct_over_cn,
-                         self.mu])
+    def law_tables(self):
+        """The tables the dem sub-models read (pdps_granular_contact.dem.normal_lsd, tangential_spring)."""
+        return {name: getattr(self, name) for name in ("kn", "cn", "kt", "ct", "cn_per_root_mass", "ct_over_cn",
+                                                         "mu")}
 
     def damping(self, i, j, m_star):
         return self.cn[i, j] + self.cn_per_root_mass[i, j] * math.sqrt(m_star)

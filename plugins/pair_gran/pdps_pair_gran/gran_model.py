@@ -95,6 +95,7 @@ from pdps_granular_contact.contact_state import SIZE
 from .gran import DEFAULT_CONTACTS, PairGran
 
 NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
+NO_LOG = (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)), np.zeros(1, dtype=np.int64))
 
 
 class PairGranModel(PairGran):
@@ -246,7 +247,7 @@ class PairGranModel(PairGran):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
             sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, self._state,
-            self._hist, *self._heat_arrays(p))
+            self._hist, *self._heat_arrays(p), *NO_LOG)
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
