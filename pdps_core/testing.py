@@ -626,13 +626,16 @@ class ContactsHeld(Fix):
     """``fix ID all test/contacts_held``, for a granular pair style in a periodic cube of edge
     ``EDGE``, on any number of ranks: at the end of every step, whether the owned particles' contact
     slots hold exactly the pairs of spheres that touch (found afresh by minimum image over every
-    rank's spheres, each pair on both spheres), in ``exact``, and how many pairs touch, in
-    ``contacts`` (the same on every rank)."""
+    rank's spheres, each pair on both spheres), in ``exact``; whether they hold LIGGGHTS's pairs
+    instead, in ``until_build``: those that touch and those that came apart since the last list
+    build, exactly those that touch at a build; and how many pairs touch, in ``contacts`` (the same
+    on every rank)."""
     name = "test/contacts_held"
     EDGE = 6.0
 
     def init_run(self, sim):
-        self.exact, self.contacts = [], []
+        self.exact, self.until_build, self.contacts = [], [], []
+        self._last = set()
 
     def end_of_step(self, sim):
         p = sim.particles
@@ -648,7 +651,11 @@ class ContactsHeld(Fix):
         rows, slots = np.nonzero(partner >= 0)
         pairs = comm.allgather_rows(np.column_stack([p.tag[:n][rows], partner[rows, slots]]).reshape(-1, 2))
         held = set(map(tuple, pairs.astype(np.int64).tolist()))
-        self.exact.append(held == touching and len(pairs) == len(held))
+        once = len(pairs) == len(held)
+        self.exact.append(held == touching and once)
+        apart_since_build = held - touching <= self._last and sim.neighbor.ago > 0
+        self.until_build.append(once and touching <= held and (held == touching or apart_since_build))
+        self._last = held
         self.contacts.append(len(touching) // 2)
 
 
@@ -667,7 +674,8 @@ sim.command("fix contacts_held all test/contacts_held")
 sim.command("run " + sys.argv[2])
 check = sim.fixes["contacts_held"]
 if sim.comm.is_root:
-    np.save("held.npy", np.array([all(check.exact), sim.neighbor.builds, sum(check.contacts)]))
+    np.save("held.npy", np.array([all(check.exact), sim.neighbor.builds, sum(check.contacts),
+                                  all(check.until_build), len(check.exact) - sum(check.exact)]))
 """
 
 
@@ -675,7 +683,9 @@ def contacts_held_on_ranks(script, velocities, steps, nprocs, cwd, dialect="lamm
     """Run ``script`` (text: the spheres and their pair style, no run), the particles given
     ``velocities`` (by tag), for ``steps`` steps on ``nprocs`` ranks with fix test/contacts_held
     (``ContactsHeld``, a periodic cube of edge 6); returns (whether the slots held exactly the
-    touching pairs at every step, list builds, touching pairs summed over the steps)."""
+    touching pairs at every step, list builds, touching pairs summed over the steps, whether they
+    held LIGGGHTS's pairs at every step (ContactsHeld.until_build), steps they did not hold exactly
+    the touching pairs)."""
     cwd = Path(cwd)
     (cwd / "in.setup").write_text(textwrap.dedent(script))
     (cwd / "driver.py").write_text(_CONTACTS_HELD_DRIVER)
@@ -684,8 +694,8 @@ def contacts_held_on_ranks(script, velocities, steps, nprocs, cwd, dialect="lamm
                           cwd=cwd, capture_output=True, text=True, timeout=600)
     if done.returncode != 0:
         pytest.fail(f"mpiexec -n {nprocs} driver.py failed: {done.stderr.strip()}")
-    exact, builds, contacts = np.load(cwd / "held.npy")
-    return bool(exact), int(builds), int(contacts)
+    exact, builds, contacts, until_build, inexact = np.load(cwd / "held.npy")
+    return bool(exact), int(builds), int(contacts), bool(until_build), int(inexact)
 
 
 # ---- fixtures (registered as a pytest plugin by pdps-core) -------------------------------------

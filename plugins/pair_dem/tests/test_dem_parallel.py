@@ -35,7 +35,7 @@ neighbor 0.1 bin
 neigh_modify delay 0 every 1 check yes
 fix 1 all nve/sphere
 """
-    exact, builds, contacts = contacts_held_on_ranks(script, rng.normal(0.0, 8.0, (100, 3)), 400, 2, tmp_path,
+    exact, builds, contacts, _, _ = contacts_held_on_ranks(script, rng.normal(0.0, 8.0, (100, 3)), 400, 2, tmp_path,
                                                      dialect="pdps")
     print(f"builds {builds}, touching pairs summed over the steps {contacts}")
     assert builds > 20 and contacts > 400

@@ -58,9 +58,12 @@ of each run: a missing one, a wrong count of values or a value out of range stop
 line naming the property and the fix.
 
 The contact history holds what the sub-models keep (the tangential spring, then the epsd/epsd2
-rolling spring torque) on both spheres (pdps_pair_gran.gran: slots keyed by the partner's tag, the partner's copy negated, ghost
-rows sent back to their owners in parallel runs). Needs ``atom_style granular`` (= sphere). No
-potential energy is reported; the neighbor cutoff is the largest :math:`R_i + R_j` present.
+rolling spring torque) on both spheres (pdps_pair_gran.gran: slots keyed by the partner's tag, the
+partner's copy negated, ghost rows sent back to their owners in parallel runs). As in LIGGGHTS 3.8,
+a contact whose spheres came apart is forgotten at the next build of the neighbor list, not at
+once: spheres that touch again before then take up their old springs (its slots count towards
+``max_contacts`` until then). Needs ``atom_style granular`` (= sphere). No potential energy is
+reported; the neighbor cutoff is the largest :math:`R_i + R_j` present.
 
 Time step: the run warns when it is more than a tenth of the shortest contact: the Hertz time
 :math:`2.868\,(m^{*2}/(R^*Y^{*2}v))^{1/5}` at twice the largest speed (hertz), or
@@ -251,7 +254,13 @@ class PairGranModel(PairGran):
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
-                self.forget_stale(sim, nlist, owner, touched, rows, touching, int(self._ntouching[0]))
+                if self.held.ready(nlist):
+                    # LIGGGHTS forgets a contact that came apart only when the list is next built
+                    # (its pair loop zeroes no spring of a listed pair that does not touch): spheres
+                    # that touch again before then take up their old springs
+                    touched[:] = False
+                else:
+                    self.held.sweep_all(sim, nlist, partner, values, touched)
         if not update or bad >= 0:
             self.held.invalidate()
         if bad >= 0:

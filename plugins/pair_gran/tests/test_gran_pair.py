@@ -262,13 +262,20 @@ LIGGGHTS_MATERIAL = ("fix m1 all property/global youngsModulus peratomtype 5.e6\
 @pytest.mark.parametrize("pair, material", [(None, ""), (LIGGGHTS_PAIR, LIGGGHTS_MATERIAL)],
                          ids=["gran/hooke/history", "gran model"])
 def test_contact_slots_hold_exactly_the_contacts_of_each_step(scene, pair, material):
-    """gran/hooke/history and gran model forget a contact at the end of the step its spheres came
-    apart: in a hot gas whose lists are rebuilt every few steps (between builds only the rows that
-    held or made a contact are swept), the slots hold at every step exactly the pairs that touch."""
+    """gran/hooke/history forgets a contact at the end of the step its spheres came apart (LAMMPS);
+    gran model at the next list build (LIGGGHTS 3.8, whose pair loop zeroes no spring of a listed
+    pair that does not touch: spheres that touch again before the build take up their spring). In a
+    hot gas whose lists are rebuilt every few steps (between builds only the rows that held or made a
+    contact are swept), the slots hold at every step exactly the pairs that touch, or for gran model
+    those and the pairs that came apart since the last build, which some steps have."""
     register_styles(ContactsHeld)
     sim = hot_gas(scene, "gran/hooke/history", "test/contacts_held", seed=6, pair=pair, material=material)
     sim.command("run 400")
     check = sim.fixes["check"]
-    print(f"builds {sim.neighbor.builds}, contacts per step up to {max(check.contacts)}")
+    print(f"builds {sim.neighbor.builds}, contacts per step up to {max(check.contacts)}, "
+          f"steps holding pairs apart {check.exact.count(False)}")
     assert sim.neighbor.builds > 20 and sum(check.contacts) > 400
-    assert all(check.exact)
+    if pair is None:
+        assert all(check.exact)
+    else:
+        assert all(check.until_build) and check.exact.count(False) > 20

@@ -117,7 +117,8 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_several_ranks(t
     into a ghost goes back to its owner; between list builds only the rows that held a contact, those
     this step's contacts touched and those the mirrors came back to are swept. In a hot gas cut
     across x (and y on four ranks, where a rank has ghosts from three others), at every step the
-    owned spheres' slots, over all ranks, hold exactly the pairs that touch. The springs are stiff
+    owned spheres' slots, over all ranks, hold exactly the pairs that touch (gran model: those and
+    the pairs that came apart since the last list build, LIGGGHTS's rule). The springs are stiff
     (a contact lasts a few steps, builds come every seven), so that contacts end between builds:
     with soft ones every contact outlives a build and a row left unswept would not show."""
     velocities = hot_gas(tmp_path / "gas.data")
@@ -137,7 +138,12 @@ def test_contact_slots_hold_exactly_the_contacts_of_each_step_on_several_ranks(t
         fix 1 all nve/sphere
         """
     ranks = int(np.prod([int(n) for n in grid.split()]))
-    exact, builds, contacts = contacts_held_on_ranks(script, velocities, 400, ranks, tmp_path)
-    print(f"builds {builds}, touching pairs summed over the steps {contacts}")
+    exact, builds, contacts, until_build, inexact = contacts_held_on_ranks(script, velocities, 400, ranks,
+                                                                          tmp_path)
+    print(f"builds {builds}, touching pairs summed over the steps {contacts}, steps holding pairs apart "
+          f"{inexact}")
     assert builds > 20 and contacts > 400
-    assert exact
+    if pair == HOOKE_STIFF:
+        assert exact
+    else:
+        assert until_build and inexact > 20
