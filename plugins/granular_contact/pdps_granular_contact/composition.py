@@ -172,10 +172,14 @@ class ContactModel:
                   "    for s in range(FIRST_OUTPUT, SIZE):", "        c[s] = 0.0", *calls]
         with_history = self.history_width > 0
         heat = self.part("heat") is not None
-        lines.append(contact_loop.PAIR_FORCES.format(
-            load=contact_loop.LOAD if with_history else "", store=contact_loop.STORE if with_history else "",
-            heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
-            heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else ""))
+        blocks = dict(load=contact_loop.LOAD if with_history else "", store=contact_loop.STORE if with_history else "",
+                      heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
+                      heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else "")
+        lines.append(contact_loop.PAIR_FORCES.format(**blocks))
+        # the touching loop's body sits one level less deep: its blocks lose four spaces
+        lines.append(contact_loop.PAIR_FORCES_TOUCHING.format(
+            **{name: text if name == "heat_zero" else "".join(line[4:] + "\n" for line in text.splitlines())
+               for name, text in blocks.items()}))
         lines.append(contact_loop.PAIR_CONTACTS)
         lines.append(contact_loop.WALL_FORCES)
         return "\n".join(lines) + "\n", b"".join(keyed)

@@ -6,6 +6,7 @@ here, then defines ``contact(c, coeff, ti, tj, hist)`` (the sub-models in order)
 
 import math
 
+import numpy as np
 from numba import njit
 
 from pdps_core.api import find_slot
@@ -140,6 +141,53 @@ def apply_wall(c, f, torque, i, force, tangential):
     torque[i, 0] += tangential[0] - c[MRX] - c[MTX]
     torque[i, 1] += tangential[1] - c[MRY] - c[MTY]
     torque[i, 2] += tangential[2] - c[MRZ] - c[MTZ]
+
+
+# The same over the touching entries of a list found first (``touching``: their entries, ``rows``:
+# each entry's particle i): one flat, branch-free pass finds the few listed pairs that touch, which
+# a loop per particle pays for with a mispredicted exit at most particles (gran_box)
+PAIR_FORCES_TOUCHING = '''
+
+@njit(cache=True, _nrt=False)
+def pair_forces_touching(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, rows,
+                         neighbors, touching, ntouching, coeff, freeze_bit, dt, update, dimension, partner, history,
+                         touched, c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
+    """pair_forces over the list entries ``touching[:ntouching]`` (touching_pairs found them)."""
+    set_run(c, dt, update, dimension)
+{heat_zero}    for m in range(ntouching):
+        i = rows[touching[m]]
+        j = neighbors[touching[m]]
+        delx = x[i, 0] - x[j, 0]
+        dely = x[i, 1] - x[j, 1]
+        delz = x[i, 2] - x[j, 2]
+        rsq = delx * delx + dely * dely + delz * delz
+{load}        fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+{heat_fill}        contact(c, coeff, type_[i], type_[j], hist)
+{store}        apply_pair(c, f, torque, i, j)
+{heat_apply}{log}    return -1
+'''
+
+
+@njit(cache=True)
+def touching_pairs(x, radius, rows, neighbors, npairs, touching):
+    """The list entries whose spheres overlap, in list order, into ``touching``; returns how many.
+    Most listed pairs do not touch: one flat loop over the entries, without a branch, finds the few
+    that do (a loop per particle mispredicts its exit for most particles, which have two or three
+    entries)."""
+    m = 0
+    for k in range(npairs):
+        # unsigned: no test for Python's negative indices at each read of rows i and j
+        i = np.uint32(rows[k])
+        j = np.uint32(neighbors[k])
+        delx = x[i, 0] - x[j, 0]
+        dely = x[i, 1] - x[j, 1]
+        delz = x[i, 2] - x[j, 2]
+        rsq = delx * delx + dely * dely + delz * delz
+        radsum = radius[i] + radius[j]
+        touching[m] = k
+        # coincident centres have no normal (LAMMPS divides by zero): no force
+        m += 0 if (rsq >= radsum * radsum) | (rsq == 0.0) else 1
+    return m
 
 
 # the heat conduction of a contact, where a heat model is composed (fix heat/gran's): the fluxes of

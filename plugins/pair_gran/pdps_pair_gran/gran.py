@@ -1,6 +1,8 @@
 r"""What LAMMPS's classic granular pair styles share (gran/hooke, gran/hooke/history,
-gran/hertz/history): the script arguments, the pair loop over a half list, the contact history and
-the cutoffs. The law itself is ``pdps_granular_contact.lammps_classic.classic_contact``.
+gran/hertz/history): the script arguments, the contact history and the cutoffs. The law is composed
+of pdps_granular_contact.classic's sub-models (surface default: the radii as lever arms; normal
+hooke or hertz; tangential history or no_history; formulas in ``lammps_classic``'s docstring), and
+the loop is the composed one over the list entries whose spheres touch (``pair_forces_touching``).
 
 Geometry, as LAMMPS's pair_gran_*.cpp: spheres i and j (radii :math:`R_i, R_j`, masses
 :math:`m_i, m_j` per particle) at distance :math:`r < R_i + R_j` overlap by :math:`\delta = R_i + R_j
@@ -41,9 +43,16 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
-from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, load_spring, pack_slots, store_spring
+from pdps_granular_contact.classic.base import Constants
+from pdps_granular_contact.composition import ContactModel
+from pdps_granular_contact.contact_loop import touching_pairs
+from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, pack_slots
+from pdps_granular_contact.contact_state import SIZE
 
 DEFAULT_CONTACTS = 16
+# the composed loop's arrays for heat and a contact log, which the classic styles have not
+NO_HEAT_OR_LOG = (np.zeros(0), np.zeros(0), np.zeros((0, 3)), np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)),
+                  np.zeros(1, dtype=np.int64))
 
 
 class GranArgs(lammps_classic.ClassicLaw):
@@ -62,28 +71,6 @@ def entry_rows(offsets, nlocal, rows):
 
 
 @njit(cache=True)
-def touching_pairs(x, radius, rows, neighbors, npairs, touching):
-    """The list entries whose spheres overlap, in list order, into ``touching``; returns how many.
-    Most listed pairs do not touch: one flat loop over the entries, without a branch, finds the few
-    that do (a loop per particle mispredicts its exit for most particles, which have two or three
-    entries), and ``gran_compute`` does their contacts."""
-    m = 0
-    for k in range(npairs):
-        # unsigned: no test for Python's negative indices at each read of rows i and j
-        i = np.uint32(rows[k])
-        j = np.uint32(neighbors[k])
-        delx = x[i, 0] - x[j, 0]
-        dely = x[i, 1] - x[j, 1]
-        delz = x[i, 2] - x[j, 2]
-        rsq = delx * delx + dely * dely + delz * delz
-        radsum = radius[i] + radius[j]
-        touching[m] = k
-        # coincident centres have no normal (LAMMPS divides by zero): no force
-        m += 0 if (rsq >= radsum * radsum) | (rsq == 0.0) else 1
-    return m
-
-
-@njit(cache=True)
 def touched_rows(rows, neighbors, touching, ntouching, owner, fresh):
     """The rows whose contact slots the touching entries used: i, and j's owner (j where it has
     none), two per entry into ``fresh``."""
@@ -92,76 +79,6 @@ def touched_rows(rows, neighbors, touching, ntouching, owner, fresh):
         j = neighbors[k]
         fresh[2 * h] = rows[k]
         fresh[2 * h + 1] = owner[j] if owner[j] >= 0 else j
-
-
-# Without numba's reference counting (_nrt=False): the contact helpers store into arrays under
-# branches, and numba then keeps an atomic, out-of-line increment and decrement of every array they
-# take around each call (numba issue #2350), three quarters of a contact's cost (gran_box: 37 ->
-# 13 us a step). Nothing here allocates, which is what the counting is for.
-@njit(cache=True, _nrt=False)
-def gran_compute(x, v, omega, radius, rmass, body_mass, mask, f, torque, tag, owner, rows, neighbors, touching,
-                 ntouching, model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, freeze_bit, dt, update,
-                 partner, history, touched, n, vtr, shear, tangential):
-    """Contact forces and torques of the touching list entries (``touching_pairs``); returns -1, or
-    the tag of a particle whose contact slots are full. ``n``, ``vtr``, ``shear``, ``tangential``
-    (3 each): one contact's normal, sliding velocity, spring and tangential force."""
-    with_history = model != lammps_classic.HOOKE
-    shear[:] = 0.0
-    for h in range(ntouching):
-        i = rows[touching[h]]
-        j = neighbors[touching[h]]
-        radi = radius[i]
-        delx = x[i, 0] - x[j, 0]
-        dely = x[i, 1] - x[j, 1]
-        delz = x[i, 2] - x[j, 2]
-        rsq = delx * delx + dely * dely + delz * delz
-        radsum = radi + radius[j]
-        r = math.sqrt(rsq)
-        n[0] = delx / r
-        n[1] = dely / r
-        n[2] = delz / r
-        vr0 = v[i, 0] - v[j, 0]
-        vr1 = v[i, 1] - v[j, 1]
-        vr2 = v[i, 2] - v[j, 2]
-        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-        w0 = radi * omega[i, 0] + radius[j] * omega[j, 0]
-        w1 = radi * omega[i, 1] + radius[j] * omega[j, 1]
-        w2 = radi * omega[i, 2] + radius[j] * omega[j, 2]
-        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-        m_i = contact_models.contact_mass(rmass, body_mass, i)
-        m_j = contact_models.contact_mass(rmass, body_mass, j)
-        m_eff = m_i * m_j / (m_i + m_j)
-        if mask[i] & freeze_bit:
-            m_eff = m_j
-        if mask[j] & freeze_bit:
-            m_eff = m_i
-        slot_i, slot_j = -1, -1
-        if with_history:
-            slot_i, slot_j = load_spring(partner, history, touched, owner, tag, i, j, update, shear)
-            if update and (slot_i < 0 or slot_j < 0):
-                return tag[i] if slot_i < 0 else tag[j]
-        r_eff = radi * radius[j] / radsum
-        fn = lammps_classic.classic_contact(model, False, radsum - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
-                                            gamma_n, gamma_t, xmu, limit_damping, update, dt,
-                                            shear, tangential)
-        if with_history and slot_i >= 0:
-            store_spring(history, owner, i, j, slot_i, slot_j, shear)
-        cx = n[1] * tangential[2] - n[2] * tangential[1]
-        cy = n[2] * tangential[0] - n[0] * tangential[2]
-        cz = n[0] * tangential[1] - n[1] * tangential[0]
-        for d in range(3):
-            force = fn * n[d] + tangential[d]
-            f[i, d] += force
-            f[j, d] -= force
-        torque[i, 0] -= radi * cx
-        torque[i, 1] -= radi * cy
-        torque[i, 2] -= radi * cz
-        torque[j, 0] -= radius[j] * cx
-        torque[j, 1] -= radius[j] * cy
-        torque[j, 2] -= radius[j] * cz
-    return -1
 
 
 class PairGran(Pair):
@@ -199,10 +116,14 @@ class PairGran(Pair):
         self._touched = None
         self._rows = self._touching = self._rows_of = None
         self.held, self.mirrors = HeldRows(), Mirrors()
-        self._scratch = tuple(np.zeros(3) for _ in range(4))
         self.xmu, self.limit_damping = args.xmu, args.limit_damping is not None
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
         self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
+        # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
+        self.contact_model = ContactModel("classic", {
+            "normal": "hertz" if self.model == lammps_classic.HERTZ_HISTORY else "hooke",
+            "tangential": "no_history" if self.model == lammps_classic.HOOKE else "history"})
+        self._state, self._hist = np.zeros(SIZE), np.zeros(max(self.contact_model.history_width, 1))
 
     def init(self, ntypes):
         sim = self.sim
@@ -211,6 +132,10 @@ class PairGran(Pair):
                               "and rotation)")
         if self.model != lammps_classic.HOOKE:
             self.open_history()
+        self.contact_coeff = self.contact_model.bind(Constants(
+            ntypes, kn=self.kn, kt=self.kt, gamma_n=self.gamma_n, gamma_t=self.gamma_t, xmu=self.xmu,
+            limit_damping=self.limit_damping, hertz=self.model == lammps_classic.HERTZ_HISTORY))
+        self.kernels = self.contact_model.kernels()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
         self.check_box()
@@ -315,11 +240,12 @@ class PairGran(Pair):
         a = p.arrays
         rows, touching, npairs = self.list_rows(nlist, p.nlocal)
         ntouching = touching_pairs(a["x"], a["radius"], rows, nlist.neighbors, npairs, touching)
-        bad = gran_compute(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
-                           a.get("body_mass", contact_models.NO_BODY_MASS), a["mask"], a["f"], a["torque"],
-                           a["tag"], owner, rows, nlist.neighbors, touching, ntouching, self.model, self.kn, self.kt,
-                           self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, self.freeze_bit,
-                           sim.dt, update, partner, values, touched, *self._scratch)
+        width = self.contact_model.history_width
+        bad = self.kernels.pair_forces_touching(
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
+            a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, rows, nlist.neighbors, touching, ntouching,
+            self.contact_coeff, self.freeze_bit, sim.dt, update, sim.dimension, partner, values, touched, self._state,
+            self._hist[:width] if width else self._hist, *NO_HEAT_OR_LOG)
         if self.history is not None and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
