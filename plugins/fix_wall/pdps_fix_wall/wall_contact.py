@@ -52,6 +52,9 @@ LOG_COLUMNS = ("row", "element", "px", "py", "pz", "vwx", "vwy", "vwz", "fx", "f
                "delta", "area")
 
 
+FLAT = np.zeros(0)          # no wall curvature: every contact's R* is the particle's radius
+
+
 class WallContactTable:
     """Particles' contacts with a wall, one after the other (particle k's are rows starts[k] ..
     starts[k + 1]): distance of the centre from the element, normal from the surface to the centre,
@@ -117,7 +120,8 @@ class WallLaw:
         return self._still
 
     def forces(self, sim, rows, nrows, starts, contacts, contact_force, history, wall_type, f, torque, update, *,
-               radius, mass, omega, body_mass=contact_models.NO_BODY_MASS, log_rows=0, transfer_cos=TRANSFER_COS):
+               radius, mass, omega, body_mass=contact_models.NO_BODY_MASS, log_rows=0, transfer_cos=TRANSFER_COS,
+               curvature=FLAT):
         """The law on the contacts of the particles ``rows[:nrows]``, particle k's rows starts[k] ..
         starts[k + 1] of ``contacts`` (distance, normal, key, contact point, wall velocity: a
         WallContactTable's arrays), each one's force into ``contact_force``; returns (-1 or the row of
@@ -129,7 +133,7 @@ class WallLaw:
             self._used, self._slots = np.zeros(slots, dtype=np.bool_), np.zeros(most + most // 4 + 4, dtype=np.int64)
         buffer, logged = self.log_buffer(log_rows)
         bad = self.kernels.wall_forces(
-            rows, starts, nrows, *contacts, p.v, omega, f, torque, radius, mass, body_mass, p.type, wall_type,
+            rows, starts, nrows, *contacts, curvature, p.v, omega, f, torque, radius, mass, body_mass, p.type, wall_type,
             self.coeff, sim.dt, update, sim.dimension, history.partner, history.values, self._used, self._slots,
             self._state, self._hist, *self._vectors, contact_force, buffer, logged, transfer_cos)
         return bad, buffer[:logged[0]]

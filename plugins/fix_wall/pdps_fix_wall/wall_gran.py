@@ -96,9 +96,11 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, keyword, param
 from pdps_granular_contact import contact_models, lammps_classic
 from pdps_granular_contact.lammps_classic import NullableFloat
+
+from .wall_contact import WallContactTable, WallLaw
 
 FAR = 1.0e20                    # a NULL plane, as LAMMPS's BIG
 XPLANE, YPLANE, ZPLANE, ZCYLINDER = 0, 1, 2, 3
@@ -116,10 +118,9 @@ WallWords = (tuple[Literal["xplane", "yplane", "zplane"], NullableFloat, Nullabl
 
 
 @njit(cache=True)
-def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, margin, near, history,
-              with_history):
+def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, margin, near, partner):
     """The group's particles within their radius plus ``margin`` of the wall, into ``near``;
-    returns how many. The springs of the group's others are zeroed (none of them touches the wall)."""
+    returns how many. The group's others forget their wall contact (none of them touches the wall)."""
     count = 0
     for i in range(nlocal):
         if mask[i] & groupbit:
@@ -130,74 +131,60 @@ def near_wall(x, radius, mask, groupbit, nlocal, wallstyle, lo, hi, cylinder, ma
             if gap < radius[i] + margin:
                 near[count] = i
                 count += 1
-            elif with_history:
-                for k in range(3):
-                    history[i, k] = 0.0
+            else:
+                for s in range(partner.shape[1]):
+                    partner[i, s] = -1
     return count
 
 
-# _nrt=False: no reference counting of the arrays its contact helpers take (they store under
-# branches, where numba's counting stays in the loop as atomic calls: numba issue #2350); nothing
-# here allocates
-@njit(cache=True, _nrt=False)
-def wall_gran_forces(x, v, omega, radius, rmass, body_mass, f, torque, near, count, wallstyle, lo,
-                     hi, cylinder, wall_velocity, spin, model, kn, kt, gamma_n, gamma_t, xmu,
-                     limit_damping, dt, update, history, d, n, vw, vtr, tangential):
-    """Wall forces and torques on the particles ``near[:count]``. ``spin``: surface speed of a
-    cylinder turning about z (0 otherwise); ``history`` (nlocal, 3) springs, or one scratch row
-    for hooke; ``d``, ``n``, ``vw``, ``vtr``, ``tangential``: scratch vectors."""
-    with_history = model != lammps_classic.HOOKE
-    for c in range(count):
-        i = near[c]
-        d[:] = 0.0
-        r_wall = 0.0
-        for k in range(3):
-            vw[k] = wall_velocity[k]
-        touching = True
+@njit(cache=True)
+def wall_table(x, near, count, wallstyle, lo, hi, cylinder, wall_velocity, spin, starts, distance, normal, key,
+               velocity, curvature):
+    """The wall's contact with each particle ``near[:count]`` (the nearer plane of the two, or the
+    cylinder: key 0) as a contact table, particle k's rows starts[k] .. starts[k + 1]: distance from
+    the surface, normal towards the centre, the wall's velocity (a turning cylinder's surface speed
+    ``spin`` added) and its curvature (the cylinder's radius, negative inside; 0 for planes)."""
+    base = 0
+    for k in range(count):
+        i = near[k]
+        starts[k] = base
+        d0, d1, d2 = 0.0, 0.0, 0.0
+        rw = 0.0
+        v0, v1, v2 = wall_velocity[0], wall_velocity[1], wall_velocity[2]
         if wallstyle == ZCYLINDER:
             across = math.sqrt(x[i, 0] * x[i, 0] + x[i, 1] * x[i, 1])
+            if across == 0.0:
+                continue
             gap = cylinder - across
-            if gap > radius[i] or across == 0.0:
-                touching = False
-            else:
-                d[0] = -gap / across * x[i, 0]
-                d[1] = -gap / across * x[i, 1]
-                r_wall = -2.0 * cylinder if across < cylinder else 2.0 * cylinder
-                vw[0] += spin * x[i, 1] / across
-                vw[1] -= spin * x[i, 0] / across
+            d0 = -gap / across * x[i, 0]
+            d1 = -gap / across * x[i, 1]
+            rw = -2.0 * cylinder if across < cylinder else 2.0 * cylinder
+            v0 += spin * x[i, 1] / across
+            v1 -= spin * x[i, 0] / across
         else:
             below = x[i, wallstyle] - lo
             above = hi - x[i, wallstyle]
-            d[wallstyle] = below if below < above else -above
-        rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
-        if not touching or rsq >= radius[i] * radius[i] or rsq == 0.0:
-            if with_history:
-                history[i, :] = 0.0
+            gap = below if below < above else -above
+            if wallstyle == 0:
+                d0 = gap
+            elif wallstyle == 1:
+                d1 = gap
+            else:
+                d2 = gap
+        r = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        if r == 0.0:
             continue
-        r = math.sqrt(rsq)
-        for k in range(3):
-            n[k] = d[k] / r
-        r_eff = radius[i] if r_wall == 0.0 else radius[i] * r_wall / (radius[i] + r_wall)
-        vr0 = v[i, 0] - vw[0]
-        vr1 = v[i, 1] - vw[1]
-        vr2 = v[i, 2] - vw[2]
-        v_n = vr0 * n[0] + vr1 * n[1] + vr2 * n[2]
-        w0 = radius[i] * omega[i, 0]
-        w1 = radius[i] * omega[i, 1]
-        w2 = radius[i] * omega[i, 2]
-        vtr[0] = vr0 - v_n * n[0] - (w1 * n[2] - w2 * n[1])
-        vtr[1] = vr1 - v_n * n[1] - (w2 * n[0] - w0 * n[2])
-        vtr[2] = vr2 - v_n * n[2] - (w0 * n[1] - w1 * n[0])
-        shear = history[i] if with_history else history[0]
-        m_eff = contact_models.contact_mass(rmass, body_mass, i)
-        fn = lammps_classic.classic_contact(model, True, radius[i] - r, r_eff, n, v_n, vtr, m_eff, kn, kt,
-                                            gamma_n, gamma_t, xmu, limit_damping, update, dt, shear,
-                                            tangential)
-        for k in range(3):
-            f[i, k] += fn * n[k] + tangential[k]
-        torque[i, 0] -= radius[i] * (n[1] * tangential[2] - n[2] * tangential[1])
-        torque[i, 1] -= radius[i] * (n[2] * tangential[0] - n[0] * tangential[2])
-        torque[i, 2] -= radius[i] * (n[0] * tangential[1] - n[1] * tangential[0])
+        distance[base] = r
+        normal[base, 0] = d0 / r
+        normal[base, 1] = d1 / r
+        normal[base, 2] = d2 / r
+        key[base] = 0
+        velocity[base, 0] = v0
+        velocity[base, 1] = v1
+        velocity[base, 2] = v2
+        curvature[base] = rw
+        base += 1
+    starts[count] = base
 
 
 class FixWallGran(Fix):
@@ -252,14 +239,13 @@ class FixWallGran(Fix):
         self.check_motion(sim, wallstyle, args)
         self.wiggle, self.shear = args.wiggle, args.shear
         self.time_origin = sim.step
-        self.spring = None
         self._near, self._count = np.empty(0, dtype=np.int64), 0
-        self._still, self._no_history = np.zeros(3), np.zeros((1, 3))
-        self._scratch = tuple(np.zeros(3) for _ in range(5))
-        if self.model != lammps_classic.HOOKE:
-            name = f"wall_gran_{id}"
-            sim.particles.request(name, width=3)
-            self.spring = name
+        self._still = np.zeros(3)
+        # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
+        self.law = WallLaw(lammps_classic.contact_model(self.model))
+        # one contact a particle (the nearer plane, or the cylinder): its spring, then its normal
+        self.history = ContactHistory(sim, f"wall_gran_{id}", width=self.law.model.history_width + 3, capacity=2)
+        self.table, self._curvature = WallContactTable(), np.zeros(0)
 
     def check_motion(self, sim, wallstyle, wall):
         periodic = sim.box.periodic
@@ -301,6 +287,8 @@ class FixWallGran(Fix):
         return lo, hi, velocity, spin
 
     def setup(self, sim):
+        self.law.bind(lammps_classic.constants(self.model, self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu,
+                                               self.limit_damping, sim.ntypes))
         self.pre_neighbor(sim)
         self.forces(sim, update=False)
 
@@ -318,23 +306,28 @@ class FixWallGran(Fix):
         lo, hi = self.lo, self.hi
         if self.wiggle:
             lo, hi, _, _ = self.wall_state(sim)
-        history = a[self.spring] if self.spring else self._no_history
         self._count = near_wall(a["x"], a["radius"], a["mask"], sim.groups.bit(self.group), p.nlocal,
-                                self.wallstyle, lo, hi, self.cylinder, margin, self._near, history,
-                                self.spring is not None)
+                                self.wallstyle, lo, hi, self.cylinder, margin, self._near, self.history.partner)
 
     def post_force(self, sim):
         self.forces(sim, update=True)
 
     def forces(self, sim, update):
-        a = sim.particles.arrays
+        p = sim.particles
+        a = p.arrays
         if self.wiggle or self.shear:
             lo, hi, velocity, spin = self.wall_state(sim)
         else:
             lo, hi, velocity, spin = self.lo, self.hi, self._still, 0.0
-        history = a[self.spring] if self.spring else self._no_history
-        wall_gran_forces(a["x"], a["v"], a["omega"], a["radius"], a["rmass"],
-                         a.get("body_mass", contact_models.NO_BODY_MASS), a["f"], a["torque"], self._near,
-                         self._count, self.wallstyle, lo, hi, self.cylinder, velocity, spin, self.model,
-                         self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, sim.dt,
-                         update, history, *self._scratch)
+        table = self.table.room(self._count, self._count)
+        if len(self._curvature) < table.rows:
+            self._curvature = np.zeros(table.rows)
+        distance, normal, key, _, wall_velocity = table.arrays()
+        wall_table(a["x"], self._near, self._count, self.wallstyle, lo, hi, self.cylinder, velocity, spin,
+                   table.starts, distance, normal, key, wall_velocity, self._curvature)
+        bad, _ = self.law.forces(sim, self._near, self._count, table.starts, table.arrays(), table.contact_force,
+                                 self.history, 0, a["f"], a["torque"], update, radius=a["radius"], mass=a["rmass"],
+                                 omega=a["omega"], body_mass=a.get("body_mass", contact_models.NO_BODY_MASS),
+                                 curvature=self._curvature)
+        if bad >= 0:
+            self.history.overflowed(p.tag[bad])

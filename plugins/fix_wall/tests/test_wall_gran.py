@@ -125,7 +125,8 @@ def test_a_turning_cylinder_drags_a_sphere_at_its_own_contact_point(tmp_path):
 
 def test_the_spring_grows_in_contact_and_is_zeroed_when_the_sphere_leaves(tmp_path):
     """A sphere sliding on the floor while lifting off: its spring holds v_t dt per step (stuck
-    below the Coulomb limit at first), and is gone once it no longer touches."""
+    below the Coulomb limit at first), and is gone once it no longer touches (its contact slot
+    freed: an empty slot)."""
     sim = one_sphere(tmp_path, (5, 5, 0.499), f"""
         timestep 0.0001
         fix 1 all test/nve_sphere
@@ -133,11 +134,12 @@ def test_the_spring_grows_in_contact_and_is_zeroed_when_the_sphere_leaves(tmp_pa
         """)
     sim.particles.v[0] = (0.01, 0.0, 2.0)
     sim.command("run 1")
-    spring = sim.particles.arrays["wall_gran_w"]
-    assert spring[0] == pytest.approx([0.01 * 0.0001, 0.0, 0.0], rel=1e-2)
+    partner, spring = sim.fixes["w"].history.partner, sim.fixes["w"].history.values
+    assert partner[0, 0] == 0
+    assert spring[0, :3] == pytest.approx([0.01 * 0.0001, 0.0, 0.0], rel=1e-2)
     sim.command("run 20")
     assert sim.x[0, 2] > 0.5
-    assert (sim.particles.arrays["wall_gran_w"][0] == 0.0).all()
+    assert (sim.fixes["w"].history.partner[0] < 0).all()
 
 
 @pytest.mark.parametrize("neighbor", ["neigh_modify delay 0 every 1 check yes", "neigh_modify every 40 check no"])

@@ -65,15 +65,18 @@ def fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, 
 
 
 @njit(cache=True)
-def fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, k):
+def fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, curvature, k):
     """Particle i whose centre is ``distance[k]`` < R_i from a wall element, normal ``normal[k]`` from
     the surface to the centre, the wall moving at ``wall_velocity[k]`` at the contact point; its
-    mass a rigid body's where it is in one (``body_mass``, else empty)."""
+    mass a rigid body's where it is in one (``body_mass``, else empty). A curved wall of radius
+    ``curvature[k]`` (negative: concave; an empty array, or 0: flat) makes R* = R_i r_w / (R_i + r_w)
+    (LAMMPS's fix wall/gran zcylinder); else R* = R_i."""
     c[R] = distance[k]
     c[RADIUS_I] = radius[i]
     c[RADIUS_J] = 0.0
     c[DELTA] = radius[i] - distance[k]
-    c[R_EFF] = radius[i]
+    wall_radius = curvature[k] if len(curvature) > 0 else 0.0
+    c[R_EFF] = radius[i] if wall_radius == 0.0 else radius[i] * wall_radius / (radius[i] + wall_radius)
     c[WALL] = 1.0
     c[NX] = normal[k, 0]
     c[NY] = normal[k, 1]
@@ -335,9 +338,9 @@ def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offse
 WALL_FORCES = '''
 
 @njit(cache=True, _nrt=False)
-def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity, v, omega, f, torque, radius, rmass,
-                body_mass, ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots, c, hist,
-                force, tangential, contact_force, log, logged, transfer_cos):
+def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity, curvature, v, omega, f, torque,
+                radius, rmass, body_mass, ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots,
+                c, hist, force, tangential, contact_force, log, logged, transfer_cos):
     """Force and torque on each particle rows[k] (k < nrows) from its wall contacts starts[k] ..
     starts[k + 1] (distance of its centre from the element ``key``, normal from the surface to the
     centre, contact point ``touch``, the wall's velocity there), each contact's force into
@@ -364,7 +367,7 @@ def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity
             s = slots[k - start]
             for h in range(width):
                 hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
-            fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, k)
+            fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, curvature, k)
             contact(c, coeff, ptype[i], wall_type, hist)
             if s >= 0:
                 for h in range(width):

@@ -1,4 +1,5 @@
-r"""LAMMPS's classic granular contact laws, in LAMMPS's own formulas: the law of ``pair_style
+r"""LAMMPS's classic granular contact laws, in LAMMPS's own formulas (their sub-models are
+``pdps_granular_contact.classic``; ``contact_model`` composes them): the law of ``pair_style
 gran/hooke``, ``gran/hooke/history`` and ``gran/hertz/history`` (Silbert et al., Phys. Rev. E 64,
 051302 (2001); Brilliantov et al., Phys. Rev. E 53, 5382 (1996); Zhang & Makse, Phys. Rev. E 72,
 011301 (2005)) and of ``fix wall/gran`` with those styles.
@@ -8,7 +9,7 @@ A contact of body i with body j (a sphere or a wall) with overlap :math:`\delta 
 relative velocity :math:`\mathbf{v}_i - \mathbf{v}_j` has the normal part :math:`v_n` along
 :math:`\mathbf{n}` and the tangential part :math:`\mathbf{v}_t`, and with the spins the contact
 points slide at :math:`\mathbf{v}_{tr} = \mathbf{v}_t - (R_i\boldsymbol\omega_i +
-R_j\boldsymbol\omega_j)\times\mathbf{n}` (the caller computes it: lever arms are the radii, as
+R_j\boldsymbol\omega_j)\times\mathbf{n}` (classic.surface_default computes it: lever arms are the radii, as
 LAMMPS). With :math:`s = 1` (Hooke) or :math:`s = \sqrt{\delta R^*}` (Hertz, LAMMPS's "polyhertz"):
 
 .. math::
@@ -55,7 +56,6 @@ zero: with no stiffness it carries no force.
 import math
 from typing import Annotated
 
-from numba import njit
 from pydantic import BeforeValidator
 
 from pdps_core.api import StyleArgs, param
@@ -95,48 +95,18 @@ class ClassicLaw(StyleArgs):
         return kn, kt, self.gamma_n, gamma_t
 
 
-@njit(cache=True)
-def classic_contact(model, wall, overlap, r_eff, n, v_n, vtr, m_eff, kn, kt, gamma_n, gamma_t, xmu,
-                    limit_damping, update, dt, shear, tangential):
-    """One contact: returns F_n (along n, on i); the tangential force on i into ``tangential``;
-    ``shear`` (the spring, history styles) is updated in place. ``wall``: fix wall/gran's variant
-    of the spring (module docstring)."""
-    root = math.sqrt(overlap * r_eff)
-    scale = root if model == HERTZ_HISTORY else 1.0
-    fn = scale * (kn * overlap - m_eff * gamma_n * v_n)
-    if limit_damping and fn < 0.0:
-        fn = 0.0
-    fn_limit = xmu * abs(fn)
-    damping = m_eff * gamma_t * scale
-    if model == HOOKE:
-        vrel = math.sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2])
-        ft = min(fn_limit, damping * vrel) / vrel if vrel != 0.0 else 0.0
-        for d in range(3):
-            tangential[d] = -ft * vtr[d]
-        return fn
-    stiffness = kt * root if wall else kt * scale
-    relaxed = kt if wall else kt * scale
-    if update:
-        for d in range(3):
-            shear[d] += vtr[d] * dt
-    length = math.sqrt(shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2])
-    if update:
-        along = shear[0] * n[0] + shear[1] * n[1] + shear[2] * n[2]
-        for d in range(3):
-            shear[d] -= along * n[d]
-    for d in range(3):
-        tangential[d] = -(stiffness * shear[d] + damping * vtr[d])
-    fs = math.sqrt(tangential[0] ** 2 + tangential[1] ** 2 + tangential[2] ** 2)
-    if fs > fn_limit:
-        if length != 0.0:
-            ratio = fn_limit / fs
-            for d in range(3):
-                tangential[d] *= ratio
-                shear[d] = -(tangential[d] + damping * vtr[d]) / relaxed if relaxed > 0.0 else 0.0
-        else:
-            for d in range(3):
-                tangential[d] = 0.0
-    return fn
+def contact_model(model):
+    """The classic law ``model`` composed of pdps_granular_contact.classic's sub-models."""
+    from .composition import ContactModel
+    return ContactModel("classic", {"normal": "hertz" if model == HERTZ_HISTORY else "hooke",
+                                    "tangential": "no_history" if model == HOOKE else "history"})
+
+
+def constants(model, kn, kt, gamma_n, gamma_t, xmu, limit_damping, ntypes):
+    """The classic sub-models' coefficients (the same for every type pair)."""
+    from .classic.base import Constants
+    return Constants(ntypes, kn=kn, kt=kt, gamma_n=gamma_n, gamma_t=gamma_t, xmu=xmu, limit_damping=limit_damping,
+                     hertz=model == HERTZ_HISTORY)
 
 
 def contact_time(kn, gamma_n, m_eff):

@@ -43,8 +43,6 @@ from numba import njit
 
 from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, keyword
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
-from pdps_granular_contact.classic.base import Constants
-from pdps_granular_contact.composition import ContactModel
 from pdps_granular_contact.contact_loop import touching_pairs
 from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, pack_slots
 from pdps_granular_contact.contact_state import SIZE
@@ -120,9 +118,7 @@ class PairGran(Pair):
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 6)), 2)
         self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
         # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
-        self.contact_model = ContactModel("classic", {
-            "normal": "hertz" if self.model == lammps_classic.HERTZ_HISTORY else "hooke",
-            "tangential": "no_history" if self.model == lammps_classic.HOOKE else "history"})
+        self.contact_model = lammps_classic.contact_model(self.model)
         self._state, self._hist = np.zeros(SIZE), np.zeros(max(self.contact_model.history_width, 1))
 
     def init(self, ntypes):
@@ -132,9 +128,8 @@ class PairGran(Pair):
                               "and rotation)")
         if self.model != lammps_classic.HOOKE:
             self.open_history()
-        self.contact_coeff = self.contact_model.bind(Constants(
-            ntypes, kn=self.kn, kt=self.kt, gamma_n=self.gamma_n, gamma_t=self.gamma_t, xmu=self.xmu,
-            limit_damping=self.limit_damping, hertz=self.model == lammps_classic.HERTZ_HISTORY))
+        self.contact_coeff = self.contact_model.bind(lammps_classic.constants(
+            self.model, self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, ntypes))
         self.kernels = self.contact_model.kernels()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
