@@ -48,6 +48,16 @@ from . import contact_loop, contact_state
 PARTS = ("surface", "normal", "damping", "cohesion", "tangential", "rolling", "twisting", "heat")
 
 
+def coefficient_columns(ntypes, tables):
+    """Per-type-pair tables ((ntypes + 1, ntypes + 1) each, or numbers: the same for every pair)
+    side by side, a sub-model's coefficient columns."""
+    n = ntypes + 1
+    out = np.zeros((n, n, len(tables)))
+    for k, table in enumerate(tables):
+        out[:, :, k] = table
+    return out
+
+
 class ContactSubModel(SubModel):
     """One part of a granular contact. A subclass sets ``kind`` (``"gran.cohesion"``), ``name``
     (the script word), ``compute`` (a module-level numba function ``(c, k, hist, h)``, module

@@ -45,6 +45,8 @@ Every slot a sub-model writes is zeroed by the loop before the first sub-model o
 a kind no model fills contributes nothing.
 """
 
+from numba import njit
+
 (R, DELTA, RADIUS_I, RADIUS_J, MASS_I, MASS_J, R_EFF, M_EFF, WALL,
  NX, NY, NZ, VX, VY, VZ, WIX, WIY, WIZ, WJX, WJY, WJZ, DT, UPDATE, DIMENSION, TEMPERATURE_I, TEMPERATURE_J,
  ARM_I, ARM_J, VN, VTX, VTY, VTZ, WRX, WRY, WRZ,
@@ -54,3 +56,18 @@ a kind no model fills contributes nothing.
 SIZE = 51
 # the slots the sub-models write, zeroed before each contact
 FIRST_OUTPUT = ARM_I
+
+
+@njit(cache=True)
+def slide(c):
+    """What every surface model computes once it set the lever arms ARM_I, ARM_J: v_n =
+    (v_i - v_j).n into VN and the sliding velocity of the contact points, v_t - (a_i w_i + a_j w_j)
+    x n, into VT."""
+    vn = c[VX] * c[NX] + c[VY] * c[NY] + c[VZ] * c[NZ]
+    c[VN] = vn
+    w0 = c[ARM_I] * c[WIX] + c[ARM_J] * c[WJX]
+    w1 = c[ARM_I] * c[WIY] + c[ARM_J] * c[WJY]
+    w2 = c[ARM_I] * c[WIZ] + c[ARM_J] * c[WJZ]
+    c[VTX] = c[VX] - vn * c[NX] - (w1 * c[NZ] - w2 * c[NY])
+    c[VTY] = c[VY] - vn * c[NY] - (w2 * c[NX] - w0 * c[NZ])
+    c[VTZ] = c[VZ] - vn * c[NZ] - (w0 * c[NY] - w1 * c[NX])

@@ -7,6 +7,7 @@ import numpy as np
 
 from pdps_core.api import GlobalProperty, ScriptError
 
+from .composition import coefficient_columns
 from .contact_models import restitution_beta, shear_effective, youngs_effective
 
 # LIGGGHTS's property names, the form each is given in, and its range
@@ -83,11 +84,7 @@ class Material:
 
     def columns(self, *tables):
         """Per-type-pair tables (or scalars, the same for every pair) stacked as coefficient columns."""
-        n = self.ntypes + 1
-        out = np.zeros((n, n, len(tables)))
-        for k, table in enumerate(tables):
-            out[:, :, k] = table
-        return out
+        return coefficient_columns(self.ntypes, tables)
 
     def pairs(self, function, *names):
         """A per-type-pair table of ``function(values of names for type i ..., for type j ...)``

@@ -1,8 +1,6 @@
 """What the classic sub-models share: one set of numbers for every type pair."""
 
-import numpy as np
-
-from pdps_granular_contact.composition import ContactSubModel
+from pdps_granular_contact.composition import ContactSubModel, coefficient_columns
 
 
 class Constants:
@@ -13,11 +11,7 @@ class Constants:
         self.ntypes, self.values = ntypes, values
 
     def columns(self, *names):
-        n = self.ntypes + 1
-        out = np.zeros((n, n, len(names)))
-        for k, name in enumerate(names):
-            out[:, :, k] = float(self.values[name])
-        return out
+        return coefficient_columns(self.ntypes, [float(self.values[name]) for name in names])
 
 
 class ClassicSubModel(ContactSubModel):

@@ -1,8 +1,6 @@
 """What PDPS's dem sub-models share: coefficients from the pair style's tables."""
 
-import numpy as np
-
-from pdps_granular_contact.composition import ContactSubModel
+from pdps_granular_contact.composition import ContactSubModel, coefficient_columns
 
 
 class Tables:
@@ -16,11 +14,7 @@ class Tables:
         return self.tables[name]
 
     def columns(self, *tables):
-        n = self.ntypes + 1
-        out = np.zeros((n, n, len(tables)))
-        for k, table in enumerate(tables):
-            out[:, :, k] = table
-        return out
+        return coefficient_columns(self.ntypes, tables)
 
 
 class DemSubModel(ContactSubModel):

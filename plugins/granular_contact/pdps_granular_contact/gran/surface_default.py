@@ -15,8 +15,8 @@ that the rolling models read; against a wall at distance r from i's centre LIGGG
 
 from numba import njit
 
-from pdps_granular_contact.contact_state import (ARM_I, ARM_J, DELTA, NX, NY, NZ, R, RADIUS_I, RADIUS_J, VN, VTX, VTY,
-                                                 VTZ, VX, VY, VZ, WALL, WIX, WIY, WIZ, WJX, WJY, WJZ, WRX, WRY, WRZ)
+from pdps_granular_contact.contact_state import (ARM_I, ARM_J, DELTA, R, RADIUS_I, RADIUS_J, WALL, WIX, WIY, WIZ, WJX,
+                                                 WJY, WJZ, WRX, WRY, WRZ, slide)
 
 from .base import GranSubModel
 
@@ -26,14 +26,7 @@ def sphere_kinematics(c, k, hist, h):
     half = 0.5 * c[DELTA]
     c[ARM_I] = c[RADIUS_I] - half
     c[ARM_J] = 0.0 if c[WALL] > 0.0 else c[RADIUS_J] - half
-    vn = c[VX] * c[NX] + c[VY] * c[NY] + c[VZ] * c[NZ]
-    c[VN] = vn
-    w0 = c[ARM_I] * c[WIX] + c[ARM_J] * c[WJX]
-    w1 = c[ARM_I] * c[WIY] + c[ARM_J] * c[WJY]
-    w2 = c[ARM_I] * c[WIZ] + c[ARM_J] * c[WJZ]
-    c[VTX] = c[VX] - vn * c[NX] - (w1 * c[NZ] - w2 * c[NY])
-    c[VTY] = c[VY] - vn * c[NY] - (w2 * c[NX] - w0 * c[NZ])
-    c[VTZ] = c[VZ] - vn * c[NZ] - (w0 * c[NY] - w1 * c[NX])
+    slide(c)
     if c[WALL] > 0.0:
         scale = c[ARM_I] / c[R]
         c[WRX] = scale * c[WIX]
