@@ -87,6 +87,9 @@ PrimitiveWords = (tuple[Literal["xplane", "yplane", "zplane"], float]
                   | tuple[Literal["xcylinder", "ycylinder", "zcylinder"], float, float, float])
 AXES = {"x": 0, "y": 1, "z": 2}
 WIDTH = LIGGGHTS_WIDTH
+# a primitive wall touches a sphere at one point, so one slot holds its history (ContactHistory's
+# least is two); the default of 16 cost 1.3 kB a particle per wall (26 MB per wall at 20,000)
+PRIMITIVE_CONTACTS = 2
 
 
 @njit(cache=True)
@@ -243,7 +246,8 @@ class FixWallGranModel(Fix):
             self.store = f"force_{self.id}"
             sim.particles.request(self.store, width=3)
         self.table, self.charvel = None, 0.0
-        self.history = ContactHistory(sim, f"wall_{id}", width=WIDTH) if self.primitive is not None else None
+        self.history = (ContactHistory(sim, f"wall_{id}", width=WIDTH, capacity=PRIMITIVE_CONTACTS)
+                        if self.primitive is not None else None)
         self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=WIDTH)
                               for mesh in self.meshes]
         self._near = np.zeros(0, dtype=np.int64)
