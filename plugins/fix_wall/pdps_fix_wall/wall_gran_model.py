@@ -88,6 +88,9 @@ PRIMITIVES = {"xplane": XPLANE, "yplane": YPLANE, "zplane": ZPLANE, "xcylinder":
 PrimitiveWords = (tuple[Literal["xplane", "yplane", "zplane"], float]
                   | tuple[Literal["xcylinder", "ycylinder", "zcylinder"], float, float, float])
 AXES = {"x": 0, "y": 1, "z": 2}
+# a primitive wall touches a sphere at one point, so one slot holds its history (ContactHistory's
+# least is two); the default of 16 cost 1.3 kB a particle per wall (26 MB per wall at 20,000)
+PRIMITIVE_CONTACTS = 2
 
 
 @njit(cache=True)
@@ -217,7 +220,8 @@ class FixWallGranModel(Fix):
         if args.store_force:
             self.store = f"force_{self.id}"
             sim.particles.request(self.store, width=3)
-        self.history = ContactHistory(sim, f"wall_{id}", width=width) if self.primitive is not None else None
+        self.history = (ContactHistory(sim, f"wall_{id}", width=width, capacity=PRIMITIVE_CONTACTS)
+                        if self.primitive is not None else None)
         self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=width)
                               for mesh in self.meshes]
         self.table = WallContactTable()

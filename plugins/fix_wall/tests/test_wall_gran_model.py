@@ -76,6 +76,18 @@ def test_head_on_bounce_off_each_primitive_has_the_pair_restitution(wall, start,
     np.testing.assert_allclose(np.cross(sim.v[0], v), 0.0, atol=1e-9)
 
 
+def test_a_primitive_wall_keeps_two_history_slots_a_particle():
+    """A plane touches a sphere at one point: its contact history is 2 slots a particle (a partner
+    and 6 values each, hertz's spring and the contact's normal: 112 bytes), not the 16 a mesh wall
+    keeps; the bounce, which needs the spring of its one contact, still leaves at e."""
+    sim = bounce("hertz", "primitive type 2 zplane 0.5", (0.0, 0.0, 1.01), (0, 0, -1))
+    arrays = sim.particles.arrays
+    assert arrays["wall_w_partner"].shape[1:] == (2,)
+    assert arrays["wall_w_history"].shape[1:] == (12,)
+    assert arrays["wall_w_partner"].itemsize * 2 + arrays["wall_w_history"].itemsize * 12 == 112
+    assert sim.v[0, 2] == pytest.approx(E12, rel=0.01)
+
+
 def test_hooke_contact_time_against_a_plane():
     """The sphere touches the plane for the linear law's contact time pi / sqrt(kn/m - (gn/2m)^2),
     within 2 % (two time steps)."""
