@@ -16,7 +16,7 @@ import annotated_types
 from pydantic_core import PydanticUndefined
 
 from .run.hookspec import HOOKS
-from .styles import BASES, IN_PROCESS, Pair, StyleArgs, VariableRef, _is_keyword, member_names
+from .styles import BASES, IN_PROCESS, Pair, StyleArgs, SubModel, VariableRef, _is_keyword, member_names
 
 NONE = "-"
 
@@ -267,13 +267,15 @@ def document(entry, cls):
     doc = inspect.getdoc(module) if module is not None else None
     summary, syntax, examples, description = _sections(doc or inspect.getdoc(cls) or "")
     origin = entry.dist if entry.dist == IN_PROCESS else f"{entry.dist} {entry.version}"
-    out = [f"{cls.kind} style {cls.name}  ({origin})", ""]
+    what = "sub-model" if issubclass(cls, SubModel) else "style"
+    out = [f"{cls.kind} {what} {cls.name}  ({origin})", ""]
     if summary:
         out += [summary, ""]
     usage = [cls.usage] if cls.usage else []
     if issubclass(cls, Pair) and cls.coeff_usage:
         usage.append(f"pair_coeff I J {cls.coeff_usage}")
-    out += ["Syntax:", ""] + [_indent(text) for text in (syntax or ["\n".join(usage)])] + [""]
+    if syntax or usage:
+        out += ["Syntax:", ""] + [_indent(text) for text in (syntax or ["\n".join(usage)])] + [""]
     if examples:
         out += ["Examples:", ""] + [_indent(text) + "\n" for text in examples]
     if description:
