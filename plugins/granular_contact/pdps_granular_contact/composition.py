@@ -106,9 +106,11 @@ class ContactModel:
     the sub-models that declare it (``settings_read``); one no chosen sub-model reads is refused, as
     LIGGGHTS refuses a setting no model of the line registers."""
 
-    def __init__(self, family, chosen, settings=None, log=False):
+    def __init__(self, family, chosen, settings=None, log=False, slot_cache=False):
         self.family = family
         self.log = log          # the pair loop lists each contact and its force (ContactTable styles)
+        # the pair loop keeps each list entry's contact slots (a style whose slots stay put between builds)
+        self.slot_cache = slot_cache
         chosen = {"surface": "default", **chosen}
         unknown = [part for part in chosen if part not in PARTS]
         if unknown:
@@ -154,7 +156,7 @@ class ContactModel:
         """The generated module of this composition (module docstring); after ``bind``."""
         text, keyed = self._source()
         parts = "_".join(f"{m.part}_{m.name}" for m in self.sub_models)
-        origin = f"{self.family}_{parts}" + ("_log" if self.log else "")
+        origin = f"{self.family}_{parts}" + ("_log" if self.log else "") + ("_cached" if self.slot_cache else "")
         return generated_module(origin, text, keyed)
 
     def _source(self):
@@ -182,11 +184,14 @@ class ContactModel:
                   "    for s in range(FIRST_OUTPUT, SIZE):", "        c[s] = 0.0", *calls]
         with_history = self.history_width > 0
         heat = self.part("heat") is not None
-        blocks = dict(load=contact_loop.LOAD if with_history else "", store=contact_loop.STORE if with_history else "",
+        load = contact_loop.LOAD_CACHED if self.slot_cache else contact_loop.LOAD
+        blocks = dict(load=load if with_history else "", store=contact_loop.STORE if with_history else "",
                       heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
                       heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else "")
         lines.append(contact_loop.PAIR_FORCES.format(**blocks))
         # the touching loop's body sits one level less deep: its blocks lose four spaces
+        # the touching loop has no list entry to key a slot by: it searches
+        blocks["load"] = contact_loop.LOAD if with_history else ""
         lines.append(contact_loop.PAIR_FORCES_TOUCHING.format(
             **{name: text if name == "heat_zero" else "".join(line[4:] + "\n" for line in text.splitlines())
                for name, text in blocks.items()}))

@@ -230,12 +230,13 @@ PAIR_FORCES = '''
 @njit(cache=True, _nrt=False)
 def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                 nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
+                entry_slots, c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
     slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
     number into ``ntouching[0]`` (the end-of-step sweep of the history reads them); where the
     composition logs its contacts, (i, j) and the force on i into ``log_pairs``, ``log_force``
-    after ``logged[0]``."""
+    after ``logged[0]``; where it keeps the slots of each list entry's contact (``entry_slots``, -1
+    for none yet), they are read there instead of searched for."""
     set_run(c, dt, update, dimension)
 {heat_zero}    m = 0
     for i in range(nlocal):
@@ -284,6 +285,25 @@ def log_contact(c, log_pairs, log_force, logged, i, j):
 LOAD = """            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
+"""
+# The same where each list entry's slots are kept between steps (a style whose slots stay put
+# between two builds of the list: pair gran forgets contacts only at builds): a contact searches its
+# slots among the particle's once, then reads them from ``entry_slots``
+LOAD_CACHED = """            slot_i = entry_slots[k, 0]
+            slot_j = entry_slots[k, 1]
+            if slot_i >= 0 and update:
+                for d in range(len(hist)):
+                    hist[d] = history[i, len(hist) * slot_i + d]
+                # seen this step: a mirror on another rank's ghost goes back to its owner (Mirrors)
+                touched[i, slot_i] = True
+                touched[owner[j] if owner[j] >= 0 else j, slot_j] = True
+            else:
+                slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
+                if update and (slot_i < 0 or slot_j < 0):
+                    return tag[i] if slot_i < 0 else tag[j]
+                if update:
+                    entry_slots[k, 0] = slot_i
+                    entry_slots[k, 1] = slot_j
 """
 STORE = """            if update or slot_i >= 0:
                 store_history(history, owner, i, j, slot_i, slot_j, hist)

@@ -50,6 +50,7 @@ from pdps_granular_contact.contact_state import SIZE
 from pdps_granular_contact.dem.base import Tables
 DEFAULT_CONTACTS = 16
 NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
+NO_SLOTS = np.zeros((0, 2), dtype=np.int32)     # its slots move at every step's sweep: not kept per entry
 
 
 @njit(cache=True)
@@ -251,7 +252,7 @@ class GranularPair(Pair):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
             a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal,
             self._law, np.uint32(0), sim.dt, update, sim.dimension, partner, values, touched, self._touching,
-            self._ntouching, self._state, self._hist, *NO_HEAT, *self.contact_log(nlist))
+            self._ntouching, NO_SLOTS, self._state, self._hist, *NO_HEAT, *self.contact_log(nlist))
 
     def law_tables(self):
         """The contact law's per-type-pair tables by the names its sub-models read."""

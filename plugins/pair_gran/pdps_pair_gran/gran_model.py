@@ -120,6 +120,7 @@ class PairGranModel(PairGran):
         self._rows = self._touching = self._rows_of = None
         self.held, self.mirrors = HeldRows(), Mirrors()
         self._ntouching = np.zeros(1, dtype=np.int64)
+        self._entry_slots = np.full((0, 2), -1, dtype=np.int32)
         self.contact_model = args.contact_model()
         self.history_width = self.contact_model.history_width
         self._state = np.zeros(SIZE)
@@ -205,6 +206,17 @@ class PairGranModel(PairGran):
         a = p.arrays
         return a["Temp"], a["heatFlux"], a["directionalHeatFlux"]
 
+    def entry_slots(self, nlist, npairs, fresh):
+        """Each list entry's contact slots (on i, on j's owner), kept between steps: a contact's are
+        searched for among its particles' once and read here after (pair_forces), valid while the
+        slots stay put, between two sweeps of stale contacts (at list builds); ``fresh``: forget
+        them (a build, a run's setup, which packs the slots)."""
+        if len(self._entry_slots) < npairs:
+            self._entry_slots = np.full((npairs + npairs // 4 + 16, 2), -1, dtype=np.int32)
+        elif fresh:
+            self._entry_slots[:npairs] = -1
+        return self._entry_slots
+
     def _history_arrays(self):
         if self.history is None:
             return self._no_history[0], self._no_history[1]
@@ -244,13 +256,14 @@ class PairGranModel(PairGran):
         if with_history and not update:
             pack_slots(partner, values, p.nall)
         touched = self.touched_flags(p.nall if with_history else 1, capacity)
-        rows, touching, _ = self.list_rows(nlist, p.nlocal)
+        rows, touching, npairs = self.list_rows(nlist, p.nlocal)
+        entry_slots = self.entry_slots(nlist, npairs, fresh=not update or not self.held.ready(nlist))
         a = p.arrays
         bad = self.kernels.pair_forces(
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
-            sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, self._state,
-            self._hist, *self._heat_arrays(p), *NO_LOG)
+            sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, entry_slots,
+            self._state, self._hist, *self._heat_arrays(p), *NO_LOG)
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
@@ -261,6 +274,8 @@ class PairGranModel(PairGran):
                     touched[:] = False
                 else:
                     self.held.sweep_all(sim, nlist, partner, values, touched)
+                    # the sweep packed the slots: each entry's are searched for again
+                    self._entry_slots[:npairs] = -1
         if not update or bad >= 0:
             self.held.invalidate()
         if bad >= 0:

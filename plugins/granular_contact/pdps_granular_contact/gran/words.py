@@ -36,4 +36,4 @@ class GranModelArgs(StyleArgs):
         chosen = {part: getattr(self, word) for word, part in PART_WORDS.items() if getattr(self, word) != "off"}
         if heat is not None:
             chosen["heat"] = heat
-        return ContactModel("gran", chosen, {name: getattr(self, name) for name in SETTINGS})
+        return ContactModel("gran", chosen, {name: getattr(self, name) for name in SETTINGS}, slot_cache=True)
