@@ -128,7 +128,7 @@ class WallLaw:
         a particle whose history overflowed, the contacts' log when ``log_rows``)."""
         p = sim.particles
         slots = history.partner.shape[1]
-        most = int(np.diff(starts[:nrows + 1]).max()) if nrows else 0
+        most = most_contacts(starts, nrows)
         if len(self._used) < slots or len(self._slots) < most:
             self._used, self._slots = np.zeros(slots, dtype=np.bool_), np.zeros(most + most // 4 + 4, dtype=np.int64)
         buffer, logged = self.log_buffer(log_rows)
@@ -233,6 +233,16 @@ def check_law_numbers(e=None, kn=None, cn=None, kt=None, ct=None, mu=None):
     for name, value in (("Cn", cn), ("kt", kt), ("Ct", ct), ("mu", mu)):
         if value is not None and value < 0.0:
             raise ScriptError(f"{name} must be >= 0 (got {value:g})")
+
+
+@njit(cache=True)
+def most_contacts(starts, nrows):
+    """The most contacts of one particle in a contact table (its rows starts[k] .. starts[k + 1]),
+    without a step's temporary array."""
+    most = 0
+    for k in range(nrows):
+        most = max(most, starts[k + 1] - starts[k])
+    return most
 
 
 @njit(cache=True)
