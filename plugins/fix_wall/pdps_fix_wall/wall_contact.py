@@ -36,7 +36,6 @@ from numba import njit
 from pdps_core.api import ScriptError
 from pdps_granular_contact import contact_models
 from pdps_granular_contact.composition import ContactModel
-from pdps_granular_contact.contact_state import SIZE
 from pdps_granular_contact.dem.base import Tables
 
 LSD, HERTZ = 0, 1
@@ -90,7 +89,6 @@ class WallLaw:
     def __init__(self, model):
         self.model = model
         self.coeff = self.kernels = None
-        self._state, self._hist = np.zeros(SIZE), np.zeros(model.history_width)
         self._vectors = (np.zeros(3), np.zeros(3))
         self._used, self._slots = np.zeros(0, dtype=np.bool_), np.zeros(0, dtype=np.int64)
         self._not_logged = np.zeros(1, dtype=np.int64)
@@ -135,7 +133,7 @@ class WallLaw:
         bad = self.kernels.wall_forces(
             rows, starts, nrows, *contacts, curvature, p.v, omega, f, torque, radius, mass, body_mass, p.type, wall_type,
             self.coeff, sim.dt, update, sim.dimension, history.partner, history.values, self._used, self._slots,
-            self._state, self._hist, *self._vectors, contact_force, buffer, logged, transfer_cos)
+            *self._vectors, contact_force, buffer, logged, transfer_cos)
         return bad, buffer[:logged[0]]
 
 

@@ -1,7 +1,11 @@
 """The parts of the generated contact loops (composition.ContactModel.kernels) that do not depend on
 the sub-models: filling a contact's quantities (contact_state) from the particle arrays, applying
 its forces and torques, and the loop templates themselves. A generated module imports everything
-here, then defines ``contact(c, coeff, ti, tj, hist)`` (the sub-models in order) and the loops below.
+here and from contact_block, then defines ``HISTORY`` (the values a contact keeps), ``contact(c,
+coeff, ti, tj, hist)`` (the sub-models in order) and the loops below. Pair loops go a block of
+contacts at a time (contact_block's docstring): they gather each touching pair into the block's
+columns (``gather_pair``), compute the block (``block_contacts``) and add its results to the
+particles (``scatter_contacts``) in list order.
 """
 
 import math
@@ -12,13 +16,19 @@ from numba import njit
 from pdps_core.api import find_slot
 
 from .contact_models import contact_mass
-from .contact_slots import load_history, store_history, wall_slots
+from .contact_block import (BLOCK, HIST_IN, IN_DX, IN_DY, IN_DZ, IN_FROZEN_I, IN_FROZEN_J, IN_MASS_I, IN_MASS_J,
+                            IN_RADIUS_I, IN_RADIUS_J, IN_TEMPERATURE_I, IN_TEMPERATURE_J, IN_VX, IN_VY, IN_VZ, IN_WIX,
+                            IN_WIY, IN_WIZ, IN_WJX, IN_WJY, IN_WJZ, OUT_FX, OUT_FY, OUT_FZ, OUT_HEAT, OUT_TIX, OUT_TIY,
+                            OUT_TIZ, OUT_TJX, OUT_TJY, OUT_TJZ, ROW_I, ROW_J, SLOT_I, SLOT_J, TYPE_I, TYPE_J, sqrt)
+from .contact_models import contact_mass
+from .contact_slots import load_history, wall_slots
 from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, HEAT, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ,
                             M_EFF, NX, NY, NZ, R, RADIUS_I, RADIUS_J, R_EFF, UPDATE, VX, VY, VZ, WALL, WIX, WIY, WIZ,
-                            WJX, WJY, WJZ, ARM_I, ARM_J)
+                            WJX, WJY, WJZ, ARM_I, ARM_J, TEMPERATURE_I, TEMPERATURE_J)
 
-__all__ = ["math", "find_slot", "load_history", "store_history", "wall_slots", "set_run", "fill_pair", "fill_wall",
-           "apply_pair", "apply_wall", "apply_heat", "log_contact", "tangential_torque"]
+__all__ = ["math", "find_slot", "load_history", "wall_slots", "set_run", "fill_pair", "fill_wall", "apply_wall",
+           "tangential_torque", "gather_pair", "gather_temperatures", "fill_block", "block_result", "apply_block",
+           "apply_block_heat", "log_block"]
 
 
 @njit(cache=True)
@@ -105,33 +115,6 @@ def tangential_torque(c, arm, out):
 
 
 @njit(cache=True)
-def apply_pair(c, f, torque, i, j):
-    """Force F_n n + F_t on i and its negative on j; torques -a n x F_t on both, and the rolling and
-    twisting torques (-M on i, +M on j)."""
-    fx = c[FN] * c[NX] + c[FTX]
-    fy = c[FN] * c[NY] + c[FTY]
-    fz = c[FN] * c[NZ] + c[FTZ]
-    f[i, 0] += fx
-    f[i, 1] += fy
-    f[i, 2] += fz
-    f[j, 0] -= fx
-    f[j, 1] -= fy
-    f[j, 2] -= fz
-    cx = c[NY] * c[FTZ] - c[NZ] * c[FTY]
-    cy = c[NZ] * c[FTX] - c[NX] * c[FTZ]
-    cz = c[NX] * c[FTY] - c[NY] * c[FTX]
-    mx = c[MRX] + c[MTX]
-    my = c[MRY] + c[MTY]
-    mz = c[MRZ] + c[MTZ]
-    torque[i, 0] -= c[ARM_I] * cx + mx
-    torque[i, 1] -= c[ARM_I] * cy + my
-    torque[i, 2] -= c[ARM_I] * cz + mz
-    torque[j, 0] += mx - c[ARM_J] * cx
-    torque[j, 1] += my - c[ARM_J] * cy
-    torque[j, 2] += mz - c[ARM_J] * cz
-
-
-@njit(cache=True)
 def apply_wall(c, f, torque, i, force, tangential):
     """Force and torque on particle i from a wall contact; the force into ``force`` (3), the torque
     of the tangential force alone into ``tangential`` (3)."""
@@ -146,29 +129,138 @@ def apply_wall(c, f, torque, i, force, tangential):
     torque[i, 2] += tangential[2] - c[MRZ] - c[MTZ]
 
 
-# The same over the touching entries of a list found first (``touching``: their entries, ``rows``:
-# each entry's particle i): one flat, branch-free pass finds the few listed pairs that touch, which
-# a loop per particle pays for with a mispredicted exit at most particles (gran_box)
-PAIR_FORCES_TOUCHING = '''
+@njit(inline="always")
+def gather_pair(block_in, block_index, b, v, omega, radius, rmass, body_mass, type_, mask, freeze_bit, i, j, delx, dely,
+                delz, slot_i, slot_j):
+    """Spheres i and j at separation (delx, dely, delz) = x_i - x_j, touching, into column b of the
+    block (fill_block computes from them what fill_pair does)."""
+    block_in[IN_DX * BLOCK + b] = delx
+    block_in[IN_DY * BLOCK + b] = dely
+    block_in[IN_DZ * BLOCK + b] = delz
+    block_in[IN_RADIUS_I * BLOCK + b] = radius[i]
+    block_in[IN_RADIUS_J * BLOCK + b] = radius[j]
+    block_in[IN_MASS_I * BLOCK + b] = contact_mass(rmass, body_mass, i)
+    block_in[IN_MASS_J * BLOCK + b] = contact_mass(rmass, body_mass, j)
+    block_in[IN_FROZEN_I * BLOCK + b] = 1.0 if mask[i] & freeze_bit else 0.0
+    block_in[IN_FROZEN_J * BLOCK + b] = 1.0 if mask[j] & freeze_bit else 0.0
+    block_in[IN_VX * BLOCK + b] = v[i, 0] - v[j, 0]
+    block_in[IN_VY * BLOCK + b] = v[i, 1] - v[j, 1]
+    block_in[IN_VZ * BLOCK + b] = v[i, 2] - v[j, 2]
+    block_in[IN_WIX * BLOCK + b] = omega[i, 0]
+    block_in[IN_WIY * BLOCK + b] = omega[i, 1]
+    block_in[IN_WIZ * BLOCK + b] = omega[i, 2]
+    block_in[IN_WJX * BLOCK + b] = omega[j, 0]
+    block_in[IN_WJY * BLOCK + b] = omega[j, 1]
+    block_in[IN_WJZ * BLOCK + b] = omega[j, 2]
+    block_index[ROW_I * BLOCK + b] = i
+    block_index[ROW_J * BLOCK + b] = j
+    block_index[SLOT_I * BLOCK + b] = slot_i
+    block_index[SLOT_J * BLOCK + b] = slot_j
+    block_index[TYPE_I * BLOCK + b] = type_[i]
+    block_index[TYPE_J * BLOCK + b] = type_[j]
 
-@njit(cache=True, _nrt=False)
-def pair_forces_touching(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, rows,
-                         neighbors, touching, ntouching, coeff, freeze_bit, dt, update, dimension, partner, history,
-                         touched, c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
-    """pair_forces over the list entries ``touching[:ntouching]`` (touching_pairs found them)."""
-    set_run(c, dt, update, dimension)
-{heat_zero}    for m in range(ntouching):
-        i = rows[touching[m]]
-        j = neighbors[touching[m]]
-        delx = x[i, 0] - x[j, 0]
-        dely = x[i, 1] - x[j, 1]
-        delz = x[i, 2] - x[j, 2]
-        rsq = delx * delx + dely * dely + delz * delz
-{load}        fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-{heat_fill}        contact(c, coeff, type_[i], type_[j], hist)
-{store}        apply_pair(c, f, torque, i, j)
-{heat_apply}{log}    return -1
-'''
+
+@njit(inline="always")
+def gather_temperatures(block_in, b, temp, i, j):
+    block_in[IN_TEMPERATURE_I * BLOCK + b] = temp[i]
+    block_in[IN_TEMPERATURE_J * BLOCK + b] = temp[j]
+
+
+@njit(inline="always", _nrt=False, error_model="numpy")
+def fill_block(c, block_in, m, dt, update, dimension):
+    """fill_pair and set_run for contact m of the block, from what gather_pair put there."""
+    c[DT] = dt
+    c[UPDATE] = update
+    c[DIMENSION] = dimension
+    delx = block_in[IN_DX * BLOCK + m]
+    dely = block_in[IN_DY * BLOCK + m]
+    delz = block_in[IN_DZ * BLOCK + m]
+    r = sqrt(delx * delx + dely * dely + delz * delz)
+    radius_i = block_in[IN_RADIUS_I * BLOCK + m]
+    radius_j = block_in[IN_RADIUS_J * BLOCK + m]
+    c[R] = r
+    c[RADIUS_I] = radius_i
+    c[RADIUS_J] = radius_j
+    c[DELTA] = radius_i + radius_j - r
+    c[R_EFF] = radius_i * radius_j / (radius_i + radius_j)
+    c[WALL] = 0.0
+    c[NX] = delx / r
+    c[NY] = dely / r
+    c[NZ] = delz / r
+    m_i = block_in[IN_MASS_I * BLOCK + m]
+    m_j = block_in[IN_MASS_J * BLOCK + m]
+    c[MASS_I] = m_i
+    c[MASS_J] = m_j
+    m_eff = m_i * m_j / (m_i + m_j)
+    # a particle held at rest (fix freeze) meets the other with the other's mass
+    m_eff = m_j if block_in[IN_FROZEN_I * BLOCK + m] != 0.0 else m_eff
+    m_eff = m_i if block_in[IN_FROZEN_J * BLOCK + m] != 0.0 else m_eff
+    c[M_EFF] = m_eff
+    c[VX] = block_in[IN_VX * BLOCK + m]
+    c[VY] = block_in[IN_VY * BLOCK + m]
+    c[VZ] = block_in[IN_VZ * BLOCK + m]
+    c[WIX] = block_in[IN_WIX * BLOCK + m]
+    c[WIY] = block_in[IN_WIY * BLOCK + m]
+    c[WIZ] = block_in[IN_WIZ * BLOCK + m]
+    c[WJX] = block_in[IN_WJX * BLOCK + m]
+    c[WJY] = block_in[IN_WJY * BLOCK + m]
+    c[WJZ] = block_in[IN_WJZ * BLOCK + m]
+
+
+@njit(inline="always", _nrt=False, error_model="numpy")
+def block_result(c, block_out, m):
+    """Contact m's force F_n n + F_t on i, and the torques on i (-a_i n x F_t - M) and on j
+    (-a_j n x F_t + M), into the block."""
+    cx = c[NY] * c[FTZ] - c[NZ] * c[FTY]
+    cy = c[NZ] * c[FTX] - c[NX] * c[FTZ]
+    cz = c[NX] * c[FTY] - c[NY] * c[FTX]
+    mx = c[MRX] + c[MTX]
+    my = c[MRY] + c[MTY]
+    mz = c[MRZ] + c[MTZ]
+    block_out[OUT_FX * BLOCK + m] = c[FN] * c[NX] + c[FTX]
+    block_out[OUT_FY * BLOCK + m] = c[FN] * c[NY] + c[FTY]
+    block_out[OUT_FZ * BLOCK + m] = c[FN] * c[NZ] + c[FTZ]
+    block_out[OUT_TIX * BLOCK + m] = -(c[ARM_I] * cx + mx)
+    block_out[OUT_TIY * BLOCK + m] = -(c[ARM_I] * cy + my)
+    block_out[OUT_TIZ * BLOCK + m] = -(c[ARM_I] * cz + mz)
+    block_out[OUT_TJX * BLOCK + m] = mx - c[ARM_J] * cx
+    block_out[OUT_TJY * BLOCK + m] = my - c[ARM_J] * cy
+    block_out[OUT_TJZ * BLOCK + m] = mz - c[ARM_J] * cz
+
+
+@njit(inline="always")
+def apply_block(block_out, m, f, torque, i, j):
+    """Contact m's force on i and its negative on j, and their torques."""
+    for d in range(3):
+        force = block_out[(OUT_FX + d) * BLOCK + m]
+        f[i, d] += force
+        f[j, d] -= force
+        torque[i, d] += block_out[(OUT_TIX + d) * BLOCK + m]
+        torque[j, d] += block_out[(OUT_TJX + d) * BLOCK + m]
+
+
+@njit(inline="always")
+def apply_block_heat(block_in, block_out, m, heat_flux, directional, i, j):
+    """Contact m's heat Q into i and -Q into j; half of Q (x_i - x_j) to each one's directional flux."""
+    q = block_out[OUT_HEAT * BLOCK + m]
+    heat_flux[i] += q
+    heat_flux[j] -= q
+    half = 0.5 * q
+    for d in range(3):
+        directional[i, d] += half * block_in[(IN_DX + d) * BLOCK + m]
+        directional[j, d] += half * block_in[(IN_DX + d) * BLOCK + m]
+
+
+@njit(inline="always")
+def log_block(block_out, m, log_pairs, log_force, logged, i, j):
+    """Contact m (rows i, j) and its force on i, after ``logged[0]`` (a ContactTable style's log)."""
+    row = logged[0]
+    if row < log_pairs.shape[0]:
+        log_pairs[row, 0] = i
+        log_pairs[row, 1] = j
+        for d in range(3):
+            log_force[row, d] = block_out[(OUT_FX + d) * BLOCK + m]
+        logged[0] = row + 1
 
 
 @njit(cache=True)
@@ -193,6 +285,67 @@ def touching_pairs(x, radius, rows, neighbors, npairs, touching):
     return m
 
 
+
+# The contacts gathered into a block, each through the sub-models (inlined, on a stack copy of its
+# quantities: contact_block), into the block's results; compiled vectorised (ContactModel.pair_kernels)
+BLOCK_CONTACTS = '''
+
+@njit(inline="always", _nrt=False, error_model="numpy")
+def block_contact(c, hist, block_in, block_out, m, coeff, ti, tj, dt, update, dimension):
+    fill_block(c, block_in, m, dt, update, dimension)
+{heat_fill}{hist_in}    contact(c, coeff, ti, tj, hist)
+    block_result(c, block_out, m)
+{heat_out}{hist_out}
+
+@njit(cache=True, _nrt=False, error_model="numpy")
+def block_contacts(n, block_in, block_out, block_index, coeff, dt, update, dimension):
+    """The n contacts gathered into block_in through the sub-models into block_out."""
+    c = stack_array(SIZE)
+    hist = stack_array(HIST_SIZE)
+    flag = 1.0 if update else 0.0
+    # one type: the coefficients are read once, not gathered per contact
+    if coeff.shape[0] == 2:
+        for m in range(n):
+            block_contact(c, hist, block_in, block_out, m, coeff, 1, 1, dt, flag, dimension)
+    else:
+        for m in range(n):
+            block_contact(c, hist, block_in, block_out, m, coeff, block_index[TYPE_I * BLOCK + m],
+                          block_index[TYPE_J * BLOCK + m], dt, flag, dimension)
+'''
+HEAT_FILL_BLOCK = """    c[TEMPERATURE_I] = block_in[IN_TEMPERATURE_I * BLOCK + m]
+    c[TEMPERATURE_J] = block_in[IN_TEMPERATURE_J * BLOCK + m]
+"""
+HEAT_OUT_BLOCK = """    block_out[OUT_HEAT * BLOCK + m] = c[HEAT]
+"""
+
+# The block's results added to the particles, in list order: forces, torques, the contacts' new
+# history on both particles (i keeps it, j's owner its negative: the same spring seen from j)
+SCATTER_CONTACTS = '''
+
+@njit(cache=True, _nrt=False)
+def scatter_contacts(n, block_in, block_out, block_index, f, torque, history, owner, update, heat_flux, directional,
+                     log_pairs, log_force, logged):
+    for m in range(n):
+        i = block_index[ROW_I * BLOCK + m]
+        j = block_index[ROW_J * BLOCK + m]
+        apply_block(block_out, m, f, torque, i, j)
+{store}{heat_apply}{log}'''
+STORE = """        slot_i = block_index[SLOT_I * BLOCK + m]
+        slot_j = block_index[SLOT_J * BLOCK + m]
+        if update or slot_i >= 0:
+            jo = owner[j] if owner[j] >= 0 else j
+            for h in range(HISTORY):
+                value = block_out[(HIST_OUT + h) * BLOCK + m]
+                history[i, HISTORY * slot_i + h] = value
+                if slot_j >= 0:
+                    history[jo, HISTORY * slot_j + h] = -value
+"""
+HEAT_APPLY = """        apply_block_heat(block_in, block_out, m, heat_flux, directional, i, j)
+"""
+# each contact and its force on i, for a style that lists its last force computation's contacts
+LOG = """        log_block(block_out, m, log_pairs, log_force, logged, i, j)
+"""
+
 # the heat conduction of a contact, where a heat model is composed (fix heat/gran's): the fluxes of
 # owned and ghost rows are zeroed first, ghosts' summed onto their owners by the fix afterwards
 HEAT_ZERO = """    for i in range(len(heat_flux)):
@@ -200,26 +353,23 @@ HEAT_ZERO = """    for i in range(len(heat_flux)):
         for d in range(3):
             directional[i, d] = 0.0
 """
-HEAT_FILL = """            c[TEMPERATURE_I] = temp[i]
-            c[TEMPERATURE_J] = temp[j]
+HEAT_GATHER = """            gather_temperatures(block_in, b, temp, i, j)
 """
-HEAT_APPLY = """            apply_heat(c, heat_flux, directional, i, j, delx, dely, delz)
+HIST_GATHER = """            for h in range(HISTORY):
+                block_in[(HIST_IN + h) * BLOCK + b] = hist[h]
+"""
+NO_SLOTS = """            slot_i = -1
+            slot_j = -1
 """
 
+# a full block computed and added; the calls after the pair loop, for the last, partial one
+FLUSH = """block_contacts(b, block_in, block_out, block_index, coeff, dt, update, dimension)
+scatter_contacts(b, block_in, block_out, block_index, f, torque, history, owner, update, heat_flux, directional,
+                 log_pairs, log_force, logged)"""
 
-@njit(cache=True)
-def apply_heat(c, heat_flux, directional, i, j, delx, dely, delz):
-    """The contact's heat Q into i and -Q into j; half of Q (x_i - x_j) to each one's directional flux."""
-    q = c[HEAT]
-    heat_flux[i] += q
-    heat_flux[j] -= q
-    half = 0.5 * q
-    directional[i, 0] += half * delx
-    directional[i, 1] += half * dely
-    directional[i, 2] += half * delz
-    directional[j, 0] += half * delx
-    directional[j, 1] += half * dely
-    directional[j, 2] += half * delz
+
+def flush(indent):
+    return "".join(" " * indent + line + "\n" for line in FLUSH.splitlines())
 
 
 # _nrt=False in the loops below: the contact helpers store into arrays under branches, where numba
@@ -230,15 +380,17 @@ PAIR_FORCES = '''
 @njit(cache=True, _nrt=False)
 def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                 nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                entry_slots, c, hist, temp, heat_flux, directional, log_pairs, log_force, logged):
+                entry_slots, block_in, block_out, block_index, temp, heat_flux, directional, log_pairs, log_force,
+                logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
     slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
     number into ``ntouching[0]`` (the end-of-step sweep of the history reads them); where the
     composition logs its contacts, (i, j) and the force on i into ``log_pairs``, ``log_force``
     after ``logged[0]``; where it keeps the slots of each list entry's contact (``entry_slots``, -1
-    for none yet), they are read there instead of searched for."""
-    set_run(c, dt, update, dimension)
-{heat_zero}    m = 0
+    for none yet), they are read there instead of searched for. ``block_*``: ContactModel.block()."""
+{heat_zero}    hist = stack_array(HIST_SIZE)
+    m = 0
+    b = 0
     for i in range(nlocal):
         xi0 = x[i, 0]
         xi1 = x[i, 1]
@@ -257,31 +409,43 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
                 continue
 {load}            touching[m] = k
             m += 1
-            fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-{heat_fill}            contact(c, coeff, type_[i], type_[j], hist)
-{store}            apply_pair(c, f, torque, i, j)
-{heat_apply}{log}    ntouching[0] = m
+            gather_pair(block_in, block_index, b, v, omega, radius, rmass, body_mass, type_, mask, freeze_bit, i, j,
+                        delx, dely, delz, slot_i, slot_j)
+{heat_gather}{hist_gather}            b += 1
+            if b == BLOCK:
+{flush_full}                b = 0
+{flush_last}    ntouching[0] = m
     return -1
 '''
 
-# each contact and its force on i, for a style that lists its last force computation's contacts
-LOG = """            log_contact(c, log_pairs, log_force, logged, i, j)
-"""
+# The same over the touching entries of a list found first (``touching``: their entries, ``rows``:
+# each entry's particle i): one flat, branch-free pass finds the few listed pairs that touch, which
+# a loop per particle pays for with a mispredicted exit at most particles (gran_box)
+PAIR_FORCES_TOUCHING = '''
 
+@njit(cache=True, _nrt=False)
+def pair_forces_touching(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, rows,
+                         neighbors, touching, ntouching, coeff, freeze_bit, dt, update, dimension, partner, history,
+                         touched, block_in, block_out, block_index, temp, heat_flux, directional, log_pairs,
+                         log_force, logged):
+    """pair_forces over the list entries ``touching[:ntouching]`` (touching_pairs found them)."""
+{heat_zero}    hist = stack_array(HIST_SIZE)
+    b = 0
+    for m in range(ntouching):
+        i = rows[touching[m]]
+        j = neighbors[touching[m]]
+        delx = x[i, 0] - x[j, 0]
+        dely = x[i, 1] - x[j, 1]
+        delz = x[i, 2] - x[j, 2]
+{load}        gather_pair(block_in, block_index, b, v, omega, radius, rmass, body_mass, type_, mask, freeze_bit, i, j,
+                    delx, dely, delz, slot_i, slot_j)
+{heat_gather}{hist_gather}        b += 1
+        if b == BLOCK:
+{flush_full}            b = 0
+{flush_last}    return -1
+'''
 
-@njit(cache=True)
-def log_contact(c, log_pairs, log_force, logged, i, j):
-    m = logged[0]
-    if m < log_pairs.shape[0]:
-        log_pairs[m, 0] = i
-        log_pairs[m, 1] = j
-        log_force[m, 0] = c[FN] * c[NX] + c[FTX]
-        log_force[m, 1] = c[FN] * c[NY] + c[FTY]
-        log_force[m, 2] = c[FN] * c[NZ] + c[FTZ]
-        logged[0] = m + 1
-
-
-# the history of a contact (composed laws that keep some), loaded and stored on both particles
+# the history of a contact (composed laws that keep some), found or made on both particles
 LOAD = """            slot_i, slot_j = load_history(partner, history, touched, owner, tag, i, j, update, hist)
             if update and (slot_i < 0 or slot_j < 0):
                 return tag[i] if slot_i < 0 else tag[j]
@@ -292,8 +456,8 @@ LOAD = """            slot_i, slot_j = load_history(partner, history, touched, o
 LOAD_CACHED = """            slot_i = entry_slots[k, 0]
             slot_j = entry_slots[k, 1]
             if slot_i >= 0 and update:
-                for d in range(len(hist)):
-                    hist[d] = history[i, len(hist) * slot_i + d]
+                for d in range(HISTORY):
+                    hist[d] = history[i, HISTORY * slot_i + d]
                 # seen this step: a mirror on another rank's ghost goes back to its owner (Mirrors)
                 touched[i, slot_i] = True
                 touched[owner[j] if owner[j] >= 0 else j, slot_j] = True
@@ -305,22 +469,20 @@ LOAD_CACHED = """            slot_i = entry_slots[k, 0]
                     entry_slots[k, 0] = slot_i
                     entry_slots[k, 1] = slot_j
 """
-STORE = """            if update or slot_i >= 0:
-                store_history(history, owner, i, j, slot_i, slot_j, hist)
-"""
 
 PAIR_CONTACTS = '''
 
 @njit(cache=True, _nrt=False)
 def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offsets, neighbors, nlocal, coeff,
-                  freeze_bit, dt, dimension, partner, history, groupbit, rows, force_out, tangential_out, hist_out,
-                  c, hist):
+                  freeze_bit, dt, dimension, partner, history, groupbit, rows, force_out, tangential_out, hist_out):
     """Every contact of the half list whose two particles are in ``groupbit``, evaluated as the
     setup force computation does (nothing stored): returns how many; their rows (i, j), forces on
     i, tangential parts and history values (as i sees them) into the ``*_out`` arrays."""
+    c = stack_array(SIZE)
+    hist = stack_array(HIST_SIZE)
     set_run(c, dt, False, dimension)
     count = 0
-    width = len(hist)
+    width = HISTORY
     for i in range(nlocal):
         if not mask[i] & groupbit:
             continue
@@ -360,7 +522,7 @@ WALL_FORCES = '''
 @njit(cache=True, _nrt=False)
 def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity, curvature, v, omega, f, torque,
                 radius, rmass, body_mass, ptype, wall_type, coeff, dt, update, dimension, partner, values, used, slots,
-                c, hist, force, tangential, contact_force, log, logged, transfer_cos):
+                force, tangential, contact_force, log, logged, transfer_cos):
     """Force and torque on each particle rows[k] (k < nrows) from its wall contacts starts[k] ..
     starts[k + 1] (distance of its centre from the element ``key``, normal from the surface to the
     centre, contact point ``touch``, the wall's velocity there), each contact's force into
@@ -368,8 +530,10 @@ def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity
     force, torque of the tangential force, overlap, area, history), one row per touching contact
     after ``logged[0]`` (which counts them). Returns -1, or the row of a particle with no free history
     slot."""
+    c = stack_array(SIZE)
+    hist = stack_array(HIST_SIZE)
     set_run(c, dt, update, dimension)
-    width = len(hist)
+    width = HISTORY
     stride = values.shape[1] // partner.shape[1]
     for q in range(nrows):
         i = rows[q]

@@ -46,7 +46,6 @@ from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError
 from pdps_granular_contact import contact_models
 from pdps_granular_contact.composition import ContactModel
 from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, contact_rows, pack_slots
-from pdps_granular_contact.contact_state import SIZE
 from pdps_granular_contact.dem.base import Tables
 DEFAULT_CONTACTS = 16
 NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
@@ -82,7 +81,7 @@ class GranularPair(Pair):
         self._law = None
         self.contact_model = ContactModel("dem", {"normal": self.normal_model, "tangential": "spring"},
                                           {"limit_damping": args.limit_damping}, log=True)
-        self._state, self._hist = np.zeros(SIZE), np.zeros(self.contact_model.history_width)
+        self._block = self.contact_model.block()
         self._touching, self._ntouching = np.zeros(1, dtype=np.int32), np.zeros(1, dtype=np.int64)
         self._log_pairs = None
         self._logged = np.zeros(1, dtype=np.int64)
@@ -245,14 +244,14 @@ class GranularPair(Pair):
         a = p.arrays
         if self._law is None:
             self._law = self.contact_model.bind(Tables(sim.ntypes, self.law_tables()))
-            self.kernels = self.contact_model.kernels()
+            self.kernels = self.contact_model.pair_kernels()
         if len(self._touching) < len(nlist.neighbors):
             self._touching = np.empty(len(nlist.neighbors) + len(nlist.neighbors) // 4 + 16, dtype=np.int32)
         return self.kernels.pair_forces(
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
             a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal,
             self._law, np.uint32(0), sim.dt, update, sim.dimension, partner, values, touched, self._touching,
-            self._ntouching, NO_SLOTS, self._state, self._hist, *NO_HEAT, *self.contact_log(nlist))
+            self._ntouching, NO_SLOTS, *self._block, *NO_HEAT, *self.contact_log(nlist))
 
     def law_tables(self):
         """The contact law's per-type-pair tables by the names its sub-models read."""

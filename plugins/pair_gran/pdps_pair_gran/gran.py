@@ -45,7 +45,6 @@ from pdps_core.api import ContactHistory, Pair, ScriptError, SimulationError, ke
 from pdps_granular_contact import contact_models, lammps_classic, liggghts2
 from pdps_granular_contact.contact_loop import touching_pairs
 from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, pack_slots
-from pdps_granular_contact.contact_state import SIZE
 
 DEFAULT_CONTACTS = 16
 # the composed loop's arrays for heat and a contact log, which the classic styles have not
@@ -119,7 +118,7 @@ class PairGran(Pair):
         self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
         # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
         self.contact_model = lammps_classic.contact_model(self.model)
-        self._state, self._hist = np.zeros(SIZE), np.zeros(max(self.contact_model.history_width, 1))
+        self._block = self.contact_model.block()
 
     def init(self, ntypes):
         sim = self.sim
@@ -130,7 +129,7 @@ class PairGran(Pair):
             self.open_history()
         self.contact_coeff = self.contact_model.bind(lammps_classic.constants(
             self.model, self.kn, self.kt, self.gamma_n, self.gamma_t, self.xmu, self.limit_damping, ntypes))
-        self.kernels = self.contact_model.kernels()
+        self.kernels = self.contact_model.pair_kernels()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
         self.check_box()
@@ -235,12 +234,11 @@ class PairGran(Pair):
         a = p.arrays
         rows, touching, npairs = self.list_rows(nlist, p.nlocal)
         ntouching = touching_pairs(a["x"], a["radius"], rows, nlist.neighbors, npairs, touching)
-        width = self.contact_model.history_width
         bad = self.kernels.pair_forces_touching(
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
             a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, rows, nlist.neighbors, touching, ntouching,
-            self.contact_coeff, self.freeze_bit, sim.dt, update, sim.dimension, partner, values, touched, self._state,
-            self._hist[:width] if width else self._hist, *NO_HEAT_OR_LOG)
+            self.contact_coeff, self.freeze_bit, sim.dt, update, sim.dimension, partner, values, touched, *self._block,
+            *NO_HEAT_OR_LOG)
         if self.history is not None and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:

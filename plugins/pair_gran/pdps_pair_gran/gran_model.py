@@ -93,7 +93,6 @@ from pdps_granular_contact.material import Material, find_property
 from pdps_granular_contact.gran.words import GranModelArgs
 from pdps_granular_contact.contact_models import NO_BODY_MASS
 from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
-from pdps_granular_contact.contact_state import SIZE
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
@@ -123,8 +122,7 @@ class PairGranModel(PairGran):
         self._entry_slots = np.full((0, 2), -1, dtype=np.int32)
         self.contact_model = args.contact_model()
         self.history_width = self.contact_model.history_width
-        self._state = np.zeros(SIZE)
-        self._hist = np.zeros(max(self.history_width, 1))
+        self._block = self.contact_model.block()
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 2)), 2)
         self.contact_coeff = self.kernels = None
 
@@ -138,7 +136,7 @@ class PairGranModel(PairGran):
         heat = self.heat_fix(sim)
         self.contact_model = self.args.contact_model(None if heat is None else heat.contact_heat_model(sim))
         self.contact_coeff = self.contact_model.bind(self.material)
-        self.kernels = self.contact_model.kernels()
+        self.kernels = self.contact_model.pair_kernels()
         if self.history_width > 0:
             self.open_history()
         self.freeze_bit = np.uint32(self.frozen_group_bit(sim))
@@ -242,7 +240,7 @@ class PairGranModel(PairGran):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["tag"],
             nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit, sim.dt, sim.dimension,
             partner if width else partner[:0], values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
-            hist, self._state, self._hist[:width])
+            hist)
         return {"i": rows[:count, 0], "j": rows[:count, 1], "force": force[:count],
                 "tangential": tangential[:count], "history": hist[:count]}
 
@@ -263,7 +261,7 @@ class PairGranModel(PairGran):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
             sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, entry_slots,
-            self._state, self._hist, *self._heat_arrays(p), *NO_LOG)
+            *self._block, *self._heat_arrays(p), *NO_LOG)
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
