@@ -26,7 +26,9 @@ their history and coefficients; ``kernels()`` generates (once per composition, c
 pdps_core's pair loops are) the loops a pair style and a wall call:
 
 - ``pair_forces``: every touching pair of a half list: history loaded and stored on both particles,
-  force and torques on both;
+  force and torques on both; a block of contacts at a time (``contact_block``: gathered, computed in
+  one vectorised loop, added in list order), which ``pair_kernels()`` compiles and ``block()``
+  gives the work arrays of;
 - ``pair_contacts``: the same contacts evaluated as a setup force computation does, nothing stored,
   for compute pair/gran/local;
 - ``wall_forces``: one particle's contacts with the elements of a wall.
