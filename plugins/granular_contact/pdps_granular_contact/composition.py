@@ -167,7 +167,7 @@ class ContactModel:
                  "from pdps_granular_contact.contact_loop import *  # noqa: F401,F403",
                  "from pdps_granular_contact.contact_state import *  # noqa: F401,F403"]
         keyed = [inspect.getsource(contact_loop).encode(), inspect.getsource(contact_state).encode()]
-        calls, column = [], 0
+        calls, column, beyond = [], 0, ""
         for k, (model, offset) in enumerate(zip(self.sub_models, self.history_offsets)):
             function = getattr(model.compute, "py_func", model.compute)
             module = importlib.import_module(function.__module__)
@@ -179,6 +179,15 @@ class ContactModel:
                 coeff = "(0.0,)"
             column += ncoeff
             calls.append(f"    part_{k}(c, {coeff}, hist, {offset})")
+            pulloff = getattr(model, "pulloff", None)
+            if pulloff is not None:
+                # a contact lasting beyond touching (contact_loop.BEYOND)
+                lines += [f"from {pulloff.__module__} import {pulloff.__name__} as pulloff_{k}", "", "",
+                          "@njit(cache=True)", "def lasting(coeff, ti, tj, radius_i, radius_j, partner, i, tag_j):",
+                          '    """Once made, the contact of i and j reaches the pull-off distance beyond touching."""',
+                          "    if find_slot(partner, i, tag_j) < 0:", "        return 0.0",
+                          f"    return pulloff_{k}({coeff}, radius_i, radius_j)"]
+                beyond = contact_loop.BEYOND
         lines += ["", "", "@njit(cache=True, _nrt=False)", "def contact(c, coeff, ti, tj, hist):",
                   '    """The sub-models in order, on the contact in c."""',
                   "    for s in range(FIRST_OUTPUT, SIZE):", "        c[s] = 0.0", *calls]
@@ -187,7 +196,8 @@ class ContactModel:
         load = contact_loop.LOAD_CACHED if self.slot_cache else contact_loop.LOAD
         blocks = dict(load=load if with_history else "", store=contact_loop.STORE if with_history else "",
                       heat_zero=contact_loop.HEAT_ZERO if heat else "", heat_fill=contact_loop.HEAT_FILL if heat else "",
-                      heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else "")
+                      heat_apply=contact_loop.HEAT_APPLY if heat else "", log=contact_loop.LOG if self.log else "",
+                      beyond=beyond)
         lines.append(contact_loop.PAIR_FORCES.format(**blocks))
         # the touching loop's body sits one level less deep: its blocks lose four spaces
         # the touching loop has no list entry to key a slot by: it searches

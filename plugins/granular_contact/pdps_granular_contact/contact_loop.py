@@ -252,7 +252,7 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
             delz = xi2 - x[j, 2]
             rsq = delx * delx + dely * dely + delz * delz
             radsum = radi + radius[j]
-            # coincident centres have no normal: no force
+{beyond}            # coincident centres have no normal: no force
             if rsq >= radsum * radsum or rsq == 0.0:
                 continue
 {load}            touching[m] = k
@@ -263,6 +263,12 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
 {heat_apply}{log}    ntouching[0] = m
     return -1
 '''
+
+# a contact that, once made, lasts beyond touching (JKR's neck: a normal model with a ``pulloff``):
+# spheres apart that hold a contact slot reach as far as the generated ``lasting`` says
+BEYOND = """            if rsq >= radsum * radsum:
+                radsum += lasting(coeff, type_[i], type_[j], radi, radius[j], partner, i, tag[j])
+"""
 
 # each contact and its force on i, for a style that lists its last force computation's contacts
 LOG = """            log_contact(c, log_pairs, log_force, logged, i, j)
