@@ -20,7 +20,7 @@ import numpy as np
 
 from pdps_core.api import ScriptError, StyleArgs
 
-from pdps_granular_contact.composition import ContactSubModel
+from pdps_granular_contact.composition import PARTS, ContactSubModel
 
 PAIR, WALL = "pair", "wall"
 
@@ -59,7 +59,7 @@ class Law:
 
     def mix(self, other, i, j):
         """The law of types i, j from this one (i i) and ``other`` (j j), as LAMMPS mixes."""
-        for part in self.parts.keys() | other.parts.keys():
+        for part in (part for part in PARTS if part in self.parts or part in other.parts):
             if self.name(part) != other.name(part):
                 raise ScriptError(f"types {i} and {j} have different {part} models ({self.name(part) or 'none'} and "
                                   f"{other.name(part) or 'none'}): their coefficients cannot be mixed; give pair_coeff "

@@ -27,7 +27,7 @@ def sub_model(part, word):
     """The class of ``part``'s model ``word``, or a one-line error listing the installed ones."""
     known = registry.names(f"granular.{part}")
     if word not in known:
-        raise ScriptError(f"unknown {part} model {word} of pair granular (known: {', '.join(known)})")
+        raise ScriptError(f"{part} model must be one of {', '.join(known)} (got {word})")
     return registry.lookup(f"granular.{part}", word)
 
 
@@ -76,7 +76,7 @@ def read_law(words):
             cutoff, i = (None if cutoff == -1.0 else cutoff), i + 2
             continue
         if word not in SECTIONS:
-            raise ScriptError(f"unknown keyword {word} of pair granular (known: {', '.join(KEYWORDS)})")
+            raise ScriptError(f"keyword must be one of {', '.join(KEYWORDS)} (got {word})")
         if i + 1 >= len(words) or words[i + 1] in KEYWORDS:
             raise ScriptError(f"{word} needs a model (got {words[i + 1] if i + 1 < len(words) else 'nothing'})")
         if word in parts:
@@ -91,7 +91,7 @@ def read_law(words):
         args, i = coefficients(word, cls, words, i + 2)
         parts[word] = (cls, args)
     if "tangential" not in parts:
-        raise ScriptError(f"pair granular needs a tangential model (usage: pair_coeff I J {USAGE})")
+        raise ScriptError("pair granular needs a tangential model: ... tangential TANGENTIAL coefficients (got none)")
     for part, word in DEFAULTS.items():
         if part not in parts:
             cls = sub_model(part, word)
