@@ -16,6 +16,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 from gran import ROOT, UNIT_MASS, record_case  # noqa: E402
 
 DATA = ROOT / "plugins" / "pair_gran" / "tests" / "data" / "granular"
+WALL_DATA = ROOT / "plugins" / "fix_wall" / "tests" / "data" / "wall_granular"
 BOX = dict(folder=DATA, box=(0, 10, 0, 10, 0, 10), boundary="p p p")
 # an oblique collision with spin about every axis: sliding, rolling and twisting all act
 OBLIQUE = [(1, 1.0, 2.0, (4.5, 5.0, 5.0), (1.0, 0.3, 0.0), (3.0, 1.0, 5.0)),
@@ -81,6 +82,37 @@ CASES = {
                "pair_coeff 2 2 hertz/material 3.0e5 0.8 0.2 damping coeff_restitution tangential mindlin NULL 0.5 0.3 "
                "rolling sds 800.0 1.0 0.2",
                "fix 1 all nve/sphere"], steps=2000, every=50),
+    # ---- walls (fix wall/gran granular): no pair style ----
+    "wall_zplane_settle_law": dict(
+        folder=WALL_DATA, box=(0, 10, 0, 10, 0, 10), boundary="p p f",
+        particles=[(1, 1.0, UNIT_MASS, (3.0, 5.0, 0.52), (2.0, 0.0, -0.5), (0.0, 3.0, 1.0)),
+                   (1, 1.4, 0.8, (7.0, 5.0, 0.75), (0.0, -1.0, -0.2), (1.0, 0.0, 2.0))],
+        lines=["fix 1 all nve/sphere", "fix 2 all addforce 0.0 0.0 -1.0",
+               f"fix 3 all wall/gran granular hertz/material 1.0e5 0.5 0.3 tangential mindlin NULL 1.0 0.5 rolling "
+               f"sds 500.0 2.0 0.1 damping coeff_restitution zplane 0.0 NULL"],
+        steps=3000, every=150),
+    "wall_xplanes_hooke_twisting": dict(
+        folder=WALL_DATA, box=(0, 10, 0, 10, 0, 10), boundary="f p p",
+        particles=[(1, 1.0, UNIT_MASS, (7.45, 5.0, 5.0), (1.5, 0.4, 0.2), (3.0, 2.0, 3.0)),
+                   (1, 1.0, UNIT_MASS, (2.6, 5.0, 5.0), (-1.0, 0.0, 0.3), (-2.0, 0.0, 1.0))],
+        lines=["fix 1 all nve/sphere",
+               "fix 3 all wall/gran granular hooke 200000.0 50.0 damping mass_velocity tangential linear_history "
+               "57142.9 0.5 0.4 twisting sds 50.0 0.5 0.05 limit_damping xplane 2.0 8.0"],
+        steps=2000, every=100),
+    "wall_zcylinder_dmt_marshall": dict(
+        folder=WALL_DATA, box=(-5, 5, -5, 5, 0, 10), boundary="f f p",
+        particles=[(1, 1.0, UNIT_MASS, (3.45, 0.0, 5.0), (1.0, 0.5, 0.3), (0.0, 1.0, 2.0))],
+        lines=["fix 1 all nve/sphere", "fix 2 all addforce 1.0 0.2 0.0",
+               "fix 3 all wall/gran granular dmt 1.0e5 500.0 0.3 5.0 tangential mindlin_rescale NULL 1.0 0.5 "
+               "rolling sds 500.0 2.0 0.1 twisting marshall zcylinder 4.0"],
+        steps=2000, every=100),
+    "wall_yplane_shear_tsuji": dict(
+        folder=WALL_DATA, box=(0, 10, 0, 10, 0, 10), boundary="p f p",
+        particles=[(1, 1.0, UNIT_MASS, (5.0, 1.499, 5.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))],
+        lines=["fix 1 all nve/sphere", "fix 2 all addforce 0.0 -1.0 0.0",
+               "fix 3 all wall/gran granular hertz/material 1.0e5 0.7 0.3 damping tsuji tangential mindlin/force "
+               "NULL 1.0 0.4 yplane 1.0 9.0 shear x 0.5"],
+        steps=2000, every=100),
 }
 
 
