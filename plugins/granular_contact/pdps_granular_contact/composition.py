@@ -64,6 +64,9 @@ class ContactSubModel(SubModel):
     docstring), ``history_width`` and ``coefficients``; its module's docstring is its manual page
     (``pdps doc gran.cohesion NAME``): the formula, each coefficient with its unit, the paper."""
     history_width: ClassVar[int] = 0
+    # how each history value is handed to the other body of a pair: -1 (the default) a value seen
+    # negated from there (a tangential spring), +1 one seen the same (a rolling displacement)
+    history_transfer: ClassVar[tuple] = ()
     compute: ClassVar = None
     # the host's model settings this sub-model reads, with their defaults (LIGGGHTS's registerSettings):
     # {"tangential_damping": "on", "limitForce": "off"}
@@ -192,6 +195,17 @@ class ContactModel:
                   '    """The sub-models in order, on the contact in c."""',
                   "    for s in range(FIRST_OUTPUT, SIZE):", "        c[s] = 0.0", *calls]
         with_history = self.history_width > 0
+        # values the same seen from either body (a rolling displacement, a twist angle) go to the
+        # partner as they are, the others negated (contact_slots.store_history)
+        same = tuple(offset + d for model, offset in zip(self.sub_models, self.history_offsets)
+                     for d, factor in enumerate(model.history_transfer) if factor > 0)
+        if with_history and same:
+            lines += ["from pdps_granular_contact.contact_slots import store_history as store_negated", "", "",
+                      "@njit(cache=True)", "def store_history(history, owner, i, j, slot_i, slot_j, hist):",
+                      '    """store_negated, but the values the same from either body go to j unchanged."""',
+                      "    store_negated(history, owner, i, j, slot_i, slot_j, hist)",
+                      "    if slot_j >= 0:", "        jo = owner[j] if owner[j] >= 0 else j",
+                      f"        for d in {same!r}:", "            history[jo, len(hist) * slot_j + d] = hist[d]"]
         heat = self.part("heat") is not None
         load = contact_loop.LOAD_CACHED if self.slot_cache else contact_loop.LOAD
         blocks = dict(load=load if with_history else "", store=contact_loop.STORE if with_history else "",

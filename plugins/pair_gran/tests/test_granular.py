@@ -264,3 +264,25 @@ def test_jkr_reaches_its_pull_off_distance_in_the_neighbor_cutoff(tmp_path):
     sim.command("run 0")
     reach = (3.0 * math.pi ** 2 / 16.0 * 0.25 * 100.0 / (1e5 / 1.82) ** 2) ** (1 / 3)
     assert sim.pair.init(1)[1, 1] == pytest.approx(1.0 + reach)
+
+
+def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged():
+    """What j keeps of a contact i computed: the tangential spring seen from j is -xi, but the
+    rolling displacement (from R* (w_i - w_j) x n) and the twist angle (from (w_i - w_j).n) are the
+    same seen from either sphere, so they go to j as they are and do not flip when the other sphere
+    comes to hold the contact (LAMMPS 22 Jul 2025 negates them too: its trajectories then depend on
+    its atom sort; tests/lammps_scripts/test_granular_settle.py)."""
+    from pdps_granular_contact.composition import ContactModel
+    from pdps_granular_contact.granular.base import Laws
+    from pdps_granular_contact.granular.words import read_law
+    law = read_law("hertz/material 1e5 0.5 0.3 tangential mindlin_rescale NULL 1.0 0.5 rolling sds 500 2 0.1 "
+                   "twisting sds 50 0.5 0.05".split())
+    model = ContactModel("granular", {part: cls.name for part, (cls, _) in law.parts.items()})
+    assert model.history_width == 4 + 3 + 1
+    model.bind(Laws(1, {(1, 1): law}))
+    kernels = model.kernels()
+    history, owner = np.zeros((2, 8)), np.full(2, -1, dtype=np.int64)
+    hist = np.arange(1.0, 9.0)
+    kernels.store_history(history, owner, 0, 1, 0, 0, hist)
+    np.testing.assert_array_equal(history[0], hist)
+    np.testing.assert_array_equal(history[1], [-1, -2, -3, -4, 5, 6, 7, 8])

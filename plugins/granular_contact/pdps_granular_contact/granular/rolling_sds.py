@@ -13,7 +13,10 @@ displacement :math:`\boldsymbol\xi_r` (3 values of history) turns into the tange
 length (where :math:`k_{roll}|\boldsymbol\xi_r\cdot\mathbf{n}| > 10^{-10}\mu_{roll}F_{n,crit}`),
 grows by :math:`\mathbf{v}_{rl}\Delta t`, and at the limit is set to the elastic part of the cut
 force, :math:`-(\mathbf{F}_r + \gamma_{roll}\mathbf{v}_{rl})/k_{roll}`; in a run's setup force
-computation nothing of it is stored (LAMMPS's). Coefficients: ``k_roll`` (force/distance, >= 0),
+computation nothing of it is stored (LAMMPS's). The displacement is the same seen from either
+sphere (:math:`\mathbf{v}_{rl}` does not change when i and j swap), so the other sphere keeps it
+unchanged, not negated as LAMMPS 22 Jul 2025 does, whose trajectories then change when its atom
+sort makes the other sphere hold the contact. Coefficients: ``k_roll`` (force/distance, >= 0),
 ``gamma_roll`` (force*time/distance, >= 0), ``mu_roll`` (dimensionless, >= 0); mixed as geometric
 means. Where LAMMPS would divide by :math:`k_{roll} = 0` the displacement is set to 0.
 
@@ -88,3 +91,5 @@ class RollingSDS(GranularSubModel):
     Args = RollingCoefficients
     compute = rolling_spring
     history_width = 3
+    # the same seen from either sphere: (w_i - w_j) x n and (w_i - w_j).n do not change when i and j swap
+    history_transfer = (1, 1, 1)

@@ -9,7 +9,9 @@ r"""What LAMMPS's twisting models of pair granular share (Marshall, J. Comput. P
     \ \Rightarrow\ M_t = -M_{crit}\,\mathrm{sgn}\,\Omega_t,\ \phi = (M_{crit}\,\mathrm{sgn}\,\Omega_t
     - \gamma_{twist}\Omega_t)/k_{twist}
 
-with :math:`\boldsymbol\tau_i = M_t\mathbf{n} = -\boldsymbol\tau_j`."""
+with :math:`\boldsymbol\tau_i = M_t\mathbf{n} = -\boldsymbol\tau_j`. The angle is the same seen from
+either sphere, so the other sphere keeps it unchanged (LAMMPS 22 Jul 2025 negates it, as it does the
+tangential spring)."""
 
 from numba import njit
 

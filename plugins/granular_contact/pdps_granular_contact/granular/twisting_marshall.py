@@ -33,6 +33,8 @@ class TwistingMarshall(GranularSubModel):
     name = "marshall"
     compute = marshall_twist
     history_width = 1
+    # the same seen from either sphere: (w_i - w_j) x n and (w_i - w_j).n do not change when i and j swap
+    history_transfer = (1,)
 
     def values(self, law, contact):
         return (law.args("tangential").mu_s,)

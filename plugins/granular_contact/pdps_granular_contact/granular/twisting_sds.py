@@ -35,3 +35,5 @@ class TwistingSDS(GranularSubModel):
     Args = TwistingCoefficients
     compute = twist_spring
     history_width = 1
+    # the same seen from either sphere: (w_i - w_j) x n and (w_i - w_j).n do not change when i and j swap
+    history_transfer = (1,)
