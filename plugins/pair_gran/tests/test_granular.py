@@ -267,7 +267,8 @@ def test_jkr_reaches_its_pull_off_distance_in_the_neighbor_cutoff(tmp_path):
 
 
 def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged():
-    """What j keeps of a contact i computed: the tangential spring seen from j is -xi, but the
+    """What j keeps of a contact i computed: the tangential spring seen from j is -xi, but mindlin_rescale's
+    contact radius (LAMMPS's transfer factor +1), the
     rolling displacement (from R* (w_i - w_j) x n) and the twist angle (from (w_i - w_j).n) are the
     same seen from either sphere, so they go to j as they are and do not flip when the other sphere
     comes to hold the contact (LAMMPS 22 Jul 2025 negates them too: its trajectories then depend on
@@ -285,4 +286,4 @@ def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged
     hist = np.arange(1.0, 9.0)
     kernels.store_history(history, owner, 0, 1, 0, 0, hist)
     np.testing.assert_array_equal(history[0], hist)
-    np.testing.assert_array_equal(history[1], [-1, -2, -3, -4, 5, 6, 7, 8])
+    np.testing.assert_array_equal(history[1], [-1, -2, -3, 4, 5, 6, 7, 8])

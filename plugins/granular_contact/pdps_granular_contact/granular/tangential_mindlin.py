@@ -79,8 +79,7 @@ def mindlin_spring(c, k, hist, h, keeps_force, rescales):
     stiffness = k[0] * a
     limit = k[2] * c[FN_LIMIT]
     if rescales:
-        # the partner's copy holds -a_prev (every history value is handed on negated)
-        before = abs(hist[h + 3])
+        before = hist[h + 3]
         if a < before:
             ratio = a / before
             hist[h] *= ratio

@@ -21,3 +21,5 @@ class TangentialMindlinRescale(TangentialMindlin):
     name = "mindlin_rescale"
     compute = mindlin_rescale
     history_width = 4
+    # the contact radius is the same seen from either sphere (LAMMPS's transfer factor +1)
+    history_transfer = (-1, -1, -1, 1)

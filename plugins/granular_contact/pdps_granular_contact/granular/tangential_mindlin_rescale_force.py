@@ -21,3 +21,5 @@ class TangentialMindlinRescaleForce(TangentialMindlin):
     name = "mindlin_rescale/force"
     compute = mindlin_rescale_force
     history_width = 4
+    # the contact radius is the same seen from either sphere (LAMMPS's transfer factor +1)
+    history_transfer = (-1, -1, -1, 1)
