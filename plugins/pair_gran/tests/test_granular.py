@@ -267,12 +267,12 @@ def test_jkr_reaches_its_pull_off_distance_in_the_neighbor_cutoff(tmp_path):
 
 
 def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged():
-    """What j keeps of a contact i computed: the tangential spring seen from j is -xi, but mindlin_rescale's
-    contact radius (LAMMPS's transfer factor +1), the
-    rolling displacement (from R* (w_i - w_j) x n) and the twist angle (from (w_i - w_j).n) are the
-    same seen from either sphere, so they go to j as they are and do not flip when the other sphere
-    comes to hold the contact (LAMMPS 22 Jul 2025 negates them too: its trajectories then depend on
-    its atom sort; tests/lammps_scripts/test_granular_settle.py)."""
+    """What j keeps of a contact i computed: the tangential spring seen from j is -xi, but
+    mindlin_rescale's contact radius (LAMMPS's transfer factor +1), the rolling displacement (from R*
+    (w_i - w_j) x n) and the twist angle (from (w_i - w_j).n) are the same seen from either sphere, so
+    they go to j as they are and do not flip when the other sphere comes to hold the contact (LAMMPS
+    22 Jul 2025 negates the last two: its trajectories then depend on its atom sort;
+    tests/lammps_scripts/test_granular_settle.py)."""
     from pdps_granular_contact.composition import ContactModel
     from pdps_granular_contact.granular.base import Laws
     from pdps_granular_contact.granular.words import read_law
