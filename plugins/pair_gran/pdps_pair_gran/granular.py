@@ -75,31 +75,46 @@ class GranularArgs(StyleArgs):
         return ContactModel("granular", {})
 
 
+class GranularCoeff(StyleArgs):
+    """A pair_coeff line's words after the types, kept as written (a restart file holds them); their
+    Law is read from them (pdps_granular_contact.granular.words)."""
+    words: tuple[str, ...]
+
+    def law(self):
+        return read_law(list(self.words))
+
+
+def law_of(coeff):
+    """The Law of a type pair's coefficients: a pair_coeff line's, or one mixed of two."""
+    return coeff.law() if isinstance(coeff, GranularCoeff) else coeff
+
+
 class PairGranular(PairGranModel):
     name = "granular"
     usage = "pair_style granular [cutoff] [max_contacts N]"
     coeff_usage = USAGE
     Args = GranularArgs
+    Coeff = GranularCoeff
     history_name = "granular_history"
 
     def parse_coeff(self, words):
         law = read_law(words)
         named = {part: cls.name for part, (cls, _) in law.parts.items()}
         for other in self.coeffs.values():
-            before = {part: cls.name for part, (cls, _) in other.parts.items()}
+            before = {part: cls.name for part, (cls, _) in other.law().parts.items()}
             if before != named:
                 differ = next(part for part in sorted(set(before) | set(named)) if before.get(part) != named.get(part))
                 raise ScriptError(f"pdps composes one law for every type pair: {differ} "
                                   f"{named.get(differ, 'none')} differs from the {before.get(differ, 'none')} of an "
                                   f"earlier pair_coeff line (got {named.get(differ, 'none')})")
-        return law
+        return GranularCoeff(words=tuple(words))
 
     def mix(self, i, j):
         for k in (i, j):
             if (k, k) not in self.coeffs:
                 raise ScriptError(f"pair coefficients for types {k} {k} are needed to mix {i} {j}")
         try:
-            return self.coeffs[(i, i)].mix(self.coeffs[(j, j)], i, j)
+            return self.coeffs[(i, i)].law().mix(self.coeffs[(j, j)].law(), i, j)
         except (ValueError, ZeroDivisionError, OverflowError) as exc:
             raise ScriptError(f"pair coefficients for types {i} {j} cannot be mixed ({exc}): give pair_coeff {i} {j}") \
                 from None
@@ -112,11 +127,12 @@ class PairGranular(PairGranModel):
         self.radius_moving, self.radius_frozen = self.largest_radii(ntypes)
         self.check_box()
         cutoffs = Pair.init(self, ntypes)
-        law = next(iter(self.resolved.values()))
+        laws = {pair: law_of(coeff) for pair, coeff in self.resolved.items()}
+        law = next(iter(laws.values()))
         self.contact_model = ContactModel("granular", {part: cls.name for part, (cls, _) in law.parts.items()})
         self.history_width = self.contact_model.history_width
         self._hist = np.zeros(max(self.history_width, 1))
-        self.contact_coeff = self.contact_model.bind(Laws(ntypes, self.resolved))
+        self.contact_coeff = self.contact_model.bind(Laws(ntypes, laws))
         self.kernels = self.contact_model.kernels()
         if self.history_width > 0:
             self.open_history()
@@ -126,7 +142,7 @@ class PairGranular(PairGranModel):
         """LAMMPS's: the pair_coeff cutoff, else the pair_style one, else the largest sum of the radii
         of a moving particle of one type and any of the other (gran's rule) plus JKR's pull-off distance
         of the largest radii."""
-        law = self.resolved[(i, j)]
+        law = law_of(self.resolved[(i, j)])
         if law.cutoff is not None:
             return law.cutoff
         if self.args.cutoff is not None:

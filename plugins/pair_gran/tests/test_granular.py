@@ -287,3 +287,64 @@ def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged
     kernels.store_history(history, owner, 0, 1, 0, 0, hist)
     np.testing.assert_array_equal(history[0], hist)
     np.testing.assert_array_equal(history[1], [-1, -2, -3, 4, 5, 6, 7, 8])
+
+
+def test_same_settling_on_1_and_2_ranks(tmp_path):
+    """A bed of polydisperse spheres settling on a fix wall/gran granular floor, pair granular with
+    every history kind (mindlin_rescale's 4 values, a rolling displacement and a twist angle handed
+    on unchanged), newton off: the same kinetic energies on 1 and 2 ranks."""
+    from pdps_core.testing import run_ranks, sphere_bed, thermo_rows
+    sphere_bed(tmp_path / "bed.data", (12, 6, 4), (0.7, 0.7, 0.7), (0, 0, 0), (15.6, 7.8, 12), ntypes=1, seed=11)
+    law = ("hertz/material 1.0e5 0.5 0.3 damping coeff_restitution tangential mindlin_rescale NULL 1.0 0.5 "
+           "rolling sds 500.0 2.0 0.1 twisting sds 50.0 0.5 0.05")
+    script = f"""\
+        units lj
+        atom_style sphere
+        boundary p p f
+        newton off
+        read_data bed.data
+        pair_style granular
+        pair_coeff * * {law}
+        timestep 0.0001
+        fix 1 all nve/sphere
+        fix 2 all gravity 10.0 vector 0 0 -1
+        fix 3 all wall/gran granular {law} zplane 0.0 NULL
+        compute rke all erotate/sphere
+        thermo_style custom step ke c_rke
+        thermo_modify format float %.15g
+        thermo 500
+        run 3000
+        """
+    one = np.array(thermo_rows(run_ranks(script, 1, tmp_path).stdout))
+    two = np.array(thermo_rows(run_ranks(script, 2, tmp_path).stdout))
+    assert one[:, 0].tolist() == list(range(0, 3001, 500))
+    assert one[-1, 2] > 0.0
+    assert two == pytest.approx(one, rel=1e-9)
+
+
+def test_a_restart_file_carries_the_models_mixing_and_every_history_on(tmp_path):
+    """Two types mixed, mindlin_rescale, rolling and twisting, spheres 1 and 2 in contact at the
+    restart (step 600 of the LAMMPS case material_two_types_mixed, overlap 8e-4): a run split
+    by write_restart / read_restart (which gives back pair granular, its pair_coeff lines and the
+    contacts' history) follows the run split in one process bit for bit (a second run's setup forces
+    see full-step velocities, as LAMMPS's, so a split run is not the straight one)."""
+    from pdps_core.testing import restart_round_trip
+    data = (Path(__file__).parent / "data" / "granular" / "material_two_types_mixed.data").read_text()
+    (tmp_path / "three.data").write_text(data)
+    law = "damping coeff_restitution tangential mindlin_rescale NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall"
+    straight, resumed = restart_round_trip(tmp_path, f"""\
+        units lj
+        atom_style sphere
+        boundary p p p
+        read_data {tmp_path / 'three.data'}
+        pair_style granular
+        pair_coeff 1 1 hertz/material 1.0e5 0.5 0.3 {law}
+        pair_coeff 2 2 hertz/material 3.0e5 0.8 0.2 {law}
+        timestep 0.0001
+        fix 1 all nve/sphere
+        """, 600, 300, split=True, again="fix 1 all nve/sphere")
+    assert resumed.pair.coeffs == straight.pair.coeffs and (1, 2) not in resumed.pair.coeffs
+    for key in ("x", "v", "omega"):
+        got, want = ([getattr(sim.particles, key)[sim.particles.index_of_tag(t)] for t in (1, 2, 3)]
+                     for sim in (resumed, straight))
+        np.testing.assert_array_equal(got, want)
