@@ -113,6 +113,23 @@ CASES = {
                "fix 3 all wall/gran granular hertz/material 1.0e5 0.7 0.3 damping tsuji tangential mindlin/force "
                "NULL 1.0 0.4 yplane 1.0 9.0 shear x 0.5"],
         steps=2000, every=100),
+    # ---- region walls (fix wall/gran/region granular) ----
+    "region_block_corner": dict(
+        folder=WALL_DATA, box=(0, 10, 0, 10, 0, 10), boundary="f f f",
+        particles=[(1, 1.0, UNIT_MASS, (1.6, 5.0, 1.02), (-1.0, 0.6, -0.3), (0.0, 3.0, 1.0)),
+                   (1, 1.2, 0.8, (8.3, 8.2, 1.1), (0.8, 0.9, -0.2), (1.0, -2.0, 2.0))],
+        lines=["region cup block 1.0 9.0 1.0 9.0 0.5 9.0 units box", "fix 1 all nve/sphere",
+               "fix 2 all addforce 0.0 0.0 -1.0",
+               "fix 3 all wall/gran/region granular hertz/material 1.0e5 0.5 0.3 damping coeff_restitution "
+               "tangential mindlin NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall region cup"],
+        steps=3000, every=150),
+    "region_block_obstacle_hooke": dict(
+        folder=WALL_DATA, box=(0, 10, 0, 10, 0, 10), boundary="f f f",
+        particles=[(1, 1.0, UNIT_MASS, (3.45, 5.2, 6.3), (1.0, 0.0, -0.6), (0.0, 0.0, 2.0))],
+        lines=["region rock block 4.0 6.0 4.0 6.0 4.0 6.0 side out units box", "fix 1 all nve/sphere",
+               "fix 3 all wall/gran/region granular hooke 200000.0 50.0 damping mass_velocity tangential "
+               "linear_history 57142.9 0.5 0.4 region rock"],
+        steps=3000, every=150),
 }
 
 

@@ -30,3 +30,20 @@ MODEL = "hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5"
 ])
 def test_bad_lines_are_refused_at_their_line(pdps_cli, words, message):
     assert_refused(pdps_cli(SETUP + f"fix w all wall/gran granular {words}\n"), 6, f"fix: {message}")
+
+
+@pytest.mark.parametrize("words, message", [
+    ("hooke 1e5 NULL 50 NULL 0.5 1 region box", "fix wall/gran/region takes pair granular's models after the word "
+     "granular; the classic styles are not built (got hooke)"),
+    (f"granular {MODEL}", "a region is needed after the model words: region REGION-ID (got none); usage: fix ID "
+     "GROUP wall/gran/region granular NORMAL coefficients [damping DAMPING] tangential TANGENTIAL coefficients "
+     "[rolling ...] [twisting ...] [limit_damping] region REGION-ID"),
+    (f"granular {MODEL} region box contacts", "region needs one region ID and nothing after it (got contacts)"),
+    (f"granular {MODEL} region ball", "region ball (sphere) is curved: its effective radius needs the surface's "
+     "curvature, which pdps's regions do not give (flat ones: block)"),
+    ("granular jkr 1e5 0.5 0.3 1.0 tangential mindlin NULL 1.0 0.5 region box",
+     "jkr on a wall is not built: its contact would outlast touching the wall (got jkr)"),
+])
+def test_bad_region_wall_lines_are_refused_at_their_line(pdps_cli, words, message):
+    done = pdps_cli(SETUP + f"region ball sphere 5 5 5 3\nfix w all wall/gran/region {words}\n")
+    assert_refused(done, 7, f"fix: {message}")

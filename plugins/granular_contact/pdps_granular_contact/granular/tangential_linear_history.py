@@ -23,7 +23,7 @@ from numba import njit
 
 from pdps_core.api import param
 
-from pdps_granular_contact.contact_state import DT, FN_LIMIT, GAMMA_T, KT, UPDATE, VTX, VTY, VTZ
+from pdps_granular_contact.contact_state import DT, FN_LIMIT, UPDATE, VTX, VTY, VTZ
 
 from .base import GranularSubModel, StyleArgs
 from .frame import EPSILON, along_normal, rotate_rescale
@@ -34,7 +34,6 @@ from .tangential_mindlin import coulomb_limit
 def linear_spring(c, k, hist, h):
     """k: k_t, x_gamma_t, mu_s."""
     stiffness = k[0]
-    c[KT] = stiffness
     limit = k[2] * c[FN_LIMIT]
     if c[UPDATE] != 0.0:
         if abs(along_normal(c, hist, h)) * stiffness > EPSILON * limit:
