@@ -348,3 +348,15 @@ def test_a_restart_file_carries_the_models_mixing_and_every_history_on(tmp_path)
         got, want = ([getattr(sim.particles, key)[sim.particles.index_of_tag(t)] for t in (1, 2, 3)]
                      for sim in (resumed, straight))
         np.testing.assert_array_equal(got, want)
+
+
+def test_the_cutoff_keywords_set_the_neighbor_cutoff(tmp_path):
+    """pair_coeff's cutoff for its type pair, else pair_style's, else the radii's sum."""
+    coeff = "hooke 1e5 0.5 tangential linear_history 1e3 1.0 0.5"
+    sim, _ = two_spheres(tmp_path, coeff, 0.0, gap=0.5)
+    sim.command("run 0")
+    assert sim.pair.init(1)[1, 1] == pytest.approx(1.0)
+    sim.command(f"pair_style granular 1.7\npair_coeff * * {coeff}\nrun 0")
+    assert sim.pair.init(1)[1, 1] == pytest.approx(1.7)
+    sim.command(f"pair_coeff * * {coeff} cutoff 2.5\nrun 0")
+    assert sim.pair.init(1)[1, 1] == pytest.approx(2.5)
