@@ -53,7 +53,8 @@ class WallArgs(StyleArgs):
 class WallGranularArgs(WallArgs):
     """The model words (read by pdps_granular_contact.granular.words, not by the keyword parser) and
     the wall's."""
-    law_words: tuple[str, ...] = ()
+    law_words: tuple[str, ...] = param((), names="pair granular's model words and coefficients "
+                                               "(pdps doc granular.PART NAME)")
 
 
 class FixWallGranGranular(FixWallGran):

@@ -29,7 +29,9 @@ Example::
         region cup
 """
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from typing import Literal
+
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 from pdps_granular_contact.composition import ContactModel
 from pdps_granular_contact.granular.base import WALL, Laws
 
@@ -41,9 +43,11 @@ FLAT = ("block",)
 
 
 class WallGranRegionArgs(StyleArgs):
-    """The model words (read by pdps_granular_contact.granular.words) and the region."""
-    law_words: tuple[str, ...]
-    region: str
+    """``granular``, pair granular's model words (read by pdps_granular_contact.granular.words) and
+    the region."""
+    style: Literal["granular", "hooke", "hooke/history", "hertz/history"] = param()
+    law_words: list[str] = param(names="pair granular's model words and coefficients (pdps doc granular.PART NAME)")
+    region: str = keyword(..., names="region ID")
 
 
 class FixWallGranRegion(FixWallDEM):
@@ -53,23 +57,11 @@ class FixWallGranRegion(FixWallDEM):
     Args = WallGranRegionArgs
 
     @classmethod
-    def parse(cls, words):
-        if not words or words[0] != "granular":
-            raise ScriptError(f"fix wall/gran/region takes pair granular's models after the word granular; the "
-                              f"classic styles are not built (got {words[0] if words else 'nothing'})")
-        if "region" not in words:
-            raise ScriptError(f"a region is needed after the model words: region REGION-ID (got none); usage: "
-                              f"{cls.usage}")
-        at = words.index("region")
-        if len(words) != at + 2:
-            extra = words[at + 2] if len(words) > at + 2 else "nothing"
-            raise ScriptError(f"region needs one region ID and nothing after it (got {extra})")
-        FixWallGranGranular.wall_law(words[1:at])
-        return cls.Args(law_words=tuple(words[1:at]), region=words[at + 1])
-
-    @classmethod
     def check_args(cls, args):
-        """Nothing more than parse checks."""
+        if args.style != "granular":
+            raise ScriptError(f"the classic styles of fix wall/gran/region are not built: give granular and pair "
+                              f"granular's models (hooke ... damping mass_velocity tangential ...) (got {args.style})")
+        FixWallGranGranular.wall_law(args.law_words)
 
     def __init__(self, sim, id, group, args):
         Fix.__init__(self, sim, id, group, args)

@@ -78,7 +78,7 @@ class GranularArgs(StyleArgs):
 class GranularCoeff(StyleArgs):
     """A pair_coeff line's words after the types, kept as written (a restart file holds them); their
     Law is read from them (pdps_granular_contact.granular.words)."""
-    words: tuple[str, ...]
+    words: tuple[str, ...] = param(names="pair granular's model words and coefficients (pdps doc granular.PART NAME)")
 
     def law(self):
         return read_law(list(self.words))

@@ -155,7 +155,8 @@ def test_a_jkr_contact_holds_below_the_pull_off_force_and_breaks_above(tmp_path)
     pulloff = 3.0 * math.pi * 10.0 * 0.25
     ends = {}
     for force in (0.97 * pulloff, 1.03 * pulloff):
-        sim, record = two_spheres(tmp_path, "jkr 1.0e5 400.0 0.3 10.0 damping velocity tangential linear_history 1000.0 0.5 0.5",
+        sim, record = two_spheres(tmp_path, "jkr 1.0e5 400.0 0.3 10.0 damping velocity tangential linear_history "
+                                  "1000.0 0.5 0.5",
                                   0.0, gap=-1e-4, dt=1e-4, extra=f"group left id 1\ngroup right id 2\n"
                                   f"fix 2 left addforce {-force!r} 0 0\nfix 3 right addforce {force!r} 0 0\n")
         sim.command("run 30000")
@@ -331,7 +332,8 @@ def test_a_restart_file_carries_the_models_mixing_and_every_history_on(tmp_path)
     from pdps_core.testing import restart_round_trip
     data = (Path(__file__).parent / "data" / "granular" / "material_two_types_mixed.data").read_text()
     (tmp_path / "three.data").write_text(data)
-    law = "damping coeff_restitution tangential mindlin_rescale NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall"
+    law = ("damping coeff_restitution tangential mindlin_rescale NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 "
+           "twisting marshall")
     straight, resumed = restart_round_trip(tmp_path, f"""\
         units lj
         atom_style sphere
