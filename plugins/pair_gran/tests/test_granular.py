@@ -229,6 +229,13 @@ def test_bad_pair_coeff_lines_are_refused_at_their_line(pdps_cli, coeff, message
     assert_refused(pdps_cli(SETUP + f"pair_coeff {coeff}\n"), 6, f"pair_coeff: {message}")
 
 
+def test_none_leaves_a_part_out():
+    from pdps_granular_contact.granular.words import read_law
+    law = read_law("hooke 1e5 0.5 tangential linear_history 1e3 1.0 0.5 rolling none twisting none heat none".split())
+    assert sorted(law.parts) == ["damping", "normal", "tangential"]
+    assert law.name("damping") == "viscoelastic"
+
+
 def test_other_models_for_another_type_pair_are_refused(pdps_cli):
     done = pdps_cli(SETUP + "pair_coeff 1 1 hooke 1e5 0.5 tangential linear_history 1e3 1.0 0.5\n"
                     "pair_coeff 2 2 hooke 1e5 0.5 tangential mindlin 1e3 1.0 0.5\n")

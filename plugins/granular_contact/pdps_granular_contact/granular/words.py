@@ -81,12 +81,12 @@ def read_law(words):
             raise ScriptError(f"{word} needs a model (got {words[i + 1] if i + 1 < len(words) else 'nothing'})")
         if word in parts:
             raise ScriptError(f"{word} is given twice (got {words[i + 1]})")
+        if words[i + 1] == "none" and word in ("rolling", "twisting", "heat"):
+            i += 2
+            continue
         if word == "heat":
             raise ScriptError(f"heat models of pair granular are not built in pdps: they need LAMMPS's fix heat/flow "
                               f"and atom style sphere/temp, which pdps has not (got heat {words[i + 1]})")
-        if words[i + 1] == "none" and word in ("rolling", "twisting"):
-            i += 2
-            continue
         cls = sub_model(word, words[i + 1])
         args, i = coefficients(word, cls, words, i + 2)
         parts[word] = (cls, args)
