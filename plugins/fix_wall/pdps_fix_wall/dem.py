@@ -151,12 +151,6 @@ class FixWallDEM(Fix):
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        self.regions = []
-        for _, ident in args.regions:
-            region = sim.region(ident)
-            if type(region).surface_contacts is Region.surface_contacts:
-                raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
-            self.regions.append(region)
         if len(args.law) == 7:
             e, kn, cn, kt, ct, mu, self.cutoff = args.law
             self.law = ContactLaw.lsd(kn, mu, e=e, cn=cn, kt=kt, ct=ct)
@@ -164,14 +158,25 @@ class FixWallDEM(Fix):
             e, kn, mu, *cutoff = args.law
             self.law = ContactLaw.lsd(kn, mu, e=e)
             self.cutoff = cutoff[0] if cutoff else None
-        self.history = ContactHistory(sim, f"wall_{id}", width=HISTORY_WIDTH)
+        self.use_regions(sim, id, [ident for _, ident in args.regions], self.law.wall_law(), HISTORY_WIDTH)
+
+    def use_regions(self, sim, id, idents, wall_law, width):
+        """The regions ``idents`` as walls of the composed law ``wall_law`` (a WallLaw), each particle's
+        contacts with them keeping ``width`` values, and the buffers of the contacts of a step."""
+        self.regions = []
+        for ident in idents:
+            region = sim.region(ident)
+            if type(region).surface_contacts is Region.surface_contacts:
+                raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
+            self.regions.append(region)
+        self.history = ContactHistory(sim, f"wall_{id}", width=width)
         self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0
         # positions of the near particles and their contacts' offsets, in buffers kept between rebuilds
         self._x_near_rows, self._offset_rows = np.empty((0, 3)), np.empty(1, dtype=np.int64)
         self._cutoffs = np.empty(0)
         self._still = np.zeros((0, 3))
         self._contact_force = np.empty((0, 3))
-        self.wall_law = self.law.wall_law()
+        self.wall_law = wall_law
         self._rows = [SurfaceContacts() for _ in self.regions]    # each region's contacts of a step
         # a region style written before surface_contacts took buffers (out) is called without
         self._takes_out = ["out" in inspect.signature(type(r).surface_contacts).parameters for r in self.regions]

@@ -202,8 +202,9 @@ class FixWallGran(Fix):
 
     @classmethod
     def spellings(cls):
+        from .wall_gran_granular import FixWallGranGranular
         from .wall_gran_model import FixWallGranModel
-        return (FixWallGranModel,)
+        return (FixWallGranModel, FixWallGranGranular)
 
     @classmethod
     def respell(cls, dialect, words):
@@ -211,6 +212,10 @@ class FixWallGran(Fix):
         if "model" in words:
             from .wall_gran_model import FixWallGranModel
             return FixWallGranModel, list(words)
+        # so is LAMMPS's with pair granular's models
+        if words[:1] == ["granular"]:
+            from .wall_gran_granular import FixWallGranGranular
+            return FixWallGranGranular, list(words[1:])
         return None
 
     @classmethod
@@ -227,6 +232,12 @@ class FixWallGran(Fix):
         self.kn, self.kt, self.gamma_n, self.gamma_t = args.constants(self.model, sim.units.nktv2p)
         self.xmu = args.xmu
         self.limit_damping = args.limit_damping is not None
+        self.place_wall(sim, args)
+        # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
+        self.keep_contacts(sim, id, WallLaw(lammps_classic.contact_model(self.model)))
+
+    def place_wall(self, sim, args):
+        """The wall of ``args.wallstyle``, its motion (``wiggle``, ``shear``) and the particles near it."""
         wallstyle, *values = args.wallstyle
         self.wallstyle = WALL_STYLES[wallstyle]
         if self.wallstyle == ZCYLINDER:
@@ -241,9 +252,11 @@ class FixWallGran(Fix):
         self.time_origin = sim.step
         self._near, self._count = np.empty(0, dtype=np.int64), 0
         self._still = np.zeros(3)
-        # LAMMPS's classic law, composed of pdps_granular_contact.classic's sub-models
-        self.law = WallLaw(lammps_classic.contact_model(self.model))
-        # one contact a particle (the nearer plane, or the cylinder): its spring, then its normal
+
+    def keep_contacts(self, sim, id, law):
+        """The contact law (a WallLaw) and each particle's one contact with the wall (the nearer plane,
+        or the cylinder): its history, then its normal."""
+        self.law = law
         self.history = ContactHistory(sim, f"wall_gran_{id}", width=self.law.model.history_width + 3, capacity=2)
         self.table, self._curvature = WallContactTable(), np.zeros(0)
 

@@ -30,20 +30,25 @@ def styles():
     register_styles(SphereVerlet, ConstantForce, Record)
 
 
-def reference(name):
+def reference(name, folder=DATA):
     table = {}
-    for line in (DATA / f"{name}.ref").read_text().splitlines():
+    for line in (folder / f"{name}.ref").read_text().splitlines():
         if not line.startswith("#"):
             words = line.split()
             table.setdefault(int(words[0]), []).append([float(w) for w in words[1:]])
     return {step: np.array(rows) for step, rows in table.items()}
 
 
-@pytest.mark.parametrize("name", CASES)
-def test_trajectories_equal_lammps(tmp_path, name):
+# fix wall/gran granular's cases (pair granular's models), recorded by benchmarks/lammps_references/granular.py
+GRANULAR = Path(__file__).parent / "data" / "wall_granular"
+
+
+@pytest.mark.parametrize("folder, name", [(DATA, name) for name in CASES]
+                         + [(GRANULAR, path.stem) for path in sorted(GRANULAR.glob("*.ref"))])
+def test_trajectories_equal_lammps(tmp_path, folder, name):
     """x, v, omega of every particle at every dumped step equal LAMMPS's to 1e-12 of their scale."""
-    record = recorded_case(DATA, name, tmp_path, STAND_INS)
-    table = reference(name)
+    record = recorded_case(folder, name, tmp_path, STAND_INS)
+    table = reference(name, folder)
     steps = sorted(s for s in table if s > 0)
     assert len(record.x) == steps[-1]
     for columns, key in ((slice(1, 4), "x"), (slice(4, 7), "v"), (slice(7, 10), "omega")):

@@ -73,6 +73,9 @@ class ContactSubModel(SubModel):
     docstring), ``history_width`` and ``coefficients``; its module's docstring is its manual page
     (``pdps doc gran.cohesion NAME``): the formula, each coefficient with its unit, the paper."""
     history_width: ClassVar[int] = 0
+    # how each history value is handed to the other body of a pair: -1 (the default) a value seen
+    # negated from there (a tangential spring), +1 one seen the same (a rolling displacement)
+    history_transfer: ClassVar[tuple] = ()
     compute: ClassVar = None
     # the host's model settings this sub-model reads, with their defaults (LIGGGHTS's registerSettings):
     # {"tangential_damping": "on", "limitForce": "off"}
@@ -203,7 +206,7 @@ class ContactModel:
                  f"HIST_SIZE = {max(self.history_width, 1)}"]
         keyed = [inspect.getsource(module).encode() for module in (contact_loop, contact_state, contact_block,
                                                                    contact_slots)]
-        calls, column = [], 0
+        calls, column, beyond = [], 0, ""
         for k, (model, offset) in enumerate(zip(self.sub_models, self.history_offsets)):
             function = getattr(model.compute, "py_func", model.compute)
             module = importlib.import_module(function.__module__)
@@ -216,12 +219,27 @@ class ContactModel:
                 coeff = "(0.0,)"
             column += ncoeff
             calls.append(f"    part_{k}(c, {coeff}, hist, {offset})")
+            pulloff = getattr(model, "pulloff", None)
+            if pulloff is not None:
+                # a contact lasting beyond touching (contact_loop.BEYOND)
+                lines += [f"from {pulloff.__module__} import {pulloff.__name__} as pulloff_{k}", "", "",
+                          "@njit(cache=True)", "def lasting(coeff, ti, tj, radius_i, radius_j, partner, i, tag_j):",
+                          '    """Once made, the contact of i and j reaches the pull-off distance beyond touching."""',
+                          "    if find_slot(partner, i, tag_j) < 0:", "        return 0.0",
+                          f"    return pulloff_{k}({coeff}, radius_i, radius_j)"]
+                beyond = contact_loop.BEYOND
         # the outputs zeroed one by one: a loop over slots would keep c in memory (contact_block)
         zero = [f"    c[{slot}] = 0.0" for slot in range(contact_state.FIRST_OUTPUT, contact_state.SIZE)]
         lines += ["", "", '@njit(inline="always", _nrt=False, error_model="numpy")',
                   "def contact(c, coeff, ti, tj, hist):",
                   '    """The sub-models in order, on the contact in c."""', *zero, *calls]
         with_history = self.history_width > 0
+        # values the same seen from either body (a rolling displacement, a twist angle) go to the
+        # partner as they are, the others negated
+        same = {offset + d for model, offset in zip(self.sub_models, self.history_offsets)
+                for d, factor in enumerate(model.history_transfer) if factor > 0}
+        store = contact_loop.STORE.format(values="".join(
+            contact_loop.STORE_VALUE.format(h=h, sign="" if h in same else "-") for h in range(self.history_width)))
         heat = self.part("heat") is not None
         width = self.history_width
         lines.append(contact_loop.BLOCK_CONTACTS.format(
@@ -230,13 +248,13 @@ class ContactModel:
             hist_in="".join(f"    hist[{h}] = block_in[(HIST_IN + {h}) * BLOCK + m]\n" for h in range(width)),
             hist_out="".join(f"    block_out[(HIST_OUT + {h}) * BLOCK + m] = hist[{h}]\n" for h in range(width))))
         lines.append(contact_loop.SCATTER_CONTACTS.format(
-            store=contact_loop.STORE if with_history else "", heat_apply=contact_loop.HEAT_APPLY if heat else "",
+            store=store if with_history else "", heat_apply=contact_loop.HEAT_APPLY if heat else "",
             log=contact_loop.LOG if self.log else ""))
         load = contact_loop.LOAD_CACHED if self.slot_cache else contact_loop.LOAD
         blocks = dict(load=load if with_history else contact_loop.NO_SLOTS,
                       heat_zero=contact_loop.HEAT_ZERO if heat else "",
                       heat_gather=contact_loop.HEAT_GATHER if heat else "",
-                      hist_gather=contact_loop.HIST_GATHER if with_history else "")
+                      hist_gather=contact_loop.HIST_GATHER if with_history else "", beyond=beyond)
         lines.append(contact_loop.PAIR_FORCES.format(**blocks, flush_full=contact_loop.flush(16),
                                                      flush_last=contact_loop.flush(4)))
         # the touching loop's body sits one level less deep: its blocks lose four spaces; it has no

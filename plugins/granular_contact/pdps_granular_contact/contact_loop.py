@@ -334,11 +334,13 @@ STORE = """        slot_i = block_index[SLOT_I * BLOCK + m]
         slot_j = block_index[SLOT_J * BLOCK + m]
         if update or slot_i >= 0:
             jo = owner[j] if owner[j] >= 0 else j
-            for h in range(HISTORY):
-                value = block_out[(HIST_OUT + h) * BLOCK + m]
-                history[i, HISTORY * slot_i + h] = value
-                if slot_j >= 0:
-                    history[jo, HISTORY * slot_j + h] = -value
+{values}"""
+# one history value of the contact: a tangential spring is seen negated from j (sign -), a rolling
+# displacement or a twist angle the same (sign empty: a sub-model's history_transfer)
+STORE_VALUE = """            value = block_out[(HIST_OUT + {h}) * BLOCK + m]
+            history[i, HISTORY * slot_i + {h}] = value
+            if slot_j >= 0:
+                history[jo, HISTORY * slot_j + {h}] = {sign}value
 """
 HEAT_APPLY = """        apply_block_heat(block_in, block_out, m, heat_flux, directional, i, j)
 """
@@ -404,7 +406,7 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
             delz = xi2 - x[j, 2]
             rsq = delx * delx + dely * dely + delz * delz
             radsum = radi + radius[j]
-            # coincident centres have no normal: no force
+{beyond}            # coincident centres have no normal: no force
             if rsq >= radsum * radsum or rsq == 0.0:
                 continue
 {load}            touching[m] = k
@@ -417,6 +419,12 @@ def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, t
 {flush_last}    ntouching[0] = m
     return -1
 '''
+
+# a contact that, once made, lasts beyond touching (JKR's neck: a normal model with a ``pulloff``):
+# spheres apart that hold a contact slot reach as far as the generated ``lasting`` says
+BEYOND = """            if rsq >= radsum * radsum:
+                radsum += lasting(coeff, type_[i], type_[j], radi, radius[j], partner, i, tag[j])
+"""
 
 # The same over the touching entries of a list found first (``touching``: their entries, ``rows``:
 # each entry's particle i): one flat, branch-free pass finds the few listed pairs that touch, which

@@ -40,6 +40,9 @@ tangential, rolling, twisting, heat):
 - rolling, twisting: ``MRX``..``MRZ``, ``MTX``..``MTZ``: torques :math:`\mathbf{M}`, i gets
   :math:`-\mathbf{M}` and j :math:`+\mathbf{M}`
 - heat: ``HEAT`` the heat flow into i (power)
+- ``CONTACT_RADIUS``: the radius a of the contact area, where a normal model defines one (LAMMPS's
+  pair granular: :math:`\sqrt{\delta R^*}`, JKR's own), which its damping, tangential, rolling,
+  twisting and heat models read
 
 Every slot a sub-model writes is zeroed by the loop before the first sub-model of each contact, so
 a kind no model fills contributes nothing.
@@ -51,9 +54,9 @@ from numba import njit
  NX, NY, NZ, VX, VY, VZ, WIX, WIY, WIZ, WJX, WJY, WJZ, DT, UPDATE, DIMENSION, TEMPERATURE_I, TEMPERATURE_J,
  ARM_I, ARM_J, VN, VTX, VTY, VTZ, WRX, WRY, WRZ,
  FN, FN_LIMIT, KN, KT, GAMMA_N, GAMMA_T,
- FTX, FTY, FTZ, MRX, MRY, MRZ, MTX, MTY, MTZ, HEAT) = range(51)
+ FTX, FTY, FTZ, MRX, MRY, MRZ, MTX, MTY, MTZ, HEAT, CONTACT_RADIUS) = range(52)
 
-SIZE = 51
+SIZE = 52
 # the slots the sub-models write, zeroed before each contact
 FIRST_OUTPUT = ARM_I
 

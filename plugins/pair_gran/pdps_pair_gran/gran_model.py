@@ -244,6 +244,18 @@ class PairGranModel(PairGran):
         return {"i": rows[:count, 0], "j": rows[:count, 1], "force": force[:count],
                 "tangential": tangential[:count], "history": hist[:count]}
 
+    def forget_apart(self, sim, nlist, owner, touched, rows, touching, npairs):
+        """After a step's contacts: forget those whose spheres came apart. LIGGGHTS forgets them only
+        when the list is next built (its pair loop zeroes no spring of a listed pair that does not
+        touch): spheres that touch again before then take up their old springs."""
+        if self.held.ready(nlist):
+            touched[:] = False
+        else:
+            partner, values = self._history_arrays()
+            self.held.sweep_all(sim, nlist, partner, values, touched)
+            # the sweep packed the slots: each entry's are searched for again
+            self._entry_slots[:npairs] = -1
+
     def compute(self, sim, nlist, eflag, vflag):
         p = sim.particles
         update = not sim.in_setup
@@ -265,15 +277,7 @@ class PairGranModel(PairGran):
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:
-                if self.held.ready(nlist):
-                    # LIGGGHTS forgets a contact that came apart only when the list is next built
-                    # (its pair loop zeroes no spring of a listed pair that does not touch): spheres
-                    # that touch again before then take up their old springs
-                    touched[:] = False
-                else:
-                    self.held.sweep_all(sim, nlist, partner, values, touched)
-                    # the sweep packed the slots: each entry's are searched for again
-                    self._entry_slots[:npairs] = -1
+                self.forget_apart(sim, nlist, owner, touched, rows, touching, npairs)
         if not update or bad >= 0:
             self.held.invalidate()
         if bad >= 0:

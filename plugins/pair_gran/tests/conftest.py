@@ -88,3 +88,10 @@ def scene(tmp_path):
 def lammps_case(tmp_path):
     """lammps_case(name): the reference case run in pdps and compared with LAMMPS's dump."""
     return lambda name, **kwargs: compare_with_lammps(DATA, name, tmp_path, **kwargs)
+
+
+@pytest.fixture
+def granular_case(tmp_path):
+    """granular_case(name): a pair granular reference case (data/granular) run in pdps and compared
+    with LAMMPS's dump."""
+    return lambda name, **kwargs: compare_with_lammps(DATA / "granular", name, tmp_path, **kwargs)
