@@ -399,3 +399,19 @@ def test_spheres_created_overlapping_separate_under_nve_limit(normal):
     assert np.isfinite(sim.particles.omega[:4]).all()
     separated = [d for d in (np.linalg.norm(x[i] - x[j]) for i in range(4) for j in range(i + 1, 4)) if d > 1e-9]
     assert len(separated) >= 5 and min(separated) > 0.95
+
+
+@pytest.mark.parametrize("coeff, expected", [
+    ("hooke 2e5 50 damping mass_velocity tangential linear_history 5e4 0.5 0.5", math.pi * math.sqrt(0.5 / 2e5)),
+    ("hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5",
+     2.868 * (0.5 ** 2 / (0.25 * (1e5 / 1.82) ** 2 * 2.0)) ** 0.2),
+])
+def test_a_timestep_above_a_tenth_of_the_contact_time_is_warned(tmp_path, coeff, expected):
+    """The shortest contact of the lightest spheres meeting at twice the largest speed (pi sqrt(m*/k_n)
+    for hooke, Hertz's time of E* for the others; pair gran's advice): a time step above a tenth of it
+    is warned, one below is not."""
+    for dt, warned in ((expected / 20.0, False), (expected / 5.0, True)):
+        sim, _ = two_spheres(tmp_path, coeff, 1.0, dt=dt)
+        sim.command("run 0")
+        assert sim.pair.timestep_limits(sim)["contact"] == pytest.approx(expected, rel=1e-12)
+        assert any("is more than the shortest contact" in w for w in sim.warnings) == warned
