@@ -91,6 +91,19 @@ region          shelf polygon p1 2 2 4 p2 8 2 4 p3 8 8 4 p4 2 8 4
 fix             walls all wall/dem lsd region floor region shelf 0.5 200000.0 50.0 57142.857 25.0 0.5 0.5
 fix             1 all nve/sphere
 """,
+    # LAMMPS's pair granular (JKR necks beyond touching, rolling and twisting history) and its walls,
+    # the spheres of a lattice pressed together so that their contacts are made before the steps measured
+    "granular, wall/gran granular, wall/gran/region": SPHERES.replace("spacing x 1.05 y 1.05 z 1.05",
+                                                                      "spacing x 0.99 y 0.99 z 0.99") + """
+fix             open all test/alloc_open
+pair_style      granular
+pair_coeff      * * jkr 1.0e5 500.0 0.3 2.0 tangential mindlin NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall
+fix             grav all gravity 1.0 vector 0 0 -1
+fix             w all wall/gran granular hertz/material 1.0e5 0.5 0.3 damping coeff_restitution tangential mindlin NULL 1.0 0.5 zplane 0.0 12.0
+region          cup block 0.0 16.0 0.0 16.0 -1.0 13.0 units box
+fix             c all wall/gran/region granular hooke 2.0e5 50.0 damping mass_velocity tangential linear_history 5.7e4 0.5 0.4 region cup
+fix             1 all nve/sphere
+""",
     # a DPD fluid whose lists live one step: forces from the cell bins (direct mode)
     "dpd, direct mode": """
 units           lj

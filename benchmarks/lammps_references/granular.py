@@ -3,6 +3,13 @@ granular), which plugins/pair_gran/tests/test_granular.py compares pdps with.
 
     python benchmarks/lammps_references/granular.py [LMP]
 
+Besides, a bed of 288 spheres (pdps_core.testing.sphere_bed) settling on walls under gravity with
+several laws (BED_CASES): LAMMPS's thermo (step ke c_rke, 15 digits, every 250 of 1,500 steps) goes
+to plugins/pair_gran/tests/data/granular_bed.txt with the table granular.cases.json, which
+tests/test_recorded_thermo.py runs. Its scripts say ``newton off`` and ``atom_modify sort 0 0.0``:
+LAMMPS then keeps which sphere holds each contact, as its negated rolling and twist history needs
+for its numbers not to depend on its atom order (docs/lammps.md).
+
 Each case (CASES below) is two or three spheres colliding, pressed together or pulled apart, every
 particle's start in the data file; NAME.in, NAME.data and NAME.ref (LAMMPS's positions, velocities
 and spins every EVERY steps, 17 digits) go to plugins/pair_gran/tests/data/granular, written as
@@ -12,8 +19,11 @@ gran.py writes its cases (``write_case``, ``record_case``).
 import sys
 from pathlib import Path
 
+from pdps_core.testing import sphere_bed
+
 sys.path.insert(0, str(Path(__file__).parent))
 from gran import ROOT, UNIT_MASS, record_case  # noqa: E402
+from lammps_run import record_cases, write_case_table  # noqa: E402
 
 DATA = ROOT / "plugins" / "pair_gran" / "tests" / "data" / "granular"
 WALL_DATA = ROOT / "plugins" / "fix_wall" / "tests" / "data" / "wall_granular"
@@ -133,8 +143,51 @@ CASES = {
 }
 
 
+BED_DATA = ROOT / "plugins" / "pair_gran" / "tests" / "data"
+BED_LAWS = {
+    "bed_jkr": ("jkr 1.0e5 500.0 0.3 1.0 tangential mindlin NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall",
+                "pair_coeff * * {law}"),
+    "bed_two_types": ("", "pair_coeff 1 1 hertz/material 1.0e5 0.5 0.3 damping coeff_restitution tangential mindlin "
+                      "NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting sds 50.0 0.5 0.05\n"
+                      "pair_coeff 2 2 hertz/material 3.0e5 0.8 0.2 damping coeff_restitution tangential mindlin "
+                      "NULL 0.5 0.3 rolling sds 800.0 1.0 0.2 twisting sds 30.0 0.3 0.1"),
+    "bed_hooke_region": ("hooke 200000.0 50.0 damping mass_velocity tangential linear_history 57142.9 0.5 0.5 "
+                         "limit_damping", "pair_coeff * * {law}"),
+}
+WALLS = {
+    "bed_jkr": "fix w all wall/gran granular hertz/material 1.0e5 0.5 0.3 damping coeff_restitution tangential "
+               "mindlin NULL 1.0 0.5 zplane 0.0 NULL",
+    "bed_two_types": "fix w all wall/gran granular hertz/material 1.0e5 0.5 0.3 damping coeff_restitution tangential "
+                     "mindlin_rescale NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 zplane 0.0 NULL",
+    "bed_hooke_region": "region cup block 0.0 15.6 0.0 7.8 0.0 20.0 units box\n"
+                        "fix w all wall/gran/region granular hooke 200000.0 50.0 damping mass_velocity tangential "
+                        "linear_history 57142.9 0.5 0.5 region cup",
+}
+
+
+def bed_script(case):
+    law, coeff = BED_LAWS[case]
+    return "\n".join(["units lj", "atom_style sphere", "boundary p p f", "newton off", "atom_modify sort 0 0.0",
+                      "comm_modify vel yes", "read_data bed.data", "group low id 1:144", "set group low type 2", "pair_style granular",
+                      coeff.format(law=law), "timestep 0.0001", "fix 1 all nve/sphere",
+                      "fix 2 all gravity 10.0 vector 0 0 -1", WALLS[case], "compute rke all erotate/sphere",
+                      "thermo_style custom step ke c_rke", "thermo_modify format float %.15g", "thermo 250",
+                      "run 1500", ""])
+
+
+def bed_cases(lmp):
+    sphere_bed(BED_DATA / "bed.data", (12, 6, 4), (0.7, 0.7, 0.7), (0, 0, 0), (15.6, 7.8, 12), ntypes=2, seed=11)
+    scripts = {case: bed_script(case) for case in BED_LAWS}
+    record_cases(lmp, scripts, [BED_DATA / "bed.data"], BED_DATA / "granular_bed.txt")
+    write_case_table(BED_DATA / "granular.cases.json", __file__, "granular_bed.txt", ["bed.data"], scripts,
+                     rtol=1e-10, ranks=("bed_jkr",), restart=("bed_two_types",))
+
+
 if __name__ == "__main__":
     command = sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared" / "bench" / "lmp")
-    chosen = sys.argv[2:] or list(CASES)
+    chosen = sys.argv[2:] or list(CASES) + ["beds"]
     for case_name in chosen:
-        record_case(command, case_name, CASES[case_name])
+        if case_name == "beds":
+            bed_cases(command)
+        else:
+            record_case(command, case_name, CASES[case_name])

@@ -159,7 +159,7 @@ class PairGranModel(PairGran):
         p = sim.particles
         nl = p.nlocal
         normal = self.contact_model.part("normal")
-        with_youngs = find_property(sim, "youngsModulus") is not None
+        with_youngs = self.reads_youngs(sim)
         rayleigh, shortest, hertz = math.inf, math.inf, math.inf
         speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
         for t in range(1, sim.ntypes + 1):
@@ -187,6 +187,11 @@ class PairGranModel(PairGran):
         rayleigh, hertz = sim.comm.min(rayleigh), sim.comm.min(hertz)
         return {"rayleigh": rayleigh if math.isfinite(rayleigh) else None,
                 "hertz": hertz if math.isfinite(hertz) else None, "contact": shortest}
+
+    def reads_youngs(self, sim):
+        """Whether the material gives Young's moduli (LIGGGHTS's fix property/global youngsModulus), for
+        the Rayleigh and Hertz estimates of timestep_limits."""
+        return find_property(sim, "youngsModulus") is not None
 
     @staticmethod
     def heat_fix(sim):

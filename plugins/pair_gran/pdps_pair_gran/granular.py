@@ -39,12 +39,17 @@ each coefficient, Young's moduli as the effective modulus :math:`1/E^* = (1-\nu_
 mixed. pdps composes one contact law for every type pair: the models (not their coefficients) of
 every pair_coeff line must be the same, and a line naming others is refused.
 
-History: what the models keep (the tangential spring, then the rolling spring and the twist angle;
-one value for JKR, which marks a contact made) lives on both spheres, the partner's copy negated
-(LAMMPS's history transfer), and a contact not seen in a step is forgotten at its end (LAMMPS zeroes
-a pair's history once its spheres part). Needs ``atom_style sphere``; ghosts carry v and omega
-without ``comm_modify vel yes``. No potential energy (pe stays 0, as LAMMPS). Not built: the
-``classic`` normal model (use pair gran/*), the heat models (they need LAMMPS's fix heat/flow), mdr.
+History: what the models keep (the tangential spring, then the rolling displacement and the twist
+angle; one value for JKR, which marks a contact made) lives on both spheres, the partner's copy of the
+spring negated and of the rolling displacement, twist angle and mindlin_rescale's contact radius
+unchanged (they are the same seen from either sphere; LAMMPS 22 Jul 2025 negates the rolling and
+twist values too), and a contact not seen in a step is forgotten at its end (LAMMPS zeroes a pair's
+history once its spheres part). The run warns when the time step is more than a tenth of the shortest
+contact (pi sqrt(m*/k_n) for hooke, Hertz's 2.868 (m*^2/(R* E*^2 v))^(1/5) for the others, the
+lightest spheres of each type meeting at twice the largest speed). Needs ``atom_style sphere``; ghosts
+carry v and omega without ``comm_modify vel yes``. No potential energy (pe stays 0, as LAMMPS). Not
+built: the ``classic`` normal model (use pair gran/*), the heat models (they need LAMMPS's fix
+heat/flow), mdr.
 
 Example (the LAMMPS bench scene in.granular_settle)::
 
@@ -52,8 +57,6 @@ Example (the LAMMPS bench scene in.granular_settle)::
     pair_coeff * * hertz/material 5.e6 0.5 0.45 tangential mindlin NULL 1.0 0.5 &
                rolling sds 100.0 0.05 0.05 damping coeff_restitution
 """
-
-import math
 
 import numpy as np
 
@@ -132,10 +135,13 @@ class PairGranular(PairGranModel):
         self.contact_model = ContactModel("granular", {part: cls.name for part, (cls, _) in law.parts.items()})
         self.history_width = self.contact_model.history_width
         self._block = self.contact_model.block()
-        self.contact_coeff = self.contact_model.bind(Laws(ntypes, laws))
+        # the laws stand for the material of pair gran's time-step advice (timestep_limits)
+        self.material = Laws(ntypes, laws)
+        self.contact_coeff = self.contact_model.bind(self.material)
         self.kernels = self.contact_model.pair_kernels()
         if self.history_width > 0:
             self.open_history()
+        self.warn_coarse_timestep(sim)
         return cutoffs
 
     def init_one(self, i, j):
@@ -156,9 +162,11 @@ class PairGranular(PairGranModel):
         largest = max(self.radius_moving[i], self.radius_frozen[i]), max(self.radius_moving[j], self.radius_frozen[j])
         return reach + float(pulloff(values, largest[0], largest[1]))
 
-    def timestep_limits(self, sim):
-        """No advice: LAMMPS's pair granular gives none (its laws have no one contact time)."""
-        return {"rayleigh": None, "hertz": None, "contact": math.inf}
+
+    def reads_youngs(self, sim):
+        """No: the moduli are the pair_coeff lines' (timestep_limits times contacts by the normal model
+        alone: pi sqrt(m*/k_n) for hooke, Hertz's time for the others)."""
+        return False
 
     def conducts_heat(self, sim):
         """Its contacts carry no heat (the heat models are not built)."""

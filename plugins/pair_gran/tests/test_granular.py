@@ -379,3 +379,49 @@ def test_the_cutoff_keywords_set_the_neighbor_cutoff(tmp_path):
     assert sim.pair.init(1)[1, 1] == pytest.approx(1.7)
     sim.command(f"pair_coeff * * {coeff} cutoff 2.5\nrun 0")
     assert sim.pair.init(1)[1, 1] == pytest.approx(2.5)
+
+
+@pytest.mark.parametrize("normal", ["hertz/material 1.0e5 0.5 0.3 damping coeff_restitution",
+                                    "jkr 1.0e5 500.0 0.3 2.0"])
+def test_spheres_created_overlapping_separate_under_nve_limit(normal):
+    """Two spheres at one point (no normal: no force), two others half inside them: finite forces,
+    every pair with a direction pushed out to touching (JKR: held near it by its neck)."""
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(f"""
+        units lj
+        atom_style sphere
+        boundary p p p
+        region box block 0 8 0 8 0 8
+        create_box 1 box
+        create_atoms 1 single 4.0 4.0 4.0
+        create_atoms 1 single 4.0 4.0 4.0
+        create_atoms 1 single 4.05 4.0 4.0
+        create_atoms 1 single 4.0 4.1 4.02
+        set type 1 diameter 1.0
+        pair_style granular
+        pair_coeff * * {normal} tangential mindlin NULL 1.0 0.5 rolling sds 500.0 2.0 0.1 twisting marshall
+        timestep 0.0001
+        fix 1 all nve/limit 0.001
+        run 4000
+        """)
+    x = sim.particles.x[:4]
+    assert np.isfinite(x).all() and np.isfinite(sim.particles.v[:4]).all()
+    assert np.isfinite(sim.particles.omega[:4]).all()
+    separated = [d for d in (np.linalg.norm(x[i] - x[j]) for i in range(4) for j in range(i + 1, 4)) if d > 1e-9]
+    assert len(separated) >= 5 and min(separated) > 0.95
+
+
+@pytest.mark.parametrize("coeff, expected", [
+    ("hooke 2e5 50 damping mass_velocity tangential linear_history 5e4 0.5 0.5", math.pi * math.sqrt(0.5 / 2e5)),
+    ("hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5",
+     2.868 * (0.5 ** 2 / (0.25 * (1e5 / 1.82) ** 2 * 2.0)) ** 0.2),
+])
+def test_a_timestep_above_a_tenth_of_the_contact_time_is_warned(tmp_path, coeff, expected):
+    """The shortest contact of the lightest spheres meeting at twice the largest speed (pi sqrt(m*/k_n)
+    for hooke, Hertz's time of E* for the others; pair gran's advice): a time step above a tenth of it
+    is warned, one below is not."""
+    for dt, warned in ((expected / 20.0, False), (expected / 5.0, True)):
+        sim, _ = two_spheres(tmp_path, coeff, 1.0, dt=dt)
+        sim.command("run 0")
+        assert sim.pair.timestep_limits(sim)["contact"] == pytest.approx(expected, rel=1e-12)
+        assert any("is more than the shortest contact" in w for w in sim.warnings) == warned

@@ -117,6 +117,16 @@ class GranularSubModel(ContactSubModel):
     def coefficients(self, laws):
         return laws.columns(lambda law: self.values(law, laws.contact))
 
+    def contact_time(self, laws, t, m_eff, r_eff, speed):
+        """A normal model's duration of a contact of two type-t bodies at ``speed`` (``laws``: the
+        Laws of the run), from ``elastic_time``; None where it gives none."""
+        law = laws.laws.get((t, t))
+        return None if law is None else self.elastic_time(law, m_eff, r_eff, speed)
+
+    def elastic_time(self, law, m_eff, r_eff, speed):
+        """The undamped contact's duration under ``law`` (None: no estimate)."""
+        return None
+
     @classmethod
     def check(cls, law):
         """A one-line ScriptError where this model cannot run with the rest of ``law``."""

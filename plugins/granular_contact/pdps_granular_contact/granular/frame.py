@@ -32,3 +32,25 @@ def rotate_rescale(c, hist, h):
     hist[h] *= scale
     hist[h + 1] *= scale
     hist[h + 2] *= scale
+
+
+@njit(cache=True)
+def coulomb_cut(hist, h, fx, fy, fz, dx, dy, dz, limit, per_history, store):
+    """A force (fx, fy, fz) = per_history * hist[h:h+3] + (dx, dy, dz) (its damping part) cut back to
+    ``limit``: returned scaled onto the limit, the history set (when ``store``) to the elastic part of
+    the cut force; a history of zero length over the limit gives no force (LAMMPS's)."""
+    size = math.sqrt(fx * fx + fy * fy + fz * fz)
+    if size <= limit:
+        return fx, fy, fz
+    if hist[h] == 0.0 and hist[h + 1] == 0.0 and hist[h + 2] == 0.0:
+        return 0.0, 0.0, 0.0
+    ratio = limit / size
+    fx *= ratio
+    fy *= ratio
+    fz *= ratio
+    if store:
+        back = 1.0 / per_history if per_history != 0.0 else 0.0
+        hist[h] = (fx - dx) * back
+        hist[h + 1] = (fy - dy) * back
+        hist[h + 2] = (fz - dz) * back
+    return fx, fy, fz

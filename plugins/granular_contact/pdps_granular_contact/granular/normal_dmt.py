@@ -26,7 +26,7 @@ from pdps_core.api import param
 from pdps_granular_contact.contact_state import CONTACT_RADIUS, DELTA, FN, FN_LIMIT, R_EFF
 
 from .base import GranularSubModel, StyleArgs
-from .normal_hertz_material import mix_material, modulus
+from .normal_hertz_material import material_time, mix_material, modulus
 
 
 @njit(cache=True)
@@ -56,6 +56,7 @@ class NormalDMT(GranularSubModel):
     cohesive = True
 
     mix = classmethod(mix_material)
+    elastic_time = material_time
 
     def values(self, law, contact):
         return (4.0 / 3.0 * modulus(law), law.args("normal").gamma)

@@ -19,6 +19,7 @@ from numba import njit
 
 from pdps_core.api import param
 
+from pdps_granular_contact.contact_models import hertz_contact_time
 from pdps_granular_contact.contact_state import CONTACT_RADIUS, DELTA, FN, R_EFF
 
 from .base import GranularSubModel, StyleArgs
@@ -45,3 +46,10 @@ class NormalHertz(GranularSubModel):
 
     def values(self, law, contact):
         return (law.args("normal").k_n,)
+
+    def elastic_time(self, law, m_eff, r_eff, speed):
+        """Hertz's 2.868 (m*^2 / (R* E*^2 v))^(1/5) with the E* = 3/4 k of this model's stiffness k."""
+        stiffness = self.values(law, "pair")[0]
+        if speed <= 0.0 or stiffness <= 0.0:
+            return None
+        return hertz_contact_time(0.75 * stiffness, r_eff, m_eff, speed)

@@ -17,6 +17,8 @@ Syntax: ``pair_coeff I J hertz/material E eta_n0 nu damping ... tangential ...``
 
 from pdps_core.api import param
 
+from pdps_granular_contact.contact_models import hertz_contact_time
+
 from .base import GranularSubModel, StyleArgs, effective_modulus, mix_geom
 from .normal_hertz import hertz_force
 
@@ -34,6 +36,11 @@ def modulus(law):
     return args.E if law.mixed else effective_modulus(args.E, args.E, args.nu, args.nu)
 
 
+def material_time(self, law, m_eff, r_eff, speed):
+    """Hertz's 2.868 (m*^2 / (R* E*^2 v))^(1/5) of the material's E* (an undamped contact)."""
+    return None if speed <= 0.0 else hertz_contact_time(modulus(law), r_eff, m_eff, speed)
+
+
 def mix_material(cls, ci, cj):
     """E* of the two materials in place of E, the geometric mean of the other coefficients."""
     values = {name: mix_geom(getattr(ci, name), getattr(cj, name)) for name in cls.Args.model_fields}
@@ -49,6 +56,7 @@ class NormalHertzMaterial(GranularSubModel):
     material = True
 
     mix = classmethod(mix_material)
+    elastic_time = material_time
 
     def values(self, law, contact):
         return (4.0 / 3.0 * modulus(law),)

@@ -46,3 +46,8 @@ class NormalHooke(GranularSubModel):
 
     def values(self, law, contact):
         return (law.args("normal").k_n,)
+
+    def elastic_time(self, law, m_eff, r_eff, speed):
+        """Half the period of the linear spring, pi sqrt(m*/k_n)."""
+        k_n = law.args("normal").k_n
+        return math.pi * math.sqrt(m_eff / k_n) if k_n > 0.0 else None

@@ -34,7 +34,7 @@ from pdps_granular_contact.contact_state import CONTACT_RADIUS, DELTA, FN, FN_LI
 
 from .base import GranularSubModel
 from .normal_dmt import AdhesiveCoefficients
-from .normal_hertz_material import mix_material, modulus
+from .normal_hertz_material import material_time, mix_material, modulus
 
 SQRT6 = math.sqrt(6.0)
 PULLOFF_PREFIX = (3.0 * math.pi * math.pi / 16.0) ** (1.0 / 3.0)
@@ -92,6 +92,7 @@ class NormalJKR(GranularSubModel):
     cohesive = True
 
     mix = classmethod(mix_material)
+    elastic_time = material_time
 
     def values(self, law, contact):
         return (modulus(law), law.args("normal").gamma)

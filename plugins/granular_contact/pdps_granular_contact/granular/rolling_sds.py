@@ -23,8 +23,6 @@ means. Where LAMMPS would divide by :math:`k_{roll} = 0` the displacement is set
 Syntax: ``pair_coeff I J ... rolling sds k_roll gamma_roll mu_roll`` (LAMMPS's pair granular).
 """
 
-import math
-
 from numba import njit
 
 from pdps_core.api import param
@@ -33,7 +31,7 @@ from pdps_granular_contact.contact_state import (DT, FN_LIMIT, MRX, MRY, MRZ, NX
                                                  WRZ)
 
 from .base import GranularSubModel, StyleArgs
-from .frame import EPSILON, along_normal, rotate_rescale
+from .frame import EPSILON, along_normal, coulomb_cut, rotate_rescale
 
 
 @njit(cache=True)
@@ -53,26 +51,10 @@ def rolling_spring(c, k, hist, h):
         hist[h] += vx * dt
         hist[h + 1] += vy * dt
         hist[h + 2] += vz * dt
-    fx = -k[0] * hist[h] - k[1] * vx
-    fy = -k[0] * hist[h + 1] - k[1] * vy
-    fz = -k[0] * hist[h + 2] - k[1] * vz
-    size = math.sqrt(fx * fx + fy * fy + fz * fz)
-    if size > limit:
-        if hist[h] != 0.0 or hist[h + 1] != 0.0 or hist[h + 2] != 0.0:
-            ratio = limit / size
-            fx *= ratio
-            fy *= ratio
-            fz *= ratio
-            # unlike the tangential spring, not cut back in a run's setup (LAMMPS's)
-            if update:
-                back = -1.0 / k[0] if k[0] != 0.0 else 0.0
-                hist[h] = (fx + k[1] * vx) * back
-                hist[h + 1] = (fy + k[1] * vy) * back
-                hist[h + 2] = (fz + k[1] * vz) * back
-        else:
-            fx = 0.0
-            fy = 0.0
-            fz = 0.0
+    # unlike the tangential spring, not cut back in a run's setup (LAMMPS's)
+    fx, fy, fz = coulomb_cut(hist, h, -k[0] * hist[h] - k[1] * vx, -k[0] * hist[h + 1] - k[1] * vy,
+                             -k[0] * hist[h + 2] - k[1] * vz, -k[1] * vx, -k[1] * vy, -k[1] * vz, limit, -k[0],
+                             update)
     # i turns by R* n x F_r: the loop gives i -M and j +M
     c[MRX] = -r_eff * (ny * fz - nz * fy)
     c[MRY] = -r_eff * (nz * fx - nx * fz)

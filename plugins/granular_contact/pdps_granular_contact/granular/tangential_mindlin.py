@@ -24,8 +24,6 @@ Syntax: ``pair_coeff I J ... tangential mindlin k_t|NULL x_gamma_t mu_s`` (LAMMP
 Mindlin, J. Appl. Mech. 16, 259 (1949)).
 """
 
-import math
-
 from numba import njit
 
 from pdps_core.api import ScriptError, param
@@ -35,7 +33,7 @@ from pdps_granular_contact.contact_state import (CONTACT_RADIUS, DT, FN_LIMIT, F
 from pdps_granular_contact.lammps_classic import NullableFloat
 
 from .base import GranularSubModel, StyleArgs, effective_shear_modulus, mix_geom
-from .frame import EPSILON, along_normal, rotate_rescale
+from .frame import EPSILON, along_normal, coulomb_cut, rotate_rescale
 
 
 @njit(cache=True)
@@ -49,24 +47,8 @@ def coulomb_limit(c, hist, h, per_history, x_gamma_t, limit, stiffness):
     dx = -damp * c[VTX]
     dy = -damp * c[VTY]
     dz = -damp * c[VTZ]
-    fx = per_history * hist[h] + dx
-    fy = per_history * hist[h + 1] + dy
-    fz = per_history * hist[h + 2] + dz
-    size = math.sqrt(fx * fx + fy * fy + fz * fz)
-    if size > limit:
-        if hist[h] != 0.0 or hist[h + 1] != 0.0 or hist[h + 2] != 0.0:
-            ratio = limit / size
-            fx *= ratio
-            fy *= ratio
-            fz *= ratio
-            back = 1.0 / per_history if per_history != 0.0 else 0.0
-            hist[h] = (fx - dx) * back
-            hist[h + 1] = (fy - dy) * back
-            hist[h + 2] = (fz - dz) * back
-        else:
-            fx = 0.0
-            fy = 0.0
-            fz = 0.0
+    fx, fy, fz = coulomb_cut(hist, h, per_history * hist[h] + dx, per_history * hist[h + 1] + dy,
+                             per_history * hist[h + 2] + dz, dx, dy, dz, limit, per_history, True)
     c[FTX] = fx
     c[FTY] = fy
     c[FTZ] = fz
