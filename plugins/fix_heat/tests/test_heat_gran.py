@@ -1,7 +1,11 @@
 """fix heat/gran: two spheres in contact relax to one temperature at the conduction model's
-exponential rate, the total heat sum m c T is conserved to round-off, and bad input is one line."""
+exponential rate, through the same temperatures as LIGGGHTS 3.8.0 (recorded by
+benchmarks/liggghts_references/contacts.py into data/liggghts_conduction.json), the total heat sum
+m c T is conserved to round-off, and bad input is one line."""
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -72,6 +76,31 @@ def test_two_spheres_equilibrate_at_the_conduction_rate(area, area_of):
     assert measured == pytest.approx(-math.log(1 - rate * dt) / dt, rel=1e-9)
     assert m1 * C1 * t1 + m2 * C2 * t2 == pytest.approx(heat0, rel=1e-14)
     assert sim.fix_value("heat") == pytest.approx(heat0, rel=1e-14)
+
+
+def test_two_spheres_cool_as_in_liggghts():
+    """LIGGGHTS's two spheres (the scene's materials and sizes, overlapping by 2e-4, 400 and 300 K):
+    pdps's temperatures every 100 steps equal LIGGGHTS's to 1e-8 of the difference between them,
+    and that difference decays at the rate lambda of the two lumped capacities within 1 %."""
+    recorded = json.loads((Path(__file__).parent / "data" / "liggghts_conduction.json").read_text())
+    script, every = recorded["script"], recorded["every"]
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(script[:script.rindex("run ")])
+    r = 0.5 * (D1 + D2) - 2e-4
+    h = 4 * K1 * K2 / (K1 + K2) * math.sqrt(math.pi * (D1 ** 2 / 4 - ((r * r + (D1 ** 2 - D2 ** 2) / 4) / (2 * r)) ** 2))
+    m1, m2 = masses()
+    rate = h * (1 / (m1 * C1) + 1 / (m2 * C2))
+    assert rate * sim.dt == pytest.approx(2e-3, rel=1e-12)
+    for n, want in enumerate(recorded["temperatures"]):
+        if n:
+            sim.command(f"run {every}")
+        t1, t2 = got = temperatures(sim)
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-8 * (want[0] - want[1]))
+        if n:
+            # explicit steps: -ln(1 - lambda dt)/dt = lambda (1 + lambda dt/2 + ...), 1e-3 above lambda
+            measured = -math.log((t1 - t2) / 100.0) / (n * every * sim.dt)
+            assert measured == pytest.approx(rate, rel=0.01)
+            assert -math.log((want[0] - want[1]) / 100.0) / (n * every * sim.dt) == pytest.approx(rate, rel=0.01)
 
 
 def test_per_atom_temperature_and_flux_in_a_dump(tmp_path):

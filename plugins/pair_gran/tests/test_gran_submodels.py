@@ -3,6 +3,8 @@ meeting off-centre with spin (pair gran), and a sphere bouncing and rolling on a
 wall/gran model), under every normal, tangential, rolling and cohesion model and setting pdps has;
 every coordinate, velocity and spin equals LIGGGHTS 3.8.0's at the end (recorded by
 benchmarks/liggghts_references/contacts.py into data/liggghts_submodels.json, with the scripts).
+The mesh cases roll the sphere over fix mesh/surface (an STL of two triangles, flat and tilted)
+across the triangles' shared edge, where it touches both at once.
 The sjkr case fails if the cohesion lowers the tangential Coulomb limit without tangential_reduce
 (pdps did so before 11-28 and parted from LIGGGHTS by 6e-4 m/s and 0.37 rad/s); the wall cases with
 rolling friction if cdt's arm against a wall is R - delta/2 (it was until 11-28)."""
@@ -19,7 +21,11 @@ TABLE = json.loads((Path(__file__).parent / "data" / "liggghts_submodels.json").
 
 
 @pytest.mark.parametrize("case", sorted(TABLE))
-def test_trajectory_as_liggghts(case):
+def test_trajectory_as_liggghts(case, tmp_path, monkeypatch):
+    # a mesh case's STL, by the name its script reads, in the run's folder
+    monkeypatch.chdir(tmp_path)
+    for name, text in TABLE[case].get("files", {}).items():
+        (tmp_path / name).write_text(text)
     sim = Simulation(screen=False, log=None, dialect="liggghts")
     sim.command(TABLE[case]["script"])
     p = sim.particles
