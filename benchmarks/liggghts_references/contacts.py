@@ -10,9 +10,9 @@ Deterministic scenes, every particle's start in the script (pdps's own scripts, 
 - ``wall``: a sphere dropped with spin onto a primitive zplane under gravity, rolling along it
   (20000 steps of 2 us), the wall's model words those of each case;
 - ``mesh``: the same sphere, dropped with spin onto a fix mesh/surface wall (an ASCII STL written
-  with the script: a square of two triangles, flat or tilted by atan(1/8) = 7.1 degrees about y) and
-  rolling across the triangles' shared diagonal (40000 steps of 2 us); the STL has coordinates of few
-  binary digits, so that no reader rounds them;
+  with the script: a square of two triangles, flat or tilted by atan(1/8) = 7.1 degrees about y),
+  bouncing, then rolling across the triangles' shared diagonal (40000 steps of 2 us, the state
+  every 10000); the STL has coordinates of few binary digits, so that no reader rounds them;
 - ``conduction``: two spheres of two materials, overlapping and held still (no integrator, no
   gravity), at 400 and 300 K under fix heat/gran (900 steps, lambda dt = 2e-3 of the exponential rate;
   LIGGGHTS takes ``set ... property/atom Temp`` only after a ``run 0``).
@@ -109,8 +109,8 @@ fix floor all wall/gran model MODEL mesh n_meshes 1 meshes plane
 create_atoms 1 single X0 Y0 Z0
 set atom 1 diameter 0.01 density 2500
 velocity all set 0 0 0
-set atom 1 vx -0.3 vy 0.1 vz -0.05
-set atom 1 omegax 5 omegay -20 omegaz 40
+set atom 1 vx -0.3 vy 0.1 vz -0.02
+set atom 1 omegax 5 omegay -20
 fix g all gravity 9.81 vector 0 0 -1
 fix integr all nve/sphere
 DUMP
@@ -118,7 +118,8 @@ run 40000
 """
 
 # the square |x|, |y| <= 5/128 m about z = -0.04 + slope x, split along its diagonal y = x; the
-# sphere starts below the diagonal, 4.9 mm (0.1 mm of overlap) above the plane, moving to -x
+# sphere starts below the diagonal touching the plane (1 um of overlap), moving to -x: its bounces
+# end within some 10000 steps, it rolls over the diagonal near step 25000
 HALF, SLOPES, START = 0.0390625, {"flat": 0.0, "tilted": 0.125}, (0.015, -0.003)
 
 
@@ -137,8 +138,8 @@ def plane_stl(slope):
 def mesh_script(slope, model):
     norm = (1 + slope * slope) ** 0.5
     x0, y0 = START
-    z0 = -0.04 + slope * x0 + 0.0049 / norm
-    x0 -= 0.0049 * slope / norm
+    z0 = -0.04 + slope * x0 + 0.004999 / norm
+    x0 -= 0.004999 * slope / norm
     return MESH.replace("MODEL", model).replace("X0", repr(x0)).replace("Y0", repr(y0)).replace("Z0", repr(z0))
 
 
@@ -189,6 +190,9 @@ MESH_CASES = [("flat", "hertz tangential history"), ("flat", "hertz tangential h
               ("tilted", "hertz tangential history"), ("tilted", "hertz tangential history rolling_friction epsd2")]
 
 
+STATE, MESH_EVERY = "x y z vx vy vz omegax omegay omegaz", 10000
+
+
 def dumped(liggghts, script, every, columns, files=None):
     """Each dump snapshot of ``columns`` of every particle (by id), as LIGGGHTS prints them, every
     ``every`` steps; ``files`` (name: text) are written beside the script."""
@@ -215,7 +219,7 @@ def dumped(liggghts, script, every, columns, files=None):
 def final_state(liggghts, script, files=None):
     """x v omega of every particle (by id) at the last step."""
     steps = next(line for line in script.splitlines() if line.startswith("run ")).split()[1]
-    return dumped(liggghts, script, steps, "x y z vx vy vz omegax omegay omegaz", files)[-1]
+    return dumped(liggghts, script, steps, STATE, files)[-1]
 
 
 def main():
@@ -229,8 +233,9 @@ def main():
     for tilt, model in MESH_CASES:
         script, stl = mesh_script(SLOPES[tilt], model), plane_stl(SLOPES[tilt])
         key = f"mesh {tilt}: {model}"
-        table[key] = {"script": script.replace("DUMP\n", ""), "files": {"plane.stl": stl},
-                      "state": final_state(LIGGGHTS, script, {"plane.stl": stl})}
+        states = dumped(LIGGGHTS, script, MESH_EVERY, STATE, {"plane.stl": stl})
+        table[key] = {"script": script.replace("DUMP\n", ""), "files": {"plane.stl": stl}, "state": states[-1],
+                      "every": MESH_EVERY, "states": states}
         print(key, table[key]["state"][0][:6])
     OUT.write_text(json.dumps({"recorded with": "LIGGGHTS 3.8.0 (Debian's liggghts), "
                                "benchmarks/liggghts_references/contacts.py", "cases": table}, indent=1) + "\n")
