@@ -14,8 +14,8 @@ Deterministic scenes, every particle's start in the script (pdps's own scripts, 
   bouncing, then rolling across the triangles' shared diagonal (40000 steps of 2 us, the state
   every 10000; one case also as 40 runs of 1000 steps); the STL has coordinates of few binary digits, so that no reader rounds them;
 - ``conduction``: two spheres of two materials, overlapping and held still (no integrator, no
-  gravity), at 400 and 300 K under fix heat/gran (900 steps, lambda dt = 2e-3 of the exponential rate;
-  LIGGGHTS takes ``set ... property/atom Temp`` only after a ``run 0``).
+  gravity), at 400 and 300 K under fix heat/gran with each contact_area (900 steps, lambda dt = 2e-3
+  of the exponential rate; LIGGGHTS takes ``set ... property/atom Temp`` only after a ``run 0``).
 
 LIGGGHTS runs each script with a dump of x, v and omega of every particle at the last step (%.16e)
 added before ``run``; the table (the scripts without the dump, the final states, the STL of a mesh
@@ -153,7 +153,7 @@ create_atoms 1 single 0.0 0.0 0.0
 create_atoms 2 single 0.0088 0.0 0.0
 set atom 1 diameter 0.01 density 2500
 set atom 2 diameter 0.008 density 2500
-fix heat all heat/gran initial_temperature 300.0
+fix heat all heat/gran initial_temperature 300.0 AREA
 run 0
 set atom 1 property/atom Temp 400.0
 DUMP
@@ -161,10 +161,16 @@ run 900
 """
 
 
-def conduction_rate():
-    """lambda = h (1/m1c1 + 1/m2c2), h = 4 k1k2/(k1+k2) sqrt(A), A the circle where the spheres meet."""
+# fix heat/gran's contact areas: the circle where the spheres meet (its default), the larger
+# sphere's cross-section (LIGGGHTS's source; its manual says the smaller), a constant
+CONDUCTION_AREAS = {"overlap": "", "projection": "contact_area projection", "constant": "contact_area constant 1e-6"}
+
+
+def conduction_rate(area_words):
+    """lambda = h (1/m1c1 + 1/m2c2), h = 4 k1k2/(k1+k2) sqrt(A)."""
     r, r1, r2 = 0.0088, 0.005, 0.004
-    area = -math.pi / 4 * (r - r1 - r2) * (r + r1 - r2) * (r - r1 + r2) * (r + r1 + r2) / (r * r)
+    area = {"": -math.pi / 4 * (r - r1 - r2) * (r + r1 - r2) * (r - r1 + r2) * (r + r1 + r2) / (r * r),
+            "contact_area projection": math.pi * max(r1, r2) ** 2, "contact_area constant 1e-6": 1e-6}[area_words]
     h = 4 * 5.0 * 2.0 / (5.0 + 2.0) * math.sqrt(area)
     m1, m2 = (2500 * math.pi / 6 * d ** 3 for d in (0.01, 0.008))
     return h * (1 / (m1 * 10.0) + 1 / (m2 * 30.0))
@@ -247,14 +253,15 @@ def main():
     OUT.write_text(json.dumps({"recorded with": "LIGGGHTS 3.8.0 (Debian's liggghts), "
                                "benchmarks/liggghts_references/contacts.py", "cases": table}, indent=1) + "\n")
     print(f"wrote {OUT}")
-    dt = 2e-3 / conduction_rate()
-    script = CONDUCTION.replace("DT", repr(dt))
-    temperatures = [[row[0] for row in snapshot] for snapshot in dumped(LIGGGHTS, script, 100, "f_Temp")]
+    heat = {}
+    for name, words in CONDUCTION_AREAS.items():
+        script = CONDUCTION.replace("DT", repr(2e-3 / conduction_rate(words))).replace(" AREA", f" {words}".rstrip())
+        temperatures = [[row[0] for row in snapshot] for snapshot in dumped(LIGGGHTS, script, 100, "f_Temp")]
+        heat[name] = {"script": script.replace("DUMP\n", ""), "every": 100, "temperatures": temperatures}
     OUT_HEAT.parent.mkdir(exist_ok=True)
     OUT_HEAT.write_text(json.dumps({"recorded with": "LIGGGHTS 3.8.0 (Debian's liggghts), "
-                                    "benchmarks/liggghts_references/contacts.py", "script": script.replace("DUMP\n", ""),
-                                    "every": 100, "temperatures": temperatures}, indent=1) + "\n")
-    print(f"wrote {OUT_HEAT}", temperatures[-1])
+                                    "benchmarks/liggghts_references/contacts.py", "cases": heat}, indent=1) + "\n")
+    print(f"wrote {OUT_HEAT}", {name: case["temperatures"][-1] for name, case in heat.items()})
 
 
 if __name__ == "__main__":
