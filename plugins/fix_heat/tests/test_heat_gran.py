@@ -1,7 +1,11 @@
 """fix heat/gran: two spheres in contact relax to one temperature at the conduction model's
-exponential rate, the total heat sum m c T is conserved to round-off, and bad input is one line."""
+exponential rate, through the same temperatures as LIGGGHTS 3.8.0 (recorded by
+benchmarks/liggghts_references/contacts.py into data/liggghts_conduction.json), the total heat sum
+m c T is conserved to round-off, and bad input is one line."""
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -48,11 +52,16 @@ def masses():
     return [RHO * math.pi / 6 * d ** 3 for d in (D1, D2)]
 
 
-@pytest.mark.parametrize("area, area_of", [
-    ("", lambda r, r1, r2: math.pi * (r1 ** 2 - ((r * r + r1 * r1 - r2 * r2) / (2 * r)) ** 2)),
-    ("contact_area constant 1e-6", lambda r, r1, r2: 1e-6),
-    ("contact_area projection", lambda r, r1, r2: math.pi * max(r1, r2) ** 2),
-])
+# the contact area of each contact_area setting, spheres of radii r1, r2 at distance r
+AREA_OF = {
+    "": lambda r, r1, r2: math.pi * (r1 ** 2 - ((r * r + r1 * r1 - r2 * r2) / (2 * r)) ** 2),
+    "contact_area constant 1e-6": lambda r, r1, r2: 1e-6,
+    "contact_area projection": lambda r, r1, r2: math.pi * max(r1, r2) ** 2,
+}
+RECORDED = json.loads((Path(__file__).parent / "data" / "liggghts_conduction.json").read_text())["cases"]
+
+
+@pytest.mark.parametrize("area, area_of", AREA_OF.items())
 def test_two_spheres_equilibrate_at_the_conduction_rate(area, area_of):
     """T1 - T2 decays as exp(-lambda t), lambda = h (1/m1c1 + 1/m2c2), h = 4 k1 k2/(k1+k2) sqrt(A);
     the explicit steps give (1 - lambda dt)^n, within 1e-3 of it at lambda dt = 2e-3."""
@@ -72,6 +81,33 @@ def test_two_spheres_equilibrate_at_the_conduction_rate(area, area_of):
     assert measured == pytest.approx(-math.log(1 - rate * dt) / dt, rel=1e-9)
     assert m1 * C1 * t1 + m2 * C2 * t2 == pytest.approx(heat0, rel=1e-14)
     assert sim.fix_value("heat") == pytest.approx(heat0, rel=1e-14)
+
+
+@pytest.mark.parametrize("case, area", [("overlap", ""), ("projection", "contact_area projection"),
+                                        ("constant", "contact_area constant 1e-6")])
+def test_two_spheres_cool_as_in_liggghts(case, area):
+    """LIGGGHTS's two spheres (the scene's materials and sizes, overlapping by 2e-4, 400 and 300 K,
+    lambda dt = 2e-3 by this area): pdps's temperatures every 100 steps equal LIGGGHTS's to 1e-8
+    of the difference between them, and that difference decays at the rate lambda of the two
+    lumped capacities within 1 %. LIGGGHTS's projection is the larger sphere's cross-section."""
+    script, every = RECORDED[case]["script"], RECORDED[case]["every"]
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(script[:script.rindex("run ")])
+    r = 0.5 * (D1 + D2) - 2e-4
+    h = 4 * K1 * K2 / (K1 + K2) * math.sqrt(AREA_OF[area](r, D1 / 2, D2 / 2))
+    m1, m2 = masses()
+    rate = h * (1 / (m1 * C1) + 1 / (m2 * C2))
+    assert rate * sim.dt == pytest.approx(2e-3, rel=1e-12)
+    for n, want in enumerate(RECORDED[case]["temperatures"]):
+        if n:
+            sim.command(f"run {every}")
+        t1, t2 = got = temperatures(sim)
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-8 * (want[0] - want[1]))
+        if n:
+            # explicit steps: -ln(1 - lambda dt)/dt = lambda (1 + lambda dt/2 + ...), 1e-3 above lambda
+            measured = -math.log((t1 - t2) / 100.0) / (n * every * sim.dt)
+            assert measured == pytest.approx(rate, rel=0.01)
+            assert -math.log((want[0] - want[1]) / 100.0) / (n * every * sim.dt) == pytest.approx(rate, rel=0.01)
 
 
 def test_per_atom_temperature_and_flux_in_a_dump(tmp_path):
