@@ -275,50 +275,6 @@ def load_history(partner, history, touched, owner, tag, i, j, update, hist):
     return slot_i, slot_j
 
 
-@njit(cache=True)
-def store_history(history, owner, i, j, slot_i, slot_j, hist):
-    """i keeps the values, j's owner their negatives (the same spring and torque seen from j)."""
-    width = len(hist)
-    jo = owner[j] if owner[j] >= 0 else j
-    for d in range(width):
-        history[i, width * slot_i + d] = hist[d]
-        if slot_j >= 0:
-            history[jo, width * slot_j + d] = -hist[d]
-
-
-@njit(cache=True)
-def load_spring(partner, history, touched, owner, tag, i, j, update, shear):
-    """The contact's spring in i's frame into ``shear``; returns (slot on i, slot on j's owner).
-    When ``update`` the slots are made if new and marked as seen this step (a negative slot: no free
-    slot); in setup only an existing slot is read (-1 when there is none). The width, 3, is a
-    constant here, unrolled: load_history's width read at run time cost gran_box's pair loop 12-20 %."""
-    jo = owner[j] if owner[j] >= 0 else j
-    if not update:
-        slot = find_slot(partner, i, tag[j])
-        for d in range(3):
-            shear[d] = history[i, 3 * slot + d] if slot >= 0 else 0.0
-        return slot, find_slot(partner, jo, tag[i]) if slot >= 0 else -1
-    slot_i = open_slot(partner, history, i, tag[j], 3)
-    slot_j = open_slot(partner, history, jo, tag[i], 3)
-    if slot_i < 0 or slot_j < 0:
-        return slot_i, slot_j
-    touched[i, slot_i] = True
-    touched[jo, slot_j] = True
-    for d in range(3):
-        shear[d] = history[i, 3 * slot_i + d]
-    return slot_i, slot_j
-
-
-@njit(cache=True)
-def store_spring(history, owner, i, j, slot_i, slot_j, shear):
-    """i keeps the spring, j's owner its negative (the same spring seen from j)."""
-    jo = owner[j] if owner[j] >= 0 else j
-    for d in range(3):
-        history[i, 3 * slot_i + d] = shear[d]
-        if slot_j >= 0:
-            history[jo, 3 * slot_j + d] = -shear[d]
-
-
 @njit(cache=True, inline="always")
 def wall_slots(i, start, end, distance, normal, key, reach, partner, values, normal_at, update,
                used, slots, transfer_cos):
