@@ -5,7 +5,7 @@ PLUGINS := $(sort $(dir $(wildcard plugins/*/pyproject.toml)))
 RUN_STAMP := $(VENV)/.installed-run
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test fuzz bench dist clean
+.PHONY: demo test fuzz bench corpus dist clean
 
 # What a run needs: the core and every plugin, editable. The build backend is installed once and
 # shared (--no-build-isolation): an isolated build environment per distribution costs a minute.
@@ -42,6 +42,13 @@ fuzz: $(STAMP)
 # table goes into docs/performance.md. Only this target needs LAMMPS; test and the CI do not.
 bench: $(STAMP)
 	$(VENV)/bin/python benchmarks/bench.py
+
+# Scripts nobody here wrote, beside the programs they were written for: LIGGGHTS 3.8.0's tutorials
+# (Debian's liggghts-doc, unpacked into build/corpus/ when missing) in pdps and in LIGGGHTS
+# (../shared/bench/liggghts, or $$PDPS_LAMMPS_BENCH/liggghts); the table goes into docs/liggghts.md.
+# About an hour; not part of test or the CI.
+corpus: $(RUN_STAMP)
+	$(VENV)/bin/python benchmarks/corpus.py
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
 # meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build

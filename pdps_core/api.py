@@ -22,14 +22,14 @@ from .state import observables
 from .state.limits import check_bins, check_images
 from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
                      StyleArgs, StyleName, SubModel, SurfaceContacts, VariableRef, keyword, param, parse_args,
-                     peratom_column, registry)
+                     PERATOM_REFERENCE, PeratomReference, peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
-           "particle_gaussians", "particle_uniforms", "peratom_column", "philox4x32", "registry",
+           "particle_gaussians", "particle_uniforms", "PERATOM_REFERENCE", "PeratomReference", "peratom_column", "philox4x32", "registry",
            "type_range", "yes_no"]
 
 # What a style may read of the objects the core hands it: object -> {name: what it is}.

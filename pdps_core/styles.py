@@ -15,6 +15,7 @@ import difflib
 import importlib
 import math
 import os
+import re
 import types
 import typing
 from dataclasses import dataclass
@@ -1126,6 +1127,80 @@ def peratom_column(sim, style, column, what):
         raise ScriptError(f"{what}: column {column} is out of range ({style.kind} {style.id} has "
                           f"{values.shape[1]} values per particle, from {base})")
     return values[:, k]
+
+
+PERATOM_REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
+# arrays every particle style has: a LIGGGHTS f_NAME never means them
+_CORE_ARRAYS = ("x", "v", "f", "tag", "type", "mask", "image")
+
+
+class PeratomReference:
+    """A ``c_ID``, ``c_ID[k]``, ``f_ID``, ``f_ID[k]`` or ``v_NAME`` that a dump or compute reads per
+    particle, checked when it is made (one-line errors that start with ``what``, which names the
+    reference: ``dump column c_ke``) and read over the
+    owned particles by ``values(sim)``:
+
+    - ``c_ID[k]``, ``f_ID[k]``: column k (counted from the dialect's first index) of a compute's or
+      fix's (or analyze style's) ``peratom`` values; without [k], the only column;
+    - in the LIGGGHTS dialect, ``f_NAME[k]`` also names column k, counted from 0 as LIGGGHTS counts,
+      of a per-atom property that a fix made (``f_Temp[0]``, ``f_heatFlux[0]`` of fix heat/gran);
+    - ``v_NAME``: an atom-style variable's values (LAMMPS's), another style's value on every row.
+    """
+
+    def __init__(self, sim, word, what):
+        match = PERATOM_REFERENCE.match(word)
+        if match is None:
+            raise ScriptError(f"{what}: {word} is not c_ID, c_ID[k], f_ID, f_ID[k] or v_NAME")
+        self.word, self.what = word, what
+        self.prefix, self.ident, k = match.groups()
+        self.column = None if k is None else int(k)
+        self.style = None
+        if self.prefix == "v":
+            if self.column is not None:
+                raise ScriptError(f"{what}: a variable has one value per particle, no [k]")
+            if self.ident not in sim.variables:
+                raise ScriptError(f"{what}: variable {self.ident} is not defined")
+            return
+        if self.prefix == "f" and self._property(sim) is not None:
+            return
+        if self.prefix == "c":
+            self.style, kind = sim.computes.get(self.ident), "compute"
+            offers = self.style is not None and type(self.style).peratom is not Compute.peratom
+        else:
+            self.style, kind = sim.fixes.get(self.ident) or sim.analyzes.get(self.ident), "fix"
+            offers = callable(getattr(self.style, "peratom", None))
+        if self.style is None:
+            raise ScriptError(f"{what}: {kind} {self.ident} is not defined")
+        if not offers:
+            raise ScriptError(f"{what}: {kind} {self.ident} ({self.style.name}) has no per-atom values")
+
+    def needs(self, sim):
+        """What the values need computed on the step they are read (``energy``, ``virial``)."""
+        if self.prefix == "c":
+            return sim.compute_needs(self.ident)
+        return {"energy", "virial"} if self.prefix == "v" else set()
+
+    def values(self, sim):
+        """(nlocal,) floats."""
+        if self.prefix == "v":
+            return sim.variables.atom_values(self.ident)
+        if self.style is None:
+            return self._property(sim)
+        return peratom_column(sim, self.style, self.column, self.what)
+
+    def _property(self, sim):
+        """The LIGGGHTS per-atom property's column, or None where ``f_NAME`` names no property."""
+        p = sim.particles
+        if sim.dialect.name != "liggghts" or self.ident in _CORE_ARRAYS or not p.has(self.ident):
+            return None
+        array = p.arrays[self.ident]
+        width = 1 if array.ndim == 1 else array.shape[1]
+        k = self.column
+        if k is None and width > 1 or k is not None and not 0 <= k < width:
+            raise ScriptError(f"{self.what}: per-atom property {self.ident} has {width} value(s) per particle, "
+                              f"f_{self.ident}[0]{f' to [{width - 1}]' if width > 1 else ''} (LIGGGHTS counts "
+                              f"from 0)")
+        return array[: p.nlocal] if array.ndim == 1 else array[: p.nlocal, k]
 
 
 class Analyze(Style):

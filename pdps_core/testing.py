@@ -524,6 +524,23 @@ def restart_round_trip(tmp_path, setup, first, second, *, split=False, again="")
     return straight, resumed
 
 
+# what a LAMMPS or LIGGGHTS restart file holds (their read_restart pages): a script that reads one does
+# not give these again
+RESTART_HOLDS = frozenset({
+    "units", "atom_style", "atom_modify", "dimension", "boundary", "lattice", "create_box", "create_atoms",
+    "read_data", "mass", "velocity", "set", "displace_atoms", "delete_atoms", "group", "pair_style", "pair_coeff",
+    "pair_modify", "bond_style", "bond_coeff", "special_bonds", "newton", "comm_modify", "communicate", "run"})
+
+
+def given_again(script):
+    """The lines of a LAMMPS or LIGGGHTS ``script`` that a script reading its restart file gives again:
+    all but those the file holds (RESTART_HOLDS) and the runs; its fixes, computes, regions, thermo
+    and neighbor settings."""
+    kept = [line for line in textwrap.dedent(script).splitlines()
+            if line.split()[:1] and line.split()[0] not in RESTART_HOLDS]
+    return "\n".join(kept) + "\n"
+
+
 def script_error(setup, line):
     """The ScriptError that ``line`` raises in a silent Simulation that first ran ``setup``."""
     sim = Simulation(screen=False, log=None)

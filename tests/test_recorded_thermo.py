@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import assert_thermo_as_lammps, by_tag, lammps_rows, lammps_thermo, run_ranks, thermo_csv
+from pdps_core.testing import assert_thermo_as_lammps, by_tag, given_again, lammps_rows, lammps_thermo, run_ranks, thermo_csv
 
 ROOT = Path(__file__).resolve().parents[1]
 TABLES = sorted(ROOT.glob("plugins/*/tests/data/*.cases.json"))
@@ -88,7 +88,8 @@ def test_a_restart_goes_on_as_the_run_did(tmp_path, monkeypatch, path, case):
     before = Simulation(screen=False, log=None, dialect="lammps")
     before.command(f"{start}run {steps // 2}\nwrite_restart half.restart")
     resumed = Simulation(screen=False, log=None, dialect="lammps")
-    resumed.command(f"read_restart half.restart\nrun {steps - steps // 2}")
+    # as a LAMMPS script reading a restart file: its fixes, computes and settings given again
+    resumed.command(f"read_restart half.restart\n{given_again(start)}run {steps - steps // 2}")
     assert resumed.step == straight.step == steps
     np.testing.assert_allclose(resumed.box.length, straight.box.length, rtol=1e-12)
     for name in ("x", "v"):

@@ -20,7 +20,7 @@ import pytest
 
 from pdps_core.api import Fix, ScriptError, Simulation, StyleArgs, observables, registry
 from pdps_core.state import restart as restart_files
-from pdps_core.testing import lj_fcc
+from pdps_core.testing import by_tag, lj_fcc
 
 
 def silent():
@@ -274,6 +274,58 @@ def test_a_style_state_is_saved_restored_and_handed_to_a_fix_given_again(tmp_pat
     sim.command(f"fix bad all {Unsaveable.name}")
     with pytest.raises(ScriptError, match="fix bad: state\\(\\) holds a object"):
         sim.command("write_restart bad.restart")
+
+
+LJ_RESTART = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.0 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+region low block INF INF INF INF INF 1.5
+fix 1 all nve
+fix pull all addforce 0.0 0.0 1.0
+compute k all ke
+"""
+
+
+@pytest.mark.parametrize("dialect", ["lammps", "liggghts"])
+def test_a_lammps_restart_holds_no_fixes_computes_or_regions(tmp_path, monkeypatch, dialect):
+    """LAMMPS's and LIGGGHTS's rule (their read_restart pages): the file holds the particles, box,
+    groups, masses and pair style; the reading script gives its fixes, computes and regions again. A
+    fix it leaves out does not act (no addforce: the run is the straight run without it), a compute
+    may take its old ID, a region defined before read_restart stays, and the timestep comes back."""
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect=dialect)
+    sim.command(LJ_RESTART + "timestep 0.002\nrun 20\nwrite_restart lj.restart")
+    again = Simulation(screen=False, log=None, dialect=dialect)
+    again.command("region early block INF INF INF INF INF 1.0\nread_restart lj.restart")
+    assert not again.fixes and not again.computes
+    assert sorted(again.system.regions) == ["early"]
+    assert again.run_state.dt == 0.002
+    again.command("compute k all ke\nfix 1 all nve\nrun 20")
+    # the reference: the same particles going on with nve alone
+    alone = Simulation(screen=False, log=None, dialect=dialect)
+    alone.command(LJ_RESTART + "timestep 0.002\nrun 20\nunfix pull\nrun 20")
+    np.testing.assert_allclose(by_tag(again, again.v), by_tag(alone, alone.v), rtol=1e-10, atol=1e-12)
+    pulled = Simulation(screen=False, log=None, dialect=dialect)
+    pulled.command(LJ_RESTART + "timestep 0.002\nrun 40")
+    assert np.abs(by_tag(pulled, pulled.v) - by_tag(alone, alone.v)).max() > 1e-3
+
+
+def test_a_pdps_restart_brings_back_the_whole_simulation(tmp_path, monkeypatch):
+    """In the PDPS dialect read_restart brings back the fixes, computes and regions as well."""
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(LJ_RESTART + "run 5\nwrite_restart lj.restart")
+    again = Simulation(screen=False, log=None, dialect="pdps")
+    again.command("read_restart lj.restart")
+    assert sorted(again.fixes) == ["1", "pull"] and sorted(again.computes) == ["k"]
+    assert "low" in again.system.regions
 
 
 STL = """solid plate

@@ -45,16 +45,21 @@ class Dialect:
     # what a sphere's density multiplies in 2d (create_atoms, read_data, set density and diameter):
     # "sphere" 4/3 pi r^3 (LAMMPS), "disc" pi r^2 (LIGGGHTS, PDPS)
     volume_2d: str = "disc"
+    # what read_restart brings back besides the particles, box, groups and pair style: True, the
+    # whole simulation (PDPS: fixes, computes, analyze styles, regions); False, LAMMPS's and LIGGGHTS's
+    # rule: the script gives its fixes, computes and regions again, a fix given with the ID and style
+    # it had takes up its saved state
+    restart_styles: bool = True
 
 
 DIALECTS = {
     "pdps": Dialect("pdps", "PDPS", index_base=0, region_units="box", velocity_units="box",
                     velocity_numbers="counter"),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
-                      velocity_numbers="park", volume_2d="sphere"),
+                      velocity_numbers="park", volume_2d="sphere", restart_styles=False),
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
-                        velocity_numbers="park", set_diameter_keeps="density"),
+                        velocity_numbers="park", set_diameter_keeps="density", restart_styles=False),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

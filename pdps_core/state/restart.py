@@ -30,6 +30,12 @@ back as lists. Per-atom state belongs in ``particles.request`` arrays, which are
 fix, compute or analyze style given again after ``read_restart`` with the same ID and style
 (LAMMPS scripts do) gets the saved state too, at the next run (or restart written).
 
+What reading brings back depends on the script's dialect (``Dialect.restart_styles``): in PDPS, all
+of the above. In LAMMPS and LIGGGHTS, what their manuals list: the particles, the box, groups,
+masses and the pair style with its coefficients, the step and the timestep; regions, fixes, computes
+and analyze styles are not made again (the script gives them, and regions it defined before
+``read_restart`` stay), and a saved style's state waits for a style given with its ID and style.
+
 Writing: to ``FILE.tmp`` in the same folder, flushed and fsynced, then renamed over ``FILE``
 (``os.replace`` is atomic), then the folder fsynced: at every moment ``FILE`` is either the previous
 complete restart or the new one.
@@ -587,8 +593,10 @@ def restore(sim, header, arrays):
                           for name, definition in header["groups"]["definitions"].items()}
     sim.system.groups = groups
     sim.styles.restored_states = {}
-    sim.system.regions = {}
-    for record in header["regions"]:
+    whole = sim.dialect.restart_styles
+    if whole:
+        sim.system.regions = {}
+    for record in header["regions"] if whole else ():
         cls = registry.lookup("region", record["style"])
         region = cls(sim, record["id"], _load_args(cls.Args, record["args"], f"region {record['id']}"))
         sim.system.regions[record["id"]] = region
@@ -601,6 +609,12 @@ def restore(sim, header, arrays):
         setattr(sim.styles, table, styles)
         for record in header[table]:
             what = f"{kind} {record['id']}"
+            if not whole:
+                # held for a style the script gives again with this ID and style (hand_over_states)
+                if record["state"] is not None:
+                    sim.styles.restored_states[(kind, record["id"])] = (
+                        record["style"], _decode(record["state"], arrays), None)
+                continue
             cls = _spelled(registry.lookup(kind, record["style"]), record, what)
             style = cls(sim, record["id"], record["group"], _load_args(cls.Args, record["args"], what))
             sim.particles.request_all(cls.per_atom)

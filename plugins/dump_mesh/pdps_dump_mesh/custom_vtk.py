@@ -10,18 +10,20 @@ VTK, LIGGGHTS's default) or ``.vtu``. The particles are points, sorted by id (th
 ``x y z`` may be listed or not, as LIGGGHTS says), with point data for the attributes listed, in
 LIGGGHTS's groups: ``id``, ``type``, ``mass``, ``radius``, ``diameter``, ``ix iy iz`` (as the vector
 ``image``), ``vx vy vz`` (``v``), ``fx fy fz`` (``f``), ``omegax omegay omegaz`` (``omega``),
-``tqx tqy tqz`` (``torque``); a component listed alone is written alone (``vz``). Computes, fixes
-and variables (``c_ID``, ``f_ID``, ``v_NAME``) and per-processor files (``%``) are refused by name:
-write them with dump custom.
+``tqx tqy tqz`` (``torque``); a component listed alone is written alone (``vz``); computes', fixes'
+and atom-style variables' per-atom values (``c_ID``, ``c_ID[k]``, ``f_ID``, ``f_ID[k]``, ``v_NAME``, and
+LIGGGHTS's ``f_Temp[0]`` of a per-atom property, as dump custom reads them), each a scalar named as
+written. Per-processor files (``%``) are refused by name.
 
 Example (LIGGGHTS's tutorials)::
 
     dump dmp all custom/vtk 800 post/packing_*.vtk id type x y z vx vy vz fx fy fz omegax omegay omegaz radius
+    dump dmp all custom/vtk 800 post/heatGran_*.vtk id type x y z radius f_Temp[0] f_heatFlux[0]
 """
 
 import numpy as np
 
-from pdps_core.api import ScriptError, StyleArgs, param
+from pdps_core.api import PERATOM_REFERENCE, PeratomReference, ScriptError, StyleArgs, param
 
 from .frames import MeshDump, vertex_cells
 from .vtk import DumpVTK, series_json
@@ -51,10 +53,11 @@ class DumpCustomVTK(MeshDump):
             raise ScriptError("per-processor files (%) are not supported: pdps writes one file per frame")
         super().__init__(sim, id, group, args)
         self.columns = []           # (name in the file, array name, component or None)
+        self.references = {}
         for word in args.attributes:
-            if word.startswith(("c_", "f_", "v_")):
-                raise ScriptError(f"custom/vtk: {word}: computes, fixes and variables are not written by "
-                                  "custom/vtk in pdps; use dump custom for them")
+            if PERATOM_REFERENCE.match(word):
+                self.references[word] = PeratomReference(sim, word, f"custom/vtk: {word}")
+                continue
             if word in POSITIONS:
                 continue
             if word in OTHER_POSITIONS:
@@ -104,7 +107,7 @@ class DumpCustomVTK(MeshDump):
         is one entry; a lone component is an entry of its own."""
         names = []
         for word in self.args.attributes:
-            if word in SCALARS and word not in names:
+            if (word in SCALARS or word in self.references) and word not in names:
                 names.append(word)
             elif word in COMPONENT:
                 vector, _ = COMPONENT[word]
@@ -114,9 +117,16 @@ class DumpCustomVTK(MeshDump):
                     names.append(entry)
         return names
 
+    @property
+    def needs(self):
+        """Energy and virial on the steps this dump writes, when a compute or variable reads them."""
+        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
+
     def _values(self, sim, name):
         p = sim.particles
         n = p.nlocal
+        if name in self.references:
+            return self.references[name].values(sim)
         if name in VECTORS:
             return p.arrays[name][:n]
         if name in COMPONENT:

@@ -342,12 +342,37 @@ def test_custom_vtk_writes_the_listed_values(tmp_path, make_sim):
     np.testing.assert_array_equal(np.ravel(mesh.point_data["radius"]), expected["radius"])
     np.testing.assert_array_equal(np.ravel(mesh.point_data["id"]), expected["id"])
     assert (tmp_path / "post.vtk.series").exists()
-    with pytest.raises(ScriptError, match="custom/vtk: c_ke: computes, fixes and variables"):
+    with pytest.raises(ScriptError, match="custom/vtk: c_ke: compute ke is not defined"):
         sim.command("dump 2 all custom/vtk 3 q_*.vtk id c_ke")
     with pytest.raises(ScriptError, match="custom/vtk: unknown attribute colour"):
         sim.command("dump 3 all custom/vtk 3 q_*.vtk id colour")
     with pytest.raises(ScriptError, match="custom/vtk: xu: the points are the wrapped positions x y z"):
         sim.command("dump 4 all custom/vtk 3 q_*.vtk id xu yu zu")
+
+
+def test_custom_vtk_writes_computes_fixes_and_variables(tmp_path, make_sim):
+    """c_ID[k], v_NAME of an atom-style variable and a fix's per-atom values (LIGGGHTS's heat
+    tutorials write f_Temp[0]) as scalars named as written, the values dump custom writes."""
+    lines = """compute p all property/atom vx radius
+        variable twice atom 2*vz+x
+        dump 1 all custom/vtk 3 q_*.vtk id c_p[1] v_twice
+        dump 2 all custom 3 q_*.txt id c_p[1] v_twice"""
+    sim = two_spheres(make_sim, "0.1 0.2 -0.3", lines)
+    sim.command("run 3")
+    expected = state(sim)
+    mesh = meshio.read(tmp_path / "q_3.vtk")
+    assert sorted(mesh.point_data) == ["c_p[1]", "id", "v_twice"]
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["c_p[1]"]), expected["radius"])
+    np.testing.assert_allclose(np.ravel(mesh.point_data["v_twice"]), 2 * expected["v"][:, 2] + expected["x"][:, 0],
+                               rtol=1e-15)
+    rows = np.loadtxt(tmp_path / "q_3.txt", skiprows=9)
+    rows = rows[np.argsort(rows[:, 0])]
+    np.testing.assert_allclose(rows[:, 2], 2 * expected["v"][:, 2] + expected["x"][:, 0], rtol=1e-9)
+    with pytest.raises(ScriptError, match=r"custom/vtk: v_nope: variable nope is not defined"):
+        sim.command("dump 3 all custom/vtk 3 r_*.vtk id v_nope")
+    with pytest.raises(ScriptError, match=r"custom/vtk: c_p\[2\]: column 2 is out of range"):
+        sim.command("dump 4 all custom/vtk 3 r_*.vtk id c_p[2]")
+        sim.command("run 3")
 
 
 @pytest.mark.parametrize("style", ["vtk", "custom/vtk"])

@@ -19,8 +19,8 @@ References (the header shows them as written):
 - ``f_ID``, ``f_ID[k]``: the same for a fix (or analyze style) that offers per-atom values. In the
   LIGGGHTS dialect ``f_NAME[k]`` also names column k (from 0, as LIGGGHTS) of a per-atom property
   a fix made: ``f_Temp[0]``, ``f_heatFlux[0]`` of fix heat/gran.
-- ``v_NAME``: a variable's value, the same on every row. LAMMPS's dump reads atom-style variables,
-  one value per particle; pdps has only global (equal, index) variables so far.
+- ``v_NAME``: an atom-style variable's value of each particle (LAMMPS's), another variable's value on
+  every row.
 
 The computes, fixes and variables named must exist when the dump is defined and when it writes.
 
@@ -38,7 +38,7 @@ import re
 import numpy as np
 from pydantic import field_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param, peratom_column
+from pdps_core.api import PeratomReference, ScriptError, StyleArgs, observables, param
 
 from .frame import TextDump
 
@@ -81,20 +81,14 @@ class DumpCustom(TextDump):
             if needed and not sim.particles.has(needed):
                 raise ScriptError(f"dump column {column} needs per-particle {needed} "
                                   f"(particle_style {styles})")
-            if REFERENCE.match(column):
-                _reference(sim, column)
+        self.references = {column: PeratomReference(sim, column, f"dump column {column}")
+                           for column in self.columns if REFERENCE.match(column)}
         super().__init__(sim, id, group, args)
 
     @property
     def needs(self):
         """Energy and virial on the steps this dump writes, when a compute or variable reads them."""
-        needs = set()
-        for column in self.columns:
-            if column.startswith("c_") and REFERENCE.match(column):
-                needs |= self.sim.compute_needs(REFERENCE.match(column).group(2))
-            elif column.startswith("v_"):
-                needs |= {"energy", "virial"}
-        return needs
+        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
 
     def column_values(self, sim, chosen):
         p, box = sim.particles, sim.box
@@ -126,59 +120,7 @@ class DumpCustom(TextDump):
             elif column == "diameter":
                 value = 2.0 * p.radius[chosen]
             else:
-                value = _reference_values(sim, column)[chosen]
+                value = self.references[column].values(sim)[chosen]
             values.append(value)
             formats.append("%d" if column in INTEGER else "%.10g")
         return values, formats
-
-
-def _reference(sim, word):
-    """(style or None, column k or None, variable name or None) of a c_/f_/v_ column; a one-line
-    error when it names nothing, or a style without per-atom values."""
-    prefix, ident, k = REFERENCE.match(word).groups()
-    k = None if k is None else int(k)
-    if prefix == "v":
-        if ident not in sim.variables:
-            raise ScriptError(f"dump column {word}: variable {ident} is not defined")
-        return None, None, ident
-    if prefix == "c":
-        style, kind = sim.computes.get(ident), "compute"
-        offers = style is not None and type(style).peratom is not Compute.peratom
-    else:
-        # LIGGGHTS names a per-atom property by the property, whatever fix made it
-        if _liggghts_property(sim, ident, k, word) is not None:
-            return None, k, None
-        style, kind = sim.fixes.get(ident) or sim.analyzes.get(ident), "fix"
-        offers = callable(getattr(style, "peratom", None))
-    if style is None:
-        raise ScriptError(f"dump column {word}: {kind} {ident} is not defined")
-    if not offers:
-        raise ScriptError(f"dump column {word}: {kind} {ident} ({style.name}) has no per-atom values")
-    return style, k, None
-
-
-def _liggghts_property(sim, ident, k, word):
-    """LIGGGHTS's ``f_NAME[k]`` for a per-atom property a fix made (heat/gran's ``f_Temp[0]``,
-    ``f_heatFlux[0]``, ``f_directionalHeatFlux[2]``): its column k, counted from 0 as LIGGGHTS
-    counts them; None outside the LIGGGHTS dialect or for a name no per-atom property has."""
-    p = sim.particles
-    if sim.dialect.name != "liggghts" or ident in ("x", "v", "f", "tag", "type", "mask", "image") or not p.has(ident):
-        return None
-    array = p.arrays[ident]
-    width = 1 if array.ndim == 1 else array.shape[1]
-    if k is None and width > 1 or k is not None and not 0 <= k < width:
-        raise ScriptError(f"dump column {word}: per-atom property {ident} has {width} value(s) per particle, "
-                          f"f_{ident}[0]{f' to [{width - 1}]' if width > 1 else ''} (LIGGGHTS counts from 0)")
-    return array[: p.nlocal] if array.ndim == 1 else array[: p.nlocal, k]
-
-
-def _reference_values(sim, word):
-    """A c_/f_/v_ column over the owned particles."""
-    style, k, variable = _reference(sim, word)
-    n = sim.particles.nlocal
-    if variable is not None:
-        return np.full(n, float(sim.variables.value(variable)))
-    if style is None:
-        prefix, ident, _ = REFERENCE.match(word).groups()
-        return _liggghts_property(sim, ident, k, word)
-    return peratom_column(sim, style, k, f"dump column {word}")

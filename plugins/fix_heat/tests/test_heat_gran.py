@@ -7,6 +7,7 @@ import json
 import math
 from pathlib import Path
 
+import meshio
 import numpy as np
 import pytest
 
@@ -165,6 +166,21 @@ def test_liggghts_dump_spelling_of_the_per_atom_properties(tmp_path):
     assert [float(r[1]) for r in rows] == [float(r[4]) for r in rows]
     assert float(rows[0][2]) == pytest.approx(-float(rows[1][2]), rel=1e-12)
     assert float(rows[0][3]) == pytest.approx(float(rows[1][3]), rel=1e-12)
+
+
+def test_liggghts_heat_tutorials_custom_vtk_columns(tmp_path):
+    """The heatTransfer tutorials' dump custom/vtk ... f_Temp[0] f_heatFlux[0]: each a point scalar
+    named as written, the values dump custom writes."""
+    sim = scene()
+    sim.command(f"dump d all custom/vtk 1 {tmp_path}/heat_*.vtk id radius f_Temp[0] f_heatFlux[0]\n"
+                f"dump t all custom 1 {tmp_path}/heat.dump id f_Temp[0] f_heatFlux[0]\nrun 0")
+    mesh = meshio.read(tmp_path / "heat_0.vtk")
+    rows = sorted((int(r[0]), float(r[1]), float(r[2])) for r in
+                  (line.split() for line in (tmp_path / "heat.dump").read_text().splitlines()[-2:]))
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["id"]), [r[0] for r in rows])
+    np.testing.assert_array_equal(np.ravel(mesh.point_data["f_Temp[0]"]), [r[1] for r in rows])
+    np.testing.assert_allclose(np.ravel(mesh.point_data["f_heatFlux[0]"]), [r[2] for r in rows], rtol=1e-9)
+    assert sorted(np.ravel(mesh.point_data["f_Temp[0]"])) == [300.0, 400.0]
 
 
 def test_liggghts_dump_spelling_out_of_range(pdps_cli):

@@ -180,6 +180,56 @@ def test_bad_dump_mesh_vtk(data, tmp_path, words, message):
     assert message in str(info.value)
 
 
+def test_dump_mesh_stl_writes_where_the_meshes_are(data, tmp_path):
+    """LIGGGHTS's dump mesh/stl: one ASCII STL file per frame with the triangles of the meshes named
+    (all when none is), at their vertices of that step (the lid moving up at 0.5), each facet's unit
+    normal right-handed over its vertices; ``region`` keeps the triangles whose centre it holds."""
+    sim = make_box(f"""
+        fix floor all mesh/surface file {data}/square.stl
+        fix lid all mesh/surface file {data}/square.stl move 0 0 3
+        fix up all move/mesh mesh lid linear 0 0 0.5
+        create_particle 1 single 0.4 -0.3 2 diameter 1 density 1
+        fix 1 all test/nve_sphere
+        timestep 0.001
+        region high block INF INF INF INF 2.5 INF
+        dump a all mesh/stl 10 {tmp_path}/all*.stl
+        dump b all mesh/stl 10 {tmp_path}/lid*.stl local lid
+        dump c all mesh/stl 10 {tmp_path}/high*.stl region high
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    sim.command("run 20")
+    square = meshio.read(f"{data}/square.stl")
+    for step in (0, 10, 20):
+        text = (tmp_path / f"all{step}.stl").read_text()
+        assert text.startswith("solid ") and text.rstrip().endswith("endsolid LIGGGHTS_STL_EXPORT")
+        facets = [[float(w) for w in line.split()[2:]] for line in text.splitlines() if "facet normal" in line]
+        vertices = np.array([[float(w) for w in line.split()[1:]] for line in text.splitlines()
+                             if line.split()[:1] == ["vertex"]]).reshape(-1, 3, 3)
+        expected = square.points[square.cells_dict["triangle"]]
+        lifted = expected + [0.0, 0.0, 3.0 + 0.5 * step * 0.001]
+        np.testing.assert_allclose(vertices, np.concatenate([expected, lifted]), atol=1e-9)
+        normals = np.cross(vertices[:, 1] - vertices[:, 0], vertices[:, 2] - vertices[:, 0])
+        np.testing.assert_allclose(facets, normals / np.linalg.norm(normals, axis=1)[:, None], atol=1e-9)
+        lid = (tmp_path / f"lid{step}.stl").read_text()
+        high = (tmp_path / f"high{step}.stl").read_text()
+        assert lid == high and lid.count("facet normal") == 2
+        assert f"{3.0 + 0.5 * step * 0.001:.9e}" in lid
+
+
+@pytest.mark.parametrize("words, message", [
+    ("ghost", "ghost: every rank holds whole meshes, there are no ghost triangles to write"),
+    ("nothere", "nothere is not the ID of a fix mesh/surface"),
+    ("region nothere", "region nothere"),
+])
+def test_bad_dump_mesh_stl(data, tmp_path, words, message):
+    sim = make_box(f"fix cad all mesh/surface file {data}/square.stl", box="-4 4 -4 4 -4 4",
+                   particle_style="sphere")
+    with pytest.raises(ScriptError) as info:
+        sim.command(f"dump d all mesh/stl 10 {tmp_path}/m*.stl {words}")
+    assert message in str(info.value)
+    with pytest.raises(ScriptError, match="per-processor files"):
+        sim.command(f"dump e all mesh/stl 10 {tmp_path}/m%*.stl")
+
+
 @pytest.mark.parametrize("velocity", [(1.0, 0.0, -0.2), (1.0, 0.0, -1.0), (0.0, 0.3, -0.5)],
                          ids=["grazing", "45-degrees", "steep"])
 def test_finnie_wear_of_a_sphere_driven_into_the_floor(data, velocity):

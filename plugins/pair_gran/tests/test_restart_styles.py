@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import by_tag
+from pdps_core.testing import by_tag, given_again
 
 SPHERES = """
 atom_style sphere
@@ -54,7 +54,7 @@ def test_a_granular_restart_resumes_the_same_trajectory(tmp_path, pair):
     before = Simulation(screen=False, log=None, dialect=dialect)
     before.command(setup + f"\nrun 40\nwrite_restart {path}")
     resumed = Simulation(screen=False, log=None, dialect=dialect)
-    resumed.command(f"read_restart {path}\nrun 40")
+    resumed.command(f"read_restart {path}\n{given_again(setup)}run 40")
     # the contact is held across the write: the spheres touch and slide
     assert np.linalg.norm(before.x[0] - before.x[1]) < 0.006
     for name in ("x", "v", "omega"):

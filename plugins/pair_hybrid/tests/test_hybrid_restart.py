@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import by_tag, lj_fcc
+from pdps_core.testing import by_tag, given_again, lj_fcc
 
 ATOMS = "\n" + lj_fcc(3, 2) + """set type 1 type/fraction 2 0.5 4321
 mass * 1.0
@@ -30,7 +30,7 @@ def test_a_hybrid_restart_resumes_the_same_trajectory(tmp_path, style):
     before = Simulation(screen=False, log=None, dialect="lammps")
     before.command(setup + f"\nrun 30\nwrite_restart {path}")
     resumed = Simulation(screen=False, log=None, dialect="lammps")
-    resumed.command(f"read_restart {path}\nrun 30")
+    resumed.command(f"read_restart {path}\n{given_again(setup)}run 30")
     assert resumed.pair.assigned == straight.pair.assigned
     for name in ("x", "v"):
         np.testing.assert_allclose(by_tag(resumed, getattr(resumed, name)), by_tag(straight, getattr(straight, name)),

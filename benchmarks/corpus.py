@@ -1,0 +1,331 @@
+"""Scripts nobody here wrote, run as their users run them, in pdps and in the program they were
+written for: LIGGGHTS 3.8.0's tutorials (issue 33).
+
+    make corpus                                  # or:
+    .venv/bin/python benchmarks/corpus.py [--only cohesion/in.cohesion ...] [--timeout 3600]
+                                          [--reference-seeds 3] [--pdps-seeds 2] [--print]
+
+Where the scripts come from: Debian's ``liggghts-doc``, fetched with ``apt-get download`` and unpacked
+into build/corpus/ when it is not there yet (``--doc`` names another unpacked copy). The scripts are
+GPL: they are read there and run in copies of their folders under build/corpus/runs/, never copied
+into the project; benchmarks/results/corpus_liggghts.json keeps the numbers only.
+
+How each script runs, unmodified but for its seeds:
+- The reference program (``../shared/bench/liggghts``, or ``$PDPS_LAMMPS_BENCH/liggghts``) runs it
+  once per seed set; the first set is the script's own seeds. A script's seeds are the numbers after
+  ``particletemplate/*`` and ``particledistribution/discrete`` and after an insertion's ``seed``
+  keyword; set k replaces each by a prime of its own (``seed_set``), the same one wherever the same
+  seed appears.
+- The reference's runs are kept in the results file and run again only with ``--rerun-reference``
+  or when more seed sets are asked for than it holds.
+- pdps (this checkout's ``.venv``) runs it with ``--pdps-seeds`` other sets: its insertion draws its
+  own random numbers, so the reference's seeds would not give the reference's packing anyway.
+- The scripts of one folder run in order of name in one copy of it (insert_stream's second script
+  reads the restart file its first writes), ``-in SCRIPT -echo none -log log.NAME``, with
+  ``--timeout`` seconds each.
+
+What the table says, per script (written into docs/liggghts.md between its ``corpus:begin`` and
+``corpus:end`` lines):
+- runs: pdps ran it to its end (exit 0, its last ``Loop time`` line printed); else the first line
+  pdps printed that says why (``ERROR: ...``), or ``timeout``. Where the reference program itself
+  fails, the script is out of the count, with its reason.
+- agrees: the thermo rows compared column by column (columns in the script's order; steps that both
+  print). Where the reference's seed sets print the same rows, the script is deterministic: pdps's
+  rows agree when every value lies within the reference's printed precision (relative 1e-5, or 1e-12
+  of the column's largest value for values at round-off), else the step where they part is given.
+  Where the seed sets differ, statistically: at every row and column, the mean of pdps's runs
+  (of log10 where every value is positive) lies within the range of the reference's runs widened by
+  that range on each side (as tests/test_liggghts_tutorials.py, where the measured spread is
+  discussed); the table gives the worst excess in units of the range (at most 1 agrees), and beside
+  it the reference measured against itself the same way: each pair of its seed sets against the
+  others (with 4 sets: 6 pairs, each against a range of 2 runs, so a stricter test than pdps's).
+- time a step, both programs: the sum of the ``Loop time`` lines over the steps they count, the
+  fastest of each program's seed sets (pdps's first run compiles what its caches lack).
+
+Not part of ``make test``: a full run takes about an hour on this 2-core machine. Run it on an idle
+machine if the times matter.
+"""
+
+import argparse
+import itertools
+import json
+import math
+import os
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+BUILD = ROOT / "build" / "corpus"
+REFERENCE = Path(os.environ.get("PDPS_LAMMPS_BENCH", ROOT.parent / "shared" / "bench"))
+PAGE = ROOT / "docs" / "liggghts.md"
+RESULTS = HERE / "results" / "corpus_liggghts.json"
+BEGIN, END = "<!-- corpus:begin -->", "<!-- corpus:end -->"
+TUTORIALS = Path("usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+# the CFD-DEM coupling (ParScale) needs a CFD program beside LIGGGHTS: out of the field (issue 33)
+COUPLED = ("ParScale/",)
+SEED = re.compile(r"(particletemplate/\S+\s+|particledistribution/discrete\s+|\bseed\s+)(\d+)")
+DETERMINISTIC = 1e-5        # LIGGGHTS's thermo prints 6 significant digits (%g)
+ROUNDOFF = 1e-12
+SAME = 4e-4                 # log10 of 1.001: energies that all runs print alike
+LOOP = re.compile(r"^Loop time of (\S+) on \d+ procs for (\d+) steps")
+
+
+def is_prime(n):
+    if n < 2 or n % 2 == 0:
+        return n == 2
+    return all(n % d for d in range(3, int(n ** 0.5) + 1, 2))
+
+
+def seed_set(k, count):
+    """``count`` primes for seed set k >= 1: LIGGGHTS wants its seeds prime and above 10,000."""
+    primes, n = [], 10_000_000 * (k + 1)
+    while len(primes) < count:
+        n += 1
+        if is_prime(n):
+            primes.append(n)
+    return primes
+
+
+def with_seeds(text, k):
+    """The script with seed set k (0: its own)."""
+    own = list(dict.fromkeys(match.group(2) for match in SEED.finditer(text)))
+    if k == 0 or not own:
+        return text
+    new = dict(zip(own, map(str, seed_set(k, len(own)))))
+    return SEED.sub(lambda match: match.group(1) + new[match.group(2)], text)
+
+
+def doc_folder(given):
+    """The unpacked tutorials: ``given``, or build/corpus/liggghts-doc, fetched when missing."""
+    if given is not None:
+        return Path(given)
+    target = BUILD / "liggghts-doc"
+    if not (target / TUTORIALS).is_dir():
+        target.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryDirectory() as folder:
+            fetched = subprocess.run(["apt-get", "download", "liggghts-doc"], cwd=folder, capture_output=True,
+                                     text=True)
+            if fetched.returncode != 0:
+                subprocess.run(["apt-get", "update", "-qq"], check=True)
+                subprocess.run(["apt-get", "download", "liggghts-doc"], cwd=folder, check=True)
+            package = next(Path(folder).glob("liggghts-doc_*.deb"))
+            subprocess.run(["dpkg-deb", "-x", str(package), str(target)], check=True)
+    return target / TUTORIALS
+
+
+def scripts(tutorials):
+    """{folder: [script names in order]} of every tutorial outside COUPLED."""
+    found = {}
+    for path in sorted(tutorials.rglob("in.*")):
+        relative = path.relative_to(tutorials).as_posix()
+        if relative.startswith(COUPLED) or "pascal" in path.parts:
+            continue
+        found.setdefault(path.parent.relative_to(tutorials).as_posix(), []).append(path.name)
+    return found
+
+
+def thermo(text):
+    """The thermo rows a run printed: {step: [values]} (a row repeated at a run's start keeps its
+    first printing) and the column names."""
+    rows, names, columns = {}, [], None
+    for line in text.splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            columns = len(words)
+            names = names or words[1:]
+            continue
+        if line.startswith("Loop time"):
+            columns = None
+            continue
+        if columns and len(words) == columns:
+            try:
+                values = [float(word) for word in words]
+            except ValueError:
+                continue
+            rows.setdefault(int(values[0]), values[1:])
+    return rows, names
+
+
+def loop_time(text):
+    """(seconds, steps) summed over the Loop time lines."""
+    seconds = steps = 0
+    for line in text.splitlines():
+        match = LOOP.match(line)
+        if match:
+            seconds += float(match.group(1))
+            steps += int(match.group(2))
+    return seconds, steps
+
+
+def why_failed(text, code):
+    for line in text.splitlines():
+        if line.startswith(("ERROR", "Traceback")) or "error" in line.lower().split(":")[0]:
+            return line.strip()[:300]
+    return f"exit {code}: " + (text.strip().splitlines() or ["(no output)"])[-1][:200]
+
+
+def run_folder(command, tutorials, folder, names, k, timeout, label):
+    """Every script of ``folder`` with seed set k in one copy: {name: result}."""
+    work = BUILD / "runs" / f"{label}-{k}" / folder
+    shutil.rmtree(work, ignore_errors=True)
+    shutil.copytree(tutorials / folder, work)
+    results = {}
+    for name in names:
+        script = work / name
+        script.write_text(with_seeds(script.read_text(), k))
+        start = time.perf_counter()
+        try:
+            done = subprocess.run(command + ["-in", name, "-echo", "none", "-log", f"log.{name}"], cwd=work,
+                                  capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+            text, code = done.stdout + done.stderr, done.returncode
+        except subprocess.TimeoutExpired as stopped:
+            text, code = (stopped.stdout or b"").decode(errors="replace"), None
+        wall = time.perf_counter() - start
+        rows, names_ = thermo(text)
+        seconds, steps = loop_time(text)
+        ended = code == 0 and "Loop time" in text
+        result = {"ok": ended, "wall": round(wall, 2), "loop": round(seconds, 4), "steps": steps,
+                  "columns": names_, "rows": {str(step): values for step, values in rows.items()}}
+        if not ended:
+            result["why"] = "timeout" if code is None else why_failed(text, code)
+        results[name] = result
+        print(f"  {label} {folder}/{name} seeds {k}: {'ok' if ended else result['why']} ({wall:.0f} s)",
+              file=sys.stderr, flush=True)
+    return results
+
+
+def excess(reference, candidates, steps, columns):
+    """The largest distance, over rows and columns, of the mean of the ``candidates``' values (of
+    log10 where every value is positive) outside the range of the ``reference``'s, in units of that
+    range; at most 1 lies within the range widened by itself on each side. With where it is."""
+    worst, where = 0.0, ""
+    for s in steps:
+        for c, name in enumerate(columns):
+            values = [run["rows"][s][c] for run in reference]
+            ours = [run["rows"][s][c] for run in candidates]
+            logarithmic = min(values + ours) > 0.0
+            if logarithmic:
+                values, ours = [math.log10(v) for v in values], [math.log10(v) for v in ours]
+            mean = statistics.fmean(ours)
+            # rows where every run agrees to round-off (free fall before the first contact)
+            floor = SAME if logarithmic else ROUNDOFF * max(1.0, max(map(abs, values)))
+            distance = max(min(values) - mean, mean - max(values)) / max(max(values) - min(values), floor)
+            if distance > worst:
+                worst, where = distance, f"step {s} {name}"
+    return worst, where
+
+
+def compare(reference, mine):
+    """The agreement of pdps's runs with the reference's: (kind, verdict, detail)."""
+    steps = sorted(set.intersection(*(set(run["rows"]) for run in reference + mine)), key=int)
+    columns = reference[0]["columns"]
+    if not steps:
+        return "none", False, "no thermo row both print"
+    if any(run["columns"] != columns for run in mine):
+        return "none", False, f"other thermo columns: {mine[0]['columns']} against {columns}"
+    if all(run["rows"][s] == reference[0]["rows"][s] for run in reference[1:] for s in steps):
+        scale = [max(abs(reference[0]["rows"][s][c]) for s in steps) for c in range(len(columns))]
+        for s in steps:
+            for c, (want, got) in enumerate(zip(reference[0]["rows"][s], mine[0]["rows"][s])):
+                if abs(got - want) > max(DETERMINISTIC * abs(want), ROUNDOFF * scale[c]):
+                    return "deterministic", False, f"part at step {s}: {columns[c]} {want:g} against {got:g}"
+        return "deterministic", True, f"{len(steps)} rows to the printed digits"
+    worst, where = excess(reference, mine, steps, columns)
+    # the reference against itself: each pair of its runs against the others
+    own = [excess([run for k, run in enumerate(reference) if k not in pair], [reference[k] for k in pair], steps,
+                  columns)[0] for pair in itertools.combinations(range(len(reference)), 2)] \
+        if len(reference) >= 4 else []
+    itself = f"; LIGGGHTS's pairs of seeds against its others: median {statistics.median(own):.2f}, " \
+             f"worst {max(own):.2f}" if own else ""
+    return "statistical", worst <= 1.0, f"worst {worst:.2f} of the seeds' range ({where or 'none'}){itself}"
+
+
+def per_step(run):
+    return run["loop"] / run["steps"] if run.get("steps") else None
+
+
+def table(results):
+    lines = ["| script | LIGGGHTS | pdps runs unmodified | agrees | how compared | time a step, LIGGGHTS / pdps |",
+             "|---|---|---|---|---|---|"]
+    counted = ran = agreed = 0
+    for script, entry in results["scripts"].items():
+        reference, mine = entry["reference"], entry["pdps"]
+        if not reference[0]["ok"]:
+            lines.append(f"| {script} | fails: {reference[0]['why']} | (out of the count) | | | |")
+            continue
+        counted += 1
+        if not all(run["ok"] for run in mine):
+            why = next(run["why"] for run in mine if not run["ok"])
+            lines.append(f"| {script} | runs | no: `{why}` | | | |")
+            continue
+        ran += 1
+        kind, ok, detail = entry["agreement"]
+        agreed += ok
+        times = [min(filter(None, map(per_step, runs)), default=None) for runs in (reference, mine)]
+        cell = " / ".join(f"{t * 1e6:.0f} us" if t else "-" for t in times)
+        lines.append(f"| {script} | runs | yes | {'yes' if ok else 'no'} | {kind}: {detail} | {cell} |")
+    lines.append("")
+    lines.append(f"{ran} of the {counted} scripts LIGGGHTS runs run unmodified in pdps; {agreed} agree "
+                 f"({results['date']}, {results['reference_seeds']} LIGGGHTS seed sets, {results['pdps_seeds']} pdps).")
+    return "\n".join(lines)
+
+
+def write_page(text):
+    page = PAGE.read_text()
+    head, rest = page.split(BEGIN, 1)
+    tail = rest.split(END, 1)[1]
+    PAGE.write_text(head + BEGIN + "\n" + text + "\n" + END + tail)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--only", nargs="*", help="folder/script names (default: all)")
+    parser.add_argument("--doc", help="an unpacked Tutorials_public folder instead of build/corpus's")
+    parser.add_argument("--timeout", type=float, default=3600.0, help="seconds a run (default 3600)")
+    parser.add_argument("--reference-seeds", type=int, default=4)
+    parser.add_argument("--pdps-seeds", type=int, default=2)
+    parser.add_argument("--rerun-reference", action="store_true",
+                        help="run the reference program again (default: keep its recorded runs)")
+    parser.add_argument("--print", action="store_true", help="print the table, leave docs/ as it is")
+    args = parser.parse_args()
+    tutorials = doc_folder(args.doc)
+    liggghts = ["bash", str(REFERENCE / "liggghts")]
+    pdps = [str(Path(sys.executable).parent / "pdps"), "run", "--no-progress"]
+    old = json.loads(RESULTS.read_text()) if RESULTS.exists() else {"scripts": {}}
+    results = {"date": time.strftime("%Y-%m-%d"), "reference_seeds": args.reference_seeds,
+               "pdps_seeds": args.pdps_seeds, "scripts": old["scripts"]}
+    for folder, names in scripts(tutorials).items():
+        if args.only and not any(item in (folder, f"{folder}/{name}") for item in args.only for name in names):
+            continue
+        # a folder's scripts run together, in order: the later ones read what the earlier ones wrote
+        kept = [old["scripts"].get(f"{folder}/{name}", {}).get("reference", []) for name in names]
+        if args.rerun_reference or min(map(len, kept)) < args.reference_seeds:
+            reference = [run_folder(liggghts, tutorials, folder, names, k, args.timeout, "liggghts")
+                         for k in range(args.reference_seeds)]
+        else:
+            reference = [{name: runs[k] for name, runs in zip(names, kept)} for k in range(args.reference_seeds)]
+        mine = [run_folder(pdps, tutorials, folder, names, k, args.timeout, "pdps")
+                for k in range(args.reference_seeds, args.reference_seeds + args.pdps_seeds)]
+        for name in names:
+            entry = {"reference": [runs[name] for runs in reference], "pdps": [runs[name] for runs in mine]}
+            if entry["reference"][0]["ok"] and all(run["ok"] for run in entry["pdps"]):
+                good = [run for run in entry["reference"] if run["ok"]]
+                entry["agreement"] = compare(good, entry["pdps"])
+            results["scripts"][f"{folder}/{name}"] = entry
+    results["scripts"] = dict(sorted(results["scripts"].items()))
+    RESULTS.write_text(json.dumps(results, indent=None, separators=(",", ":")) + "\n")
+    text = table(results)
+    print(text)
+    if not args.print:
+        write_page(text)
+
+
+if __name__ == "__main__":
+    main()
