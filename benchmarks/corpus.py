@@ -319,8 +319,9 @@ def main():
                 good = [run for run in entry["reference"] if run["ok"]]
                 entry["agreement"] = compare(good, entry["pdps"])
             results["scripts"][f"{folder}/{name}"] = entry
-    results["scripts"] = dict(sorted(results["scripts"].items()))
-    RESULTS.write_text(json.dumps(results, indent=None, separators=(",", ":")) + "\n")
+        # after each folder: a long corpus run stopped half way keeps what it measured
+        results["scripts"] = dict(sorted(results["scripts"].items()))
+        RESULTS.write_text(json.dumps(results, indent=None, separators=(",", ":")) + "\n")
     text = table(results)
     print(text)
     if not args.print:
