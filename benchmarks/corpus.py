@@ -311,8 +311,12 @@ def main():
                          for k in range(args.reference_seeds)]
         else:
             reference = [{name: runs[k] for name, runs in zip(names, kept)} for k in range(args.reference_seeds)]
-        mine = [run_folder(pdps, tutorials, folder, names, k, args.timeout, "pdps")
-                for k in range(args.reference_seeds, args.reference_seeds + args.pdps_seeds)]
+        if not any(runs[name]["ok"] for runs in reference for name in names):
+            # the reference cannot run them: out of the count, nothing to compare pdps with
+            mine = [{name: {"ok": False, "why": "not run: the reference program fails"} for name in names}]
+        else:
+            mine = [run_folder(pdps, tutorials, folder, names, k, args.timeout, "pdps")
+                    for k in range(args.reference_seeds, args.reference_seeds + args.pdps_seeds)]
         for name in names:
             entry = {"reference": [runs[name] for runs in reference], "pdps": [runs[name] for runs in mine]}
             if entry["reference"][0]["ok"] and all(run["ok"] for run in entry["pdps"]):
