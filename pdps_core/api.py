@@ -52,6 +52,8 @@ CONTRACT = {
         "dimension": "2 or 3",
         "lattice": "the lattice command's Lattice (spacing (3,): what units lattice multiplies by; basis, cell, offset, style), or None",
         "units": "the unit system (Units): boltz, mvv2e, nktv2p",
+        "stiffness_checks": "{'soft': bool, 'hard': bool}: whether LIGGGHTS's bounds on youngsModulus hold "
+                            "(soft_particles yes / hard_particles yes lift them)",
         # the run
         "step": "the current timestep",
         "time": "simulated time (time units)",

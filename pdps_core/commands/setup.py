@@ -211,6 +211,22 @@ def communicate(sim, args):
         comm_modify(sim, args[1:])
 
 
+@command("soft_particles")
+def soft_particles(sim, args):
+    """LIGGGHTS's ``soft_particles yes|no``: yes lifts its lower bound on youngsModulus (5e6 in si,
+    5e7 in cgs units), which the granular material otherwise enforces."""
+    count(args, 1, "soft_particles yes|no")
+    sim.system.stiffness_checks["soft"] = not yes_no(args[0], "soft_particles")
+
+
+@command("hard_particles")
+def hard_particles(sim, args):
+    """LIGGGHTS's ``hard_particles yes|no``: yes lifts its upper bound on youngsModulus (1e9 in si,
+    1e10 in cgs units)."""
+    count(args, 1, "hard_particles yes|no")
+    sim.system.stiffness_checks["hard"] = not yes_no(args[0], "hard_particles")
+
+
 @command("newton")
 def newton(sim, args):
     """Accepted: pdps computes each pair with ghosts once and sums ghost forces back (LAMMPS's newton

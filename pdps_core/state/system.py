@@ -13,7 +13,7 @@ from .units import UNITS
 class System:
     __slots__ = ("sim", "units", "dimension", "periodicity", "box", "shrink_faces", "ntypes", "mass",
                  "particle_style", "lattice", "particles", "groups", "regions", "processors",
-                 "ghost_velocity")
+                 "ghost_velocity", "stiffness_checks")
 
     def __init__(self, sim):
         self.sim = sim                  # for group selections (regions, variables)
@@ -31,6 +31,8 @@ class System:
         self.regions = {}
         self.processors = None          # the processors command's grid, or None
         self.ghost_velocity = False     # comm_modify vel yes: ghosts carry velocities
+        # LIGGGHTS's bounds on youngsModulus, lifted by soft_particles yes / hard_particles yes
+        self.stiffness_checks = {"soft": True, "hard": True}
 
     @property
     def particle_styles(self):

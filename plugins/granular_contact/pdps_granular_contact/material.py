@@ -25,6 +25,28 @@ PROPERTIES = {
 }
 
 
+# LIGGGHTS's sanity bounds on youngsModulus by unit system (its global_properties.cpp): below
+# (soft) or above (hard) them it refuses the material unless soft_particles / hard_particles yes
+STIFFNESS_BOUNDS = {"si": (5e6, 1e9), "cgs": (5e7, 1e10)}
+
+
+def check_stiffness(sim, label, values):
+    """LIGGGHTS's bounds on Young's moduli in si and cgs units, each lifted by its command."""
+    bounds = STIFFNESS_BOUNDS.get(sim.units.name)
+    if bounds is None:
+        return
+    low, high = bounds
+    checks = sim.stiffness_checks
+    soft = [float(y) for y in values if float(y) < low]
+    hard = [float(y) for y in values if float(y) > high]
+    if soft and checks["soft"]:
+        raise ScriptError(f"{label} must be >= {low:g} in {sim.units.name} units (got {soft[0]:g}), as LIGGGHTS "
+                          "requires; give soft_particles yes to allow softer particles")
+    if hard and checks["hard"]:
+        raise ScriptError(f"{label} must be <= {high:g} in {sim.units.name} units (got {hard[0]:g}), as LIGGGHTS "
+                          "requires; give hard_particles yes to allow harder particles")
+
+
 def find_property(sim, name):
     """The fix holding global property ``name`` (the last one defined: fix property/global), or None."""
     found = None
@@ -56,6 +78,8 @@ def read_property(sim, name, ntypes, who, spec=None):
     bad = [float(x) for x in values if not valid(float(x))]
     if bad:
         raise ScriptError(f"{label} must be {bounds} (got {bad[0]:g})")
+    if name == "youngsModulus":
+        check_stiffness(sim, label, values)
     if form == "scalar":
         return float(values[0])
     if form == "per_type":

@@ -13,6 +13,7 @@ SCRIPT = """
 atom_style granular
 boundary f f f
 units si
+soft_particles yes
 region reg block -0.3 0.3 -0.3 0.3 0 0.3 units box
 create_box 2 reg
 neighbor 0.002 bin
