@@ -1,0 +1,68 @@
+"""benchmarks/corpus.py's rules (make corpus): seeds replaced consistently by primes, thermo rows
+read from a run's screen, and the verdicts (deterministic to the printed digits, statistical within
+the widened range of the reference's seeds) on made-up runs."""
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+spec = importlib.util.spec_from_file_location("corpus", ROOT / "benchmarks" / "corpus.py")
+corpus = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(corpus)
+
+SCRIPT = """fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.0015
+fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0
+fix ins nve_group insert/pack seed 32452843 distributiontemplate pdd1 &
+run 1000 # seed 15485863 again in a comment
+"""
+
+
+def test_seeds_are_replaced_by_primes_the_same_wherever_they_appear():
+    assert corpus.with_seeds(SCRIPT, 0) == SCRIPT
+    new = corpus.with_seeds(SCRIPT, 2)
+    primes = corpus.seed_set(2, 3)
+    assert all(corpus.is_prime(p) and p > 10_000 for p in primes)
+    assert new.count(str(primes[0])) == 2 and "15485863" not in new      # the comment's too
+    assert f"discrete {primes[1]} 1" in new and f"seed {primes[2]} " in new
+    assert corpus.with_seeds(SCRIPT, 1) != new
+
+
+def test_thermo_rows_keep_the_first_printing_of_a_step():
+    screen = """Step Atoms KinEng c_rke
+       0        0            0            0
+INFO: Particle insertion ins: inserted 120 particle templates
+    1000      120    0.5e-3   1e-5
+Loop time of 1.5 on 1 procs for 1000 steps with 120 atoms
+Step Atoms KinEng c_rke
+    1000      120    0.6e-3   2e-5
+    2000      120    0.7e-3   3e-5
+Loop time of 1.25 on 1 procs for 1000 steps with 120 atoms
+"""
+    rows, names = corpus.thermo(screen)
+    assert names == ["Atoms", "KinEng", "c_rke"]
+    assert rows == {0: [0.0, 0.0, 0.0], 1000: [120.0, 5e-4, 1e-5], 2000: [120.0, 7e-4, 3e-5]}
+    assert corpus.loop_time(screen) == (2.75, 2000)
+
+
+def run(*values):
+    return {"ok": True, "columns": ["KinEng"], "rows": {str(100 * k): [v] for k, v in enumerate(values)}}
+
+
+def test_deterministic_runs_agree_to_the_printed_digits_or_part():
+    reference = [run(1.0, 2.0, 3.0), run(1.0, 2.0, 3.0)]
+    assert corpus.compare(reference, [run(1.0, 2.000001, 3.0)]) == ("deterministic", True,
+                                                                      "3 rows to the printed digits")
+    kind, ok, detail = corpus.compare(reference, [run(1.0, 2.0, 3.01)])
+    assert (kind, ok) == ("deterministic", False) and detail.startswith("part at step 200")
+
+
+@pytest.mark.parametrize("mine, agrees", [((1.0, 2.05), True), ((1.0, 2.25), True), ((1.0, 2.5), False),
+                                          ((1.0, 1.5), False)])
+def test_statistical_runs_within_the_widened_range(mine, agrees):
+    """LIGGGHTS's seeds span 2.0..2.2 at step 100 (log10 range 0.0414): pdps's value agrees up to one
+    range beyond either end, so 2.25 passes (0.24 of it past 2.2), 2.5 does not (1.34), nor 1.5 (3.0)."""
+    reference = [run(1.0, 2.0), run(1.0, 2.1), run(1.0, 2.2)]
+    kind, ok, detail = corpus.compare(reference, [run(*mine)])
+    assert kind == "statistical" and ok == agrees, detail
