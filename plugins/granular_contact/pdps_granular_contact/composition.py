@@ -232,7 +232,13 @@ class ContactModel:
         zero = [f"    c[{slot}] = 0.0" for slot in range(contact_state.FIRST_OUTPUT, contact_state.SIZE)]
         lines += ["", "", '@njit(inline="always", _nrt=False, error_model="numpy")',
                   "def contact(c, coeff, ti, tj, hist):",
-                  '    """The sub-models in order, on the contact in c."""', *zero, *calls]
+                  '    """The sub-models in order, on the contact in c."""', *zero, *calls,
+                  # the loops that take one contact at a time (walls, compute pair/gran/local) call
+                  # one compiled copy: the law is compiled into the block loop and here, not four times
+                  "", "", '@njit(cache=True, _nrt=False, error_model="numpy")',
+                  "def contact_one(c, coeff, ti, tj, hist):",
+                  '    """contact(), compiled once for the scalar loops."""',
+                  "    contact(c, coeff, ti, tj, hist)"]
         with_history = self.history_width > 0
         # values the same seen from either body (a rolling displacement, a twist angle) go to the
         # partner as they are, the others negated

@@ -2,7 +2,8 @@
 the sub-models: filling a contact's quantities (contact_state) from the particle arrays, applying
 its forces and torques, and the loop templates themselves. A generated module imports everything
 here and from contact_block, then defines ``HISTORY`` (the values a contact keeps), ``contact(c,
-coeff, ti, tj, hist)`` (the sub-models in order) and the loops below. Pair loops go a block of
+coeff, ti, tj, hist)`` (the sub-models in order, inlined into the block loop), ``contact_one`` (the
+same compiled once, which the scalar loops call) and the loops below. Pair loops go a block of
 contacts at a time (contact_block's docstring): they gather each touching pair into the block's
 columns (``gather_pair``), compute the block (``block_contacts``) and add its results to the
 particles (``scatter_contacts``) in list order.
@@ -510,7 +511,7 @@ def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offse
                 hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
                 hist_out[count, d] = hist[d]
             fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-            contact(c, coeff, type_[i], type_[j], hist)
+            contact_one(c, coeff, type_[i], type_[j], hist)
             rows[count, 0] = i
             rows[count, 1] = j
             force_out[count, 0] = c[FN] * c[NX] + c[FTX]
@@ -560,7 +561,7 @@ def wall_forces(rows, starts, nrows, distance, normal, key, touch, wall_velocity
             for h in range(width):
                 hist[h] = values[i, s * stride + h] if s >= 0 else 0.0
             fill_wall(c, v, omega, radius, rmass, body_mass, i, distance, normal, wall_velocity, curvature, k)
-            contact(c, coeff, ptype[i], wall_type, hist)
+            contact_one(c, coeff, ptype[i], wall_type, hist)
             if s >= 0:
                 for h in range(width):
                     values[i, s * stride + h] = hist[h]
