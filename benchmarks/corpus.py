@@ -16,8 +16,9 @@ How each script runs, unmodified but for its seeds:
   ``particletemplate/*`` and ``particledistribution/discrete`` and after an insertion's ``seed``
   keyword; set k replaces each by a prime of its own (``seed_set``), the same one wherever the same
   seed appears.
-- The reference's runs are kept in the results file and run again only with ``--rerun-reference``
-  or when more seed sets are asked for than it holds.
+- The reference's runs are kept in the results file and run again only with ``--rerun-reference``;
+  asking for more seed sets than it holds runs the missing ones. pdps's runs are made again each
+  time unless ``--keep-pdps``.
 - pdps (this checkout's ``.venv``) runs it with ``--pdps-seeds`` other sets: its insertion draws its
   own random numbers, so the reference's seeds would not give the reference's packing anyway.
 - The scripts of one folder run in order of name in one copy of it (insert_stream's second script
@@ -29,8 +30,8 @@ What the table says, per script (written into docs/liggghts.md between its ``cor
 - runs: pdps ran it to its end (exit 0, its last ``Loop time`` line printed); else the first line
   pdps printed that says why (``ERROR: ...``), or ``timeout``. Where the reference program itself
   fails, the script is out of the count, with its reason.
-- agrees: the thermo rows compared column by column (columns in the script's order; steps that both
-  print). Where the reference's seed sets print the same rows, the script is deterministic: pdps's
+- agrees: the thermo rows compared column by column (by position, in the script's order: LIGGGHTS's
+  header drops the c_ and f_ of a column's name and cuts it at 8 letters; steps that both print). Where the reference's seed sets print the same rows, the script is deterministic: pdps's
   rows agree when every value lies within the reference's printed precision (relative 1e-5, or 1e-12
   of the column's largest value for values at round-off), else the step where they part is given.
   Where the seed sets differ, statistically: at every row and column, the mean of pdps's runs
@@ -74,6 +75,9 @@ SEED = re.compile(r"(particletemplate/\S+\s+|particledistribution/discrete\s+|\b
 DETERMINISTIC = 1e-5        # LIGGGHTS's thermo prints 6 significant digits (%g)
 ROUNDOFF = 1e-12
 SAME = 4e-4                 # log10 of 1.001: energies that all runs print alike
+# pdps's seed sets are numbered from here on (the reference's from 0), so that asking for more
+# reference seed sets later never gives the reference one of pdps's
+PDPS_FIRST_SEED = 100
 LOOP = re.compile(r"^Loop time of (\S+) on \d+ procs for (\d+) steps")
 
 
@@ -228,7 +232,8 @@ def compare(reference, mine):
     columns = reference[0]["columns"]
     if not steps:
         return "none", False, "no thermo row both print"
-    if any(run["columns"] != columns for run in mine):
+    # by position: LIGGGHTS's header drops c_ and f_ and cuts names at 8 letters (rke for c_rke)
+    if any(len(run["columns"]) != len(columns) for run in mine):
         return "none", False, f"other thermo columns: {mine[0]['columns']} against {columns}"
     if all(run["rows"][s] == reference[0]["rows"][s] for run in reference[1:] for s in steps):
         scale = [max(abs(reference[0]["rows"][s][c]) for s in steps) for c in range(len(columns))]
@@ -293,6 +298,8 @@ def main():
     parser.add_argument("--pdps-seeds", type=int, default=2)
     parser.add_argument("--rerun-reference", action="store_true",
                         help="run the reference program again (default: keep its recorded runs)")
+    parser.add_argument("--keep-pdps", action="store_true",
+                        help="keep pdps's recorded runs too (default: run pdps again)")
     parser.add_argument("--print", action="store_true", help="print the table, leave docs/ as it is")
     args = parser.parse_args()
     tutorials = doc_folder(args.doc)
@@ -305,18 +312,22 @@ def main():
         if args.only and not any(item in (folder, f"{folder}/{name}") for item in args.only for name in names):
             continue
         # a folder's scripts run together, in order: the later ones read what the earlier ones wrote
-        kept = [old["scripts"].get(f"{folder}/{name}", {}).get("reference", []) for name in names]
-        if args.rerun_reference or min(map(len, kept)) < args.reference_seeds:
-            reference = [run_folder(liggghts, tutorials, folder, names, k, args.timeout, "liggghts")
-                         for k in range(args.reference_seeds)]
-        else:
-            reference = [{name: runs[k] for name, runs in zip(names, kept)} for k in range(args.reference_seeds)]
+        recorded = [old["scripts"].get(f"{folder}/{name}", {}) for name in names]
+        held = 0 if args.rerun_reference else min(len(entry.get("reference", [])) for entry in recorded)
+        # the seed sets recorded already, then the ones asked for beyond them
+        reference = [{name: entry["reference"][k] for name, entry in zip(names, recorded)}
+                     for k in range(min(held, args.reference_seeds))]
+        reference += [run_folder(liggghts, tutorials, folder, names, k, args.timeout, "liggghts")
+                      for k in range(len(reference), args.reference_seeds)]
+        first = max(args.reference_seeds, PDPS_FIRST_SEED)
         if not any(runs[name]["ok"] for runs in reference for name in names):
             # the reference cannot run them: out of the count, nothing to compare pdps with
             mine = [{name: {"ok": False, "why": "not run: the reference program fails"} for name in names}]
+        elif args.keep_pdps and min(len(entry.get("pdps", [])) for entry in recorded) >= args.pdps_seeds:
+            mine = [{name: entry["pdps"][k] for name, entry in zip(names, recorded)} for k in range(args.pdps_seeds)]
         else:
             mine = [run_folder(pdps, tutorials, folder, names, k, args.timeout, "pdps")
-                    for k in range(args.reference_seeds, args.reference_seeds + args.pdps_seeds)]
+                    for k in range(first, first + args.pdps_seeds)]
         for name in names:
             entry = {"reference": [runs[name] for runs in reference], "pdps": [runs[name] for runs in mine]}
             if entry["reference"][0]["ok"] and all(run["ok"] for run in entry["pdps"]):

@@ -33,8 +33,8 @@ def test_the_later_of_two_fixes_of_one_name_holds():
     from pdps_granular_contact.material import read_property
     sim = Simulation(screen=False, log=None)
     sim.command(SETUP + "fix a all property/global youngsModulus peratomtype 1e6 2e6\n"
-                "fix b all property/global youngsModulus peratomtype 3e6 4e6\n")
-    assert list(read_property(sim, "youngsModulus", 2, "test")) == [0.0, 3e6, 4e6]
+                "fix b all property/global youngsModulus peratomtype 6e6 7e6\n")
+    assert list(read_property(sim, "youngsModulus", 2, "test")) == [0.0, 6e6, 7e6]
 
 
 def test_scalar_with_two_values_is_refused(pdps_cli):
