@@ -198,7 +198,7 @@ def run_folder(command, tutorials, folder, names, k, timeout, label):
         result = {"ok": ended, "wall": round(wall, 2), "loop": round(seconds, 4), "steps": steps,
                   "columns": names_, "rows": {str(step): values for step, values in rows.items()}}
         if not ended:
-            result["why"] = "timeout" if code is None else why_failed(text, code)
+            result["why"] = f"timeout ({timeout:g} s)" if code is None else why_failed(text, code)
         results[name] = result
         print(f"  {label} {folder}/{name} seeds {k}: {'ok' if ended else result['why']} ({wall:.0f} s)",
               file=sys.stderr, flush=True)

@@ -1007,6 +1007,14 @@ class Fix(Style):
     are wrapped, migrated and listed. A fix inserting spheres says in ``inserted_radius(type_)`` the
     largest radius of that type it will insert: granular pair styles size their cutoffs by it
     before the particles exist (LAMMPS's ``extract("radius")`` of fix pour).
+
+    ``removed(sim)``: called by unfix before the fix goes (it may refuse with a ScriptError, and
+    stays): what it leaves behind, as LAMMPS's fix destructors do (fix move/mesh leaves its mesh
+    where it moved it).
+
+    ``reset_timestep(sim, new, old)``: called by the reset_timestep command after the step changed
+    from ``old`` to ``new``, for a fix that keeps a schedule in steps it should move with the clock
+    (LIGGGHTS's insertion fixes shift their next insertion by new - old).
     """
     kind = "fix"
     can_energy: ClassVar[bool] = False

@@ -230,8 +230,14 @@ def run(sim, args):
 @command("reset_timestep")
 def reset_timestep(sim, args):
     count(args, 1, "reset_timestep N")
+    old = sim.step
     sim.run_state.reset_step(integer(args[0], "timestep", low=0, high=limits.MAX_STEP))
     sim.run_state.energy_step = sim.run_state.virial_step = None
+    # styles that keep a schedule in steps move it with the clock (LIGGGHTS's fix insert)
+    for style in [*sim.fixes.values(), *sim.analyzes.values()]:
+        moved = getattr(style, "reset_timestep", None)
+        if callable(moved):
+            moved(sim, sim.step, old)
 
 
 @command("thermo")

@@ -66,14 +66,27 @@ def _create(sim, kind, table, args, usage):
     instance = cls(sim, ident, group, cls.parse(words))
     sim.particles.request_all(cls.per_atom)
     table[ident] = instance          # a replaced fix keeps its place in the order
+    # given again after read_restart with its ID and style: it takes up its saved state now, as
+    # LAMMPS's fixes do when made, so that the commands after it (reset_timestep) act on that state
+    held = sim.styles.restored_states.get((kind, ident))
+    if held is not None and held[0] == instance.name and held[2] is not instance and callable(
+            getattr(instance, "restore", None)):
+        instance.restore(held[1])
+        del sim.styles.restored_states[(kind, ident)]
     return instance
 
 
 def _remove(sim, kind, table, args):
     count(args, 1, f"un{kind} ID")
-    instance = table.pop(args[0], None)
+    instance = table.get(args[0])
     if instance is None:
         raise ScriptError(f"{kind} {args[0]} is not defined")
+    # a style leaves what it changed as it is now (fix move/mesh: the mesh stays where it went);
+    # it may refuse, and then it stays defined
+    removed = getattr(instance, "removed", None)
+    if callable(removed):
+        removed(sim)
+    del table[args[0]]
     return instance
 
 

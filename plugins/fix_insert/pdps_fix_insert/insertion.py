@@ -123,6 +123,8 @@ class FixInsert(Fix):
         self.events = 0
         self.next_reneighbor = None
         self.finished = False
+        self.first_step = None          # the schedule's first insertion step, set at the first setup
+        self.wanted_so_far = 0          # particles a rate's line has asked for so far (rate styles)
 
     # ---- what a style defines ----
     def read_style(self, sim, args):
@@ -154,7 +156,7 @@ class FixInsert(Fix):
             self.next_reneighbor = None
             return
         first = self.start if self.start is not None else sim.step + 1
-        if getattr(self, "first_step", None) is None:
+        if self.first_step is None:
             self.first_step = max(first, sim.step + 1)
         step = self.first_step
         if self.every is not None and step <= sim.step:
@@ -175,6 +177,26 @@ class FixInsert(Fix):
             self.next_reneighbor = None
         else:
             self.next_reneighbor = sim.step + self.every
+
+    # ---- restart files and the clock ----
+    def state(self):
+        """What a restart file keeps (LIGGGHTS's fix insert keeps the count, mass and schedule):
+        given again with its ID after read_restart, the fix goes on inserting where it stopped."""
+        return {"inserted": self.inserted, "inserted_mass": self.inserted_mass, "events": self.events,
+                "first_step": self.first_step, "finished": self.finished, "wanted_so_far": self.wanted_so_far}
+
+    def restore(self, state):
+        self.inserted = int(state["inserted"])
+        self.inserted_mass = float(state["inserted_mass"])
+        self.events = int(state["events"])
+        self.first_step = None if state["first_step"] is None else int(state["first_step"])
+        self.finished = bool(state["finished"])
+        self.wanted_so_far = int(state["wanted_so_far"])
+
+    def reset_timestep(self, sim, new, old):
+        """The schedule moves with the clock, as LIGGGHTS's next insertion step does."""
+        if self.first_step is not None:
+            self.first_step += new - old
 
     def vector(self, sim):
         return np.array([float(self.inserted), self.inserted_mass])

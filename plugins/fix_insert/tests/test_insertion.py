@@ -159,6 +159,35 @@ def test_rate_region_follows_its_line_and_stops_at_nparticles(make_sim):
     assert counts == [min(math.floor(0.37 * k + 1e-9), 100) for k in range(1, 31)]
 
 
+def test_a_restart_and_reset_timestep_keep_the_count_and_the_schedule(make_sim, tmp_path):
+    """LIGGGHTS's insert_stream tutorial: a fix given again after read_restart goes on with its count
+    and its schedule (LIGGGHTS's fix insert keeps both in the file), and reset_timestep moves the
+    schedule with the clock. 10 particles every 100 steps up to 40: inserted at steps 1, 101, 201
+    before the restart at 250; after reset_timestep 0 and 1000 the next insertion is at
+    301 - 250 + 1000 = 1051, the last one: 40 in all, never more (LIGGGHTS 3.8.0 inserted its
+    tutorial's 300 at 70000 and 100000 after its reset to 50000, 30000 steps apart, where pdps
+    inserted at once, and 1500 at once, before)."""
+    fixes = MATERIAL + """
+        timestep 0.00001
+        fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003
+        fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+        region bc cylinder z 0.0 0.0 0.045 0.00 0.15 units box
+        fix ins all insert/rate/region seed 5 distributiontemplate pdd1 nparticles 40 particlerate 10000 &
+            insert_every 100 region bc
+        fix integr all nve/sphere
+    """
+    sim = make_sim(dialect="liggghts")
+    sim.command(spheres_of_radius(0.003).split(MATERIAL)[0] + fixes + f"run 250\nwrite_restart {tmp_path}/ins.restart")
+    assert sim.fixes["ins"].vector(sim)[0] == 30
+    again = make_sim(dialect="liggghts")
+    again.command(f"read_restart {tmp_path}/ins.restart\n{fixes}reset_timestep 0\nreset_timestep 1000\nrun 50")
+    assert again.fixes["ins"].vector(again)[0] == 30 and again.nlocal == 30
+    again.command("run 1")
+    assert again.fixes["ins"].vector(again)[0] == 40 and again.nlocal == 40
+    again.command("run 300")
+    assert again.nlocal == 40
+
+
 @pytest.mark.parametrize("line, message", [
     ("fix ins all insert/pack seed 1 distributiontemplate pdd1 particles_in_region 5",
      "missing keyword region; usage: fix ID GROUP insert/pack seed S distributiontemplate DIST [keywords] region "

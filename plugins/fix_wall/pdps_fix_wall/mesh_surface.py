@@ -154,10 +154,12 @@ class FixMeshSurface(Fix):
         self.movers.append(mover)
         self.moving = True
 
-    def remove_mover(self, mover):
-        if mover in self.movers:
-            self.movers.remove(mover)
-        self.moving = bool(self.movers)
+    def settle(self):
+        """Its one motion unfixed: the mesh stays where it is, at rest, the base of later motions."""
+        self.placed = self.vertices.copy()
+        self.movers = []
+        self.moving = False
+        self.velocity, self.spin, self.pivot = np.zeros(3), np.zeros(3), np.zeros(3)
 
     def place(self):
         """Vertices, face normals and the wall's rigid velocity from the movers' poses now."""

@@ -25,7 +25,10 @@ The wall velocity each contact law sees is the time derivative of this motion at
 Several ``move/mesh`` on one mesh are superposed: each moves in the frame carried along by the ones
 defined before it (LIGGGHTS's manual; fix mesh/surface gives the formula). The fix group is not
 used. The motions move the vertices in ``initial_integrate``, as LIGGGHTS does; a wall's candidate
-triangles are re-listed only once a vertex has moved half the skin since they were listed.
+triangles are re-listed only once a vertex has moved half the skin since they were listed. An unfixed
+motion leaves the mesh where it took it, at rest, and a motion defined after starts from there (as
+LIGGGHTS's tutorial movingMeshGran moves its bucket, then turns it); unfixing one of several
+motions of one mesh at once is refused.
 
 The motion's clock, and what the variable styles have integrated, are saved in restart files.
 
@@ -232,6 +235,18 @@ class FixMoveMesh(Fix):
         self._advance(sim)
         if self.mesh.movers[-1] is self:
             self.mesh.place()
+
+    # ---- unfix: the mesh stays where this motion took it ----
+    def removed(self, sim):
+        """LIGGGHTS leaves the mesh where it is; a motion defined later starts from there (a rotation
+        turns the moved mesh, not the mesh as read)."""
+        if self not in self.mesh.movers:
+            return
+        if len(self.mesh.movers) > 1:
+            raise ScriptError(f"fix {self.id} (move/mesh): mesh {self.mesh.id} has other move/mesh fixes "
+                              f"({', '.join(m.id for m in self.mesh.movers if m is not self)}) moving it at once: unfixing "
+                              "one of several is not supported")
+        self.mesh.settle()
 
     # ---- restart files ----
     def state(self):

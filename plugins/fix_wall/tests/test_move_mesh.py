@@ -369,3 +369,32 @@ def test_curvature_is_the_angle_within_which_a_contact_hands_its_history_on(curv
     assert partner[0].tolist().count(6) == 1 and 5 not in partner[0].tolist()
     spring = values[0, slots[0] * width:slots[0] * width + 3].tolist()
     assert spring == ([1.0, 2.0, 0.0] if taken_over else [0.0, 0.0, 0.0])
+
+
+def test_an_unfixed_motion_leaves_the_mesh_where_it_took_it(data):
+    """LIGGGHTS's movingMeshGran tutorial: linear, unfix, then rotate about the origin: the rotation
+    turns the moved mesh, X(t) = R(t) (X0 + V t1), as LIGGGHTS 3.8.0's bucket went (its dump mesh/stl
+    at step 60000 to 1e-7, where pdps turned the mesh as read and added the move after, 0.65 off);
+    between the two motions the mesh is at rest. Unfixing one of two motions at once is refused."""
+    import meshio
+    sim = make_box(f"""
+        fix cad all mesh/surface file {data}/square.stl
+        fix go all move/mesh mesh cad linear -0.5 0 -0.3
+        timestep 0.001
+        run 200
+        unfix go
+        run 10
+    """, box="-4 4 -4 4 -4 4", particle_style="sphere")
+    mesh = sim.fixes["cad"]
+    square = meshio.read(f"{data}/square.stl")
+    moved = square.points + [-0.1, 0.0, -0.06]
+    np.testing.assert_allclose(mesh.vertices, moved, atol=1e-12)
+    np.testing.assert_array_equal(mesh.velocity, 0.0)
+    sim.command("fix turn all move/mesh mesh cad rotate origin 0 0 0 axis 0 1 0 period 2.0\nrun 300")
+    angle = math.pi * 0.3
+    turn = np.array([[math.cos(angle), 0, math.sin(angle)], [0, 1, 0], [-math.sin(angle), 0, math.cos(angle)]])
+    np.testing.assert_allclose(mesh.vertices, moved @ turn.T, atol=1e-12)
+    sim.command("fix up all move/mesh mesh cad linear 0 0 1")
+    with pytest.raises(ScriptError, match="mesh cad has other move/mesh fixes \\(up\\) moving it at once"):
+        sim.command("unfix turn")
+    assert "turn" in sim.fixes
