@@ -171,7 +171,8 @@ def loop_time(text):
 def why_failed(text, code):
     for line in text.splitlines():
         if line.startswith(("ERROR", "Traceback")) or "error" in line.lower().split(":")[0]:
-            return line.strip()[:300]
+            # the line, without the list of installed styles an unknown style's message ends with
+            return line.strip().split(" (installed:")[0][:300]
     return f"exit {code}: " + (text.strip().splitlines() or ["(no output)"])[-1][:200]
 
 
@@ -267,7 +268,7 @@ def table(results):
             continue
         counted += 1
         if not all(run["ok"] for run in mine):
-            why = next(run["why"] for run in mine if not run["ok"])
+            why = next(run["why"] for run in mine if not run["ok"]).split(" (installed:")[0]
             lines.append(f"| {script} | runs | no: `{why}` | | | |")
             continue
         ran += 1
