@@ -3,6 +3,7 @@ and their removal (unfix, uncompute, unanalyze, undump)."""
 
 from ..errors import ScriptError
 from ..styles import Pair, registry
+from ..state import restart as restart_files
 from . import command
 from .words import choice, count, integer, number, type_range
 
@@ -66,13 +67,8 @@ def _create(sim, kind, table, args, usage):
     instance = cls(sim, ident, group, cls.parse(words))
     sim.particles.request_all(cls.per_atom)
     table[ident] = instance          # a replaced fix keeps its place in the order
-    # given again after read_restart with its ID and style: it takes up its saved state now, as
-    # LAMMPS's fixes do when made, so that the commands after it (reset_timestep) act on that state
-    held = sim.styles.restored_states.get((kind, ident))
-    if held is not None and held[0] == instance.name and held[2] is not instance and callable(
-            getattr(instance, "restore", None)):
-        instance.restore(held[1])
-        del sim.styles.restored_states[(kind, ident)]
+    if sim.styles.restored_states:
+        restart_files.take_up_state(sim, kind, ident, instance)
     return instance
 
 

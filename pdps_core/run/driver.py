@@ -19,8 +19,8 @@ def run_steps(sim, nsteps, ramp_bounds=None):
     integrator = Verlet(sim)
     run.integrator = integrator
     if sim.styles.restored_states:
-        from ..state.restart import hand_over_states
-        hand_over_states(sim)
+        from ..state.restart import drop_unclaimed_states
+        drop_unclaimed_states(sim)
     try:
         integrator.setup()
         sim.output.setup(run.step, last)

@@ -28,7 +28,8 @@ keeps more than its arguments in the instance defines ``state()`` returning a di
 strings, booleans, None, lists, dicts with string keys) and numpy arrays, at any depth; tuples come
 back as lists. Per-atom state belongs in ``particles.request`` arrays, which are saved anyway. A
 fix, compute or analyze style given again after ``read_restart`` with the same ID and style
-(LAMMPS scripts do) gets the saved state too, at the next run (or restart written).
+(LAMMPS scripts do) gets the saved state too, when it is made; states no style took up by the
+next run (or restart written) are dropped.
 
 What reading brings back depends on the script's dialect (``Dialect.restart_styles``): in PDPS, all
 of the above. In LAMMPS and LIGGGHTS, what their manuals list: the particles, the box, groups,
@@ -89,7 +90,7 @@ def write_restart(sim, path):
 def capture(sim):
     """(header dict, {name: array}) of everything a run needs to go on (module docstring)."""
     if sim.styles.restored_states:
-        hand_over_states(sim)          # a fix given again before any run is saved with its state
+        drop_unclaimed_states(sim)     # a state no style took up is not written again
     p, neighbor = sim.particles, sim.neighbor
     parallel = sim.comm.nprocs > 1
     n = int(sim.comm.sum(p.nlocal))
@@ -610,7 +611,7 @@ def restore(sim, header, arrays):
         for record in header[table]:
             what = f"{kind} {record['id']}"
             if not whole:
-                # held for a style the script gives again with this ID and style (hand_over_states)
+                # held for a style the script gives again with this ID and style (take_up_state)
                 if record["state"] is not None:
                     sim.styles.restored_states[(kind, record["id"])] = (
                         record["style"], _decode(record["state"], arrays), None)
@@ -792,13 +793,18 @@ def _decode(value, arrays):
     return value
 
 
-def hand_over_states(sim):
-    """A fix, compute or analyze style given again after read_restart with the same ID and style
-    gets the state saved for it (LAMMPS); called once, at the next run or restart written."""
-    for (kind, ident), (style_name, state, restored) in sim.styles.restored_states.items():
-        table = getattr(sim, dict(STYLE_TABLES)[kind])
-        current = table.get(ident)
-        if (current is not None and current is not restored and current.name == style_name
-                and callable(getattr(current, "restore", None))):
-            current.restore(state)
+def take_up_state(sim, kind, ident, style):
+    """A fix, compute or analyze style given again after read_restart with the ID and style it had
+    takes up the state saved for it, when it is made (as LAMMPS's fixes do), so that the commands
+    after it (reset_timestep) act on that state."""
+    held = sim.styles.restored_states.get((kind, ident))
+    if held is not None and held[0] == style.name and held[2] is not style and callable(
+            getattr(style, "restore", None)):
+        style.restore(held[1])
+        del sim.styles.restored_states[(kind, ident)]
+
+
+def drop_unclaimed_states(sim):
+    """The saved states no style took up by the next run (or restart written) are dropped, as
+    LAMMPS drops the restart information of fixes not given again."""
     sim.styles.restored_states = {}
