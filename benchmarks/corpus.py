@@ -193,11 +193,11 @@ def run_folder(command, tutorials, folder, names, k, timeout, label):
         except subprocess.TimeoutExpired as stopped:
             text, code = (stopped.stdout or b"").decode(errors="replace"), None
         wall = time.perf_counter() - start
-        rows, names_ = thermo(text)
+        rows, columns = thermo(text)
         seconds, steps = loop_time(text)
         ended = code == 0 and "Loop time" in text
         result = {"ok": ended, "wall": round(wall, 2), "loop": round(seconds, 4), "steps": steps,
-                  "columns": names_, "rows": {str(step): values for step, values in rows.items()}}
+                  "columns": columns, "rows": {str(step): values for step, values in rows.items()}}
         if not ended:
             result["why"] = f"timeout ({timeout:g} s)" if code is None else why_failed(text, code)
         results[name] = result
