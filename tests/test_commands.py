@@ -267,6 +267,18 @@ class TestCreateParticle:
         assert np.all(sim.x[:, 2] == 0)
         assert min_image_distance(sim) >= 1.0
 
+    @pytest.mark.parametrize("bounds, boundary, n", [("0 2.5 0 2.5 0 2000", "p p p", 1500),
+                                                     ("0 2.5 0 2.5 0 2000", "f f f", 1500),
+                                                     ("0 3 0 3 0 1000", "p p p", 2000),
+                                                     ("0 3 0 3 -1e9 1e9", "p p f", 2000)])
+    def test_random_no_overlap_in_a_tall_box(self, sim, bounds, boundary, n):
+        """Two cells across a periodic face, walls, 9000 cells hashed into 4096 buckets, and an absurd
+        box of 2^20 cells along z: the spacing holds between every pair, brute force."""
+        run(sim, f"boundary {boundary}" + box(bounds=bounds) + f"create_particle 1 random_no_overlap {n} box 1.0 5")
+        assert sim.nlocal == n
+        assert sim.box.inside(sim.x).all()
+        assert min_image_distance(sim) >= 1.0
+
     @pytest.mark.parametrize("dimension, bounds, n", [(3, "0 1 0 1 0 1", 10), (2, "0 1 0 1 -0.5 0.5", 10),
                                                       (3, "0 4 0 4 0 4", 1000)])
     def test_too_full_a_region_is_an_error_not_a_hang(self, sim, dimension, bounds, n):

@@ -1,10 +1,10 @@
 """Particle commands: create_particle (PDPS; LAMMPS's create_atoms is in create_atoms.py), read_data,
 mass, group (velocity is in velocity.py)."""
 
-import itertools
 import math
 
 import numpy as np
+from numba import njit
 
 from ..errors import ScriptError
 from ..state import limits
@@ -132,83 +132,127 @@ def _lattice_sites(sim, region):
 def _random_no_overlap(sim, n, region, dmin, seed, max_misses=10000, batch=256):
     """Random positions in ``region``, none closer than dmin to another (periodic images counted).
 
-    Candidates are checked against a grid of the box with cells at least dmin wide, wrapped across
-    periodic faces, so a check looks only at the 3^d cells around the candidate. After ``max_misses``
-    rejected candidates in a row the region counts as too full: an error, never a hang."""
+    Candidates come from numpy's generator 256 at a time; each is checked, in order, against the
+    particles already there and those placed before it by ``_place_free``, which looks only at the
+    3^d grid cells (at least dmin wide) around it. After ``max_misses`` rejected candidates in a row
+    the region counts as too full: an error, never a hang."""
     rng = np.random.default_rng(seed)
     box = sim.box
     lo, hi = (box.lo, box.hi) if getattr(region, "side_out", False) else region.bounds()
     lo, hi = np.maximum(lo, box.lo), np.minimum(hi, box.hi)
     dims = sim.dimension
-    periodic = box.periodic[:dims]
-    length = box.length[:dims].tolist()
-    origin = box.lo[:dims].tolist()
-    # capped so the keys stay small; a capped cell is still wider than dmin
-    ncell = [max(1, int(min(L / dmin, 2 ** 20))) if dmin > 0 else 1 for L in length]
-    offsets = list(itertools.product((-1, 0, 1), repeat=dims))
-    grid, around = {}, {}
-    dmin_sq = dmin * dmin
-
-    def cell_of(p):
-        key = []
-        for d in range(dims):
-            c = math.floor((p[d] - origin[d]) / length[d] * ncell[d])
-            key.append(c % ncell[d] if periodic[d] else min(max(c, 0), ncell[d] - 1))
-        return tuple(key)
-
-    def neighbour_cells(cell):
-        keys = set()
-        for offset in offsets:
-            key = [c + o for c, o in zip(cell, offset)]
-            for d in range(dims):
-                if periodic[d]:
-                    key[d] %= ncell[d]
-            if all(0 <= k < m for k, m in zip(key, ncell)):
-                keys.add(tuple(key))
-        return keys
-
-    def free(p):
-        cell = cell_of(p)
-        if cell not in around:
-            around[cell] = neighbour_cells(cell)
-        for key in around[cell]:
-            for q in grid.get(key, ()):
-                r_sq = 0.0
-                for d in range(dims):
-                    delta = p[d] - q[d]
-                    if periodic[d]:
-                        delta -= length[d] * round(delta / length[d])
-                    r_sq += delta * delta
-                if r_sq < dmin_sq:
-                    return False
-        return True
-
-    def add(p):
-        grid.setdefault(cell_of(p), []).append(p)
-
     # every rank places the same particles: each must see all existing ones, not only its own
-    for p in sim.comm.allgather_rows(sim.particles.x[: sim.particles.nlocal]).tolist():
-        add(p)
-    placed, misses = [], 0
-    while len(placed) < n:
+    existing = np.ascontiguousarray(sim.comm.allgather_rows(sim.particles.x[: sim.particles.nlocal]),
+                                    dtype=np.float64).reshape(-1, 3)
+    total = len(existing) + n
+    points = np.zeros((total, 3))
+    points[: len(existing)] = existing
+    # capped so cell indices stay small; a capped cell is still wider than dmin
+    ncell = np.ones(3, dtype=np.int64)
+    if dmin > 0:
+        ncell[:dims] = [max(1, int(min(L / dmin, 2 ** 20))) for L in box.length[:dims]]
+    # cells are found by a hash of their indices, in a table twice the particles' number: a grid of
+    # an absurd box costs no memory, and two cells in one bucket only cost a few more distance checks
+    buckets = 1 << max(6, int(2 * total).bit_length())
+    head = np.full(buckets, -1, dtype=np.int64)
+    chain = np.full(total, -1, dtype=np.int64)
+    periodic = np.array(box.periodic, dtype=np.bool_)
+    geometry = (box.lo.astype(np.float64), box.length.astype(np.float64), periodic, ncell, dims)
+    for i in range(len(existing)):
+        _file_in_cell(points, i, head, chain, *geometry[:4])
+    placed, misses = len(existing), 0
+    while placed < total:
         candidates = lo + rng.random((batch, 3)) * (hi - lo)
         if dims == 2:
             candidates[:, 2] = 0.0
         usable = region.match(candidates) & box.inside(candidates)
-        for p, ok in zip(candidates.tolist(), usable.tolist()):
-            if ok and (dmin <= 0 or free(p)):
-                placed.append(p)
-                add(p)
-                misses = 0
-                if len(placed) == n:
-                    break
-                continue
+        placed, misses = _place_free(candidates, usable, points, placed, head, chain, *geometry,
+                                     dmin * dmin, misses, max_misses)
+        if misses >= max_misses:
+            raise ScriptError(f"placed only {placed - len(existing)} of {n} particles in region "
+                              f"{region.id} without overlap: {max_misses} random tries in a row failed "
+                              f"(minimum distance {dmin:g}); the region is too full")
+    return points[len(existing):].copy()
+
+
+@njit(cache=True)
+def _cell_index(p, origin, length, periodic, ncell, d):
+    c = np.int64(np.floor((p - origin[d]) / length[d] * ncell[d]))
+    if periodic[d]:
+        return c % ncell[d]
+    return min(max(c, 0), ncell[d] - 1)
+
+
+@njit(cache=True)
+def _bucket(cx, cy, cz, buckets):
+    return ((cx * 73856093) ^ (cy * 19349663) ^ (cz * 83492791)) & (buckets - 1)
+
+
+@njit(cache=True)
+def _file_in_cell(points, i, head, chain, origin, length, periodic, ncell):
+    cx = _cell_index(points[i, 0], origin, length, periodic, ncell, 0)
+    cy = _cell_index(points[i, 1], origin, length, periodic, ncell, 1)
+    cz = _cell_index(points[i, 2], origin, length, periodic, ncell, 2)
+    b = _bucket(cx, cy, cz, len(head))
+    chain[i] = head[b]
+    head[b] = i
+
+
+@njit(cache=True)
+def _neighbour_range(c, m, periodic):
+    """The cell indices next to ``c`` along one axis of ``m`` cells, each once: (first, count)."""
+    if periodic:
+        if m < 3:
+            return 0, m
+        return c - 1, 3
+    first = max(c - 1, 0)
+    return first, min(c + 1, m - 1) - first + 1
+
+
+@njit(cache=True)
+def _place_free(candidates, usable, points, placed, head, chain, origin, length, periodic, ncell,
+                dims, dmin_sq, misses, max_misses):
+    """Takes the usable candidates that keep dmin from every point so far, in order, into
+    ``points[placed:]`` until it is full or ``max_misses`` tries in a row failed: (placed, misses)."""
+    buckets = len(head)
+    cell = np.zeros(3, dtype=np.int64)
+    first = np.zeros(3, dtype=np.int64)
+    span = np.ones(3, dtype=np.int64)
+    for k in range(len(candidates)):
+        if placed == len(points):
+            break
+        free = usable[k]
+        if free and dmin_sq > 0.0:
+            for d in range(3):
+                cell[d] = _cell_index(candidates[k, d], origin, length, periodic, ncell, d)
+                first[d], span[d] = _neighbour_range(cell[d], ncell[d], periodic[d])
+            for ix in range(span[0]):
+                for iy in range(span[1]):
+                    for iz in range(span[2]):
+                        cx = (first[0] + ix) % ncell[0]
+                        cy = (first[1] + iy) % ncell[1]
+                        cz = (first[2] + iz) % ncell[2]
+                        j = head[_bucket(cx, cy, cz, buckets)]
+                        while j >= 0 and free:
+                            r_sq = 0.0
+                            for d in range(dims):
+                                delta = candidates[k, d] - points[j, d]
+                                if periodic[d]:
+                                    delta -= length[d] * np.rint(delta / length[d])
+                                r_sq += delta * delta
+                            if r_sq < dmin_sq:
+                                free = False
+                            j = chain[j]
+        if free:
+            points[placed] = candidates[k]
+            _file_in_cell(points, placed, head, chain, origin, length, periodic, ncell)
+            placed += 1
+            misses = 0
+        else:
             misses += 1
             if misses >= max_misses:
-                raise ScriptError(f"placed only {len(placed)} of {n} particles in region {region.id} "
-                                  f"without overlap: {max_misses} random tries in a row failed "
-                                  f"(minimum distance {dmin:g}); the region is too full")
-    return np.array(placed, dtype=np.float64).reshape(-1, 3)
+                break
+    return placed, misses
 
 
 def sphere_volume(sim, radius):
