@@ -7,12 +7,13 @@ Syntax::
         particlerate R | massrate R  insert_every N  region REGION [general keywords] [ntry_mc N]
 
 Every ``insert_every`` steps (required; the first insertion at ``start``, default the next step)
-the fix inserts the particles that keep the inserted number on the rate's line: after the k-th
-insertion, :math:`\lfloor k\,\dot N\,\Delta t_\mathrm{ins}\rfloor` in all, with :math:`\dot N` the
-particle rate (``particlerate``, particles/time) or :math:`\dot M/\langle m\rangle` (``massrate``,
-mass/time, :math:`\langle m\rangle` the distribution's expected particle mass) and
-:math:`\Delta t_\mathrm{ins}` = insert_every x dt. So the delivered number never strays a whole
-particle from the rate (LIGGGHTS rounds each insertion at random instead). It stops after
+the fix inserts :math:`\lfloor n + u\rfloor` particles, :math:`n = \dot N\,\Delta t_\mathrm{ins}`
+with :math:`\dot N` the particle rate (``particlerate``, particles/time) or :math:`\dot M/\langle
+m\rangle` (``massrate``, mass/time, :math:`\langle m\rangle` the distribution's expected particle
+mass), :math:`\Delta t_\mathrm{ins}` = insert_every x dt and u uniform on [0, 1): each insertion
+rounds at random, to the rate on average, as LIGGGHTS's fix insert does (its
+``calc_ninsert_this``); the delivered number wanders from the rate's line as a sum of such
+roundings, by about :math:`\sqrt{k\,p(1-p)}` after k insertions, p the fraction of n. It stops after
 ``nparticles N`` particles, or :math:`M/\langle m\rangle` of them for ``mass M`` (rounded to the
 nearest; with sizes drawn at random the mass is reached on average); ``INF``: never. Particles that
 found no room are not owed later (as in LIGGGHTS). Placement, velocities and the general keywords:
@@ -26,6 +27,8 @@ Example::
 
 import math
 from typing import Literal
+
+import numpy as np
 
 from pdps_core.api import ScriptError, keyword
 
@@ -70,9 +73,11 @@ def read_rate(fix, args):
 
 
 def rate_count(fix, sim):
-    """Particles for the current insertion: the rate's line, less what is already owed, capped."""
-    line = math.floor(fix.events_done_after() * fix.rate * fix.every * sim.dt + 1e-9)
-    count = min(line, fix.total) - fix.wanted_so_far
+    """Particles for the current insertion, as LIGGGHTS counts them: int(n + u) for the n = rate x
+    insert_every x dt the rate asks, u uniform on [0, 1) (drawn from the seed and the step, so a
+    restart draws the same), capped at what the total leaves."""
+    odds = np.random.default_rng([fix.seed, sim.step, 1]).random()
+    count = min(int(fix.rate * fix.every * sim.dt + odds), fix.total - fix.wanted_so_far)
     fix.wanted_so_far += max(count, 0)
     if fix.wanted_so_far >= fix.total:
         fix.finished = True
@@ -99,9 +104,6 @@ class FixInsertRateRegion(InRegion, FixInsert):
         self.region = insertion_region(sim, args.region)
         read_rate(self, args)
         self.wanted_so_far = 0
-
-    def events_done_after(self):
-        return self.events + 1          # wanted() is asked before the insertion counts
 
     def wanted(self, sim):
         return rate_count(self, sim)

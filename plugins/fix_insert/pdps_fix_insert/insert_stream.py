@@ -25,8 +25,8 @@ insertion, from the same stream as its position) and the ``omega`` given, and is
 So the mass crossing the face per unit time is the inserted rate once the first particles arrive.
 ``all_in yes`` is refused.
 
-The counts per insertion follow the rate's line as for insert/rate/region (insert_rate_region.py:
-never a whole particle off the rate). Placement and ranks: insertion.py. (LIGGGHTS draws each
+The count per insertion is rounded at random to the rate as for insert/rate/region
+(insert_rate_region.py, as LIGGGHTS). Placement and ranks: insertion.py. (LIGGGHTS draws each
 particle's depth from its own radius rather than the largest.)
 
 Example (LIGGGHTS's chute tutorial)::
@@ -147,9 +147,6 @@ class FixInsertStream(FixInsert):
         if self.extrude_length is not None:
             return self.extrude_length
         return (self.duration or self.every) * self.sim.dt * self.speed
-
-    def events_done_after(self):
-        return self.events + 1
 
     def wanted(self, sim):
         return rate_count(self, sim)
