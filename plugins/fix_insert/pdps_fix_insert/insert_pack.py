@@ -20,7 +20,8 @@ and inserts the difference to the target:
 a fractional count rounded up or down at random with the odds that keep it unbiased (as LIGGGHTS
 says of its mass-based counts). The particles go where the region matches (``all_in yes``: wholly
 inside it, for regions whose surface distance pdps knows: those that can be walls), clear of every
-present particle and of each other, each trying ``maxattempt`` random positions; insertion.py
+present particle and of each other, with maxattempt x count / (1 - H/T) random positions among them
+for a region holding H of its target T (LIGGGHTS's budget, which grows as the region fills); insertion.py
 gives the general keywords, the velocities and why the same particles appear on any number of
 ranks. ``insert_every`` defaults to once; the default start is the next step.
 
@@ -82,18 +83,27 @@ class FixInsertPack(InRegion, FixInsert):
         n = p.nlocal
         inside = self.region.match(p.x[:n])
         if self.target == "particles_in_region":
-            return self.amount - int(sim.comm.sum(int(inside.sum())))
+            held = int(sim.comm.sum(int(inside.sum())))
+            self.filled = share(held, self.amount)
+            return self.amount - held
         if self.target == "mass_in_region":
             held = float(sim.comm.sum(float(p.rmass[:n][inside].sum())))
+            self.filled = share(held, self.amount)
             expected = (self.amount - held) / self.distribution.mass_expected
         else:
             if self.volume is None:
                 self.volume = region_volume(self.region, sim.box, np.random.default_rng([self.seed, 0]),
                                             self.ntry_mc)
             held = float(sim.comm.sum(float((4.0 / 3.0 * math.pi * p.radius[:n][inside] ** 3).sum())))
+            self.filled = share(held, self.amount * self.volume)
             expected = (self.amount * self.volume - held) / self.distribution.volume_expected
         if expected <= 0:
             return 0
         whole = math.floor(expected)
         odds = np.random.default_rng([self.seed, sim.step, 1]).random()
         return whole + (1 if odds < expected - whole else 0)
+
+
+def share(held, target):
+    """What the region holds as a share of the target, within [0, 1]."""
+    return min(max(held / target, 0.0), 1.0) if target > 0 else 1.0

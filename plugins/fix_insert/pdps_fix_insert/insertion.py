@@ -4,7 +4,9 @@ draw of particles from a distribution, their placement, velocities, and their en
 General keywords (LIGGGHTS's names, after ``seed S distributiontemplate DIST``)::
 
     verbose yes|no                    a line per insertion (default no)
-    maxattempt N                      candidate positions each particle may try (default 50)
+    maxattempt N                      candidate positions each particle may try (default 50); an
+                                      insertion's tries are shared, and insert/pack divides them by
+                                      the share of its target still missing (LIGGGHTS's calc_maxtry)
     insert_every once|N               insert once, or every N steps (default: once for insert/pack)
     start STEP                        the first insertion step (default: the next step)
     overlapcheck yes|no               keep new particles clear of present and new ones (default yes)
@@ -38,6 +40,7 @@ from .whole_number import WholeNumber
 
 POOL_LIMIT = 4_000_000       # candidate positions drawn per insertion at most
 MAX_AT_ONCE = 10_000_000     # particles one insertion may add
+ALL_IN_DRAWS = 20            # pools drawn to find the candidates with room (all_in yes), at most
 
 
 YesNo = Literal["yes", "no"]
@@ -125,6 +128,7 @@ class FixInsert(Fix):
         self.finished = False
         self.first_step = None          # the schedule's first insertion step, set at the first setup
         self.wanted_so_far = 0          # particles a rate's line has asked for so far (rate styles)
+        self.filled = 0.0               # the share of its target the region holds (insert/pack)
 
     # ---- what a style defines ----
     def read_style(self, sim, args):
@@ -132,6 +136,13 @@ class FixInsert(Fix):
 
     def wanted(self, sim):
         raise NotImplementedError
+
+    def tries(self, count):
+        """Candidate positions an insertion of ``count`` may use: maxattempt each, divided by the
+        share of the target still missing (LIGGGHTS's calc_maxtry: a nearly full region, where
+        few candidates are free, does not give up early)."""
+        budget = count * self.max_attempt
+        return int(budget / (1.0 - self.filled)) if self.filled < 1.0 else budget
 
     def draw_points(self, rng, n):
         raise NotImplementedError
@@ -217,12 +228,11 @@ class FixInsert(Fix):
             big = float(radius.max())
             cell = big + max(big, float(old_r.max()) if len(old_r) else 0.0)
             lo, hi = self.extent(sim)
-            pool = self._pool(rng, count, big)
+            pool, clearance = self._pool(rng, count, float(radius.min()), big)
             lo_grid, width, nbins, periodic, length = grid(sim.box, lo, hi, cell)
-            clearance = self.clearance(pool, big) if self.all_in else np.full(len(pool), np.inf)
             self.taken = np.zeros(count, dtype=np.int64)
             place(pool, clearance, radius, old_x, old_r, lo_grid, width, nbins, periodic, length,
-                  count * self.max_attempt, self.overlap_check, placed, done, self.taken)
+                  self.tries(count), self.overlap_check, placed, done, self.taken)
         n = int(done.sum())
         self.placed_rows = self.taken[done] if count else np.zeros(0, dtype=np.int64)
         radius, density, types, which, placed = radius[done], density[done], types[done], which[done], placed[done]
@@ -243,7 +253,7 @@ class FixInsert(Fix):
         self.inserted_mass += float(mass.sum())
         if n < count:
             sim.warn(f"fix {self.id} ({self.name}): inserted {n} of {count} particles at step {sim.step}: the "
-                     f"others found no room in {count * self.max_attempt} tries (maxattempt {self.max_attempt} each)")
+                     f"others found no room in {self.tries(count)} tries (maxattempt {self.max_attempt})")
         if self.verbose:
             sim.info(f"fix {self.id} ({self.name}): inserted {n} particles (mass {mass.sum():.6g}) at step "
                      f"{sim.step}; {self.inserted} (mass {self.inserted_mass:.6g}) so far")
@@ -255,10 +265,25 @@ class FixInsert(Fix):
         rows = sim.comm.allgather_rows(np.column_stack([p.x[:n], p.radius[:n]]))
         return np.ascontiguousarray(rows[:, :3]), np.ascontiguousarray(rows[:, 3])
 
-    def _pool(self, rng, count, big):
-        """Candidate centres: count x maxattempt of them where the volume allows."""
-        size = min(count * self.max_attempt, POOL_LIMIT)
-        return np.ascontiguousarray(self.draw_points(rng, size))
+    def _pool(self, rng, count, smallest, big):
+        """Candidate centres and their room to the insertion volume's surface (all_in), as many as
+        the insertion may try, at most POOL_LIMIT. A point with no room for the smallest sphere is
+        no try, as in LIGGGHTS, whose draw repeats until the point lies the sphere's radius inside:
+        the pool is drawn until it holds enough points with room, or ALL_IN_DRAWS times its size."""
+        size = min(self.tries(count), POOL_LIMIT)
+        if not self.all_in:
+            return np.ascontiguousarray(self.draw_points(rng, size)), np.full(size, np.inf)
+        points, rooms, kept = [], [], 0
+        for _ in range(ALL_IN_DRAWS):
+            batch = self.draw_points(rng, size)
+            room = self.clearance(batch, big)
+            fits = room >= smallest
+            points.append(batch[fits])
+            rooms.append(room[fits])
+            kept += int(fits.sum())
+            if kept >= size:
+                break
+        return np.ascontiguousarray(np.concatenate(points)[:size]), np.concatenate(rooms)[:size]
 
     def _velocities(self, rng, n):
         mean, spread = self.velocity_mean, self.velocity_spread

@@ -3,7 +3,7 @@
 Candidate centres come in a pool, drawn uniformly over the insertion volume in the order of a
 random stream every rank shares; the spheres, largest first, take the first candidates that keep
 them clear of every present sphere and of the spheres placed before them (touching is allowed:
-distance >= r_i + r_j), each sphere trying at most ``tries`` candidates. Spheres are binned on a
+distance >= r_i + r_j), the spheres sharing ``tries`` candidates. Spheres are binned on a
 grid of cells at least as wide as the largest sum of two radii, so each test looks at 27 cells;
 on a periodic axis the grid spans the box and wraps, and distances are minimum-image.
 """
@@ -74,9 +74,9 @@ def place(pool, clearance, radius, old_x, old_r, lo, width, nbins, periodic, len
           placed, done, taken):
     """Place the spheres ``radius`` (largest first) at candidates of ``pool`` in order: a candidate
     is taken when ``clearance`` (its distance to the insertion volume's surface, for all_in) is at
-    least the radius and, with ``check_overlap``, the sphere there overlaps no present (``old_x,
-    old_r``) or earlier placed sphere. ``tries`` candidates in all (LIGGGHTS's maxattempt times
-    the count): a sphere hard to place may use what the easy ones left. Writes ``placed``, ``done``
+    least the radius (a candidate too near the surface for the sphere is passed over, not tried) and, with ``check_overlap``, the sphere there overlaps no present (``old_x,
+    old_r``) or earlier placed sphere. ``tries`` candidates in all (the insertion's budget,
+    FixInsert.tries): a sphere hard to place may use what the easy ones left. Writes ``placed``, ``done``
     and ``taken`` (the pool row each sphere took); returns how many were placed."""
     n_old, n_new = len(old_r), len(radius)
     head = np.full(nbins[0] * nbins[1] * nbins[2], -1, dtype=np.int64)
@@ -91,16 +91,17 @@ def place(pool, clearance, radius, old_x, old_r, lo, width, nbins, periodic, len
         head[b] = k
     count = n_old
     used = 0
-    budget = min(tries, len(pool))
+    tried = 0
     for k in range(n_new):
         done[k] = False
     for k in range(n_new):
-        while used < budget:
+        while used < len(pool) and tried < tries:
             candidate = pool[used]
             room = clearance[used]
             used += 1
             if room < radius[k]:
-                continue
+                continue            # no try: LIGGGHTS draws again until the sphere fits inside
+            tried += 1
             if check_overlap and not _clear(candidate, radius[k], xs, rs, head, link, lo, width, nbins,
                                             periodic, length):
                 continue
