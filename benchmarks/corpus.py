@@ -188,7 +188,8 @@ def run_folder(command, tutorials, folder, names, k, timeout, label):
         start = time.perf_counter()
         try:
             done = subprocess.run(command + ["-in", name, "-echo", "none", "-log", f"log.{name}"], cwd=work,
-                                  capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+                                  capture_output=True, text=True, errors="replace", timeout=timeout,
+                                  stdin=subprocess.DEVNULL)
             text, code = done.stdout + done.stderr, done.returncode
         except subprocess.TimeoutExpired as stopped:
             text, code = (stopped.stdout or b"").decode(errors="replace"), None
