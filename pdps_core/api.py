@@ -21,13 +21,13 @@ from .simulation import Simulation
 from .state import observables
 from .state.limits import check_bins, check_images
 from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
-                     StyleArgs, StyleName, SubModel, SurfaceContacts, VariableRef, keyword, param, parse_args,
+                     StyleArgs, StyleName, SubModel, SurfaceContacts, Variable, VariableRef, keyword, param, parse_args,
                      PERATOM_REFERENCE, PeratomReference, peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
-           "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
+           "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "PERATOM_REFERENCE", "PeratomReference", "peratom_column", "philox4x32", "registry",
            "type_range", "yes_no"]
@@ -133,7 +133,9 @@ CONTRACT = {
     "Units": {"name": "lj, real, metal, si, cgs, micro or nano", "boltz": "k_B", "mvv2e": "m v^2 to energy",
               "nktv2p": "energy density to pressure", "ftm2v": "f dt / m to velocity (integrators)",
               "mv2d": "mass/volume to the density thermo reports"},
-    "Neighbor": {"skin": "the neighbor skin (distance)"},
+    "Neighbor": {"skin": "the neighbor skin (distance)",
+                 "radii_vary": "True in a run where a fix changes radii (Fix.varies_radius): a style keeping "
+                               "its own candidate lists counts radius growth as a move"},
     "NeighborList": {"kind": "half or full", "half_list": "kind == 'half'",
                      "cutoff": "(ntypes+1)^2 cutoffs", "offsets": "CSR offsets (nlocal+1,)",
                      "neighbors": "CSR neighbor rows", "occasional": "built on demand",

@@ -57,6 +57,18 @@ def _number_or_variable(word):
 FloatOrVariable = typing.Annotated[float | VariableRef, BeforeValidator(_number_or_variable)]
 
 
+def _variable_only(word):
+    if isinstance(word, str):
+        if not (word.startswith("v_") and len(word) > 2):
+            raise PydanticCustomError("variable", "expected a variable v_NAME (got {word})", {"word": word})
+        return VariableRef(word[2:])
+    return word
+
+
+# An argument that must be a variable, written v_NAME (fix adapt's settings).
+Variable = typing.Annotated[VariableRef, BeforeValidator(_variable_only)]
+
+
 class StyleName:
     """``Annotated[str, StyleName("pair")]``: a word naming an installed style of a kind. As the first
     member of a run's entry (``tuple[Annotated[str, StyleName("pair")], tuple[str, ...]]``) it opens
@@ -674,6 +686,10 @@ class Pair(Style):
     neighbor_list: ClassVar[str] = "half"
     # fills the per-particle tally (energy, virial) on the steps ``sim.run_state.tally_atom`` asks for it
     peratom_tally: ClassVar[bool] = False
+    # the cutoff of types i, j is at least the largest radius of i plus that of j, and forces come from
+    # the radii themselves (granular contact): where a fix grows radii in a run (Fix.varies_radius),
+    # the core widens the cutoffs at its rebuilds by the growth
+    cutoff_from_radii: ClassVar[bool] = False
     # On a full list (each pair seen from both particles, no force on ghosts) sum r.f misses every
     # pair across a periodic or rank boundary, so a style on one sets ``virial`` itself in compute
     # on vflag steps (LAMMPS's no_virial_fdotr_compute): xx, yy, zz, xy, xz, yz of its pairs on this
@@ -1032,6 +1048,10 @@ class Fix(Style):
     # looks for one by this flag, never by a style name
     time_integrate: ClassVar[bool] = False
     next_reneighbor: int | None = None
+    # the fix changes particle radii during a run (fix adapt; LIGGGHTS's rad_mass_vary_flag): the
+    # rebuild decision counts radius growth as it counts moves, and a granular pair's cutoffs grow with
+    # the radii at the rebuilds (Pair.cutoff_from_radii); ghosts need the radii then (ghost_fields)
+    varies_radius: bool = False
 
     def __init__(self, sim, id, group, args):
         self.sim, self.id, self.group, self.args = sim, id, group, args

@@ -66,3 +66,23 @@ def test_statistical_runs_within_the_widened_range(mine, agrees):
     reference = [run(1.0, 2.0), run(1.0, 2.1), run(1.0, 2.2)]
     kind, ok, detail = corpus.compare(reference, [run(*mine)])
     assert kind == "statistical" and ok == agrees, detail
+
+
+def test_with_six_seed_sets_the_verdict_is_a_permutation_test():
+    """Six LIGGGHTS runs at 2.0..2.5 at step 100: pdps's two runs inside that spread are one choice of
+    28 among the eight runs, not the most extreme (p > 0.05); two far outside are the most extreme of
+    all 28 choices (p = 1/28) and fail."""
+    reference = [run(1.0, v) for v in (2.0, 2.1, 2.2, 2.3, 2.4, 2.5)]
+    kind, ok, detail = corpus.compare(reference, [run(1.0, 2.15), run(1.0, 2.35)])
+    assert (kind, ok) == ("statistical", True), detail
+    kind, ok, detail = corpus.compare(reference, [run(1.0, 5.0), run(1.0, 5.2)])
+    assert (kind, ok) == ("statistical", False), detail
+    assert "as extreme as 1 of the 28 choices of 2 of all 8 runs against the others (p = 0.04" in detail
+
+
+def test_a_count_is_resolved_to_one():
+    """Particle counts the reference's runs print alike (a zero range at step 0): one particle more is
+    one count's width past them (log10(1 + 1/12)), an excess of 1, not 87 widths of 0.1 %."""
+    reference = [run(12.0, 1.0), run(12.0, 1.1), run(12.0, 1.2)]
+    kind, ok, detail = corpus.compare(reference, [run(13.0, 1.1)])
+    assert kind == "statistical" and detail.startswith("worst 1.00 of the seeds' range (step 0 KinEng)"), detail

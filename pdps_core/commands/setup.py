@@ -143,8 +143,12 @@ def _exclusions(sim, args, usage):
 def particle_style(sim, args):
     """``particle_style STYLE`` or ``particle_style hybrid STYLE1 STYLE2 ...`` (LAMMPS's atom_style
     hybrid: the per-atom values of every sub-style, e.g. ``hybrid sphere molecular`` for spheres with
-    molecule ids); LIGGGHTS's ``atom_style granular`` is its sphere style."""
+    molecule ids); LIGGGHTS's ``atom_style granular`` is its sphere style. LAMMPS's ``atom_style
+    sphere 0|1`` (whether radii may change in a run) is read as sphere: pdps's radii always may."""
     usage = "particle_style " + "|".join(PARTICLE_STYLES) + " or particle_style hybrid STYLE1 STYLE2 ..."
+    if len(args) == 2 and args[0] == "sphere" and args[1] in ("0", "1"):
+        # LAMMPS's radius flag (1: radii may change in a run, for fix adapt): pdps's radii always may
+        args = args[:1]
     if args[:1] != ["hybrid"]:
         count(args, 1, usage)
     _before_box(sim, "particle_style")

@@ -13,6 +13,8 @@ newton-on rule, which keeps exactly one of the two periodic images of a pair (an
 ranks' copies under MPI) whatever bins rounding puts a particle on a bin boundary in.
 """
 
+import math
+
 import numpy as np
 from numba import njit
 
@@ -263,6 +265,19 @@ def _displacement_sq(x, xhold, i):
     dy = x[i, 1] - xhold[i, 1]
     dz = x[i, 2] - xhold[i, 2]
     return dx * dx + dy * dy + dz * dz
+
+
+@njit(cache=True)
+def largest_reach_sq(x, xhold, radius, rhold, nlocal):
+    """Where radii change during a run (Fix.varies_radius): the square of the largest displacement
+    plus radius growth since the last build, max_i (|x_i - xhold_i| + max(r_i - rhold_i, 0)). A pair
+    left out of the lists can touch only once this sum over its two particles passes the skin
+    (LIGGGHTS's check_distance with radvary)."""
+    worst = 0.0
+    for i in range(nlocal):
+        reach = math.sqrt(_displacement_sq(x, xhold, i)) + max(radius[i] - rhold[i], 0.0)
+        worst = reach if reach > worst else worst
+    return worst * worst
 
 
 @njit(cache=True)

@@ -5,7 +5,9 @@
 a rebuild is considered only when ``ago >= delay`` and ``ago % every == 0`` (``ago`` = steps since the
 last build); with ``check yes`` it happens only if some particle moved more than half the skin since
 then. A rebuild taken on the first step it was allowed is counted as *dangerous*: an interaction may
-have been missed, and the run reports how many there were.
+have been missed, and the run reports how many there were. Where a fix changes radii during the
+run (``Fix.varies_radius``: fix adapt), a particle's move counts its radius growth since the build
+too (LIGGGHTS's rule with radii that vary).
 
 ``neigh_modify one N`` (default 2000, LAMMPS's) bounds the lists: a build needing more than N
 neighbors per particle on average stops with "neighbor list overflow" (LAMMPS applies N to each
@@ -37,7 +39,8 @@ import numpy as np
 from ..errors import ScriptError
 from ..state import limits
 from .skin_trial import SkinTrial
-from .kernels import bin_into, build_list, cell_order, extent, largest_displacement_sq, max_displacement_sq
+from .kernels import (bin_into, build_list, cell_order, extent, largest_displacement_sq, largest_reach_sq,
+                      max_displacement_sq)
 
 ONE_DEFAULT = 2000
 # Rows of neighbors in a list: 32 bits (half the memory and the bandwidth of 64; a rank holds fewer
@@ -141,6 +144,8 @@ class Neighbor:
         self.requests = []
         self.ago = 0
         self.xhold = None
+        self.radii_vary = False     # a fix changes radii in the run: the decision counts their growth
+        self.rhold = None           # the owned radii at the last build, where radii vary
         self.builds = 0
         self.dangerous = 0
         self.overrun = 0.0          # largest move beyond the whole skin between builds, this run
@@ -287,7 +292,11 @@ class Neighbor:
             return False, False
         # every rank decides alike; an array is reduced by MPI's own reduction (4 us), a Python
         # float by mpi4py's pickled one (17 us), at every step
-        self._moved_sq[0] = largest_displacement_sq(particles.x, self.xhold, len(self.xhold))
+        if self.radii_vary:
+            self._moved_sq[0] = largest_reach_sq(particles.x, self.xhold, particles.radius,
+                                                 self._radius_hold(particles), len(self.xhold))
+        else:
+            self._moved_sq[0] = largest_displacement_sq(particles.x, self.xhold, len(self.xhold))
         moved_sq = float(comm.max(self._moved_sq)[0])
         self.moved_everywhere = float(np.sqrt(moved_sq))
         if self.check:
@@ -300,6 +309,13 @@ class Neighbor:
             self.dangerous += 1
         self.moved_at_build = max(self.moved_at_build, float(np.sqrt(moved_sq)))
         return True, True
+
+    def _radius_hold(self, particles):
+        """The radii of the last build (the current ones where none were kept for these particles:
+        a run resumed from a restart file, which keeps the positions of the last build only)."""
+        if self.rhold is None or len(self.rhold) != len(self.xhold):
+            self.rhold = particles.radius[:len(self.xhold)].copy()
+        return self.rhold
 
     # ---- spatial sort ---------------------------------------------------------------------------
     def sort_due(self, step):
@@ -362,6 +378,8 @@ class Neighbor:
             else:
                 self.xhold = p.x[:p.nlocal].copy()
             self.ago = 0
+            if self.radii_vary:
+                self.rhold = p.radius[:p.nlocal].copy()
         # resuming, positions are current and the moves since xhold not measured on every rank
         self.moved_everywhere = np.inf if resume else 0.0
         self.built_with = (self.skin, [(r.kind, r.cutoff.copy()) for r in self.requests],

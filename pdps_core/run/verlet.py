@@ -25,6 +25,11 @@ from .hookspec import HOOKS, implements
 from .shrink_wrap import shrink_wrap
 from .timers import timed_hooks
 
+# Where a fix grows radii past the pair's sizing, the cutoffs are widened for radii this much larger
+# than the largest: fix adapt growing by 0.27 % every 40 steps (LIGGGHTS's packing tutorial) widens
+# them every 36 adaptations instead of at every rebuild, for lists 1.1^3 = 1.33 times longer at most
+RADIUS_HEADROOM = 0.1
+
 
 @njit(cache=True)
 def _clear(values):
@@ -44,6 +49,7 @@ class Verlet:
         self.warned_overrun = False
         self.contributing = []
         self.tally_atom = []
+        self.sized_radius = None        # per type, the radii the pair's cutoffs cover (radii that vary)
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
@@ -90,6 +96,12 @@ class Verlet:
             sim.pair.cutsq = cutoff * cutoff        # for computes that evaluate pairs themselves (Pair.single)
             sim.styles.pair_list = sim.neighbor.request(sim.pair.neighbor_list, cutoff,
                                                  direct_ok=getattr(sim.pair, "cell_loops", False))
+        radii_vary = any(fix.varies_radius for fix in sim.fixes.values())
+        sim.neighbor.radii_vary = radii_vary
+        self.sized_radius = None
+        if radii_vary and sim.pair is not None and sim.pair.cutoff_from_radii:
+            self.sized_radius = np.maximum(self._largest_radii(), [
+                max([0.0] + [fix.inserted_radius(t) for fix in sim.fixes.values()]) for t in range(sim.ntypes + 1)])
         # styles ask for neighbor lists (and prepare per-run state) before ghosts are sized
         sim.run_state.in_init = True
         try:
@@ -138,6 +150,8 @@ class Verlet:
     def _reneighbor(self):
         sim, particles = self.sim, self.sim.particles
         t0 = time.perf_counter()
+        if self.sized_radius is not None:
+            self._widen_for_radii()
         sim.neighbor.choose_skin(sim.box)
         if sim.neighbor.sort_due(sim.step):
             particles.keep(sim.neighbor.spatial_order(particles, sim.box, sim.step))
@@ -149,6 +163,30 @@ class Verlet:
         t2 = time.perf_counter()
         sim.timers.stage["Neigh"] += t2 - t1
         self._call("post_neighbor")
+
+    def _largest_radii(self):
+        """The largest radius of each type (index 0 unused) over every rank."""
+        sim, p = self.sim, self.sim.particles
+        largest = np.zeros(sim.ntypes + 1)
+        np.maximum.at(largest, p.type[:p.nlocal], p.radius[:p.nlocal])
+        return sim.comm.max(largest)
+
+    def _widen_for_radii(self):
+        """At a rebuild where a fix grew radii (fix adapt) past those the pair's cutoffs were sized for
+        (a granular pair: the largest radius of type i plus that of type j), the cutoffs grow by the
+        excess, and RADIUS_HEADROOM beyond it, so that the lists see every contact; the pair is not
+        asked again (its init makes the run's contact laws)."""
+        sim = self.sim
+        largest = self._largest_radii()
+        if not (largest > self.sized_radius).any():
+            return
+        wanted = np.where(largest > self.sized_radius, largest * (1.0 + RADIUS_HEADROOM), self.sized_radius)
+        extra = wanted - self.sized_radius
+        self.sized_radius = wanted
+        pair_list = sim.styles.pair_list
+        pair_list.cutoff = pair_list.cutoff + extra[:, None] + extra[None, :]
+        sim.pair.cutsq = pair_list.cutoff * pair_list.cutoff
+        limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
 
     def _resume_lists(self):
         """The lists of the last build, made again from the positions they were built with (xhold),

@@ -50,6 +50,10 @@ class Dialect:
     # rule: the script gives its fixes, computes and regions again, a fix given with the ID and style
     # it had takes up its saved state
     restart_styles: bool = True
+    # fix adapt's rule: "lammps" (equal-style variables; scale multiplies the radius the run began
+    # with; reset yes restores the radii of the fix's creation; the mass keyword) or "liggghts"
+    # (equal- or atom-style; scale multiplies the current diameter; reset leaves particles alone)
+    adapt_rule: str = "lammps"
 
 
 DIALECTS = {
@@ -59,7 +63,8 @@ DIALECTS = {
                       velocity_numbers="park", volume_2d="sphere", restart_styles=False),
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
-                        velocity_numbers="park", set_diameter_keeps="density", restart_styles=False),
+                        velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
+                        adapt_rule="liggghts"),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

@@ -577,6 +577,7 @@ class MeshContacts:
         self.nlocal_built = -1
         self.tags_built = np.zeros(0, dtype=np.int64)
         self.x_built = np.zeros((0, 3))
+        self.radius_built = np.zeros(0)
         self.skin_built = None
         self.most = 0                   # the most candidate triangles of a visited particle
         self._scratch, self._scratch_for = None, 0            # mesh_scratch and its most candidates
@@ -600,6 +601,10 @@ class MeshContacts:
         # the skin widens in direct mode: lists made with a narrower one are made again
         if not self.stale and len(chosen) == len(self.x_built) and sim.neighbor.skin == self.skin_built:
             moved = largest_move_sq(p.arrays["x"], chosen, self.x_built)
+            if sim.neighbor.radii_vary:
+                # a radius grown since the build brings its sphere closer as a move would
+                grown = float(np.max(radius[chosen] - self.radius_built, initial=0.0))
+                moved = (math.sqrt(moved) + grown) ** 2
             shifted = (largest_move_sq(mesh.vertices, self.all_vertices, self.vertices_built)
                        if mesh.moving else 0.0)
             if moved <= half_skin ** 2 and shifted <= half_skin ** 2:
@@ -632,6 +637,7 @@ class MeshContacts:
         self.most = int(counts.max()) if len(counts) else 0
         self.all_vertices = np.arange(len(mesh.vertices), dtype=np.int64)
         self.x_built = x
+        self.radius_built = radius[chosen].copy()
         self.skin_built = skin
         self.vertices_built = mesh.vertices.copy()
         self.stale = False

@@ -73,6 +73,7 @@ class GranularPair(Pair):
     per_atom = ("radius", "rmass", "omega", "torque")
     ghost_velocity = True
     ghost_fields = ("omega",)
+    cutoff_from_radii = True
 
     def __init__(self, sim, args):
         super().__init__(sim, args)

@@ -85,6 +85,7 @@ class PairGran(Pair):
     per_atom = ("radius", "rmass", "omega", "torque")
     ghost_velocity = True
     ghost_fields = ("omega",)
+    cutoff_from_radii = True
     model = lammps_classic.HOOKE
     history_width = 3         # values per contact: the tangential spring
     history_name = PAIR_SHEAR
