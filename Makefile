@@ -49,6 +49,7 @@ bench: $(STAMP)
 # About an hour; not part of test or the CI.
 corpus: $(RUN_STAMP)
 	$(VENV)/bin/python benchmarks/corpus.py
+	$(VENV)/bin/python benchmarks/liggghts_manual.py
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
 # meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build

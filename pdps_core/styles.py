@@ -1545,11 +1545,12 @@ class Registry:
                 hint = f"; did you mean {close[0]}?" if close else ""
                 off = (f": {' and '.join(sorted(claims))} is switched off by {DISABLE_VARIABLE}"
                        if claims else "")
-                from .script.unsupported import unsupported_style
+                from .script.unsupported import style_origin, unsupported_style
                 instead = unsupported_style(kind, name)
                 if instead is not None and not claims:
-                    raise ScriptError(f"{kind} style {name} is a LAMMPS style pdps does not have; instead: "
-                                      f"{instead} (docs/lammps.md)")
+                    program, page = style_origin(kind, name)
+                    raise ScriptError(f"{kind} style {name} is a {program} style pdps does not have; instead: "
+                                      f"{instead} ({page})")
                 raise ScriptError(f"unknown {kind} style {name}{off}{hint} "
                                   f"(installed: {', '.join(known) or 'none'})")
             if len(enabled) > 1:

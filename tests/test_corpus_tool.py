@@ -86,3 +86,21 @@ def test_a_count_is_resolved_to_one():
     reference = [run(12.0, 1.0), run(12.0, 1.1), run(12.0, 1.2)]
     kind, ok, detail = corpus.compare(reference, [run(13.0, 1.1)])
     assert kind == "statistical" and detail.startswith("worst 1.00 of the seeds' range (step 0 KinEng)"), detail
+
+
+def test_the_manual_items_and_what_pdps_makes_of_them():
+    """benchmarks/liggghts_manual.py on made-up pages: each heading once, sub-models named, and a
+    known style, a refused one, an unknown one and the CFD coupling told apart."""
+    spec = importlib.util.spec_from_file_location("liggghts_manual", ROOT / "benchmarks" / "liggghts_manual.py")
+    manual = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(manual)
+    pages = ["fix insert/pack command :h3\nSyntax:\nfix insert/pack command :h3\n",
+             "run command :h3\n", "gran model hertz model :h3\n", "fix multisphere command :h3\n",
+             "fix ave/histo command :h3\n", "fix couple/cfd command :h3\n", "Syntax: fix ID group command :h3\n"]
+    assert manual.items(pages) == [("fix", "ave/histo"), ("fix", "couple/cfd"), ("fix", "insert/pack"),
+                                   ("fix", "multisphere"), ("gran", "model hertz"), ("run", None)]
+    text = manual.table(pages)
+    assert "| `fix insert/pack` | style |" in text and "| `run` | command |" in text
+    assert "| `gran model hertz` | style |" in text and "| `fix ave/histo` | unknown |" in text
+    assert "| `fix multisphere` | refused: pdps has no multisphere bodies" in text
+    assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown.")

@@ -395,6 +395,8 @@ class TestInclude:
      "create_atoms random between runs (docs/lammps.md)"),
     ("write_dump all atom final.atom", "write_dump: write_dump is a LAMMPS command pdps does not support; "
      "instead: dump with run 0 (docs/lammps.md)"),
+    ("fix 2 all multisphere", "fix: fix style multisphere is a LIGGGHTS style pdps does not have; instead: "
+     "pdps has no multisphere bodies: fix rigid/small on clumps of spheres (molecule ids) (docs/liggghts.md)"),
     ("compute 3 all no/such/style", "compute: unknown compute style no/such/style"),
     ("thermo_stlye custom step", "thermo_stlye: unknown command thermo_stlye; did you mean thermo_style?"),
 ])

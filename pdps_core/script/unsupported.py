@@ -66,7 +66,37 @@ STYLE_ALTERNATIVES = {
     ("dump", "netcdf"): "dump xdmf",
 }
 
+# LIGGGHTS's styles for what pdps does not simulate
+LIGGGHTS_STYLE_ALTERNATIVES = {
+    **{("fix", name): "pdps has no SPH" for name in ("sph/density/continuity", "sph/density/corr",
+                                                     "sph/density/summation", "sph/pressure", "wall/region/sph")},
+    ("pair", "sph/artVisc/tensCorr"): "pdps has no SPH",
+    **{(kind, name): "pdps has no multisphere bodies: fix rigid/small on clumps of spheres (molecule ids)"
+       for kind, name in (("fix", "multisphere"), ("fix", "multisphere/break"), ("fix", "particletemplate/multisphere"),
+                          ("compute", "multisphere"), ("compute", "multisphere/single"),
+                          ("compute", "erotate/multisphere"), ("compute", "ke/multisphere"))},
+    **{(kind, name): "pdps simulates spheres only"
+       for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
+                          ("compute", "erotate/superquadric"), ("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"),
+                          ("fix", "nve/line"), ("compute", "erotate/asphere"))},
+    **{(kind, name): "pdps has no bonds" for kind, name in (("fix", "bond/break"), ("fix", "bond/create"),
+                                                             ("compute", "bond/local"))},
+    ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
+    ("fix", "external"): "drive pdps from Python (pdps_core.api.Simulation)",
+    ("fix", "box/relax"): "none in pdps",
+    ("fix", "multicontact/halfspace"): "pdps has no multicontact surface model",
+    ("dump", "image"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
+    ("dump", "movie"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
+}
+
 
 def unsupported_style(kind, name):
-    """What to use instead of a LAMMPS style pdps has no plugin for, or None."""
-    return STYLE_ALTERNATIVES.get((kind, name))
+    """What to use instead of a LAMMPS or LIGGGHTS style pdps has no plugin for, or None."""
+    return STYLE_ALTERNATIVES.get((kind, name)) or LIGGGHTS_STYLE_ALTERNATIVES.get((kind, name))
+
+
+def style_origin(kind, name):
+    """Whose style a refused one is, for its line: (program, the page of docs/ on it)."""
+    if (kind, name) in LIGGGHTS_STYLE_ALTERNATIVES:
+        return "LIGGGHTS", "docs/liggghts.md"
+    return "LAMMPS", "docs/lammps.md"
