@@ -64,6 +64,16 @@ STYLE_ALTERNATIVES = {
     ("dump", "xyz"): "dump custom with id type x y z",
     ("dump", "dcd"): "dump custom or dump xdmf",
     ("dump", "netcdf"): "dump xdmf",
+    **{(kind, name): "pdps simulates spheres only"
+       for kind, name in (("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"), ("fix", "nve/line"),
+                          ("compute", "erotate/asphere"))},
+    **{(kind, name): "pdps has no bonds" for kind, name in (("fix", "bond/break"), ("fix", "bond/create"),
+                                                             ("compute", "bond/local"))},
+    ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
+    ("fix", "external"): "drive pdps from Python (pdps_core.api.Simulation)",
+    ("fix", "box/relax"): "none in pdps",
+    ("dump", "image"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
+    ("dump", "movie"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
 }
 
 # LIGGGHTS's styles for what pdps does not simulate
@@ -77,16 +87,8 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
                           ("compute", "erotate/multisphere"), ("compute", "ke/multisphere"))},
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
-                          ("compute", "erotate/superquadric"), ("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"),
-                          ("fix", "nve/line"), ("compute", "erotate/asphere"))},
-    **{(kind, name): "pdps has no bonds" for kind, name in (("fix", "bond/break"), ("fix", "bond/create"),
-                                                             ("compute", "bond/local"))},
-    ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
-    ("fix", "external"): "drive pdps from Python (pdps_core.api.Simulation)",
-    ("fix", "box/relax"): "none in pdps",
+                          ("compute", "erotate/superquadric"))},
     ("fix", "multicontact/halfspace"): "pdps has no multicontact surface model",
-    ("dump", "image"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
-    ("dump", "movie"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
 }
 
 
