@@ -1,5 +1,5 @@
 """Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple and fix_granular's addforce,
-setforce, viscous and gravity, the reference
+setforce, aveforce, lineforce, planeforce, viscous and gravity, the reference
 plugins/fix_simple/tests/test_lammps_fixes.py compares pdps with.
 
     python benchmarks/lammps_references/fixes.py [LMP]
@@ -27,6 +27,10 @@ CASES = {
     "setforce": "group heavy type 2\nfix 2 heavy setforce 0.0 NULL 0.5",
     "viscous": "fix 2 all viscous 0.8 scale 2 2.5",
     "gravity": "fix 2 all gravity 1.5 vector 1 -2 0.5",
+    "aveforce": "group heavy type 2\nvariable fz equal 0.2*sin(0.1*step)\nfix 2 heavy aveforce NULL 0.0 v_fz",
+    "aveforce_region": "region low block INF INF INF INF INF 3 units box\nfix 2 all aveforce 0.1 NULL NULL region low",
+    "lineforce": "fix 2 all lineforce 1 1 0",
+    "planeforce": "fix 2 all planeforce 0 0 1",
 }
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "fix 1 all nve", "timestep 0.002"]
