@@ -98,3 +98,40 @@ def test_stress_atom_takes_only_a_null_temperature(tmp_path):
 def test_pe_must_use_group_all(tmp_path):
     with pytest.raises(ScriptError, match="compute pe must use group all"):
         build(tmp_path, [[1.0, 1.0, 1.0]], setup="group one id 1\ncompute p one pe")
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): the scene below, write_dump id c_e (%.17g) and
+# thermo c_s (compute reduce sum, %.15g)
+EROTATE_SCENE = """
+units si
+atom_style sphere
+atom_modify map array
+region b block 0 5 0 5 0 5
+create_box 1 b
+create_atoms 1 single 1 1 1
+create_atoms 1 single 3 3 3
+create_atoms 1 single 2 4 1
+set atom 1 diameter 1.0 density 2.0
+set atom 2 diameter 2.0 density 1.0
+set atom 3 diameter 0.3 density 7.0
+set atom 1 omega 1.5 -2 0.5
+set atom 2 omega 0 0 3
+set atom 3 omega -4 1 2
+group two id 1 2
+compute e two erotate/sphere/atom
+compute s all reduce sum c_e
+pair_style zero 3.0
+pair_coeff * *
+fix n all nve/sphere
+run 0
+"""
+LAMMPS_EROTATE = [0.34033920413889424, 7.5398223686155035, 0.0]
+
+
+def test_erotate_sphere_atom_as_lammps(make_sim):
+    """Half I w^2 per sphere of the group, 0 outside it (sphere 3), to LAMMPS's last bits."""
+    sim = make_sim(dialect="lammps")
+    sim.command(EROTATE_SCENE)
+    got = by_tag(sim, sim.computes["e"].peratom(sim))
+    np.testing.assert_allclose(got, LAMMPS_EROTATE, rtol=1e-15, atol=0)
+    assert sim.computes["s"].scalar(sim) == pytest.approx(7.8801615727544, rel=1e-14)
