@@ -911,6 +911,40 @@ class TestCompute:
     def test_errors(self, sim, line, command, message):
         fails(sim, self.SETUP + line, command, message)
 
+    def test_write_dump_writes_one_frame_as_lammps(self, pdps_cli, tmp_path):
+        """LAMMPS's write_dump with modify keywords: one frame now, the dump gone after (a second
+        write_dump of the same name works); the ATOMS lines as LAMMPS 22 Jul 2025 wrote them for this
+        script (2026-12-02)."""
+        lammps = ["1 4.5000000000000089 -1.4999999999999796 0.74999999999998401 4.8023431780746364",
+                  "2 -6.0000000000000053 -1.4999999999999791 0.74999999999998401 6.2299678971885548",
+                  "3 0 0 0 0"]
+        done = pdps_cli("""
+            units lj
+            atom_style atomic
+            atom_modify map array
+            region b block 0 4 0 4 0 4
+            create_box 2 b
+            create_atoms 1 single 0.5 0.5 0.5
+            create_atoms 1 single 3.5 2 1
+            create_atoms 2 single 2 3.9 2
+            mass * 1.0
+            velocity all set 1.5 -0.5 0.25
+            set atom 2 vx -2.0
+            group one type 1
+            compute d one displace/atom
+            pair_style zero 1.0
+            pair_coeff * *
+            fix n all nve
+            timestep 0.01
+            run 300
+            write_dump all custom dd.dump id c_d[1] c_d[2] c_d[3] c_d[4] modify sort id format float %.17g
+            write_dump one atom one.dump
+        """, "-log", "none")
+        assert done.returncode == 0, done.stderr
+        lines = (tmp_path / "dd.dump").read_text().splitlines()
+        assert lines[:2] == ["ITEM: TIMESTEP", "300"] and lines[-3:] == lammps
+        assert (tmp_path / "one.dump").read_text().splitlines()[3] == "2"
+
     def test_unknown_style(self, sim):
         exc = fails(sim, self.SETUP + "compute t all tmp", "compute")
         assert exc.message == (f"unknown compute style tmp; did you mean temp? "

@@ -393,8 +393,8 @@ class TestInclude:
 @pytest.mark.parametrize("later, message", [
     ("fix 2 all pour 10 1 1 region box", "fix: fix style pour is a LAMMPS style pdps does not have; instead: "
      "create_atoms random between runs (docs/lammps.md)"),
-    ("write_dump all atom final.atom", "write_dump: write_dump is a LAMMPS command pdps does not support; "
-     "instead: dump with run 0 (docs/lammps.md)"),
+    ("replicate 2 2 2", "replicate: replicate is a LAMMPS command pdps does not support; "
+     "instead: create a larger box and fill it (create_atoms) (docs/lammps.md)"),
     ("fix 2 all multisphere", "fix: fix style multisphere is a LIGGGHTS style pdps does not have; instead: "
      "pdps has no multisphere bodies: fix rigid/small on clumps of spheres (molecule ids) (docs/liggghts.md)"),
     ("compute 3 all no/such/style", "compute: unknown compute style no/such/style"),

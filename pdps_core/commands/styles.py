@@ -218,6 +218,34 @@ def undump(sim, args):
     _remove(sim, "dump", sim.output.dumps, args).close()
 
 
+@command("write_dump")
+def write_dump(sim, args):
+    """LAMMPS's ``write_dump GROUP STYLE FILE [columns...] [modify dump_modify-words...]``: one frame of
+    a dump of that style now, as ``dump`` with the same words would write it at this step, then the
+    dump is gone (LAMMPS's WRITE_DUMP)."""
+    usage = "write_dump GROUP STYLE FILE [columns...] [modify dump_modify-keywords...]"
+    if len(args) < 3:
+        raise ScriptError(f"expected a group, a style and a file; usage: {usage}")
+    words, modify = list(args), []
+    if "modify" in words:
+        k = words.index("modify")
+        words, modify = words[:k], words[k + 1:]
+        if not modify:
+            raise ScriptError(f"modify needs dump_modify keywords; usage: {usage}")
+    sim.require_box("write_dump")
+    name = "WRITE_DUMP"
+    if name in sim.output.dumps:
+        raise ScriptError(f"dump {name} is defined by the script: write_dump needs the name")
+    group, style, file, *columns = words
+    dump(sim, [name, group, style, "1", file, *columns])
+    try:
+        if modify:
+            dump_modify(sim, [name, *modify])
+        sim.output.dumps[name].write(sim)
+    finally:
+        undump(sim, [name])
+
+
 @command("pair_modify")
 def pair_modify(sim, args):
     """``pair_modify mix geometric|arithmetic|sixthpower shift yes|no tail yes|no``: how unset i != j

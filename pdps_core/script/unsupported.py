@@ -25,7 +25,7 @@ ALTERNATIVES = {
     "reset_atoms": "none in pdps", "reset_atom_ids": "none in pdps", "shell": "none in pdps",
     "special_bonds": "pdps has no bonds", "suffix": "nothing: pdps has one build of each style",
     "tad": "none in pdps", "temper": "none in pdps", "timer": "the timing table printed after each run",
-    "write_coeff": "none in pdps", "write_dump": "dump with run 0",
+    "write_coeff": "none in pdps",
 }
 
 

@@ -45,29 +45,29 @@ from pdps_core.api import Compute, StyleArgs, keyword, observables
 from .peratom import unwrapped
 
 
-class ComputeMSD(Compute):
-    name = "msd"
-    usage = "compute ID GROUP msd [com yes|no] [average yes|no]"
+class KeptOrigins(Compute):
+    """A compute that keeps each particle's unwrapped position at its definition (array
+    ``ORIGIN_PREFIX_ID``, NaN for particles created later, who take their origin when first read),
+    through re-sorting, ranks and restart files (msd, displace/atom)."""
+    origin_prefix = "origin"
 
-    class Args(StyleArgs):
-        com: Literal["yes", "no"] = keyword("no")
-        average: Literal["yes", "no"] = keyword("no")
-
-    def __init__(self, sim, id, group, args):
-        super().__init__(sim, id, group, args)
-        self.com = args.com == "yes"
-        self.average = args.average == "yes"
-        self.evaluations = 1        # the definition is the first position of the running average
-        self.averaged = None        # (step, vector): one update of the averages per step
+    def keep_origins(self, sim, here):
         particles = sim.particles
-        self.origin_name = f"msd_origin_{id}"
+        self.origin_name = f"{self.origin_prefix}_{self.id}"
         existed = particles.has(self.origin_name)
-        # NaN marks particles created later: they take their origin when first read
         origin = particles.request(self.origin_name, width=3, default=np.nan)
         n = particles.nlocal
         # read_restart re-creates the compute after the particles: restore() puts these back
         self.replaced = (particles.tag[:n].copy(), origin[:n].copy()) if existed else None
-        origin[:n] = unwrapped(sim) - self._centre(sim)
+        origin[:n] = here
+
+    def origins(self, sim, here):
+        """This rank's origins, the late particles' taken now (``here``: their positions)."""
+        origin = sim.particles.arrays[self.origin_name][:sim.particles.nlocal]
+        late = np.isnan(origin).any(axis=1)
+        if late.any():
+            origin[late] = here[late]
+        return origin
 
     def state(self):
         return {"origin": self.origin_name}
@@ -86,6 +86,24 @@ class ComputeMSD(Compute):
             particles.arrays[self.origin_name][:n][found] = saved[order[where[found]]]
         self.replaced = None
 
+
+class ComputeMSD(KeptOrigins):
+    name = "msd"
+    usage = "compute ID GROUP msd [com yes|no] [average yes|no]"
+    origin_prefix = "msd_origin"
+
+    class Args(StyleArgs):
+        com: Literal["yes", "no"] = keyword("no")
+        average: Literal["yes", "no"] = keyword("no")
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        self.com = args.com == "yes"
+        self.average = args.average == "yes"
+        self.evaluations = 1        # the definition is the first position of the running average
+        self.averaged = None        # (step, vector): one update of the averages per step
+        self.keep_origins(sim, unwrapped(sim) - self._centre(sim))
+
     def _centre(self, sim):
         """The group's unwrapped centre of mass with ``com yes``, else 0."""
         if not self.com:
@@ -99,13 +117,8 @@ class ComputeMSD(Compute):
     def vector(self, sim):
         if self.average and self.averaged is not None and self.averaged[0] == sim.step:
             return self.averaged[1]
-        p = sim.particles
-        n = p.nlocal
-        origin = p.arrays[self.origin_name][:n]
         here = unwrapped(sim) - self._centre(sim)
-        late = np.isnan(origin).any(axis=1)
-        if late.any():
-            origin[late] = here[late]
+        origin = self.origins(sim, here)
         chosen = sim.groups.select(sim, self.group)
         if self.average:
             origin[chosen] = (origin[chosen] * self.evaluations + here[chosen]) / (self.evaluations + 1)

@@ -386,3 +386,38 @@ def test_values_agree_on_1_and_3_ranks(tmp_path):
     assert len(lines) == 3 and float(lines[-1].split()[6]) > 10     # contacts were made
     assert outputs[1] == outputs[3]
 
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): three particles in free flight through the
+# periodic box, write_dump id c_d[1] c_d[2] c_d[3] c_d[4] after 300 steps (%.17g)
+DISPLACE_SCENE = """
+units lj
+atom_style atomic
+atom_modify map array
+region b block 0 4 0 4 0 4
+create_box 2 b
+create_atoms 1 single 0.5 0.5 0.5
+create_atoms 1 single 3.5 2 1
+create_atoms 2 single 2 3.9 2
+mass * 1.0
+velocity all set 1.5 -0.5 0.25
+set atom 2 vx -2.0
+group one type 1
+compute d one displace/atom
+pair_style zero 1.0
+pair_coeff * *
+fix n all nve
+timestep 0.01
+run 300
+"""
+LAMMPS_DISPLACE = [[4.5000000000000089, -1.4999999999999796, 0.74999999999998401, 4.8023431780746364],
+                   [-6.0000000000000053, -1.4999999999999791, 0.74999999999998401, 6.2299678971885548],
+                   [0.0, 0.0, 0.0, 0.0]]
+
+
+def test_displace_atom_as_lammps(make_sim):
+    """Displacements through periodic faces (particle 2 crosses x's twice), 0 outside the group."""
+    sim = make_sim(dialect="lammps")
+    sim.command(DISPLACE_SCENE)
+    got = sim.computes["d"].peratom(sim)[np.argsort(sim.tag)]
+    np.testing.assert_allclose(got, LAMMPS_DISPLACE, rtol=1e-12, atol=1e-12)
