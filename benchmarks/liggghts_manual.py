@@ -81,6 +81,8 @@ def answer(family, name, styles):
         kind, _, sub = name.partition(" ")
         sub = "default" if (kind, sub) == ("surface", "sphere") else sub
         return ("style", "") if sub in registry.names(SUBMODELS[kind]) else ("unknown", "")
+    if (family, name) == ("pair_style", "none"):
+        return "command", "pair_style none"
     kind = KINDS.get(family)
     if name is None or kind is None:
         command = family if name is None else family

@@ -232,3 +232,38 @@ def test_drag_and_buoyancy_need_radii(make_plain, fix):
         make_plain().command(f"fix 1 all {fix}")
     assert error.value.message.endswith("needs finite-size particles (per-particle radius and mass): "
                                         "use particle_style sphere before creating the box")
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): the scene below, write_dump id f_s[1] f_s[2] f_s[3]
+# fx fy fz (%.17g)
+STORE_FORCE_SCENE = """
+units lj
+atom_style atomic
+atom_modify map array
+region b block 0 5 0 5 0 5
+create_box 1 b
+create_atoms 1 single 1 1 1
+create_atoms 1 single 2.2 1 1
+create_atoms 1 single 3 3 3
+mass * 1.0
+group two id 1 2
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0
+fix n all nve
+fix before all addforce 0.5 0 0
+fix s two store/force
+fix after all addforce 0 0.25 0
+run 0
+"""
+LAMMPS_STORE_FORCE = [[2.7116933422230796, 0, 0, 2.7116933422230796, 0.25, 0],
+                      [-1.7116933422230796, 0, 0, -1.7116933422230796, 0.25, 0],
+                      [0, 0, 0, 0.5, 0.25, 0]]
+
+
+def test_store_force_keeps_the_force_of_its_turn_as_lammps(make_sim):
+    """The pair's and the earlier addforce's, not the later one's; 0 outside the group."""
+    sim = make_sim(dialect="lammps")
+    sim.command(STORE_FORCE_SCENE)
+    order = np.argsort(sim.tag)
+    got = np.column_stack([sim.fixes["s"].peratom(sim), sim.f])[order]
+    np.testing.assert_allclose(got, LAMMPS_STORE_FORCE, rtol=1e-15, atol=0)
