@@ -1,13 +1,17 @@
 r"""Fix ``particledistribution/discrete``: a mixture of particle templates by mass (LIGGGHTS's fix
-particledistribution/discrete), which the insertion fixes draw particles from.
+particledistribution/discrete, also spelled ``/massbased``), or by number
+(``particledistribution/discrete/numberbased``), which the insertion fixes draw particles from.
 
 Syntax::
 
-    fix ID GROUP particledistribution/discrete SEED N TEMPLATE1 FRACTION1 ... TEMPLATEN FRACTIONN
+    fix ID GROUP particledistribution/discrete[/massbased|/numberbased] SEED N TEMPLATE1 FRACTION1 ...
 
 ``TEMPLATEk`` the ID of a ``fix particletemplate/sphere``, ``FRACTIONk`` the fraction of the
-*mass* its particles carry (LIGGGHTS's mass-%). Fractions that do not add up to 1 are scaled to
-do so, with a warning. A particle comes from template k with the number probability
+*mass* its particles carry (LIGGGHTS's mass-%), or with ``/numberbased`` the fraction of the
+particles that come from it (number-%: :math:`p_k = w_k`; LIGGGHTS 3.8.0 prints 30 % and 70 % for
+weights 0.3 and 0.7 there, and 63.708005 % and 36.291995 % by number for them by mass with radii
+5 and 8 mm, as :math:`p_k` below gives). Fractions that do not add up to 1 are scaled to do so,
+with a warning. By mass, a particle comes from template k with the number probability
 
 .. math::
 
@@ -46,6 +50,7 @@ class Share(NamedTuple):
 class FixParticleDistributionDiscrete(Fix):
     name = "particledistribution/discrete"
     usage = "fix ID GROUP particledistribution/discrete SEED N TEMPLATE1 FRACTION1 ... TEMPLATEN FRACTIONN"
+    weights_by = "mass"             # what a template's fraction is a fraction of: "mass" or "number"
 
     class Args(StyleArgs):
         seed: WholeNumber = param(ge=1, unit="1")
@@ -60,7 +65,7 @@ class FixParticleDistributionDiscrete(Fix):
                               f"{2 * len(args.templates)} words after N)")
         for name, fraction in args.templates:
             if not 0 < fraction <= 1:
-                raise ScriptError(f"mass fraction of {name} must be > 0 and <= 1 (got {fraction:g})")
+                raise ScriptError(f"{cls.weights_by} fraction of {name} must be > 0 and <= 1 (got {fraction:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -75,11 +80,17 @@ class FixParticleDistributionDiscrete(Fix):
             fractions.append(fraction)
         total = sum(fractions)
         if abs(total - 1.0) > 1e-10:
-            sim.warn(f"fix {id}: the mass fractions add up to {total:g}, not 1: they are scaled to do so")
-        self.mass_fraction = np.array(fractions) / total
+            sim.warn(f"fix {id}: the {self.weights_by} fractions add up to {total:g}, not 1: they are scaled "
+                     "to do so")
         mass = np.array([t.mass_expected for t in self.templates])
-        weight = self.mass_fraction / mass
-        self.number_fraction = weight / weight.sum()
+        if self.weights_by == "number":
+            self.number_fraction = np.array(fractions) / total
+            carried = self.number_fraction * mass
+            self.mass_fraction = carried / carried.sum()
+        else:
+            self.mass_fraction = np.array(fractions) / total
+            weight = self.mass_fraction / mass
+            self.number_fraction = weight / weight.sum()
         self.mass_expected = float(self.number_fraction @ mass)
         self.volume_expected = float(self.number_fraction @ [t.volume_expected for t in self.templates])
         self.max_radius = max(t.max_radius for t in self.templates)
@@ -94,3 +105,15 @@ class FixParticleDistributionDiscrete(Fix):
         order = np.argsort(-radius, kind="stable")
         types = np.array([t.atom_type for t in self.templates], dtype=np.int32)[which]
         return radius[order], density[order], types[order], which[order]
+
+
+class FixParticleDistributionDiscreteMassBased(FixParticleDistributionDiscrete):
+    name = "particledistribution/discrete/massbased"
+    usage = FixParticleDistributionDiscrete.usage.replace("discrete", "discrete/massbased", 1)
+
+
+class FixParticleDistributionDiscreteNumberBased(FixParticleDistributionDiscrete):
+    name = "particledistribution/discrete/numberbased"
+    usage = FixParticleDistributionDiscrete.usage.replace("discrete", "discrete/numberbased", 1)
+    weights_by = "number"
+

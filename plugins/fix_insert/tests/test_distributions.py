@@ -123,3 +123,29 @@ def test_discrete_distribution_gives_each_template_its_mass_share(make_sim):
     share_error = np.std(small_mass - share * mass) / (mass.mean() * math.sqrt(DRAWS))
     assert abs(share - 0.3) < 4 * share_error
     assert mix.mass_expected == pytest.approx(p_small * m_small + (1 - p_small) * m_large, rel=1e-9)
+
+
+# LIGGGHTS 3.8.0 on this machine (2026-12-02), templates of radius 5 and 8 mm (density 2500) with
+# weights 0.3 and 0.7: the number shares it prints ("distribution based on number%")
+LIGGGHTS_NUMBER_SHARES = {"particledistribution/discrete": (0.63708005, 0.36291995),
+                          "particledistribution/discrete/massbased": (0.63708005, 0.36291995),
+                          "particledistribution/discrete/numberbased": (0.30, 0.70)}
+
+
+@pytest.mark.parametrize("style", list(LIGGGHTS_NUMBER_SHARES))
+def test_weights_by_mass_or_by_number_as_liggghts(make_sim, style):
+    sim = make_sim(dialect="liggghts")
+    sim.command(f"""
+        atom_style granular
+        region box block 0 1 0 1 0 1 units box
+        create_box 1 box
+        fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.005
+        fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.008
+        fix pdd1 all {style} 32452843 2 pts1 0.3 pts2 0.7
+    """)
+    mix = sim.fixes["pdd1"]
+    np.testing.assert_allclose(mix.number_fraction, LIGGGHTS_NUMBER_SHARES[style], atol=5e-9)
+    # the mass shares follow from the number shares and the masses (radius^3: 125 and 512)
+    carried = mix.number_fraction * np.array([125.0, 512.0])
+    np.testing.assert_allclose(mix.mass_fraction, carried / carried.sum(), rtol=1e-12)
+    assert mix.mass_expected == pytest.approx(float(mix.number_fraction @ [t.mass_expected for t in mix.templates]))
