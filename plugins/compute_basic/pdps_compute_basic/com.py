@@ -27,13 +27,18 @@ from pdps_core.api import Compute, observables
 from .peratom import unwrapped
 
 
+def centre_of_mass(sim, group):
+    """The group's unwrapped centre of mass over every rank (0 for an empty group)."""
+    chosen = sim.groups.select(sim, group)
+    mass = observables.masses(sim, chosen)
+    moment = sim.comm.sum(mass @ unwrapped(sim)[chosen])
+    total = sim.comm.sum(float(mass.sum()))
+    return np.asarray(moment, dtype=np.float64) / total if total > 0 else np.zeros(3)
+
+
 class ComputeCOM(Compute):
     name = "com"
     usage = "compute ID GROUP com"
 
     def vector(self, sim):
-        chosen = sim.groups.select(sim, self.group)
-        mass = observables.masses(sim, chosen)
-        moment = sim.comm.sum(mass @ unwrapped(sim)[chosen])
-        total = sim.comm.sum(float(mass.sum()))
-        return np.asarray(moment, dtype=np.float64) / total if total > 0 else np.zeros(3)
+        return centre_of_mass(sim, self.group)

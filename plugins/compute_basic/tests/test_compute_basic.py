@@ -421,3 +421,40 @@ def test_displace_atom_as_lammps(make_sim):
     sim.command(DISPLACE_SCENE)
     got = sim.computes["d"].peratom(sim)[np.argsort(sim.tag)]
     np.testing.assert_allclose(got, LAMMPS_DISPLACE, rtol=1e-12, atol=1e-12)
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): the 200-particle LJ fluid (data/fluid.data, a copy of
+# pair_simple's),
+# thermo c_g c_g[1..6] c_gh at steps 0, 50 and 100 (%.15g)
+LAMMPS_GYRATION = {
+    0: [3.43603972084366, 4.0684047361253, 3.95757061726004, 3.78039360983005, 0.121844168354014,
+        0.0712035743977002, 0.215614937840547, 3.39337125328323],
+    50: [3.4383627119583, 4.00837515620234, 3.96676588054066, 3.84719710224223, 0.109760555200372,
+         0.0901221015121369, 0.197428893487648, 3.37435721594893],
+    100: [3.47460686210146, 3.95325828923053, 4.07919668360248, 4.04043787332957, 0.099482293157871,
+          0.118436058349414, 0.152977887274755, 3.39396981966377],
+}
+
+
+def test_gyration_as_lammps(make_sim, tmp_path):
+    import shutil
+    from pathlib import Path
+    shutil.copy(Path(__file__).parent / "data" / "fluid.data", tmp_path)        # pair_simple's fluid
+    sim = make_sim(dialect="lammps")
+    sim.command("""
+        units lj
+        atom_style atomic
+        read_data fluid.data
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0
+        pair_coeff 2 2 0.5 1.2
+        fix 1 all nve
+        timestep 0.002
+        group heavy type 2
+        compute g all gyration
+        compute gh heavy gyration
+    """)
+    for step, want in LAMMPS_GYRATION.items():
+        sim.command(f"run {step - sim.step}")
+        got = [sim.computes["g"].scalar(sim), *sim.computes["g"].vector(sim), sim.computes["gh"].scalar(sim)]
+        np.testing.assert_allclose(got, want, rtol=1e-11, atol=1e-14)
