@@ -43,7 +43,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param, peratom_column
+from pdps_core.api import Compute, ScriptError, StyleArgs, param, peratom_column
 
 from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom
 
@@ -86,11 +86,15 @@ class ComputeReduce(Compute):
         style, column = find_peratom(sim, word, f"compute {self.id} reduce")
         return peratom_column(sim, style, column, word)
 
+    def selected(self, sim):
+        """The owned particles reduced over: the group's."""
+        return sim.groups.select(sim, self.group)
+
     def vector(self, sim):
-        chosen = sim.groups.select(sim, self.group)
+        chosen = self.selected(sim)
         values = [self._input(sim, word)[chosen] for word in self.args.inputs]
         mode = self.args.mode
-        count = observables.count(sim, self.group)
+        count = int(sim.comm.sum(int(chosen.sum())))
         if count == 0:
             return np.zeros(len(values))
         if mode in ("sum", "ave"):
@@ -106,3 +110,28 @@ class ComputeReduce(Compute):
             raise ScriptError(f"compute {self.id} reduces {len(self.args.inputs)} inputs: read one with "
                               f"c_{self.id}[k], k from 0")
         return float(self.vector(sim)[0])
+
+
+class ComputeReduceRegion(ComputeReduce):
+    """Compute ``reduce/region``: as reduce, over the group's particles inside a region at the time
+    of reading (LAMMPS's and LIGGGHTS's compute reduce/region)::
+
+        compute ID GROUP reduce/region REGION sum|min|max|ave input...
+    """
+    name = "reduce/region"
+    usage = "compute ID GROUP reduce/region REGION sum|min|max|ave input..."
+
+    class Args(StyleArgs):
+        region: str = param(names="region ID")
+        mode: Literal["sum", "min", "max", "ave"]
+        inputs: list[str] = param(min_length=1, names="input (x, c_ID, c_ID[i], f_ID, v_NAME, ...)")
+
+    def __init__(self, sim, id, group, args):
+        super().__init__(sim, id, group, args)
+        sim.region(args.region)
+
+    def selected(self, sim):
+        p = sim.particles
+        inside = np.asarray(sim.region(self.args.region).match(p.x[:p.nlocal]), dtype=bool)
+        return sim.groups.select(sim, self.group) & inside
+

@@ -458,3 +458,43 @@ def test_gyration_as_lammps(make_sim, tmp_path):
         sim.command(f"run {step - sim.step}")
         got = [sim.computes["g"].scalar(sim), *sim.computes["g"].vector(sim), sim.computes["gh"].scalar(sim)]
         np.testing.assert_allclose(got, want, rtol=1e-11, atol=1e-14)
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): the LJ fluid, thermo c_r[1] c_r[2] c_rh c_ra (%.15g;
+# sums normalised by the particle count, lj units)
+LAMMPS_REDUCE_REGION = {
+    0: [0.0361733642655205, 0.820157565259583, 6.78316123266861, 0.0306519397266706],
+    50: [-0.0303736445555825, 2.18599421684209, 6.70444412453224, -0.407478846060602],
+    100: [-0.0570353952912507, 2.18885201438692, 6.84880433045804, -0.435564762743085],
+}
+
+
+def test_reduce_region_as_lammps(pdps_cli, tmp_path):
+    import shutil
+    from pathlib import Path
+    shutil.copy(Path(__file__).parent / "data" / "fluid.data", tmp_path)
+    done = pdps_cli("""
+        units lj
+        atom_style atomic
+        read_data fluid.data
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0
+        pair_coeff 2 2 0.5 1.2
+        fix 1 all nve
+        timestep 0.002
+        group heavy type 2
+        region low block INF INF INF INF INF 3 units box
+        compute k all ke/atom
+        compute r all reduce/region low sum vx c_k
+        compute rh heavy reduce/region low max x
+        compute ra all reduce/region low ave vz
+        thermo 50
+        thermo_style custom step c_r[1] c_r[2] c_rh c_ra
+        thermo_modify format float %.15g
+        run 100
+    """, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    rows = {int(w[0]): [float(v) for v in w[1:]] for w in (line.split() for line in done.stdout.splitlines())
+            if len(w) == 5 and w[0].isdigit()}
+    for step, want in LAMMPS_REDUCE_REGION.items():
+        np.testing.assert_allclose(rows[step], want, rtol=1e-12, atol=1e-15)
