@@ -1,5 +1,5 @@
 """Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple and fix_granular's addforce,
-setforce, aveforce, lineforce, planeforce, spring/self, viscous and gravity and fix nve/noforce, the reference
+setforce, aveforce, lineforce, planeforce, spring/self, drag, viscous and gravity and fix nve/noforce, the reference
 plugins/fix_simple/tests/test_lammps_fixes.py compares pdps with.
 
     python benchmarks/lammps_references/fixes.py [LMP]
@@ -33,6 +33,7 @@ CASES = {
     "planeforce": "fix 2 all planeforce 0 0 1",
     "spring_self": "fix 2 all spring/self 20.0\nfix_modify 2 energy yes",
     "spring_self_xy": "group heavy type 2\nfix 2 heavy spring/self 50.0 xy\nfix_modify 2 energy yes",
+    "drag": "group heavy type 2\nfix 2 heavy drag 1.0 NULL 3.0 0.8 0.5",
     "nve_noforce": "group heavy type 2\ngroup light type 1\nunfix 1\nfix 1 light nve\nfix 2 heavy nve/noforce",
 }
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
