@@ -135,3 +135,48 @@ def test_erotate_sphere_atom_as_lammps(make_sim):
     got = by_tag(sim, sim.computes["e"].peratom(sim))
     np.testing.assert_allclose(got, LAMMPS_EROTATE, rtol=1e-15, atol=0)
     assert sim.computes["s"].scalar(sim) == pytest.approx(7.8801615727544, rel=1e-14)
+
+
+# LIGGGHTS 3.8.0 on this machine (2026-12-02): two spheres sliding on a wall spin up; thermo c_e c_es
+# (erotate, erotate/sphere) alike, 23.1959640967083 at step 1000 and 23.1959640857466 at 2000
+EROTATE_LIGGGHTS_SCENE = """
+atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region b block 0 5 0 5 0 5 units box
+create_box 1 b
+create_atoms 1 single 1 1 0.2 units box
+create_atoms 1 single 3 3 0.3 units box
+set atom 1 diameter 0.4 density 2000
+set atom 2 diameter 0.6 density 1000
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 0.001
+compute e all erotate
+compute es all erotate/sphere
+fix g all gravity 9.81 vector 0 0 -1
+fix w all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+velocity all set 1.0 0.5 0 units box
+fix n all nve/sphere
+thermo_style custom step c_e c_es
+thermo_modify format float %.15g
+thermo 1000
+run 2000
+"""
+
+
+def test_liggghts_erotate_is_erotate_sphere_on_spheres(pdps_cli):
+    done = pdps_cli(EROTATE_LIGGGHTS_SCENE, "-log", "none")
+    assert done.returncode == 0, done.stderr
+    rows = {int(w[0]): (float(w[1]), float(w[2])) for w in (line.split() for line in done.stdout.splitlines())
+            if len(w) == 3 and w[0].isdigit()}
+    assert all(e == es for e, es in rows.values())
+    assert rows[1000][0] == pytest.approx(23.1959640967083, rel=1e-12)
+    assert rows[2000][0] == pytest.approx(23.1959640857466, rel=1e-11)
