@@ -498,3 +498,36 @@ def test_reduce_region_as_lammps(pdps_cli, tmp_path):
             if len(w) == 5 and w[0].isdigit()}
     for step, want in LAMMPS_REDUCE_REGION.items():
         np.testing.assert_allclose(rows[step], want, rtol=1e-12, atol=1e-15)
+
+
+# LAMMPS 22 Jul 2025 on this machine (2026-12-02): the LJ fluid, thermo c_ng[1] c_ng[2] c_ng[3] c_nh[1]
+# c_nh[3] (%.15g); at step 0 LAMMPS prints -nan for c_ng[3] (0/0), pdps 0
+LAMMPS_NONGAUSS = {
+    50: [0.051451283509984, 0.00458766259040931, 0.0398011496309532, 0.057269180484046, -0.0311300241808271],
+    100: [0.170571305438585, 0.0467089258173342, -0.0367496319704574, 0.187492911406334, -0.020961884618936],
+}
+
+
+def test_msd_nongauss_as_lammps(make_sim, tmp_path):
+    import shutil
+    from pathlib import Path
+    shutil.copy(Path(__file__).parent / "data" / "fluid.data", tmp_path)
+    sim = make_sim(dialect="lammps")
+    sim.command("""
+        units lj
+        atom_style atomic
+        read_data fluid.data
+        pair_style lj/cut 2.5
+        pair_coeff 1 1 1.0 1.0
+        pair_coeff 2 2 0.5 1.2
+        fix 1 all nve
+        timestep 0.002
+        group heavy type 2
+        compute ng all msd/nongauss
+        compute nh heavy msd/nongauss com yes
+    """)
+    assert sim.computes["ng"].vector(sim).tolist() == [0.0, 0.0, 0.0]
+    for step, want in LAMMPS_NONGAUSS.items():
+        sim.command(f"run {step - sim.step}")
+        ng, nh = sim.computes["ng"].vector(sim), sim.computes["nh"].vector(sim)
+        np.testing.assert_allclose([*ng, nh[0], nh[2]], want, rtol=1e-11, atol=1e-12)
