@@ -40,10 +40,12 @@ What the table says, per script (written into docs/liggghts.md between its ``cor
   such as the particles, resolved to one), the worst over rows and columns. LIGGGHTS's own seed
   sets do not pass that with a few sets (a pair of them against the others: median 1-4, worst
   3-40), so with 4 or more sets the verdict is a permutation test: every choice of two of all the
-  runs (LIGGGHTS's n and pdps's two) is measured against the others the same way, and pdps agrees
-  unless its two are the most extreme (p = the share of choices at least as extreme, > 0.05; with 6
-  LIGGGHTS sets 28 choices, so pdps fails only where its two are worse than every other pair: a pdps
-  that were two more LIGGGHTS runs would fail 1 time in 28). With fewer sets: an excess of at most 1.
+  runs (LIGGGHTS's n and pdps's two) is measured against the others by the largest pooled two-sample
+  t over rows and columns (the standard deviation no smaller than the printed precision, or one for
+  a count), and pdps agrees unless its two are the most extreme (p = the share of choices at least
+  as extreme, > 0.05; with 6 LIGGGHTS sets 28 choices, so pdps fails only where its two stand out
+  beyond every other pair: a pdps that were two more LIGGGHTS runs would fail 1 time in 28). With
+  fewer sets: an excess of at most 1.
 - time a step, both programs: the sum of the ``Loop time`` lines over the steps they count, the
   fastest of each program's seed sets (pdps's first run compiles what its caches lack).
 
@@ -64,6 +66,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+import numpy as np
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -259,23 +263,50 @@ def compare(reference, mine):
     if len(reference) < 4:
         return "statistical", worst <= 1.0, f"worst {worst:.2f} of the seeds' range ({where or 'none'})"
     # a permutation test: every choice of as many runs as pdps made, among all the runs, measured
-    # against the others; were pdps's runs more LIGGGHTS runs, its choice would be as likely as any
-    # to be the most extreme
+    # against the others by the largest t over rows and columns; were pdps's runs more LIGGGHTS
+    # runs, their choice would be as likely as any to be the most extreme
     runs = reference + mine
     chosen = tuple(range(len(reference), len(runs)))
-    measured = {}
-    for group in itertools.combinations(range(len(runs)), len(mine)):
-        if group == chosen:
-            measured[group] = worst
-            continue
-        rest = [run for k, run in enumerate(runs) if k not in group]
-        measured[group] = excess(rest, [runs[k] for k in group], steps, columns)[0]
-    p_value = sum(value >= worst for value in measured.values()) / len(measured)
-    theirs = [value for group, value in measured.items() if max(group) < len(reference)]
+    table = np.array([[run["rows"][s] for s in steps] for run in runs], dtype=np.float64)
+    values, floor = resolution(table)
+    measured = {group: largest_t(values, floor, group) for group in
+                itertools.combinations(range(len(runs)), len(mine))}
+    ours, (row, column) = measured[chosen]
+    p_value = sum(value >= ours for value, _ in measured.values()) / len(measured)
+    theirs = [value for group, (value, _) in measured.items() if max(group) < len(reference)]
     return "statistical", p_value > P_VALUE, (
-        f"worst {worst:.2f} of LIGGGHTS's range ({where or 'none'}); as extreme as {round(p_value * len(measured))} "
-        f"of the {len(measured)} choices of {len(mine)} of all {len(runs)} runs against the others (p = {p_value:.2f}; "
-        f"LIGGGHTS's own: median {statistics.median(theirs):.2f})")
+        f"t = {ours:.1f} at step {steps[row]} {columns[column]} (worst {worst:.2f} of LIGGGHTS's range); "
+        f"as extreme as {round(p_value * len(measured))} of the {len(measured)} choices of {len(mine)} of all "
+        f"{len(runs)} runs (p = {p_value:.2f}; LIGGGHTS's own pairs: median t {statistics.median(theirs):.1f})")
+
+
+def resolution(table):
+    """Per row and column, the smallest difference that counts: one for a count (particles), the
+    printed precision (relative DETERMINISTIC) or round-off (ROUNDOFF of the column's largest) else,
+    on log10 of positive values as the t test reads them."""
+    logarithmic = (table > 0).all(axis=0)
+    values = np.where(logarithmic, np.log10(np.where(logarithmic, table, 1.0)), table)
+    counts = (table == np.round(table)).all(axis=0)
+    smallest = np.where(table > 0, table, np.inf).min(axis=0)
+    scale = np.abs(table).max(axis=(0, 1))
+    floor = np.where(logarithmic, np.log10(1.0 + DETERMINISTIC), np.maximum(DETERMINISTIC * np.abs(table).max(axis=0),
+                                                                            ROUNDOFF * scale))
+    floor = np.where(counts & logarithmic, np.log10(1.0 + 1.0 / smallest), floor)
+    floor = np.where(counts & ~logarithmic, 1.0, floor)
+    return values, floor
+
+
+def largest_t(values, floor, group):
+    """(the largest pooled two-sample t of the runs ``group`` against the others over rows and
+    columns, (row, column) where it is); the standard deviation no smaller than ``floor``."""
+    inside = np.zeros(len(values), dtype=bool)
+    inside[list(group)] = True
+    a, b = values[inside], values[~inside]
+    spread = ((a - a.mean(axis=0)) ** 2).sum(axis=0) + ((b - b.mean(axis=0)) ** 2).sum(axis=0)
+    sd = np.maximum(np.sqrt(spread / (len(values) - 2)), floor)
+    t = np.abs(a.mean(axis=0) - b.mean(axis=0)) / (sd * math.sqrt(1.0 / len(a) + 1.0 / len(b)))
+    where = np.unravel_index(int(np.argmax(t)), t.shape)
+    return float(t[where]), (int(where[0]), int(where[1]))
 
 
 def per_step(run):

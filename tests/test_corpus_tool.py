@@ -70,14 +70,14 @@ def test_statistical_runs_within_the_widened_range(mine, agrees):
 
 def test_with_six_seed_sets_the_verdict_is_a_permutation_test():
     """Six LIGGGHTS runs at 2.0..2.5 at step 100: pdps's two runs inside that spread are one choice of
-    28 among the eight runs, not the most extreme (p > 0.05); two far outside are the most extreme of
-    all 28 choices (p = 1/28) and fail."""
+    28 among the eight runs, not the most extreme by the pooled t (p > 0.05); two far outside are the
+    most extreme of all 28 choices (p = 1/28) and fail."""
     reference = [run(1.0, v) for v in (2.0, 2.1, 2.2, 2.3, 2.4, 2.5)]
     kind, ok, detail = corpus.compare(reference, [run(1.0, 2.15), run(1.0, 2.35)])
     assert (kind, ok) == ("statistical", True), detail
     kind, ok, detail = corpus.compare(reference, [run(1.0, 5.0), run(1.0, 5.2)])
     assert (kind, ok) == ("statistical", False), detail
-    assert "as extreme as 1 of the 28 choices of 2 of all 8 runs against the others (p = 0.04" in detail
+    assert "at step 100 KinEng" in detail and "as extreme as 1 of the 28 choices of 2 of all 8 runs (p = 0.04" in detail
 
 
 def test_a_count_is_resolved_to_one():
@@ -104,3 +104,13 @@ def test_the_manual_items_and_what_pdps_makes_of_them():
     assert "| `gran model hertz` | style |" in text and "| `fix ave/histo` | unknown |" in text
     assert "| `fix multisphere` | refused: pdps has no multisphere bodies" in text
     assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown.")
+
+
+def test_a_shift_the_range_misses_the_t_test_finds():
+    """LIGGGHTS's runs tight (2.070..2.082), pdps's two both low but apart (1.995, 2.044), as
+    insert_stream's kinetic energy: a pair with one pdps run widens the others' range, so the range's
+    excess ranks pdps's pair among several; the pooled t puts it alone at the top (p = 1/28)."""
+    reference = [run(1.0, v) for v in (2.0793, 2.0813, 2.0787, 2.0717, 2.0723, 2.0814)]
+    kind, ok, detail = corpus.compare(reference, [run(1.0, 2.0442), run(1.0, 1.9948)])
+    assert (kind, ok) == ("statistical", False), detail
+    assert "(p = 0.04" in detail
