@@ -136,3 +136,44 @@ def test_no_contacts_is_a_table_of_no_rows_that_dump_local_writes(tmp_path):
         lines = block.splitlines()
         assert lines[1:3] == ["ITEM: NUMBER OF ENTRIES", "0"]
         assert lines[-1] == "ITEM: ENTRIES c_c[1] c_c[13] c_c[26]"
+
+
+# LIGGGHTS 3.8.0 on this machine (2026-12-02): four spheres of diameter 1 at x = 1, 1.95, 3.0, 4.2
+# (an overlap, a gap of 0.05 inside the skin 0.1, one of 0.2 outside): dump id c_c c_cg
+LIGGGHTS_CONTACT_SCENE = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region b block 0 6 0 2 0 2 units box
+create_box 1 b
+create_atoms 1 single 1 1 1 units box
+create_atoms 1 single 1.95 1 1 units box
+create_atoms 1 single 3.0 1 1 units box
+create_atoms 1 single 4.2 1 1 units box
+set group all diameter 1.0 density 2500
+neighbor 0.1 bin
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 0.000001
+compute c all contact/atom
+compute cg all contact/atom/gran
+fix n all nve/sphere
+
+
+run 0
+"""
+LIGGGHTS_CONTACTS = [1, 1, 0, 0]
+
+
+def test_contact_atom_and_contact_atom_gran_as_liggghts(make_sim):
+    sim = make_sim(dialect="liggghts")
+    sim.command(LIGGGHTS_CONTACT_SCENE)
+    order = np.argsort(sim.tag)
+    for compute in ("c", "cg"):
+        assert sim.computes[compute].peratom(sim)[order].tolist() == LIGGGHTS_CONTACTS
