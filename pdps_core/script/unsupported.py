@@ -89,6 +89,9 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
        for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
                           ("compute", "erotate/superquadric"))},
     ("fix", "multicontact/halfspace"): "pdps has no multicontact surface model",
+    # in LIGGGHTS's manual, not in LIGGGHTS 3.8.0 itself ("Invalid compute style", run 12-02)
+    ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
+    ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
 }
 
 
