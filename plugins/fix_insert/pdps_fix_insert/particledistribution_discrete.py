@@ -18,7 +18,10 @@ with a warning. By mass, a particle comes from template k with the number probab
     p_k = \frac{w_k / \langle m_k\rangle}{\sum_l w_l / \langle m_l\rangle}
 
 (:math:`\langle m_k\rangle` the template's expected mass), so that in the long run template k's
-particles carry the fraction :math:`w_k` of the inserted mass. The expected particle mass and
+particles carry the fraction :math:`w_k` of the inserted mass. An insertion of n particles takes
+:math:`\lfloor n p_k\rfloor` from each template and the few left over at random by the remainders,
+as LIGGGHTS does (its randomize_list with exact numbers, the default): the mixture of each insertion
+is its shares to within a particle a template. The expected particle mass and
 volume of the mixture are :math:`\sum_k p_k \langle m_k\rangle` and :math:`\sum_k p_k \langle
 V_k\rangle`. As in LIGGGHTS, the particles of one insertion are placed largest first (a higher
 packing fraction is reached); their types are the templates', their groups this fix's and the
@@ -95,9 +98,23 @@ class FixParticleDistributionDiscrete(Fix):
         self.volume_expected = float(self.number_fraction @ [t.volume_expected for t in self.templates])
         self.max_radius = max(t.max_radius for t in self.templates)
 
+    def counts(self, rng, n):
+        """How many of n particles each template gives, as LIGGGHTS's randomize_list with its
+        default exact number: floor(n p_k) each, and the n - sum left over drawn one at a time among
+        the templates with odds their remainders n p_k - floor(n p_k). So an insertion's mixture
+        strays by at most the remainders from its shares, not by a multinomial's sqrt(n p (1 - p))."""
+        share = n * self.number_fraction
+        counts = np.floor(share).astype(np.int64)
+        gap = n - int(counts.sum())
+        if gap > 0:
+            remainder = share - counts
+            counts += np.bincount(rng.choice(len(counts), size=gap, p=remainder / remainder.sum()),
+                                  minlength=len(counts))
+        return counts
+
     def draw(self, rng, n):
         """n particles, largest first: (radius, density, type, template index) arrays."""
-        which = rng.choice(len(self.templates), size=n, p=self.number_fraction)
+        which = np.repeat(np.arange(len(self.templates)), self.counts(rng, n))
         radius, density = np.empty(n), np.empty(n)
         for k, template in enumerate(self.templates):
             rows = np.flatnonzero(which == k)

@@ -149,3 +149,27 @@ def test_weights_by_mass_or_by_number_as_liggghts(make_sim, style):
     carried = mix.number_fraction * np.array([125.0, 512.0])
     np.testing.assert_allclose(mix.mass_fraction, carried / carried.sum(), rtol=1e-12)
     assert mix.mass_expected == pytest.approx(float(mix.number_fraction @ [t.mass_expected for t in mix.templates]))
+
+
+def test_an_insertions_mixture_is_its_shares_to_a_particle(make_sim):
+    """LIGGGHTS's randomize_list (exact numbers): 300 particles of shares 0.63708 and 0.36292 give
+    191 or 192 and 109 or 108, never a multinomial's spread (sd 8.3); over 2,000 insertions the
+    mean is the share within 4 standard errors of the one particle left to chance."""
+    sim = make_sim(dialect="liggghts")
+    sim.command("""
+        atom_style granular
+        region box block 0 1 0 1 0 1 units box
+        create_box 1 box
+        fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.005
+        fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.008
+        fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.3 pts2 0.7
+    """)
+    mix = sim.fixes["pdd1"]
+    rng = np.random.default_rng(11)
+    counts = np.array([mix.counts(rng, 300) for _ in range(2000)])
+    assert set(counts[:, 0]) <= {191, 192} and (counts.sum(axis=1) == 300).all()
+    share = 300 * mix.number_fraction[0]
+    p = share - math.floor(share)
+    assert abs(counts[:, 0].mean() - share) <= 4 * math.sqrt(p * (1 - p) / len(counts))
+    radius, _, _, which = mix.draw(rng, 300)
+    assert (np.diff(radius) <= 0).all() and (which == 0).sum() in (191, 192)
