@@ -79,7 +79,8 @@ CONTRACT = {
         "compute_value": "compute_value(id, indices): c_ID, c_ID[i], c_ID[i][j]",
         "fix_value": "fix_value(id, indices): f_ID, f_ID[i], f_ID[i][j]",
         "dialect_index": "dialect_index(i, what): a script's index (c_ID[i], a column) counted from the dialect's first, as 0-based",
-        "dialect": "the dialect the script is read in: .name is pdps, lammps or liggghts (docs/lammps.md)",
+        "dialect": "the dialect the script is read in: .name is pdps, lammps or liggghts (docs/lammps.md); its "
+                   "other fields say where the dialects' meanings part (.adapt_rule: fix adapt's)",
         "compute_needs": "compute_needs(id): {'energy', 'virial'} a compute reads",
         "require_group": "require_group(name): the name, or a one-line error",
         "require_box": "require_box(what): a one-line error when no box exists yet",

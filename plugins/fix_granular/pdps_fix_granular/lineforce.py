@@ -24,30 +24,37 @@ from pdps_core.api import ScriptError, StyleArgs, param
 from ._common import ForceFix
 
 
-def unit_direction(args, what):
-    direction = np.array([args.x, args.y, args.z], dtype=np.float64)
-    length = float(np.sqrt(direction @ direction))
-    if length == 0.0:
-        raise ScriptError(f"fix {what}: the direction 0 0 0 has no length")
-    return direction / length
+class DirectionArgs(StyleArgs):
+    """X Y Z: a direction (dimensionless; only its direction counts)."""
+    x: float = param(unit="dimensionless")
+    y: float = param(unit="dimensionless")
+    z: float = param(unit="dimensionless")
 
 
-class FixLineForce(ForceFix):
-    name = "lineforce"
-    usage = "fix ID GROUP lineforce X Y Z"
-
-    class Args(StyleArgs):
-        x: float = param(unit="dimensionless")
-        y: float = param(unit="dimensionless")
-        z: float = param(unit="dimensionless")
+class DirectionForceFix(ForceFix):
+    """A force fix keeping or removing the force along one unit direction (``self.direction``)."""
+    Args = DirectionArgs
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        self.direction = unit_direction(args, self.name)
+        direction = np.array([args.x, args.y, args.z], dtype=np.float64)
+        length = float(np.sqrt(direction @ direction))
+        if length == 0.0:
+            raise ScriptError(f"fix {self.name}: the direction 0 0 0 has no length")
+        self.direction = direction / length
 
-    def post_force(self, sim):
+    def along(self, sim):
+        """(the group's owned forces, their rows, the component of each along the direction)."""
         p = sim.particles
         selected = sim.groups.select(sim, self.group)
         f = p.f[: p.nlocal]
-        along = f[selected] @ self.direction
+        return f, selected, f[selected] @ self.direction
+
+
+class FixLineForce(DirectionForceFix):
+    name = "lineforce"
+    usage = "fix ID GROUP lineforce X Y Z"
+
+    def post_force(self, sim):
+        f, selected, along = self.along(sim)
         f[selected] = along[:, None] * self.direction

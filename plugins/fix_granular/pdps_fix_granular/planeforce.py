@@ -17,28 +17,13 @@ Example::
     fix flat all planeforce 0.0 0.0 1.0
 """
 
-from pdps_core.api import StyleArgs, param
-
-from ._common import ForceFix
-from .lineforce import unit_direction
+from .lineforce import DirectionForceFix
 
 
-class FixPlaneForce(ForceFix):
+class FixPlaneForce(DirectionForceFix):
     name = "planeforce"
     usage = "fix ID GROUP planeforce X Y Z"
 
-    class Args(StyleArgs):
-        x: float = param(unit="dimensionless")
-        y: float = param(unit="dimensionless")
-        z: float = param(unit="dimensionless")
-
-    def __init__(self, sim, id, group, args):
-        super().__init__(sim, id, group, args)
-        self.normal = unit_direction(args, self.name)
-
     def post_force(self, sim):
-        p = sim.particles
-        selected = sim.groups.select(sim, self.group)
-        f = p.f[: p.nlocal]
-        across = f[selected] @ self.normal
-        f[selected] -= across[:, None] * self.normal
+        f, selected, across = self.along(sim)
+        f[selected] -= across[:, None] * self.direction
