@@ -1031,6 +1031,10 @@ class Fix(Style):
     ``reset_timestep(sim, new, old)``: called by the reset_timestep command after the step changed
     from ``old`` to ``new``, for a fix that keeps a schedule in steps it should move with the clock
     (LIGGGHTS's insertion fixes shift their next insertion by new - old).
+
+    ``box_extent(sim)``: the (lo, hi) corners of what a shrink-wrapped box encloses besides the
+    particles (LIGGGHTS's Fix::box_extent: a mesh's nodes, wherever they have moved), or None; the
+    same on every rank.
     """
     kind = "fix"
     can_energy: ClassVar[bool] = False
@@ -1070,6 +1074,10 @@ class Fix(Style):
     def inserted_radius(self, type_):
         """The largest radius of particles of type ``type_`` this fix will insert (0: none)."""
         return 0.0
+
+    def box_extent(self, sim):
+        """(lo, hi) a shrink-wrapped box encloses besides the particles, or None."""
+        return None
 
     def extract(self, name):
         """A named value other styles may read (LAMMPS's Fix::extract), or None where this fix has

@@ -3,7 +3,10 @@ exchange of a neighbor list rebuild (and at a run's setup), such a face moves to
 extent along its axis, less (lower face) or plus (upper face) 1e-4 of the box length the box was
 made with (LAMMPS's ``small``, set by create_box, read_data and read_restart, not by later
 wrapping: recorded, in.crack's volume is LAMMPS's to 8 digits); an ``m`` face never moves inside its
-first position (the box command's or the data file's). With no particles the faces stay. The new bounds are the same on every rank."""
+first position (the box command's or the data file's). The extent takes in what fixes say the box
+encloses besides the particles (``Fix.box_extent``: LIGGGHTS's meshes, so that a tutorial's box is
+its mesh's plus the margin before any particle exists). With neither particles nor such fixes the
+faces stay. The new bounds are the same on every rank."""
 
 import math
 
@@ -28,15 +31,20 @@ def shrink_wrap(sim):
     x = p.x[: p.nlocal]
     box = sim.box
     lo, hi = box.lo.copy(), box.hi.copy()
+    beside_lo, beside_hi = np.full(3, math.inf), np.full(3, -math.inf)
+    for fix in sim.fixes.values():
+        corners = fix.box_extent(sim)
+        if corners is not None:
+            beside_lo, beside_hi = np.minimum(beside_lo, corners[0]), np.maximum(beside_hi, corners[1])
     for d, side, style, first, margin in faces:
         if side == 0:
-            extent = sim.comm.min(float(x[:, d].min()) if len(x) else math.inf)
+            extent = min(sim.comm.min(float(x[:, d].min()) if len(x) else math.inf), float(beside_lo[d]))
             if math.isfinite(extent):
                 lo[d] = extent - margin
                 if style == "m":
                     lo[d] = min(lo[d], first)
         else:
-            extent = sim.comm.max(float(x[:, d].max()) if len(x) else -math.inf)
+            extent = max(sim.comm.max(float(x[:, d].max()) if len(x) else -math.inf), float(beside_hi[d]))
             if math.isfinite(extent):
                 hi[d] = extent + margin
                 if style == "m":

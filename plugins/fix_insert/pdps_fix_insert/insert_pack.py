@@ -5,6 +5,7 @@ Syntax::
 
     fix ID GROUP insert/pack seed S distributiontemplate DIST [general keywords] region REGION
         volumefraction_region VF | particles_in_region N | mass_in_region M  [ntry_mc N]
+        [check_dist_from_subdomain_border yes|no]
 
 At each insertion step the fix counts what the region holds (particles whose centre it matches)
 and inserts the difference to the target:
@@ -21,7 +22,11 @@ a fractional count rounded up or down at random with the odds that keep it unbia
 says of its mass-based counts). The particles go where the region matches (``all_in yes``: wholly
 inside it, for regions whose surface distance pdps knows: those that can be walls), clear of every
 present particle and of each other, with maxattempt x count / (1 - H/T) random positions among them
-for a region holding H of its target T (LIGGGHTS's budget, which grows as the region fills); insertion.py
+for a region holding H of its target T (LIGGGHTS's budget, which grows as the region fills). With
+``check_dist_from_subdomain_border yes`` (the default) a position whose centre lies less than the
+sphere's radius from a face of the box, periodic or not, is a failed try, as in LIGGGHTS, whose test
+is against its subdomain's faces (pdps places the same particles on any rank count, so against the
+box's); ``no`` allows it. insertion.py
 gives the general keywords, the velocities and why the same particles appear on any number of
 ranks. ``insert_every`` defaults to once; the default start is the next step.
 
@@ -38,7 +43,7 @@ import numpy as np
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs
+from .insertion import FixInsert, InsertArgs, YesNo
 from .whole_number import WholeNumber
 from .region_volume import InRegion, insertion_region, region_volume
 
@@ -57,6 +62,7 @@ class FixInsertPack(InRegion, FixInsert):
         particles_in_region: WholeNumber | None = keyword(None, ge=0, unit="particles")
         mass_in_region: float | None = keyword(None, gt=0, unit="mass")
         ntry_mc: WholeNumber = keyword(100_000, ge=1000, unit="1")
+        check_dist_from_subdomain_border: YesNo = keyword("yes")
 
     @classmethod
     def check_args(cls, args):
@@ -73,6 +79,7 @@ class FixInsertPack(InRegion, FixInsert):
 
     def read_style(self, sim, args):
         self.region = insertion_region(sim, args.region)
+        self.read_border(args)
         self.target = next(t for t in TARGETS if getattr(args, t) is not None)
         self.amount = getattr(args, self.target)
         self.ntry_mc = args.ntry_mc

@@ -5,6 +5,7 @@ Syntax::
 
     fix ID GROUP insert/rate/region seed S distributiontemplate DIST nparticles N|INF | mass M|INF
         particlerate R | massrate R  insert_every N  region REGION [general keywords] [ntry_mc N]
+        [check_dist_from_subdomain_border yes|no]
 
 Every ``insert_every`` steps (required; the first insertion at ``start``, default the next step)
 the fix inserts :math:`\lfloor n + u\rfloor` particles, :math:`n = \dot N\,\Delta t_\mathrm{ins}`
@@ -17,7 +18,7 @@ roundings, by about :math:`\sqrt{k\,p(1-p)}` after k insertions, p the fraction 
 ``nparticles N`` particles, or :math:`M/\langle m\rangle` of them for ``mass M`` (rounded to the
 nearest; with sizes drawn at random the mass is reached on average); ``INF``: never. Particles that
 found no room are not owed later (as in LIGGGHTS). Placement, velocities and the general keywords:
-insertion.py; ``all_in`` and ``ntry_mc`` as for insert/pack.
+insertion.py; ``all_in``, ``ntry_mc`` and ``check_dist_from_subdomain_border`` as for insert/pack.
 
 Example::
 
@@ -32,7 +33,7 @@ import numpy as np
 
 from pdps_core.api import ScriptError, keyword
 
-from .insertion import FixInsert, InsertArgs, positive
+from .insertion import FixInsert, InsertArgs, YesNo, positive
 from .whole_number import WholeNumber
 from .region_volume import InRegion, insertion_region
 
@@ -94,6 +95,7 @@ class FixInsertRateRegion(InRegion, FixInsert):
         region: str = keyword(..., names="region ID")
         insert_every: Literal["once"] | WholeNumber = keyword(..., unit="timesteps")
         ntry_mc: WholeNumber | None = keyword(None, ge=1, unit="1")    # LIGGGHTS's; read and not needed
+        check_dist_from_subdomain_border: YesNo = keyword("yes")
 
     @classmethod
     def check_args(cls, args):
@@ -102,6 +104,7 @@ class FixInsertRateRegion(InRegion, FixInsert):
 
     def read_style(self, sim, args):
         self.region = insertion_region(sim, args.region)
+        self.read_border(args)
         read_rate(self, args)
         self.wanted_so_far = 0
 

@@ -11,23 +11,26 @@ Syntax::
 so that :math:`\mathbf{v}\cdot\hat{\mathbf{n}} > 0`, and the particles enter with the insertion
 velocity's normal part :math:`\mathbf{v}_n = (\mathbf{v}\cdot\hat{\mathbf{n}})\hat{\mathbf{n}}`
 (LIGGGHTS's ``v_normal``). The particles of each insertion are placed in the volume the face sweeps
-when pushed back along :math:`-\hat{\mathbf{n}}` by the extrusion length L, at least the largest
-radius behind the face: a point of the face (triangles by area) minus :math:`(uL + R_\max)
-\hat{\mathbf{n}}`, u uniform on [0, 1). As in LIGGGHTS, exactly one of ``insert_every`` and
-``extrude_length`` is given and fixes the other: :math:`L = D\,\Delta t\,|\mathbf{v}_n|` with
-``duration`` D (default insert_every, D <= insert_every), or insert_every = :math:`\lfloor L /
-(\Delta t\,|\mathbf{v}_n|)\rfloor`; L must be at least 3 times the largest radius. Until it reaches
-the face a particle flies straight at :math:`\mathbf{v}_n`, with no spin, whatever acts on it: at the
-end of every step its position is put back where that flight has carried it from its insertion, and
-its force and torque are zeroed (LIGGGHTS's ``end_of_step``); on reaching the face it takes the
-velocity it was inserted with (``vel constant``, or drawn by ``vel uniform|gaussian`` at the
-insertion, from the same stream as its position) and the ``omega`` given, and is free from then on.
-So the mass crossing the face per unit time is the inserted rate once the first particles arrive.
-``all_in yes`` is refused.
+when pushed back along :math:`-\hat{\mathbf{n}}` by the extrusion length L, a sphere of radius r at a
+point of the face (triangles by area) minus :math:`d\,\hat{\mathbf{n}}`, the depth :math:`d = uL + r`
+with ``overlapcheck yes`` and :math:`d = u(L - 2r) + r` without, u uniform on [0, 1) (LIGGGHTS's
+``generate_random``). With the overlap check a centre less than r from a face of the simulation box
+is a failed try, without it a centre outside the box (LIGGGHTS's tests against its subdomain, here
+the box on any rank count). As in LIGGGHTS, exactly one of ``insert_every`` and ``extrude_length``
+is given and fixes the other: :math:`L = D\,\Delta t\,|\mathbf{v}_n|` with ``duration`` D (default
+insert_every, D <= insert_every; L at least twice the largest radius), or insert_every =
+:math:`\lfloor L / (\Delta t\,|\mathbf{v}_n|)\rfloor` (L at least 3 times the largest radius with
+the overlap check). A particle flies straight at :math:`\mathbf{v}_n`, with no spin, whatever acts
+on it, for :math:`\lfloor d / (\Delta t\,|\mathbf{v}_n|)\rfloor` whole steps: at the end of each its
+position is put back where that flight has carried it from its insertion, and its force and torque
+are zeroed (LIGGGHTS's ``end_of_step``); at the end of the last it takes the velocity it was
+inserted with (``vel constant``, or drawn by ``vel uniform|gaussian`` at the insertion, from the
+same stream as its position) and the ``omega`` given, and is free from then on. So the mass
+crossing the face per unit time is the inserted rate once the first particles arrive. ``all_in
+yes`` is refused.
 
 The count per insertion is rounded at random to the rate as for insert/rate/region
-(insert_rate_region.py, as LIGGGHTS). Placement and ranks: insertion.py. (LIGGGHTS draws each
-particle's depth from its own radius rather than the largest.)
+(insert_rate_region.py, as LIGGGHTS). Placement and ranks: insertion.py.
 
 Example (LIGGGHTS's chute tutorial)::
 
@@ -46,33 +49,35 @@ from .whole_number import WholeNumber
 from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
 
-# columns of the per-particle flight record: release time (0: free), insertion time, insertion
-# position (3), velocity and angular velocity to take at the face (3 + 3)
-RELEASE, INSERTED, START, VELOCITY, SPIN, FLIGHT_WIDTH = 0, 1, 2, 5, 8, 11
+# columns of the per-particle flight record: in flight (1) or free (0), release time, insertion
+# time, insertion position (3), velocity and angular velocity to take at the face (3 + 3)
+FLYING, RELEASE, INSERTED, START, VELOCITY, SPIN, FLIGHT_WIDTH = 0, 1, 2, 3, 6, 9, 12
 
 
 @njit(cache=True)
-def fly(record, time, x, v, omega, f, torque, v_normal):
-    """LIGGGHTS's release at the face: a particle in flight is where the insertion velocity's normal
-    part has carried it, moving at it, with no spin, force or torque; on reaching the face it takes
-    the velocity and spin it was inserted with, and is free from then on."""
+def fly(record, time, dt, x, v, omega, f, torque, v_normal):
+    """LIGGGHTS's flight to the face (its end_of_step): a particle in flight is where the insertion
+    velocity's normal part has carried it, moving at it, with no spin, force or torque; at its
+    release step it is put where the flight ends, takes the velocity and spin it was inserted with,
+    with no force or torque, and is free from then on."""
     for i in range(record.shape[0]):
-        release = record[i, RELEASE]
-        if release <= 0.0:
+        if record[i, FLYING] == 0.0:
             continue
-        if time < release:
-            flown = time - record[i, INSERTED]
-            for d in range(3):
-                x[i, d] = record[i, START + d] + v_normal[d] * flown
+        release = record[i, RELEASE]
+        flying = time < release - 0.5 * dt
+        flown = (time if flying else release) - record[i, INSERTED]
+        for d in range(3):
+            x[i, d] = record[i, START + d] + v_normal[d] * flown
+            f[i, d] = 0.0
+            torque[i, d] = 0.0
+            if flying:
                 v[i, d] = v_normal[d]
                 omega[i, d] = 0.0
-                f[i, d] = 0.0
-                torque[i, d] = 0.0
-        else:
-            for d in range(3):
+            else:
                 v[i, d] = record[i, VELOCITY + d]
                 omega[i, d] = record[i, SPIN + d]
-            record[i, RELEASE] = 0.0
+        if not flying:
+            record[i, FLYING] = 0.0
 
 
 class FixInsertStream(FixInsert):
@@ -113,6 +118,7 @@ class FixInsertStream(FixInsert):
         normals = self.face.face_normal
         if not (np.abs(normals @ normals[0]) > 1.0 - 1e-6).all():
             raise ScriptError(f"insertion_face {name} must be planar (LIGGGHTS)")
+        self.face_point = self.face.vertices[self.face.triangles[0, 0]]
         normal = normals[0] if normals[0] @ self.velocity_mean >= 0 else -normals[0]
         along = float(normal @ self.velocity_mean)
         if along < 1e-3:
@@ -123,6 +129,9 @@ class FixInsertStream(FixInsert):
         self.speed = along
         read_rate(self, args)
         self.wanted_so_far = 0
+        # with the overlap check a centre keeps its radius from the box's faces, without it it keeps
+        # inside the box (LIGGGHTS's tests against its subdomain)
+        self.border = 1.0 if self.overlap_check else 0.0
         self.flight_name = f"flight_{self.id}"
         sim.particles.request(self.flight_name, width=FLIGHT_WIDTH, ghost=False)
 
@@ -132,12 +141,12 @@ class FixInsertStream(FixInsert):
             self.every = int((self.extrude_length + 1e-13) / (sim.dt * self.speed))
             if self.every < 1:
                 raise ScriptError("insertion velocity too high or extrude_length too low (LIGGGHTS)")
-            if self.extrude_length < 3.0 * largest:
+            if self.overlap_check and self.extrude_length < 3.0 * largest:
                 raise ScriptError(f"extrude_length {self.extrude_length:g} is too small: at least 3 times the "
-                                  f"largest radius {largest:g} (LIGGGHTS)")
-        elif (self.duration or self.every) * sim.dt * self.speed < 3.0 * largest:
+                                  f"largest radius {largest:g} with overlapcheck yes (LIGGGHTS)")
+        elif (self.duration or self.every) * sim.dt * self.speed < 2.0 * largest:
             raise ScriptError(f"insert_every or vel is too small, or the particles too large: the extrusion "
-                              f"{(self.duration or self.every) * sim.dt * self.speed:g} is less than 3 times the "
+                              f"{(self.duration or self.every) * sim.dt * self.speed:g} is less than twice the "
                               f"largest radius {largest:g} (LIGGGHTS)")
         super().setup(sim)
 
@@ -166,6 +175,12 @@ class FixInsertStream(FixInsert):
         return both.min(axis=0), both.max(axis=0)
 
     def draw_points(self, rng, n):
+        return self.draw_candidates(rng, n)[0]
+
+    def draw_candidates(self, rng, n):
+        """A point of the face (triangles by area) pushed back by u L, and the shift by the sphere's
+        radius: back by r more with the overlap check, by r (1 - 2u) without (LIGGGHTS's depths
+        u L + r and u (L - 2r) + r)."""
         corners, area = self._corners()
         which = rng.choice(len(area), size=n, p=area / area.sum())
         u, w = rng.random(n), rng.random(n)
@@ -173,8 +188,10 @@ class FixInsertStream(FixInsert):
         u[flip], w[flip] = 1.0 - u[flip], 1.0 - w[flip]
         a, b, c = corners[which, 0], corners[which, 1], corners[which, 2]
         on_face = a + u[:, None] * (b - a) + w[:, None] * (c - a)
-        self.pool_depth = self.depth * rng.random(n) + self.distribution.max_radius
-        return on_face - self.pool_depth[:, None] * self.normal
+        back = rng.random(n)
+        points = on_face - (self.depth * back)[:, None] * self.normal
+        reach = np.ones(n) if self.overlap_check else 1.0 - 2.0 * back
+        return points, -reach[:, None] * self.normal
 
     def clearance(self, points, reach):
         return np.full(len(points), np.inf)
@@ -186,7 +203,11 @@ class FixInsertStream(FixInsert):
         if p.nlocal > before:       # rank 0, which added them in the order they were placed
             new = slice(before, p.nlocal)
             record = p.arrays[self.flight_name]
-            record[new, RELEASE] = sim.time + self.pool_depth[self.placed_rows] / self.speed
+            # released at the last step before the face: LIGGGHTS's whole steps of flight
+            depth = (self.face_point - p.x[new]) @ self.normal
+            steps = np.floor((depth + 1e-14) / (self.speed * sim.dt))
+            record[new, FLYING] = 1.0
+            record[new, RELEASE] = sim.time + steps * sim.dt
             record[new, INSERTED] = sim.time
             record[new, START:START + 3] = p.x[new]
             record[new, VELOCITY:VELOCITY + 3] = p.v[new]
@@ -197,4 +218,4 @@ class FixInsertStream(FixInsert):
     def end_of_step(self, sim):
         p = sim.particles
         n = p.nlocal
-        fly(p.arrays[self.flight_name][:n], sim.time, p.x, p.v, p.omega, p.f, p.torque, self.v_normal)
+        fly(p.arrays[self.flight_name][:n], sim.time, sim.dt, p.x, p.v, p.omega, p.f, p.torque, self.v_normal)

@@ -112,6 +112,9 @@ class FixInsert(Fix):
         self.start = args.start
         self.overlap_check = args.overlapcheck == "yes"
         self.all_in = args.all_in == "yes"
+        # a try fails where the centre lies less than border x its radius inside the box (LIGGGHTS's
+        # check_dist_from_subdomain_border; -inf: no check)
+        self.border = -np.inf
         self.velocity_style, self.velocity_mean, self.velocity_spread = "constant", np.zeros(3), np.zeros(3)
         if args.vel is not None:
             self.velocity_style = args.vel[0]
@@ -146,6 +149,12 @@ class FixInsert(Fix):
 
     def draw_points(self, rng, n):
         raise NotImplementedError
+
+    def draw_candidates(self, rng, n):
+        """Candidate centres and, per candidate, the shift a sphere's radius moves it by (the centre
+        is ``point + r shift``): ``draw_points`` unshifted, unless a style places by radius."""
+        points = self.draw_points(rng, n)
+        return points, np.zeros_like(points)
 
     def clearance(self, points, reach):
         raise NotImplementedError
@@ -228,11 +237,12 @@ class FixInsert(Fix):
             big = float(radius.max())
             cell = big + max(big, float(old_r.max()) if len(old_r) else 0.0)
             lo, hi = self.extent(sim)
-            pool, clearance = self._pool(rng, count, float(radius.min()), big)
+            pool, shift, clearance = self._pool(rng, count, float(radius.min()), big)
             lo_grid, width, nbins, periodic, length = grid(sim.box, lo, hi, cell)
             self.taken = np.zeros(count, dtype=np.int64)
-            place(pool, clearance, radius, old_x, old_r, lo_grid, width, nbins, periodic, length,
-                  self.tries(count), self.overlap_check, placed, done, self.taken)
+            box_lo, box_hi = np.array(sim.box.lo, dtype=np.float64), np.array(sim.box.hi, dtype=np.float64)
+            place(pool, shift, clearance, radius, old_x, old_r, lo_grid, width, nbins, periodic, length,
+                  self.tries(count), self.overlap_check, box_lo, box_hi, self.border, placed, done, self.taken)
         n = int(done.sum())
         self.placed_rows = self.taken[done] if count else np.zeros(0, dtype=np.int64)
         radius, density, types, which, placed = radius[done], density[done], types[done], which[done], placed[done]
@@ -272,7 +282,8 @@ class FixInsert(Fix):
         the pool is drawn until it holds enough points with room, or ALL_IN_DRAWS times its size."""
         size = min(self.tries(count), POOL_LIMIT)
         if not self.all_in:
-            return np.ascontiguousarray(self.draw_points(rng, size)), np.full(size, np.inf)
+            points, shift = self.draw_candidates(rng, size)
+            return np.ascontiguousarray(points), np.ascontiguousarray(shift), np.full(size, np.inf)
         points, rooms, kept = [], [], 0
         for _ in range(ALL_IN_DRAWS):
             batch = self.draw_points(rng, size)
@@ -283,7 +294,8 @@ class FixInsert(Fix):
             kept += int(fits.sum())
             if kept >= size:
                 break
-        return np.ascontiguousarray(np.concatenate(points)[:size]), np.concatenate(rooms)[:size]
+        points = np.ascontiguousarray(np.concatenate(points)[:size])
+        return points, np.zeros_like(points), np.concatenate(rooms)[:size]
 
     def _velocities(self, rng, n):
         mean, spread = self.velocity_mean, self.velocity_spread

@@ -1,9 +1,10 @@
 """Overlap-free placement of new spheres among present ones (the insertion fixes' overlap check).
 
 Candidate centres come in a pool, drawn uniformly over the insertion volume in the order of a
-random stream every rank shares; the spheres, largest first, take the first candidates that keep
-them clear of every present sphere and of the spheres placed before them (touching is allowed:
-distance >= r_i + r_j), the spheres sharing ``tries`` candidates. Spheres are binned on a
+random stream every rank shares, each with a shift a sphere's radius moves it by (insert/stream's);
+the spheres, largest first, take the first candidates that keep them the required share of their
+radius inside the box and clear of every present sphere and of the spheres placed before them
+(touching is allowed: distance >= r_i + r_j), the spheres sharing ``tries`` candidates. Spheres are binned on a
 grid of cells at least as wide as the largest sum of two radii, so each test looks at 27 cells;
 on a periodic axis the grid spans the box and wraps, and distances are minimum-image.
 """
@@ -70,14 +71,26 @@ def _clear(x, r, xs, rs, head, link, lo, width, nbins, periodic, length):
 
 
 @njit(cache=True)
-def place(pool, clearance, radius, old_x, old_r, lo, width, nbins, periodic, length, tries, check_overlap,
-          placed, done, taken):
-    """Place the spheres ``radius`` (largest first) at candidates of ``pool`` in order: a candidate
-    is taken when ``clearance`` (its distance to the insertion volume's surface, for all_in) is at
-    least the radius (a candidate too near the surface for the sphere is passed over, not tried) and, with ``check_overlap``, the sphere there overlaps no present (``old_x,
-    old_r``) or earlier placed sphere. ``tries`` candidates in all (the insertion's budget,
-    FixInsert.tries): a sphere hard to place may use what the easy ones left. Writes ``placed``, ``done``
-    and ``taken`` (the pool row each sphere took); returns how many were placed."""
+def _room_in_box(x, box_lo, box_hi):
+    """The distance from x to the nearest face of the box (negative outside)."""
+    room = np.inf
+    for d in range(3):
+        room = min(room, x[d] - box_lo[d], box_hi[d] - x[d])
+    return room
+
+
+@njit(cache=True)
+def place(pool, shift, clearance, radius, old_x, old_r, lo, width, nbins, periodic, length, tries, check_overlap,
+          box_lo, box_hi, border, placed, done, taken):
+    """Place the spheres ``radius`` (largest first) at candidates of ``pool`` in order, a sphere of
+    radius r at row j going to ``pool[j] + r shift[j]`` (insert/stream's depth counts from the
+    sphere's own radius). A candidate is passed over, not tried, when ``clearance`` (its distance
+    to the insertion volume's surface, for all_in) is less than r; a try fails when the centre lies
+    less than ``border`` r inside the box (``box_lo``, ``box_hi``; LIGGGHTS's check against its
+    subdomain's faces; -inf: no check) or, with ``check_overlap``, when the sphere overlaps a
+    present (``old_x, old_r``) or earlier placed sphere. ``tries`` tries in all (the insertion's
+    budget, FixInsert.tries): a sphere hard to place may use what the easy ones left. Writes
+    ``placed``, ``done`` and ``taken`` (the pool row each sphere took); returns how many were placed."""
     n_old, n_new = len(old_r), len(radius)
     head = np.full(nbins[0] * nbins[1] * nbins[2], -1, dtype=np.int64)
     link = np.empty(n_old + n_new, dtype=np.int64)
@@ -94,14 +107,18 @@ def place(pool, clearance, radius, old_x, old_r, lo, width, nbins, periodic, len
     tried = 0
     for k in range(n_new):
         done[k] = False
+    candidate = np.empty(3)
     for k in range(n_new):
         while used < len(pool) and tried < tries:
-            candidate = pool[used]
+            for d in range(3):
+                candidate[d] = pool[used, d] + radius[k] * shift[used, d]
             room = clearance[used]
             used += 1
             if room < radius[k]:
                 continue            # no try: LIGGGHTS draws again until the sphere fits inside
             tried += 1
+            if _room_in_box(candidate, box_lo, box_hi) < border * radius[k]:
+                continue
             if check_overlap and not _clear(candidate, radius[k], xs, rs, head, link, lo, width, nbins,
                                             periodic, length):
                 continue

@@ -70,3 +70,9 @@ class InRegion:
 
     def clearance(self, points, reach):
         return surface_clearance(self.region, points, reach)
+
+    def read_border(self, args):
+        """``check_dist_from_subdomain_border yes`` (default): a centre less than its radius from a
+        face of the box is a failed try, as LIGGGHTS's check against its subdomain's faces (pdps's
+        placement is the same on any rank count, so the faces are the box's, periodic or not)."""
+        self.border = 1.0 if args.check_dist_from_subdomain_border == "yes" else -np.inf

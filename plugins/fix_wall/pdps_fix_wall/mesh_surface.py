@@ -190,6 +190,11 @@ class FixMeshSurface(Fix):
         """What a wall adds its forces on this mesh to: nothing (mesh/surface/stress sums them)."""
         return None
 
+    def box_extent(self, sim):
+        """A shrink-wrapped box encloses the mesh's nodes as they are now (LIGGGHTS's FixMesh)."""
+        corners = self.vertices[self.triangles].reshape(-1, 3)
+        return corners.min(axis=0), corners.max(axis=0)
+
     def face_areas(self):
         corners = self.vertices[self.triangles]
         return 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0],
