@@ -306,3 +306,51 @@ def test_fix_and_analyze_values_are_read_as_f_id(make_sim):
         sim.command("thermo_style custom step f_n[5]\nrun 1")
     with pytest.raises(ScriptError, match="thermo_style: fix nope is not defined"):
         sim.command("thermo_style custom step f_nope\nrun 1")
+
+
+LIGGGHTS_LOSS = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box 1 reg
+neighbor 0.002 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 0.00001
+create_atoms 1 single 0.0 0.0 0.0 units box
+create_atoms 1 single 0.02 0.0 0.0 units box
+create_atoms 1 single -0.02 0.0 0.0 units box
+set group all diameter 0.01 density 2500
+velocity all set 0 0 0
+set atom 2 vx 10.0
+fix integr all nve/sphere
+thermo_style custom step atoms
+thermo 100
+"""
+
+
+def test_liggghts_drops_a_particle_leaving_a_fixed_boundary_and_says_so_once(pdps_cli):
+    """LIGGGHTS 3.8.0 ignores lost particles by default (thermo_modify lost ignore): this scene, run
+    there, prints Atoms 3 to step 200 and 2 from step 300 on, with no message; pdps drops it too,
+    and warns once."""
+    done = pdps_cli(LIGGGHTS_LOSS + "run 1000\n")
+    assert done.returncode == 0
+    rows = {int(w[0]): int(w[1]) for w in (line.split() for line in done.stdout.splitlines())
+            if len(w) == 2 and w[0].isdigit()}
+    assert [rows[s] for s in range(0, 1001, 100)] == [3, 3, 3] + [2] * 8
+    warned = [line for line in done.stdout.splitlines() + done.stderr.splitlines() if "lost through fixed" in line]
+    assert len(warned) == 1 and "as LIGGGHTS does by default (thermo_modify lost ignore)" in warned[0]
+
+
+def test_liggghts_lost_error_stops_the_run_as_lammps_does(pdps_cli):
+    done = pdps_cli(LIGGGHTS_LOSS + "thermo_modify lost error\nrun 1000\n")
+    assert done.returncode == 1
+    assert "particle 2 lost through the fixed x boundary at step" in done.stderr

@@ -200,7 +200,8 @@ class Thermo:
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.flush_each = False
         self.temp_id = self.press_id = None
-        self.lost = "error"             # thermo_modify lost: particles leaving fixed faces
+        self.lost = None                # thermo_modify lost (None: the dialect's default): particles leaving fixed faces
+        self.told_lost = False          # the dialect's ignore has said once that particles went
         self.counted = None             # the particle count at the last line (lost warn)
         self.last_clock = None          # (wall time, step, time) of the last line, for tpcpu/spcpu
 
@@ -385,11 +386,21 @@ class Thermo:
             cells.append(f"{name:>10}" if word in INTEGER else f"{name:>14}")
         return " ".join(cells)
 
+    def lost_policy(self):
+        """error, warn or ignore: thermo_modify lost, or the dialect's default."""
+        return self.lost or self.sim.dialect.lost_default
+
     def values(self):
-        if self.lost == "warn":
+        if self.lost == "warn" or (self.lost is None and not self.told_lost and self.lost_policy() == "ignore"):
             count = obs.count(self.sim)
             if self.counted is not None and count < self.counted:
-                self.sim.warn(f"Lost atoms: original {self.counted} current {count}")
+                if self.lost == "warn":
+                    self.sim.warn(f"Lost atoms: original {self.counted} current {count}")
+                else:
+                    self.told_lost = True
+                    self.sim.warn(f"{self.counted - count} particle(s) lost through fixed boundaries by step "
+                                  f"{self.sim.step} and dropped, as LIGGGHTS does by default (thermo_modify "
+                                  "lost ignore); thermo_modify lost error stops the run instead")
             self.counted = count
         out = self._values()
         self.last_clock = (time.perf_counter(), self.sim.step, self.sim.time)

@@ -88,7 +88,7 @@ class Verlet:
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
         sim.neighbor.exclusions(sim.ntypes, sim.groups)
-        sim.box.lost = sim.output.thermo.lost
+        sim.box.lost = sim.output.thermo.lost_policy()
         sim.neighbor.overrun = 0.0
         sim.styles.pair_list = None
         if sim.pair is not None:

@@ -54,6 +54,9 @@ class Dialect:
     # with; reset yes restores the radii of the fix's creation; the mass keyword) or "liggghts"
     # (equal- or atom-style; scale multiplies the current diameter; reset leaves particles alone)
     adapt_rule: str = "lammps"
+    # thermo_modify lost when the script does not say: LAMMPS's error; LIGGGHTS 3.8.0 ignores lost
+    # particles by default (its thermo.cpp), which pdps follows, saying so once
+    lost_default: str = "error"
 
 
 DIALECTS = {
@@ -64,7 +67,7 @@ DIALECTS = {
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
-                        adapt_rule="liggghts"),
+                        adapt_rule="liggghts", lost_default="ignore"),
 }
 
 # commands one language has and the other has not: the first one met names the dialect
