@@ -114,7 +114,7 @@ CONTRACT = {
         "lo": "lower corner (3,)", "hi": "upper corner (3,)", "length": "hi - lo (3,)",
         "volume": "volume (area in 2-d)", "periodic": "(bool, bool, bool)", "dimension": "2 or 3",
         "inside": "inside(x): which positions lie in the box",
-        "bounds_label": "the boundary label of a dump header ('pp pp ff')",
+        "bounds_label": "the boundary label of a dump header ('pp pp ff'; given sim.system.periodicity, 'pp ff mm')",
     },
     "Comm": {
         "rank": "this rank", "nprocs": "number of ranks", "is_root": "rank 0",

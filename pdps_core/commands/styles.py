@@ -183,7 +183,8 @@ DUMP_MODIFY = {"every": 1, "first": 1, "append": 1, "sort": 1, "format": 2, "flu
 @command("dump_modify")
 def dump_modify(sim, args):
     """LAMMPS's ``dump_modify ID keyword value ...``: every and first for any dump; sort, format,
-    append (and flush, accepted) for the text dumps."""
+    append (and flush, accepted) for the text dumps. In the LIGGGHTS dialect ``format "F1 F2 ..."``
+    is LIGGGHTS's one string for the whole line (LAMMPS's ``format line``; LAMMPS refuses it now)."""
     usage = "dump_modify ID [every N] [first yes|no] [sort id|off|N|-N] [format line|int|float|N FMT] [append yes|no]"
     if len(args) < 3:
         raise ScriptError(f"expected a dump ID and keywords; usage: {usage}")
@@ -203,7 +204,12 @@ def dump_modify(sim, args):
                               "append, flush)")
         if keyword == "format" and k + 1 < len(words) and words[k + 1] == "none":
             arity = 1
-        values = words[k + 1:k + 1 + arity]
+        one_string = (keyword == "format" and sim.dialect.name == "liggghts" and k + 1 < len(words)
+                      and words[k + 1] not in ("line", "int", "float", "none") and not words[k + 1].isdigit())
+        if one_string:
+            # LIGGGHTS's (LAMMPS's before 2016) format STRING: one C format per column, the whole line
+            arity = 1
+        values = ["line", words[k + 1]] if one_string else words[k + 1:k + 1 + arity]
         if len(values) < arity:
             raise ScriptError(f"dump_modify {keyword} needs {arity} value(s); usage: {usage}")
         if keyword == "flush":

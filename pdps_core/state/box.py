@@ -72,8 +72,12 @@ class Box:
         lengths = self.length
         return float(np.prod(lengths[: self.dimension]))
 
-    def bounds_label(self):
-        return " ".join("pp" if p else "ff" for p in self.periodic)
+    def bounds_label(self, periodicity=None):
+        """A dump header's boundary label: "pp" or the boundary command's two letters per axis
+        (``periodicity``, its words: "ff", "mm", "fs", ...), or "ff" for every non-periodic axis."""
+        if periodicity is None:
+            return " ".join("pp" if p else "ff" for p in self.periodic)
+        return " ".join("pp" if p else word[0] + word[-1] for p, word in zip(self.periodic, periodicity))
 
     def wrap(self, x, image, tag, step, lost="error"):
         """Bring owned particles back into the box. One that has left through a fixed face raises

@@ -283,3 +283,40 @@ def test_a_bin_name_is_refused_at_the_dump_line(pdps_cli):
     assert result.stderr.strip().splitlines()[-1] == (
         "ERROR: in.test:5: dump: dump file dump.bin: LAMMPS's binary dump format (.bin) is not written by pdps; "
         "name the file without .bin (text), or with .gz (compressed text)")
+
+
+LJ_BOX = """units lj
+boundary p s fm
+lattice fcc 0.8442
+region box block 0 2 0 2 0 2
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+dump d all custom 1 d.txt id x y z
+"""
+
+
+def test_the_header_names_each_boundary_as_lammps(pdps_cli, tmp_path):
+    """LAMMPS (22 Jul 2025) writes "ITEM: BOX BOUNDS pp ss fm" and last row "40 2.519 3.359 2.519"
+    for this script."""
+    done = pdps_cli(LJ_BOX + 'dump_modify d format line "%d %.3f %.3f %.3f"\nrun 0\n')
+    assert done.returncode == 0, done.stderr
+    lines = (tmp_path / "d.txt").read_text().splitlines()
+    assert lines[4] == "ITEM: BOX BOUNDS pp ss fm" and lines[-1] == "40 2.519 3.359 2.519"
+
+
+def test_liggghts_takes_one_format_string_for_the_line_and_lammps_refuses_it(pdps_cli, tmp_path):
+    """LIGGGHTS 3.8.0's dump_modify format STRING (LAMMPS's before 2016); LAMMPS now: "Illegal
+    dump_modify format command: missing argument(s)"."""
+    liggghts = ("atom_style granular\n" + LJ_BOX.replace("units lj", "units si").replace("mass 1 1.0\n", "")
+                .replace("pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0 2.5\n", "")
+                + 'dump_modify d format "%d %.3f %.3f %.3f"\nrun 0\n')
+    done = pdps_cli(liggghts)
+    assert done.returncode == 0, done.stderr
+    rows = (tmp_path / "d.txt").read_text().splitlines()[9:]
+    assert len(rows) == 40 and all(re.fullmatch(r"\d+ -?\d+\.\d{3} -?\d+\.\d{3} -?\d+\.\d{3}", row) for row in rows)
+    done = pdps_cli(LJ_BOX + 'dump_modify d format "%d %.3f %.3f %.3f"\nrun 0\n')
+    assert done.returncode == 1
+    assert "dump_modify format needs 2 value(s)" in done.stderr
