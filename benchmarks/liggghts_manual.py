@@ -10,8 +10,13 @@ once. For each, pdps's answer without running anything:
   sub-model of pair gran), or ``command``: a command of that name;
 - ``refused``: a line naming it stops with a reason (pdps_core.script.unsupported);
 - ``unknown``: neither; a script reaching it stops at "unknown command" or "unknown fix style".
-What "works fully" needs beyond being known (its options, its numbers against LIGGGHTS's) is the
-next column, filled in docs/liggghts.md item by item; this tool gives the first.
+Then, for a known style whose arguments are declared (its ``Args``), the manual's keywords it reads:
+the ``keyword = {a} or {b} ...`` lists of the item's Syntax section, each looked for among the Args' keyword
+fields, their aliases and spellings (``keywords: all 17`` or ``keywords: 12 of 17, not a, b``); a
+style that reads its words by hand says ``keywords: not declared``. And what its numbers were
+checked against: CHECKED, kept by hand, names the tests that compare the item with LIGGGHTS's
+numbers recorded on this machine. An item works fully when it is known, reads every keyword of its
+page, and has such a check.
 
 The manual is LIGGGHTS's (GPL): it is read where it is unpacked, never copied; the table holds names.
 """
@@ -42,6 +47,23 @@ HEADING = re.compile(r"^(?P<words>[a-z_][a-z0-9_/ ]*?)\s+(?P<end>command|model)\
 COUPLING = ("couple/cfd", "continuum/weighted")
 
 
+# the manual's keyword lists: "keyword = {scale} or {reset} :l", "general_keywords = {verbose} or ..."
+KEYWORD_LIST = re.compile(r"^\s*[a-z_]*keywords?\s*=\s*(?P<list>.*)")
+LISTED = re.compile(r"\{(?P<word>[A-Za-z_][\w/]*)[^}]*\}")
+# items whose numbers tests compare with LIGGGHTS 3.8.0's, recorded on this machine
+CHECKED = {
+    ("fix", "insert/stream"): "plugins/fix_insert/tests/test_liggghts_placement.py; corpus insert_stream",
+    ("fix", "insert/pack"): "plugins/fix_insert/tests/test_liggghts_placement.py, test_insertion.py; corpus",
+    ("fix", "mesh/surface"): "plugins/fix_wall/tests/test_mesh_box_extent.py; plugins/pair_gran/tests "
+                             "(liggghts_submodels.json, mesh cases)",
+    ("fix", "wall/gran"): "plugins/pair_gran/tests (liggghts_submodels.json, wall and mesh cases)",
+    ("pair_style", "gran"): "plugins/pair_gran/tests (liggghts_submodels.json, pair cases; cohesive cluster)",
+    ("fix", "heat/gran"): "plugins/fix_heat/tests (liggghts_conduction.json)",
+    ("fix", "particledistribution/discrete"): "plugins/fix_insert/tests/test_distributions.py",
+    ("thermo_modify", None): "tests/test_loop.py (lost); corpus (every tutorial's thermo)",
+}
+
+
 def pages(doc):
     for path in sorted(doc.glob("*.txt")) + sorted(doc.glob("*.txt.gz")):
         opener = gzip.open if path.suffix == ".gz" else open
@@ -49,24 +71,93 @@ def pages(doc):
             yield text.read()
 
 
-def items(texts):
-    """(family, name) of each heading, sorted, once each: ("fix", "adapt"), ("run", None),
-    ("gran", "model hertz")."""
-    found = set()
+def sections(texts):
+    """{(family, name): the page's text from its heading to the next}: ("fix", "adapt"),
+    ("run", None), ("gran", "model hertz"); the first page of an item holds."""
+    found = {}
     for text in texts:
-        for line in text.splitlines():
+        lines = text.splitlines()
+        starts = []
+        for k, line in enumerate(lines):
             match = HEADING.match(line.strip())
             if not match:
                 continue
             words = match.group("words").split()
             if match.group("end") == "model":
-                if words[0] == "gran" and len(words) == 3:
-                    found.add(("gran", " ".join(words[1:])))
-            elif len(words) == 1:
-                found.add((words[0], None))
-            elif len(words) == 2:
-                found.add((words[0], words[1]))
-    return sorted(found, key=lambda item: (item[0], item[1] or ""))
+                item = ("gran", " ".join(words[1:])) if words[0] == "gran" and len(words) == 3 else None
+            else:
+                item = {1: (words[0], None), 2: (words[0], words[-1])}.get(len(words))
+            if item is not None:
+                starts.append((k, item))
+        for (k, item), (end, _) in zip(starts, starts[1:] + [(len(lines), None)]):
+            found.setdefault(item, "\n".join(lines[k:end]))
+    return found
+
+
+def items(texts):
+    """(family, name) of each heading, sorted, once each."""
+    return sorted(sections(texts), key=lambda item: (item[0], item[1] or ""))
+
+
+def manual_keywords(section):
+    """The keywords the Syntax part of an item's page defines, in order, once each."""
+    syntax = section.split("[Examples:]")[0].split("[Description:]")[0]
+    words = []
+    for line in syntax.splitlines():
+        match = KEYWORD_LIST.match(line)
+        if match:
+            words += [w for w in LISTED.findall(match.group("list")) if w not in words]
+    return words
+
+
+# the manual's misspellings of a keyword LIGGGHTS's code reads (fix_insert.cpp reads maxattempt)
+MANUAL_SPELLING = {"maxattampt": "maxattempt"}
+
+
+def literal_words(annotation):
+    """Every string of a Literal anywhere in an annotation (choices of words a field takes)."""
+    import typing
+    if typing.get_origin(annotation) is typing.Literal:
+        return {a for a in typing.get_args(annotation) if isinstance(a, str)}
+    words = set()
+    for inner in typing.get_args(annotation):
+        words |= literal_words(inner)
+    return words
+
+
+def read_keywords(cls):
+    """The keywords a style's Args read (field names, aliases, entry spellings and the first words
+    of its keyword tuples), or None where it declares none."""
+    from pdps_core.styles import _entry_spellings, _is_keyword
+    args = getattr(cls, "Args", None)
+    if args is None or not getattr(args, "model_fields", None):
+        return None
+    words = set()
+    for field, info in args.model_fields.items():
+        words.add(field)
+        if info.alias:
+            words.add(info.alias)
+        if _is_keyword(info):
+            words |= set(_entry_spellings(info))
+        words |= literal_words(info.annotation)
+    return words
+
+
+def keyword_answer(kind, name, section):
+    wanted = manual_keywords(section)
+    if not wanted:
+        return ""
+    try:
+        cls = registry.lookup(kind, name)
+    except Exception:
+        return ""
+    read = read_keywords(cls)
+    if read is None:
+        return "keywords: not declared"
+    missing = [word for word in wanted if MANUAL_SPELLING.get(word, word) not in read]
+    if not missing:
+        return f"keywords: all {len(wanted)}"
+    return f"keywords: {len(wanted) - len(missing)} of {len(wanted)}, not {', '.join(missing)}"
 
 
 def known_styles(kind):
@@ -101,15 +192,29 @@ def answer(family, name, styles):
 
 def table(texts):
     styles = {kind: known_styles(kind) for kind in KINDS.values()}
-    rows = [(family, name, *answer(family, name, styles)) for family, name in items(texts)]
+    found = sections(texts)
+    rows = []
+    for family, name in sorted(found, key=lambda item: (item[0], item[1] or "")):
+        status, detail = answer(family, name, styles)
+        options = ""
+        if status == "style" and family in KINDS:
+            options = keyword_answer(KINDS[family], name, found[(family, name)])
+        checked = CHECKED.get((family, name), "")
+        full = (status in ("style", "command") and checked and not options.startswith("keywords: not")
+                and (not options or options.startswith("keywords: all")))
+        rows.append((family, name, status, detail, options, checked, full))
     counted = [r for r in rows if r[2] != "coupling"]
     known = sum(r[2] in ("style", "command") for r in counted)
     refused = sum(r[2] == "refused" for r in counted)
-    lines = ["| item | pdps |", "|---|---|"]
-    for family, name, status, detail in rows:
-        lines.append(f"| `{family}{' ' + name if name else ''}` | {status}{': ' + detail if detail else ''} |")
+    lines = ["| item | pdps | the manual's keywords | checked against LIGGGHTS | works fully |", "|---|---|---|---|---|"]
+    for family, name, status, detail, options, checked, full in rows:
+        lines.append(f"| `{family}{' ' + name if name else ''}` | {status}{': ' + detail if detail else ''} | "
+                     f"{options} | {checked} | {'yes' if full else ''} |")
+    fully = sum(bool(r[6]) for r in counted)
+    complete = sum(r[4].startswith("keywords: all") for r in counted)
     lines += ["", f"{len(counted)} items (CFD coupling left out): {known} known to pdps, {refused} refused with "
-                  f"a reason, {len(counted) - known - refused} unknown."]
+                  f"a reason, {len(counted) - known - refused} unknown; {complete} styles read every keyword "
+                  f"of their page; {fully} work fully (known, every keyword, numbers checked against LIGGGHTS's)."]
     return "\n".join(lines)
 
 

@@ -21,7 +21,13 @@ Values (any number, in the units of what they read):
   element of the vector.
 - ``v_NAME``: a variable, read as a number.
 
-Keywords: ``file NAME`` writes each average to NAME (created when the command is read, written
+Keywords (LAMMPS's): ``ave one|running|window M``: each output is this window's average (one, the
+default), the mean of every window's average since the command (running), or of the last M
+(window M); ``start S``: no window ends before step S; ``off M``: column M (1-based, after c_ID[*]
+is spread into its elements) is not averaged: each output holds its last sample; ``overwrite``
+(with ave running): the file keeps the header and the latest output only; ``title1 S``,
+``title2 S``, ``title3 S`` (mode vector): the file's header lines instead of the default ones.
+``file NAME`` writes each average to NAME (created when the command is read, written
 when the first average is complete, each block appended and closed at once, so nothing written is
 lost); ``mode scalar|vector`` as LAMMPS: in ``mode vector`` each value is a column (``c_ID``: the
 compute's vector, or every column of its array; ``c_ID[j]``: column j of its array; ``c_ID[*]``:
@@ -51,7 +57,8 @@ its length from the start).
 Syntax::
 
     analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]
-    fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]
+        [ave one|running|window M] [start S] [off M] [overwrite] [title1 S] [title2 S] [title3 S]
+    fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [same keywords]
 
 GROUP is not used (LAMMPS). Examples::
 
@@ -64,6 +71,7 @@ import re
 from typing import Literal
 
 import numpy as np
+from pydantic import model_validator
 
 from pdps_core.api import Analyze, Compute, Fix, ScriptError, keyword, param
 
@@ -100,6 +108,25 @@ class AveTimeArgs(ScheduleArgs):
     values: list[str] = param(min_length=1, names=VALUE_WORDS)
     file: str | None = keyword(None, names="file name")
     mode: Literal["scalar", "vector"] = keyword("scalar")
+    ave: tuple[Literal["one", "running"]] | tuple[Literal["window"], int] = keyword(("one",), unit="dimensionless")
+    start: int = keyword(0, ge=0, unit="timesteps")
+    off_columns: list[tuple[Literal["off"], int]] = keyword(default_factory=list, spelled_by_entries=True,
+                                                            unit="1")
+    overwrite: tuple[()] | None = keyword(None)
+    title1: str | None = keyword(None, names="file line")
+    title2: str | None = keyword(None, names="file line")
+    title3: str | None = keyword(None, names="file line")
+
+    @model_validator(mode="after")
+    def _combination(self):
+        if self.ave[0] == "window" and self.ave[1] < 1:
+            raise ValueError(f"ave window M needs M >= 1 (got {self.ave[1]})")
+        if self.overwrite is not None and self.ave[0] != "running":
+            raise ValueError("overwrite needs ave running (LAMMPS)")
+        for _, column in self.off_columns:
+            if column < 1:
+                raise ValueError(f"off M needs a column M >= 1 (got {column})")
+        return self
 
 
 class AveTime:
@@ -116,9 +143,19 @@ class AveTime:
             block = next(v.word for v in self.values if v.many_rows)
             raise ScriptError(f"{block} is averaged as a block of rows and {single} as a single "
                               f"number: average them in two {self.kind} commands")
-        self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
+        single = all(not v.many_rows and not v.indexed_names for v in self.values)
+        if args.off_columns and single and max(c for _, c in args.off_columns) > len(self.values):
+            raise ScriptError(f"off {max(c for _, c in args.off_columns)}: there are {len(self.values)} values")
+        self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step, args.start)
+        self.combine = args.ave[0]                      # one, running or window
+        self.window = args.ave[1] if self.combine == "window" else None
+        self.off = sorted({column - 1 for _, column in args.off_columns})
+        self.overwrite = args.overwrite is not None
+        self.titles = (args.title1, args.title2, args.title3)
         self.total = None           # sum of this window's samples
-        self.average = None         # the last complete average
+        self.windows = []           # the window averages the combination holds (running: their sum)
+        self.combined = 0           # how many window averages that sum holds (LAMMPS's norm)
+        self.average = None         # the last output: the combination of window averages
         self.columns = None         # column names, known from the first sample
         self.header_written = False
         self.root = sim.comm.rank == 0      # every rank averages, one writes
@@ -241,9 +278,39 @@ class AveTime:
             raise ScriptError(f"{self.kind} {self.id} ({self.name}): the values changed shape from "
                               f"{self.total.shape} to {sample.shape} within an average at step {step}")
         self.total += sample
+        if self.off:
+            self._check_off(sample)
+            self.total[:, self.off] = sample[:, self.off]       # off: the last sample, not averaged
         if self.schedule.advance(step):
-            self.average = self.total / self.schedule.nrepeat
+            mean = self.total / self.schedule.nrepeat
+            if self.off:
+                mean[:, self.off] = self.total[:, self.off]
+            self.average = self._combined(mean)
             self._write(step)
+
+    def _check_off(self, sample):
+        if self.off[-1] >= sample.shape[1]:
+            raise ScriptError(f"{self.kind} {self.id} ({self.name}): off {self.off[-1] + 1} is beyond its "
+                              f"{sample.shape[1]} column(s)")
+
+    def _combined(self, mean):
+        """The output from this window's average: itself (ave one), the mean of every window so far
+        (running) or of the last M (window M); off columns keep this window's value (LAMMPS)."""
+        if self.combine == "one":
+            return mean
+        if self.windows and self.windows[0].shape != mean.shape:
+            raise ScriptError(f"{self.kind} {self.id} ({self.name}): the values changed shape from "
+                              f"{self.windows[0].shape} to {mean.shape} between averages (ave {self.combine})")
+        if self.combine == "running":
+            self.windows = [mean.copy()] if not self.windows else [self.windows[0] + mean]
+            self.combined += 1
+            out = self.windows[0] / self.combined
+        else:
+            self.windows = (self.windows + [mean.copy()])[-self.window:]
+            out = sum(self.windows) / len(self.windows)
+        if self.off:
+            out[:, self.off] = mean[:, self.off]
+        return out
 
     def _sample(self, sim):
         blocks = [value.read(sim) for value in self.values]
@@ -259,13 +326,15 @@ class AveTime:
         if self.path is None or not self.root:
             return
         lines = []
-        if not self.header_written:
+        if not self.header_written or self.overwrite:
             names = self.columns
-            lines.append(f"# Time-averaged data for {self.kind} {self.id}")
+            title1, title2, title3 = self.titles
+            lines.append(title1 if title1 is not None else f"# Time-averaged data for {self.kind} {self.id}")
             if self.many_rows:
-                lines += ["# TimeStep Number-of-rows", "# Row " + " ".join(names)]
+                lines += [title2 if title2 is not None else "# TimeStep Number-of-rows",
+                          title3 if title3 is not None else "# Row " + " ".join(names)]
             else:
-                lines.append("# TimeStep " + " ".join(names))
+                lines.append(title2 if title2 is not None else "# TimeStep " + " ".join(names))
             self.header_written = True
         if self.many_rows:
             lines.append(f"{step} {self.average.shape[0]}")
@@ -273,7 +342,8 @@ class AveTime:
                       for i, row in enumerate(self.average.tolist())]
         else:
             lines.append(f"{step}" + "".join(" %g" % v for v in self.average[0].tolist()))
-        with open(self.path, "a") as handle:
+        # overwrite: the file holds the header and the latest output only (LAMMPS's)
+        with open(self.path, "w" if self.overwrite else "a") as handle:
             handle.write("\n".join(lines) + "\n")
 
     # ---- the averages as output -------------------------------------------------------------------
@@ -303,9 +373,11 @@ class AveTime:
 
 class AnalyzeAveTime(AveTime, Analyze):
     name = "ave/time"
-    usage = "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"
+    usage = ("analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector] "
+             "[ave one|running|window M] [start S] [off M] [overwrite] [title1|title2|title3 S]")
 
 
 class FixAveTime(AveTime, Fix):
     name = "ave/time"
-    usage = "fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"
+    usage = ("fix ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector] "
+             "[ave one|running|window M] [start S] [off M] [overwrite] [title1|title2|title3 S]")

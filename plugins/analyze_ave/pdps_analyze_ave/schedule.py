@@ -33,14 +33,18 @@ class ScheduleArgs(StyleArgs):
 class Schedule:
     """The next step to sample (``due``) and where in its window of NREPEAT samples it falls."""
 
-    def __init__(self, nevery, nrepeat, nfreq, step):
+    def __init__(self, nevery, nrepeat, nfreq, step, start=0):
         self.nevery, self.nrepeat, self.nfreq = nevery, nrepeat, nfreq
+        self.start = start              # no window ends before this step (ave/time's start)
         self.irepeat = 0
         self.due = self.first_due(step)
 
     def first_due(self, step):
-        """The first sample at or after ``step`` that starts a window (LAMMPS's nextvalid)."""
+        """The first sample at or after ``step`` that starts a window (LAMMPS's nextvalid), the
+        window ending on a multiple of NFREQ no earlier than ``start``."""
         due = (step // self.nfreq) * self.nfreq + self.nfreq
+        while due < self.start:
+            due += self.nfreq
         if due - self.nfreq == step and self.nrepeat == 1:
             return step
         due -= (self.nrepeat - 1) * self.nevery

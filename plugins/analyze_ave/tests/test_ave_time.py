@@ -196,7 +196,8 @@ def test_fix_ave_time_prints_what_lammps_prints():
     ("fix 9 all ave/time 2 6 10 v_s", "fix: nrepeat * nevery must not exceed nfreq (got 6 * 2 = 12 > 10)"),
     ("analyze 1 all ave/time 1 1 10 file x.txt",
      "analyze: missing argument values; usage: "
-     "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector]"),
+     "analyze ID GROUP ave/time NEVERY NREPEAT NFREQ value... [file NAME] [mode scalar|vector] "
+     "[ave one|running|window M] [start S] [off M] [overwrite] [title1|title2|title3 S]"),
     ("analyze 1 all ave/time 1 1 10 c_nope", "analyze: compute nope is not defined (value c_nope)"),
     ("analyze 1 all ave/time 1 1 10 v_nope", "analyze: variable nope is not defined (value v_nope)"),
     ("analyze 1 all ave/time 1 1 10 temp", "analyze: value must be c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME (got temp)"),
@@ -225,3 +226,49 @@ def test_fix_values_are_averaged_as_lammps_allows():
     # f_a: the mean step of 1..5 (3) and of 6..10 (8); f_b averages them at steps 5 and 10
     assert sim.fix_value("a", ()) == 8.0
     assert sim.fix_value("b", (1,)) == sim.fix_value("b", (2,)) == 5.5
+
+
+# ave running with off, ave window M with start, overwrite with titles, on the scene above. LAMMPS
+# 22 Jul 2025, recorded on this machine: step, temp, press, f_run[1], f_run[2], f_win; the file holds
+# the two titles and the last running average only.
+AVE_KEYWORDS_SCRIPT = AVE_TIME_SCRIPT.split("fix avg")[0] + """variable p equal press
+fix run all ave/time 2 3 10 v_t v_p ave running off 2
+fix win all ave/time 2 3 10 v_t ave window 2 start 30
+fix ovr all ave/time 1 1 10 v_t ave running overwrite file ovr.txt title1 "# mine" title2 "# step T"
+thermo 10
+thermo_style custom step temp press f_run[1] f_run[2] f_win
+thermo_modify format float %.15g
+run 60"""
+AVE_KEYWORDS_LAMMPS = [
+    [0, 1.5, -4.98074227008559, 0, 0, 0],
+    [10, 1.17565905594515, -2.45684768334709, 1.29652339732162, -2.45684768334709, 0],
+    [20, 0.66404039212863, 1.18404584704705, 0.991423401344348, 1.18404584704705, 0],
+    [30, 0.770483075003006, 0.70681065976391, 0.917893398663652, 0.70681065976391, 0.770833393302261],
+    [40, 0.726906012675251, 0.881249905334628, 0.86933053588651, 0.881249905334628, 0.747237670428671],
+    [50, 0.738589600043814, 0.746711945145139, 0.843755749740652, 0.746711945145139, 0.732549276356151],
+    [60, 0.731035222693949, 0.721069171616776, 0.822551416674925, 0.721069171616776, 0.728993178251756]]
+
+
+def test_ave_running_window_start_off_and_overwrite_as_lammps(tmp_path, monkeypatch):
+    from pdps_core.api import Simulation
+    from pdps_core.testing import thermo_rows
+    monkeypatch.chdir(tmp_path)
+    screen = io.StringIO()
+    sim = Simulation(screen=screen, log=None, dialect="lammps")
+    sim.command(AVE_KEYWORDS_SCRIPT)
+    rows = thermo_rows(screen.getvalue())
+    assert [row[0] for row in rows] == list(range(0, 61, 10))
+    np.testing.assert_allclose(rows, AVE_KEYWORDS_LAMMPS, rtol=1e-11, atol=1e-13)
+    assert (tmp_path / "ovr.txt").read_text() == "# mine\n# step T\n60 0.900959\n"
+
+
+@pytest.mark.parametrize("keywords, message", [
+    ("ave window 0", "ave window M needs M >= 1 (got 0)"),
+    ("overwrite", "overwrite needs ave running (LAMMPS)"),
+    ("off 3", "off 3: there are 2 values"),
+    ("ave sometimes", "ave"),
+])
+def test_bad_ave_keywords_are_one_line(sim, keywords, message):
+    with pytest.raises(ScriptError) as error:
+        sim.command(f"variable s equal step\nfix 9 all ave/time 1 1 10 v_s v_s {keywords}")
+    assert message in str(error.value)

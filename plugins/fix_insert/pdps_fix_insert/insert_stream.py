@@ -5,7 +5,7 @@ Syntax::
 
     fix ID GROUP insert/stream seed S distributiontemplate DIST nparticles N|INF | mass M|INF
         particlerate R | massrate R  vel constant VX VY VZ  insertion_face MESH
-        insert_every N [duration D] | extrude_length L  [general keywords]
+        insert_every N [duration D] | extrude_length L  [parallel yes|no] [general keywords]
 
 ``insertion_face`` names a planar ``fix mesh/surface``; its normal :math:`\hat{\mathbf{n}}` is turned
 so that :math:`\mathbf{v}\cdot\hat{\mathbf{n}} > 0`, and the particles enter with the insertion
@@ -44,7 +44,7 @@ from numba import njit
 
 from pdps_core.api import ScriptError, TriangleSurface, keyword
 
-from .insertion import FixInsert
+from .insertion import FixInsert, YesNo
 from .whole_number import WholeNumber
 from .insert_rate_region import RateArgs, check_rate, rate_count, read_rate
 
@@ -91,6 +91,9 @@ class FixInsertStream(FixInsert):
         insertion_face: str = keyword(..., names="fix mesh/surface ID")
         extrude_length: float | None = keyword(None, gt=0, unit="distance")
         duration: WholeNumber | None = keyword(None, ge=1, unit="timesteps")
+        # LIGGGHTS's share of the extrusion among its ranks; pdps places the same particles on any
+        # rank count, so it is read and has no effect
+        parallel: YesNo = keyword("no")
 
     @classmethod
     def check_args(cls, args):

@@ -12,6 +12,7 @@ General keywords (LIGGGHTS's names, after ``seed S distributiontemplate DIST``):
     overlapcheck yes|no               keep new particles clear of present and new ones (default yes)
     all_in yes|no                     whole particle inside the insertion volume, or its centre (default no)
     random_distribute exact|uncorrelated   read; pdps always inserts the exact count
+    compress_tags no                  LIGGGHTS's default; yes (ids numbered again) is refused
     vel constant VX VY VZ | uniform VX VY VZ DVX DVY DVZ | gaussian VX VY VZ SX SY SZ
     omega constant WX WY WZ
     orientation random|template       read; a sphere has no orientation
@@ -69,6 +70,7 @@ class InsertArgs(StyleArgs):
     set_property: Property | None = keyword(None, unit=("1", "as the property"))
     vel: Velocity | None = keyword(None, unit="velocity")
     omega: tuple[Literal["constant"], float, float, float] | None = keyword(None, unit="1/time")
+    compress_tags: YesNo = keyword("no")
 
 
 def positive(args, name):
@@ -88,6 +90,10 @@ class FixInsert(Fix):
     @classmethod
     def check_args(cls, args):
         super().check_args(args)
+        if args.compress_tags == "yes":
+            raise ScriptError("compress_tags yes (LIGGGHTS numbers every particle 1..N again after each "
+                              "insertion) is not supported: pdps keeps each particle's id, which contact "
+                              "histories and dumps follow")
         if isinstance(args.insert_every, int) and args.insert_every < 1:
             raise ScriptError(f"insert_every must be >= 1 (got {args.insert_every})")
         if args.vel is not None and any(v < 0 for v in args.vel[4:]):

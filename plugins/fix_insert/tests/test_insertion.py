@@ -227,8 +227,11 @@ def test_a_restart_and_reset_timestep_keep_the_count_and_the_schedule(make_sim, 
      "vel must be one of constant, uniform, gaussian (got sideways)"),
     ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 sideways 1",
      "unknown keyword sideways (known: seed, distributiontemplate, verbose, maxattempt, insert_every, start, "
-     "overlapcheck, all_in, random_distribute, orientation, set_property, vel, omega, region, "
+     "overlapcheck, all_in, random_distribute, orientation, set_property, vel, omega, compress_tags, region, "
      "volumefraction_region, particles_in_region, mass_in_region, ntry_mc, check_dist_from_subdomain_border)"),
+    ("fix ins all insert/pack seed 1 distributiontemplate pdd1 region bc particles_in_region 5 compress_tags yes",
+     "compress_tags yes (LIGGGHTS numbers every particle 1..N again after each insertion) is not supported: "
+     "pdps keeps each particle's id, which contact histories and dumps follow"),
     ("fix ins all insert/rate/region seed 1 distributiontemplate pdd1 nparticles 5 particlerate 10 region bc",
      "missing keyword insert_every; usage: fix ID GROUP insert/rate/region seed S distributiontemplate DIST "
      "nparticles N|INF | mass M|INF particlerate R | massrate R insert_every N region REGION [keywords]"),
