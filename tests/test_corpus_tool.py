@@ -94,16 +94,21 @@ def test_the_manual_items_and_what_pdps_makes_of_them():
     spec = importlib.util.spec_from_file_location("liggghts_manual", ROOT / "benchmarks" / "liggghts_manual.py")
     manual = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(manual)
-    pages = ["fix insert/pack command :h3\nSyntax:\nfix insert/pack command :h3\n",
+    pages = ["fix insert/pack command :h3\n[Syntax:]\nkeyword = {region} or {sideways} :l\n"
+             "  {region} value = region-ID\n[Examples:]\nfix insert/pack command :h3\n",
              "run command :h3\n", "gran model hertz model :h3\n", "fix multisphere command :h3\n",
              "fix ave/histo command :h3\n", "fix couple/cfd command :h3\n", "Syntax: fix ID group command :h3\n"]
     assert manual.items(pages) == [("fix", "ave/histo"), ("fix", "couple/cfd"), ("fix", "insert/pack"),
                                    ("fix", "multisphere"), ("gran", "model hertz"), ("run", None)]
     text = manual.table(pages)
-    assert "| `fix insert/pack` | style |" in text and "| `run` | command |" in text
+    # insert/pack reads region, not the made-up sideways: known and checked, not fully working
+    assert "| `fix insert/pack` | style | keywords: 1 of 2, not sideways | plugins/fix_insert" in text
+    assert "| `run` | command |" in text
     assert "| `gran model hertz` | style |" in text and "| `fix ave/histo` | unknown |" in text
     assert "| `fix multisphere` | refused: pdps has no multisphere bodies" in text
-    assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown.")
+    assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown; "
+                         "0 styles read every keyword of their page; 0 work fully (known, every keyword, numbers "
+                         "checked against LIGGGHTS's).")
 
 
 def test_a_shift_the_range_misses_the_t_test_finds():
