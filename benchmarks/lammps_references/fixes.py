@@ -1,5 +1,5 @@
 """Record LAMMPS's thermo for short runs with the fixes of plugins/fix_simple and fix_granular's addforce,
-setforce, aveforce, lineforce, planeforce, spring/self, drag, viscous and gravity and fix nve/noforce, the reference
+setforce, aveforce, lineforce, planeforce, spring/self, drag, viscous and gravity, fix nve/noforce and fix move, the reference
 plugins/fix_simple/tests/test_lammps_fixes.py compares pdps with.
 
     python benchmarks/lammps_references/fixes.py [LMP]
@@ -17,6 +17,8 @@ from lammps_run import run_lammps, thermo_lines, write_case_table
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "plugins" / "fix_simple" / "tests" / "data"
+# the heavy particles moved by fix move, the light ones integrated
+MOVED = "group heavy type 2\ngroup light type 1\nunfix 1\nfix 1 light nve\n"
 CASES = {
     "rescale": "fix 2 all temp/rescale 10 1.0 2.0 0.05 0.5",
     "berendsen": "fix 2 all temp/berendsen 1.5 1.0 0.1",
@@ -35,6 +37,14 @@ CASES = {
     "spring_self_xy": "group heavy type 2\nfix 2 heavy spring/self 50.0 xy\nfix_modify 2 energy yes",
     "drag": "group heavy type 2\nfix 2 heavy drag 1.0 NULL 3.0 0.8 0.5",
     "nve_noforce": "group heavy type 2\ngroup light type 1\nunfix 1\nfix 1 light nve\nfix 2 heavy nve/noforce",
+    "move_linear": MOVED + "lattice fcc 0.8442\nfix 2 heavy move linear 0.5 NULL -0.2",
+    "move_wiggle": MOVED + "fix 2 heavy move wiggle 0.3 NULL 0.1 1.0 units box",
+    "move_rotate": MOVED + "fix 2 heavy move rotate 0.5 0.5 0.5 1 0 0 30.0",
+    "move_rotate_lattice": MOVED + "lattice sc 1.1\nfix 2 heavy move rotate 3.4 3.4 3.4 0 1 1 20.0",
+    "move_variable": MOVED + "variable dx equal 0.1*sin(10*time)\nvariable vx equal cos(10*time)\n"
+                             "fix 2 heavy move variable v_dx NULL NULL v_vx NULL NULL",
+    "move_variable_atom": MOVED + "variable dy atom 0.05*x*sin(5*time)\nvariable vz atom 0.02*y\n"
+                                  "fix 2 heavy move variable NULL v_dy NULL NULL NULL v_vz",
 }
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "fix 1 all nve", "timestep 0.002"]
