@@ -48,6 +48,7 @@ CONTRACT = {
         "particle_style": "'atomic', 'sphere' (radius, rmass, omega, torque exist), 'charge' (q), 'molecular', 'bond', 'angle' (molecule), 'full' (molecule, q), or 'hybrid S1 S2 ...' (all its sub-styles' arrays)",
         "particle_styles": "the particle styles in effect: (particle_style,) or hybrid's sub-styles; test 'sphere' in sim.particle_styles, not particle_style == 'sphere'",
         "box": "the simulation box (Box)",
+        "periodicity": "the boundary command's word per axis: 'p', 'f', 's', 'm' or two letters ('fm')",
         "change_box": "change_box(lo, hi, remap=GROUP or None): new box bounds now, a group's particles carried (barostats, deform)",
         "dimension": "2 or 3",
         "lattice": "the lattice command's Lattice (spacing (3,): what units lattice multiplies by; basis, cell, offset, style), or None",
@@ -114,7 +115,7 @@ CONTRACT = {
         "lo": "lower corner (3,)", "hi": "upper corner (3,)", "length": "hi - lo (3,)",
         "volume": "volume (area in 2-d)", "periodic": "(bool, bool, bool)", "dimension": "2 or 3",
         "inside": "inside(x): which positions lie in the box",
-        "bounds_label": "the boundary label of a dump header ('pp pp ff'; given sim.system.periodicity, 'pp ff mm')",
+        "bounds_label": "the boundary label of a dump header ('pp pp ff'; given sim.periodicity, 'pp ff mm')",
     },
     "Comm": {
         "rank": "this rank", "nprocs": "number of ranks", "is_root": "rank 0",

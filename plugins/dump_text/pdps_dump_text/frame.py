@@ -129,7 +129,7 @@ class TextDump(Dump):
             table = table[order]
         formats = self._formats(formats)
         header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ATOMS\n{len(table)}\n",
-                  f"ITEM: BOX BOUNDS {box.bounds_label(sim.system.periodicity)}\n"]
+                  f"ITEM: BOX BOUNDS {box.bounds_label(sim.periodicity)}\n"]
         # LAMMPS's 17 digits: the same text, and the same double read back
         header += ["%-1.16e %-1.16e\n" % (lo, hi) for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
         header.append(f"ITEM: ATOMS {' '.join(self.columns)}\n")

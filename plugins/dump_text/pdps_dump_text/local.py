@@ -116,7 +116,7 @@ class DumpLocal(Dump):
             table[:, k] = np.arange(1, len(table) + 1)
         box = sim.box
         header = [f"ITEM: TIMESTEP\n{sim.step}\n", f"ITEM: NUMBER OF ENTRIES\n{len(table)}\n",
-                  f"ITEM: BOX BOUNDS {box.bounds_label(sim.system.periodicity)}\n"]
+                  f"ITEM: BOX BOUNDS {box.bounds_label(sim.periodicity)}\n"]
         header += ["%-1.16e %-1.16e\n" % (lo, hi) for lo, hi in zip(box.lo.tolist(), box.hi.tolist())]
         header.append(f"ITEM: ENTRIES {' '.join(names)}\n")
         formats = ["%d" if k in index else "%.16g" for k in range(len(columns))]
