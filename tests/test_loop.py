@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Analyze, Fix, ScriptError, SimulationError, registry
-from pdps_core.testing import NoForcePair
+from pdps_core.testing import NoForcePair, liggghts_material
 
 BOX = """
 region box block 0 6 0 6 0 6
@@ -318,11 +318,7 @@ region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
-pair_style gran model hertz tangential history
+""" + liggghts_material(5.e6, 0.45, 0.9, 0.05) + """pair_style gran model hertz tangential history
 pair_coeff * *
 timestep 0.00001
 create_atoms 1 single 0.0 0.0 0.0 units box

@@ -204,10 +204,9 @@ def dump_modify(sim, args):
                               "append, flush)")
         if keyword == "format" and k + 1 < len(words) and words[k + 1] == "none":
             arity = 1
-        one_string = (keyword == "format" and sim.dialect.name == "liggghts" and k + 1 < len(words)
+        one_string = (keyword == "format" and sim.dialect.dump_format_string and k + 1 < len(words)
                       and words[k + 1] not in ("line", "int", "float", "none") and not words[k + 1].isdigit())
         if one_string:
-            # LIGGGHTS's (LAMMPS's before 2016) format STRING: one C format per column, the whole line
             arity = 1
         values = ["line", words[k + 1]] if one_string else words[k + 1:k + 1 + arity]
         if len(values) < arity:

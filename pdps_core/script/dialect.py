@@ -57,6 +57,8 @@ class Dialect:
     # thermo_modify lost when the script does not say: LAMMPS's error; LIGGGHTS 3.8.0 ignores lost
     # particles by default (its thermo.cpp), which pdps follows, saying so once
     lost_default: str = "error"
+    # dump_modify format STRING, one C format for the whole line (LIGGGHTS's; LAMMPS's before 2016)
+    dump_format_string: bool = False
 
 
 DIALECTS = {
@@ -67,7 +69,7 @@ DIALECTS = {
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
-                        adapt_rule="liggghts", lost_default="ignore"),
+                        adapt_rule="liggghts", lost_default="ignore", dump_format_string=True),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

@@ -50,6 +50,7 @@ from numba import njit
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
 NO_RMASS = np.zeros(0)
+NO_OMEGA = np.zeros((0, 3))
 # how a component moves: by its forces (fix nve), or with its position and/or velocity prescribed
 FREE, POSITION, VELOCITY, BOTH = 0, 1, 2, 3
 
@@ -198,7 +199,11 @@ class FixMove(Fix):
         self.origin_name = f"move_origin_{id}"
         sim.particles.request(self.origin_name, width=4, ghost=False)
         self.shift = self.speed = np.zeros((0, 3))
+        self.periodic = np.zeros(3, dtype=np.bool_)
         self._keep_origins(sim)
+
+    def setup(self, sim):
+        self.periodic = np.array(sim.box.periodic, dtype=np.bool_)     # fixed within a run
 
     @staticmethod
     def _period(value):
@@ -227,8 +232,8 @@ class FixMove(Fix):
 
     def _keep_origins(self, sim):
         p = sim.particles
-        keep_origins(p.arrays[self.origin_name], p.x, p.image, np.asarray(sim.box.length, dtype=np.float64),
-                     p.mask, sim.groups.bit(self.group), p.nlocal)
+        keep_origins(p.arrays[self.origin_name], p.x, p.image, sim.box.length, p.mask, sim.groups.bit(self.group),
+                     p.nlocal)
 
     def _buffers(self, n):
         if len(self.shift) < n:
@@ -260,12 +265,11 @@ class FixMove(Fix):
         self._keep_origins(sim)
         a, n = p.arrays, p.nlocal
         tau = (sim.step - self.time_origin) * sim.dt
-        length = np.asarray(sim.box.length, dtype=np.float64)
-        periodic = np.array(sim.box.periodic, dtype=np.bool_)
+        length, periodic = sim.box.length, self.periodic
         origin = a[self.origin_name]
         if self.style == "rotate":
-            omega = a["omega"] if p.has("omega") else np.zeros((0, 3))
-            radius = a["radius"] if p.has("radius") else np.zeros(0)
+            omega = a["omega"] if p.has("omega") else NO_OMEGA
+            radius = a["radius"] if p.has("radius") else NO_RMASS
             rotate_initial(a["x"], a["v"], omega, radius, a["mask"], sim.groups.bit(self.group), n, origin,
                            self.point, self.axis, self.rate, self.rate * tau, length, periodic)
             return

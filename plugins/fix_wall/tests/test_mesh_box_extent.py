@@ -5,6 +5,8 @@ mesh spans the box's x and y and is moved 0.02 along x, past the upper x face.""
 
 import pytest
 
+from pdps_core.testing import liggghts_material
+
 FACE = """solid face
 facet normal 0 0 1
   outer loop
@@ -33,11 +35,7 @@ region reg block -0.1 0.1 -0.1 0.1 -0.1 0.455 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.45
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
-pair_style gran model hertz tangential history
+""" + liggghts_material(5.e6, 0.45, 0.9, 0.05) + """pair_style gran model hertz tangential history
 pair_coeff * *
 timestep 0.00001
 create_atoms 1 single 0 0 0.2 units box
