@@ -14,8 +14,10 @@ Then, for a known style whose arguments are declared (its ``Args``), the manual'
 the ``keyword = {a} or {b} ...`` lists of the item's Syntax section, each looked for among the Args' keyword
 fields, their aliases and spellings (``keywords: all 17`` or ``keywords: 12 of 17, not a, b``); a
 style that reads its words by hand says ``keywords: not declared``. And what its numbers were
-checked against: CHECKED, kept by hand, names the tests that compare the item with LIGGGHTS's
-numbers recorded on this machine. An item works fully when it is known, reads every keyword of its
+checked against: the recorded-thermo tables of LIGGGHTS's numbers (``liggghts.cases.json`` beside
+the plugins' tests and the core's, written by benchmarks/liggghts_references/cases.py, each case
+naming the items it checks), and CHECKED, kept by hand, for the other tests that compare an item
+with LIGGGHTS's numbers recorded on this machine. An item works fully when it is known, reads every keyword of its
 page, and has such a check.
 
 The manual is LIGGGHTS's (GPL): it is read where it is unpacked, never copied; the table holds names.
@@ -23,6 +25,7 @@ The manual is LIGGGHTS's (GPL): it is read where it is unpacked, never copied; t
 
 import argparse
 import gzip
+import json
 import re
 import sys
 from pathlib import Path
@@ -62,6 +65,21 @@ CHECKED = {
     ("fix", "particledistribution/discrete"): "plugins/fix_insert/tests/test_distributions.py",
     ("thermo_modify", None): "tests/test_loop.py (lost); corpus (every tutorial's thermo)",
 }
+
+
+def recorded_checks():
+    """{(family, name): "TABLE (case, case)"} from every table of LIGGGHTS's recorded thermo."""
+    found = {}
+    for path in sorted(ROOT.glob("plugins/*/tests/data/*.cases.json")) + sorted(ROOT.glob("tests/data/*.cases.json")):
+        table = json.loads(path.read_text())
+        if not table.get("program", "").startswith("LIGGGHTS"):
+            continue
+        for case, entry in table["cases"].items():
+            for item in entry.get("checks", ()):
+                family, _, name = item.partition(" ")
+                found.setdefault((family, name or None), {}).setdefault(path.relative_to(ROOT).as_posix(), []).append(case)
+    return {key: "; ".join(f"{table} ({', '.join(cases)})" for table, cases in tables.items())
+            for key, tables in found.items()}
 
 
 def pages(doc):
@@ -193,13 +211,17 @@ def answer(family, name, styles):
 def table(texts):
     styles = {kind: known_styles(kind) for kind in KINDS.values()}
     found = sections(texts)
+    recorded = recorded_checks()
+    strays = sorted(" ".join(w for w in key if w) for key in recorded if key not in found)
+    if strays:
+        sys.exit(f"the recorded cases check items the manual has not: {', '.join(strays)}")
     rows = []
     for family, name in sorted(found, key=lambda item: (item[0], item[1] or "")):
         status, detail = answer(family, name, styles)
         options = ""
         if status == "style" and family in KINDS:
             options = keyword_answer(KINDS[family], name, found[(family, name)])
-        checked = CHECKED.get((family, name), "")
+        checked = "; ".join(c for c in (CHECKED.get((family, name), ""), recorded.get((family, name), "")) if c)
         full = (status in ("style", "command") and checked and not options.startswith("keywords: not")
                 and (not options or options.startswith("keywords: all")))
         rows.append((family, name, status, detail, options, checked, full))

@@ -444,14 +444,14 @@ def logged_thermo(folder, script):
     return np.array(thermo_rows(log.read_text()))
 
 
-def lammps_thermo(folder, monkeypatch, script, files=(), source=None, screen=False):
-    """Run the LAMMPS-dialect ``script`` in ``folder`` (the ``files`` copied there from the folder
-    ``source``) with its log at log.case; returns (the Simulation, its thermo rows as strings from
-    the CSV beside the log: full precision, header dropped)."""
+def lammps_thermo(folder, monkeypatch, script, files=(), source=None, screen=False, dialect="lammps"):
+    """Run ``script`` (LAMMPS's dialect unless ``dialect`` says another) in ``folder`` (the ``files``
+    copied there from the folder ``source``) with its log at log.case; returns (the Simulation, its
+    thermo rows as strings from the CSV beside the log: full precision, header dropped)."""
     for name in files:
         shutil.copy(Path(source) / name, Path(folder) / name)
     monkeypatch.chdir(folder)
-    sim = Simulation(screen=screen, log="log.case", dialect="lammps")
+    sim = Simulation(screen=screen, log="log.case", dialect=dialect)
     sim.command(script)
     sim.close()
     rows = [line.split(",") for line in (Path(folder) / "log.case.csv").read_text().splitlines()[1:]]

@@ -1,5 +1,6 @@
 """compute_modify (LAMMPS, used by LIGGGHTS scripts): dynamic yes accepted for thermo's temperature
-and a temp compute (pdps recounts a group each time), what pdps cannot do refused by line."""
+and a temp compute (pdps recounts a group each time), extra/dof of a temp compute, what pdps cannot
+do refused by line."""
 
 import pytest
 
@@ -28,11 +29,19 @@ def test_dynamic_yes_counts_particles_inserted_during_a_run():
     assert observables.degrees_of_freedom(sim) == 6
 
 
+def test_extra_dof_sets_what_a_temp_compute_takes_off():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(SETUP + "compute_modify t extra/dof 0\nvelocity all set 1 0 0\nrun 0")
+    # two particles of mass 1 at unit speed: KE 1 over all 6 degrees of freedom
+    assert sim.compute_value("t") == pytest.approx(2 * 1.0 / 6, rel=1e-15)
+    assert observables.temperature(sim) == pytest.approx(2 * 1.0 / 3, rel=1e-15)
+
+
 @pytest.mark.parametrize("line, message", [
     ("compute_modify thermo_temp dynamic no",
      "dynamic no is not supported: pdps counts a temperature's particles each time it is read (LAMMPS's dynamic yes)"),
-    ("compute_modify t extra/dof 0", "extra/dof 0 is not supported: temperatures remove the 3 degrees of freedom "
-     "of the centre of mass (LAMMPS's default)"),
+    ("compute_modify thermo_temp extra/dof 0", "extra/dof 0 is not supported for thermo_temp: it removes the 3 "
+     "degrees of freedom of the centre of mass (LAMMPS's default); define a compute temp and set it there"),
     ("compute_modify nothing dynamic yes", "compute nothing is not defined"),
     ("compute_modify t dynamic", "expected an ID and keyword/value pairs; usage: compute_modify ID [dynamic yes] "
      "[dynamic/dof yes] [extra/dof N]"),

@@ -7,7 +7,9 @@ cases marked ``restart`` go on from a restart file written half-way as the run g
 same process (``run N/2`` twice: a second run is not the middle of one, for LAMMPS as for pdps:
 fixes ramp over a run, and a run's setup computes forces anew).
 A plugin adds a table (``write_case_table`` in the recorders' lammps_run.py) and is checked here;
-its own tests keep only what a table cannot say."""
+its own tests keep only what a table cannot say. A table of LIGGGHTS 3.8.0's numbers (recorded by
+benchmarks/liggghts_references/cases.py) says so (``program``) and is read in its dialect; the core's
+commands have their tables in tests/data."""
 
 import json
 import re
@@ -21,7 +23,17 @@ from pdps_core.api import Simulation
 from pdps_core.testing import assert_thermo_as_lammps, by_tag, given_again, lammps_rows, lammps_thermo, run_ranks, thermo_csv
 
 ROOT = Path(__file__).resolve().parents[1]
-TABLES = sorted(ROOT.glob("plugins/*/tests/data/*.cases.json"))
+TABLES = sorted(ROOT.glob("plugins/*/tests/data/*.cases.json")) + sorted(ROOT.glob("tests/data/*.cases.json"))
+
+
+def _owner(path):
+    """The plugin whose table it is, or "core"."""
+    return path.parts[-4] if path.parts[-5:-4] == ("plugins",) else "core"
+
+
+def _dialect(table):
+    """The dialect the table's scripts are read in: LAMMPS's unless the table names another."""
+    return table.get("dialect", "lammps")
 
 
 def _cases(check=None):
@@ -30,7 +42,7 @@ def _cases(check=None):
         table = json.loads(path.read_text())
         for case, entry in table["cases"].items():
             if check is None or entry[check]:
-                found.append(pytest.param(path, case, id=f"{path.parts[-4]}:{path.name.split('.')[0]}:{case}"))
+                found.append(pytest.param(path, case, id=f"{_owner(path)}:{path.name.split('.')[0]}:{case}"))
     return found
 
 
@@ -52,7 +64,8 @@ def test_the_tables_are_found():
 @pytest.mark.parametrize("path, case", _cases())
 def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, path, case):
     table = json.loads(path.read_text())
-    _, mine = lammps_thermo(tmp_path, monkeypatch, table["cases"][case]["script"], table["files"], path.parent)
+    _, mine = lammps_thermo(tmp_path, monkeypatch, table["cases"][case]["script"], table["files"], path.parent,
+                            dialect=_dialect(table))
     reference = _reference(path, table, case)
     assert_thermo_as_lammps(mine, reference, case, [int(row[0]) for row in reference], table["rtol"], table["atol"])
 
@@ -61,7 +74,7 @@ def test_thermo_as_lammps_prints_it(tmp_path, monkeypatch, path, case):
 def test_two_ranks_print_it_too(tmp_path, path, case):
     table = json.loads(path.read_text())
     _folder(path, table, tmp_path)
-    run_ranks(table["cases"][case]["script"], 2, tmp_path, name="in.case", log="log.case", dialect="lammps")
+    run_ranks(table["cases"][case]["script"], 2, tmp_path, name="in.case", log="log.case", dialect=_dialect(table))
     columns = thermo_csv(tmp_path / "log.case.csv")
     mine = np.column_stack(list(columns.values()))
     reference = _reference(path, table, case)
@@ -83,11 +96,11 @@ def test_a_restart_goes_on_as_the_run_did(tmp_path, monkeypatch, path, case):
     monkeypatch.chdir(tmp_path)
     script = table["cases"][case]["script"]
     start, steps = _last_run(script)
-    straight = Simulation(screen=False, log=None, dialect="lammps")
+    straight = Simulation(screen=False, log=None, dialect=_dialect(table))
     straight.command(f"{start}run {steps // 2}\nrun {steps - steps // 2}")
-    before = Simulation(screen=False, log=None, dialect="lammps")
+    before = Simulation(screen=False, log=None, dialect=_dialect(table))
     before.command(f"{start}run {steps // 2}\nwrite_restart half.restart")
-    resumed = Simulation(screen=False, log=None, dialect="lammps")
+    resumed = Simulation(screen=False, log=None, dialect=_dialect(table))
     # as a LAMMPS script reading a restart file: its fixes, computes and settings given again
     resumed.command(f"read_restart half.restart\n{given_again(start)}run {steps - steps // 2}")
     assert resumed.step == straight.step == steps

@@ -101,18 +101,26 @@ def read_blocks(path):
     return {name: np.array(rows) for name, rows in tables.items()}
 
 
-def write_case_table(path, recorder, reference, files, scripts, *, rtol=1e-9, atol=1e-12, ranks=(), restart=()):
+def write_case_table(path, recorder, reference, files, scripts, *, rtol=1e-9, atol=1e-12, ranks=(), restart=(),
+                     dialect="lammps", program=None, checks=None):
     """Write the table tests/test_recorded_thermo.py runs: for each case of ``scripts`` {case: script
     as LAMMPS ran it}, the script and the files it reads (names in the table's folder), the rows file
     ``reference`` (beside the table) holding LAMMPS's thermo, and what else the case must satisfy:
     ``ranks`` the cases that must print the same thermo on 2 ranks, ``restart`` those whose run must
     go on from a restart file written half-way as it goes on in the same process. Tolerances are the table's;
-    ``recorder``: the recording module's ``__file__``."""
+    ``recorder``: the recording module's ``__file__``. A table of another program's numbers names it
+    (``program``, "LIGGGHTS 3.8.0") and the dialect pdps reads its scripts in; ``checks`` {case: the
+    manual items it checks} goes into each case (benchmarks/liggghts_manual.py reads them)."""
     cases = {case: {"script": script, "ranks": case in ranks, "restart": case in restart}
              for case, script in scripts.items()}
-    unknown = (set(ranks) | set(restart)) - set(cases)
+    for case, items in (checks or {}).items():
+        cases[case]["checks"] = list(items)
+    unknown = (set(ranks) | set(restart) | set(checks or ())) - set(cases)
     if unknown:
         sys.exit(f"{path}: no case named {sorted(unknown)[0]}")
-    table = {"recorded_by": f"benchmarks/lammps_references/{Path(recorder).name}", "reference": reference,
+    recorder = Path(recorder).resolve()
+    table = {"recorded_by": f"benchmarks/{recorder.parent.name}/{recorder.name}", "reference": reference,
              "files": [Path(name).name for name in files], "rtol": rtol, "atol": atol, "cases": cases}
+    if program is not None:
+        table = {"program": program, "dialect": dialect, **table}
     Path(path).write_text(json.dumps(table, indent=1) + "\n")

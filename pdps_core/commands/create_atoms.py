@@ -2,7 +2,7 @@
 
     create_atoms TYPE box|region REGION-ID|single X Y Z|random N SEED REGION-ID|NULL [keyword value]...
 
-keywords: ``units box|lattice`` (of ``single``'s X Y Z; default lattice, as LAMMPS), ``remap yes|no``
+keywords: ``units box|lattice`` (of ``single``'s X Y Z; default lattice, as LAMMPS; box, as LIGGGHTS 3.8.0), ``remap yes|no``
 (``single`` outside a periodic box is wrapped in), ``overlap D`` and ``maxtry N`` (``random``),
 ``basis M ITYPE`` (the type of basis atom M). Sphere styles get diameter 1 and density 1 (LAMMPS's
 defaults for created spheres).
@@ -63,7 +63,7 @@ def create_atoms(sim, args):
     rest = args[2:2 + positional]
     if len(rest) < positional:
         raise ScriptError(f"create_atoms {style} needs {positional} argument(s); usage: {usage}")
-    options = _options(args[2 + positional:], usage, sim.ntypes)
+    options = _options(args[2 + positional:], usage, sim.ntypes, sim.dialect.region_units)
     if style in ("box", "region"):
         region = sim.region(rest[0]) if style == "region" else None
         x, basis_index = lattice_sites(sim, region)
@@ -116,8 +116,8 @@ class _WholeBox:
         return np.ones(len(x), dtype=bool)
 
 
-def _options(words, usage, ntypes):
-    options = {"units": "lattice", "remap": False, "overlap": 0.0, "maxtry": None, "basis": {}}
+def _options(words, usage, ntypes, units):
+    options = {"units": units, "remap": False, "overlap": 0.0, "maxtry": None, "basis": {}}
     k = 0
     while k < len(words):
         key = words[k]

@@ -128,7 +128,9 @@ def compute_modify(sim, args):
     """LAMMPS's ``compute_modify ID dynamic|dynamic/dof yes [extra/dof N]`` for a temperature
     compute or thermo's own (``thermo_temp``): pdps counts a temperature's particles each time it
     is read, which is ``dynamic yes`` (particles inserted or lost during a run count at once); ``no``
-    and an extra/dof other than the dimension (LAMMPS's default) are refused."""
+    is refused. ``extra/dof N`` (``extra`` in LIGGGHTS) sets the degrees of freedom a temperature
+    compute of the script takes off (LAMMPS's default: the dimension); thermo's own keep the
+    default."""
     usage = "compute_modify ID [dynamic yes] [dynamic/dof yes] [extra/dof N]"
     if len(args) < 3 or len(args) % 2 == 0:
         raise ScriptError(f"expected an ID and keyword/value pairs; usage: {usage}")
@@ -141,9 +143,15 @@ def compute_modify(sim, args):
             if choice(value, key, ("yes", "no")) == "no":
                 raise ScriptError(f"{key} no is not supported: pdps counts a temperature's particles each time "
                                   f"it is read (LAMMPS's {key} yes)")
-        elif number(value, key) != sim.dimension:
-            raise ScriptError(f"{key} {value} is not supported: temperatures remove the {sim.dimension} "
-                              "degrees of freedom of the centre of mass (LAMMPS's default)")
+            continue
+        extra = number(value, key)
+        compute = sim.computes.get(ident)
+        if compute is not None and hasattr(compute, "extra_dof"):
+            compute.extra_dof = extra
+        elif extra != sim.dimension:
+            raise ScriptError(f"{key} {value} is not supported for {ident}: it removes the {sim.dimension} "
+                              "degrees of freedom of the centre of mass (LAMMPS's default); define a compute "
+                              "temp and set it there")
 
 
 @command("uncompute")

@@ -13,7 +13,7 @@ word ``uniform`` or ``gaussian``), ``sum no|yes`` (add to the velocities instead
 ``mom yes|no`` and ``rot no|yes`` (create: zero the linear / angular momentum before scaling),
 ``temp COMPUTE-ID`` (the temperature to scale by; default the group's own), ``loop all|local|geom``,
 ``units lattice|box`` (set's and ramp's numbers in lattice spacings or distance units; LAMMPS's
-default lattice, PDPS's box, see ``Dialect.velocity_units``; without a lattice command the spacing is
+default lattice, PDPS's and LIGGGHTS 3.8.0's box, see ``Dialect.velocity_units``; without a lattice command the spacing is
 1, LAMMPS's ``lattice none 1.0``). ``bias yes`` and ``rigid`` are not supported.
 
 create, step by step (LAMMPS's order, velocity.cpp):

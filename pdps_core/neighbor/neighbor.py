@@ -28,8 +28,9 @@ the lists).
 
 Resuming. The rebuild schedule (``ago``, ``xhold``) and the lists carry over from one run to the next
 (and through a restart file): when nothing that the lists depend on has changed since the last run
-ended, the next run re-creates the lists of the last build from ``xhold`` instead of wrapping, sorting
-and building afresh (``can_resume``). A wrap, a sort or a rebuild at a run's start would change
+ended, no particle is beyond a fixed face and no face is shrink-wrapped (LAMMPS's setup drops the
+former and fits the latter), the next run re-creates the lists of the last build from ``xhold``
+instead of wrapping, sorting and building afresh (``can_resume``). A wrap, a sort or a rebuild at a run's start would change
 positions, particle order or summation order in the last bits and shift every later rebuild; resuming
 keeps all of them, so with forces that depend on positions only ``run N`` + ``run M`` is ``run N+M``.
 """
@@ -364,6 +365,12 @@ class Neighbor:
                     and periodic == box.periodic and len(lists) == len(self.requests)
                     and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
                             for (kind, cutoff), r in zip(lists, self.requests)))
+        if same and not all(box.periodic):
+            # a run's setup drops what crossed a fixed face since the last build, as LAMMPS's does
+            x = particles.x[:particles.nlocal]
+            for d in range(3):
+                if not box.periodic[d] and len(x) and (x[:, d].min() < box.lo[d] or x[:, d].max() >= box.hi[d]):
+                    same = False
         return bool(comm.min(int(same)))
 
     # ---- build ----------------------------------------------------------------------------------

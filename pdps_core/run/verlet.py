@@ -130,7 +130,9 @@ class Verlet:
                 sim.neighbor.skin_trial = None
         limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
         limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
-        if sim.neighbor.can_resume(particles, sim.box, sim.comm):
+        # a shrink-wrapped box is fitted to the particles at every run's start, as LAMMPS's is
+        resume = not sim.system.shrink_faces and not sim.dialect.rebuild_at_setup
+        if resume and sim.neighbor.can_resume(particles, sim.box, sim.comm):
             self._resume_lists()
         else:
             shrink_wrap(sim)
@@ -250,6 +252,7 @@ class Verlet:
             run.pe = run.evdwl = pair.energy if pair is not None else 0.0
             run.energy_step = run.step
         if vflag:
+            run.pair_virial[:] = run.virial
             run.virial_step = run.step
         if run.tally_atom:
             run.tally_step = run.step

@@ -36,8 +36,11 @@ class Dialect:
     name: str
     label: str
     index_base: int            # first element of c_ID[i], f_ID[i]: PDPS 0, LAMMPS 1
-    region_units: str          # default of region's units keyword: PDPS box, LAMMPS lattice
-    velocity_units: str        # default of velocity's units keyword (set, ramp): PDPS box, LAMMPS lattice
+    # default of the units keyword of region and of every command LAMMPS scales by the lattice
+    # (displace_atoms, create_atoms single, fix move, deform, ave/spatial): PDPS box, LAMMPS
+    # lattice, LIGGGHTS 3.8.0 box (its source, measured; its manual says lattice)
+    region_units: str
+    velocity_units: str        # default of velocity's units keyword (set, ramp): as region_units
     velocity_numbers: str      # velocity create's generator: "counter" (pdps) or "park" (LAMMPS's)
     # set diameter on a sphere: "mass" keeps its mass (LAMMPS), "density" keeps its density, so the
     # mass follows the new size (LIGGGHTS)
@@ -59,6 +62,10 @@ class Dialect:
     lost_default: str = "error"
     # dump_modify format STRING, one C format for the whole line (LIGGGHTS's; LAMMPS's before 2016)
     dump_format_string: bool = False
+    # every run's setup builds the neighbor lists afresh, as LAMMPS's and LIGGGHTS's do, instead of
+    # going on with the last build's (Neighbor.can_resume): LIGGGHTS keeps the spring of a contact
+    # that came apart until the list is next built, so when the lists are built is physics there
+    rebuild_at_setup: bool = False
 
 
 DIALECTS = {
@@ -67,9 +74,10 @@ DIALECTS = {
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
                       velocity_numbers="park", volume_2d="sphere", restart_styles=False),
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
-    "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="lattice", velocity_units="lattice",
+    "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="box", velocity_units="box",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
-                        adapt_rule="liggghts", lost_default="ignore", dump_format_string=True),
+                        adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
+                        rebuild_at_setup=True),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

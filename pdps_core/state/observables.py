@@ -72,8 +72,9 @@ def kinetic_energy(sim, group="all"):
     return sim.comm.sum(0.5 * float(_sums(sim, group)[0])) * sim.units.mvv2e
 
 
-def degrees_of_freedom(sim, group="all"):
-    """d N - d, less what fixes remove (constraints, rigid bodies: ``Fix.dof_removed``). Fewer than
+def degrees_of_freedom(sim, group="all", extra=None):
+    """d N - d (``extra`` instead of d when given: compute_modify extra/dof), less what fixes remove
+    (constraints, rigid bodies: ``Fix.dof_removed``). Fewer than
     0 for a group with particles is an error, as LAMMPS's compute temp ("Temperature compute degrees
     of freedom < 0"): the fixes remove more than the group has; an empty group has 0."""
     d = sim.dimension
@@ -81,7 +82,7 @@ def degrees_of_freedom(sim, group="all"):
                 if hasattr(fix, "dof_removed")]
     members = count(sim, group)
     removed = sum(n for _, n in removing)
-    dof = d * members - d - removed
+    dof = d * members - (d if extra is None else extra) - removed
     if dof < 0 and members > 0:
         fixes = ", ".join(f"fix {fix.id} ({fix.name}) {n}" for fix, n in removing if n)
         error = SimulationError(f"temperature of group {group}: degrees of freedom < 0 ({d} x {members} particles "
@@ -92,8 +93,8 @@ def degrees_of_freedom(sim, group="all"):
     return max(dof, 0)
 
 
-def temperature(sim, group="all"):
-    dof = degrees_of_freedom(sim, group)
+def temperature(sim, group="all", extra=None):
+    dof = degrees_of_freedom(sim, group, extra)
     if dof <= 0:
         return 0.0
     return 2.0 * kinetic_energy(sim, group) / (dof * sim.units.boltz)
@@ -137,6 +138,18 @@ def pressure_tensor(sim, temp_group="all"):
     total = np.asarray(sim.comm.sum(kinetic * sim.units.mvv2e + np.asarray(sim.virial, dtype=np.float64)))
     total[:3] += tail_corrections(sim)[1]
     return total / sim.box.volume * sim.units.nktv2p
+
+
+def virial_parts(sim):
+    """(the pair style's virial tensor, the fixes' share), xx yy zz xy xz yz summed over ranks, the
+    tail correction with the pair's: what LAMMPS's compute pressure keywords pair and fix select."""
+    sim.run_state.require_virial()
+    pair = np.asarray(sim.comm.sum(np.asarray(sim.run_state.pair_virial, dtype=np.float64)))
+    total = np.asarray(sim.comm.sum(np.asarray(sim.virial, dtype=np.float64)))
+    fixes = total - pair
+    pair = pair.copy()
+    pair[:3] += tail_corrections(sim)[1]
+    return pair, fixes
 
 
 def kinetic_tensor(sim, group="all"):

@@ -30,7 +30,9 @@ Values: ``density/number`` (1/volume), ``density/mass`` (mass/volume), ``vx vy v
 Keywords: ``file NAME`` (written at each average, LAMMPS's format, appended and closed at once);
 ``units box|lattice``: DELTA and a coordinate origin in distance units (``box``) or in lattice
 spacings (``lattice``). ``analyze ave/space`` defaults to ``box`` (the PDPS manual's example bins
-by distance); ``fix ave/spatial`` to ``lattice``, as LAMMPS (with no lattice defined a spacing is 1).
+by distance); ``fix ave/spatial`` to the dialect's default: ``lattice`` as LAMMPS (with no lattice
+defined a spacing is 1), ``box`` in the PDPS dialect and as LIGGGHTS 3.8.0 (its source; its manual
+says lattice).
 
 File format (numbers as ``%g``)::
 
@@ -114,7 +116,7 @@ class AveSpace:
         for axis, origin, delta in args.bins:
             self._add_axis(sim, axis, origin, delta)
         self.values = list(args.values)
-        self.path, self.units = args.file, args.units or self.default_units
+        self.path, self.units = args.file, args.units or self.default_units or sim.dialect.region_units
         self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
         self.count_total = self.value_total = None
         self.average = None
@@ -253,7 +255,12 @@ class AveSpace:
             handle.write("\n".join(rows) + "\n")
 
     def array(self, sim):
-        return np.zeros((0, 0)) if self.average is None else self.average.copy()
+        if self.average is not None:
+            return self.average.copy()
+        # before the first average, as LAMMPS's: the bins' coordinates, every value 0
+        if getattr(self, "coords", None) is None:
+            self._setup_bins(sim)
+        return np.column_stack([self.coords, np.zeros((len(self.coords), 1 + len(self.values)))])
 
 
 class AnalyzeAveSpace(AveSpace, Analyze):
@@ -266,4 +273,4 @@ class FixAveSpatial(AveSpace, Fix):
     name = "ave/spatial"
     usage = ("fix ID GROUP ave/spatial NEVERY NREPEAT NFREQ DIM ORIGIN DELTA [DIM ORIGIN DELTA]... "
              "value... [file NAME] [units box|lattice]")
-    default_units = "lattice"
+    default_units = None        # the dialect's: LAMMPS lattice, LIGGGHTS box

@@ -9,7 +9,8 @@ For each input :math:`a` over the particles i of the group G (N of them, on all 
     \mathrm{max} = \max_{i \in G} a_i, \quad \mathrm{ave} = \frac{1}{N}\sum_{i \in G} a_i
 
 in the units of the input. One input gives a scalar ``c_ID``; several give a vector, ``c_ID[k]`` the
-k-th input (0-based). An empty group gives 0 (LAMMPS: 0 for sum and ave, ±1e20 for min and max).
+k-th input (0-based). An empty group gives, as LAMMPS's, 0 for sum and ave, 1e20 for min and
+-1e20 for max.
 
 Inputs:
 
@@ -22,6 +23,10 @@ Inputs:
   variable may be defined after the compute.
 
 The group of a referenced compute is applied as well: its particles outside that group read 0.
+
+Or, as LAMMPS's, every input a compute's local data (``c_ID``, ``c_ID[k]`` of ``pair/gran/local``,
+``wall/gran/local``: one row per contact): then the rows of all ranks are reduced, whatever the
+group, and ``ave`` divides by the row count. Per-atom and local inputs do not mix.
 
 Syntax::
 
@@ -45,9 +50,23 @@ import numpy as np
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, param, peratom_column
 
-from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom
+from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom, provides_peratom
 
+# what min and max of nothing are (LAMMPS's BIG)
+EMPTY = 1.0e20
 VARIABLE = re.compile(r"^v_([A-Za-z_][A-Za-z0-9_]*)$")
+
+
+def _local_compute(sim, word):
+    """The compute a ``c_ID``/``c_ID[k]`` input names when it offers local data and no per-atom
+    values, else None."""
+    match = REFERENCE.match(word)
+    if not match or match.group(1) != "c":
+        return None
+    compute = sim.computes.get(match.group(2))
+    if compute is None or type(compute).local is Compute.local or provides_peratom(compute):
+        return None
+    return compute
 
 
 class ComputeReduce(Compute):
@@ -62,7 +81,14 @@ class ComputeReduce(Compute):
         super().__init__(sim, id, group, args)
         self.extensive = args.mode == "sum"     # LAMMPS: a sum is extensive, thermo normalises it
         what = f"compute {id} reduce"
+        local = [_local_compute(sim, word) is not None for word in args.inputs]
+        self.local = all(local)
+        if any(local) and not self.local:
+            raise ScriptError(f"{what}: inputs are per-atom values or local data, not both "
+                              f"({' '.join(args.inputs)})")
         for word in args.inputs:
+            if self.local:
+                continue
             if REFERENCE.match(word):
                 find_peratom(sim, word, what)
             elif word in ATTRIBUTES:
@@ -90,13 +116,35 @@ class ComputeReduce(Compute):
         """The owned particles reduced over: the group's."""
         return sim.groups.select(sim, self.group)
 
+    def _local_input(self, sim, word):
+        compute = _local_compute(sim, word)
+        values = np.asarray(compute.local(sim), dtype=np.float64)
+        column = REFERENCE.match(word).group(3)
+        if values.ndim == 1:
+            if column is not None:
+                raise ScriptError(f"compute {self.id} reduce: compute {compute.id} has one local value per row; "
+                                  f"drop the [k] ({word})")
+            return values
+        if column is None:
+            raise ScriptError(f"compute {self.id} reduce: compute {compute.id} has {values.shape[1]} local "
+                              f"values per row: name one as c_{compute.id}[k] ({word})")
+        k = sim.dialect_index(int(column), word)
+        if k >= values.shape[1]:
+            raise ScriptError(f"compute {self.id} reduce: {word} is out of range (compute {compute.id} has "
+                              f"{values.shape[1]} local values per row)")
+        return values[:, k]
+
     def vector(self, sim):
-        chosen = self.selected(sim)
-        values = [self._input(sim, word)[chosen] for word in self.args.inputs]
+        if self.local:
+            values = [self._local_input(sim, word) for word in self.args.inputs]
+            count = int(sim.comm.sum(len(values[0])))
+        else:
+            chosen = self.selected(sim)
+            values = [self._input(sim, word)[chosen] for word in self.args.inputs]
+            count = int(sim.comm.sum(int(chosen.sum())))
         mode = self.args.mode
-        count = int(sim.comm.sum(int(chosen.sum())))
         if count == 0:
-            return np.zeros(len(values))
+            return np.full(len(values), {"min": EMPTY, "max": -EMPTY}.get(mode, 0.0))
         if mode in ("sum", "ave"):
             local = np.array([float(a.sum()) for a in values])
             total = np.asarray(sim.comm.sum(local), dtype=np.float64)

@@ -158,10 +158,12 @@ def test_reduce_sum_min_max_ave_of_positions_and_of_property_atom_columns():
     assert sim.compute_value("mbar") == pytest.approx(m.mean(), rel=1e-14)
 
 
-def test_reduce_of_an_empty_group_is_zero():
+def test_reduce_of_an_empty_group_is_lammps_s():
     sim = make("mass 1 1\ncreate_particle 1 single 1 1 1\nregion far block 5 6 5 6 5 6\n"
-               "group none region far\ncompute r none reduce max x vx")
-    assert sim.computes["r"].vector(sim).tolist() == [0.0, 0.0]
+               "group none region far\ncompute r none reduce max x vx\ncompute s none reduce min x\n"
+               "compute a none reduce ave x\ncompute t none reduce sum x")
+    assert sim.computes["r"].vector(sim).tolist() == [-1e20, -1e20]
+    assert [sim.computes[c].vector(sim).tolist() for c in "sat"] == [[1e20], [0.0], [0.0]]
 
 
 def test_property_atom_values_and_their_dump_read_back(tmp_path):

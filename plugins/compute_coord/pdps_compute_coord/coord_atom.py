@@ -16,8 +16,10 @@ reach it.
 
 Parameters:
 
-- ``cutoff RC``: the cutoff (> 0, distance).
+- ``cutoff RC``: the cutoff (> 0, distance); LIGGGHTS writes ``RC`` alone.
 - ``T1 T2 ...`` (optional): type ranges, each a type or a LAMMPS range (``*``, ``2*``, ``*3``, ``1*2``).
+- ``mix yes|no`` (optional, LIGGGHTS, instead of type ranges): with ``yes`` count only neighbors of
+  the particle's own type (default no).
 - ``group G2`` (optional): count only neighbors in group G2 (default all).
 
 Output: per-atom values, read by dumps as ``c_ID`` (one range or none) or ``c_ID[k]`` (range k,
@@ -25,11 +27,12 @@ from 0), and by ``compute reduce``.
 
 Syntax::
 
-    compute ID GROUP coord/atom cutoff RC [T1 T2 ...] [group G2]
+    compute ID GROUP coord/atom [cutoff] RC [T1 T2 ...] [mix yes|no] [group G2]
 
 Example::
 
     compute c all coord/atom cutoff 1.5 1 2
+    compute same all coord/atom 0.0125 mix yes
     dump 1 all custom 100 coord.txt id type c_c[0] c_c[1]
 """
 
@@ -37,16 +40,17 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
+from pydantic import model_validator
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param, type_range
 
 
 @njit(cache=True)
-def count_neighbors(x, type_, mask, groupbit2, offsets, neighbors, nlocal, cutsq, lows, highs, counts):
+def count_neighbors(x, type_, mask, groupbit2, offsets, neighbors, nlocal, cutsq, lows, highs, same_type, counts):
     for i in range(nlocal):
         for k in range(offsets[i], offsets[i + 1]):
             j = neighbors[k]
-            if not mask[j] & groupbit2:
+            if not mask[j] & groupbit2 or (same_type and type_[j] != type_[i]):
                 continue
             dx = x[i, 0] - x[j, 0]
             dy = x[i, 1] - x[j, 1]
@@ -60,14 +64,21 @@ def count_neighbors(x, type_, mask, groupbit2, offsets, neighbors, nlocal, cutsq
 
 class ComputeCoordAtom(Compute):
     name = "coord/atom"
-    usage = "compute ID GROUP coord/atom cutoff RC [T1 T2 ...] [group G2]"
+    usage = "compute ID GROUP coord/atom [cutoff] RC [T1 T2 ...] [mix yes|no] [group G2]"
     neighbor_lists_needed = True
 
     class Args(StyleArgs):
-        style: Literal["cutoff"]
+        style: Literal["cutoff"] | None = param(None)        # LIGGGHTS leaves the word out
         cutoff: float = param(gt=0, unit="distance")
         types: list[str] = param(default_factory=list, names="type range (I, I*J, *)")
+        mix: Literal["yes", "no"] = keyword("no")
         group: str = keyword("all")
+
+        @model_validator(mode="after")
+        def _mix_or_ranges(self):
+            if self.mix == "yes" and self.types:
+                raise ValueError("mix yes counts neighbors of the particle's own type: give it without type ranges")
+            return self
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -87,5 +98,6 @@ class ComputeCoordAtom(Compute):
         p = sim.particles
         counts = np.zeros((p.nlocal, len(self.lows)))
         count_neighbors(p.x, p.type, p.mask, np.uint32(sim.groups.bit(self.args.group)), nlist.offsets,
-                        nlist.neighbors, p.nlocal, self.args.cutoff ** 2, self.lows, self.highs, counts)
+                        nlist.neighbors, p.nlocal, self.args.cutoff ** 2, self.lows, self.highs, self.args.mix == "yes",
+                        counts)
         return counts[:, 0] if len(self.lows) == 1 else counts

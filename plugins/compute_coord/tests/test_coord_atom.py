@@ -80,11 +80,12 @@ def test_read_before_a_run_is_a_clear_error(tmp_path):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("radius 1.0", "style must be one of 'cutoff' (got radius)"),
+    ("radius 1.0", "cutoff must be a finite number (got radius)"),
+    ("1.0 1 mix yes", "mix yes counts neighbors of the particle's own type: give it without type ranges"),
     ("cutoff -1", "cutoff must be > 0 (got -1)"),
     ("cutoff 1.0 4", "type 4 is out of range 1..2"),
     ("cutoff 1.0 group", "keyword group needs 1 value(s) (got 0)"),
-    ("cutoff 1.0 group all 2", "unknown keyword 2 (known: group)"),
+    ("cutoff 1.0 group all 2", "unknown keyword 2 (known: mix, group)"),
 ])
 def test_bad_arguments(tmp_path, words, message):
     x, types = system()

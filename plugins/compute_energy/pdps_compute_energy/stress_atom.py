@@ -10,9 +10,10 @@ half to each particle. Summed over particles, the trace of the virial part is mi
 the system, so -(S_xx + S_yy + S_zz) / 3V summed is the pressure's virial part (the kinetic part with
 all 3N degrees of freedom, not N_dof). Keywords: ``ke`` (the kinetic term), ``pair``, ``virial`` (every
 term but ke), ``fix`` and LAMMPS's ``bond angle dihedral improper kspace`` (0 in pdps); none means
-all. The temperature must be ``NULL`` (no velocity bias). Syntax::
+all. The temperature, when given, must be ``NULL`` (no velocity bias); LIGGGHTS's syntax has none.
+Syntax::
 
-    compute ID GROUP stress/atom NULL [ke] [pair] [bond] [angle] [dihedral] [improper] [kspace] [fix] [virial]
+    compute ID GROUP stress/atom [NULL] [ke] [pair] [bond] [angle] [dihedral] [improper] [kspace] [fix] [virial]
 
 Example::
 
@@ -23,6 +24,7 @@ Example::
 from typing import Literal
 
 import numpy as np
+from pydantic import model_validator
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param
 
@@ -31,19 +33,25 @@ TERMS = ("ke", "pair", "bond", "angle", "dihedral", "improper", "kspace", "fix",
 
 class ComputeStressAtom(Compute):
     name = "stress/atom"
-    usage = ("compute ID GROUP stress/atom NULL [ke] [pair] [bond] [angle] [dihedral] [improper] [kspace] "
+    usage = ("compute ID GROUP stress/atom [NULL] [ke] [pair] [bond] [angle] [dihedral] [improper] [kspace] "
              "[fix] [virial]")
     needs_virial = True
     peratom_tally = True
 
     class Args(StyleArgs):
-        temperature: str = param()
+        # LAMMPS's temperature ID (only NULL here); LIGGGHTS's syntax has none
+        temperature: Literal["NULL"] | None = param(None)
         terms: list[Literal[TERMS]] = param(default_factory=list)
 
+        @model_validator(mode="before")
+        @classmethod
+        def _temperature_ids_are_not_taken(cls, values):
+            first = (values.get("terms") or [None])[0]
+            if values.get("temperature") is None and first is not None and first not in TERMS:
+                raise ValueError(f"temperature {first}: only NULL (no velocity bias) is supported")
+            return values
+
     def __init__(self, sim, id, group, args):
-        if args.temperature != "NULL":
-            raise ScriptError(f"compute stress/atom: temperature {args.temperature}: only NULL (no velocity bias) "
-                              "is supported")
         super().__init__(sim, id, group, args)
         terms = set(args.terms or TERMS)
         self.ke = "ke" in terms

@@ -91,7 +91,7 @@ def test_a_pair_style_without_a_tally_is_named():
 
 
 def test_stress_atom_takes_only_a_null_temperature(tmp_path):
-    with pytest.raises(ScriptError, match="compute stress/atom: temperature t: only NULL"):
+    with pytest.raises(ScriptError, match="compute: temperature t: only NULL"):
         build(tmp_path, [[1.0, 1.0, 1.0]], setup="compute t all temp\ncompute s all stress/atom t")
 
 

@@ -25,6 +25,7 @@ class ComputeTemp(Compute):
     name = "temp"
     gives_temperature = True
     usage = "compute ID GROUP temp"
+    extra_dof = None        # degrees of freedom taken off besides the fixes' (compute_modify extra/dof)
 
     def scalar(self, sim):
-        return observables.temperature(sim, self.group)
+        return observables.temperature(sim, self.group, self.extra_dof)

@@ -16,6 +16,17 @@ class ForceFix(Fix):
     """A fix whose post_force also acts at a run's setup and in each minimization step (LAMMPS's
     addforce, setforce, viscous)."""
 
+    original = None     # set (np.zeros(3)) by a fix that offers LAMMPS's vector of the force it found
+
+    def keep_original(self, f, selected):
+        """Remember this rank's total force on ``selected`` before the fix changes it."""
+        self.original[:] = f[selected].sum(axis=0)
+
+    def original_force(self, sim):
+        """LAMMPS's vector of addforce, setforce and aveforce (``f_ID[1-3]``): the group's total force
+        before the fix changed it, at the last step the fix acted."""
+        return sim.comm.sum(self.original)
+
     def setup(self, sim):
         self.post_force(sim)
 

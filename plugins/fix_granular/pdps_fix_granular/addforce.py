@@ -82,6 +82,7 @@ class FixAddForce(ForceFix):
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
+        self.original = np.zeros(3)
         if args.drag_stokes is not None:
             require_spheres(sim, "fix addforce drag_stokes")
         if args.buoyancy is not None:
@@ -97,11 +98,15 @@ class FixAddForce(ForceFix):
             return None
         return np.array([sim.evaluate(c) for c in self.components], dtype=np.float64)
 
+    def vector(self, sim):
+        return self.original_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         n = p.nlocal
         selected = chosen(sim, self.group, self.args.region)
         f = p.f[:n]
+        self.keep_original(f, selected)
         force = self.constant_force(sim)
         if force is not None:
             f[selected] += force

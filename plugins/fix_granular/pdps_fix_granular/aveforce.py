@@ -65,12 +65,17 @@ class FixAveForce(ForceFix):
             sim.region(args.region)
         self.components = [(d, value) for d, value in enumerate((args.fx, args.fy, args.fz)) if value is not None]
         self._sums = np.zeros(4)
+        self.original = np.zeros(3)
+
+    def vector(self, sim):
+        return self.original_force(sim)
 
     def post_force(self, sim):
         p = sim.particles
         selected = chosen(sim, self.group, self.args.region)
         f = p.f[: p.nlocal]
         self._sums[:3] = f[selected].sum(axis=0)
+        self.original[:] = self._sums[:3]
         self._sums[3] = float(selected.sum())
         total = sim.comm.sum(self._sums)
         if total[3] == 0:

@@ -4,9 +4,11 @@ Every step, after the pair style and the fixes defined before this one have adde
 
 .. math::  \mathbf{F}_i \leftarrow \mathbf{0}, \qquad \mathbf{T}_i \leftarrow \mathbf{0}
 
-(the torque only with ``particle_style sphere``). At the start of each run the group's velocities
-(and angular velocities) are also set to zero, so frozen particles integrated by any nve fix stay
-exactly where they are; LAMMPS leaves that to the user. The total force on the group before it was
+(the torque only with ``particle_style sphere``). Velocities are left as they are, as LAMMPS's and
+LIGGGHTS's fix freeze leave them (LIGGGHTS 3.8.0's numbers recorded in
+plugins/fix_granular/tests/data/liggghts.cases.json, case freeze): a frozen particle that moves at
+the start of a run goes on at that velocity, which a warning says; ``velocity GROUP set 0 0 0``
+holds it in place. The total force on the group before it was
 zeroed (LAMMPS's vector of this fix) is kept in ``total_force``, e.g. the load on a frozen floor.
 
 As LAMMPS, fixes run in script order: a force fix defined after this one acts on frozen particles
@@ -40,13 +42,19 @@ class FixFreeze(Fix):
         super().__init__(sim, id, group, args)
         self.total_force = np.zeros(3)
         self._warned = set()
+        self._told_moving = False
 
     def setup(self, sim):
         p = sim.particles
         selected = chosen(sim, self.group)
-        p.v[: p.nlocal][selected] = 0.0
+        moving = bool(np.any(p.v[: p.nlocal][selected]))
         if p.has("omega"):
-            p.omega[: p.nlocal][selected] = 0.0
+            moving |= bool(np.any(p.omega[: p.nlocal][selected]))
+        if sim.comm.max(int(moving)) and not self._told_moving:
+            self._told_moving = True
+            sim.warn(f"fix {self.id} (freeze) zeroes forces and torques only, as LAMMPS and LIGGGHTS: "
+                     f"particles of group {self.group} that move or spin go on doing so "
+                     f"(velocity {self.group} set 0 0 0 holds them in place)")
         self._warn_later_forces(sim, selected)
         self.post_force(sim)
 
@@ -59,6 +67,10 @@ class FixFreeze(Fix):
                 sim.warn(f"fix {later.id} ({later.name}) is defined after fix {self.id} (freeze) and "
                          f"changes forces on its particles after they were zeroed: frozen particles "
                          f"may move (define freeze last)")
+
+    def vector(self, sim):
+        """``f_ID[1-3]``: the total force on the group before it was zeroed (LAMMPS's vector)."""
+        return self.total_force
 
     def post_force(self, sim):
         p = sim.particles

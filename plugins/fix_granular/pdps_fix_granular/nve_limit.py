@@ -14,14 +14,11 @@ so :math:`|\Delta\mathbf{x}| \le x_{max}` every step. With ``radius_ratio`` (LIG
 each particle is :math:`x_{max} R_i`. Forces are left as they are; on steps where no cap acts this is
 exactly fix nve, on steps where one acts energy is not conserved.
 
-Spheres (``particle_style sphere``) are also rotated as by fix ``nve/sphere``,
-:math:`\boldsymbol{\omega} \mathrel{+}= \tfrac{\Delta t}{2I}\mathbf{T}` with
-:math:`I = \tfrac25 m R^2` (``disc``: :math:`\tfrac12 m R^2`), and the same cap is put on the speed of
-their surface: :math:`|\boldsymbol{\omega}| R \le x_{max}/\Delta t`. (LAMMPS's nve/limit moves point
-particles only; LIGGGHTS's granular starts need the rotation too, or the huge contact torques of the
-first steps would be lost or unbounded.)
+Spins are not integrated: spheres keep their angular velocity, as in LAMMPS's and LIGGGHTS's fix
+nve/limit (LIGGGHTS 3.8.0's numbers recorded in plugins/fix_granular/tests/data/liggghts.cases.json,
+case nve_limit); a scene that needs them turning uses nve/sphere once the overlaps are gone.
 
-The number of capped updates (velocity or spin, each half-step, as LAMMPS's scalar of this fix) is
+The number of capped velocity updates (each half-step, as LAMMPS's scalar of this fix) is
 kept in ``count`` for the current run. The first step of a run on which the cap acts gives a
 warning; when it stops acting, a line says on which steps and how often it did.
 
@@ -30,11 +27,10 @@ Parameters:
 - ``absolute`` | ``radius_ratio`` (optional word, LIGGGHTS; default ``absolute``): whether
   :math:`x_{max}` is a distance or a multiple of each particle's radius.
 - ``XMAX``: largest displacement per step (distance units, or radii), > 0.
-- ``disc`` (optional word): discs' moment of inertia for the rotation (2-d only).
 
 Syntax::
 
-    fix ID GROUP nve/limit [absolute|radius_ratio] XMAX [disc]
+    fix ID GROUP nve/limit [absolute|radius_ratio] XMAX
 
 Examples::
 
@@ -49,7 +45,6 @@ from numba import njit
 from pdps_core.api import Fix, StyleArgs, observables, param
 
 from ._common import require_radii, require_spheres
-from .nve_sphere import inertia_factor
 
 LIMIT_STYLES = ("absolute", "radius_ratio")
 
@@ -87,49 +82,28 @@ def limited_kick(x, v, f, mass, radius, mask, groupbit, nlocal, dt, xmax, per_ra
     return capped
 
 
-@njit(cache=True)
-def limited_spin(omega, torque, mass, radius, mask, groupbit, nlocal, dt, xmax, per_radius, inertia, ftm2v):
-    """Half-kick of omega by the torque, then cap the surface speed |omega| R at xmax/dt.
-    Returns how many spins were capped."""
-    half = 0.5 * dt * ftm2v
-    capped = 0
-    for i in range(nlocal):
-        if mask[i] & groupbit:
-            reach = xmax * radius[i] if per_radius else xmax
-            dtirotate = half / (inertia * mass[i] * radius[i] * radius[i])
-            for d in range(3):
-                omega[i, d] += dtirotate * torque[i, d]
-            if _cap(omega, i, reach / (dt * radius[i])):
-                capped += 1
-    return capped
-
-
 class FixNVELimit(Fix):
     name = "nve/limit"
     time_integrate = True
-    usage = "fix ID GROUP nve/limit [absolute|radius_ratio] XMAX [disc]"
+    usage = "fix ID GROUP nve/limit [absolute|radius_ratio] XMAX"
 
     class Args(StyleArgs):
         # LAMMPS writes "nve/limit XMAX", LIGGGHTS "nve/limit absolute|radius_ratio XMAX"
         limitstyle: Literal["absolute", "radius_ratio"] = param("absolute")
         xmax: float = param(gt=0, unit="distance")     # or radii, with radius_ratio
-        inertia: Literal["disc"] | None = None
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        p = sim.particles
         self.per_radius = args.limitstyle == "radius_ratio"
         if self.per_radius:
             require_spheres(sim, "fix nve/limit radius_ratio")
-        self.rotate = all(p.has(name) for name in ("radius", "rmass", "omega", "torque"))
-        self.inertia = inertia_factor(sim, args.inertia == "disc", "fix nve/limit")
         self.count = 0
         self._capped_now = 0
         self._warned = False
         self._episode = None        # [first step, last step, capped updates] while the cap acts
 
     def setup(self, sim):
-        if self.rotate or self.per_radius:
+        if self.per_radius:
             require_radii(sim, self.group, "fix nve/limit")
         self.count = 0
         self._warned = False
@@ -145,9 +119,6 @@ class FixNVELimit(Fix):
         groupbit = sim.groups.bit(self.group)
         capped = limited_kick(p.x, p.v, p.f, mass, radius, p.mask, groupbit, p.nlocal, sim.dt,
                               self.args.xmax, self.per_radius, drift, sim.units.ftm2v)
-        if self.rotate:
-            capped += limited_spin(p.omega, p.torque, mass, p.radius, p.mask, groupbit, p.nlocal,
-                                   sim.dt, self.args.xmax, self.per_radius, self.inertia, sim.units.ftm2v)
         return capped
 
     def initial_integrate(self, sim):

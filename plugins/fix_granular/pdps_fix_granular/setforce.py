@@ -23,6 +23,8 @@ Examples::
 """
 
 import math
+
+import numpy as np
 from typing import Annotated
 
 from pydantic import BeforeValidator
@@ -59,14 +61,19 @@ class FixSetForce(ForceFix):
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
+        self.original = np.zeros(3)
         if args.region is not None:
             sim.region(args.region)
         self.components = [(d, value) for d, value in enumerate((args.fx, args.fy, args.fz))
                            if value is not None]
 
+    def vector(self, sim):
+        return self.original_force(sim)
+
     def post_force(self, sim):
         p = sim.particles
         selected = chosen(sim, self.group, self.args.region)
         f = p.f[: p.nlocal]
+        self.keep_original(f, selected)
         for d, value in self.components:
             f[selected, d] = value

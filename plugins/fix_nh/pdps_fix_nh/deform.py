@@ -29,7 +29,7 @@ change dL/dt (so a streaming profile stays continuous across the face), ``remap 
 particles alone. The rate is LAMMPS's: constant for the linear styles, R L before the step's change
 for trate, 2 pi A / TP cos(2 pi t / TP) for wiggle, v_R for variable, and for volume LAMMPS's
 (L_new / L_old - 1) / dt (a relative rate, as LAMMPS 2025 has it). ``units lattice`` (LAMMPS's
-default) multiplies final, delta and vel distances and wiggle amplitudes by the lattice spacing (1
+default; LIGGGHTS 3.8.0's default is box, measured; its manual says lattice) multiplies final, delta and vel distances and wiggle amplitudes by the lattice spacing (1
 without a lattice command); ``units box`` takes them as they are (variable lengths are always box
 units). ``flip`` is accepted and has no effect (it concerns tilted boxes, which pdps does not have).
 
@@ -108,7 +108,7 @@ class FixDeform(Fix):
         z: Change | None = keyword(None, unit=CHANGE_UNITS)
         remap: Literal["x", "v", "none"] = keyword("x")
         flip: Literal["yes", "no"] = keyword("yes")     # of tilted boxes: read, no effect here
-        units: Literal["lattice", "box"] = keyword("lattice")
+        units: Literal["box", "lattice"] | None = keyword(None)    # the dialect's default
 
     @classmethod
     def check_args(cls, args):
@@ -131,7 +131,7 @@ class FixDeform(Fix):
                 self.axes[d] = ("volume", [])
             elif change is not None:
                 self.axes[d] = (change[0], list(change[1:]))
-        self.remap, self.units = args.remap, args.units
+        self.remap, self.units = args.remap, args.units or sim.dialect.region_units
         self.links = {d: self._volume_links(d) for d, (style, _) in self.axes.items() if style == "volume"}
         self.deformed_axes = tuple(sorted(self.axes))
         if self.remap == "v":

@@ -23,7 +23,7 @@ A component given as NULL (and every component a variable leaves NULL) is integr
 does it, forces and all. The new position is put at the periodic image nearest the old one (LAMMPS's
 remap_near), so image flags stay right. The time origin is a step, as LAMMPS keeps it: after
 ``reset_timestep`` the path is where that step puts it (measured: LAMMPS's particles jump there
-too). ``units lattice`` (LAMMPS's default; LIGGGHTS's too) scales
+too). ``units lattice`` (LAMMPS's default; LIGGGHTS 3.8.0's default is box, measured; its manual says lattice) scales
 VX..VZ, AX..AZ and P by the lattice spacings (1 without a lattice command: LAMMPS's lattice none
 1.0); ``units box`` takes them as distances. The PDPS dialect's
 default is box, as for its regions.

@@ -1,8 +1,9 @@
 r"""Compute ``wall/gran/local``: one row per particle-wall contact of a ``fix wall/gran model ...``
 (LIGGGHTS's compute wall/gran/local), for ``dump local``.
 
-The compute finds the fix wall/gran of LIGGGHTS's spelling (there must be exactly one; name another
-with ``wall FIX_ID``) and, when read, recomputes the contacts of the current step without changing
+The compute finds the fix wall/gran of LIGGGHTS's spelling: the one mesh wall when there is one
+(LIGGGHTS's reads mesh walls only, and leaves a primitive one beside it out), else the one wall
+(several: name one with ``wall FIX_ID``), and, when read, recomputes the contacts of the current step without changing
 forces or contact histories. For each contact of a particle of the compute's group, the columns
 chosen by the keywords, always in LIGGGHTS's order whatever order they are given in:
 
@@ -75,6 +76,9 @@ class ComputeWallGranLocal(Compute):
                 raise ScriptError(f"compute {self.id}: fix {self.wall_id} is not a fix wall/gran model ...")
             return fix
         walls = [fix for fix in sim.fixes.values() if isinstance(fix, FixWallGranModel)]
+        meshes = [fix for fix in walls if fix.args.mesh is not None]
+        if len(meshes) == 1:
+            return meshes[0]
         if len(walls) != 1:
             found = ", ".join(fix.id for fix in walls) or "none"
             raise ScriptError(f"compute {self.id} (wall/gran/local) needs exactly one fix wall/gran model ... "

@@ -7,19 +7,24 @@ vertices :math:`\mathbf{X}_0` as they were when the fix was defined, with t the 
 - ``linear VX VY VZ``: :math:`\mathbf{X} = \mathbf{X}_0 + \mathbf{V}t` (velocity units).
 - ``linear/variable v_VX v_VY v_VZ``: the same with equal-style variables, evaluated each step:
   :math:`\mathbf{d} \mathrel{+}= \mathbf{V}(t)\,\Delta t`.
-- ``wiggle amplitude AX AY AZ period T``: :math:`\mathbf{X} = \mathbf{X}_0 + \mathbf{A}\sin\omega t`.
+- ``wiggle amplitude AX AY AZ period T``: the velocity :math:`\mathbf{A}\omega\cos\omega t`.
 - ``rotate origin PX PY PZ axis AX AY AZ period T``: turns about the axis through P by
   :math:`\omega t` (right-hand rule about the axis).
 - ``rotate/variable origin PX PY PZ axis AX AY AZ omega v_W``: turns at the angular velocity of an
   equal-style variable (rad/time): :math:`\varphi \mathrel{+}= W(t)\,\Delta t`.
-- ``riggle origin PX PY PZ axis AX AY AZ period T amplitude DEG``: turns to the angle
-  :math:`\varphi = A\sin\omega t` (A in degrees).
-- ``viblin axis AX AY AZ order n amplitude C1..Cn phase p1..pn period T``:
-  :math:`\mathbf{X} = \mathbf{X}_0 + \hat{\mathbf{D}}\sum_{k=1}^n C_k\cos(k\omega t + p_k)` (phases in
-  rad), as the manual writes it: the mesh jumps by :math:`\hat{\mathbf{D}}\sum C_k\cos p_k` when the
-  run starts unless the phases make that zero (use :math:`p_k = -\pi/2` for a start at rest).
+- ``riggle origin PX PY PZ axis AX AY AZ period T amplitude DEG``: turns at the angular velocity
+  :math:`A\omega\cos\omega t` (A in degrees).
+- ``viblin axis AX AY AZ order n amplitude C1..Cn phase p1..pn period T``: the velocity
+  :math:`-\hat{\mathbf{D}}\sum_{k=1}^n C_k k\omega\sin(k\omega t + p_k)` (phases in rad).
 - ``vibrot origin PX PY PZ axis AX AY AZ order n amplitude C1..Cn phase p1..pn period T``: turns
-  about the axis through P to the angle :math:`\varphi = \sum_k C_k\cos(k\omega t + p_k)` (rad).
+  about the axis through P at the angular velocity :math:`-\sum_k C_k k\omega\sin(k\omega t + p_k)`.
+
+The oscillating motions (wiggle, riggle, viblin, vibrot) are integrated as LIGGGHTS 3.8.0 integrates
+them (its source, and its numbers recorded in plugins/fix_wall/tests/data/liggghts.cases.json, case
+move_mesh_wiggle): each step moves the mesh by the velocity at the step's end times the timestep,
+:math:`\mathbf{d} \mathrel{+}= \dot{\mathbf{d}}(t + \Delta t)\,\Delta t`, so the mesh starts from where
+it is, without the jump :math:`\hat{\mathbf{D}}\sum C_k\cos p_k` the manual's viblin formula has, and
+drifts from :math:`\mathbf{A}\sin\omega t` by :math:`O(\Delta t)` as LIGGGHTS's does.
 
 The wall velocity each contact law sees is the time derivative of this motion at the contact point.
 Several ``move/mesh`` on one mesh are superposed: each moves in the frame carried along by the ones
@@ -57,6 +62,9 @@ from .mesh import rotation_matrix, unit
 MAX_ORDER = 10
 STILL, NO_TURN = np.eye(3), np.zeros((3, 3))    # read only: the pose of a translation
 STILL.flags.writeable = False
+# the motions integrated step by step from their velocity (LIGGGHTS's), and those that turn the mesh
+OSCILLATIONS = ("wiggle", "riggle", "viblin", "vibrot")
+TURNS = ("rotate/variable", "riggle", "vibrot")
 # the keywords each motion takes (all of them, in any order)
 MOTION_WORDS = {"linear": (), "linear/variable": (), "wiggle": ("amplitude", "period"),
                 "rotate": ("origin", "axis", "period"), "rotate/variable": ("origin", "axis", "omega"),
@@ -193,22 +201,21 @@ class FixMoveMesh(Fix):
         style = self.style
         if style == "linear":
             return still, self.velocity * t, zero, self.velocity.copy()
-        if style == "linear/variable":
-            return still, self.integrated.copy(), zero, self.rate.copy()
-        if style == "wiggle":
-            return (still, self.amplitude * math.sin(self.omega * t), zero,
-                    self.amplitude * self.omega * math.cos(self.omega * t))
         if style == "rotate":
             return turn_about(self.axis, self.origin, self.omega * t, self.omega)
-        if style == "rotate/variable":
+        if style in TURNS:
             return turn_about(self.axis, self.origin, self.integrated[0], self.rate[0])
+        return still, self.integrated.copy(), zero, self.rate.copy()
+
+    def _oscillation_rate(self, t):
+        """The velocity (wiggle, viblin) or [angular velocity, 0, 0] (riggle, vibrot) at time t."""
+        style = self.style
+        if style == "wiggle":
+            return self.amplitude * self.omega * math.cos(self.omega * t)
         if style == "riggle":
-            return turn_about(self.axis, self.origin, self.angle_amplitude * math.sin(self.omega * t),
-                              self.angle_amplitude * self.omega * math.cos(self.omega * t))
-        value, rate = self._series_value(t)
-        if style == "viblin":
-            return still, self.direction * value, zero, self.direction * rate
-        return turn_about(self.axis, self.origin, value, rate)
+            return np.array([self.angle_amplitude * self.omega * math.cos(self.omega * t), 0.0, 0.0])
+        rate = self._series_value(t)[1]
+        return self.direction * rate if style == "viblin" else np.array([rate, 0.0, 0.0])
 
     def _advance(self, sim):
         dt = sim.dt
@@ -223,6 +230,9 @@ class FixMoveMesh(Fix):
             if not math.isfinite(rate):
                 raise ScriptError(f"fix {self.id} (move/mesh): omega variable is not finite ({rate})")
             self.rate = np.array([rate, 0.0, 0.0])
+            self.integrated = self.integrated + self.rate * dt
+        elif self.style in OSCILLATIONS:
+            self.rate = self._oscillation_rate(self.elapsed + dt)
             self.integrated = self.integrated + self.rate * dt
         self.elapsed += dt
 

@@ -1,0 +1,331 @@
+"""Record LIGGGHTS 3.8.0's thermo for small deterministic scenes of pdps's own, one per style or
+command of the LIGGGHTS manual, which tests/test_recorded_thermo.py makes pdps print again.
+
+    python benchmarks/liggghts_references/cases.py [LIGGGHTS]
+
+Every scene (LIGGGHTS syntax) starts from the same bed: 27 spheres on a simple-cubic lattice of
+spacing 0.02 m in a closed box, two types (diameters 10 and 12 mm, densities 2500 and 1500 kg/m^3),
+falling with velocities that grow with height and sideways ones that grow with x, onto a hertz
+wall at z = 0, with pair gran hertz/history between them: the upper spheres catch the lower ones
+and the bottom row meets the floor in the last third of the run, so contacts, walls and the
+integrator all act while the scene is still far from chaos. Each case adds the lines of what it
+checks and its thermo columns (every value at %20.15g); the table of each plugin is
+plugins/NAME/tests/data/liggghts.cases.json (the core's commands': tests/data/liggghts.cases.json)
+with LIGGGHTS's rows beside it (liggghts.txt), every case naming the manual items it checks.
+"""
+
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lammps_references"))
+from lammps_run import write_case_table  # noqa: E402
+
+from pdps_core.testing import liggghts_material  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+LIGGGHTS = str(ROOT.parent / "shared" / "bench" / "liggghts")
+PROGRAM = "LIGGGHTS 3.8.0 (Debian's liggghts)"
+
+HEAD = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region box block -0.05 0.05 -0.05 0.05 0 0.1 units box
+create_box 2 box
+neighbor 0.002 bin
+neigh_modify delay 0
+""" + liggghts_material((5.e6, 1.e7), (0.45, 0.3), (0.9, 0.8, 0.8, 0.7), (0.3, 0.4, 0.4, 0.5)) + """\
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 1e-5
+"""
+BED = """region bed block -0.03 0.03 -0.03 0.03 0.0 0.06 units box
+lattice sc 0.02 origin 0.5 0.5 0.5
+create_atoms 1 region bed
+region top block INF INF INF INF 0.04 INF units box
+group top region top
+set group top type 2
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.012 density 1500
+velocity all ramp vz -0.2 -1.0 z 0.01 0.05 units box
+velocity all ramp vx -0.05 0.05 x -0.02 0.02 sum yes units box
+fix floor all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+"""
+SUMS = """compute rke all erotate/sphere
+compute sum all reduce sum x y z vx vy vz
+"""
+COLUMNS = "step atoms ke c_rke c_sum[1] c_sum[2] c_sum[3] c_sum[4] c_sum[5] c_sum[6]"
+
+
+def thermo(columns=""):
+    return (f"thermo_style custom {COLUMNS} {columns}".rstrip() + "\n"
+            "thermo_modify format float %20.15g\nthermo 300\n")
+
+
+def floor_stl(z):
+    """An ASCII STL: the square |x|, |y| <= 0.045 at height ``z``, of two triangles."""
+    corners = [(-0.045, -0.045), (0.045, -0.045), (0.045, 0.045), (-0.045, 0.045)]
+    facets = []
+    for a, b, c in ((0, 1, 2), (0, 2, 3)):
+        vertices = "".join(f"      vertex {corners[k][0]} {corners[k][1]} {z}\n" for k in (a, b, c))
+        facets.append(f"  facet normal 0 0 1\n    outer loop\n{vertices}    endloop\n  endfacet\n")
+    return "solid floor\n" + "".join(facets) + "endsolid floor\n"
+
+
+def mesh_floor(stl="floor.stl"):
+    """A mesh floor (the square of ``stl``) above the primitive one, which the spheres then never reach."""
+    return (f"fix cad all mesh/surface file {stl} type 1\n"
+            "fix meshfloor all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n")
+
+
+MESH_FLOOR = mesh_floor()
+
+
+@dataclass
+class Case:
+    owner: str            # the plugin whose table holds it, or "core"
+    checks: tuple         # the manual items it checks: "fix viscous", "compute reduce", "run"
+    body: str             # the lines after the head
+    ranks: bool = False
+    files: dict = field(default_factory=dict)
+
+
+def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
+    """The bed, ``lines``, the integrator, the sums and thermo with ``columns`` added, then run."""
+    return BED + SUMS + lines + integrate + thermo(columns) + f"run {steps}\n"
+
+
+CASES = {
+    "bed": Case("fix_granular", ("fix nve/sphere", "fix wall/gran", "gran model hertz", "gran tangential history",
+                                 "compute erotate/sphere", "compute reduce", "velocity", "lattice", "create_atoms",
+                                 "set", "group", "region", "create_box", "thermo_style", "run", "timestep"),
+                bed(""), ranks=True),
+    "gravity_viscous": Case("fix_granular", ("fix gravity", "fix viscous"),
+                            bed("fix grav all gravity 9.81 vector 0.0 0.0 -1.0\nfix visc all viscous 0.0001\n")),
+    "addforce": Case("fix_granular", ("fix addforce", "variable"),
+                     bed("variable fx equal 0.002*sin(step*0.003)\nfix push top addforce v_fx 0.0 0.0005\n",
+                         "f_push[1] f_push[2] f_push[3]")),
+    "setforce": Case("fix_granular", ("fix setforce",),
+                     bed("fix hold top setforce 0.0 NULL NULL\n", "f_hold[1] f_hold[2] f_hold[3]")),
+    "aveforce": Case("fix_granular", ("fix aveforce",),
+                     bed("fix av top aveforce NULL NULL -0.01\n", "f_av[1] f_av[2] f_av[3]")),
+    "lineforce": Case("fix_granular", ("fix lineforce",), bed("fix line all lineforce 1.0 1.0 0.0\n")),
+    "planeforce": Case("fix_granular", ("fix planeforce",), bed("fix plane all planeforce 0.0 1.0 1.0\n")),
+    "freeze": Case("fix_granular", ("fix freeze",),
+                   bed("region low block INF INF INF INF INF 0.02 units box\ngroup low region low\n"
+                       "fix fr low freeze\n", "f_fr[1] f_fr[2] f_fr[3]")),
+    "nve_limit": Case("fix_granular", ("fix nve/limit",), bed("", integrate="fix integr all nve/limit absolute 0.000005\n")),
+    "spring_self": Case("fix_granular", ("fix spring/self",), bed("fix tether all spring/self 20.0\n", "f_tether")),
+    "spring_self_xy": Case("fix_granular", ("fix spring/self",), bed("fix tether all spring/self 20.0 xy\n", "f_tether")),
+    "drag": Case("fix_granular", ("fix drag",),
+                 bed("fix pull top drag 0.0 0.0 0.0 0.002 0.001\n", "f_pull[1] f_pull[2] f_pull[3]")),
+    "store_force": Case("fix_granular", ("fix store/force",),
+                        bed("fix sf all store/force\ncompute sf all reduce sum f_sf[1] f_sf[2] f_sf[3]\n",
+                            "c_sf[1] c_sf[2] c_sf[3]")),
+    "check_timestep": Case("fix_granular", ("fix check/timestep/gran",),
+                           bed("fix ts all check/timestep/gran 300 0.1 0.1\n", "f_ts[1] f_ts[2] f_ts[3]")),
+    "nve": Case("fix_nve", ("fix nve",), bed("", integrate="fix integr all nve\n")),
+    "nve_noforce": Case("fix_nve", ("fix nve/noforce",),
+                        bed("", integrate="fix integr top nve/sphere\nfix fly all nve/noforce\n")),
+    "momentum": Case("fix_simple", ("fix momentum",), bed("fix mom all momentum 200 linear 1 1 0 angular\n")),
+    "ke_computes": Case("compute_basic", ("compute ke", "compute com", "compute gyration", "compute msd",
+                                          "compute displace/atom", "compute property/atom"),
+                        bed("compute k all ke\ncompute c all com\ncompute g top gyration\ncompute m all msd\n"
+                            "compute d all displace/atom\n"
+                            "compute p all property/atom vx omegax radius mass\n"
+                            "compute ds all reduce sum c_d[1] c_d[2] c_d[3] c_d[4] c_p[1] c_p[2] c_p[3] c_p[4]\n",
+                            "c_k c_c[1] c_c[2] c_c[3] c_g c_m[1] c_m[3] c_m[4] "
+                            "c_ds[1] c_ds[2] c_ds[3] c_ds[4] c_ds[5] c_ds[6] c_ds[7] c_ds[8]")),
+    "reduce_region": Case("compute_basic", ("compute reduce/region",),
+                          bed("region half block 0.0 INF INF INF INF INF units box\n"
+                              "compute rr all reduce/region half sum x vz\ncompute mx all reduce/region half max vz\n",
+                              "c_rr[1] c_rr[2] c_mx")),
+    "energy_computes": Case("compute_energy", ("compute erotate", "compute erotate/sphere/atom", "compute ke/atom",
+                                               "compute pe"),
+                            bed("compute er all erotate\ncompute era all erotate/sphere/atom\ncompute ka all ke/atom\n"
+                                "compute pe all pe\ncompute es all reduce sum c_era c_ka\n",
+                                "c_er c_es[1] c_es[2] c_pe")),
+    "pressure": Case("compute_thermo", ("compute pressure",),
+                     bed("compute tt all temp\ncompute pp all pressure tt\ncompute pv all pressure tt virial\n",
+                         "c_tt c_pp c_pv c_pp[1] c_pp[3] c_pp[4]")),
+    "coord": Case("compute_coord", ("compute coord/atom",),
+                  bed("compute co all coord/atom 0.0125\ncompute cs all reduce sum c_co\n", "c_cs")),
+    # not contact/atom/gran: LIGGGHTS 3.8.0's counts 16 pairs at step 2400 that neither it nor
+    # pair/gran/local finds touching (its history flags of pairs about to touch)
+    "contacts": Case("compute_gran_local", ("compute contact/atom", "compute pair/gran/local"),
+                     bed("compute ca all contact/atom\n"
+                         "compute pl all pair/gran/local force delta\n"
+                         "compute cs all reduce sum c_ca\ncompute ps all reduce sum c_pl[1] c_pl[2] c_pl[3] c_pl[4]\n"
+                         "compute pm all reduce max c_pl[4]\n",
+                         "c_cs c_ps[1] c_ps[2] c_ps[3] c_ps[4] c_pm")),
+    "coord_mix": Case("compute_coord", ("compute coord/atom",),
+                      bed("compute co all coord/atom 0.0125 mix yes\ncompute ct all coord/atom 0.0125 1 2\n"
+                          "compute cs all reduce sum c_co c_ct[1] c_ct[2]\n", "c_cs[1] c_cs[2] c_cs[3]")),
+    "wall_local": Case("compute_gran_local", ("compute wall/gran/local",),
+                       bed(MESH_FLOOR + "compute wl all wall/gran/local force\n"
+                           "compute ws all reduce sum c_wl[1] c_wl[2] c_wl[3]\n", "c_ws[1] c_ws[2] c_ws[3]"),
+                       files={"floor.stl": floor_stl(0.002)}),
+    "ave_time": Case("analyze_ave", ("fix ave/time",),
+                     bed("variable z equal c_sum[3]\n"
+                         "fix at all ave/time 10 30 300 c_rke v_z ave running\n"
+                         "fix aw all ave/time 10 30 300 c_rke v_z ave window 3\n",
+                         "f_at[1] f_at[2] f_aw[1] f_aw[2]")),
+    "ave_atom": Case("analyze_ave", ("fix ave/atom",),
+                     bed("fix aa all ave/atom 10 30 300 vz x\ncompute as all reduce sum f_aa[1] f_aa[2]\n",
+                         "c_as[1] c_as[2]")),
+    "move": Case("fix_nve", ("fix move",),
+                 bed("group bottom subtract all top\nfix mv top move linear 0.05 NULL -0.5\n",
+                     integrate="fix integr bottom nve/sphere\n")),
+    "move_wiggle": Case("fix_nve", ("fix move",),
+                        bed("group bottom subtract all top\n"
+                            "fix mv top move wiggle 0.0 0.004 -0.01 0.02 units box\n",
+                            integrate="fix integr bottom nve/sphere\n")),
+    "move_rotate": Case("fix_nve", ("fix move",),
+                        bed("group bottom subtract all top\n"
+                            "fix mv top move rotate 0.0 0.0 0.05 0 1 0 0.1 units box\n",
+                            integrate="fix integr bottom nve/sphere\n")),
+    "move_mesh": Case("fix_wall", ("fix move/mesh", "fix mesh/surface"),
+                      bed(mesh_floor("lift.stl") + "fix lift all move/mesh mesh cad linear 0.0 0.0 0.2\n"),
+                      files={"lift.stl": floor_stl(0.002137)}),
+    "move_mesh_wiggle": Case("fix_wall", ("fix move/mesh",),
+                             bed(mesh_floor("lift.stl") + "fix shake all move/mesh mesh cad wiggle amplitude 0.0 0.0 "
+                                 "0.002 period 0.005\n"),
+                             files={"lift.stl": floor_stl(0.002137)}),
+    "mesh_planar": Case("fix_wall", ("fix mesh/surface/planar",),
+                        bed("fix cad all mesh/surface/planar file floor.stl type 1\n"
+                            "fix meshfloor all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"),
+                        files={"floor.stl": floor_stl(0.002)}),
+    "deform": Case("fix_nh", ("fix deform",),
+                   bed("fix squeeze all deform 1 x final -0.04 0.04 y final -0.045 0.045 remap x units box\n")),
+    "adapt_diameter": Case("fix_simple", ("fix adapt",),
+                           bed("variable d equal 0.01+0.004*step/3000\nfix grow all adapt 1 atom diameter v_d\n")),
+    "ave_spatial": Case("analyze_ave", ("fix ave/spatial",),
+                        bed("fix prof all ave/spatial 10 30 300 z lower 0.02 vz vx density/mass units box\n",
+                            "f_prof[1][1] f_prof[1][2] f_prof[1][3] f_prof[1][4] f_prof[1][5] f_prof[2][4] "
+                            "f_prof[3][3] f_prof[3][5]")),
+    "regions": Case("core", ("region", "compute reduce/region"),
+                    bed("region s sphere 0.0 0.0 0.03 0.02 units box\n"
+                        "region c cylinder z 0.01 0.0 0.015 INF INF units box\n"
+                        "region k cone z 0.0 0.0 0.01 0.03 0.0 0.06 units box\n"
+                        "region pl plane 0.0 0.0 0.02 0.0 0.3 1.0 units box\n"
+                        "region pr prism -0.03 0.02 -0.03 0.03 0.0 0.05 0.01 0.0 0.0 units box\n"
+                        "region u union 2 s c\nregion i intersect 2 k pl\n"
+                        "region o block -0.02 0.02 -0.02 0.02 0.0 0.04 side out units box\n"
+                        "compute rs all reduce/region s sum vz\ncompute rc all reduce/region c sum vz\n"
+                        "compute rk all reduce/region k sum vz\ncompute rp all reduce/region pl sum vz\n"
+                        "compute rr all reduce/region pr sum vz\ncompute ru all reduce/region u sum vz\n"
+                        "compute ri all reduce/region i sum vz\ncompute ro all reduce/region o sum vz\n",
+                        "c_rs c_rc c_rk c_rp c_rr c_ru c_ri c_ro")),
+    "displace_delete": Case("core", ("displace_atoms", "delete_atoms"),
+                            bed("displace_atoms top move 0.003 -0.002 0.004 units box\n"
+                                "region corner block 0.0 INF 0.0 INF INF INF units box\n"
+                                "delete_atoms region corner\n")),
+    "runs": Case("core", ("reset_timestep", "unfix", "uncompute", "run"),
+                 BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
+                 + thermo() + "run 1200\nunfix grav\nreset_timestep 5000\nrun 900\n"
+                 "compute extra all ke\nuncompute extra\nrun 900\n"),
+    "variables": Case("core", ("variable", "if", "label", "jump", "next", "print"),
+                      BED + SUMS + "fix integr all nve/sphere\n"
+                      "variable zc equal c_sum[3]/atoms\nvariable big equal (ke>0.01)*2+(ke<=0.01)\n"
+                      + thermo("v_zc v_big") +
+                      "variable k loop 3\nlabel again\n"
+                      "if \"${k} == 2\" then \"fix grav all gravity 9.81 vector 0.0 0.0 -1.0\" "
+                      "else \"print 'no gravity in run ${k}'\"\n"
+                      "run 1000\nif \"${k} == 2\" then \"unfix grav\"\nnext k\njump SELF again\n"),
+    "thermo_settings": Case("core", ("thermo", "thermo_modify", "neighbor", "neigh_modify", "atom_modify",
+                                     "communicate", "newton", "run_style", "compute_modify",
+                                     "fix_modify", "echo", "units", "boundary", "timestep"),
+                            BED + SUMS + "fix integr all nve/sphere\nneighbor 0.003 bin\n"
+                            "neigh_modify every 1 delay 0 check yes\nrun_style verlet\n"
+                            "echo none\ncompute tmp all temp\ncompute_modify tmp extra 0\n"
+                            "fix_modify integr energy no\n"
+                            + thermo("c_tmp") + "thermo_modify lost ignore norm no\nthermo 200\nrun 3000\n"),
+}
+
+
+def thermo_rows(log):
+    """Every row of every thermo table of a log (the repeated first row of each later run included),
+    split into words; lines a fix or a warning printed inside a table are left out."""
+    rows, inside = [], False
+    for line in log.splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            inside = True
+        elif line.startswith("Loop time"):
+            inside = False
+        elif inside and words and words[0].isdigit():
+            try:
+                [float(w) for w in words]
+            except ValueError:
+                continue
+            rows.append(words)
+    return rows
+
+
+def run_liggghts(script, files, label):
+    with tempfile.TemporaryDirectory() as folder:
+        for name, text in files.items():
+            (Path(folder) / name).write_text(text)
+        (Path(folder) / "in.case").write_text(script)
+        done = subprocess.run([LIGGGHTS, "-in", "in.case", "-log", "log.case", "-echo", "none"],
+                              cwd=folder, capture_output=True, text=True, errors="replace")
+        log = (Path(folder) / "log.case").read_text(errors="replace") if (Path(folder) / "log.case").exists() else ""
+    if done.returncode != 0 or "ERROR" in log:
+        error = next((line for line in log.splitlines() if line.startswith("ERROR")), done.stderr[-300:])
+        print(f"LIGGGHTS failed ({label}): {error}")
+        return None
+    return log
+
+
+def folder_of(owner):
+    return ROOT / ("tests" if owner == "core" else f"plugins/{owner}/tests") / "data"
+
+
+def main(only=()):
+    failed = []
+    owners = sorted({c.owner for c in CASES.values()})
+    for owner in owners:
+        cases = {name: c for name, c in CASES.items() if c.owner == owner}
+        folder = folder_of(owner)
+        rows_path = folder / "liggghts.txt"
+        old = {}
+        if only and rows_path.exists():
+            for line in rows_path.read_text().splitlines():
+                old.setdefault(line.split("\t")[0], []).append(line)
+        rows = []
+        for name, c in cases.items():
+            if only and name not in only and name in old:
+                rows += old[name]
+                continue
+            log = run_liggghts(HEAD + c.body, c.files, name)
+            if log is None:
+                failed.append(name)
+                continue
+            found = [f"{name}\t" + "\t".join(words) for words in thermo_rows(log)]
+            if not found:
+                sys.exit(f"{name}: no thermo in LIGGGHTS's log")
+            rows += found
+            print(f"{owner}:{name}: {len(found)} rows")
+        files = sorted({n for c in cases.values() for n in c.files})
+        folder.mkdir(parents=True, exist_ok=True)
+        for c in cases.values():
+            for n, text in c.files.items():
+                (folder / n).write_text(text)
+        rows_path.write_text("\n".join(rows) + "\n")
+        write_case_table(folder / "liggghts.cases.json", __file__, "liggghts.txt", files,
+                         {name: HEAD + c.body for name, c in cases.items()}, rtol=1e-8, atol=1e-13,
+                         ranks=[n for n, c in cases.items() if c.ranks], dialect="liggghts", program=PROGRAM,
+                         checks={name: c.checks for name, c in cases.items()})
+    if failed:
+        sys.exit(f"LIGGGHTS ran none of {', '.join(failed)}: mend them or take them out")
+
+
+if __name__ == "__main__":
+    args = [a for a in sys.argv[1:] if not a.startswith("--only=")]
+    LIGGGHTS = args[0] if args else LIGGGHTS
+    main(tuple(a[len("--only="):] for a in sys.argv[1:] if a.startswith("--only=")))
