@@ -65,6 +65,12 @@ CHECKED = {
     ("fix", "particledistribution/discrete"): "plugins/fix_insert/tests/test_distributions.py",
     ("thermo_modify", None): "tests/test_loop.py (lost); corpus (every tutorial's thermo)",
 }
+# the sub-models, each in the pair, wall and mesh cases of plugins/pair_gran/tests/data/liggghts_submodels.json
+SUBMODEL_CASES = "plugins/pair_gran/tests (liggghts_submodels.json: the pair, wall and mesh cases that name it)"
+for _sub in ("model hertz", "model hooke", "model hooke/stiffness", "model hertz/stiffness", "tangential history",
+             "tangential no_history", "rolling_friction cdt", "rolling_friction epsd", "rolling_friction epsd2",
+             "rolling_friction epsd3", "cohesion sjkr", "cohesion sjkr2", "surface sphere"):
+    CHECKED.setdefault(("gran", _sub), SUBMODEL_CASES)
 
 
 def recorded_checks():
@@ -130,6 +136,8 @@ def manual_keywords(section):
 
 # the manual's misspellings of a keyword LIGGGHTS's code reads (fix_insert.cpp reads maxattempt)
 MANUAL_SPELLING = {"maxattampt": "maxattempt"}
+# an item's words the manual calls keywords that its Args read as positional values: coord/atom's typeN
+ITEM_SPELLING = {("compute", "coord/atom"): {"type1": "types", "type2": "types"}}
 
 
 def literal_words(annotation):
@@ -172,7 +180,8 @@ def keyword_answer(kind, name, section):
     read = read_keywords(cls)
     if read is None:
         return "keywords: not declared"
-    missing = [word for word in wanted if MANUAL_SPELLING.get(word, word) not in read]
+    spelling = {**MANUAL_SPELLING, **ITEM_SPELLING.get((kind, name), {})}
+    missing = [word for word in wanted if spelling.get(word, word) not in read]
     if not missing:
         return f"keywords: all {len(wanted)}"
     return f"keywords: {len(wanted) - len(missing)} of {len(wanted)}, not {', '.join(missing)}"

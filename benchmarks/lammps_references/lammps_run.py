@@ -102,7 +102,7 @@ def read_blocks(path):
 
 
 def write_case_table(path, recorder, reference, files, scripts, *, rtol=1e-9, atol=1e-12, ranks=(), restart=(),
-                     dialect="lammps", program=None, checks=None):
+                     dialect="lammps", program=None, checks=None, outputs=None):
     """Write the table tests/test_recorded_thermo.py runs: for each case of ``scripts`` {case: script
     as LAMMPS ran it}, the script and the files it reads (names in the table's folder), the rows file
     ``reference`` (beside the table) holding LAMMPS's thermo, and what else the case must satisfy:
@@ -110,11 +110,15 @@ def write_case_table(path, recorder, reference, files, scripts, *, rtol=1e-9, at
     go on from a restart file written half-way as it goes on in the same process. Tolerances are the table's;
     ``recorder``: the recording module's ``__file__``. A table of another program's numbers names it
     (``program``, "LIGGGHTS 3.8.0") and the dialect pdps reads its scripts in; ``checks`` {case: the
-    manual items it checks} goes into each case (benchmarks/liggghts_manual.py reads them)."""
+    manual items it checks} goes into each case (benchmarks/liggghts_manual.py reads them), and
+    ``outputs`` {case: {file: text}} the files the program wrote that pdps must write again."""
     cases = {case: {"script": script, "ranks": case in ranks, "restart": case in restart}
              for case, script in scripts.items()}
     for case, items in (checks or {}).items():
         cases[case]["checks"] = list(items)
+    for case, written in (outputs or {}).items():
+        if written:
+            cases[case]["outputs"] = dict(written)
     unknown = (set(ranks) | set(restart) | set(checks or ())) - set(cases)
     if unknown:
         sys.exit(f"{path}: no case named {sorted(unknown)[0]}")

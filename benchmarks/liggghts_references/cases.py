@@ -14,6 +14,7 @@ plugins/NAME/tests/data/liggghts.cases.json (the core's commands': tests/data/li
 with LIGGGHTS's rows beside it (liggghts.txt), every case naming the manual items it checks.
 """
 
+import json
 import subprocess
 import sys
 import tempfile
@@ -29,6 +30,7 @@ ROOT = Path(__file__).resolve().parents[2]
 LIGGGHTS = str(ROOT.parent / "shared" / "bench" / "liggghts")
 PROGRAM = "LIGGGHTS 3.8.0 (Debian's liggghts)"
 
+MATERIAL = liggghts_material((5.e6, 1.e7), (0.45, 0.3), (0.9, 0.8, 0.8, 0.7), (0.3, 0.4, 0.4, 0.5))
 HEAD = """atom_style granular
 atom_modify map array
 boundary f f f
@@ -39,7 +41,7 @@ region box block -0.05 0.05 -0.05 0.05 0 0.1 units box
 create_box 2 box
 neighbor 0.002 bin
 neigh_modify delay 0
-""" + liggghts_material((5.e6, 1.e7), (0.45, 0.3), (0.9, 0.8, 0.8, 0.7), (0.3, 0.4, 0.4, 0.5)) + """\
+""" + MATERIAL + """\
 pair_style gran model hertz tangential history
 pair_coeff * *
 timestep 1e-5
@@ -60,6 +62,42 @@ SUMS = """compute rke all erotate/sphere
 compute sum all reduce sum x y z vx vy vz
 """
 COLUMNS = "step atoms ke c_rke c_sum[1] c_sum[2] c_sum[3] c_sum[4] c_sum[5] c_sum[6]"
+
+
+# what a script gives again after read_restart or read_data (LIGGGHTS keeps none of it)
+AGAIN = """pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 1e-5
+fix floor all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+"""
+# a Lennard-Jones-units fluid of point particles (the styles LIGGGHTS shares with LAMMPS)
+ATOMIC = """units lj
+atom_style atomic
+atom_modify map array
+boundary p p p
+region box block 0 6 0 6 0 6
+create_box 2 box
+lattice sc 1.0
+create_atoms 1 box
+region half block 0 3 INF INF INF INF units box
+group half region half
+set group half type 2
+mass 1 1.0
+mass 2 2.0
+velocity all ramp vx -0.5 0.5 y 0 6 units box
+velocity all ramp vy -0.3 0.4 z 0 6 sum yes units box
+displace_atoms half move 0.1 0.05 0.0 units box
+neighbor 0.3 bin
+"""
+ATOMIC_RUN = """fix integr all nve
+timestep 0.005
+compute sum all reduce sum x y z vx vy vz
+compute pe all pe
+thermo_style custom step atoms ke c_pe c_sum[1] c_sum[2] c_sum[3] c_sum[4] c_sum[5] c_sum[6]
+thermo_modify format float %20.15g norm no
+thermo 100
+run 1000
+"""
 
 
 def thermo(columns=""):
@@ -93,6 +131,8 @@ class Case:
     body: str             # the lines after the head
     ranks: bool = False
     files: dict = field(default_factory=dict)
+    head: bool = True     # the granular head goes first
+    outputs: tuple = ()   # files the run writes, recorded for pdps to write again
 
 
 def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
@@ -245,6 +285,66 @@ CASES = {
                             "echo none\ncompute tmp all temp\ncompute_modify tmp extra 0\n"
                             "fix_modify integr energy no\n"
                             + thermo("c_tmp") + "thermo_modify lost ignore norm no\nthermo 200\nrun 3000\n"),
+    "rigid_single": Case("fix_rigid", ("fix rigid",),
+                         bed("group bottom subtract all top\nfix body top rigid single\n",
+                             integrate="fix integr bottom nve/sphere\n")),
+    "rigid_groups": Case("fix_rigid", ("fix rigid",),
+                         bed("region left block INF 0.0 INF INF 0.04 INF units box\ngroup left region left\n"
+                             "group right subtract top left\ngroup bottom subtract all top\n"
+                             "fix bodies top rigid group 2 left right\n",
+                             integrate="fix integr bottom nve/sphere\n")),
+    "heat_conduction": Case("fix_heat", ("fix heat/gran/conduction", "fix property/atom", "fix property/global"),
+                            BED + SUMS + "fix integr all nve/sphere\n"
+                            "fix k all property/global thermalConductivity peratomtype 5.0 20.0\n"
+                            "fix c all property/global thermalCapacity peratomtype 10.0 30.0\n"
+                            "fix ht all heat/gran/conduction initial_temperature 300.0\n"
+                            "fix mark all property/atom mark scalar yes no no 1.5\n"
+                            "compute ts all reduce sum f_Temp f_heatFlux f_mark\ncompute tm all reduce max f_Temp\n"
+                            + thermo("c_ts[1] c_ts[2] c_ts[3] c_tm") +
+                            # LIGGGHTS sets a property/atom only after a run 0 (before it, it aborts)
+                            "run 0\nset group top property/atom Temp 400.0\nset type 2 property/atom mark 2.0\n"
+                            "run 3000\n"),
+    "pair_none": Case("core", ("pair_style none", "pair_style"),
+                      bed("pair_style none\natom_modify sort 0 0.0\n")),
+    # a rigid layer that lands on the floor: LIGGGHTS's wall/gran takes the body's mass as pair gran does
+    "rigid_on_floor": Case("fix_rigid", ("fix rigid", "fix wall/gran"),
+                           bed("region low block INF INF INF INF INF 0.02 units box\ngroup low region low\n"
+                               "group rest subtract all low\nfix body low rigid single\n",
+                               integrate="fix integr rest nve/sphere\n")),
+    "restart": Case("core", ("write_restart", "read_restart", "clear"),
+                    BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
+                    "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"
+                    "communicate single vel yes\nread_restart bed.restart\nneighbor 0.002 bin\n"
+                    "neigh_modify delay 0\n" + MATERIAL + AGAIN + SUMS + "fix integr all nve/sphere\n"
+                    + thermo() + "run 1500\n"),
+    "data_file": Case("core", ("write_data", "read_data", "include", "atom_style", "boundary", "units"),
+                      BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
+                      "write_data bed.data\nclear\ninclude settings.in\nread_data bed.data\n"
+                      "neighbor 0.002 bin\nneigh_modify delay 0\n" + MATERIAL + AGAIN
+                      + "group top type 2\n" + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n",
+                      files={"settings.in": "atom_style granular\natom_modify map array\nboundary f f f\n"
+                                            "newton off\ncommunicate single vel yes\nunits si\n"}),
+    "atomic_soft": Case("pair_simple", ("pair_style soft", "pair_coeff", "mass", "atom_style", "dimension"),
+                        ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\n" + ATOMIC_RUN, head=False),
+    "atomic_hybrid": Case("pair_hybrid", ("pair_style hybrid",),
+                          ATOMIC + "pair_style hybrid soft 1.2 soft 1.0\npair_coeff 1 1 soft 1 3.0\n"
+                          "pair_coeff 2 2 soft 2 2.0\npair_coeff 1 2 soft 1 1.0\n" + ATOMIC_RUN, head=False),
+    "atomic_overlay": Case("pair_hybrid", ("pair_style hybrid/overlay",),
+                           ATOMIC + "pair_style hybrid/overlay soft 1.2 soft 1.0\npair_coeff * * soft 1 3.0\n"
+                           "pair_coeff 1 1 soft 2 2.0\n" + ATOMIC_RUN, head=False),
+    "enforce2d": Case("fix_simple", ("fix enforce2d", "dimension"),
+                      ATOMIC.replace("units lj\n", "units lj\ndimension 2\n").replace("boundary p p p", "boundary p p p")
+                      .replace("region box block 0 6 0 6 0 6", "region box block 0 6 0 6 -0.5 0.5")
+                      .replace("lattice sc 1.0", "lattice sq 1.0") + "pair_style soft 1.2\npair_coeff * * 3.0\n"
+                      + ATOMIC_RUN.replace("fix integr all nve\n", "fix integr all nve\nfix flat all enforce2d\n"),
+                      head=False),
+    "dumps": Case("dump_text", ("dump", "dump_modify", "undump", "write_dump"),
+                  bed("dump d all custom 500 bed.dump id type x y z vx vy vz radius mass\n"
+                      "dump_modify d sort id\n"
+                      "dump t top custom 1000 top.dump id x z omegax omegay omegaz fx fz\n"
+                      "dump_modify t sort id\n", steps=1500)
+                  + "undump t\nwrite_dump all custom last.dump id x y z vx vy vz modify sort id\nrun 1500\n",
+                  outputs=("bed.dump", "top.dump", "last.dump")),
 }
 
 
@@ -267,7 +367,10 @@ def thermo_rows(log):
     return rows
 
 
-def run_liggghts(script, files, label):
+def run_liggghts(script, files, label, outputs=()):
+    """LIGGGHTS's log of ``script`` (None when it fails), with the texts of the ``outputs`` it wrote
+    in ``written``."""
+    written.clear()
     with tempfile.TemporaryDirectory() as folder:
         for name, text in files.items():
             (Path(folder) / name).write_text(text)
@@ -275,11 +378,21 @@ def run_liggghts(script, files, label):
         done = subprocess.run([LIGGGHTS, "-in", "in.case", "-log", "log.case", "-echo", "none"],
                               cwd=folder, capture_output=True, text=True, errors="replace")
         log = (Path(folder) / "log.case").read_text(errors="replace") if (Path(folder) / "log.case").exists() else ""
+        for name in outputs:
+            if (Path(folder) / name).exists():
+                written[name] = (Path(folder) / name).read_text()
     if done.returncode != 0 or "ERROR" in log:
         error = next((line for line in log.splitlines() if line.startswith("ERROR")), done.stderr[-300:])
         print(f"LIGGGHTS failed ({label}): {error}")
         return None
     return log
+
+
+written = {}
+
+
+def script_of(case):
+    return (HEAD if case.head else "") + case.body
 
 
 def folder_of(owner):
@@ -294,6 +407,10 @@ def main(only=()):
         folder = folder_of(owner)
         rows_path = folder / "liggghts.txt"
         old = {}
+        table_path = folder / "liggghts.cases.json"
+        recorded = {}
+        if only and table_path.exists():
+            recorded = {n: e.get("outputs", {}) for n, e in json.loads(table_path.read_text())["cases"].items()}
         if only and rows_path.exists():
             for line in rows_path.read_text().splitlines():
                 old.setdefault(line.split("\t")[0], []).append(line)
@@ -302,7 +419,11 @@ def main(only=()):
             if only and name not in only and name in old:
                 rows += old[name]
                 continue
-            log = run_liggghts(HEAD + c.body, c.files, name)
+            log = run_liggghts(script_of(c), c.files, name, c.outputs)
+            if set(written) != set(c.outputs):
+                print(f"LIGGGHTS wrote none of {sorted(set(c.outputs) - set(written))} ({name})")
+                log = None
+            recorded[name] = dict(written)
             if log is None:
                 failed.append(name)
                 continue
@@ -318,9 +439,10 @@ def main(only=()):
                 (folder / n).write_text(text)
         rows_path.write_text("\n".join(rows) + "\n")
         write_case_table(folder / "liggghts.cases.json", __file__, "liggghts.txt", files,
-                         {name: HEAD + c.body for name, c in cases.items()}, rtol=1e-8, atol=1e-13,
+                         {name: script_of(c) for name, c in cases.items()}, rtol=1e-8, atol=1e-13,
                          ranks=[n for n, c in cases.items() if c.ranks], dialect="liggghts", program=PROGRAM,
-                         checks={name: c.checks for name, c in cases.items()})
+                         checks={name: c.checks for name, c in cases.items()},
+                         outputs={name: recorded.get(name, {}) for name, c in cases.items() if c.outputs})
     if failed:
         sys.exit(f"LIGGGHTS ran none of {', '.join(failed)}: mend them or take them out")
 

@@ -18,7 +18,8 @@ Inputs:
   attribute of ``compute property/atom`` (``xu``, ``mass``, ``radius``, ``omegaz``, ...);
 - ``c_ID``: a per-atom compute with one value per particle (``ke``, ``property/atom`` of one
   attribute); ``c_ID[k]``: column k (0-based, as every pdps index) of one with several;
-- ``f_ID``, ``f_ID[k]``: the same for a fix that offers per-atom values;
+- ``f_ID``, ``f_ID[k]``: the same for a fix that offers per-atom values; in LIGGGHTS's dialect
+  ``f_NAME`` is also a per-atom property a fix made (``f_Temp`` of fix heat/gran);
 - ``v_NAME``: an atom-style variable (LAMMPS's), checked when the compute is read, so that the
   variable may be defined after the compute.
 
@@ -48,9 +49,9 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, param, peratom_column
+from pdps_core.api import Compute, PeratomReference, ScriptError, StyleArgs, param
 
-from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, find_peratom, provides_peratom
+from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, provides_peratom
 
 # what min and max of nothing are (LAMMPS's BIG)
 EMPTY = 1.0e20
@@ -86,11 +87,13 @@ class ComputeReduce(Compute):
         if any(local) and not self.local:
             raise ScriptError(f"{what}: inputs are per-atom values or local data, not both "
                               f"({' '.join(args.inputs)})")
+        self.references = {}
         for word in args.inputs:
             if self.local:
                 continue
             if REFERENCE.match(word):
-                find_peratom(sim, word, what)
+                # the core's reader: c_ID, f_ID and, in LIGGGHTS's dialect, f_NAME of a per-atom property
+                self.references[word] = PeratomReference(sim, word, f"{what}: {word}")
             elif word in ATTRIBUTES:
                 check_attribute(sim, word, what)
             elif not VARIABLE.match(word):
@@ -109,8 +112,7 @@ class ComputeReduce(Compute):
                 raise ScriptError(f"compute {self.id} reduce: variable {name} is "
                                   f"{sim.variables.style(name)}-style, not atom-style ({word})")
             return sim.variables.atom_values(name)
-        style, column = find_peratom(sim, word, f"compute {self.id} reduce")
-        return peratom_column(sim, style, column, word)
+        return self.references[word].values(sim)
 
     def selected(self, sim):
         """The owned particles reduced over: the group's."""

@@ -7,7 +7,8 @@ Syntax::
 
 - ``NAME``: the property's name; ``set ... property/atom NAME V`` gives a scalar property values,
   ``dump custom`` writes it as ``f_NAME[0]`` (``f_NAME[k]``, k from 0, for a vector) in the
-  LIGGGHTS dialect.
+  LIGGGHTS dialect; ``f_ID`` (``f_ID[k]``, from the dialect's first index) reads it as any fix's
+  per-atom values (compute reduce, dump custom).
 - ``scalar``: one value per particle (give one default); ``vector``: as many as defaults given.
 - ``RESTART``, ``GHOST``, ``REVERSE`` (yes|no): LIGGGHTS's restart and ghost communication flags,
   read and checked; pdps always keeps per-atom values in restart files and copies them to ghosts
@@ -55,3 +56,9 @@ class FixPropertyAtom(Fix):
         array = p.request(name, len(values) if args.style == "vector" else None, default=values[0])
         if args.style == "vector":
             array[: p.nlocal] = values
+
+    def peratom(self, sim):
+        """The property of the owned particles, for ``f_ID`` (``f_ID[k]`` of a vector) as LAMMPS's
+        output commands read a fix's per-atom values."""
+        p = sim.particles
+        return p.arrays[self.variable][: p.nlocal]

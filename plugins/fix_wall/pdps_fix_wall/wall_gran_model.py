@@ -76,6 +76,7 @@ import numpy as np
 from numba import njit
 
 from pdps_core.api import ContactHistory, Fix, ScriptError, keyword
+from pdps_granular_contact import contact_models
 from pdps_granular_contact.material import Material
 from pdps_granular_contact.gran.words import GranModelArgs
 
@@ -310,6 +311,7 @@ class FixWallGranModel(Fix):
         table = self.table
         bad, rows_logged = self.law.forces(sim, rows, nrows, table.starts, table.arrays(), table.contact_force, history,
                                            wall_type, f, torque, update, radius=p.radius, mass=p.rmass, omega=p.omega,
+                                           body_mass=p.arrays.get("body_mass", contact_models.NO_BODY_MASS),
                                            log_rows=logged, transfer_cos=transfer_cos)
         if bad >= 0:
             history.overflowed(p.tag[bad])

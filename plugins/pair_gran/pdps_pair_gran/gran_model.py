@@ -242,7 +242,7 @@ class PairGranModel(PairGran):
         a = p.arrays
         partner, values = self._history_arrays()
         count = self.kernels.pair_contacts(
-            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["tag"],
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", NO_BODY_MASS), a["type"], a["mask"], a["tag"],
             nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit, sim.dt, sim.dimension,
             partner if width else partner[:0], values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
             hist)
@@ -275,7 +275,7 @@ class PairGranModel(PairGran):
         entry_slots = self.entry_slots(nlist, npairs, fresh=not update or not self.held.ready(nlist))
         a = p.arrays
         bad = self.kernels.pair_forces(
-            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], NO_BODY_MASS, a["type"], a["mask"], a["f"],
+            a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", NO_BODY_MASS), a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
             sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, entry_slots,
             *self._block, *self._heat_arrays(p), *NO_LOG)

@@ -25,7 +25,9 @@ sub-style; the tail correction of a pair sums those of its sub-styles that have 
 The core builds one half neighbor list with, for each type pair, the largest cutoff among its
 sub-styles; each sub-style's loop sees only its own pairs (the others' cutoffs are 0). Sub-styles are
 force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, dpd, dpd/fdt, ...);
-a style with its own loop (the granular ones) is refused by name. A style may appear once. Example::
+a style with its own loop (the granular ones) is refused by name. A style may appear more than once,
+each with its own settings (LAMMPS's); then pair_coeff names which, counted from 1:
+``pair_coeff I J soft 2 COEFFS`` (``soft:2`` in what pdps prints). Example::
 
     pair_style hybrid lj/cut 2.5 soft 1.12
     pair_coeff 1 1 lj/cut 1.0 1.0
@@ -65,20 +67,22 @@ class PairHybrid(Pair):
         for k, name in enumerate(names):
             if name in ("hybrid", "hybrid/overlay"):
                 raise ScriptError(f"pair style {name} cannot be a sub-style of {cls.name}")
-            if name in names[:k]:
-                raise ScriptError(f"pair style {name} appears twice in pair_style {cls.name}; "
-                                  "pdps takes each sub-style once")
 
     def __init__(self, sim, args):
         super().__init__(sim, args)
         self.styles = {}
+        names = [name for name, _ in args.substyles]
+        self.repeated = {name for name in names if names.count(name) > 1}
+        seen = {}
         for name, words in args.substyles:
             cls = registry.lookup("pair", name)
             if not issubclass(cls, PairLaw) or cls.neighbor_list != "half" \
                     or "pairs" not in inspect.signature(cls.init).parameters:
                 raise ScriptError(f"pair style {name} cannot be a sub-style of {self.name}: it is not a force law "
                                   "over a half list")
-            self.styles[name] = cls(sim, cls.parse(list(words)))
+            seen[name] = seen.get(name, 0) + 1
+            label = f"{name}:{seen[name]}" if name in self.repeated else name
+            self.styles[label] = cls(sim, cls.parse(list(words)))
         subs = list(self.styles.values())
         self.per_atom = tuple(dict.fromkeys(entry for s in subs for entry in s.per_atom))
         self.ghost_velocity = any(s.ghost_velocity for s in subs)
@@ -93,10 +97,17 @@ class PairHybrid(Pair):
             if len(words) > 1:
                 raise ScriptError(f"pair_coeff I J none takes nothing more (got {' '.join(words[1:])})")
             return (name, None)
+        rest = words[1:]
+        if name in self.repeated:
+            count = sum(label.startswith(f"{name}:") for label in self.styles)
+            if not rest or not rest[0].isdigit() or not 1 <= int(rest[0]) <= count:
+                raise ScriptError(f"pair style {name} appears {count} times in pair_style {self.name}: name which "
+                                  f"with a number from 1 to {count} after it (got {' '.join(rest) or 'nothing'})")
+            name, rest = f"{name}:{int(rest[0])}", rest[1:]
         if name not in self.styles:
             raise ScriptError(f"{name} is not a sub-style of this pair_style {self.name} "
                               f"(it has: {', '.join(self.styles)})")
-        return (name, self.styles[name].parse_coeff(words[1:]))
+        return (name, self.styles[name].parse_coeff(rest))
 
     @property
     def substyles(self):

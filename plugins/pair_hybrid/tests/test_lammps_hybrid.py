@@ -57,7 +57,9 @@ BAD = {
                   "pair coefficients are not set for types 1 2: only a pair whose types each have the same one "
                   "sub-style is mixed (give pair_coeff 1 2 STYLE ... or none)"),
     "no style": ("pair_style hybrid 2.5", "substyles must start with the name of a pair style (got 2.5)"),
-    "twice": ("pair_style hybrid lj/cut 2.5 lj/cut 3.0", "pair style lj/cut appears twice in pair_style hybrid"),
+    "twice, unnamed": ("pair_style hybrid lj/cut 2.5 lj/cut 3.0\npair_coeff 1 1 lj/cut 1.0 1.0",
+                       "pair style lj/cut appears 2 times in pair_style hybrid: name which with a number from 1 to "
+                       "2 after it (got 1.0 1.0)"),
     "own loop": ("pair_style hybrid gran/hooke 200000 NULL 50 NULL 0.5 0",
                  "pair style gran/hooke cannot be a sub-style of hybrid: it is not a force law over a half list"),
 }
@@ -69,6 +71,17 @@ def test_bad_hybrids_get_one_line(tmp_path, case):
     with pytest.raises(ScriptError) as caught:
         two_type_cluster(tmp_path, script)
     assert message in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_a_style_twice_is_two_styles_of_their_own_settings(tmp_path):
+    """lj/cut at 2.5 on 1-1 and lj/cut at 1.5 on 2-2 and 1-2 (each instance its own cutoff) is lj/cut
+    2.5 with those cutoffs per pair."""
+    twice = _state(tmp_path, "pair_style hybrid lj/cut 2.5 lj/cut 1.5\npair_coeff 1 1 lj/cut 1 1.0 1.0\n"
+                             "pair_coeff 2 2 lj/cut 2 0.5 1.1\npair_coeff 1 2 lj/cut 2 0.7 1.05")
+    once = _state(tmp_path, "pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0\npair_coeff 2 2 0.5 1.1 1.5\n"
+                            "pair_coeff 1 2 0.7 1.05 1.5")
+    np.testing.assert_allclose(twice[0], once[0], rtol=1e-13, atol=1e-13)
+    assert twice[1] == pytest.approx(once[1], rel=1e-13)
 
 
 def test_per_particle_energies_of_the_sub_styles_add_up(tmp_path):
