@@ -420,7 +420,8 @@ if sys.argv[1] == "die-inside-the-second-file":
 
 sim = Simulation(screen=False, log=None)
 sim.command('''SCRIPT''')
-sim.command("restart 1 r.restart\\ndump 1 all atom 1 d.atom\\nrun 1000000")
+# two files of one name: the file written over every step (one name alone gets .STEP after it)
+sim.command("restart 1 r.restart r.restart\\ndump 1 all atom 1 d.atom\\nrun 1000000")
 """
 
 

@@ -141,8 +141,9 @@ def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
 
 
 CASES = {
-    "bed": Case("fix_granular", ("fix nve/sphere", "fix wall/gran", "gran model hertz", "gran tangential history",
-                                 "compute erotate/sphere", "compute reduce", "velocity", "lattice", "create_atoms",
+    "bed": Case("fix_granular", ("fix", "compute", "fix nve/sphere", "fix wall/gran", "gran model hertz",
+                                 "gran tangential history", "compute erotate/sphere", "compute reduce", "velocity",
+                                 "lattice", "create_atoms",
                                  "set", "group", "region", "create_box", "thermo_style", "run", "timestep"),
                 bed(""), ranks=True),
     "gravity_viscous": Case("fix_granular", ("fix gravity", "fix viscous"),
@@ -183,8 +184,10 @@ CASES = {
                             "c_ds[1] c_ds[2] c_ds[3] c_ds[4] c_ds[5] c_ds[6] c_ds[7] c_ds[8]")),
     "reduce_region": Case("compute_basic", ("compute reduce/region",),
                           bed("region half block 0.0 INF INF INF INF INF units box\n"
-                              "compute rr all reduce/region half sum x vz\ncompute mx all reduce/region half max vz\n",
-                              "c_rr[1] c_rr[2] c_mx")),
+                              "compute rr all reduce/region half sum x vz\ncompute mx all reduce/region half max vz\n"
+                              "compute rx all reduce/region half max vz x z replace 2 1 replace 3 1\n"
+                              "compute rn all reduce min vx y replace 2 1\n",
+                              "c_rr[1] c_rr[2] c_mx c_rx[1] c_rx[2] c_rx[3] c_rn[1] c_rn[2]")),
     "energy_computes": Case("compute_energy", ("compute erotate", "compute erotate/sphere/atom", "compute ke/atom",
                                                "compute pe"),
                             bed("compute er all erotate\ncompute era all erotate/sphere/atom\ncompute ka all ke/atom\n"
@@ -345,6 +348,30 @@ CASES = {
                       "dump_modify t sort id\n", steps=1500)
                   + "undump t\nwrite_dump all custom last.dump id x y z vx vy vz modify sort id\nrun 1500\n",
                   outputs=("bed.dump", "top.dump", "last.dump")),
+    "restart_every": Case("core", ("restart", "processors"),
+                          HEAD.replace("create_box 2 box", "processors * * *\ncreate_box 2 box") + BED + SUMS
+                          + "fix integr all nve/sphere\n" + thermo() + "restart 1500 bed.restart\nrun 1500\n"
+                          "clear\natom_modify map array\nnewton off\ncommunicate single vel yes\n"
+                          "read_restart bed.restart.1500\nneighbor 0.002 bin\nneigh_modify delay 0\n" + MATERIAL
+                          + AGAIN + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n", head=False),
+    "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
+                + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
+    "print": Case("fix_simple", ("fix print",),
+                  bed("variable k equal ke\nvariable z equal c_sum[3]\n"
+                      "fix pr all print 250 \"${k} ${z}\" file printed.txt screen no title \"# ke z\"\n"),
+                  outputs=("printed.txt",)),
+    "atomic_computes": Case("compute_energy", ("compute pe/atom", "compute stress/atom", "compute group/group"),
+                            ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\ngroup other subtract all half\n"
+                            "compute pa all pe/atom\ncompute sa all stress/atom\ncompute sv all stress/atom virial\n"
+                            "compute gg half group/group other\n"
+                            "compute ps all reduce sum c_pa c_sa[1] c_sa[2] c_sa[4] c_sv[3] c_sv[6]\n"
+                            + ATOMIC_RUN.replace("thermo_style custom step atoms ke c_pe",
+                                                 "thermo_style custom step atoms ke c_pe c_ps[1] c_ps[2] c_ps[3] "
+                                                 "c_ps[4] c_ps[5] c_ps[6] c_gg c_gg[1] c_gg[2] c_gg[3]"), head=False),
+    "rdf": Case("compute_rdf", ("compute rdf",),
+                ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\ncompute g all rdf 20 1 1 1 2\n"
+                "fix gr all ave/time 100 1 100 c_g file rdf.txt mode vector\n" + ATOMIC_RUN,
+                head=False, outputs=("rdf.txt",)),
 }
 
 

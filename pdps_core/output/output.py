@@ -52,7 +52,7 @@ class Output:
         if self.root:
             self.log = handle
             if self.csv_follows_log:
-                self.csv.use(f"{path}.csv")
+                self.csv.use(f"{path}.csv", append)
 
     def close_log(self):
         if self.log is not None:

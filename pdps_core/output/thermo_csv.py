@@ -9,13 +9,23 @@ Runs that follow one another append rows to the same file while the columns stay
 run's columns differ (a new ``thermo_style``), the CSV goes on in a new file with its own header:
 ``log.pdps.2.csv``, then ``log.pdps.3.csv``, ... Starting a series (at the first run after the log is
 opened) removes numbered files an earlier series of the same name left behind, as the log itself
-is overwritten. Nothing is written before the first run. Rows are flushed with the log.
+is overwritten, unless the log is appended to (``log FILE append``): then its CSV is too, when its
+columns are the run's. Nothing is written before the first run. Rows are flushed with the log.
 """
 
 import csv
 import os
 
 from ..errors import ScriptError
+
+
+def _header(path):
+    """The column names of an existing CSV, or None."""
+    try:
+        with open(path, newline="") as handle:
+            return next(csv.reader(handle), None)
+    except OSError:
+        return None
 
 
 def numbered(path, index):
@@ -36,12 +46,14 @@ class ThermoCSV:
         self.current = None          # the file rows go to now
         self.use(path)
 
-    def use(self, path):
-        """Write the series to ``path`` from the next run on (None: no CSV)."""
+    def use(self, path, append=False):
+        """Write the series to ``path`` from the next run on (None: no CSV); with ``append``, after
+        the rows ``path`` holds when its header is the run's."""
         self.close()
         self.path = path
         self.names = None
         self.index = 0
+        self.append = append
 
     def start(self, names):
         """At the start of a run: a header row, in a new file if the columns changed.
@@ -49,6 +61,14 @@ class ThermoCSV:
         if self.path is None or names == self.names:
             return None
         self.close()
+        if self.append and self.index == 0 and _header(self.path) == list(names):
+            self.index, self.current, self.names = 1, self.path, list(names)
+            try:
+                self.handle = open(self.path, "a", newline="")
+            except OSError as exc:
+                raise ScriptError(f"cannot open thermo CSV file {self.path}: {exc.strerror}") from None
+            self.writer = csv.writer(self.handle)
+            return None
         self.index += 1
         if self.index == 1:
             self._remove_stale()

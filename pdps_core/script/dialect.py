@@ -66,6 +66,12 @@ class Dialect:
     # going on with the last build's (Neighbor.can_resume): LIGGGHTS keeps the spring of a contact
     # that came apart until the list is next built, so when the lists are built is physics there
     rebuild_at_setup: bool = False
+    # fix print prints at a run's first step when it is a multiple of N (LAMMPS since 2014); LIGGGHTS
+    # 3.8.0's prints at the end of steps only (measured)
+    print_at_setup: bool = True
+    # compute rdf divides by the ordered pairs of distinct particles, N_I N_J - D (LAMMPS since
+    # 2017); LIGGGHTS 3.8.0's by N_I N_J, as the LAMMPS it was forked from (its source, measured)
+    rdf_distinct_pairs: bool = True
 
 
 DIALECTS = {
@@ -77,7 +83,8 @@ DIALECTS = {
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="box", velocity_units="box",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
                         adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
-                        rebuild_at_setup=True),
+                        rebuild_at_setup=True, print_at_setup=False,
+                        rdf_distinct_pairs=False),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

@@ -283,11 +283,14 @@ def _sync_folder(folder):
 
 class RestartOutput:
     """``restart N FILE [FILE2]``: a restart file every N steps of a run (not at a run's first
-    step); with two files they take turns; a ``*`` in a name is replaced by the step (LAMMPS)."""
+    step); with two files they take turns; a ``*`` in a name is replaced by the step, and one file
+    named without a ``*`` gets ``.STEP`` after it, FILE.1000 (LAMMPS's, and LIGGGHTS's: measured)."""
 
     def __init__(self, every, files):
         self.every = every
         self.files = list(files)
+        if len(self.files) == 1 and "*" not in self.files[0]:
+            self.files[0] += ".*"
         self.turn = 0
 
     def write(self, sim, step):

@@ -40,7 +40,7 @@ File format (LAMMPS's; numbers as ``%g``)::
     100 1.0213 95
     # Time-averaged data for analyze ID            # a block per average
     # TimeStep Number-of-rows
-    # Row c_1[0] c_1[1] c_1[2]
+    # Row c_1[0] c_1[1] c_1[2]                     # c_1[1] c_1[2] c_1[3] in LAMMPS's dialects
     100 50
     1 0.025 0 0
     ...
@@ -94,11 +94,12 @@ class Value:
         self.indexed_names = indexed_names      # columns named word[k] rather than word itself
         self.needs = needs
 
-    def names(self, width):
+    def names(self, width, base=0):
+        """The file's column names, indexed from ``base`` (the dialect's first index)."""
         if not self.indexed_names:
             return [self.word]
         stem = self.word.removesuffix("[*]")
-        return [f"{stem}[{k}]" for k in range(width)]
+        return [f"{stem}[{k + base}]" for k in range(width)]
 
 
 VALUE_WORDS = "c_ID, c_ID[i], c_ID[i][j], c_ID[*], f_ID, f_ID[i], f_ID[*] or v_NAME"
@@ -319,7 +320,8 @@ class AveTime:
             sizes = ", ".join(f"{v.word} {b.shape[0]}" for v, b in zip(self.values, blocks))
             raise ScriptError(f"values averaged together need as many rows (got {sizes})")
         if self.columns is None:
-            self.columns = [name for v, b in zip(self.values, blocks) for name in v.names(b.shape[1])]
+            base = sim.dialect.index_base
+            self.columns = [name for v, b in zip(self.values, blocks) for name in v.names(b.shape[1], base)]
         return np.hstack(blocks)
 
     def _write(self, step):

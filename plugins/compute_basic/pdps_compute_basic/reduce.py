@@ -25,13 +25,17 @@ Inputs:
 
 The group of a referenced compute is applied as well: its particles outside that group read 0.
 
+``replace A B`` (LAMMPS's, min and max only, any number of them): value A becomes input A's value
+at the particle where input B has its min or max (inputs counted from the dialect's first index),
+e.g. ``reduce max c_pe x replace 2 1``: the x of the particle of largest energy.
+
 Or, as LAMMPS's, every input a compute's local data (``c_ID``, ``c_ID[k]`` of ``pair/gran/local``,
 ``wall/gran/local``: one row per contact): then the rows of all ranks are reduced, whatever the
 group, and ``ave`` divides by the row count. Per-atom and local inputs do not mix.
 
 Syntax::
 
-    compute ID GROUP reduce sum|min|max|ave input...
+    compute ID GROUP reduce sum|min|max|ave input... [replace A B]...
 
 Examples::
 
@@ -49,7 +53,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Compute, PeratomReference, ScriptError, StyleArgs, param
+from pdps_core.api import Compute, PeratomReference, ScriptError, StyleArgs, keyword, param
 
 from .peratom import ATTRIBUTES, REFERENCE, attribute, check_attribute, provides_peratom
 
@@ -72,11 +76,13 @@ def _local_compute(sim, word):
 
 class ComputeReduce(Compute):
     name = "reduce"
-    usage = "compute ID GROUP reduce sum|min|max|ave input..."
+    usage = "compute ID GROUP reduce sum|min|max|ave input... [replace A B]..."
 
     class Args(StyleArgs):
         mode: Literal["sum", "min", "max", "ave"]
         inputs: list[str] = param(min_length=1, names="input (x, c_ID, c_ID[i], f_ID, v_NAME, ...)")
+        replaced: list[tuple[Literal["replace"], int, int]] = keyword(default_factory=list, spelled_by_entries=True,
+                                                                  unit="1")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -87,6 +93,15 @@ class ComputeReduce(Compute):
         if any(local) and not self.local:
             raise ScriptError(f"{what}: inputs are per-atom values or local data, not both "
                               f"({' '.join(args.inputs)})")
+        self.replacements = []
+        for _, a, b in args.replaced:
+            if args.mode not in ("min", "max"):
+                raise ScriptError(f"{what}: replace needs min or max (got {args.mode})")
+            shown = f"replace {a} {b}"
+            ka, kb = sim.dialect_index(a, shown), sim.dialect_index(b, shown)
+            if not (0 <= ka < len(args.inputs) and 0 <= kb < len(args.inputs)) or ka == kb:
+                raise ScriptError(f"{what}: {shown}: needs two different inputs of the {len(args.inputs)}")
+            self.replacements.append((ka, kb))
         self.references = {}
         for word in args.inputs:
             if self.local:
@@ -151,9 +166,16 @@ class ComputeReduce(Compute):
             local = np.array([float(a.sum()) for a in values])
             total = np.asarray(sim.comm.sum(local), dtype=np.float64)
             return total / count if mode == "ave" else total
-        if mode == "min":
-            return np.array([sim.comm.min(float(a.min()) if len(a) else np.inf) for a in values])
-        return np.array([sim.comm.max(float(a.max()) if len(a) else -np.inf) for a in values])
+        pick = sim.comm.min if mode == "min" else sim.comm.max
+        empty = np.inf if mode == "min" else -np.inf
+        out = np.array([pick(float(a.min() if mode == "min" else a.max()) if len(a) else empty) for a in values])
+        for ka, kb in self.replacements:
+            # the value of input A where input B has its extreme: the rank holding it gives it
+            b = values[kb]
+            here = len(b) > 0 and (b.min() if mode == "min" else b.max()) == out[kb]
+            mine = float(values[ka][int(np.argmin(b) if mode == "min" else np.argmax(b))]) if here else -np.inf
+            out[ka] = sim.comm.max(mine)
+        return out
 
     def scalar(self, sim):
         if len(self.args.inputs) > 1:
@@ -175,6 +197,8 @@ class ComputeReduceRegion(ComputeReduce):
         region: str = param(names="region ID")
         mode: Literal["sum", "min", "max", "ave"]
         inputs: list[str] = param(min_length=1, names="input (x, c_ID, c_ID[i], f_ID, v_NAME, ...)")
+        replaced: list[tuple[Literal["replace"], int, int]] = keyword(default_factory=list, spelled_by_entries=True,
+                                                                  unit="1")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -24,7 +24,10 @@ is reported at its centre :math:`(k + \tfrac12)\Delta r`. For each pair of type 
 This is LAMMPS's compute rdf normalisation. freud (``freud.density.RDF``) divides by
 :math:`N_I N_J` instead (its ``normalization_mode='exact'``): :math:`g_\mathrm{LAMMPS} =
 g_\mathrm{freud}\, N_I N_J / (N_I N_J - D)`, which for I = J is freud's ``'finite_size'`` mode; freud's
-``n_r`` is :math:`n_{IJ}` as defined here. The PDPS source divides by :math:`N_I N_J` as freud does.
+``n_r`` is :math:`n_{IJ}` as defined here. The PDPS source divides by :math:`N_I N_J` as freud does,
+and so does LIGGGHTS 3.8.0 (the LAMMPS it was forked from; its source, and its numbers recorded in
+plugins/compute_rdf/tests/data/liggghts.cases.json): in the LIGGGHTS dialect g is divided by
+:math:`N_I N_J` (``Dialect.rdf_distinct_pairs``).
 
 Parameters:
 
@@ -269,7 +272,7 @@ class ComputeRDF(Compute):
             icount = int(typecount[ilo:ihi + 1].sum())
             jcount = int(typecount[jlo:jhi + 1].sum())
             duplicates = int(typecount[max(ilo, jlo):min(ihi, jhi) + 1].sum())
-            pairs = icount * jcount - duplicates
+            pairs = icount * jcount - (duplicates if sim.dialect.rdf_distinct_pairs else 0)
             if pairs > 0:
                 out[:, 1 + 2 * m] = hist[m] / (fraction * pairs)
             if icount > 0:

@@ -66,7 +66,8 @@ class FixPrint(Fix):
         return {"energy", "virial"} if step % self.args.every == 0 and "$" in self.text else set()
 
     def setup(self, sim):
-        self.end_of_step(sim)
+        if sim.dialect.print_at_setup:
+            self.end_of_step(sim)
 
     def end_of_step(self, sim):
         if sim.step % self.args.every:
