@@ -26,12 +26,13 @@ class ContactTable(Protocol):
 
 @runtime_checkable
 class ContactTimes(Protocol):
-    """A pair style whose contacts set the time step (the granular ones): ``timestep_limits(sim)``
-    gives {"contact": the shortest contact time, "hertz": the Hertz time, "rayleigh": the Rayleigh
-    time} (time; None where a time does not apply), which fix check/timestep/gran compares with
-    the time step."""
+    """A pair style whose contacts set the time step (the granular ones): ``timestep_limits(sim,
+    at_least=0.0)`` gives {"contact": the shortest contact time, "hertz": the Hertz time,
+    "rayleigh": the Rayleigh time} (time; None where a time does not apply), which fix
+    check/timestep/gran compares with the time step; a time that depends on the particles' largest
+    speed takes ``at_least`` where that is larger (LIGGGHTS's vmax)."""
 
-    def timestep_limits(self, sim) -> dict: ...
+    def timestep_limits(self, sim, at_least=0.0) -> dict: ...
 
 
 @runtime_checkable

@@ -407,6 +407,23 @@ CASES = {
                           "f_hz[1] f_hz[2] f_hz[3] f_hz[4] f_hz[2][2] f_hz[3][3] f_hv[1] f_hv[2] f_hv[3] "
                           "f_hv[1][2] f_hv[7][2] f_hk[1] f_hk[4][2] f_hs[1] f_hs[2]"),
                       outputs=("z.histo", "k.histo")),
+    "check_timestep_vmax": Case("fix_granular", ("fix check/timestep/gran",),
+                                bed("fix ts all check/timestep/gran 300 0.1 0.1 vmax 3.0 warn no\n",
+                                    "f_ts[1] f_ts[2] f_ts[3]")),
+    "ave_spatial_options": Case("analyze_ave", ("fix ave/spatial",),
+                                bed("fix ps all ave/spatial 10 30 300 z lower 0.02 vz density/mass norm sample "
+                                    "ave running overwrite units box file sample.profile title1 \"# profile\" "
+                                    "write_ts no\n"
+                                    "fix pw all ave/spatial 10 3 300 x lower 0.02 vx vz ave window 3 "
+                                    "units box file window.profile title2 \"# step bins\" title3 \"# columns\" "
+                                    "std 1 40 spread.txt\n",
+                                    "f_ps[1][2] f_ps[1][3] f_ps[2][3] f_ps[3][4] f_pw[1][2] f_pw[2][3] f_pw[3][4]"),
+                                outputs=("sample.profile", "window.profile", "spread.txt")),
+    "ave_spatial_refs": Case("analyze_ave", ("fix ave/spatial",),
+                             bed("compute ka all ke/atom\ncompute ra all erotate/sphere/atom\n"
+                                 "variable h atom z*vz\n"
+                                 "fix pr all ave/spatial 10 30 300 z lower 0.02 c_ka c_ra v_h units box\n",
+                                 "f_pr[1][3] f_pr[1][4] f_pr[1][5] f_pr[2][3] f_pr[3][5]")),
 }
 
 

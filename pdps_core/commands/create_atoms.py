@@ -63,7 +63,7 @@ def create_atoms(sim, args):
     rest = args[2:2 + positional]
     if len(rest) < positional:
         raise ScriptError(f"create_atoms {style} needs {positional} argument(s); usage: {usage}")
-    options = _options(args[2 + positional:], usage, sim.ntypes, sim.dialect.region_units)
+    options = _options(args[2 + positional:], usage, sim.ntypes, sim.dialect.command_units)
     if style in ("box", "region"):
         region = sim.region(rest[0]) if style == "region" else None
         x, basis_index = lattice_sites(sim, region)

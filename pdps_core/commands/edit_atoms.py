@@ -20,7 +20,7 @@ particle moves into each deleted one's slot), so a serial script gets LAMMPS's i
 order and deletes a G1 particle when a G2 particle closer than CUTOFF has not been deleted already
 (LAMMPS's rule, which for a serial LAMMPS run goes through its particles in the order they were
 made). ``displace_atoms`` distances are in lattice
-spacings by default (LAMMPS's; box in the PDPS and LIGGGHTS dialects, as LIGGGHTS 3.8.0); particles are wrapped back into a periodic box as LAMMPS's Domain::remap
+spacings by default (LAMMPS's; box in the LIGGGHTS dialect, as LIGGGHTS 3.8.0: Dialect.command_units); particles are wrapped back into a periodic box as LAMMPS's Domain::remap
 wraps them; ``random`` draws, in the LAMMPS dialect, LAMMPS's numbers (a Park-Miller stream seeded
 from SEED and each particle's position: the same particles move by the same amounts), in the PDPS
 dialect pdps's counter-based ones. ``write_data`` writes what read_data reads back (Masses, Atoms with
@@ -329,7 +329,7 @@ def displace_atoms(sim, args):
     words, rest = args[2:2 + need], args[2 + need:]
     if len(words) < need:
         raise ScriptError(f"displace_atoms {style} needs {need} values; usage: {usage}")
-    units = sim.dialect.region_units
+    units = sim.dialect.command_units
     for key, value in zip(rest[::2], rest[1::2]):
         if key != "units":
             raise ScriptError(f"unknown displace_atoms keyword {key}; usage: {usage}")

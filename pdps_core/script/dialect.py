@@ -36,9 +36,8 @@ class Dialect:
     name: str
     label: str
     index_base: int            # first element of c_ID[i], f_ID[i]: PDPS 0, LAMMPS 1
-    # default of the units keyword of region and of every command LAMMPS scales by the lattice
-    # (displace_atoms, create_atoms single, fix move, deform, ave/spatial): PDPS box, LAMMPS
-    # lattice, LIGGGHTS 3.8.0 box (its source, measured; its manual says lattice)
+    # default of the units keyword of region and fix move: PDPS box, LAMMPS lattice, LIGGGHTS 3.8.0
+    # box (its source, measured; its manual says lattice)
     region_units: str
     velocity_units: str        # default of velocity's units keyword (set, ramp): as region_units
     velocity_numbers: str      # velocity create's generator: "counter" (pdps) or "park" (LAMMPS's)
@@ -62,6 +61,10 @@ class Dialect:
     lost_default: str = "error"
     # dump_modify format STRING, one C format for the whole line (LIGGGHTS's; LAMMPS's before 2016)
     dump_format_string: bool = False
+    # default of the units keyword of LAMMPS's other commands that scale by the lattice (create_atoms
+    # single, displace_atoms, fix deform, fix ave/spatial): lattice as LAMMPS's, also in the PDPS
+    # dialect; box in LIGGGHTS 3.8.0 (its source, measured; its manual says lattice)
+    command_units: str = "lattice"
     # every run's setup builds the neighbor lists afresh, as LAMMPS's and LIGGGHTS's do, instead of
     # going on with the last build's (Neighbor.can_resume): LIGGGHTS keeps the spring of a contact
     # that came apart until the list is next built, so when the lists are built is physics there
@@ -83,7 +86,7 @@ DIALECTS = {
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="box", velocity_units="box",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
                         adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
-                        rebuild_at_setup=True, print_at_setup=False,
+                        rebuild_at_setup=True, print_at_setup=False, command_units="box",
                         rdf_distinct_pairs=False),
 }
 

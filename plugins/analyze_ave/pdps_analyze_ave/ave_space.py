@@ -25,14 +25,26 @@ LAMMPS's DELTA*area for bins inside the box, but for a bin that sticks out of th
 divides by the whole bin and so under-counts its density; pdps divides by the part in the box.
 
 Values: ``density/number`` (1/volume), ``density/mass`` (mass/volume), ``vx vy vz`` (velocity),
-``fx fy fz`` (force).
+``fx fy fz`` (force), and per-atom values averaged per particle as vx is: ``c_ID``, ``c_ID[k]``,
+``f_ID``, ``f_ID[k]`` (from the dialect's first index), ``v_NAME`` (atom-style), as LAMMPS's and
+LIGGGHTS's fix ave/spatial.
 
 Keywords: ``file NAME`` (written at each average, LAMMPS's format, appended and closed at once);
 ``units box|lattice``: DELTA and a coordinate origin in distance units (``box``) or in lattice
 spacings (``lattice``). ``analyze ave/space`` defaults to ``box`` (the PDPS manual's example bins
-by distance); ``fix ave/spatial`` to the dialect's default: ``lattice`` as LAMMPS (with no lattice
-defined a spacing is 1), ``box`` in the PDPS dialect and as LIGGGHTS 3.8.0 (its source; its manual
-says lattice).
+by distance); ``fix ave/spatial`` to ``lattice``, as LAMMPS (with no lattice defined a spacing is 1), and
+to ``box`` in LIGGGHTS's dialect, as LIGGGHTS 3.8.0 (its source; its manual says lattice).
+
+LAMMPS's and LIGGGHTS's keywords too: ``norm all|sample`` (``sample``: the per-particle values are
+the mean over the window's samples of each sample's bin average, densities and counts as for all);
+``ave one|running|window M`` (each output the window's average, the mean of every window's since
+the command, or of the last M); ``overwrite`` (with ave running: the file keeps its header and the
+last output);
+``title1 S`` ``title2 S`` ``title3 S`` (the header's lines); ``write_ts yes|no`` (LIGGGHTS: the
+``STEP NBINS`` line before each output, default yes); ``std LO HI FILE`` (LIGGGHTS: a line per
+output in FILE of ``STEP count nbins count_max empty below above kept kept_average`` and, per value,
+its count-weighted mean, the mean over the bins whose count is within LO..HI, and their standard
+deviation about the former, with LIGGGHTS's sums over the windows combined).
 
 File format (numbers as ``%g``)::
 
@@ -49,8 +61,9 @@ one row per bin, columns: the bin's coordinates, N_b, then the values.
 Syntax::
 
     analyze ID GROUP ave/space NEVERY NREPEAT NFREQ DIM ORIGIN DELTA [DIM ORIGIN DELTA]... value...
-            [file NAME] [units box|lattice]
-    fix ID GROUP ave/spatial NEVERY NREPEAT NFREQ DIM ORIGIN DELTA ... value... [file NAME] [units ...]
+            [file NAME] [units box|lattice] [norm all|sample] [ave one|running|window M] [overwrite]
+            [title1 S] [title2 S] [title3 S] [write_ts yes|no] [std LO HI FILE]
+    fix ID GROUP ave/spatial NEVERY NREPEAT NFREQ DIM ORIGIN DELTA ... value... [file NAME] [units ...] ...
 
 Examples::
 
@@ -59,12 +72,13 @@ Examples::
 """
 
 import math
+import re
 from typing import Annotated, Literal, NamedTuple
 
 import numpy as np
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from pdps_core.api import Analyze, Fix, ScriptError, check_bins, keyword, observables, param
+from pdps_core.api import Analyze, Fix, PeratomReference, ScriptError, check_bins, keyword, observables, param
 
 from .schedule import Schedule, ScheduleArgs
 
@@ -72,6 +86,7 @@ AXES = ("x", "y", "z")
 ATTRIBUTES = {"vx": ("v", 0), "vy": ("v", 1), "vz": ("v", 2),
               "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2)}
 VALUES = ("density/number", "density/mass", "vx", "vy", "vz", "fx", "fy", "fz")
+REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 
 
 def bin_layout(lo, hi, origin, delta):
@@ -100,9 +115,29 @@ class Bins(NamedTuple):
 
 class AveSpaceArgs(ScheduleArgs):
     bins: list[Bins] = param(min_length=1, max_length=3, unit=("1", "distance", "distance"))
-    values: list[Literal[VALUES]] = param(min_length=1)
+    values: list[str] = param(min_length=1, names="value (" + " ".join(VALUES) + " c_ID c_ID[k] f_ID f_ID[k] v_NAME)")
     file: str | None = keyword(None, names="file name")
     units: Literal["box", "lattice"] | None = keyword(None)
+    norm: Literal["all", "sample"] = keyword("all")
+    ave: tuple[Literal["one", "running"]] | tuple[Literal["window"], int] = keyword(("one",), unit="dimensionless")
+    overwrite: tuple[()] | None = keyword(None)
+    title1: str | None = keyword(None, names="file line")
+    title2: str | None = keyword(None, names="file line")
+    title3: str | None = keyword(None, names="file line")
+    write_ts: bool = keyword(True)
+    std: tuple[int, int, str] | None = keyword(None, unit=("1", "1", "1"))
+
+    @model_validator(mode="after")
+    def _combination(self):
+        for value in self.values:
+            if value not in VALUES and not REFERENCE.match(value):
+                raise ValueError(f"values must be {', '.join(VALUES)}, c_ID, c_ID[k], f_ID, f_ID[k] or v_NAME "
+                                 f"(got {value})")
+        if self.ave[0] == "window" and self.ave[1] < 1:
+            raise ValueError(f"ave window M needs M >= 1 (got {self.ave[1]})")
+        if self.overwrite is not None and self.ave[0] != "running":
+            raise ValueError("overwrite needs ave running (LAMMPS)")
+        return self
 
 
 class AveSpace:
@@ -116,13 +151,33 @@ class AveSpace:
         for axis, origin, delta in args.bins:
             self._add_axis(sim, axis, origin, delta)
         self.values = list(args.values)
-        self.path, self.units = args.file, args.units or self.default_units or sim.dialect.region_units
+        # per-atom values of computes, fixes and atom-style variables, averaged per particle as vx is
+        self.references = {value: PeratomReference(sim, value, f"{self.kind} {id} {self.name}: {value}")
+                           for value in self.values if value not in VALUES}
+        self.path, self.units = args.file, args.units or self.default_units or sim.dialect.command_units
         self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
         self.count_total = self.value_total = None
         self.average = None
+        self.windows = []           # the window averages the combination holds (ave running: their sum)
+        self.combined = 0           # how many window averages that is (LAMMPS's norm)
         self.root = sim.comm.rank == 0      # every rank averages, one writes
+        self.body_starts = 0
         if self.path is not None and self.root:
             self._write_header()
+        self.std_path = args.std[2] if args.std is not None else None
+        if self.std_path is not None and self.root:
+            low, high, _ = args.std
+            try:
+                with open(self.std_path, "w") as handle:
+                    # LIGGGHTS's header, spacing and all
+                    handle.write(f"# Spatial-averaged data for fix {id} and group {group}\n"
+                                 f"# Mean and standard deviation for all bins including between N1={low} and "
+                                 f"N2={high} particles\n# Timestep  Natoms  Nbins  MaxAtomsPerBin  NbinsEmpty  "
+                                 "Nbins<N1  Nbins>N2  Nsamples  NatomsPerSample  "
+                                 + "".join(f"{{{value}: trueMean samplesMean Std}}   " for value in self.values) + "\n")
+            except OSError as exc:
+                raise ScriptError(f"cannot open {self.kind} {self.name} std file {self.std_path}: "
+                                  f"{exc.strerror}") from None
 
     def _add_axis(self, sim, axis, origin, delta):
         d = AXES.index(axis)
@@ -181,7 +236,9 @@ class AveSpace:
 
     # ---- the timestep -----------------------------------------------------------------------------
     def needs(self, step):
-        return set()
+        if step != self.schedule.due or not self.references:
+            return set()
+        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
 
     def setup(self, sim):
         self.schedule.run_setup(sim.step)
@@ -201,19 +258,29 @@ class AveSpace:
         chosen = sim.groups.select(sim, self.group)
         where = self._bin_of(sim, p.x[:n][chosen])
         nbins = len(self.volume)
-        self.count_total += sim.comm.sum(np.bincount(where, minlength=nbins).astype(float))
+        count = np.asarray(sim.comm.sum(np.bincount(where, minlength=nbins).astype(float)), dtype=np.float64)
+        self.count_total += count
+        per_sample = self.args.norm == "sample"
         for k, value in enumerate(self.values):
             if value == "density/number":
                 continue
             if value == "density/mass":
                 weight = observables.masses(sim, chosen)
+            elif value in self.references:
+                weight = self.references[value].values(sim)[chosen]
             else:
                 name, component = ATTRIBUTES[value]
                 weight = p.arrays[name][:n][chosen][:, component]
-            self.value_total[:, k] += sim.comm.sum(np.bincount(where, weights=weight, minlength=nbins))
+            sums = np.asarray(sim.comm.sum(np.bincount(where, weights=weight, minlength=nbins)), dtype=np.float64)
+            if per_sample and value != "density/mass":
+                # norm sample: this sample's bin average joins the window's (LAMMPS's values_one/count)
+                sums = np.divide(sums, count, out=np.zeros(nbins), where=count > 0)
+            self.value_total[:, k] += sums
         if self.schedule.advance(step):
             self._average()
+            self._combine()
             self._write(step)
+            self._write_std(step)
 
     def _average(self):
         repeat = self.schedule.nrepeat
@@ -227,20 +294,40 @@ class AveSpace:
                 column[inside] = count[inside] / self.volume[inside]
             elif value == "density/mass":
                 column[inside] = self.value_total[inside, k] / repeat / self.volume[inside]
+            elif self.args.norm == "sample":
+                column = self.value_total[:, k] / repeat
             else:
                 column[visited] = self.value_total[visited, k] / self.count_total[visited]
             columns.append(column)
-        self.average = np.column_stack([self.coords, count, *columns])
+        self.window_average = np.column_stack([count, *columns])
+
+    def _combine(self):
+        """This window's average combined as ``ave`` says (LAMMPS's ave one|running|window M)."""
+        combine = self.args.ave[0]
+        window = self.window_average
+        if combine == "one":
+            self.windows, self.combined = [window], 1
+        elif combine == "running":
+            self.windows = [window if not self.windows else self.windows[0] + window]
+            self.combined += 1
+        else:
+            self.windows = (self.windows + [window])[-self.args.ave[1]:]
+            self.combined = len(self.windows)
+        total = self.windows[0] if combine != "window" else np.sum(self.windows, axis=0)
+        self.total = total
+        self.average = np.column_stack([self.coords, total / self.combined])
 
     # ---- output -----------------------------------------------------------------------------------
     def _write_header(self):
         coords = "Coord" if len(self.axes) == 1 else " ".join(f"Coord{k + 1}" for k in range(len(self.axes)))
-        text = (f"# Spatial-averaged data for {self.kind} {self.id} and group {self.group}\n"
-                "# Timestep Number-of-bins\n"
-                f"# Bin {coords} Ncount {' '.join(self.values)}\n")
+        args = self.args
+        text = "\n".join([args.title1 or f"# Spatial-averaged data for {self.kind} {self.id} and group {self.group}",
+                          args.title2 or "# Timestep Number-of-bins",
+                          args.title3 or f"# Bin {coords} Ncount {' '.join(self.values)}"]) + "\n"
         try:
             with open(self.path, "w") as handle:
                 handle.write(text)
+                self.body_starts = handle.tell()
         except OSError as exc:
             raise ScriptError(f"cannot open {self.kind} {self.name} file {self.path}: "
                               f"{exc.strerror}") from None
@@ -248,11 +335,39 @@ class AveSpace:
     def _write(self, step):
         if self.path is None or not self.root:
             return
-        rows = [f"{step} {len(self.average)}"]
+        rows = [f"{step} {len(self.average)}"] if self.args.write_ts else []
         rows += [f"  {b + 1}" + "".join(" %g" % v for v in row)
                  for b, row in enumerate(self.average.tolist())]
-        with open(self.path, "a") as handle:
+        with open(self.path, "r+" if self.args.overwrite is not None else "a") as handle:
+            if self.args.overwrite is not None:
+                handle.seek(self.body_starts)
+                handle.truncate()
             handle.write("\n".join(rows) + "\n")
+
+    def _write_std(self, step):
+        """LIGGGHTS's std file line: the values' spread over the bins whose count is within LO..HI,
+        from the sums over the windows combined (count_total, values_total), as LIGGGHTS takes them."""
+        if self.std_path is None or not self.root:
+            return
+        low, high, _ = self.args.std
+        count, values = self.total[:, 0], self.total[:, 1:]
+        count_sum = float(count.sum())
+        true_mean = values.T @ count / count_sum if count_sum else np.zeros(values.shape[1])
+        empty = count == 0
+        below = ~empty & (count < low)
+        above = ~empty & ~below & (count > high)
+        kept = ~(empty | below | above)
+        n_kept = int(kept.sum())
+        samples_mean, std, kept_average = np.zeros(values.shape[1]), np.zeros(values.shape[1]), 0.0
+        if n_kept:
+            kept_average = float(count[kept].sum()) / n_kept
+            samples_mean = values[kept].mean(axis=0) / self.combined
+            std = np.sqrt(((values[kept] - true_mean) ** 2).mean(axis=0)) / self.combined
+        line = (f"{step} {count_sum:g} {len(count)} {float(count.max()):g} {int(empty.sum())} {int(below.sum())} "
+                f"{int(above.sum())} {n_kept} {kept_average:g}"
+                + "".join(f" {m:g} {a:g} {d:g}" for m, a, d in zip(true_mean, samples_mean, std)))
+        with open(self.std_path, "a") as handle:
+            handle.write(line + "\n")
 
     def array(self, sim):
         if self.average is not None:

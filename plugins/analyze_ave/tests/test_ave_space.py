@@ -90,15 +90,12 @@ def test_two_dimensional_bins_divide_by_area(make_sim):
         sim.command("analyze 3 all ave/space 1 1 1 z lower 1 density/number")
 
 
-def test_fix_ave_spatial_bins_in_the_dialect_s_units(planes):
-    """units lattice bins in lattice spacings; without it, the dialect's default: PDPS's box here
-    (LAMMPS's lattice, LIGGGHTS's box: Dialect.region_units)."""
+def test_fix_ave_spatial_bins_in_lattice_spacings_by_default(planes):
     planes.command("lattice spacing x 2 y 2 z 2.5\n"
-                   "fix 1 all ave/spatial 1 1 1 z lower 2 density/number file lat.txt units lattice\n"
-                   "fix 2 all ave/spatial 1 1 1 z lower 5 density/number units box\n"
-                   "fix 3 all ave/spatial 1 1 1 z lower 5 density/number\nrun 0")
-    for fix in "123":
-        np.testing.assert_array_equal(planes.fixes[fix].array(planes)[:, 1], [8, 2])
+                   "fix 1 all ave/spatial 1 1 1 z lower 2 density/number file lat.txt\n"
+                   "fix 2 all ave/spatial 1 1 1 z lower 5 density/number units box\nrun 0")
+    np.testing.assert_array_equal(planes.fixes["1"].array(planes)[:, 1], [8, 2])
+    np.testing.assert_array_equal(planes.fixes["2"].array(planes)[:, 1], [8, 2])
     assert read("lat.txt").startswith("# Spatial-averaged data for fix 1 and group all\n")
 
 
@@ -120,8 +117,8 @@ def test_fix_ave_spatial_bins_in_the_dialect_s_units(planes):
      "analyze: missing argument values; usage: analyze ID GROUP ave/space NEVERY NREPEAT NFREQ "
      "DIM ORIGIN DELTA [DIM ORIGIN DELTA]... value... [file NAME] [units box|lattice]"),
     ("analyze 1 all ave/space 1 1 5 z lower 1 density/number temp",
-     "analyze: values must be one of 'density/number', 'density/mass', 'vx', 'vy', 'vz', 'fx', 'fy' or 'fz' "
-     "(got temp)"),
+     "analyze: values must be density/number, density/mass, vx, vy, vz, fx, fy, fz, c_ID, c_ID[k], f_ID, f_ID[k] "
+     "or v_NAME (got temp)"),
     ("fix 1 all ave/spatial 1 1 5 z lower 1 density/number units reduced",
      "fix: units must be one of 'box' or 'lattice' (got reduced)"),
 ])

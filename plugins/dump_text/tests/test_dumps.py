@@ -310,7 +310,9 @@ def test_the_header_names_each_boundary_as_lammps(pdps_cli, tmp_path):
 def test_liggghts_takes_one_format_string_for_the_line_and_lammps_refuses_it(pdps_cli, tmp_path):
     """LIGGGHTS 3.8.0's dump_modify format STRING (LAMMPS's before 2016); LAMMPS now: "Illegal
     dump_modify format command: missing argument(s)"."""
+    # LIGGGHTS's region and create_atoms default to box units: lattice ones asked for, as LAMMPS's
     liggghts = ("atom_style granular\n" + LJ_BOX.replace("units lj", "units si").replace("mass 1 1.0\n", "")
+                .replace("block 0 2 0 2 0 2", "block 0 2 0 2 0 2 units lattice")
                 .replace("pair_style lj/cut 2.5\npair_coeff 1 1 1.0 1.0 2.5\n", "")
                 + 'dump_modify d format "%d %.3f %.3f %.3f"\nrun 0\n')
     done = pdps_cli(liggghts)

@@ -40,10 +40,15 @@ Parameters:
   suggests 0.1-0.2).
 - ``FRACTION_H``: warn when dt exceeds this fraction of the Hertz (or contact) time (> 0).
 - ``error yes|no`` (optional, LIGGGHTS; default no): stop the run instead of warning.
+- ``warn yes|no`` (optional, LIGGGHTS; default yes): ``no`` gives no warning (the ratios are still
+  kept for ``f_ID``).
+- ``vmax V`` (optional, LIGGGHTS): the largest speed is at least V (velocity units): the Hertz time
+  and the skin ratio are those of V when the particles are slower, as for a scene about to be
+  filled.
 
 Syntax::
 
-    fix ID GROUP check/timestep/gran NEVERY FRACTION_R FRACTION_H [error yes|no]
+    fix ID GROUP check/timestep/gran NEVERY FRACTION_R FRACTION_H [error yes|no] [warn yes|no] [vmax V]
 
 Example::
 
@@ -64,13 +69,15 @@ def _ratio(value):
 
 class FixCheckTimestepGran(Fix):
     name = "check/timestep/gran"
-    usage = "fix ID GROUP check/timestep/gran NEVERY FRACTION_R FRACTION_H [error yes|no]"
+    usage = "fix ID GROUP check/timestep/gran NEVERY FRACTION_R FRACTION_H [error yes|no] [warn yes|no] [vmax V]"
 
     class Args(StyleArgs):
         nevery: int = param(ge=1, unit="timesteps")
         fraction_r: float = param(gt=0, unit="dimensionless")
         fraction_h: float = param(gt=0, unit="dimensionless")
         error: bool = keyword(False)
+        warn: bool = keyword(True)
+        vmax: float = keyword(0.0, ge=0, unit="velocity")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -93,7 +100,7 @@ class FixCheckTimestepGran(Fix):
     def _limits(self, sim):
         pair = sim.pair
         if isinstance(pair, ContactTimes):
-            return pair.timestep_limits(sim) or {}
+            return pair.timestep_limits(sim, self.args.vmax) or {}
         reason = ("no pair style is defined" if pair is None else
                   f"pair style {pair.name} gives no time-step limits (it has no timestep_limits method)")
         if reason not in self._told_no_limits:
@@ -113,7 +120,7 @@ class FixCheckTimestepGran(Fix):
             collision, label = limits["contact"], "contact"
         p = sim.particles
         v = p.v[: p.nlocal][chosen(sim, self.group)]
-        speed = math.sqrt(sim.comm.max(float(np.einsum("ij,ij->i", v, v).max(initial=0.0))))
+        speed = max(self.args.vmax, math.sqrt(sim.comm.max(float(np.einsum("ij,ij->i", v, v).max(initial=0.0)))))
         ratio_r = dt / rayleigh if rayleigh else None
         ratio_h = dt / collision if collision else None
         ratio_s = speed * dt / skin if skin > 0 else None
@@ -141,4 +148,5 @@ class FixCheckTimestepGran(Fix):
                    f"v_max*dt/skin = {_ratio(ratio_s)})")
         if self.args.error:
             raise SimulationError(message)
-        sim.warn(message)
+        if self.args.warn:
+            sim.warn(message)

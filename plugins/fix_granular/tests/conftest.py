@@ -66,7 +66,7 @@ class LimitsPair(NoForcePair):
         contact: float
         shrink: float = 0.0
 
-    def timestep_limits(self, sim):
+    def timestep_limits(self, sim, at_least=0.0):
         a = self.args
         rayleigh = a.rayleigh / (1.0 + a.shrink * sim.step)
         return {"rayleigh": rayleigh or None, "hertz": a.hertz or None, "contact": a.contact}

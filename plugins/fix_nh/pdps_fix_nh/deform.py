@@ -131,7 +131,7 @@ class FixDeform(Fix):
                 self.axes[d] = ("volume", [])
             elif change is not None:
                 self.axes[d] = (change[0], list(change[1:]))
-        self.remap, self.units = args.remap, args.units or sim.dialect.region_units
+        self.remap, self.units = args.remap, args.units or sim.dialect.command_units
         self.links = {d: self._volume_links(d) for d, (style, _) in self.axes.items() if style == "volume"}
         self.deformed_axes = tuple(sorted(self.axes))
         if self.remap == "v":

@@ -149,7 +149,7 @@ class PairDEMHertz(GranularPair):
         """The tables the dem sub-models read (pdps_granular_contact.dem.normal_hertz, tangential_spring)."""
         return {"e_star": self.e_star, "g_star": self.g_star, "beta": self.beta, "mu": self.mu}
 
-    def timestep_limits(self, sim):
+    def timestep_limits(self, sim, at_least=0.0):
         """Rayleigh and Hertz times of the particles now present (docstring)."""
         if getattr(self, "resolved", None) is None:
             raise ScriptError(f"pair {self.name}: timestep limits are known once a run has started")
@@ -159,7 +159,7 @@ class PairDEMHertz(GranularPair):
         volume = math.pi * radius ** 2 if sim.dimension == 2 else 4.0 / 3.0 * math.pi * radius ** 3
         density = mass / volume
         speed = float(np.sqrt(np.einsum("ij,ij->i", p.v[:n], p.v[:n])).max(initial=0.0))
-        v_max = 2.0 * sim.comm.max(speed)
+        v_max = 2.0 * max(at_least, sim.comm.max(speed))
         rayleigh, hertz = math.inf, math.inf
         for t in np.unique(types):
             youngs, poisson = self.material(int(t), (t, t))

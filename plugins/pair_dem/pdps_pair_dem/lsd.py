@@ -161,7 +161,7 @@ class PairDEMLsd(GranularPair):
     def damping(self, i, j, m_star):
         return self.cn[i, j] + self.cn_per_root_mass[i, j] * math.sqrt(m_star)
 
-    def timestep_limits(self, sim):
+    def timestep_limits(self, sim, at_least=0.0):
         """Smallest contact time of the type pairs present, each at its smallest m* (docstring)."""
         if getattr(self, "resolved", None) is None:
             raise ScriptError(f"pair {self.name}: timestep limits are known once a run has started")

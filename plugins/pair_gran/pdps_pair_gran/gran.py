@@ -191,7 +191,7 @@ class PairGran(Pair):
         return float(max(moving[i] + moving[j], frozen[i] + moving[j], moving[i] + frozen[j]))
 
     # ---- time-step advice -------------------------------------------------------------------------
-    def timestep_limits(self, sim):
+    def timestep_limits(self, sim, at_least=0.0):
         """{"rayleigh": None, "hertz": None, "contact": t_c}: the Hooke contact time of the two
         lightest particles (lammps_classic.contact_time); for gran/hertz/history the elastic Hertz
         time of the lightest, smallest particle hitting its copy at twice the largest speed (inf
@@ -205,7 +205,7 @@ class PairGran(Pair):
         if self.model != lammps_classic.HERTZ_HISTORY:
             return {"rayleigh": None, "hertz": None,
                     "contact": lammps_classic.contact_time(self.kn, self.gamma_n, m_eff)}
-        speed = sim.comm.max(float(np.sqrt((p.v[:n] ** 2).sum(axis=1)).max()) if n else 0.0)
+        speed = max(at_least, sim.comm.max(float(np.sqrt((p.v[:n] ** 2).sum(axis=1)).max()) if n else 0.0))
         smallest = sim.comm.min(float(p.radius[:n].min()))
         if speed == 0.0 or self.kn == 0.0:
             return {"rayleigh": None, "hertz": None, "contact": math.inf}

@@ -146,7 +146,7 @@ class PairGranModel(PairGran):
         self.warn_coarse_timestep(sim)
         return cutoffs
 
-    def timestep_limits(self, sim):
+    def timestep_limits(self, sim, at_least=0.0):
         """{"rayleigh": t_R, "hertz": t_H, "contact": t}: the smallest Rayleigh time of the particles
         present (LIGGGHTS's check/timestep/gran: pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = Y / 2(1 +
         nu)); LIGGGHTS's Hertz estimate, for every normal model (its check/timestep/gran: each particle
@@ -161,7 +161,7 @@ class PairGranModel(PairGran):
         normal = self.contact_model.part("normal")
         with_youngs = self.reads_youngs(sim)
         rayleigh, shortest, hertz = math.inf, math.inf, math.inf
-        speed = sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0)
+        speed = max(at_least, sim.comm.max(float(np.sqrt((p.v[:nl] ** 2).sum(axis=1)).max()) if nl else 0.0))
         for t in range(1, sim.ntypes + 1):
             of_type = p.type[:nl] == t
             if with_youngs and of_type.any():

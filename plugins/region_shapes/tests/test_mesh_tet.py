@@ -75,7 +75,8 @@ def test_side_out_and_the_warning_for_other_cells(folder):
 
 
 @pytest.mark.parametrize("line, message", [
-    (PLAIN.replace(" units box", ""), "give units box (lattice units are not defined for a tetrahedral mesh"),
+    (PLAIN.replace(" units box", " units lattice"),
+     "give units box (lattice units are not defined for a tetrahedral mesh"),
     (PLAIN.replace("cube_six_tets", "none"), "mesh file none.vtk does not exist"),
     (PLAIN.replace("scale 0.5", "scale 5"), "the mesh of cube_six_tets.vtk reaches outside the simulation box"),
     (PLAIN.replace("scale 0.5", "scale -1"), "scale"),
