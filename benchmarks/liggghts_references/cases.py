@@ -424,6 +424,11 @@ CASES = {
                                  "variable h atom z*vz\n"
                                  "fix pr all ave/spatial 10 30 300 z lower 0.02 c_ka c_ra v_h units box\n",
                                  "f_pr[1][3] f_pr[1][4] f_pr[1][5] f_pr[2][3] f_pr[3][5]")),
+    "addforce_energy": Case("fix_granular", ("fix addforce",),
+                            bed("variable fx equal 0.002*sin(step*0.003)\nvariable e atom -0.0005*z\n"
+                                "fix push top addforce v_fx 0.0 0.0005 energy v_e\n"
+                                "fix pull all addforce 0.0 -0.0002 0.0001\nfix_modify pull energy yes\n"
+                                "compute pe all pe\n", "f_push f_push[1] f_pull f_pull[2] c_pe")),
 }
 
 

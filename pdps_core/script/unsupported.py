@@ -6,6 +6,11 @@ ALTERNATIVES = {
     "balance": "the processor grid is chosen at the start (processors)",
     "bond_coeff": "pdps has no bond styles", "bond_style": "pdps has no bond styles",
     "box": "nothing: the command is obsolete in LAMMPS too",
+    # headings of LIGGGHTS's manual that LIGGGHTS 3.8.0 itself does not know ("Unknown command", run 12-02)
+    "neigh_settings": "neigh_modify (LIGGGHTS 3.8.0 itself has no neigh_settings)",
+    "neighbor_skin": "neighbor SKIN bin (LIGGGHTS 3.8.0 itself has no neighbor_skin)",
+    "orient": "lattice ... orient DIM I J K (LIGGGHTS 3.8.0 itself has no orient command)",
+    "origin": "lattice ... origin X Y Z (LIGGGHTS 3.8.0 itself has no origin command)",
     "change_box": "define the box you need with region and create_box, or read_data",
     "comm_style": "comm_modify cutoff",
     "create_bonds": "pdps has no bonds", "delete_bonds": "pdps has no bonds",
@@ -92,6 +97,10 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     # in LIGGGHTS's manual, not in LIGGGHTS 3.8.0 itself ("Invalid compute style", run 12-02)
     ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
     ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
+    ("pair", "bubble"): "none in pdps (LIGGGHTS 3.8.0 itself has no pair bubble)",
+    ("compute", "rigid"): "pdps has no multisphere bodies (LIGGGHTS's compute rigid reads fix multisphere's): "
+                          "compute rigid/local of fix rigid/small",
+    ("fix", "efield"): "pdps has no charges",
 }
 
 

@@ -25,6 +25,10 @@ every step (a force that changes in time). Its potential energy, added to thermo
 :math:`E = -\sum_i \mathbf{F}\cdot\mathbf{x}_i` over the particles it acts on, with unwrapped
 positions (image flags counted), as LAMMPS's fix addforce. Any of the three parts can be combined in one fix; ``region RID``
 (LAMMPS) restricts them to particles inside the region. Applied in ``post_force`` and at setup.
+As LAMMPS's, when a component is a variable the energy is 0 unless ``energy v_E`` names an
+atom-style variable giving each particle's potential energy, which is summed over the particles
+the force acts on. The fix's scalar ``f_ID`` is that energy; its vector ``f_ID[1-3]`` the group's
+total force before the fix added to it.
 Drag and buoyancy need per-particle radii (``particle_style sphere``).
 
 Parameters:
@@ -34,10 +38,11 @@ Parameters:
 - ``buoyancy DIM RHO G`` or ``buoyancy DIM RHO_G``: axis (x, y or z; not z in 2-d), fluid density
   (mass/volume) and gravity (force/mass), or their product.
 - ``region RID`` (optional): act only on particles inside region RID.
+- ``energy v_E`` (optional, with a variable force): the atom-style variable of the energy.
 
 Syntax::
 
-    fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]
+    fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID] [energy v_E]
 
 Examples::
 
@@ -51,13 +56,13 @@ import math
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import FloatOrVariable, StyleArgs, VariableRef, keyword, param
+from pdps_core.api import FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
 from ._common import AXES, Axis, ForceFix, chosen, require_plane, require_spheres
 
 class FixAddForce(ForceFix):
     name = "addforce"
-    usage = "fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID]"
+    usage = "fix ID GROUP addforce [FX FY FZ] [drag_stokes MU] [buoyancy DIM RHO G] [region RID] [energy v_E]"
     can_energy = True
 
     class Args(StyleArgs):
@@ -69,6 +74,7 @@ class FixAddForce(ForceFix):
         buoyancy: tuple[Axis, float, float] | tuple[Axis, float] | None = keyword(
             None, unit=("1", "density", "acceleration"))
         region: str | None = keyword(None)
+        energy: FloatOrVariable | None = keyword(None, names="v_NAME")
 
         @model_validator(mode="after")
         def _something_to_add(self):
@@ -78,6 +84,11 @@ class FixAddForce(ForceFix):
                                  f"(got {' '.join(str(c) if isinstance(c, VariableRef) else f'{c:g}' for c in force)})")
             if not force and self.drag_stokes is None and self.buoyancy is None:
                 raise ValueError("nothing to add: give FX FY FZ, drag_stokes MU or buoyancy DIM RHO G")
+            if self.energy is not None and not isinstance(self.energy, VariableRef):
+                raise ValueError(f"energy must be an atom-style variable v_NAME (got {self.energy:g})")
+            if self.energy is not None and not any(isinstance(c, VariableRef) for c in force):
+                raise ValueError("energy v_E goes with a variable force (LAMMPS: Cannot use variable energy "
+                                 "with constant force in fix addforce)")
             return self
 
     def __init__(self, sim, id, group, args):
@@ -120,12 +131,24 @@ class FixAddForce(ForceFix):
             f[selected, AXES[axis]] += rho * g * volume
 
     def compute_energy(self, sim):
-        """-F . x over the particles the constant force acts on (this rank's)."""
+        """-F . x over the particles the constant force acts on (this rank's); for a variable force
+        the energy variable's sum over them, or 0 (LAMMPS's)."""
         force = self.constant_force(sim)
         if force is None:
             return 0.0
         p = sim.particles
         n = p.nlocal
         selected = chosen(sim, self.group, self.args.region)
+        if any(isinstance(c, VariableRef) for c in self.components):
+            if self.args.energy is None:
+                return 0.0
+            name = self.args.energy.name
+            if sim.variables.style(name) != "atom":
+                raise ScriptError(f"fix {self.id} (addforce): energy variable {name} is not atom-style")
+            return float(np.asarray(sim.variables.atom_values(name))[selected].sum())
         unwrapped = p.x[:n][selected] + p.image[:n][selected] * sim.box.length
         return -float((unwrapped @ force).sum())
+
+    def scalar(self, sim):
+        """``f_ID``: the potential energy of the added force (compute_energy over every rank)."""
+        return float(sim.comm.sum(self.compute_energy(sim)))

@@ -43,6 +43,14 @@ def test_silent_when_the_time_step_is_fine(spheres):
     assert sim.fixes["ts"].vector(sim).tolist() == pytest.approx([0.02, 0.05, 2 * 100.0 * 0.001 / 0.3])
 
 
+def test_warn_no_is_silent_and_vmax_is_the_least_speed(spheres):
+    sim = scene(spheres, "test/granular/limits 0.005 0.1 0.2", fix="check/timestep/gran 100 0.1 0.1 warn no vmax 50")
+    sim.command("run 100")
+    assert sim.warnings == []
+    # at rest, the skin ratio is that of vmax: 50 * 0.001 / 0.3
+    assert sim.fixes["ts"].ratios[2] == pytest.approx(50 * 0.001 / 0.3)
+
+
 def test_no_hertz_time_beside_a_rayleigh_time_leaves_that_ratio_out(spheres):
     sim = scene(spheres, "test/granular/limits 0.05 0 0.001")
     sim.command("run 100")
@@ -104,7 +112,7 @@ def test_error_yes_stops_the_run(spheres):
 @pytest.mark.parametrize("args, message", [
     ("0 0.1 0.1", "nevery must be >= 1 (got 0)"),
     ("10 0.1", "missing argument fraction_h; usage: fix ID GROUP check/timestep/gran NEVERY "
-     "FRACTION_R FRACTION_H [error yes|no]"),
+     "FRACTION_R FRACTION_H [error yes|no] [warn yes|no] [vmax V]"),
     ("10 -0.1 0.1", "fraction_r must be > 0 (got -0.1)"),
     ("10 0.1 0.1 error maybe", "error must be yes or no (got maybe)"),
 ])
