@@ -429,6 +429,20 @@ CASES = {
                                 "fix push top addforce v_fx 0.0 0.0005 energy v_e\n"
                                 "fix pull all addforce 0.0 -0.0002 0.0001\nfix_modify pull energy yes\n"
                                 "compute pe all pe\n", "f_push f_push[1] f_pull f_pull[2] c_pe")),
+    "cluster": Case("compute_coord", ("compute cluster/atom",),
+                    bed("compute cl all cluster/atom 0.0108\ncompute tc top cluster/atom 0.0119\n"
+                        "compute cs all reduce sum c_cl c_tc\ncompute cm all reduce max c_cl c_tc\n",
+                        "c_cs[1] c_cs[2] c_cm[1] c_cm[2]")),
+    "ave_correlate": Case("analyze_ave", ("fix ave/correlate",),
+                          bed("variable z equal c_sum[3]\n"
+                              "fix ca all ave/correlate 50 4 300 c_sum[6] c_rke v_z file auto.correlate\n"
+                              "fix cu all ave/correlate 20 10 300 c_sum[6] v_z type upper ave running prefactor 2.0 "
+                              "file upper.correlate\n"
+                              "fix cf all ave/correlate 100 3 300 c_sum[6] c_sum[3] type full start 600\n"
+                              "fix cl all ave/correlate 100 3 300 c_sum[6] c_sum[3] c_rke type auto/lower\n",
+                              "f_ca[1][2] f_ca[1][3] f_ca[2][3] f_ca[4][5] f_cu[1][3] f_cu[10][3] f_cu[5][2] "
+                              "f_cf[2][4] f_cf[3][6] f_cl[1][5] f_cl[2][8]"),
+                          outputs=("auto.correlate", "upper.correlate")),
 }
 
 
