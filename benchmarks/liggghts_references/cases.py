@@ -443,6 +443,13 @@ CASES = {
                               "f_ca[1][2] f_ca[1][3] f_ca[2][3] f_ca[4][5] f_cu[1][3] f_cu[10][3] f_cu[5][2] "
                               "f_cf[2][4] f_cf[3][6] f_cl[1][5] f_cl[2][8]"),
                           outputs=("auto.correlate", "upper.correlate")),
+    "centro": Case("compute_coord", ("compute centro/atom",),
+                   ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\ncompute cs all centro/atom 6\n"
+                   "compute c4 half centro/atom 6\ncompute sum all reduce sum x y z vx vy vz\n"
+                   "compute cr all reduce sum c_cs c_c4\ncompute cm all reduce max c_cs\n"
+                   + ATOMIC_RUN.replace("compute sum all reduce sum x y z vx vy vz\n", "")
+                   .replace("thermo_style custom step atoms ke c_pe", "thermo_style custom step atoms ke c_pe c_cr[1] "
+                            "c_cr[2] c_cm"), head=False),
 }
 
 
