@@ -450,6 +450,20 @@ CASES = {
                    + ATOMIC_RUN.replace("compute sum all reduce sum x y z vx vy vz\n", "")
                    .replace("thermo_style custom step atoms ke c_pe", "thermo_style custom step atoms ke c_pe c_cr[1] "
                             "c_cr[2] c_cm"), head=False),
+    "molecules": Case("compute_basic", ("compute com/molecule", "compute gyration/molecule", "compute msd/molecule",
+                                        "compute inertia/molecule", "compute atom/molecule",
+                                        "compute property/molecule"),
+                      HEAD.replace("atom_style granular", "atom_style hybrid granular molecular")
+                      + bed("region left block INF 0.0 INF INF INF INF units box\ngroup left region left\n"
+                            "set group all mol 1\nset group left mol 3\nset group top mol 5\n"
+                            "compute cm all com/molecule\ncompute rg all gyration/molecule\n"
+                            "compute rt left gyration/molecule tensor\ncompute md all msd/molecule\n"
+                            "compute in all inertia/molecule\ncompute ka all ke/atom\n"
+                            "compute rke_atom all erotate/sphere/atom\ncompute am all atom/molecule c_ka c_rke_atom\n"
+                            "compute pm top property/molecule mol count\n",
+                            "c_cm[1][1] c_cm[2][3] c_cm[3][2] c_rg[1] c_rg[3] c_rt[1][1] c_rt[2][4] c_md[1][3] "
+                            "c_md[3][4] c_in[1][1] c_in[2][4] c_in[3][6] c_am[1][1] c_am[3][2] c_pm[1][1] c_pm[1][2]"),
+                      head=False),
 }
 
 
