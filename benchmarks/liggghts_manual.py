@@ -17,7 +17,8 @@ style that reads its words by hand says ``keywords: not declared``. And what its
 checked against: the recorded-thermo tables of LIGGGHTS's numbers (``liggghts.cases.json`` beside
 the plugins' tests and the core's, written by benchmarks/liggghts_references/cases.py, each case
 naming the items it checks), and CHECKED, kept by hand, for the other tests that compare an item
-with LIGGGHTS's numbers recorded on this machine. An item works fully when it is known, reads every keyword of its
+with LIGGGHTS's numbers recorded on this machine; for a style the manual lists and LIGGGHTS 3.8.0
+itself does not have (run here: "Invalid fix style"), LAMMPS's recorded numbers (LAMMPS_CHECKED). An item works fully when it is known, reads every keyword of its
 page, and has such a check.
 
 The manual is LIGGGHTS's (GPL): it is read where it is unpacked, never copied; the table holds names.
@@ -65,6 +66,15 @@ CHECKED = {
     ("fix", "particledistribution/discrete"): "plugins/fix_insert/tests/test_distributions.py",
     ("thermo_modify", None): "tests/test_loop.py (lost); corpus (every tutorial's thermo)",
 }
+# styles the manual lists that LIGGGHTS 3.8.0 itself does not have ("Invalid fix style", run 12-02): no
+# LIGGGHTS number can exist, so LAMMPS's, whose styles they are, are what they were checked against
+LAMMPS_CHECKED = {
+    ("fix", "rigid/nve"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
+    ("fix", "rigid/nvt"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
+    ("fix", "rigid/npt"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
+    ("fix", "rigid/nph"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
+}
+CHECKED.update(LAMMPS_CHECKED)
 # the sub-models, each in the pair, wall and mesh cases of plugins/pair_gran/tests/data/liggghts_submodels.json
 SUBMODEL_CASES = "plugins/pair_gran/tests (liggghts_submodels.json: the pair, wall and mesh cases that name it)"
 for _sub in ("model hertz", "model hooke", "model hooke/stiffness", "model hertz/stiffness", "tangential history",
@@ -242,7 +252,8 @@ def table(texts):
     complete = sum(r[4].startswith("keywords: all") for r in counted)
     lines += ["", f"{len(counted)} items (CFD coupling left out): {known} known to pdps, {refused} refused with "
                   f"a reason, {len(counted) - known - refused} unknown; {complete} styles read every keyword "
-                  f"of their page; {fully} work fully (known, every keyword, numbers checked against LIGGGHTS's)."]
+                  f"of their page; {fully} work fully (known, every keyword, numbers checked against LIGGGHTS's, "
+                  f"or LAMMPS's for the {len(LAMMPS_CHECKED)} styles LIGGGHTS 3.8.0 lacks)."]
     return "\n".join(lines)
 
 
