@@ -464,6 +464,15 @@ CASES = {
                             "c_cm[1][1] c_cm[2][3] c_cm[3][2] c_rg[1] c_rg[3] c_rt[1][1] c_rt[2][4] c_md[1][3] "
                             "c_md[3][4] c_in[1][1] c_in[2][4] c_in[3][6] c_am[1][1] c_am[3][2] c_pm[1][1] c_pm[1][2]"),
                       head=False),
+    "tracer": Case("fix_property", ("fix property/atom/tracer", "compute nparticles/tracer/region"),
+                   bed("region mark block INF INF INF INF 0.025 INF units box\n"
+                       "region low block 0.0 INF INF INF INF 0.022 units box\n"
+                       "fix tr all property/atom/tracer region_mark mark mark_step 600 check_mark_every 20\n"
+                       "fix th all property/atom/tracer region_mark low mark_step 0 marker_style heaviside\n"
+                       "compute nt all nparticles/tracer/region region_count low tracer tr\n"
+                       "compute nh all nparticles/tracer/region region_count low tracer th reset_marker no\n"
+                       "compute ms all reduce sum f_tr f_th\n",
+                       "f_tr f_th c_nt[1] c_nt[2] c_nt[3] c_nt[4] c_nh[2] c_nh[4] c_ms[1] c_ms[2]")),
 }
 
 
