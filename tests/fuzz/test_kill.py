@@ -36,7 +36,7 @@ thermo 1
 thermo_style custom step temp pe ke press
 dump a all atom 1 d.atom
 dump c all custom 1 d.custom id type x y z vx vy vz
-restart 1 r.restart
+restart 1 r.restart r.restart
 run 100000000
 """
 PARTICLES = 512

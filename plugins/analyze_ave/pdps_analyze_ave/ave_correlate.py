@@ -56,7 +56,7 @@ class AveCorrelateArgs(StyleArgs):
     type: Literal[TYPES] = keyword("auto")
     ave: Literal["one", "running"] = keyword("one")
     start: int = keyword(0, ge=0, unit="timesteps")
-    prefactor: float = keyword(1.0)
+    prefactor: float = keyword(1.0, unit="as the formula")
     file: str | None = keyword(None, names="file name")
     overwrite: tuple[()] | None = keyword(None)
     title1: str | None = keyword(None, names="file line")

@@ -50,8 +50,8 @@ BIG = 1.0e20
 
 
 class AveHistoArgs(ScheduleArgs):
-    lo: float = param()     # in the values' units
-    hi: float = param()
+    lo: float = param(unit="as the property")     # the values' own units
+    hi: float = param(unit="as the property")
     nbin: int = param(ge=1, unit="dimensionless")
     values: list[str] = param(min_length=1, names="value (x, vx, c_ID, c_ID[k], f_ID, f_ID[k], v_NAME)")
     mode: Literal["scalar", "vector"] = keyword("scalar")

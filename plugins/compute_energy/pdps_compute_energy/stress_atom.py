@@ -26,7 +26,7 @@ from typing import Literal
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, observables, param
+from pdps_core.api import Compute, StyleArgs, observables, param
 
 TERMS = ("ke", "pair", "bond", "angle", "dihedral", "improper", "kspace", "fix", "virial")
 

@@ -74,7 +74,7 @@ class FixAddForce(ForceFix):
         buoyancy: tuple[Axis, float, float] | tuple[Axis, float] | None = keyword(
             None, unit=("1", "density", "acceleration"))
         region: str | None = keyword(None)
-        energy: FloatOrVariable | None = keyword(None, names="v_NAME")
+        energy: FloatOrVariable | None = keyword(None, unit="energy", names="v_NAME")
 
         @model_validator(mode="after")
         def _something_to_add(self):
