@@ -75,6 +75,9 @@ class Dialect:
     # compute rdf divides by the ordered pairs of distinct particles, N_I N_J - D (LAMMPS since
     # 2017); LIGGGHTS 3.8.0's by N_I N_J, as the LAMMPS it was forked from (its source, measured)
     rdf_distinct_pairs: bool = True
+    # fix addforce's energy with a variable force and no energy keyword: -F . x of the values now
+    # (LAMMPS), or 0 (LIGGGHTS 3.8.0, the LAMMPS it was forked from: its source)
+    variable_force_energy: bool = True
 
 
 DIALECTS = {
@@ -87,7 +90,7 @@ DIALECTS = {
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
                         adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
                         rebuild_at_setup=True, print_at_setup=False, command_units="box",
-                        rdf_distinct_pairs=False),
+                        rdf_distinct_pairs=False, variable_force_energy=False),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

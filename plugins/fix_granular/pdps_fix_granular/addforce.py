@@ -25,9 +25,10 @@ every step (a force that changes in time). Its potential energy, added to thermo
 :math:`E = -\sum_i \mathbf{F}\cdot\mathbf{x}_i` over the particles it acts on, with unwrapped
 positions (image flags counted), as LAMMPS's fix addforce. Any of the three parts can be combined in one fix; ``region RID``
 (LAMMPS) restricts them to particles inside the region. Applied in ``post_force`` and at setup.
-As LAMMPS's, when a component is a variable the energy is 0 unless ``energy v_E`` names an
-atom-style variable giving each particle's potential energy, which is summed over the particles
-the force acts on. The fix's scalar ``f_ID`` is that energy; its vector ``f_ID[1-3]`` the group's
+When a component is a variable, ``energy v_E`` names an atom-style variable giving each
+particle's potential energy, summed over the particles the force acts on; without it the energy is
+-F . x of the values now, as LAMMPS's, and 0 in the LIGGGHTS dialect, as LIGGGHTS 3.8.0's
+(``Dialect.variable_force_energy``). The fix's scalar ``f_ID`` is that energy; its vector ``f_ID[1-3]`` the group's
 total force before the fix added to it.
 Drag and buoyancy need per-particle radii (``particle_style sphere``).
 
@@ -131,15 +132,16 @@ class FixAddForce(ForceFix):
             f[selected, AXES[axis]] += rho * g * volume
 
     def compute_energy(self, sim):
-        """-F . x over the particles the constant force acts on (this rank's); for a variable force
-        the energy variable's sum over them, or 0 (LAMMPS's)."""
+        """-F . x over the particles the force acts on (this rank's); for a variable force the
+        energy variable's sum over them when given, and 0 without it in LIGGGHTS's dialect."""
         force = self.constant_force(sim)
         if force is None:
             return 0.0
         p = sim.particles
         n = p.nlocal
         selected = chosen(sim, self.group, self.args.region)
-        if any(isinstance(c, VariableRef) for c in self.components):
+        if any(isinstance(c, VariableRef) for c in self.components) and (
+                self.args.energy is not None or not sim.dialect.variable_force_energy):
             if self.args.energy is None:
                 return 0.0
             name = self.args.energy.name
