@@ -29,15 +29,13 @@ Example::
     fix vacf all ave/correlate 5 100 1000 c_p[1] c_p[2] c_p[3] type auto file p.correlate ave running
 """
 
-import re
 from typing import Literal
 
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import PERATOM_REFERENCE, Fix, ScriptError, StyleArgs, keyword, param
 
-REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 TYPES = ("auto", "upper", "lower", "auto/upper", "auto/lower", "full")
 
 
@@ -111,7 +109,7 @@ class FixAveCorrelate(Fix):
         return -(-due // self.args.nevery) * self.args.nevery
 
     def _reader(self, sim, word):
-        match = REFERENCE.match(word)
+        match = PERATOM_REFERENCE.match(word)
         if match is None:
             raise ScriptError(f"value must be c_ID, c_ID[k], f_ID, f_ID[k] or v_NAME (got {word})")
         prefix, ident, column = match.groups()

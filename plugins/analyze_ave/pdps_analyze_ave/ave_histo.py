@@ -33,19 +33,17 @@ Example::
     fix speeds all ave/histo 100 5 1000 0.0 2.0 40 vx vy vz file speeds.histo ave running
 """
 
-import re
 from typing import Literal
 
 import numpy as np
 from pydantic import model_validator
 
-from pdps_core.api import Compute, Fix, PeratomReference, ScriptError, keyword, param
+from pdps_core.api import PERATOM_REFERENCE, Compute, Fix, PeratomReference, ScriptError, keyword, param
 
 from .schedule import Schedule, ScheduleArgs
 
 COMPONENTS = {"x": ("x", 0), "y": ("x", 1), "z": ("x", 2), "vx": ("v", 0), "vy": ("v", 1), "vz": ("v", 2),
               "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2)}
-REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 BIG = 1.0e20
 
 
@@ -125,7 +123,7 @@ class FixAveHisto(Fix):
                 p = s.particles
                 return p.arrays[array][: p.nlocal, d][s.groups.select(s, group)]
             return components, True
-        match = REFERENCE.match(word)
+        match = PERATOM_REFERENCE.match(word)
         if match is None:
             raise ScriptError(f"value must be x, y, z, vx, vy, vz, fx, fy, fz, c_ID, c_ID[k], f_ID, f_ID[k] "
                               f"or v_NAME (got {word})")

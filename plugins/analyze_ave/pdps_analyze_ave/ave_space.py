@@ -72,13 +72,13 @@ Examples::
 """
 
 import math
-import re
 from typing import Annotated, Literal, NamedTuple
 
 import numpy as np
 from pydantic import Field, model_validator
 
-from pdps_core.api import Analyze, Fix, PeratomReference, ScriptError, check_bins, keyword, observables, param
+from pdps_core.api import (PERATOM_REFERENCE, Analyze, Fix, PeratomReference, ScriptError, check_bins, keyword,
+                           observables, param)
 
 from .schedule import Schedule, ScheduleArgs
 
@@ -86,7 +86,6 @@ AXES = ("x", "y", "z")
 ATTRIBUTES = {"vx": ("v", 0), "vy": ("v", 1), "vz": ("v", 2),
               "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2)}
 VALUES = ("density/number", "density/mass", "vx", "vy", "vz", "fx", "fy", "fz")
-REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 
 
 def bin_layout(lo, hi, origin, delta):
@@ -130,7 +129,7 @@ class AveSpaceArgs(ScheduleArgs):
     @model_validator(mode="after")
     def _combination(self):
         for value in self.values:
-            if value not in VALUES and not REFERENCE.match(value):
+            if value not in VALUES and not PERATOM_REFERENCE.match(value):
                 raise ValueError(f"values must be {', '.join(VALUES)}, c_ID, c_ID[k], f_ID, f_ID[k] or v_NAME "
                                  f"(got {value})")
         if self.ave[0] == "window" and self.ave[1] < 1:

@@ -102,18 +102,23 @@ class FixBuoyancy(ForceFix):
         self.level = 0.0 if args.level is None else args.level
         self.total = np.zeros(3)
 
-    def _gravity(self, sim):
+    def _find_gravity(self, sim):
         fixes = [fix for fix in sim.fixes.values() if isinstance(fix, FixGravity)]
         if len(fixes) != 1:
             raise ScriptError(f"fix {self.id} (buoyancy) needs exactly one fix gravity (found {len(fixes)})")
-        g = np.asarray(fixes[0].acceleration)
+        return fixes[0]
+
+    def _gravity(self, sim):
+        """(the sign of gravity along dim, |g|), read every step as LIGGGHTS reads it."""
+        g = np.asarray(self.gravity.acceleration)
         across = np.delete(g, self.axis)
         if np.any(across != 0.0) or g[self.axis] == 0.0:
-            raise ScriptError(f"fix {self.id} (buoyancy): fix {fixes[0].id} (gravity) does not point along "
+            raise ScriptError(f"fix {self.id} (buoyancy): fix {self.gravity.id} (gravity) does not point along "
                               f"dim {self.args.dim} (its acceleration {g.tolist()})")
         return math.copysign(1.0, g[self.axis]), float(np.linalg.norm(g))
 
     def setup(self, sim):
+        self.gravity = self._find_gravity(sim)
         self._gravity(sim)
         super().setup(sim)
 
