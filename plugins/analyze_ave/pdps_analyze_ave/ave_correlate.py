@@ -122,10 +122,10 @@ class FixAveCorrelate(Fix):
             raise ScriptError(f"{'compute' if prefix == 'c' else 'fix'} {ident} is not defined (value {word})")
         if column is None:
             return (lambda s: float(s.compute_value(ident))) if prefix == "c" else \
-                (lambda s: float(s.styles.fix_value(ident)))
+                (lambda s: float(s.fix_value(ident)))
         indices = (int(column),)
         return (lambda s: float(s.compute_value(ident, indices))) if prefix == "c" else \
-            (lambda s: float(s.styles.fix_value(ident, indices)))
+            (lambda s: float(s.fix_value(ident, indices)))
 
     def needs(self, step):
         return {"energy", "virial"} if step == self.due else set()
