@@ -73,6 +73,10 @@ LAMMPS_CHECKED = {
     ("fix", "rigid/nvt"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
     ("fix", "rigid/npt"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
     ("fix", "rigid/nph"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_lammps.py (LIGGGHTS 3.8.0 has none)",
+    ("fix", "wall/reflect"): "LAMMPS: plugins/fix_wall/tests/data/wall_lj.cases.json (reflect, reflect_lattice; "
+                             "LIGGGHTS 3.8.0 has none)",
+    ("compute", "msd/nongauss"): "LAMMPS: plugins/compute_basic/tests/test_compute_basic.py "
+                                 "(test_msd_nongauss_as_lammps; LIGGGHTS 3.8.0 has none)",
 }
 CHECKED.update(LAMMPS_CHECKED)
 # the sub-models, each in the pair, wall and mesh cases of plugins/pair_gran/tests/data/liggghts_submodels.json

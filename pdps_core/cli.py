@@ -176,7 +176,7 @@ def _run(args):
         if args.echo:
             sim.output.echo_to = args.echo
         sim.file(script)
-        return 0
+        return sim.script.exit_status
     except ScriptError as exc:
         _fail(sim, f"ERROR: {exc}", args.debug, alone=_found_alone(sim, exc))
         return 1

@@ -69,3 +69,11 @@ class SimulationError(ScriptError):
 def got(value):
     """How an offending value is quoted in a message."""
     return f"(got {value})"
+
+
+class ScriptQuit(Exception):
+    """``quit [STATUS]`` ran: the script ends here, and the program with STATUS (LAMMPS's quit)."""
+
+    def __init__(self, status=0):
+        super().__init__(f"quit {status}")
+        self.status = status

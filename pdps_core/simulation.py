@@ -26,7 +26,7 @@ import os
 from operator import attrgetter
 
 from .comm import world
-from .errors import ScriptError
+from .errors import ScriptError, ScriptQuit
 from .neighbor.neighbor import Neighbor
 from .output.output import Output
 from .run import driver
@@ -97,8 +97,11 @@ class Simulation:
         return self
 
     def command(self, text):
-        """Run one or more lines of script text."""
-        self.script.text(text, "<command>", os.getcwd())
+        """Run one or more lines of script text (a ``quit`` among them ends them there)."""
+        try:
+            self.script.text(text, "<command>", os.getcwd())
+        except ScriptQuit as exc:
+            self.script.exit_status = exc.status
         return self
 
     def execute(self, words):

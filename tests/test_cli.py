@@ -390,3 +390,56 @@ def test_styles_into_a_pipe_closed_early_prints_no_traceback():
     result = subprocess.run(f"{sys.executable} -m pdps_core.cli styles | head -1", shell=True,
                             capture_output=True, text=True)
     assert result.stdout.count("\n") == 1 and "Traceback" not in result.stderr and "Error" not in result.stderr
+
+
+# ---- quit and shell (LAMMPS's; LIGGGHTS 3.8.0's recorded in tests/data/liggghts.cases.json, shell_quit)
+def test_quit_ends_the_script_with_its_status_keeping_the_output(pdps_cli, tmp_path):
+    (tmp_path / "in.rest").write_text("print 'in the included file'\nquit 3\nprint 'never'\n")
+    result = pdps_cli("atom_style atomic\n" + BOX + "create_atoms 1 single 1 1 1\nfix 1 all nve\n"
+                      "dump d all custom 1 frames.txt id x\nrun 2\ninclude in.rest\nrun 2\n")
+    assert (result.returncode, result.stderr) == (3, "")
+    assert "in the included file" in result.stdout and "never" not in result.stdout
+    # the dump's frames of the first run, complete; the second run never started
+    assert (tmp_path / "frames.txt").read_text().count("ITEM: TIMESTEP") == 3
+
+
+def test_quit_without_a_status_exits_0_and_1_in_the_liggghts_dialect(pdps_cli):
+    assert pdps_cli("atom_style atomic\nquit\n").returncode == 0
+    assert pdps_cli("atom_style atomic\nif '1 > 0' then quit\nprint no\n").returncode == 0
+    # the lines after a quit are never read, so never refused
+    assert pdps_cli("atom_style atomic\nquit\nbogus_command\n").returncode == 0
+    assert pdps_cli("atom_style atomic\nquit\n", "--dialect", "liggghts").returncode == 1
+
+
+@pytest.mark.parametrize("script, expected", [
+    ("quit 1 2\n", "ERROR: in.test:2: quit: expected 0 to 1 argument(s), got 2; usage: quit [STATUS]"),
+    ("quit 300\n", "ERROR: in.test:2: quit: quit STATUS is an exit code from 0 to 255 (got 300)"),
+    ("shell mv a\n", "ERROR: in.test:2: shell: expected: shell mv OLD NEW (got 1 words)"),
+    ("shell putenv X\n", "ERROR: in.test:2: shell: shell putenv takes NAME=VALUE (got 'X')"),
+    ("shell\n", "ERROR: in.test:2: shell: expected: shell cd|mkdir|mv|rm|rmdir|putenv ARGS, or a shell command"),
+])
+def test_bad_quit_and_shell_lines(pdps_cli, script, expected):
+    assert one_error_line(pdps_cli("atom_style atomic\n" + script)) == expected
+
+
+def test_quit_with_a_status_is_refused_in_the_liggghts_dialect(pdps_cli):
+    line = one_error_line(pdps_cli("atom_style atomic\nquit 0\n", "--dialect", "liggghts"))
+    assert line == ("ERROR: in.test:2: quit: expected 0 argument(s), got 1; usage: quit "
+                    "(the LIGGGHTS dialect's quit takes no status)")
+
+
+def test_shell_makes_moves_and_removes_files_and_sets_the_environment(pdps_cli, tmp_path, monkeypatch):
+    monkeypatch.delenv("PDPS_SHELL_TEST", raising=False)
+    result = pdps_cli("atom_style atomic\nshell mkdir a/b c\nshell cd a\nprint here file here.txt\n"
+                      "shell cd ..\nshell mv a/here.txt c/there.txt\nshell rmdir a/b\nshell putenv PDPS_SHELL_TEST=7\n"
+                      "variable v getenv PDPS_SHELL_TEST\nprint 'v=${v}'\nshell echo from-the-shell > c/echo.txt\n"
+                      "shell rm c/gone.txt\nshell false\nprint end\n")
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "c" / "there.txt").read_text() == "here\n"
+    assert not (tmp_path / "a" / "b").exists() and (tmp_path / "a").is_dir()
+    assert (tmp_path / "c" / "echo.txt").read_text() == "from-the-shell\n"
+    assert "v=7" in result.stdout.splitlines()
+    # a failure warns, as LAMMPS does, and the script goes on
+    assert "WARNING: shell rm: No such file or directory (c/gone.txt)" in result.stdout
+    assert "WARNING: shell false: the command exited with status 1" in result.stdout
+    assert result.stdout.splitlines()[-1] == "end"

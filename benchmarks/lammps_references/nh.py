@@ -1,5 +1,5 @@
-"""Record LAMMPS's thermo for short runs with fix nvt, npt, nph, deform, the LJ walls and
-wall/harmonic, the reference plugins/fix_nh/tests/test_lammps_nh.py and
+"""Record LAMMPS's thermo for short runs with fix nvt, npt, nph, deform, the LJ walls,
+wall/harmonic and wall/reflect (fixed, lattice-scaled and variable), the reference plugins/fix_nh/tests/test_lammps_nh.py and
 plugins/fix_wall/tests/test_wall_lj.py compare pdps with.
 
     python benchmarks/lammps_references/nh.py [LMP]
@@ -67,8 +67,15 @@ WALL_CASES = {
                 "fix_modify 2 virial yes",
     "harmonic": "fix 1 all nve\nfix 2 all wall/harmonic zlo EDGE 20.0 1.0 1.2 zhi 6.5 5.0 1.0 1.0 units box\n"
                 "fix_modify 2 energy yes virial yes",
+    # a fixed reflecting wall inside the fluid's lowest layer and one closing in from the top
+    "reflect": "variable top equal 6.9-5.0*step*dt\nfix 1 all nve\n"
+               "fix 2 all wall/reflect zlo 0.9 zhi v_top units box",
+    "reflect_lattice": "lattice sc 0.5\nfix 1 all nve\nfix 2 all wall/reflect zlo EDGE zhi 4.9",
 }
 WALL_THERMO = "step temp pe press f_2 f_2[1] f_2[2]"
+# the walls with no energy or force of their own print the fluid's
+WALL_COLUMNS = {"reflect": "step temp pe press c_top c_low", "reflect_lattice": "step temp pe press c_top"}
+WALL_COMPUTES = "compute top all reduce max z\ncompute low all reduce min z\n"
 SETUP = ["units lj", "atom_style atomic", "read_data fluid.data", "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0",
          "pair_coeff 2 2 0.5 1.2", "timestep 0.002"]
 
@@ -153,8 +160,8 @@ def plane_data():
 def wall_script(case):
     return "\n".join(["units lj", "atom_style atomic", "boundary p p f", "read_data walls.data",
                       "pair_style lj/cut 2.5", "pair_coeff 1 1 1.0 1.0", "pair_coeff 2 2 0.5 1.2",
-                      "timestep 0.002", WALL_CASES[case], "thermo 25", f"thermo_style custom {WALL_THERMO}",
-                      "run 100"])
+                      "timestep 0.002", WALL_CASES[case], WALL_COMPUTES + "thermo 25",
+                      f"thermo_style custom {WALL_COLUMNS.get(case, WALL_THERMO)}", "run 100"])
 
 
 def wall_data():

@@ -133,6 +133,7 @@ class Case:
     files: dict = field(default_factory=dict)
     head: bool = True     # the granular head goes first
     outputs: tuple = ()   # files the run writes, recorded for pdps to write again
+    status: int = 0       # LIGGGHTS's exit code (its quit exits with 1)
 
 
 def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
@@ -354,6 +355,16 @@ CASES = {
                           "clear\natom_modify map array\nnewton off\ncommunicate single vel yes\n"
                           "read_restart bed.restart.1500\nneighbor 0.002 bin\nneigh_modify delay 0\n" + MATERIAL
                           + AGAIN + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n", head=False),
+    # the working directory changes, files are made, moved and removed, the environment feeds a
+    # variable, and quit ends the script before its last run
+    "shell_quit": Case("core", ("shell", "quit"),
+                       BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 900\n"
+                       "shell mkdir out scratch\nshell putenv STEPS=600 LABEL=bed\n"
+                       "variable steps getenv STEPS\nvariable label getenv LABEL\nrun ${steps}\n"
+                       "shell cd out\nwrite_dump all custom ${label}.dump id x y z modify sort id\n"
+                       "shell cd ..\nshell mv out/bed.dump moved.dump\nshell rmdir out scratch\n"
+                       "shell touch gone.txt\nshell rm gone.txt\nrun 900\nquit\nrun 900\n",
+                       outputs=("moved.dump",), status=1),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),
@@ -495,9 +506,9 @@ def thermo_rows(log):
     return rows
 
 
-def run_liggghts(script, files, label, outputs=()):
-    """LIGGGHTS's log of ``script`` (None when it fails), with the texts of the ``outputs`` it wrote
-    in ``written``."""
+def run_liggghts(script, files, label, outputs=(), status=0):
+    """LIGGGHTS's log of ``script`` (None when it fails: an exit code other than ``status``, or an
+    error in its log), with the texts of the ``outputs`` it wrote in ``written``."""
     written.clear()
     with tempfile.TemporaryDirectory() as folder:
         for name, text in files.items():
@@ -509,7 +520,7 @@ def run_liggghts(script, files, label, outputs=()):
         for name in outputs:
             if (Path(folder) / name).exists():
                 written[name] = (Path(folder) / name).read_text()
-    if done.returncode != 0 or "ERROR" in log:
+    if done.returncode != status or "ERROR" in log:
         error = next((line for line in log.splitlines() if line.startswith("ERROR")), done.stderr[-300:])
         print(f"LIGGGHTS failed ({label}): {error}")
         return None
@@ -547,7 +558,7 @@ def main(only=()):
             if only and name not in only and name in old:
                 rows += old[name]
                 continue
-            log = run_liggghts(script_of(c), c.files, name, c.outputs)
+            log = run_liggghts(script_of(c), c.files, name, c.outputs, c.status)
             if set(written) != set(c.outputs):
                 print(f"LIGGGHTS wrote none of {sorted(set(c.outputs) - set(written))} ({name})")
                 log = None

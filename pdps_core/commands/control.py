@@ -1,7 +1,10 @@
 """Script control and output commands: dialect, echo, variable, next, print, if, label, jump, clear,
-include, run, reset_timestep, thermo, thermo_style, thermo_modify, log (LAMMPS's semantics)."""
+include, quit, shell, run, reset_timestep, thermo, thermo_style, thermo_modify, log (LAMMPS's semantics)."""
 
-from ..errors import ScriptError
+import os
+import subprocess
+
+from ..errors import ScriptError, ScriptQuit
 from ..state import limits
 from ..script.lexer import split_words, substitute
 from . import command
@@ -168,6 +171,74 @@ def clear(sim, args):
 def include(sim, args):
     count(args, 1, "include FILE")
     sim.file(sim.resolve(args[0]))
+
+
+@command("quit")
+def quit_(sim, args):
+    """``quit [STATUS]``: the script ends here, and ``pdps run`` with exit code STATUS, the output
+    written so far kept (LAMMPS's quit; without STATUS 0, in the LIGGGHTS dialect 1: LIGGGHTS 3.8.0's
+    quit takes no status and exits with 1, measured)."""
+    if sim.dialect.quit_status is not None:
+        count(args, 0, f"quit (the {sim.dialect.label} dialect's quit takes no status)")
+        raise ScriptQuit(sim.dialect.quit_status)
+    count(args, 0, "quit [STATUS]", at_most=1)
+    status = integer(args[0], "quit STATUS") if args else 0
+    if not 0 <= status <= 255:
+        raise ScriptError(f"quit STATUS is an exit code from 0 to 255 (got {status})")
+    raise ScriptQuit(status)
+
+
+SHELL_ARGUMENTS = {"cd": (1, 1), "mkdir": (1, None), "mv": (2, 2), "rm": (1, None), "rmdir": (1, None),
+                   "putenv": (1, None)}
+
+
+@command("shell")
+def shell(sim, args):
+    """``shell cd DIR | mkdir DIR... | mv OLD NEW | rm FILE... | rmdir DIR... | putenv NAME=VALUE... |
+    COMMAND WORDS...`` (LAMMPS's and LIGGGHTS's shell): paths are the working directory's, and
+    after ``shell cd`` the files the script names are the new directory's; files
+    are made, moved and removed by the first rank, the directory and the environment change on
+    every rank; any other words run as one shell command on the first rank. A failure is a
+    warning, as in LAMMPS: the script goes on."""
+    if not args:
+        raise ScriptError("expected: shell cd|mkdir|mv|rm|rmdir|putenv ARGS, or a shell command")
+    action, operands = args[0], args[1:]
+    if action in SHELL_ARGUMENTS:
+        least, most = SHELL_ARGUMENTS[action]
+        if len(operands) < least or (most is not None and len(operands) > most):
+            shape = {"cd": "DIR", "mv": "OLD NEW", "putenv": "NAME=VALUE..."}.get(action, "PATH...")
+            raise ScriptError(f"expected: shell {action} {shape} (got {len(operands)} words)")
+    first = sim.comm.rank == 0
+    try:
+        if action == "cd":
+            os.chdir(operands[0])
+            # the files the script names from here on are the new directory's, as in LAMMPS
+            sim.script.directory = os.getcwd()
+        elif action == "putenv":
+            for assignment in operands:
+                name, equals, value = assignment.partition("=")
+                if not name or not equals:
+                    raise ScriptError(f"shell putenv takes NAME=VALUE (got {assignment!r})")
+                os.environ[name] = value
+        elif not first:
+            return
+        elif action == "mkdir":
+            for path in operands:
+                os.makedirs(path, exist_ok=True)
+        elif action == "mv":
+            os.replace(operands[0], operands[1])
+        elif action == "rm":
+            for path in operands:
+                os.remove(path)
+        elif action == "rmdir":
+            for path in operands:
+                os.rmdir(path)
+        else:
+            status = subprocess.call(" ".join(args), shell=True)
+            if status != 0:
+                sim.warn(f"shell {' '.join(args)}: the command exited with status {status}")
+    except OSError as exc:
+        sim.warn(f"shell {action}: {exc.strerror} ({exc.filename})")
 
 
 @command("run")

@@ -54,6 +54,8 @@ def preflight(sim, text, source):
             continue                    # the line reports its own quoting when it runs
         if not words:
             continue
+        if words[0] == "quit":
+            return                      # the lines after an unconditional quit never run
         try:
             if words[0] not in COMMANDS:
                 raise ScriptError(unknown_command(words[0]))

@@ -78,6 +78,9 @@ class Dialect:
     # fix addforce's energy with a variable force and no energy keyword: -F . x of the values now
     # (LAMMPS), or 0 (LIGGGHTS 3.8.0, the LAMMPS it was forked from: its source)
     variable_force_energy: bool = True
+    # None: quit takes [STATUS], 0 unless given (LAMMPS's); a number: quit takes no status and exits
+    # with that one (LIGGGHTS 3.8.0's exits with 1: its Error::done, measured)
+    quit_status: int | None = None
 
 
 DIALECTS = {
@@ -90,7 +93,7 @@ DIALECTS = {
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
                         adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
                         rebuild_at_setup=True, print_at_setup=False, command_units="box",
-                        rdf_distinct_pairs=False, variable_force_energy=False),
+                        rdf_distinct_pairs=False, variable_force_energy=False, quit_status=1),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..commands import COMMANDS
 from ..commands.preflight import preflight, unknown_command
-from ..errors import ScriptError
+from ..errors import ScriptError, ScriptQuit
 from ..state import limits
 from .context import FormulaContext
 from .dialect import DIALECTS, detect, dialect_named
@@ -33,7 +33,7 @@ class ScriptFlow:
 
 class Script:
     __slots__ = ("sim", "dialect", "dialect_fixed", "variables", "source", "line", "directory", "flow",
-                 "include_depth", "error_location")
+                 "include_depth", "error_location", "exit_status")
 
     def __init__(self, sim, dialect=None, variables=None):
         """``dialect``: "lammps", "pdps" or "liggghts" for every script, or None: the first script
@@ -52,6 +52,7 @@ class Script:
         self.flow = None            # ScriptFlow of the script being read
         self.include_depth = 0
         self.error_location = None  # (source, line) where a bug surfaced, for the one-line internal error
+        self.exit_status = 0        # what a script's quit asked pdps run to exit with
 
     def file(self, path):
         """Run a whole script file."""
@@ -68,6 +69,10 @@ class Script:
                 self._settle_dialect(text, shown, here)
                 preflight(self.sim, text, shown)
             self.text(text, shown, here, path)
+        except ScriptQuit as exc:
+            if not top:
+                raise
+            self.exit_status = exc.status
         finally:
             self.include_depth -= 1
 
@@ -121,6 +126,8 @@ class Script:
             self.execute(words)
         except ScriptError as exc:
             raise exc.locate(source, number, name)
+        except ScriptQuit:
+            raise
         except MemoryError as exc:
             # a valid scene too large for this machine is the user's to resize, not a bug
             message = str(exc).split(" for an array")[0].rstrip(".") or "an allocation failed"

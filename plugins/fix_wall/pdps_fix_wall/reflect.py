@@ -32,8 +32,10 @@ mirrored, normal velocity reversed, forces untouched), and coordinates are in la
 ``units box`` is given (LAMMPS's default ``units lattice``; without a lattice command the lattice
 spacing is 1).
 
-A wall coordinate is a number (distance units) or ``EDGE`` (the box face). Several walls may be given,
-each face at most once; they act one after the other in the order given.
+A wall coordinate is a number (distance units), ``EDGE`` (the box face where the fix is defined) or,
+in the LAMMPS form, ``v_NAME``: an equal-style variable evaluated every step (in lattice units unless
+``units box``, as the numbers), so a wall can move. Several walls may be given, each face at most once;
+they act one after the other in the order given.
 
 Syntax::
 
@@ -41,12 +43,14 @@ Syntax::
     fix ID GROUP wall/reflect face coord [face coord ...] [units box|lattice]   (LAMMPS)
 
     STYLE = bounce_back | bounce_forward | specular
-    face  = xlo | xhi | ylo | yhi | zlo | zhi,  coord = number | EDGE
+    face  = xlo | xhi | ylo | yhi | zlo | zhi,  coord = number | EDGE | v_NAME (LAMMPS form)
 
 Example::
 
     fix 3 mobile wall/reflect bounce_back xlo 0 xhi 40 ylo 0 yhi 40
     fix 4 all wall/reflect zlo EDGE zhi EDGE
+    variable top equal 20.0-0.01*step
+    fix 5 all wall/reflect zhi v_top units box
 """
 
 from typing import Literal
@@ -54,7 +58,7 @@ from typing import Literal
 from numba import njit
 from pydantic import model_validator
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
 from .faces import Face, once_each, wall_planes
 
@@ -101,7 +105,7 @@ class FixWallReflect(Fix):
 
     class Args(StyleArgs):
         style: Literal["specular", "bounce_forward", "bounce_back"] | None = param(None)
-        wall: list[tuple[Face, float | Literal["EDGE"]]] = param(min_length=1, unit=("1", "distance"))
+        wall: list[tuple[Face, FloatOrVariable | Literal["EDGE"]]] = param(min_length=1, unit=("1", "distance"))
         units: Literal["box", "lattice"] | None = keyword(None)
 
         @model_validator(mode="after")
@@ -110,6 +114,10 @@ class FixWallReflect(Fix):
                 raise ValueError(f"unknown keyword units with style {self.style} (the PDPS form is in box units; "
                                  "units box|lattice is LAMMPS's form, without a style word)")
             once_each(self.wall)
+            moving = next((coord for _, coord in self.wall if isinstance(coord, VariableRef)), None)
+            if self.style is not None and moving is not None:
+                raise ValueError(f"a wall at {moving} with style {self.style}: variable walls are LAMMPS's form, "
+                                 "without a style word")
             return self
 
     def __init__(self, sim, id, group, args):
@@ -120,10 +128,18 @@ class FixWallReflect(Fix):
         self.reverse_force = pdps_form
         units = "box" if pdps_form else (args.units or "lattice")
         walls = once_each(args.wall)
-        axes, lower, coords = wall_planes(sim, walls, units)
+        # the walls that move: (index, variable, lattice spacing along the wall's axis)
+        self.moving = []
+        for k, (face, coord) in enumerate(walls.items()):
+            if isinstance(coord, VariableRef):
+                axis = "xyz".index(face[0])
+                spacing = sim.lattice.spacing[axis] if (units == "lattice" and sim.lattice is not None) else 1.0
+                self.moving.append((k, coord, float(spacing)))
+        axes, lower, coords = wall_planes(sim, {face: 0.0 if isinstance(coord, VariableRef) else coord
+                                                for face, coord in walls.items()}, units)
         for axis, name in enumerate("xyz"):
             lo, hi = walls.get(f"{name}lo"), walls.get(f"{name}hi")
-            if lo is not None and hi is not None:
+            if lo is not None and hi is not None and not any(isinstance(c, VariableRef) for c in (lo, hi)):
                 c_lo = coords[list(walls).index(f"{name}lo")]
                 c_hi = coords[list(walls).index(f"{name}hi")]
                 if not c_lo < c_hi:
@@ -140,12 +156,17 @@ class FixWallReflect(Fix):
             p.arrays[self.old_name][: p.nlocal] = p.x[: p.nlocal]
 
     def setup(self, sim):
+        for _, variable, _ in self.moving:
+            if variable.name not in sim.variables:
+                raise ScriptError(f"fix {self.id} {self.name}: variable {variable.name} is not defined")
         self._remember(sim)
 
     def end_of_step(self, sim):
         self._remember(sim)
 
     def post_integrate(self, sim):
+        for k, variable, spacing in self.moving:
+            self.coords[k] = float(sim.variables.value(variable.name)) * spacing
         p = sim.particles
         x_old = p.arrays[self.old_name] if self.style == BOUNCE_BACK else p.x
         reflect(p.x, p.v, p.f, x_old, p.mask, sim.groups.bit(self.group), p.nlocal, self.axes,

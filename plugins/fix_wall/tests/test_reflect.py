@@ -148,9 +148,9 @@ def test_only_the_group_is_reflected():
 @pytest.mark.parametrize("words, message", [
     ("sideways xlo 0", "unknown keyword sideways (known: xlo, xhi, ylo, yhi, zlo, zhi, units)"),
     ("specular", "missing argument wall"),
-    ("specular xlo", "wall xlo needs number|EDGE (got nothing)"),
+    ("specular xlo", "wall xlo needs number|v_NAME|EDGE (got nothing)"),
     ("specular xlo 1 xlo 2", "wall xlo is given twice"),
-    ("specular xlo abc", "wall xlo must be a finite number or EDGE (got abc)"),
+    ("specular xlo abc", "wall xlo must be number | v_NAME or EDGE (got abc)"),
     ("specular xlo 5 xhi 3", "xlo must be below xhi (got 5 3)"),
     ("bounce_back xlo 1 units box", "unknown keyword units"),
     ("xlo 1 units metres", "units must be one of 'box' or 'lattice' (got metres)"),
@@ -167,3 +167,17 @@ def test_z_wall_in_two_dimensions_is_an_error():
     sim = make_box(box="0 10 0 10 -0.5 0.5", dimension=2)
     with pytest.raises(ScriptError, match="wall zlo in a 2-d simulation"):
         sim.command("fix 3 all wall/reflect specular zlo 0")
+
+
+def test_a_variable_wall_is_lammps_s_form_and_must_be_defined():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("boundary p p f\nregion box block 0 4 0 4 0 4\ncreate_box 1 box\nmass 1 1\n"
+                "create_atoms 1 single 1 1 1\nfix 1 all nve")
+    with pytest.raises(ScriptError) as bad_form:
+        sim.command("fix w all wall/reflect specular zhi v_top")
+    assert bad_form.value.message.endswith(
+        "a wall at v_top with style specular: variable walls are LAMMPS's form, without a style word")
+    sim.command("fix w all wall/reflect zhi v_top")
+    with pytest.raises(ScriptError) as undefined:
+        sim.command("run 1")
+    assert undefined.value.message == "fix w wall/reflect: variable top is not defined"
