@@ -68,7 +68,9 @@ def script_context(seeds):
     """What mutations draw from: every word and every line of the seeds, and the command names."""
     from pdps_core.commands import COMMANDS
     import pdps_core.simulation  # noqa: F401  (fills the command table)
-    words, lines = set(COMMANDS), set()
+    # shell runs its words as a system command: mutated scripts must not (they could remove the
+    # harness's files or wait on a terminal)
+    words, lines = set(COMMANDS) - {"shell"}, set()
     for seed in seeds:
         for name, data in seed.files.items():
             if name.endswith(".stl"):
@@ -77,6 +79,7 @@ def script_context(seeds):
                 if line.strip() and not line.startswith(b"#"):
                     lines.add(line.strip())
                     words.update(w.decode() for w in line.split())
+    words.discard("shell")
     return Context(vocabulary=sorted(w.encode() for w in words), lines=sorted(lines))
 
 
