@@ -124,6 +124,21 @@ def mesh_floor(stl="floor.stl"):
 MESH_FLOOR = mesh_floor()
 
 
+def tilted_stl(z, slope_x, slope_y):
+    """An ASCII STL: the square |x|, |y| <= 0.045 on the plane z + slope_x x + slope_y y, of two
+    triangles (tilted so that no two spheres of the bed pass through it at one step)."""
+    corners = [(-0.045, -0.045), (0.045, -0.045), (0.045, 0.045), (-0.045, 0.045)]
+    facets = []
+    for a, b, c in ((0, 1, 2), (0, 2, 3)):
+        vertices = "".join(f"      vertex {corners[k][0]} {corners[k][1]} "
+                           f"{z + slope_x * corners[k][0] + slope_y * corners[k][1]:.10g}\n" for k in (a, b, c))
+        facets.append(f"  facet normal 0 0 1\n    outer loop\n{vertices}    endloop\n  endfacet\n")
+    return "solid face\n" + "".join(facets) + "endsolid face\n"
+
+
+FACE = {"face.stl": tilted_stl(0.024, 0.13, 0.047)}
+
+
 @dataclass
 class Case:
     owner: str            # the plugin whose table holds it, or "core"
@@ -365,6 +380,27 @@ CASES = {
                        "shell cd ..\nshell mv out/bed.dump moved.dump\nshell rmdir out scratch\n"
                        "shell touch gone.txt\nshell rm gone.txt\nrun 900\nquit\nrun 900\n",
                        outputs=("moved.dump",), status=1),
+    # spheres falling through a tilted face: counted as they pass, once or every time, with LIGGGHTS's
+    # rates between thermo lines, a file of those counted, a property summed, the counted deleted
+    "massflow": Case("fix_wall", ("fix massflow/mesh",),
+                     bed("fix face all mesh/surface file face.stl type 1\n"
+                         "fix flow all massflow/mesh mesh face vec_side 0 0 -1 file flow.txt writeTime\n",
+                         "f_flow[1] f_flow[2] f_flow[3] f_flow[4] f_flow[5] f_flow[6]"),
+                     files=FACE, outputs=("flow.txt",)),
+    "massflow_delete": Case("fix_wall", ("fix massflow/mesh",),
+                            bed("fix face all mesh/surface file face.stl type 1\n"
+                                "fix mark all property/atom mark scalar yes no no 1.5\n"
+                                "fix flow top massflow/mesh mesh face count once vec_side 0.1 0.2 -1 "
+                                "sum_property mark delete_atoms yes screen no append gone.txt\n",
+                                "f_flow[1] f_flow[2] f_flow[3] f_flow[4] f_flow[5] f_flow[6] f_flow[7]"),
+                            files=FACE, outputs=("gone.txt",)),
+    "massflow_outlet": Case("fix_wall", ("fix massflow/mesh",),
+                            bed("fix face all mesh/surface file face.stl type 1\n"
+                                "fix down all massflow/mesh mesh face count once point_at_outlet 0.0 0.0 -0.5\n"
+                                "fix up all massflow/mesh mesh face count once point_at_outlet 0.0 0.0 0.5 "
+                                "inside_out\n",
+                                "f_down[1] f_down[2] f_up[1] f_up[2] f_up[3]"),
+                            files=FACE, ranks=True),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),
