@@ -173,6 +173,9 @@ def read_keywords(cls):
     if args is None or not getattr(args, "model_fields", None):
         return None
     words = set()
+    # a style spelled another way in a dialect (LIGGGHTS's wall/gran model ...) reads those words too
+    for other in getattr(cls, "spellings", lambda: ())():
+        words |= read_keywords(other) or set()
     for field, info in args.model_fields.items():
         words.add(field)
         if info.alias:

@@ -1178,8 +1178,10 @@ class PeratomReference:
 
     - ``c_ID[k]``, ``f_ID[k]``: column k (counted from the dialect's first index) of a compute's or
       fix's (or analyze style's) ``peratom`` values; without [k], the only column;
-    - in the LIGGGHTS dialect, ``f_NAME[k]`` also names column k, counted from 0 as LIGGGHTS counts,
-      of a per-atom property that a fix made (``f_Temp[0]``, ``f_heatFlux[0]`` of fix heat/gran);
+    - in the LIGGGHTS dialect, ``f_NAME`` also names a per-atom property a fix made: ``f_NAME`` or
+      ``f_NAME[0]`` a scalar one (``f_Temp[0]`` of fix heat/gran: LIGGGHTS reads index 0 as no
+      index), ``f_NAME[k]`` column k from 1 of a vector one (``f_force_ID[3]`` of wall/gran's
+      store_force: the z component, recorded with LIGGGHTS 3.8.0);
     - ``v_NAME``: an atom-style variable's values (LAMMPS's), another style's value on every row.
     """
 
@@ -1232,11 +1234,15 @@ class PeratomReference:
         array = p.arrays[self.ident]
         width = 1 if array.ndim == 1 else array.shape[1]
         k = self.column
-        if k is None and width > 1 or k is not None and not 0 <= k < width:
-            raise ScriptError(f"{self.what}: per-atom property {self.ident} has {width} value(s) per particle, "
-                              f"f_{self.ident}[0]{f' to [{width - 1}]' if width > 1 else ''} (LIGGGHTS counts "
-                              f"from 0)")
-        return array[: p.nlocal] if array.ndim == 1 else array[: p.nlocal, k]
+        if width == 1:
+            if k not in (None, 0):
+                raise ScriptError(f"{self.what}: per-atom property {self.ident} has one value per particle: "
+                                  f"f_{self.ident} or f_{self.ident}[0] (got [{k}])")
+            return array[: p.nlocal] if array.ndim == 1 else array[: p.nlocal, 0]
+        if k is None or not 1 <= k <= width:
+            raise ScriptError(f"{self.what}: per-atom property {self.ident} has {width} values per particle, "
+                              f"f_{self.ident}[1] to [{width}] (got {self.word})")
+        return array[: p.nlocal, k - 1]
 
 
 class Analyze(Style):

@@ -323,6 +323,17 @@ CASES = {
                             # LIGGGHTS sets a property/atom only after a run 0 (before it, it aborts)
                             "run 0\nset group top property/atom Temp 400.0\nset type 2 property/atom mark 2.0\n"
                             "run 3000\n"),
+    # a vector per-atom property's columns count from 1 (f_directionalHeatFlux[3]), a scalar's [0] is the
+    # scalar (f_Temp[0])
+    "heat_flux_columns": Case("fix_heat", ("fix heat/gran/conduction", "fix property/atom"),
+                              BED + SUMS + "fix integr all nve/sphere\n"
+                              "fix k all property/global thermalConductivity peratomtype 5.0 20.0\n"
+                              "fix c all property/global thermalCapacity peratomtype 10.0 30.0\n"
+                              "fix ht all heat/gran/conduction initial_temperature 300.0\n"
+                              "compute hf all reduce sum f_Temp[0] f_directionalHeatFlux[1] "
+                              "f_directionalHeatFlux[2] f_directionalHeatFlux[3]\n"
+                              + thermo("c_hf[1] c_hf[2] c_hf[3] c_hf[4]") +
+                              "run 0\nset group top property/atom Temp 400.0\nrun 3000\n"),
     "pair_none": Case("core", ("pair_style none", "pair_style"),
                       bed("pair_style none\natom_modify sort 0 0.0\n")),
     # a rigid layer that lands on the floor: LIGGGHTS's wall/gran takes the body's mass as pair gran does
@@ -401,6 +412,16 @@ CASES = {
                                 "inside_out\n",
                                 "f_down[1] f_down[2] f_up[1] f_up[2] f_up[3]"),
                             files=FACE, ranks=True),
+    # the floor's force on each sphere, kept as the per-atom vector force_ID (store_force), summed;
+    # store_force_contact and store_force_contact_stress keep what no output of LIGGGHTS-PUBLIC reads
+    "wall_store_force": Case("fix_wall", ("fix wall/gran",),
+                             bed("unfix floor\nfix floor all wall/gran model hertz tangential history primitive "
+                                 "type 1 zplane 0.0 store_force yes store_force_contact yes "
+                                 "store_force_contact_stress yes\n"
+                                 "compute wf all reduce sum f_force_floor[1] f_force_floor[2] f_force_floor[3]\n"
+                                 "compute wz all reduce max f_force_floor[3]\n"
+                                 "fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n",
+                                 "c_wf[1] c_wf[2] c_wf[3] c_wz", steps=4500)),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),

@@ -157,10 +157,12 @@ def test_missing_conductivity_stops_the_run(pdps_cli):
 
 
 def test_liggghts_dump_spelling_of_the_per_atom_properties(tmp_path):
-    """LIGGGHTS writes f_Temp[0] and f_heatFlux[0] (its per-atom properties, counted from 0)."""
+    """LIGGGHTS writes f_Temp[0] and f_heatFlux[0] for its scalar per-atom properties (index 0 is
+    no index) and f_directionalHeatFlux[1] for the first column of a vector one (recorded with LIGGGHTS
+    3.8.0: heat_flux_columns)."""
     sim = scene()
     path = tmp_path / "heat.dump"
-    sim.command(f"dump d all custom 1 {path} id f_Temp[0] f_heatFlux[0] f_directionalHeatFlux[0] f_heat[1]\nrun 0")
+    sim.command(f"dump d all custom 1 {path} id f_Temp[0] f_heatFlux[0] f_directionalHeatFlux[1] f_heat[1]\nrun 0")
     rows = sorted(line.split() for line in path.read_text().splitlines()[-2:])
     assert [float(r[1]) for r in rows] == [400.0, 300.0]
     assert [float(r[1]) for r in rows] == [float(r[4]) for r in rows]
@@ -187,5 +189,10 @@ def test_liggghts_dump_spelling_out_of_range(pdps_cli):
     done = pdps_cli(SETUP + "fix h all heat/gran initial_temperature 300\n"
                     "dump d all custom 1 d.txt id f_Temp[1]\n")
     assert done.returncode == 1
-    assert done.stderr.strip() == ("ERROR: in.test:7: dump: dump column f_Temp[1]: per-atom property Temp has 1 "
-                                   "value(s) per particle, f_Temp[0] (LIGGGHTS counts from 0)")
+    assert done.stderr.strip() == ("ERROR: in.test:7: dump: dump column f_Temp[1]: per-atom property Temp has one "
+                                   "value per particle: f_Temp or f_Temp[0] (got [1])")
+    done = pdps_cli(SETUP + "fix h all heat/gran initial_temperature 300\n"
+                    "dump d all custom 1 d.txt id f_directionalHeatFlux[0]\n")
+    assert done.stderr.strip() == ("ERROR: in.test:7: dump: dump column f_directionalHeatFlux[0]: per-atom property "
+                                   "directionalHeatFlux has 3 values per particle, f_directionalHeatFlux[1] to [3] "
+                                   "(got f_directionalHeatFlux[0])")

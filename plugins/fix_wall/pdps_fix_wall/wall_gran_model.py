@@ -42,7 +42,10 @@ Keywords, in any order (LIGGGHTS writes the model's first): ``model`` and ``tang
 (required), ``rolling_friction``, ``cohesion``, ``surface`` and the model settings, as pair gran
 takes them (``pdps doc pair gran``; any sub-model installed, ``pdps doc gran.PART NAME``). ``store_force yes`` keeps each particle's wall force of the step (force
 units, 3 values; all the wall's contacts summed) in the per-atom property ``force_ID``: dump custom
-reads it as ``f_ID[k]``, or as LIGGGHTS's ``f_force_ID[k]`` (from 0) in the LIGGGHTS dialect.
+reads it as ``f_ID[k]``, or as LIGGGHTS's ``f_force_ID[k]`` (k from 1) in the LIGGGHTS dialect.
+``store_force_contact yes`` (or ``store_force_contact_every N``) and ``store_force_contact_stress
+yes`` are read and keep nothing: LIGGGHTS-PUBLIC keeps them in per-contact stores no output reads
+(its manual: not available in the PUBLIC version; the stress one is for the CFD coupling).
 
 Cost: the particles within their radius plus the skin of a primitive wall are listed at each
 neighbor list rebuild and only they are visited; mesh walls keep fix wall/mesh's binned candidate
@@ -54,7 +57,8 @@ Syntax::
         [rolling_friction ...] [cohesion ...] [SETTING on|off ...]
         primitive type N xplane|yplane|zplane C | xcylinder|ycylinder|zcylinder R C1 C2  [shear DIM V]
       | mesh n_meshes N meshes ID1 ... IDN
-        [store_force yes|no]
+        [store_force yes|no] [store_force_contact yes|no] [store_force_contact_every N]
+        [store_force_contact_stress yes|no]
 
 Examples::
 
@@ -178,6 +182,11 @@ class FixWallGranModel(Fix):
             None, unit="1", names="fix mesh/surface ID")
         shear: tuple[Literal["x", "y", "z"], float] | None = keyword(None, unit=("1", "velocity"))
         store_force: bool = keyword(False)
+        # per-contact stores that no output of LIGGGHTS-PUBLIC reads (its manual: "not available in the
+        # PUBLIC version"; the stress one feeds the CFD coupling's fix continuum/weighted)
+        store_force_contact: bool = keyword(False)
+        store_force_contact_every: int | None = keyword(None, gt=0, unit="timesteps")
+        store_force_contact_stress: bool = keyword(False)
 
     @classmethod
     def check_args(cls, args):
@@ -221,6 +230,9 @@ class FixWallGranModel(Fix):
         if args.store_force:
             self.store = f"force_{self.id}"
             sim.particles.request(self.store, width=3)
+        if args.store_force_contact or args.store_force_contact_every or args.store_force_contact_stress:
+            sim.info(f"fix {id} wall/gran: store_force_contact and store_force_contact_stress keep nothing "
+                     "any output reads (as in LIGGGHTS-PUBLIC); store_force yes keeps each particle's wall force")
         self.history = (ContactHistory(sim, f"wall_{id}", width=width, capacity=PRIMITIVE_CONTACTS)
                         if self.primitive is not None else None)
         self.mesh_contacts = [MeshContacts(sim, mesh, f"wall_{id}_{mesh.id}", group, width=width)

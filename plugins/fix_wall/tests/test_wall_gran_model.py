@@ -265,7 +265,8 @@ def test_a_cohesive_sphere_rests_where_spring_cohesion_and_weight_balance(cohesi
 def test_store_force_keeps_each_particles_wall_force(data, tmp_path, liggghts_granular):
     """store_force yes: a sphere resting on the mesh floor and one resting on a zplane of another
     wall fix (and one in the air) carry their wall's force m g up in force_ID, which dump custom
-    reads as LIGGGHTS's f_force_ID[k] in the LIGGGHTS dialect; the wall fix without it has none."""
+    reads as LIGGGHTS's f_force_ID[k] (k from 1: [3] the z component) in the LIGGGHTS dialect; the wall
+    fix without it has none."""
     sim = liggghts_granular(f"""
         region box block -4 4 -4 4 -4 4 units box
         create_box 2 box
@@ -281,7 +282,7 @@ def test_store_force_keeps_each_particles_wall_force(data, tmp_path, liggghts_gr
         fix low all wall/gran model hooke tangential history primitive type 2 zplane -2.0 store_force yes
         fix plain all wall/gran model hooke tangential history primitive type 2 zplane -3.9
         timestep {hooke_time() / 50}
-        dump d all custom 100 {tmp_path}/forces.txt id f_force_w[2] f_force_low[2]
+        dump d all custom 100 {tmp_path}/forces.txt id f_force_w[3] f_force_low[3]
     """)
     sim.command("run 3000")
     mesh_force = sim.fixes["w"].peratom(sim)[np.argsort(sim.tag)]
