@@ -67,14 +67,15 @@ def test_bad_lines(pdps_cli, line, message):
 
 def test_property_atom_values_follow_set_and_dumps(tmp_path):
     """LIGGGHTS's property/atom: a default for every particle, set property/atom, f_NAME[k] in a
-    LIGGGHTS dump (from 0)."""
+    LIGGGHTS dump (a scalar's [0] is its value, a vector's columns count from 1, as LIGGGHTS 3.8.0:
+    fix_heat's heat_flux_columns case)."""
     path = tmp_path / "p.dump"
     sim = Simulation(screen=False, log=None, dialect="liggghts")
     sim.command(SETUP + "create_atoms 1 single 0.5 0.5 0.5 units box\n"
                 "fix age all property/atom age scalar yes no no 7.0\n"
                 "fix u all property/atom uf vector yes no no 1. 2. 3.\n"
                 "set atom 2 property/atom age 9.5\n"
-                f"dump d all custom 1 {path} id f_age[0] f_uf[0] f_uf[2]\nrun 0")
+                f"dump d all custom 1 {path} id f_age[0] f_uf[1] f_uf[3]\nrun 0")
     rows = sorted(line.split() for line in path.read_text().splitlines()[-2:])
     assert rows == [["1", "7", "1", "3"], ["2", "9.5", "1", "3"]]
 
