@@ -334,6 +334,17 @@ CASES = {
                               "f_directionalHeatFlux[2] f_directionalHeatFlux[3]\n"
                               + thermo("c_hf[1] c_hf[2] c_hf[3] c_hf[4]") +
                               "run 0\nset group top property/atom Temp 400.0\nrun 3000\n"),
+    "heat_contact_data": Case("fix_heat", ("fix heat/gran/conduction",),
+                              BED + SUMS + "fix integr all nve/sphere\n"
+                              "fix k all property/global thermalConductivity peratomtype 5.0 20.0\n"
+                              "fix c all property/global thermalCapacity peratomtype 10.0 30.0\n"
+                              "fix ht all heat/gran/conduction initial_temperature 300.0 "
+                              "store_contact_data yes\n"
+                              "compute cd all reduce sum f_contactAreaConduction f_nContactsConduction "
+                              "f_wallHeattransferCoeff f_wallTemp f_Temp\n"
+                              "compute ca all reduce max f_contactAreaConduction\n"
+                              + thermo("c_cd[1] c_cd[2] c_cd[3] c_cd[4] c_cd[5] c_ca") + "thermo 50\n"
+                              "run 0\nset group top property/atom Temp 400.0\nrun 3000\n"),
     "pair_none": Case("core", ("pair_style none", "pair_style"),
                       bed("pair_style none\natom_modify sort 0 0.0\n")),
     # a rigid layer that lands on the floor: LIGGGHTS's wall/gran takes the body's mass as pair gran does

@@ -44,10 +44,16 @@ T`` and ``set ... property/atom heatSource S`` give them values. Output: ``f_ID`
 thermal energy :math:`\sum m_ic_iT_i` (thermo); per particle ``f_ID[1]`` the temperature and
 ``f_ID[2]`` the heat flux (dump custom; [0] and [1] in the PDPS dialect).
 
+``store_contact_data yes`` (LIGGGHTS's) keeps, after each step's forces, the per-atom properties
+``contactAreaConduction`` (the mean contact area of the particle's contacts with a particle of the
+group or between two others in it, by the area model above; 0 without contacts),
+``nContactsConduction`` (how many), and ``wallHeattransferCoeff`` and ``wallTemp``, 0 (pdps's walls
+conduct no heat).
+
 Syntax::
 
     fix ID GROUP heat/gran initial_temperature T0 [contact_area overlap|projection|constant A]
-                                                  [area_correction no]
+                                                  [area_correction no] [store_contact_data yes|no]
 
 ``initial_temperature`` is every particle's temperature until ``set`` changes it (particles
 created later start at T0 too). ``area_correction yes`` (LIGGGHTS's correction for a softened
@@ -75,6 +81,10 @@ from pdps_granular_contact.gran.heat_conduction import AREAS, CONSTANT, OVERLAP,
 from pdps_granular_contact.material import read_property
 
 
+# the per-atom properties of store_contact_data yes
+CONTACT_DATA = ("contactAreaConduction", "nContactsConduction", "wallHeattransferCoeff", "wallTemp")
+
+
 @njit(cache=True)
 def advance(temp, heat_flux, heat_source, rmass, type_, capacity, mask, groupbit, dt, nlocal):
     """T += dt (Q + S) / (m c) for the owned particles of the group."""
@@ -96,7 +106,7 @@ class FixHeatGran(Fix):
     name = "heat/gran"
     minimize_idle = True         # heat, not forces: LIGGGHTS's fix heat/gran has no min_post_force
     usage = ("fix ID GROUP heat/gran initial_temperature T0 [contact_area overlap|projection|constant A] "
-             "[area_correction no]")
+             "[area_correction no] [store_contact_data yes|no]")
     ghost_fields = ("Temp",)
 
     class Args(StyleArgs):
@@ -105,6 +115,7 @@ class FixHeatGran(Fix):
         contact_area: Literal["overlap", "projection"] | tuple[Literal["constant"], PositiveFloat] = keyword(
             "overlap", unit={"constant": ("1", "area")})
         area_correction: Literal["yes", "no"] = keyword("no")
+        store_contact_data: bool = keyword(False)
 
         @model_validator(mode="after")
         def _supported(self):
@@ -127,6 +138,10 @@ class FixHeatGran(Fix):
         self.mode = AREAS["constant" if constant else args.contact_area]
         self.area_constant = args.contact_area[1] if constant else 0.0
         self.conductivity = self.capacity = None
+        self.store_contact_data = args.store_contact_data
+        if self.store_contact_data:
+            for name in CONTACT_DATA:
+                p.request(name, 1)
 
     def init_run(self, sim):
         if not sim.particles.has("radius") or not sim.particles.has("rmass"):
@@ -148,6 +163,39 @@ class FixHeatGran(Fix):
         """The pair style's contacts filled each particle's heat flux in its force computation
         (ContactConduction): ghosts' go to their owners."""
         sim.comm.reverse_comm(sim.particles, ("heatFlux", "directionalHeatFlux"))
+        if self.store_contact_data:
+            self._store_contact_data(sim)
+
+    def _store_contact_data(self, sim):
+        """Each particle's contacts: their mean area and number (LIGGGHTS's contactAreaConduction,
+        nContactsConduction), over the contacts with at least one particle of the group."""
+        p = sim.particles
+        a = p.arrays
+        area, number = a["contactAreaConduction"], a["nContactsConduction"]
+        area[:] = 0.0
+        number[:] = 0.0
+        a["wallHeattransferCoeff"][:] = 0.0
+        a["wallTemp"][:] = 0.0
+        found = sim.pair.contacts(sim)
+        i, j = found["i"], found["j"]
+        either = ((p.mask[i] | p.mask[j]) & self.groupbit) != 0
+        i, j = i[either], j[either]
+        d = p.x[i] - p.x[j]
+        r = np.sqrt((d * d).sum(axis=1))
+        ri, rj = p.radius[i], p.radius[j]
+        if self.mode == OVERLAP:
+            spot = intersection_area(r, ri, rj)
+        elif self.mode == CONSTANT:
+            spot = np.full(len(i), self.area_constant)
+        else:
+            spot = math.pi * np.maximum(ri, rj) ** 2
+        for rows in (i, j):
+            np.add.at(area, rows, spot)
+            np.add.at(number, rows, 1.0)
+        sim.comm.reverse_comm(p, ("contactAreaConduction", "nContactsConduction"))
+        n = p.nlocal
+        touching = number[:n] > 0.5
+        area[:n][touching] /= number[:n][touching]
 
     def contact_heat_model(self, sim):
         """The conduction law as a contact part (HeatTransport): pdps_granular_contact's gran.heat

@@ -135,7 +135,8 @@ SETUP = liggghts_one_particle()
 
 @pytest.mark.parametrize("line, message", [
     ("fix h all heat/gran", "fix: missing keyword initial_temperature; usage: fix ID GROUP heat/gran "
-     "initial_temperature T0 [contact_area overlap|projection|constant A] [area_correction no]"),
+     "initial_temperature T0 [contact_area overlap|projection|constant A] [area_correction no] "
+     "[store_contact_data yes|no]"),
     ("fix h all heat/gran initial_temperature 300 contact_area constant",
      "fix: contact_area constant takes 1 value(s): number (got nothing)"),
     ("fix h all heat/gran initial_temperature 300 area_correction yes",
