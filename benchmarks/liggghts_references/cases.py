@@ -433,6 +433,54 @@ CASES = {
                                  "compute wz all reduce max f_force_floor[3]\n"
                                  "fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n",
                                  "c_wf[1] c_wf[2] c_wf[3] c_wz", steps=4500)),
+    # what a template makes is deterministic where its distributions are constant: the number, type,
+    # radius and mass of what insert/pack puts in (the places are random: no positions printed)
+    "template_sphere": Case("fix_insert", ("fix particletemplate/sphere", "fix particledistribution/discrete"),
+                            "atom_modify sort 0 0.0\n"
+                            "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 1800 "
+                            "radius constant 0.004 volume_limit 1e-14 relative no\n"
+                            "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 2600 "
+                            "radius constant 0.005 relative no\n"
+                            "fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0\n"
+                            "fix pdd2 all particledistribution/discrete 32452867 1 pts2 1.0\n"
+                            "region low block -0.04 0.04 -0.04 0.04 0.01 0.045 units box\n"
+                            "region high block -0.04 0.04 -0.04 0.04 0.05 0.09 units box\n"
+                            "fix ins1 all insert/pack seed 49979687 distributiontemplate pdd1 insert_every once "
+                            "overlapcheck yes all_in yes particles_in_region 30 region low\n"
+                            "fix ins2 all insert/pack seed 49979693 distributiontemplate pdd2 insert_every once "
+                            "overlapcheck yes all_in yes particles_in_region 20 region high\n"
+                            "fix integr all nve/sphere\ncompute pa all property/atom mass type radius\n"
+                            "compute m all reduce sum c_pa[1] c_pa[2] c_pa[3]\ncompute rr all reduce max c_pa[3]\n"
+                            "thermo_style custom step atoms c_m[1] c_m[2] c_m[3] c_rr\n"
+                            "thermo_modify format float %20.15g\nthermo 1\nrun 2\n"),
+    # the numbers of each template are fixed where they come out whole: 10 and 30 of 40 by number; by
+    # mass, two templates of equal mass, 20 and 20
+    "distribution_numberbased": Case("fix_insert", ("fix particledistribution/discrete/numberbased",),
+                            "atom_modify sort 0 0.0\n"
+                            "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2600 "
+                            "radius constant 0.004\n"
+                            "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 2600 radius constant 0.005\n"
+                            "fix pdd all particledistribution/discrete/numberbased 32452843 2 pts1 0.25 pts2 0.75\n"
+                            "region ins block -0.04 0.04 -0.04 0.04 0.01 0.09 units box\n"
+                            "fix ins all insert/pack seed 49979687 distributiontemplate pdd insert_every once "
+                            "overlapcheck yes all_in yes particles_in_region 40 region ins\n"
+                            "fix integr all nve/sphere\ncompute pa all property/atom mass type radius\n"
+                            "compute m all reduce sum c_pa[1] c_pa[2] c_pa[3]\n"
+                            "thermo_style custom step atoms c_m[1] c_m[2] c_m[3]\n"
+                            "thermo_modify format float %20.15g\nthermo 1\nrun 2\n"),
+    "distribution_massbased": Case("fix_insert", ("fix particledistribution/discrete/massbased",),
+                            "atom_modify sort 0 0.0\n"
+                            "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2600 "
+                            "radius constant 0.004\n"
+                            "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1331.2 radius constant 0.005\n"
+                            "fix pdd all particledistribution/discrete/massbased 32452843 2 pts1 0.5 pts2 0.5\n"
+                            "region ins block -0.04 0.04 -0.04 0.04 0.01 0.09 units box\n"
+                            "fix ins all insert/pack seed 49979687 distributiontemplate pdd insert_every once "
+                            "overlapcheck yes all_in yes particles_in_region 40 region ins\n"
+                            "fix integr all nve/sphere\ncompute pa all property/atom mass type radius\n"
+                            "compute m all reduce sum c_pa[1] c_pa[2] c_pa[3]\n"
+                            "thermo_style custom step atoms c_m[1] c_m[2] c_m[3]\n"
+                            "thermo_modify format float %20.15g\nthermo 1\nrun 2\n"),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),

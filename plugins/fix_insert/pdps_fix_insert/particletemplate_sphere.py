@@ -6,7 +6,7 @@ particledistribution/discrete`` names it, and an insertion fix draws particles f
 Syntax::
 
     fix ID GROUP particletemplate/sphere SEED atom_type T density STYLE ... radius STYLE ...
-        [volume_limit V]
+        [volume_limit V] [relative yes|no]
 
 - ``SEED``: a positive whole number (LIGGGHTS's random seed of the template; pdps draws every
   inserted particle from the insertion fix's seed, so that the same particles appear on any number
@@ -18,6 +18,11 @@ Syntax::
   number|mass MU SIGMA`` (distance; required). ``number``: the distribution of the radii of the
   particles; ``mass``: the distribution of the mass over radii (LIGGGHTS's mass-% basis).
 - ``volume_limit V``: the smallest expected particle volume allowed (default 1e-12, distance^3).
+- ``relative yes|no``: LIGGGHTS's flag saying the radii are relative to a reference radius, for
+  commands that would read it: none of LIGGGHTS-PUBLIC's does (its source), none of pdps's; the
+  radii are lengths either way. LIGGGHTS 3.8.0 leaves a ``relative yes`` template's radii out of
+  the neighbor cutoff (and aborts when nothing else sizes it, measured); pdps sizes the cutoff from
+  them as with ``relative no``, and says so.
 
 Each particle: radius r and density rho drawn independently, mass :math:`m = \rho\,\tfrac43\pi r^3`.
 The template's expected volume is :math:`\tfrac43\pi\langle r^3\rangle` and its expected mass
@@ -53,7 +58,7 @@ def units(kind):
 class FixParticleTemplateSphere(Fix):
     name = "particletemplate/sphere"
     usage = ("fix ID GROUP particletemplate/sphere SEED atom_type T density STYLE ... radius STYLE ... "
-             "[volume_limit V]")
+             "[volume_limit V] [relative yes|no]")
 
     class Args(StyleArgs):
         seed: WholeNumber = param(ge=1, unit="1")
@@ -61,6 +66,7 @@ class FixParticleTemplateSphere(Fix):
         density: Density = keyword(..., unit=units("density"))
         radius: Radius = keyword(..., unit=units("distance"))
         volume_limit: float = keyword(1e-12, gt=0, unit="volume")
+        relative: bool = keyword(False)
 
     @classmethod
     def check_args(cls, args):
@@ -81,6 +87,9 @@ class FixParticleTemplateSphere(Fix):
                               f"{limit:g}: check the radius units, or lower volume_limit")
         self.mass_expected = self.density.mean_of(1) * self.volume_expected
         self.max_radius = self.radius.support()[1]
+        if args.relative:
+            sim.info(f"fix {id} particletemplate/sphere: relative yes is read by no command; the radii are "
+                     "lengths, and the neighbor cutoff is sized from them (LIGGGHTS leaves them out of it)")
 
     def draw(self, rng, n):
         """(radii, densities) of n particles."""

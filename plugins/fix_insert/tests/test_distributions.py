@@ -173,3 +173,15 @@ def test_an_insertions_mixture_is_its_shares_to_a_particle(make_sim):
     assert abs(counts[:, 0].mean() - share) <= 4 * math.sqrt(p * (1 - p) / len(counts))
     radius, _, _, which = mix.draw(rng, 300)
     assert (np.diff(radius) <= 0).all() and (which == 0).sum() in (191, 192)
+
+
+def test_relative_yes_is_read_and_said_to_change_nothing(make_sim):
+    import io
+    screen = io.StringIO()
+    sim = make_sim(dialect="liggghts", screen=screen)
+    sim.command("atom_style granular\nregion box block 0 1 0 1 0 1 units box\ncreate_box 1 box\n"
+                "fix t all particletemplate/sphere 15485863 atom_type 1 density constant 2500 "
+                "radius constant 0.001 relative yes")
+    assert sim.fixes["t"].max_radius == 0.001
+    assert ("fix t particletemplate/sphere: relative yes is read by no command; the radii are lengths, and the "
+            "neighbor cutoff is sized from them (LIGGGHTS leaves them out of it)") in screen.getvalue()

@@ -237,7 +237,7 @@ def test_a_restart_and_reset_timestep_keep_the_count_and_the_schedule(make_sim, 
      "nparticles N|INF | mass M|INF particlerate R | massrate R insert_every N region REGION [keywords]"),
     ("fix t2 all particletemplate/sphere 1 atom_type 1 radius constant 0.001",
      "missing keyword density; usage: fix ID GROUP particletemplate/sphere SEED atom_type T density STYLE ... "
-     "radius STYLE ... [volume_limit V]"),
+     "radius STYLE ... [volume_limit V] [relative yes|no]"),
     ("fix d2 all particledistribution/discrete 1 2 pts1 0.5",
      "expected 2 template/fraction pairs (got 2 words after N)"),
     ("fix d2 all particledistribution/discrete 1.5 1 pts1 1.0", "seed must be an integer (got 1.5)"),
