@@ -481,6 +481,21 @@ CASES = {
                             "compute m all reduce sum c_pa[1] c_pa[2] c_pa[3]\n"
                             "thermo_style custom step atoms c_m[1] c_m[2] c_m[3]\n"
                             "thermo_modify format float %20.15g\nthermo 1\nrun 2\n"),
+    # insert/rate/region's counts come out whole: 20 a time every 100 steps (particlerate x insert_every x
+    # dt), 60 in all, each moving at the velocity given (their places are random: not printed)
+    "insert_rate_region": Case("fix_insert", ("fix insert/rate/region",),
+                               "atom_modify sort 0 0.0\n"
+                               "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2600 "
+                               "radius constant 0.003\n"
+                               "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+                               "region ins block -0.04 0.04 -0.04 0.04 0.02 0.09 units box\n"
+                               "fix ins all insert/rate/region seed 49979687 distributiontemplate pdd nparticles 60 "
+                               "particlerate 20000 insert_every 100 overlapcheck yes all_in yes vel constant 0.1 0.0 -0.5 "
+                               "region ins\n"
+                               "fix integr all nve/sphere\ncompute pa all property/atom mass\n"
+                               "compute m all reduce sum c_pa vx vz\n"
+                               "thermo_style custom step atoms c_m[1] c_m[2] c_m[3]\n"
+                               "thermo_modify format float %20.15g\nthermo 50\nrun 400\n"),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),
