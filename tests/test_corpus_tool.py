@@ -97,20 +97,20 @@ def test_the_manual_items_and_what_pdps_makes_of_them():
     pages = ["fix insert/pack command :h3\n[Syntax:]\nkeyword = {region} or {sideways} :l\n"
              "  {region} value = region-ID\n[Examples:]\nfix insert/pack command :h3\n",
              "run command :h3\n", "gran model hertz model :h3\n", "fix multisphere command :h3\n",
-             "fix massflow/mesh command :h3\n", "fix couple/cfd command :h3\n", "Syntax: fix ID group command :h3\n"]
-    assert manual.items(pages) == [("fix", "couple/cfd"), ("fix", "insert/pack"), ("fix", "massflow/mesh"),
+             "fix ave/euler command :h3\n", "fix couple/cfd command :h3\n", "Syntax: fix ID group command :h3\n"]
+    assert manual.items(pages) == [("fix", "ave/euler"), ("fix", "couple/cfd"), ("fix", "insert/pack"),
                                    ("fix", "multisphere"), ("gran", "model hertz"), ("run", None)]
     text = manual.table(pages)
     # insert/pack reads region, not the made-up sideways: known and checked, not fully working
     assert "| `fix insert/pack` | style | keywords: 1 of 2, not sideways | plugins/fix_insert" in text
     assert "| `run` | command |" in text
-    assert "| `gran model hertz` | style |" in text and "| `fix massflow/mesh` | unknown |" in text
+    assert "| `gran model hertz` | style |" in text and "| `fix ave/euler` | unknown |" in text
     assert "| `fix multisphere` | refused: pdps has no multisphere bodies" in text
     # run and gran model hertz have recorded LIGGGHTS cases (the tables' checks, and CHECKED)
     assert "| `run` | command |  | plugins/fix_granular/tests/data/liggghts.cases.json (bed" in text
     assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown; "
                          "0 styles read every keyword of their page; 2 work fully (known, every keyword, numbers "
-                         "checked against LIGGGHTS's, or LAMMPS's for the 4 styles LIGGGHTS 3.8.0 lacks).")
+                         "checked against LIGGGHTS's, or LAMMPS's for the 6 styles LIGGGHTS 3.8.0 lacks).")
 
 
 def test_a_shift_the_range_misses_the_t_test_finds():

@@ -496,6 +496,13 @@ CASES = {
                                "compute m all reduce sum c_pa vx vz\n"
                                "thermo_style custom step atoms c_m[1] c_m[2] c_m[3]\n"
                                "thermo_modify format float %20.15g\nthermo 50\nrun 400\n"),
+    # the tutorials' dump custom/vtk, with a per-atom property and a compute: the particles' points and
+    # arrays, and LIGGGHTS's bounding-box companion file
+    "custom_vtk": Case("dump_mesh", ("dump custom/vtk",),
+                       bed("compute ke all ke/atom\nfix tag all property/atom tag2 scalar yes no no 2.5\n"
+                           "dump d all custom/vtk 1500 bed_*.vtk id type x y z vx vy vz fx fy fz omegax omegay "
+                           "omegaz radius mass c_ke f_tag\n"),
+                       outputs=("bed_3000.vtk", "bed_boundingBox_3000.vtk")),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),
