@@ -15,9 +15,10 @@ pulled), :math:`r = \max(|\mathbf{d}|, 10^{-10})`, :math:`\delta = r - R_0` and 
 mass, :math:`\mathbf{f}_i = -\mathbf{F}\, m_i / M` for the tether; for the couple the group gets
 :math:`+\mathbf{F}\, m_i / M` and each particle j of group2 :math:`-\mathbf{F}\, m_j / M_2`, pulling the
 two centres towards a displacement (x, y, z) of group2 from the group at distance R0 from it.
-K in force/distance (it is the spring of the whole group, not of each particle), x y z and R0 in
-distance (R0 >= 0). The energy is :math:`E = \tfrac12 K \delta^2`; LAMMPS's manual writes
-:math:`\tfrac12 K r^2`, but both programs compute :math:`\delta^2`, as pdps does.
+K in force/distance (it is the spring of the whole group, not of each particle; neither program
+refuses K < 0, nor does pdps), x y z and R0 in distance (R0 >= 0). The energy is
+:math:`E = \tfrac12 K \delta^2`; LAMMPS's manual writes :math:`\tfrac12 K r^2`, but both programs
+compute :math:`\delta^2`, as pdps does.
 
 Output: ``f_ID`` is E; ``f_ID[1-4]`` (LAMMPS's and LIGGGHTS's index base) are the total force the
 spring puts on the group (tether: :math:`-\mathbf{F}`; couple: :math:`+\mathbf{F}`, the negative of
@@ -25,13 +26,15 @@ that on group2) and its magnitude :math:`|\mathbf{F}|`, negative when :math:`\de
 pushes). Both extensive. ``fix_modify ID energy yes`` adds E to thermo ``pe``; the fix adds no
 virial (as LAMMPS's). Applied in ``post_force``, at a run's setup and in each minimization step.
 
-The total masses M and M2 are taken when a run (or minimize) starts and kept through it, as
-LIGGGHTS 3.8.0 (its init) and LAMMPS for a static group do: the centre of mass is the sum of
-:math:`m_i \mathbf{x}^u_i` over that mass. An empty group has its centre at the origin and pulls
-nothing (LAMMPS guards the division by M; LIGGGHTS 3.8.0 divides by 0 but has no particle to apply
-it to: the same numbers). LAMMPS's current fix spring also recomputes M every step for a dynamic
-group, which pdps's groups are not; otherwise its program is LIGGGHTS 3.8.0's. In 2-d the z
-coordinate must be NULL or 0 (a z force would move particles out of the plane).
+The total masses M and M2 are taken when a run (or minimize) starts, at its first force
+evaluation, and kept through it, as LIGGGHTS 3.8.0 (its init) and LAMMPS for a static group do: the
+centre of mass is the sum of :math:`m_i \mathbf{x}^u_i` over that mass (a particle inserted into
+the group during the run counts in the sum, not in M, as in both programs). An empty group has its
+centre at the origin and pulls nothing (LAMMPS guards the division by M; LIGGGHTS 3.8.0 divides by
+0 but has no particle to apply it to: the same numbers). LAMMPS's current fix spring also
+recomputes M every step for a dynamic group, which pdps has none of (a PDPS-dialect region group is
+evaluated again before each run, and M with it); otherwise its program is LIGGGHTS 3.8.0's. In 2-d
+the z coordinate must be NULL or 0 (a z force would move particles out of the plane).
 
 Syntax::
 
@@ -45,11 +48,11 @@ Examples::
 """
 
 import math
-from typing import Annotated, Literal, NamedTuple
+from typing import Annotated, Literal
 
 import numpy as np
 from numba import njit
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
@@ -59,23 +62,11 @@ NO_RMASS = np.zeros(0)
 Coordinate = float | Literal["NULL"]
 
 
-class Tether(NamedTuple):
-    style: Literal["tether"]
-    k: float
-    x: Coordinate
-    y: Coordinate
-    z: Coordinate
-    r0: Annotated[float, Field(ge=0)]
-
-
-class Couple(NamedTuple):
-    style: Literal["couple"]
-    group2: str
-    k: float
-    x: Coordinate
-    y: Coordinate
-    z: Coordinate
-    r0: Annotated[float, Field(ge=0)]
+# the values after each word, as the manual names them
+VALUES = {"tether": ("K", "X", "Y", "Z", "R0"), "couple": ("GROUP2", "K", "X", "Y", "Z", "R0")}
+Length = Annotated[float, Field(ge=0)]
+Tether = tuple[Literal["tether"], float, Coordinate, Coordinate, Coordinate, Length]
+Couple = tuple[Literal["couple"], str, float, Coordinate, Coordinate, Coordinate, Length]
 
 
 @njit(cache=True)
@@ -129,26 +120,47 @@ class FixSpring(Fix):
     class Args(StyleArgs):
         spring: Tether | Couple = param(
             unit={"tether": ("force/distance", "distance", "distance", "distance", "distance"),
-                  "couple": ("1", "force/distance", "distance", "distance", "distance", "distance")},
-            names="tether or couple")
+                  "couple": ("1", "force/distance", "distance", "distance", "distance", "distance")})
+
+        @model_validator(mode="before")
+        @classmethod
+        def _each_value_by_its_name(cls, data):
+            """A bad number is named as the manual names it (R0, Y), not by its place in the tuple."""
+            words = data.get("spring") if isinstance(data, dict) else None
+            if not (isinstance(words, (tuple, list)) and words and words[0] in VALUES):
+                return data
+            for name, word in zip(VALUES[words[0]], words[1:]):
+                if name == "GROUP2" or (name in ("X", "Y", "Z") and word == "NULL"):
+                    continue
+                try:
+                    value = float(word)
+                except (TypeError, ValueError):
+                    value = math.nan
+                if not math.isfinite(value):
+                    null = " or NULL" if name in ("X", "Y", "Z") else ""
+                    raise ValueError(f"spring {words[0]}: {name} must be a finite number{null} (got {word})")
+                if name == "R0" and value < 0.0:
+                    raise ValueError(f"spring {words[0]}: R0 must be >= 0 (got {word})")
+            return data
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        spring = args.spring
-        self.couple = spring.style == "couple"
+        style, *values = args.spring
+        self.couple = style == "couple"
+        self.group2 = values.pop(0) if self.couple else None
+        k, *centre, r0 = values
         if self.couple:
-            if spring.group2 == group:
-                raise ScriptError(f"fix spring couple: group2 must differ from the fix group (got {group} twice)")
+            if self.group2 == group:
+                raise ScriptError(f"spring couple: GROUP2 must differ from the fix group (got {group} twice)")
             self._bits(sim)
-        centre = (spring.x, spring.y, spring.z)
         self.kept = np.array([c != "NULL" for c in centre], dtype=np.float64)
         self.centre = np.array([0.0 if c == "NULL" else float(c) for c in centre], dtype=np.float64)
-        if sim.dimension == 2 and spring.z != "NULL" and spring.z != 0.0:
-            raise ScriptError(f"fix spring in a 2-d simulation takes z NULL or 0 (got {spring.z:g}): "
+        if sim.dimension == 2 and centre[2] != "NULL" and centre[2] != 0.0:
+            raise ScriptError(f"spring {style}: z must be NULL or 0 in a 2-d simulation (got {centre[2]:g}): "
                               "a z force would move particles out of the plane")
-        self.k, self.r0 = float(spring.k), float(spring.r0)
+        self.k, self.r0 = float(k), float(r0)
         self.moments = np.zeros(8)
-        self.totals = None          # (M, M2) of the run: taken in init_run
+        self.totals = None          # (M, M2) of the run: taken at its first force evaluation
         self.a1 = np.zeros(3)
         self.a2 = np.zeros(3)
         self.espring = 0.0
@@ -160,9 +172,9 @@ class FixSpring(Fix):
             return bit1, np.uint32(0)
         try:
             # checked again at each run, as LAMMPS's init: the group may have been deleted
-            return bit1, sim.groups.bit(self.args.spring.group2)
+            return bit1, sim.groups.bit(self.group2)
         except ScriptError as error:
-            raise ScriptError(f"fix spring couple: group2: {error}") from None
+            raise ScriptError(f"spring couple: GROUP2: {error}") from None
 
     def _sums(self, sim):
         """This rank's moments of both groups, summed over every rank."""
@@ -173,14 +185,15 @@ class FixSpring(Fix):
         return np.asarray(sim.comm.sum(self.moments), dtype=np.float64)
 
     def init_run(self, sim):
-        """The groups' total masses, kept through the run (LIGGGHTS's and LAMMPS's init)."""
-        sums = self._sums(sim)
-        self.totals = (float(sums[0]), float(sums[4]))
+        """A run starts: its first force evaluation (setup, or a minimization's first) takes the
+        groups' total masses, after the run has evaluated its groups."""
+        self.totals = None
 
     def post_force(self, sim):
-        if self.totals is None:
-            self.init_run(sim)
         sums = self._sums(sim)
+        if self.totals is None:
+            # kept through the run, as LIGGGHTS's and LAMMPS's init take them
+            self.totals = (float(sums[0]), float(sums[4]))
         mass1, mass2 = self.totals
         xcm = sums[1:4] / mass1 if mass1 > 0.0 else sums[1:4]
         if self.couple:
