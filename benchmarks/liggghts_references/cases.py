@@ -179,6 +179,16 @@ CASES = {
     "nve_limit": Case("fix_granular", ("fix nve/limit",), bed("", integrate="fix integr all nve/limit absolute 0.000005\n")),
     "spring_self": Case("fix_granular", ("fix spring/self",), bed("fix tether all spring/self 20.0\n", "f_tether")),
     "spring_self_xy": Case("fix_granular", ("fix spring/self",), bed("fix tether all spring/self 20.0 xy\n", "f_tether")),
+    # the top row's centre tethered in x and z (y left out) near a sphere of radius 5 mm about a point
+    # above it, its energy in pe; then the top row coupled to the other spheres' centre
+    "spring_tether": Case("compute_basic", ("fix spring",),
+                          bed("fix teth top spring tether 5.0 0.01 NULL 0.08 0.005\nfix_modify teth energy yes\n"
+                              "compute pe all pe\n",
+                              "c_pe f_teth f_teth[1] f_teth[2] f_teth[3] f_teth[4]"), ranks=True),
+    "spring_couple": Case("compute_basic", ("fix spring",),
+                          bed("group rest subtract all top\n"
+                              "fix cpl top spring couple rest 4.0 0.006 NULL -0.02 0.002\n",
+                              "f_cpl f_cpl[1] f_cpl[2] f_cpl[3] f_cpl[4]"), ranks=True),
     "drag": Case("fix_granular", ("fix drag",),
                  bed("fix pull top drag 0.0 0.0 0.0 0.002 0.001\n", "f_pull[1] f_pull[2] f_pull[3]")),
     "store_force": Case("fix_granular", ("fix store/force",),
