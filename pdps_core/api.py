@@ -96,6 +96,7 @@ CONTRACT = {
         "random_key": "random_key(seed): the key random numbers use (new after reset_timestep goes back)",
         "info": "info(message): a line on screen and in the log",
         "warn": "warn(message): a warning on screen and in the log; the run goes on",
+        "change_timestep": "change_timestep(dt): a new time step mid-run; styles redo their constants of it in reset_dt(sim)",
     },
     "Particles": {
         "nlocal": "owned particles", "nghost": "ghost particles", "nall": "nlocal + nghost",

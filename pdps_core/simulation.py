@@ -120,6 +120,16 @@ class Simulation:
         """A line on screen and in the log (a style's summary or notice)."""
         self.output.message(message)
 
+    def change_timestep(self, dt):
+        """A new time step in the middle of a run (fix dt/reset): the pair style and every fix that
+        keeps constants of the step redo them in their ``reset_dt(sim)`` (LAMMPS's reset_dt), and
+        the time goes on with the new step."""
+        self.run_state.dt = dt
+        for style in (self.pair, *self.fixes.values()):
+            reset = getattr(style, "reset_dt", None)
+            if reset is not None:
+                reset(self)
+
     def warn(self, message):
         """A warning on screen and in the log, kept in ``sim.warnings``; the run goes on."""
         self.output.warn(message)

@@ -1035,6 +1035,11 @@ class Fix(Style):
     ``box_extent(sim)``: the (lo, hi) corners of what a shrink-wrapped box encloses besides the
     particles (LIGGGHTS's Fix::box_extent: a mesh's nodes, wherever they have moved), or None; the
     same on every rank.
+
+    ``reset_dt(sim)``: the time step changed in the middle of a run (``sim.change_timestep``: fix
+    dt/reset); a fix that keeps constants of the step from ``init_run`` redoes them (LAMMPS's
+    reset_dt), or refuses with a ScriptError where it cannot follow a changing step. Fixes reading
+    ``sim.dt`` each step need nothing.
     """
     kind = "fix"
     can_energy: ClassVar[bool] = False

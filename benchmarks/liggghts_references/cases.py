@@ -513,6 +513,15 @@ CASES = {
                            "dump d all custom/vtk 1500 bed_*.vtk id type x y z vx vy vz fx fy fz omegax omegay "
                            "omegaz radius mass c_ke f_tag\n"),
                        outputs=("bed_3000.vtk", "bed_boundingBox_3000.vtk")),
+    # the time step follows the fastest sphere (Xmax 15 um a step, bounded to [2e-6, 3e-5]; unbounded,
+    # the top group's, Xmax in lattice spacings): thermo's time adds each step's own size
+    "dt_reset": Case("fix_simple", ("fix dt/reset",),
+                     BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
+                     "fix adapt all dt/reset 50 2e-6 3e-5 1.5e-5\n" + thermo("dt time f_adapt") + "run 3000\n"),
+    "dt_reset_unbounded": Case("fix_simple", ("fix dt/reset",),
+                               BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
+                               "fix adapt top dt/reset 100 NULL NULL 0.001 units lattice\n"
+                               + thermo("dt time f_adapt") + "run 2000\n"),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),

@@ -421,6 +421,15 @@ class FixLangevinGJF(FixLangevin):
         self._fresh_array(self.lv_name)
         self._fresh_array(self.franprev_name)
 
+    def reset_dt(self, sim):
+        """GJF's constants of the step (each run's start; a new step mid-run, as LAMMPS's reset_dt)."""
+        if 2.0 * self.args.damp == sim.dt:
+            raise ScriptError(f"fix {self.id} langevin gjf: DAMP must not be dt/2 (got {self.args.damp:g} "
+                              f"with timestep {sim.dt:g}), which makes GJF's a = 0")
+        half = sim.dt / (2.0 * self.args.damp)
+        self.gjfa = (1.0 - half) / (1.0 + half)
+        self.gjfsib = math.sqrt(1.0 + half)
+
     def init_run(self, sim):
         if 2.0 * self.args.damp == sim.dt:
             raise ScriptError(f"fix {self.id} langevin gjf: DAMP must not be dt/2 (got {self.args.damp:g} "
@@ -434,9 +443,7 @@ class FixLangevinGJF(FixLangevin):
         if names.index(first.id) < names.index(self.id):
             raise ScriptError(f"fix {self.id} langevin gjf must be defined before fix {first.id} "
                               f"({first.name}), whose steps it wraps")
-        half = sim.dt / (2.0 * self.args.damp)
-        self.gjfa = (1.0 - half) / (1.0 + half)
-        self.gjfsib = math.sqrt(1.0 + half)
+        self.reset_dt(sim)
 
     def setup(self, sim):
         p = sim.particles

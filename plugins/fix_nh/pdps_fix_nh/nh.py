@@ -278,16 +278,30 @@ class FixNH(Fix):
     def needs(self, step):
         return {"virial"} if self.pstat else set()
 
-    def init_run(self, sim):
+    def _step_constants(self, sim):
         dt = sim.dt
         self.dtv, self.dtf = dt, 0.5 * dt * sim.units.ftm2v
         self.dthalf, self.dt4, self.dt8 = 0.5 * dt, 0.25 * dt, 0.125 * dt
         self.dto = self.dthalf
-        self.boltz, self.nktv2p = sim.units.boltz, sim.units.nktv2p
-        self.dim = sim.dimension
+
+    def reset_dt(self, sim):
+        """A new step mid-run (fix dt/reset): LAMMPS's FixNH::reset_dt redoes these and the drags."""
+        self._step_constants(sim)
+        self._drags(sim)
+
+    def _drags(self, sim):
         if self.pstat:
             self.p_freq_max = float(self.p_freq.max())
-            self.pdrag_factor = 1.0 - dt * self.p_freq_max * self.args.drag / self.args.ploop
+            self.pdrag_factor = 1.0 - sim.dt * self.p_freq_max * self.args.drag / self.args.ploop
+        if self.tstat:
+            self.tdrag_factor = 1.0 - sim.dt * self.t_freq * self.args.drag / self.args.tloop
+
+    def init_run(self, sim):
+        self._step_constants(sim)
+        self.boltz, self.nktv2p = sim.units.boltz, sim.units.nktv2p
+        self.dim = sim.dimension
+        self._drags(sim)
+        if self.pstat:
             self.pdim = int(self.p_flag.sum())
             if self.vol0 == 0.0:
                 self.vol0 = self._volume(sim)
@@ -296,8 +310,6 @@ class FixNH(Fix):
                 if any(self.p_flag[d] for d in fix.deformed_axes):
                     raise ScriptError(f"fix {self.id} {self.name} and fix {fix.id} deform change the same "
                                       "box length")
-        if self.tstat:
-            self.tdrag_factor = 1.0 - dt * self.t_freq * self.args.drag / self.args.tloop
         if self.dilate != "all":
             sim.require_group(self.dilate)
         self._resolve_computes(sim)

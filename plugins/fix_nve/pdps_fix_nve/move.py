@@ -202,6 +202,11 @@ class FixMove(Fix):
         self.periodic = np.zeros(3, dtype=np.bool_)
         self._keep_origins(sim)
 
+    def reset_dt(self, sim):
+        # the path's time is (n - n0) dt: a step changing mid-run would move it (LAMMPS refuses too)
+        raise ScriptError(f"fix {self.id} move: the time step cannot change during a run with fix move "
+                          "(LAMMPS's and LIGGGHTS's fix move refuse it too: their source)")
+
     def setup(self, sim):
         self.periodic = np.array(sim.box.periodic, dtype=np.bool_)     # fixed within a run
 

@@ -629,11 +629,15 @@ class FixRigid(Fix):
             raise ScriptError(f"fix {self.id}: gravity fix ID {name} is not a gravity fix style ({fix.name})")
         return np.asarray(gvec, dtype=np.float64)
 
-    def init_run(self, sim):
-        self.gvec = self._gravity(sim)
+    def reset_dt(self, sim):
+        """The step's constants (at each run's start, and for a new step mid-run: fix dt/reset)."""
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
+
+    def init_run(self, sim):
+        self.gvec = self._gravity(sim)
+        self.reset_dt(sim)
         # a file's values hold for the first run only (LAMMPS: infile sets reinit no)
         if (self.args.reinit == "yes" and self.args.infile is None) or not self.set_up:
             self.setup_bodies(sim)

@@ -697,12 +697,16 @@ class FixRigidSmall(Fix):
         ghost_sums_in(nl, self.body_rows, sums, rows)
 
     # ---- a run -----------------------------------------------------------------------------------
-    def init_run(self, sim):
-        # a rigid fix defined after this one does not look for this one's bodies
-        self._check_other_fixes(sim, sim.groups.select(sim, self.group))
+    def reset_dt(self, sim):
+        """The step's constants (at each run's start, and for a new step mid-run: fix dt/reset)."""
         self.dtv = sim.dt
         self.dtf = 0.5 * sim.dt * sim.units.ftm2v
         self.dtq = 0.5 * sim.dt
+
+    def init_run(self, sim):
+        # a rigid fix defined after this one does not look for this one's bodies
+        self._check_other_fixes(sim, sim.groups.select(sim, self.group))
+        self.reset_dt(sim)
         # a file's values hold for the first run only (as fix rigid's infile)
         if (self.args.reinit == "yes" and self.args.infile is None) or not self.set_up:
             self.setup_bodies(sim)
