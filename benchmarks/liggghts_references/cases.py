@@ -156,6 +156,25 @@ def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
     return BED + SUMS + lines + integrate + thermo(columns) + f"run {steps}\n"
 
 
+def cna_scene(lattice, cells, pair_cutoff, computes, counted, more=""):
+    """A crystal of point particles (``lattice`` at reduced density 0.8442 filling ``cells``, half
+    of it the group half) under pair soft, the ``computes`` (each a cna/atom named c...) summed by
+    compute reduce, the particles of each class of compute ``counted`` counted, run 400 steps."""
+    names = [line.split()[1] for line in computes.splitlines()]
+    classes = "".join(f"variable n{k} atom c_{counted}=={k}\n" for k in range(6))
+    return (f"units lj\natom_style atomic\natom_modify map array\nboundary p p p\nlattice {lattice} 0.8442\n"
+            f"region box block {cells} units lattice\ncreate_box 1 box\ncreate_atoms 1 box\nmass 1 1.0\n"
+            "region half block INF INF INF INF 0 1.5 units lattice\ngroup half region half\n"
+            "velocity all ramp vx -0.6 0.6 y 0 3 units box\nvelocity all ramp vz -0.4 0.5 x 0 4 sum yes units box\n"
+            f"neighbor 0.3 bin\npair_style soft {pair_cutoff}\npair_coeff * * 4.0\n{computes}{classes}"
+            f"compute r all reduce sum {' '.join('c_' + n for n in names)}\n"
+            f"compute n all reduce sum {' '.join(f'v_n{k}' for k in range(6))}\n"
+            "fix integr all nve\ntimestep 0.005\ncompute pe all pe\n"
+            f"thermo_style custom step atoms ke c_pe c_r[1] c_r[2] {more + ' ' if more else ''}"
+            + " ".join(f"c_n[{k + 1}]" for k in range(6)) + "\n"
+            "thermo_modify format float %20.15g norm no\nthermo 50\nrun 400\n")
+
+
 CASES = {
     "bed": Case("fix_granular", ("fix", "compute", "fix nve/sphere", "fix wall/gran", "gran model hertz",
                                  "gran tangential history", "compute erotate/sphere", "compute reduce", "velocity",
@@ -618,6 +637,17 @@ CASES = {
                    + ATOMIC_RUN.replace("compute sum all reduce sum x y z vx vy vz\n", "")
                    .replace("thermo_style custom step atoms ke c_pe", "thermo_style custom step atoms ke c_pe c_cr[1] "
                             "c_cr[2] c_cm"), head=False),
+    # compute cna/atom: LJ-units crystals of point particles under pair soft, set moving by velocity
+    # ramps (their periodic jumps melt the crystal near the box faces), counted by class
+    "cna_fcc": Case("compute_coord", ("compute cna/atom",), cna_scene(
+        "fcc", "0 4 0 4 0 4", 2.5, "compute c all cna/atom 1.3\ncompute ch half cna/atom 1.3\n", "c"), head=False,
+        ranks=True),
+    "cna_bcc": Case("compute_coord", ("compute cna/atom",), cna_scene(
+        "bcc", "0 4 0 4 0 4", 2.5, "compute c all cna/atom 1.6\ncompute ch half cna/atom 1.0\n"
+        "compute cb all cna/atom 2.0\ncompute cz all cna/atom 0\n", "c", more="c_r[3] c_r[4]"), head=False),
+    "cna_hcp": Case("compute_coord", ("compute cna/atom",), cna_scene(
+        "hcp", "0 6 0 3 0 3", 2.5, "compute c all cna/atom 1.3\ncompute ch half cna/atom 1.5\n", "c"), head=False,
+        ranks=True),
     "molecules": Case("compute_basic", ("compute com/molecule", "compute gyration/molecule", "compute msd/molecule",
                                         "compute inertia/molecule", "compute atom/molecule",
                                         "compute property/molecule"),
