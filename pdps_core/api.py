@@ -137,6 +137,7 @@ CONTRACT = {
               "nktv2p": "energy density to pressure", "ftm2v": "f dt / m to velocity (integrators)",
               "mv2d": "mass/volume to the density thermo reports"},
     "Neighbor": {"skin": "the neighbor skin (distance)",
+                 "xhold": "the owned particles' positions at the last build of the lists (nlocal, 3), or None before one",
                  "radii_vary": "True in a run where a fix changes radii (Fix.varies_radius): a style keeping "
                                "its own candidate lists counts radius growth as a move"},
     "NeighborList": {"kind": "half or full", "half_list": "kind == 'half'",

@@ -541,6 +541,24 @@ CASES = {
                                BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
                                "fix adapt top dt/reset 100 NULL NULL 0.001 units lattice\n"
                                + thermo("dt time f_adapt") + "run 2000\n"),
+    # the pairs within the pair cutoff and within the neighbor list's (cutoff + skin), of the group and
+    # of all: which of a pair is atom1 follows each program's list, so what is compared is symmetric (the
+    # sums of both IDs and both types, the number of pairs)
+    "property_local": Case("compute_gran_local", ("compute property/local",),
+                           ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\n"
+                           "compute pl all property/local patom1 patom2 ptype1 ptype2\n"
+                           "compute nl half property/local natom1 natom2 ntype1 ntype2\n"
+                           "compute ps all reduce sum c_pl[1] c_pl[2] c_pl[3] c_pl[4]\n"
+                           "compute pa all reduce ave c_pl[1] c_pl[2]\n"
+                           "compute ns all reduce sum c_nl[1] c_nl[2] c_nl[3] c_nl[4]\n"
+                           "compute na all reduce ave c_nl[1] c_nl[2]\n"
+                           "variable pids equal c_ps[1]+c_ps[2]\nvariable ptypes equal c_ps[3]+c_ps[4]\n"
+                           "variable npairs equal (c_ps[1]+c_ps[2])/(c_pa[1]+c_pa[2])\n"
+                           "variable nids equal c_ns[1]+c_ns[2]\n"
+                           "variable ntypes equal c_ns[3]+c_ns[4]\n"
+                           "variable nnear equal (c_ns[1]+c_ns[2])/(c_na[1]+c_na[2])\n"
+                           + ATOMIC_RUN.replace("c_sum[6]\n", "c_sum[6] v_pids v_ptypes v_npairs v_nids "
+                                                "v_ntypes v_nnear\n"), head=False, ranks=True),
     "log": Case("core", ("log",), BED + SUMS + "fix integr all nve/sphere\n" + thermo()
                 + "run 900\nlog other.log\nrun 900\nlog log.case append\nrun 1200\n"),
     "print": Case("fix_simple", ("fix print",),
