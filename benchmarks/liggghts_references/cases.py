@@ -156,6 +156,21 @@ def bed(lines, columns="", steps=3000, integrate="fix integr all nve/sphere\n"):
     return BED + SUMS + lines + integrate + thermo(columns) + f"run {steps}\n"
 
 
+def euler_snapshots(lines, references, steps=(1000, 1000, 1000)):
+    """The bed with ``lines`` (a fix ave/euler) run in parts of ``steps``; after each part the
+    ``references`` (f_ID[i][j]) are read into the variables s0, s1, ... (LIGGGHTS's thermo and
+    variables cannot read the fix during a run: it sets no global_freq, and thermo divides by it),
+    which thermo prints through the next part (0 before the first values) and a run 0 at the end."""
+    names = " ".join(f"v_s{k}" for k in range(len(references)))
+    text = (BED + SUMS + lines + "".join(f"variable s{k} equal 0.0\n" for k in range(len(references)))
+            + "fix integr all nve/sphere\n" + thermo(names) + f"run {steps[0]}\n")
+    for more in (*steps[1:], 0):
+        text += "".join(f"variable t{k} equal {ref}\nvariable s{k} equal ${{t{k}}}\n"
+                        for k, ref in enumerate(references))
+        text += f"run {more}\n"
+    return text
+
+
 def cna_scene(lattice, cells, pair_cutoff, computes, counted, more=""):
     """A crystal of point particles (``lattice`` at reduced density 0.8442 filling ``cells``, half
     of it the group half) under pair soft, the ``computes`` (each a cna/atom named c...) summed by
@@ -648,6 +663,25 @@ CASES = {
                               "f_ca[1][2] f_ca[1][3] f_ca[2][3] f_ca[4][5] f_cu[1][3] f_cu[10][3] f_cu[5][2] "
                               "f_cf[2][4] f_cf[3][6] f_cl[1][5] f_cl[2][8]"),
                           outputs=("auto.correlate", "upper.correlate")),
+    # cells of 0.1/3 (2.7 times the largest cutoff 0.012, rounded down to 3 per axis): the spheres on
+    # x, y = -0.03 -0.01 0.01 0.03 and z = 0.01 0.03 0.05 sit in cells 0 1 1 2 (x, y) and 0 0 1 (z), off
+    # every cell face; the upper ones fall into the lower cells in the run
+    "ave_euler": Case("analyze_ave", ("fix ave/euler",),
+                      euler_snapshots("fix eu all ave/euler nevery 100 cell_size_relative 2.7 parallel no\n",
+                                      ("f_eu[5][4]", "f_eu[5][5]", "f_eu[5][6]", "f_eu[5][7]", "f_eu[4][4]",
+                                       "f_eu[4][5]", "f_eu[4][7]", "f_eu[1][4]", "f_eu[1][6]", "f_eu[14][1]",
+                                       "f_eu[14][2]", "f_eu[14][3]", "f_eu[14][4]", "f_eu[14][7]", "f_eu[27][3]",
+                                       "f_eu[27][4]")), ranks=True),
+    # the upper spheres only, volume fractions over the part of each cell in a cylinder (LIGGGHTS's
+    # Monte Carlo weights, its Park-Miller generator); averaged every 150 steps (the last at 2850
+    # before the snapshot at 3000 is taken: run 0 averages again)
+    "ave_euler_region": Case("analyze_ave", ("fix ave/euler",),
+                             euler_snapshots("region base cylinder z 0.0 0.0 0.04 INF INF units box\n"
+                                             "fix er top ave/euler nevery 150 cell_size_relative 2.7 parallel yes "
+                                             "basevolume_region base\n",
+                                             ("f_er[1][4]", "f_er[2][4]", "f_er[4][4]", "f_er[5][4]", "f_er[5][7]",
+                                              "f_er[11][4]", "f_er[13][4]", "f_er[14][4]", "f_er[14][5]",
+                                              "f_er[14][7]", "f_er[17][4]"), steps=(1000, 1000, 1050)), ranks=True),
     "centro": Case("compute_coord", ("compute centro/atom",),
                    ATOMIC + "pair_style soft 1.2\npair_coeff * * 3.0\ncompute cs all centro/atom 6\n"
                    "compute c4 half centro/atom 6\ncompute sum all reduce sum x y z vx vy vz\n"

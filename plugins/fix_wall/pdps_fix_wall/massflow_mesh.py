@@ -27,7 +27,7 @@ and number deleted (``delete_atoms yes``); ``f_ID[7]`` with ``sum_property ID``:
 ``fix property/atom`` scalar over the particles counted.
 
 ``file FILE`` (``append FILE``: appended to) writes a line for each particle counted: ID, [time,]
-diameter, x y z, vx vy vz, and the value of a ``fix property/atom`` named color when there is one,
+diameter, x y z, vx vy vz, and the value of a per-atom property named color when there is one,
 each at %4.4g (LIGGGHTS's columns; with more than one rank each writes FILE.RANK); ``screen yes``
 prints the same on screen. ``delete_atoms yes`` (``count once`` only) deletes the particles counted
 at the next neighbor list build.
@@ -263,7 +263,8 @@ class FixMassflowMesh(Fix):
         self.property = None
         if args.sum_property is not None:
             self.property = sim.fixes.get(args.sum_property)
-            if self.property is None or self.property.name != "property/atom":
+            # a fix property/atom scalar, or any fix with one value per particle
+            if self.property is None or not callable(getattr(self.property, "peratom", None)):
                 raise ScriptError(f"sum_property {args.sum_property}: no fix property/atom of that ID")
         self.screen = args.screen == "yes"
         self.write_time = args.writeTime
@@ -375,8 +376,7 @@ class FixMassflowMesh(Fix):
 
     def _write(self, sim, rows):
         p = sim.particles
-        color = sim.fixes.get("color")
-        colors = color.peratom(sim) if (color is not None and color.name == "property/atom") else None
+        colors = p.arrays["color"][: p.nlocal] if p.has("color") else None
         for i in rows:
             values = (2.0 * p.radius[i], *p.x[i], *p.v[i])
             if self.screen:
