@@ -56,7 +56,7 @@ from numba import njit
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
 
-from .mesh import mesh_fix
+from .mesh import closest_on_triangle, face_normals, mesh_fix
 
 # a particle's place with respect to the face: never near it, on the other side, on the counting
 # side, counted already (count once)
@@ -82,45 +82,6 @@ def _barycentric_inside(x, a, b, c, tolerance):
     v = (d11 * d20 - d01 * d21) / denominator
     w = (d00 * d21 - d01 * d20) / denominator
     return v > -tolerance and w > -tolerance and 1.0 - v - w > -tolerance
-
-
-@njit(cache=True)
-def _closest_point(x, a, b, c, out):
-    """The point of triangle abc closest to x (Ericson, Real-Time Collision Detection, 5.1.5)."""
-    ab = b - a
-    ac = c - a
-    ap = x - a
-    d1 = ab @ ap
-    d2 = ac @ ap
-    if d1 <= 0.0 and d2 <= 0.0:
-        out[:] = a
-        return
-    bp = x - b
-    d3 = ab @ bp
-    d4 = ac @ bp
-    if d3 >= 0.0 and d4 <= d3:
-        out[:] = b
-        return
-    vc = d1 * d4 - d3 * d2
-    if vc <= 0.0 and d1 >= 0.0 and d3 <= 0.0:
-        out[:] = a + (d1 / (d1 - d3)) * ab
-        return
-    cp = x - c
-    d5 = ab @ cp
-    d6 = ac @ cp
-    if d6 >= 0.0 and d5 <= d6:
-        out[:] = c
-        return
-    vb = d5 * d2 - d1 * d6
-    if vb <= 0.0 and d2 >= 0.0 and d6 <= 0.0:
-        out[:] = a + (d2 / (d2 - d6)) * ac
-        return
-    va = d3 * d6 - d5 * d4
-    if va <= 0.0 and d4 - d3 >= 0.0 and d5 - d6 >= 0.0:
-        out[:] = b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)
-        return
-    denominator = 1.0 / (va + vb + vc)
-    out[:] = a + ab * (vb * denominator) + ac * (vc * denominator)
 
 
 @njit(cache=True)
@@ -171,7 +132,7 @@ def pass_through(npairs, pair_triangle, pair_particle, x, radius, rmass, counter
         b = corners[t, 1]
         c = corners[t, 2]
         if at_outlet:
-            _closest_point(x[i], a, b, c, closest)
+            closest_on_triangle(x[i, 0], x[i, 1], x[i, 2], a, b, c, closest)
             gap = math.sqrt(((closest - x[i]) ** 2).sum())
             # LIGGGHTS compares the gap less the radius with the radius
             if not gap - radius[i] < radius[i]:
@@ -298,8 +259,7 @@ class FixMassflowMesh(Fix):
         reference point and the counting side."""
         surface = self.surface
         corners = np.ascontiguousarray(surface.vertices[surface.triangles])
-        normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-        normal /= np.linalg.norm(normal, axis=1)[:, None]
+        normal = face_normals(surface.vertices, surface.triangles)
         edges = np.roll(corners, -1, axis=1) - corners
         edge_normal = np.cross(edges, normal[:, None, :])
         edge_normal /= np.linalg.norm(edge_normal, axis=2)[:, :, None]
