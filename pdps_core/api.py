@@ -16,6 +16,7 @@ from .errors import ScriptError, SimulationError
 from .neighbor.neighbor import NeighborList
 from .pair_loop import generated_module
 from .random import pair_gaussian, pair_uniform, particle_gaussians, particle_uniforms, philox4x32
+from .random_park import park_gaussian, park_state, park_uniform
 from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
@@ -28,7 +29,7 @@ __all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactConduction",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
-           "keyword", "number", "observables", "open_slot", "pair_gaussian", "pair_uniform", "param", "parse_args",
+           "keyword", "number", "observables", "open_slot", "pair_gaussian", "park_gaussian", "park_state", "park_uniform", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "PERATOM_REFERENCE", "PeratomReference", "peratom_column", "philox4x32", "registry",
            "type_range", "yes_no"]
 
@@ -137,6 +138,8 @@ CONTRACT = {
               "nktv2p": "energy density to pressure", "ftm2v": "f dt / m to velocity (integrators)",
               "mv2d": "mass/volume to the density thermo reports"},
     "Neighbor": {"skin": "the neighbor skin (distance)",
+                 "exclude_molecules": "exclude_molecules(group, kind='intra'): no pairs of the group within one molecule "
+                                      "(or between two: 'inter'), as neigh_modify exclude molecule/intra",
                  "xhold": "the owned particles' positions at the last build of the lists (nlocal, 3), or None before one",
                  "radii_vary": "True in a run where a fix changes radii (Fix.varies_radius): a style keeping "
                                "its own candidate lists counts radius growth as a move"},

@@ -173,6 +173,13 @@ class Neighbor:
         self.built_with = None      # (skin, [(kind, cutoff)], box lo, hi, periodic) of the last build
         self.current_for = None     # (x, tag) of owned particles the lists and schedule are current for
 
+    def exclude_molecules(self, group, kind="intra"):
+        """Leave out of the lists the pairs of ``group`` in one molecule (intra) or in two (inter), as
+        ``neigh_modify exclude molecule/intra|inter GROUP`` does (a fix whose bodies have molecule ids:
+        LIGGGHTS's fix multisphere)."""
+        if (group, kind) not in self.excluded_molecules:
+            self.excluded_molecules.append((group, kind))
+
     @property
     def skin(self):
         """The skin in effect since the last build (what the rebuild decision, the ghosts and every

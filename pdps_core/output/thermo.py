@@ -89,7 +89,12 @@ def keyword_value(sim, name, indices=()):
             # LAMMPS's thermo ke: from the temperature, 1/2 dof k_B T with the temperature compute's
             # degrees of freedom (its group's, after thermo_modify temp; 0 with none)
             thermo = sim.output.thermo
-            total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group()) * sim.units.boltz * thermo.temperature()
+            if obs.clump_rows(sim) is not None:
+                # LIGGGHTS's thermo ke with rigid clumps (fix multisphere): compute ke's sum, each
+                # clump counted as one body
+                total += obs.kinetic_energy_with_clumps(sim, thermo.temp_group())
+            else:
+                total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group()) * sim.units.boltz * thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         if name == "econserve":

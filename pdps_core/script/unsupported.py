@@ -86,10 +86,10 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     **{("fix", name): "pdps has no SPH" for name in ("sph/density/continuity", "sph/density/corr",
                                                      "sph/density/summation", "sph/pressure", "wall/region/sph")},
     ("pair", "sph/artVisc/tensCorr"): "pdps has no SPH",
-    **{(kind, name): "pdps has no multisphere bodies: fix rigid/small on clumps of spheres (molecule ids)"
-       for kind, name in (("fix", "multisphere"), ("fix", "multisphere/break"), ("fix", "particletemplate/multisphere"),
-                          ("compute", "multisphere"), ("compute", "multisphere/single"),
-                          ("compute", "erotate/multisphere"), ("compute", "ke/multisphere"))},
+    ("fix", "multisphere/break"): "pdps's fix multisphere bodies do not break: fix multisphere",
+    **{("compute", name): "pdps's fix multisphere gives no per-body properties yet: compute ke/multisphere, "
+                          "erotate/multisphere"
+       for name in ("multisphere", "multisphere/single")},
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
                           ("compute", "erotate/superquadric"))},

@@ -72,6 +72,47 @@ def kinetic_energy(sim, group="all"):
     return sim.comm.sum(0.5 * float(_sums(sim, group)[0])) * sim.units.mvv2e
 
 
+def clump_rows(sim):
+    """The owned particles that are spheres of rigid clumps (a fix offering ``extract("clump_body")``:
+    LIGGGHTS's fix multisphere), or None without such a fix. LIGGGHTS's particle energies (compute
+    ke, ke/atom, erotate/sphere, thermo ke) leave them out and count their bodies instead."""
+    p = sim.particles
+    names = [name for fix in sim.fixes.values() if (name := fix.extract("clump_body")) is not None]
+    if not names:
+        return None
+    rows = np.zeros(p.nlocal, dtype=bool)
+    for name in names:
+        rows |= p.arrays[name][:p.nlocal] >= 0
+    return rows
+
+
+def outside_clumps(sim, chosen):
+    """The owned particles of the boolean mask ``chosen`` that are not spheres of rigid clumps."""
+    rows = clump_rows(sim)
+    return chosen if rows is None else chosen & ~rows
+
+
+def clump_energies(sim):
+    """The rigid clumps' (translational, rotational) kinetic energies, summed over the fixes that
+    move clumps (``extract("clump_energies")``); (0, 0) without one."""
+    found = [e for fix in sim.fixes.values() if (e := fix.extract("clump_energies")) is not None]
+    return (sum(e[0] for e in found), sum(e[1] for e in found))
+
+
+def kinetic_energy_with_clumps(sim, group="all"):
+    """LIGGGHTS's compute ke: the group's particles outside rigid clumps, plus every clump's body
+    (the kinetic energy itself where there are none)."""
+    rows = clump_rows(sim)
+    if rows is None:
+        return kinetic_energy(sim, group)
+    p = sim.particles
+    n = p.nlocal
+    chosen = sim.groups.select(sim, group) & ~rows
+    v = p.v[:n][chosen]
+    own = 0.5 * float(np.sum(masses(sim)[chosen] * np.einsum("ij,ij->i", v, v)))
+    return sim.comm.sum(own) * sim.units.mvv2e + clump_energies(sim)[0]
+
+
 def degrees_of_freedom(sim, group="all", extra=None):
     """d N - d (``extra`` instead of d when given: compute_modify extra/dof), less what fixes remove
     (constraints, rigid bodies: ``Fix.dof_removed``). Fewer than

@@ -4,7 +4,9 @@ r"""Compute ``ke``: the kinetic energy of a group, a scalar ``c_ID``, and per pa
 
     KE = \sum_{i \in G} \tfrac12 m_i v_i^2, \qquad ke_i = \tfrac12 m_i v_i^2
 
-in energy units (times ``mvv2e`` of the unit system), as LAMMPS's compute ke and ke/atom: the total,
+in energy units (times ``mvv2e`` of the unit system), as LAMMPS's compute ke and ke/atom. The
+spheres of rigid clumps (fix multisphere) are left out, each clump's body counted once,
+:math:`\tfrac12 M V^2`, whatever the group (LIGGGHTS's compute ke): the total,
 with the centre-of-mass motion included. Like LAMMPS, thermo prints it divided by the number of
 particles when it normalises energies (lj units); a variable reads the total. The per-atom value (``dump custom ... c_ID``, ``compute reduce ... c_ID``) is 0
 for particles outside the group.
@@ -31,7 +33,7 @@ class ComputeKE(Compute):
     extensive = True
 
     def scalar(self, sim):
-        return observables.kinetic_energy(sim, self.group)
+        return observables.kinetic_energy_with_clumps(sim, self.group)
 
     def peratom(self, sim):
         p = sim.particles

@@ -18,7 +18,7 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError
+from pdps_core.api import Compute, ScriptError, observables
 
 INERTIA = 0.4   # solid sphere
 
@@ -37,7 +37,7 @@ class ComputeERotateSphere(Compute):
         p = sim.particles
         n = p.nlocal
         w = p.omega[:n]
-        chosen = sim.groups.select(sim, self.group)
+        chosen = observables.outside_clumps(sim, sim.groups.select(sim, self.group))
         local = float(np.sum(((w[:, 0] * w[:, 0] + w[:, 1] * w[:, 1] + w[:, 2] * w[:, 2])
                               * p.radius[:n] * p.radius[:n] * p.rmass[:n])[chosen]))
         return sim.comm.sum(local) * (0.5 * sim.units.mvv2e * INERTIA)
@@ -52,3 +52,6 @@ class ComputeERotate(ComputeERotateSphere):
     """
     name = "erotate"
     usage = "compute ID GROUP erotate"
+
+    def scalar(self, sim):
+        return super().scalar(sim) + observables.clump_energies(sim)[1]

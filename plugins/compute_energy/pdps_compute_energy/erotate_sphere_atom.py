@@ -18,7 +18,7 @@ Example::
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError
+from pdps_core.api import Compute, ScriptError, observables
 
 from .erotate_sphere import INERTIA
 
@@ -39,4 +39,4 @@ class ComputeERotateSphereAtom(Compute):
         # LAMMPS's order of operations: (w.w) r r m, then times 0.5 mvv2e INERTIA
         energy = (w[:, 0] * w[:, 0] + w[:, 1] * w[:, 1] + w[:, 2] * w[:, 2]) * r * r * p.rmass[:n]
         energy *= 0.5 * sim.units.mvv2e * INERTIA
-        return np.where(sim.groups.select(sim, self.group), energy, 0.0)
+        return np.where(observables.outside_clumps(sim, sim.groups.select(sim, self.group)), energy, 0.0)

@@ -28,4 +28,4 @@ class ComputeKEAtom(Compute):
         v = sim.particles.v[:n]
         energy = 0.5 * sim.units.mvv2e * observables.masses(sim) * (v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1]
                                                                     + v[:, 2] * v[:, 2])
-        return np.where(sim.groups.select(sim, self.group), energy, 0.0)
+        return np.where(observables.outside_clumps(sim, sim.groups.select(sim, self.group)), energy, 0.0)

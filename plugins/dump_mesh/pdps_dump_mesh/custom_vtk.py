@@ -8,7 +8,7 @@ Syntax::
 N is the interval in steps; FILE has one ``*`` (replaced by the step) and ends in ``.vtk`` (legacy
 VTK, LIGGGHTS's default) or ``.vtu``. The particles are points, sorted by id (their positions always:
 ``x y z`` may be listed or not, as LIGGGHTS says), with point data for the attributes listed, in
-LIGGGHTS's groups: ``id``, ``type``, ``mass``, ``radius``, ``diameter``, ``ix iy iz`` (as the vector
+LIGGGHTS's groups: ``id``, ``type``, ``mol`` (the molecule id: a multisphere clump's body id), ``mass``, ``radius``, ``diameter``, ``ix iy iz`` (as the vector
 ``image``), ``vx vy vz`` (``v``), ``fx fy fz`` (``f``), ``omegax omegay omegaz`` (``omega``),
 ``tqx tqy tqz`` (``torque``); a component listed alone is written alone (``vz``); computes', fixes'
 and atom-style variables' per-atom values (``c_ID``, ``c_ID[k]``, ``f_ID``, ``f_ID[k]``, ``v_NAME``, and
@@ -34,7 +34,7 @@ from .vtk import DumpVTK, series_json
 
 VECTORS = {"v": ("vx", "vy", "vz"), "f": ("fx", "fy", "fz"), "omega": ("omegax", "omegay", "omegaz"),
            "torque": ("tqx", "tqy", "tqz"), "image": ("ix", "iy", "iz")}
-SCALARS = ("id", "type", "mass", "radius", "diameter")
+SCALARS = ("id", "type", "mol", "mass", "radius", "diameter")
 POSITIONS = ("x", "y", "z")
 OTHER_POSITIONS = ("xu", "yu", "zu", "xs", "ys", "zs")
 COMPONENT = {word: (name, k) for name, words in VECTORS.items() for k, word in enumerate(words)}
@@ -78,6 +78,9 @@ class DumpCustomVTK(MeshDump):
         for name, *_ in self.columns:
             if name in needs_sphere and not sim.particles.has("radius" if name == "diameter" else name):
                 raise ScriptError(f"custom/vtk: {name} needs spheres (atom_style sphere or granular)")
+            if name == "mol" and not sim.particles.has("molecule"):
+                raise ScriptError("custom/vtk: mol needs molecule ids (atom_style molecular, bond, angle or full, "
+                                  "or a fix multisphere defined before the dump)")
 
     def write(self, sim):
         p = sim.particles
@@ -98,7 +101,7 @@ class DumpCustomVTK(MeshDump):
             block = table[:, start:start + width]
             data[name] = np.ascontiguousarray(block[:, 0] if width == 1 else block)
             start += width
-        for name in ("id", "type", "image"):
+        for name in ("id", "type", "mol", "image"):
             if name in data:
                 data[name] = data[name].astype(np.int64)
         path = self.pattern.frame(sim.step)
@@ -154,6 +157,8 @@ class DumpCustomVTK(MeshDump):
             return p.rmass[:n] if p.has("rmass") else sim.mass[p.type[:n]]
         if name == "diameter":
             return 2.0 * p.radius[:n]
+        if name == "mol":
+            return p.molecule[:n]
         return p.arrays[name][:n]
 
     write_mesh = DumpVTK.write_mesh

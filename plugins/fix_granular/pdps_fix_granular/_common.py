@@ -63,6 +63,19 @@ def add_weight(f, type_, type_mass, rmass, mask, groupbit, nlocal, ax, ay, az):
                 f[i, 2] += m * az
 
 
+@njit(cache=True)
+def add_weight_unbound(f, type_, type_mass, rmass, mask, groupbit, bound, nlocal, ax, ay, az):
+    """add_weight for the particles outside bodies (``bound[i] < 0``): a fix multisphere applies
+    the weight of its bodies' spheres to the bodies themselves (LIGGGHTS's fix gravity skips them)."""
+    with_rmass = len(rmass) > 0
+    for i in range(nlocal):
+        if mask[i] & groupbit and bound[i] < 0:
+            m = rmass[i] if with_rmass else type_mass[type_[i]]
+            f[i, 0] += m * ax
+            f[i, 1] += m * ay
+            f[i, 2] += m * az
+
+
 def require_spheres(sim, what):
     """Per-particle radius and mass exist only with particle_style sphere (set before the box)."""
     p = sim.particles

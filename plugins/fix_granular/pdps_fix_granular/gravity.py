@@ -15,7 +15,8 @@ magnitude. The direction :math:`\hat{\mathbf{n}}` is
   from +y in the xy plane, :math:`(\sin\theta, \cos\theta, 0)`, and :math:`\phi` is ignored.
 
 Unlike ``fix addforce``, the force is proportional to mass. Applied in ``post_force`` and at setup,
-so the first step feels it. Variables (``v_name``) are not supported for the values.
+so the first step feels it. The spheres of a ``fix multisphere``'s bodies feel none: that fix
+applies M g to each body (LIGGGHTS's fix gravity skips them too). Variables (``v_name``) are not supported for the values.
 
 Parameters:
 
@@ -40,7 +41,7 @@ from typing import Literal
 import numpy as np
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
-from ._common import NO_RMASS, add_weight
+from ._common import NO_RMASS, add_weight, add_weight_unbound
 
 def direction(style, values, dimension):
     """Unit vector of the acceleration for a style and its values (angles in degrees)."""
@@ -79,17 +80,25 @@ class FixGravity(Fix):
         super().__init__(sim, id, group, args)
         self.direction = direction(args.direction[0], args.direction[1:], sim.dimension)
         self.acceleration = tuple(float(c) for c in args.magnitude * self.direction)
+        self.bound = None
 
     def extract(self, name):
         """"gvec": the acceleration (3,), as LAMMPS's fix gravity gives it to fix rigid's gravity keyword."""
         return self.acceleration if name == "gvec" else None
 
     def setup(self, sim):
+        # spheres of rigid clumps, whose weight their fix applies to the bodies (fix multisphere's)
+        self.bound = next((name for fix in sim.fixes.values() if fix is not self
+                           and (name := fix.extract("clump_body")) is not None), None)
         self.post_force(sim)
 
     def post_force(self, sim):
         p = sim.particles
         a = p.arrays
         ax, ay, az = self.acceleration
+        if self.bound is not None:
+            add_weight_unbound(a["f"], a["type"], sim.mass, a.get("rmass", NO_RMASS), a["mask"],
+                               sim.groups.bit(self.group), a[self.bound], p.nlocal, ax, ay, az)
+            return
         add_weight(a["f"], a["type"], sim.mass, a.get("rmass", NO_RMASS), a["mask"], sim.groups.bit(self.group),
                    p.nlocal, ax, ay, az)

@@ -15,7 +15,10 @@ General keywords (LIGGGHTS's names, after ``seed S distributiontemplate DIST``):
     compress_tags no                  LIGGGHTS's default; yes (ids numbered again) is refused
     vel constant VX VY VZ | uniform VX VY VZ DVX DVY DVZ | gaussian VX VY VZ SX SY SZ
     omega constant WX WY WZ
-    orientation random|template       read; a sphere has no orientation
+    orientation random|template|constant Q0 Q1 Q2 Q3
+                                      a clump's (particletemplate/multisphere): its template's
+                                      (default, as LIGGGHTS), uniform random, or rotated by the unit
+                                      quaternion Q; a sphere has none
     set_property NAME VALUE           a per-atom value of the new particles (an existing per-atom array)
 
 ``vel uniform``: each component :math:`v = \bar v + \Delta v\,(2u - 1)`, u uniform on [0, 1)
@@ -66,7 +69,8 @@ class InsertArgs(StyleArgs):
     overlapcheck: YesNo = keyword("yes")
     all_in: YesNo = keyword("no")
     random_distribute: Literal["exact", "uncorrelated"] | None = keyword(None)
-    orientation: Literal["random", "template"] | None = keyword(None)
+    orientation: (Literal["random", "template"] | tuple[Literal["constant"], float, float, float, float]
+                  | None) = keyword(None, unit="1")
     set_property: Property | None = keyword(None, unit=("1", "as the property"))
     vel: Velocity | None = keyword(None, unit="velocity")
     omega: tuple[Literal["constant"], float, float, float] | None = keyword(None, unit="1/time")
@@ -129,6 +133,20 @@ class FixInsert(Fix):
                 self.velocity_spread = np.array(args.vel[4:])
         self.omega = np.zeros(3) if args.omega is None else np.array(args.omega[1:])
         self.set_property = None if args.set_property is None else tuple(args.set_property)
+        self.orientation = "template" if args.orientation is None else args.orientation
+        self.orientation_quat = np.array([1.0, 0.0, 0.0, 0.0])
+        if isinstance(self.orientation, tuple):
+            self.orientation_quat = np.array(self.orientation[1:])
+            if abs(np.dot(self.orientation_quat, self.orientation_quat) - 1.0) > 1e-10:
+                raise ScriptError(f"orientation constant: the quaternion must have unit length (got "
+                                  f"{' '.join(f'{c:g}' for c in self.orientation_quat)})")
+        # clumps of a particletemplate/multisphere: inserted whole, bodies of the fix multisphere
+        kinds = {hasattr(t, "displace") for t in self.distribution.templates}
+        if len(kinds) > 1:
+            raise ScriptError(f"distributiontemplate {name} mixes particletemplate/sphere and /multisphere "
+                              "templates: insert each kind with a fix of its own")
+        self.clumps = kinds == {True}
+        self.multisphere = None
         self.read_style(sim, args)
         self.inserted = 0
         self.inserted_mass = 0.0
@@ -176,6 +194,12 @@ class FixInsert(Fix):
         if "sphere" not in sim.particle_styles:
             raise ScriptError(f"fix {self.name} needs spheres (atom_style granular or sphere; got "
                               f"{sim.particle_style})")
+        if self.clumps:
+            bodies = [f for f in sim.fixes.values() if hasattr(f, "add_bodies")]
+            if len(bodies) != 1:
+                raise ScriptError(f"fix {self.id} inserts multisphere clumps: they need exactly one fix "
+                                  f"multisphere (found {len(bodies)}), as LIGGGHTS")
+            self.multisphere = bodies[0]
         if self.set_property is not None and not sim.particles.has(self.set_property[0]):
             raise ScriptError(f"set_property: no per-atom property {self.set_property[0]}")
         if self.finished:
@@ -253,6 +277,9 @@ class FixInsert(Fix):
         self.placed_rows = self.taken[done] if count else np.zeros(0, dtype=np.int64)
         radius, density, types, which, placed = radius[done], density[done], types[done], which[done], placed[done]
         velocity = self._velocities(rng, n)
+        if self.clumps:
+            self._insert_clumps(sim, rng, placed, velocity, which)
+            return
         mass = density * (4.0 / 3.0 * math.pi) * radius ** 3
         # groups: all, this fix's, the distribution's and each particle's template's (LIGGGHTS)
         bits = np.uint32(1) | sim.groups.bit(self.group) | sim.groups.bit(self.distribution.group)
@@ -273,6 +300,55 @@ class FixInsert(Fix):
         if self.verbose:
             sim.info(f"fix {self.id} ({self.name}): inserted {n} particles (mass {mass.sum():.6g}) at step "
                      f"{sim.step}; {self.inserted} (mass {self.inserted_mass:.6g}) so far")
+
+    def _insert_clumps(self, sim, rng, placed, velocity, which):
+        """Insert the placed clumps of a particletemplate/multisphere (their bounding spheres
+        placed): each clump's spheres, and its body given to the fix multisphere."""
+        n = len(placed)
+        templates = [self.distribution.templates[k] for k in which]
+        rotation = self._orientations(rng, n)
+        axes = np.einsum("bij,bkj->bki", rotation, np.array([t.axes for t in templates]).reshape(n, 3, 3))
+        xcm = placed - np.einsum("bij,bj->bi", rotation, np.array([t.bound_offset for t in templates]).reshape(n, 3))
+        omega = np.tile(self.omega, (n, 1))
+        nrigid = np.array([t.nspheres for t in templates], dtype=np.int64)
+        displace = np.concatenate([t.displace for t in templates]) if n else np.zeros((0, 3))
+        body = np.repeat(np.arange(n), nrigid)
+        arm = np.einsum("sk,skd->sd", displace, axes[body]) if n else np.zeros((0, 3))
+        x = xcm[body] + arm
+        v = velocity[body] + np.cross(omega[body], arm)
+        mass = np.array([t.mass_expected for t in templates])
+        per_atom = self.multisphere.add_bodies(
+            sim, xcm, velocity, omega, axes[:, 0], axes[:, 1], axes[:, 2], np.array([t.inertia for t in templates]).reshape(n, 3),
+            mass, np.array([t.body_density for t in templates]), nrigid,
+            np.array([t.fflag for t in templates]).reshape(n, 3), np.array([t.tflag for t in templates]).reshape(n, 3),
+            np.array([t.clumptype for t in templates], dtype=np.int64), displace)
+        bits = np.uint32(1) | sim.groups.bit(self.group) | sim.groups.bit(self.distribution.group)
+        per_atom.update(radius=np.concatenate([t.radii for t in templates]) if n else np.zeros(0),
+                        rmass=mass[body], omega=omega[body],
+                        mask=bits | np.array([sim.groups.bit(t.group) for t in templates], dtype=np.uint32)[body])
+        types = np.array([t.atom_type for t in templates], dtype=np.int32)[body]
+        if self.set_property is not None:
+            per_atom[self.set_property[0]] = self.set_property[1]
+        if sim.comm.rank == 0:
+            sim.add_particles(x, types, v=v, **per_atom)
+        else:
+            sim.add_particles(np.zeros((0, 3)), 1)
+        self.inserted += n
+        self.inserted_mass += float(mass.sum())
+
+    def _orientations(self, rng, n):
+        """Rotation matrices (n, 3, 3) of n clumps: the template's own (``orientation template``, the
+        default, as LIGGGHTS's), one quaternion's (``constant``), or uniform random ones."""
+        if self.orientation == "random":
+            u1, u2, u3 = rng.random((3, n))
+            q = np.stack([np.sqrt(1 - u1) * np.sin(2 * np.pi * u2), np.sqrt(1 - u1) * np.cos(2 * np.pi * u2),
+                          np.sqrt(u1) * np.sin(2 * np.pi * u3), np.sqrt(u1) * np.cos(2 * np.pi * u3)], 1)
+        else:
+            q = np.tile(self.orientation_quat, (n, 1))
+        w, a, b, c = q.T
+        return np.stack([np.stack([w * w + a * a - b * b - c * c, 2 * (a * b - w * c), 2 * (a * c + w * b)], -1),
+                         np.stack([2 * (a * b + w * c), w * w - a * a + b * b - c * c, 2 * (b * c - w * a)], -1),
+                         np.stack([2 * (a * c - w * b), 2 * (b * c + w * a), w * w - a * a - b * b + c * c], -1)], 1)
 
     def _present(self, sim):
         """Centres and radii of every present particle, on every rank."""

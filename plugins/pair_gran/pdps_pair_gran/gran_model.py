@@ -169,6 +169,11 @@ class PairGranModel(PairGran):
                 poisson = self.material.property("poissonsRatio")[t]
                 radius, mass = p.radius[:nl][of_type], p.rmass[:nl][of_type]
                 density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
+                if p.has("density"):
+                    # a clump's spheres carry its mass, and their own density (LIGGGHTS's atom density)
+                    given = p.arrays["density"][:nl][of_type]
+                    density = np.where(given > 0.0, given, density)
+                    mass = density * (4.0 / 3.0 * math.pi * radius ** 3)
                 k = int(np.argmin(radius * np.sqrt(density)))
                 shear = youngs / (2.0 * (1.0 + poisson))
                 rayleigh = min(rayleigh, contact_models.rayleigh_time(radius[k], density[k], shear, poisson))
