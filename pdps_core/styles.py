@@ -1299,9 +1299,12 @@ def _positive_int(word, name):
 class RegionArgs(StyleArgs):
     """Keywords every LAMMPS region style takes after its own arguments: ``side in|out`` (``match``
     selects the inside or the outside) and ``units box|lattice`` (coordinates in distance units or in
-    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS)."""
+    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS); in the LIGGGHTS
+    dialect also ``volume_limit V``, the smallest volume (distance^3, default 1e-10) an insertion
+    fix accepts of the region, as LIGGGHTS's region.cpp."""
     side: typing.Literal["in", "out"] = keyword("in")
     units: typing.Literal["box", "lattice"] | None = keyword(None)
+    volume_limit: float | None = keyword(None, unit="volume")
 
 
 class Region(Style):
@@ -1318,6 +1321,10 @@ class Region(Style):
         if units == "lattice" and sim.lattice is not None:
             self.scale = np.asarray(sim.lattice.spacing, dtype=np.float64).copy()
         self.side_out = getattr(args, "side", "in") == "out"
+        limit = getattr(args, "volume_limit", None)
+        if limit is not None and sim.dialect.name != "liggghts":
+            raise ScriptError("volume_limit is a LIGGGHTS region keyword (read as LIGGGHTS to use it)")
+        self.volume_limit = 1.0e-10 if limit is None else limit
 
     def inside(self, x):
         raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")

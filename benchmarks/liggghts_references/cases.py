@@ -190,6 +190,38 @@ def cna_scene(lattice, cells, pair_cutoff, computes, counted, more=""):
             "thermo_modify format float %20.15g norm no\nthermo 50\nrun 400\n")
 
 
+def clumps(templates, pack_a, pack_b, steps=6000, more="", columns=""):
+    """Two clumps of spheres (the ``templates``' lines: particletemplate/multisphere pts1, pts2 and
+    their distributions pdd1, pdd2) inserted once by insert/pack, each at one point (a block of
+    1e-15 m a side, all LIGGGHTS's insertion regions must have volume; their centres of mass land
+    there to 1e-15), with ``pack_a`` and ``pack_b`` the insertion fixes' distribution, velocity and
+    spin, in the template's orientation; moved by fix multisphere under gravity onto the hertz
+    floor, where they meet each other about step 3600; ``more`` lines and thermo ``columns`` added."""
+    return ("atom_modify sort 0 0.0\n"
+            "fix floor all wall/gran model hertz tangential history primitive type 1 zplane 0.0\n"
+            "fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n" + templates
+            + "region a block -0.01 -0.009999999999999 0.0 0.000000000000001 0.03 0.030000000000001 units box "
+            "volume_limit 1e-50\n"
+            "region b block 0.012 0.012000000000001 0.003 0.003000000000001 0.055 0.055000000000001 units box "
+            "volume_limit 1e-50\n"
+            f"fix insa all insert/pack seed 32452843 {pack_a} orientation template insert_every once "
+            "overlapcheck yes region a particles_in_region 1\n"
+            f"fix insb all insert/pack seed 32452867 {pack_b} orientation template insert_every once "
+            "overlapcheck yes region b particles_in_region 1\n"
+            "fix integr all multisphere\n"
+            "compute rke all erotate/sphere\ncompute er all erotate\ncompute kem all ke/multisphere\n"
+            "compute erm all erotate/multisphere\n" + SUMS.splitlines()[1] + "\n"
+            "fix ts all check/timestep/gran 300 0.1 0.1\n" + more +
+            "thermo_style custom step atoms ke c_rke c_er c_kem c_erm c_sum[1] c_sum[2] c_sum[3] c_sum[4] "
+            f"c_sum[5] c_sum[6] f_ts[1] f_ts[2] {columns}".rstrip() + "\nthermo_modify format float %20.15g\nthermo 300\n"
+            f"run {steps}\n")
+
+
+# three overlapping spheres; LIGGGHTS 3.8.0's Monte Carlo inertia tensor is wrong in its yz element
+# (fix_template_multisphere.cpp), so where it is computed the body does not turn (tflag off)
+TRIPLE = "nspheres 3 ntry 100000 spheres 0.0 0.0 0.0 0.005 0.008 0.0 0.0 0.004 0.0 0.007 0.002 0.0045"
+
+
 CASES = {
     "bed": Case("fix_granular", ("fix", "compute", "fix nve/sphere", "fix wall/gran", "gran model hertz",
                                  "gran tangential history", "compute erotate/sphere", "compute reduce", "velocity",
@@ -396,6 +428,56 @@ CASES = {
                            bed("region low block INF INF INF INF INF 0.02 units box\ngroup low region low\n"
                                "group rest subtract all low\nfix body low rigid single\n",
                                integrate="fix integr rest nve/sphere\n")),
+    # a clump whose mass and inertia are given (its volume and centre by Monte Carlo), spinning, and
+    # another of the same template; they land on the floor and on each other
+    "multisphere_given": Case("fix_rigid", ("fix multisphere", "fix particletemplate/multisphere",
+                                            "compute ke/multisphere", "compute erotate/multisphere"), clumps(
+        f"fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 {TRIPLE} "
+        "type 1 mass 0.0025 inertia_tensor 3.1e-8 -4e-9 1e-9 2.7e-8 -2e-9 4.0e-8 use_volume\n"
+        "fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0\n",
+        "distributiontemplate pdd1 vel constant 0.2 0.0 -0.5 omega constant 0.0 5.0 3.0",
+        "distributiontemplate pdd1 vel constant -0.3 0.05 -0.8"), ranks=True),
+    # the Monte Carlo template (mass, centre, inertia) with its torque off, and a clump of four
+    # spheres of the second type whose mass and inertia are given with use_density (no Monte Carlo:
+    # the template's origin is its centre of mass), free in x and z only, spinning
+    "multisphere_mc": Case("fix_rigid", ("fix multisphere", "fix particletemplate/multisphere",
+                                         "compute ke/multisphere", "compute erotate/multisphere"), clumps(
+        f"fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 {TRIPLE} "
+        "type 1 tflag off off off\n"
+        "fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0\n"
+        "fix pts2 all particletemplate/multisphere 15485917 atom_type 2 density constant 1500 nspheres 4 ntry 200000 "
+        "spheres 0.0 0.0 0.0 0.006 0.0 0.0 0.009 0.005 0.0 0.0 -0.009 0.005 0.007 0.0 0.0 0.004 type 2 mass 0.004 "
+        "inertia_tensor 5.0e-8 0.0 1.0e-9 6.0e-8 0.0 4.5e-8 use_density fflag on off on\n"
+        "fix pdd2 all particledistribution/discrete 15485927 1 pts2 1.0\n",
+        "distributiontemplate pdd1 vel constant 0.2 0.0 -0.5",
+        "distributiontemplate pdd2 vel constant -0.3 0.05 -0.8 omega constant 2.0 -4.0 1.0")),
+    # the bodies' properties: the second body's one by one (the first's inertia frame is LIGGGHTS's
+    # wrong Monte Carlo tensor's), sums over both of the single-valued ones (compute rigid is the
+    # same compute)
+    "multisphere_properties": Case("fix_rigid", ("compute multisphere", "compute multisphere/single", "compute rigid"),
+                                   clumps(
+        f"fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 {TRIPLE} "
+        "type 1 tflag off off off\n"
+        "fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0\n"
+        "fix pts2 all particletemplate/multisphere 15485917 atom_type 2 density constant 1500 nspheres 4 ntry 200000 "
+        "spheres 0.0 0.0 0.0 0.006 0.0 0.0 0.009 0.005 0.0 0.0 -0.009 0.005 0.007 0.0 0.0 0.004 type 2 mass 0.004 "
+        "inertia_tensor 5.0e-8 0.0 1.0e-9 6.0e-8 0.0 4.5e-8 use_density fflag on off on\n"
+        "fix pdd2 all particledistribution/discrete 15485927 1 pts2 1.0\n",
+        "distributiontemplate pdd1 vel constant 0.2 0.0 -0.5",
+        "distributiontemplate pdd2 vel constant -0.3 0.05 -0.8 omega constant 2.0 -4.0 1.0",
+        more="compute m all multisphere property masstotal\ncompute d all multisphere property density\n"
+             "compute n all rigid property nrigid\ncompute t all multisphere property atomtype\n"
+             "compute c all multisphere property clumptype\ncompute i all multisphere property id_multisphere\n"
+             "compute vz all multisphere property vcm\n"
+             "compute sums all reduce sum c_m c_d c_n c_t c_c c_i c_vz[3]\n"
+             "compute x2 all multisphere/single id 2 property xcm\ncompute v2 all multisphere/single id 2 property vcm\n"
+             "compute f2 all multisphere/single id 2 property fcm\ncompute q2 all multisphere/single id 2 property torque\n"
+             "compute l2 all multisphere/single id 2 property angmom\ncompute w2 all multisphere/single id 2 property omega\n"
+             "compute u2 all multisphere/single id 2 property quat\ncompute i2 all multisphere/single id 2 property inertia\n"
+             "compute e2 all multisphere/single id 2 property ez_space\ncompute m1 all multisphere/single id 1 property masstotal\n",
+        columns="c_sums[1] c_sums[2] c_sums[3] c_sums[4] c_sums[5] c_sums[6] c_sums[7] c_x2[1] c_x2[3] c_v2[1] c_v2[3] "
+                "c_f2[1] c_f2[3] c_q2[1] c_q2[2] c_q2[3] c_l2[1] c_l2[2] c_w2[1] c_w2[3] c_u2[1] c_u2[2] c_u2[3] c_u2[4] "
+                "c_i2[1] c_i2[2] c_i2[3] c_e2[1] c_e2[3] c_m1"), ranks=True),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

@@ -248,8 +248,11 @@ class Neighbor:
         cutoff = np.asarray(cutoff, dtype=np.float64)
         if cutoff.ndim == 0:
             cutoff = np.full((ntypes + 1, ntypes + 1), float(cutoff))
-        if not (np.isfinite(cutoff).all() and cutoff.max() > 0):
-            raise ScriptError(f"neighbor list cutoff must be a finite number > 0 (got {cutoff.max():g})")
+        # a zero cutoff is a granular pair with no particle present or to come (its reach is their
+        # radii): the skin still sizes the bins
+        if not (np.isfinite(cutoff).all() and cutoff.min() >= 0 and cutoff.max() + self.skin > 0):
+            raise ScriptError(f"neighbor list cutoff must be a finite number >= 0, and > 0 without a skin "
+                              f"(got {cutoff.max():g}, skin {self.skin:g})")
         nlist = NeighborList(kind, cutoff, occasional=occasional, groupbit=groupbit,
                              direct_ok=direct_ok and kind == "half" and not occasional)
         self.requests.append(nlist)

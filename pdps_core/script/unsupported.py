@@ -87,9 +87,6 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
                                                      "sph/density/summation", "sph/pressure", "wall/region/sph")},
     ("pair", "sph/artVisc/tensCorr"): "pdps has no SPH",
     ("fix", "multisphere/break"): "pdps's fix multisphere bodies do not break: fix multisphere",
-    **{("compute", name): "pdps's fix multisphere gives no per-body properties yet: compute ke/multisphere, "
-                          "erotate/multisphere"
-       for name in ("multisphere", "multisphere/single")},
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
                           ("compute", "erotate/superquadric"))},
@@ -98,8 +95,6 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
     ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
     ("pair", "bubble"): "none in pdps (LIGGGHTS 3.8.0 itself has no pair bubble)",
-    ("compute", "rigid"): "pdps has no multisphere bodies (LIGGGHTS's compute rigid reads fix multisphere's): "
-                          "compute rigid/local of fix rigid/small",
     ("fix", "efield"): "pdps has no charges",
 }
 

@@ -18,6 +18,9 @@ and inserts the difference to the target:
   extent (default 100000; the relative error is about :math:`\sqrt{(1-f)/(f\,n)}` for a region
   filling a share f of its extent);
 
+whichever the target, the region's volume so measured must reach its ``volume_limit`` (default
+1e-10), else the run stops at the first insertion, as LIGGGHTS's region.cpp stops it;
+
 a fractional count rounded up or down at random with the odds that keep it unbiased (as LIGGGHTS
 says of its mass-based counts). The particles go where the region matches (``all_in yes``: wholly
 inside it, for regions whose surface distance pdps knows: those that can be walls), clear of every
@@ -86,6 +89,12 @@ class FixInsertPack(InRegion, FixInsert):
         self.volume = None
 
     def wanted(self, sim):
+        if self.volume is None:
+            self.volume = region_volume(self.region, sim.box, np.random.default_rng([self.seed, 0]), self.ntry_mc)
+            if self.volume < self.region.volume_limit:
+                raise ScriptError(f"the volume of region {self.region.id} in the box, {self.volume:.6g} by "
+                                  f"{self.ntry_mc} Monte Carlo points, is below its volume_limit "
+                                  f"{self.region.volume_limit:g} (LIGGGHTS's check; lower volume_limit on the region)")
         p = sim.particles
         n = p.nlocal
         inside = self.region.match(p.x[:n])
@@ -98,9 +107,6 @@ class FixInsertPack(InRegion, FixInsert):
             self.filled = share(held, self.amount)
             expected = (self.amount - held) / self.distribution.mass_expected
         else:
-            if self.volume is None:
-                self.volume = region_volume(self.region, sim.box, np.random.default_rng([self.seed, 0]),
-                                            self.ntry_mc)
             held = float(sim.comm.sum(float((4.0 / 3.0 * math.pi * p.radius[:n][inside] ** 3).sum())))
             self.filled = share(held, self.amount * self.volume)
             expected = (self.amount * self.volume - held) / self.distribution.volume_expected

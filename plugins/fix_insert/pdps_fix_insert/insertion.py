@@ -302,13 +302,14 @@ class FixInsert(Fix):
                      f"{sim.step}; {self.inserted} (mass {self.inserted_mass:.6g}) so far")
 
     def _insert_clumps(self, sim, rng, placed, velocity, which):
-        """Insert the placed clumps of a particletemplate/multisphere (their bounding spheres
-        placed): each clump's spheres, and its body given to the fix multisphere."""
+        """Insert the placed clumps of a particletemplate/multisphere (their centres of mass at the
+        points placed, as LIGGGHTS's particleToInsert_multisphere puts them): each clump's spheres,
+        and its body given to the fix multisphere."""
         n = len(placed)
         templates = [self.distribution.templates[k] for k in which]
         rotation = self._orientations(rng, n)
         axes = np.einsum("bij,bkj->bki", rotation, np.array([t.axes for t in templates]).reshape(n, 3, 3))
-        xcm = placed - np.einsum("bij,bj->bi", rotation, np.array([t.bound_offset for t in templates]).reshape(n, 3))
+        xcm = placed
         omega = np.tile(self.omega, (n, 1))
         nrigid = np.array([t.nspheres for t in templates], dtype=np.int64)
         displace = np.concatenate([t.displace for t in templates]) if n else np.zeros((0, 3))
@@ -321,7 +322,8 @@ class FixInsert(Fix):
             sim, xcm, velocity, omega, axes[:, 0], axes[:, 1], axes[:, 2], np.array([t.inertia for t in templates]).reshape(n, 3),
             mass, np.array([t.body_density for t in templates]), nrigid,
             np.array([t.fflag for t in templates]).reshape(n, 3), np.array([t.tflag for t in templates]).reshape(n, 3),
-            np.array([t.clumptype for t in templates], dtype=np.int64), displace)
+            np.array([t.clumptype for t in templates], dtype=np.int64), displace,
+            atomtype=np.array([t.atom_type for t in templates], dtype=np.int64))
         bits = np.uint32(1) | sim.groups.bit(self.group) | sim.groups.bit(self.distribution.group)
         per_atom.update(radius=np.concatenate([t.radii for t in templates]) if n else np.zeros(0),
                         rmass=mass[body], omega=omega[body],

@@ -13,7 +13,9 @@ a template's numbers are LIGGGHTS's to round-off:
    mass M = rho V;
 3. NTRY more points: the inertia tensor about the centre of mass,
    :math:`I_{ab} = \rho\,V_\mathrm{box}/N_\mathrm{try} \sum_\mathrm{inside} (r^2 \delta_{ab} - r_a r_b)`,
-   and its principal moments and axes (a moment below 1e-7 of the largest is zero).
+   and its principal moments and axes, by LIGGGHTS's Jacobi rotations, in their order and with
+   their signs (the third axis flipped to a right-handed frame; a moment below 1e-7 of the largest
+   is zero).
 
 With ``mass M`` and ``inertia_tensor ...`` those are given instead: ``use_volume`` keeps step 2 for the
 volume and centre (density M / V), ``use_density`` skips it (volume M / rho, the centre of mass the
@@ -63,6 +65,63 @@ from .whole_number import WholeNumber
 SHUFFLES = 200          # LIGGGHTS's N_SHUFFLE_BOUND
 EPSILON = 1.0e-7        # a principal moment below EPSILON x the largest is zero
 OnOff = Literal["on", "off"]
+
+
+def jacobi(tensor, sweeps=50):
+    """Principal moments and axes (columns) of a symmetric 3x3 tensor by the cyclic Jacobi rotations
+    of LIGGGHTS's (and LAMMPS's) MathExtra::jacobi, whose order and signs of the axes are the body
+    frame LIGGGHTS's bodies have (their quat, inertia, ex_space... as compute multisphere reads
+    them); numpy's eigh sorts them instead."""
+    a = np.array(tensor, dtype=np.float64)
+    vectors = np.eye(3)
+    b = np.diag(a).copy()
+    values = b.copy()
+    z = np.zeros(3)
+
+    def rotate(m, i, j, k, l, s, tau):
+        g, h = m[i, j], m[k, l]
+        m[i, j] = g - s * (h + g * tau)
+        m[k, l] = h + s * (g - h * tau)
+
+    for sweep in range(1, sweeps + 1):
+        if abs(a[0, 1]) + abs(a[0, 2]) + abs(a[1, 2]) == 0.0:
+            return values, vectors
+        tresh = 0.2 * (abs(a[0, 1]) + abs(a[0, 2]) + abs(a[1, 2])) / 9.0 if sweep < 4 else 0.0
+        for i in range(2):
+            for j in range(i + 1, 3):
+                g = 100.0 * abs(a[i, j])
+                if sweep > 4 and abs(values[i]) + g == abs(values[i]) and abs(values[j]) + g == abs(values[j]):
+                    a[i, j] = 0.0
+                elif abs(a[i, j]) > tresh:
+                    h = values[j] - values[i]
+                    if abs(h) + g == abs(h):
+                        t = a[i, j] / h
+                    else:
+                        theta = 0.5 * h / a[i, j]
+                        t = 1.0 / (abs(theta) + math.sqrt(1.0 + theta * theta))
+                        if theta < 0.0:
+                            t = -t
+                    c = 1.0 / math.sqrt(1.0 + t * t)
+                    s = t * c
+                    tau = s / (1.0 + c)
+                    h = t * a[i, j]
+                    z[i] -= h
+                    z[j] += h
+                    values[i] -= h
+                    values[j] += h
+                    a[i, j] = 0.0
+                    for k in range(i):
+                        rotate(a, k, i, k, j, s, tau)
+                    for k in range(i + 1, j):
+                        rotate(a, i, k, k, j, s, tau)
+                    for k in range(j + 1, 3):
+                        rotate(a, i, k, j, k, s, tau)
+                    for k in range(3):
+                        rotate(vectors, k, i, k, j, s, tau)
+        b += z
+        values = b.copy()
+        z[:] = 0.0
+    raise ScriptError("the inertia tensor's principal axes were not found in 50 Jacobi sweeps")
 
 
 @njit(cache=True)
@@ -272,9 +331,10 @@ class FixParticleTemplateMultisphere(FixParticleTemplateSphere):
                 rho = mass / volume
             else:
                 volume = mass / rho
-        moments, vectors = np.linalg.eigh(tensor)
-        if moments[0] < -1e-12 * abs(moments[-1]):
-            raise ScriptError(f"fix {self.id}: the inertia tensor has a negative principal moment ({moments[0]:.6g})")
+        moments, vectors = jacobi(tensor)
+        if moments.min() < -1e-12 * abs(moments).max():
+            raise ScriptError(f"fix {self.id}: the inertia tensor has a negative principal moment "
+                              f"({moments.min():.6g})")
         moments[moments < EPSILON * moments.max()] = 0.0
         ex, ey, ez = vectors[:, 0].copy(), vectors[:, 1].copy(), vectors[:, 2].copy()
         if np.dot(np.cross(ex, ey), ez) < 0.0:
@@ -292,6 +352,9 @@ class FixParticleTemplateMultisphere(FixParticleTemplateSphere):
         self.max_radius = float(r.max())
 
     def draw(self, rng, n):
-        """(radii, densities) of n clumps for their placement: the bounding sphere's radius and the
-        clump's density."""
-        return np.full(n, self.bound_radius), np.full(n, self.body_density)
+        """(radii, densities) of n clumps for their placement, which puts their centres of mass at
+        the points drawn (as LIGGGHTS does): the radius of the sphere about the centre of mass that
+        holds the clump in any orientation (bounding radius plus the bounding centre's distance),
+        and the clump's density."""
+        reach = self.bound_radius + float(np.linalg.norm(self.bound_offset))
+        return np.full(n, reach), np.full(n, self.body_density)

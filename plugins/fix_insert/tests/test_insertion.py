@@ -399,3 +399,28 @@ def test_pack_places_as_many_as_liggghts_with_one_try_each(make_sim, all_in):
         counts.append(sim.particles.nlocal)
     error = math.sqrt(sd ** 2 / 12 + np.var(counts, ddof=1) / len(counts))
     assert abs(np.mean(counts) - mean) <= 4 * error, counts
+
+
+def test_a_region_below_its_volume_limit_stops_the_insertion(make_sim):
+    """LIGGGHTS measures every insertion region's volume and stops below its volume_limit (default
+    1e-10: a block 1e-4 m a side is too small), whatever the target; a lower limit lets it insert."""
+    tiny = "region bc block 0.0 0.0001 0.0 0.0001 0.05 0.0501 units box{limit}\n"
+    pack = PACK.format(n=1).replace("    region bc cylinder z 0.0 0.0 0.045 0.00 0.15 units box\n", tiny)
+    pack = pack.replace("all_in yes", "all_in no")
+    sim = make_sim(dialect="liggghts")
+    sim.command(pack.format(limit=""))
+    with pytest.raises(ScriptError) as error:
+        sim.command("run 1")
+    assert str(error.value).startswith("<command>:1: run: the volume of region bc in the box, 1e-12 by 100000 "
+                                       "Monte Carlo points, is below its volume_limit 1e-10 (LIGGGHTS's check")
+    sim = make_sim(dialect="liggghts")
+    sim.command(pack.format(limit=" volume_limit 1e-13") + "run 1")
+    assert sim.particles.nlocal == 1
+
+
+def test_volume_limit_is_liggghts_s_keyword(make_sim):
+    sim = make_sim(dialect="lammps")
+    with pytest.raises(ScriptError) as error:
+        sim.command("region r block 0 1 0 1 0 1 volume_limit 1e-3")
+    assert str(error.value) == ("<command>:1: region: volume_limit is a LIGGGHTS region keyword (read as LIGGGHTS "
+                                "to use it)")

@@ -4,8 +4,8 @@ r"""Compute ``ke/multisphere``: the translational kinetic energy of the bodies o
 .. math::  E = \tfrac12 \sum_B M_B V_B^2
 
 in energy units (times ``mvv2e``), over the bodies present (its group is not used, as in
-LIGGGHTS). A global scalar, extensive. Thermo's ``ke`` sums over spheres instead, each carrying its
-body's mass (``pdps doc fix multisphere``).
+LIGGGHTS). A global scalar, extensive. Thermo's ``ke`` and ``compute ke`` give the same for a scene
+of clumps alone: they count each body once, by its centre of mass (``pdps doc fix multisphere``).
 
 Syntax::
 

@@ -10,7 +10,7 @@ spheres. Each step (LIGGGHTS's fix multisphere, the integration of LAMMPS's orig
     \mathbf{F}_B = \sum_{i \in B} \mathbf{f}_i + M\mathbf{g}, \qquad
     \boldsymbol{\tau}_B = \sum_{i \in B} (\mathbf{r}_i - \mathbf{X}_B) \times \mathbf{f}_i + \boldsymbol{\tau}_i
 
-(g: the first fix gravity's acceleration; fix gravity leaves the bodies' spheres alone, so an
+(g: the fix gravity's acceleration, one at most, as LIGGGHTS; fix gravity leaves the bodies' spheres alone, so an
 overlapping clump weighs M g, not the sum over its spheres). Velocity Verlet on the centre of mass X
 and the angular momentum L, the orientation by Richardson iteration of the quaternion from
 omega = I^-1 L, then the spheres follow, r_i = X + R d_i, v_i = V + omega x (r_i - X), each sphere's
@@ -19,10 +19,12 @@ half-kicks by 1 + CADD RHO / rho_B (rho_B the body's density), as LIGGGHTS's sou
 
 What the clump's spheres carry (LIGGGHTS's ParticleToInsertMultisphere): each sphere's mass is the
 body's mass M and its density (per-atom ``density``: the Rayleigh and Hertz times of
-``fix check/timestep/gran`` read it) the body's; so a contact's effective mass is the body's, and
-thermo's ``ke`` and ``compute erotate/sphere``, which sum over spheres, count each body once per
-sphere (LIGGGHTS's tutorials print them so). ``compute ke/multisphere`` and
-``erotate/multisphere`` give the bodies' own energies. Each body's spheres share its molecule id
+``fix check/timestep/gran`` read it) the body's; so a contact's effective mass is the body's. The
+energies count each body once, as a body: thermo's ``ke``, ``compute ke`` and ``compute erotate``
+take the bodies' translational and rotational energies for their spheres', and ``compute
+erotate/sphere`` and the per-atom energies leave the bodies' spheres out (LIGGGHTS's belongs_to
+test; recorded cases multisphere_given and multisphere_mc). ``compute ke/multisphere`` and
+``erotate/multisphere`` give the bodies' energies alone. Each body's spheres share its molecule id
 (``mol`` in a dump), and the pairs within a body are left out of the neighbor lists (LIGGGHTS's
 neigh_modify exclude molecule, which this fix performs).
 
@@ -124,8 +126,8 @@ class FixMultisphere(Fix):
 
     FIELDS = {"masstotal": 0, "density": 0, "added": 0, "xcm": 3, "vcm": 3, "fcm": 3, "torque": 3, "angmom": 3,
               "omega": 3, "inertia": 3, "ex": 3, "ey": 3, "ez": 3, "quat": 4, "fflag": 3, "tflag": 3,
-              "image_body": 3, "nrigid": 0, "clumptype": 0, "alive": 0, "sums": 6}
-    TYPES = {"image_body": np.int64, "nrigid": np.int64, "clumptype": np.int64, "alive": np.bool_,
+              "image_body": 3, "nrigid": 0, "clumptype": 0, "atomtype": 0, "alive": 0, "sums": 6}
+    TYPES = {"image_body": np.int64, "nrigid": np.int64, "clumptype": np.int64, "atomtype": np.int64, "alive": np.bool_,
              "fflag": np.bool_, "tflag": np.bool_}
 
     def __init__(self, sim, id, group, args):
@@ -160,12 +162,13 @@ class FixMultisphere(Fix):
 
     # ---- bodies from the insertion fixes --------------------------------------------------------
     def add_bodies(self, sim, xcm, vcm, omega, ex, ey, ez, inertia, mass, density, nrigid, fflag, tflag, clumptype,
-                   displace):
+                   displace, atomtype=None):
         """Take n new bodies (every rank calls it with the same bodies): centres, velocities, angular
         velocities, principal axes (n, 3) each, moments (n, 3), masses, densities, sphere counts,
-        force and torque flags (n, 3), template types, and the spheres' places in their body's
-        frame (sum of the counts, 3), body by body. Returns the per-atom values of their spheres,
-        body by body in order: {name: array} for ``add_particles``."""
+        force and torque flags (n, 3), template types, the spheres' places in their body's frame
+        (sum of the counts, 3), body by body, and the spheres' particle types (n; 0 unknown).
+        Returns the per-atom values of their spheres, body by body in order: {name: array} for
+        ``add_particles``."""
         n = len(mass)
         first = self.nbody
         quat = np.zeros((n, 4))
@@ -180,6 +183,7 @@ class FixMultisphere(Fix):
                "angmom": angmom_from_omega(omega, ex, ey, ez, inertia), "omega": omega, "inertia": inertia,
                "ex": ex, "ey": ey, "ez": ez, "quat": quat, "fflag": fflag, "tflag": tflag,
                "image_body": np.zeros((n, 3), dtype=np.int64), "nrigid": nrigid, "clumptype": clumptype,
+               "atomtype": np.zeros(n, dtype=np.int64) if atomtype is None else atomtype,
                "alive": np.ones(n, dtype=np.bool_), "sums": np.zeros((n, 6))}
         for name, values in new.items():
             dtype = self.TYPES.get(name, np.float64)
@@ -218,8 +222,11 @@ class FixMultisphere(Fix):
 
     def init_run(self, sim):
         self.reset_dt(sim)
-        gravity = next((f.extract("gvec") for f in sim.fixes.values() if f.extract("gvec") is not None), None)
-        self.gvec = np.zeros(3) if gravity is None else np.asarray(gravity, dtype=np.float64)
+        pulls = [f for f in sim.fixes.values() if f.extract("gvec") is not None]
+        if len(pulls) > 1:
+            raise ScriptError(f"fix {self.id} multisphere takes one fix gravity (as LIGGGHTS); fixes "
+                              f"{' and '.join(f.id for f in pulls)} are two")
+        self.gvec = np.zeros(3) if not pulls else np.asarray(pulls[0].extract("gvec"), dtype=np.float64)
         self.atom_arrays = None
 
     def _count_spheres(self, sim):

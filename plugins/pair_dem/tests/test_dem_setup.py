@@ -155,3 +155,27 @@ def test_a_run_split_in_two_follows_the_same_trajectory(dem):
     whole, split = collide([600]), collide([350, 250])
     for a, b in zip(whole, split):
         assert np.array_equal(a, b)
+
+
+def test_a_granular_box_with_no_particle_present_or_to_come_runs():
+    """LIGGGHTS runs an empty granular box (an insertion that placed nothing, every particle gone):
+    the pair's reach is then 0, and the skin alone sizes the bins."""
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command("atom_style granular\natom_modify map array\nboundary f f f\nunits si\n"
+                "region box block 0 0.1 0 0.1 0 0.1 units box\ncreate_box 1 box\nneighbor 0.002 bin\n"
+                "fix m1 all property/global youngsModulus peratomtype 5.e6\n"
+                "fix m2 all property/global poissonsRatio peratomtype 0.45\n"
+                "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9\n"
+                "fix m4 all property/global coefficientFriction peratomtypepair 1 0.3\n"
+                "pair_style gran model hertz tangential history\npair_coeff * *\ntimestep 1e-5\n"
+                "fix integr all nve/sphere\nrun 10\n"
+                "create_atoms 1 single 0.05 0.05 0.05 units box\nset atom 1 diameter 0.01 density 2500\n"
+                "velocity all set 0.0 0.0 -1.0 units box\nrun 10")
+    assert sim.step == 20
+    assert sim.particles.v[0, 2] == -1.0
+
+
+def test_a_zero_cutoff_without_a_skin_is_refused():
+    message = error_of(BOX + "neighbor 0.0 bin\npair_style dem/hertz\npair_coeff * * 1e6 0.3 0.5 0.5\nrun 1")
+    assert message == ("<command>:8: run: neighbor list cutoff must be a finite number >= 0, and > 0 without a skin "
+                       "(got 0, skin 0)")
