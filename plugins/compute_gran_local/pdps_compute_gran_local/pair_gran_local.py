@@ -35,6 +35,8 @@ Needs ``pair_style gran``. Example::
 """
 
 
+from typing import Literal
+
 import numpy as np
 
 from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs, param
@@ -51,14 +53,12 @@ class ComputePairGranLocal(Compute):
     usage = "compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta] [heatFlux]"
 
     class Args(StyleArgs):
-        keywords: list[str] = param([], names="column (" + "|".join(COLUMNS) + ")")
+        # LIGGGHTS's column words (its manual calls them keywords)
+        columns: list[Literal[tuple(COLUMNS)]] = param([])
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
-        for word in args.keywords:
-            if word not in COLUMNS:
-                raise ScriptError(f"unknown keyword {word} (known: {', '.join(COLUMNS)})")
-        self.keywords = [k for k in COLUMNS if k in args.keywords] if args.keywords else list(DEFAULT)
+        self.keywords = [k for k in COLUMNS if k in args.columns] if args.columns else list(DEFAULT)
 
     def local(self, sim):
         pair = sim.pair

@@ -96,7 +96,8 @@ def test_contact_atom_counts_touching_neighbors(tmp_path):
 
 @pytest.mark.parametrize("line, message", [
     ("compute c all pair/gran/local force velocity",
-     "compute: unknown keyword velocity (known: pos, vel, id, force, torque, history, contactArea, delta, heatFlux)"),
+     "compute: columns must be one of 'pos', 'vel', 'id', 'force', 'torque', 'history', 'contactArea', 'delta' or "
+     "'heatFlux' (got velocity)"),
 ])
 def test_bad_lines(pdps_cli, line, message):
     assert_refused(pdps_cli(f"atom_style granular\nregion r block 0 1 0 1 0 1\ncreate_box 1 r\n{line}\n"), 4, message)
