@@ -217,6 +217,23 @@ def clumps(templates, pack_a, pack_b, steps=6000, more="", columns=""):
             f"run {steps}\n")
 
 
+def wall_region(region, law, fill="region fill sphere 0 0 0 3.7 units box", style="atomic", more="", steps=1000):
+    """Point particles (or spheres, style sphere) of a simple-cubic lattice filling ``fill``, sheared
+    and pushed by pair soft, held by fix wall/region on ``region`` (named wall) with ``law``
+    (style epsilon sigma cutoff); ``more`` after the fix; thermo with the wall's energy and force."""
+    return (f"units lj\natom_style {style}\natom_modify map array\nboundary f f f\n"
+            "region box block -6 6 -6 6 -6 6 units box\ncreate_box 1 box\nlattice sc 1.0\n"
+            f"{region}\n{fill}\ncreate_atoms 1 region fill\n"
+            + ("set group all diameter 0.6 density 1.0\n" if style == "sphere" else "mass 1 1.0\n")
+            + "velocity all ramp vx -0.5 0.5 y -4 4 units box\nvelocity all ramp vz -0.3 0.4 x -4 4 sum yes units box\n"
+            "neighbor 0.3 bin\npair_style soft 1.0\npair_coeff * * 2.0\n"
+            f"fix wall all wall/region ball {law}\n{more}"
+            + ("fix integr all nve/sphere\n" if style == "sphere" else "fix integr all nve\n")
+            + "timestep 0.005\ncompute sum all reduce sum x y z vx vy vz\ncompute pe all pe\n"
+            "thermo_style custom step atoms ke c_pe f_wall f_wall[1] f_wall[2] f_wall[3] c_sum[1] c_sum[3] c_sum[4] "
+            f"c_sum[6]\nthermo_modify format float %20.15g norm no\nthermo 100\nrun {steps}\n")
+
+
 # three overlapping spheres; LIGGGHTS 3.8.0's Monte Carlo inertia tensor is wrong in its yz element
 # (fix_template_multisphere.cpp), so where it is computed the body does not turn (tflag off)
 TRIPLE = "nspheres 3 ntry 100000 spheres 0.0 0.0 0.0 0.005 0.008 0.0 0.0 0.004 0.0 0.007 0.002 0.0045"
@@ -478,6 +495,23 @@ CASES = {
         columns="c_sums[1] c_sums[2] c_sums[3] c_sums[4] c_sums[5] c_sums[6] c_sums[7] c_x2[1] c_x2[3] c_v2[1] c_v2[3] "
                 "c_f2[1] c_f2[3] c_q2[1] c_q2[2] c_q2[3] c_l2[1] c_l2[2] c_w2[1] c_w2[3] c_u2[1] c_u2[2] c_u2[3] c_u2[4] "
                 "c_i2[1] c_i2[2] c_i2[3] c_e2[1] c_e2[3] c_m1"), ranks=True),
+    # LAMMPS's fix wall/region: the inside of a sphere, of a block (several faces at a corner), the
+    # outside of a sphere (side out) with the wall's energy in pe, and the colloid law on spheres
+    "wall_region_lj93": Case("fix_wall", ("fix wall/region",), wall_region(
+        "region ball sphere 0 0 0 4.6 units box", "lj93 1.0 1.0 2.5"), head=False, ranks=True),
+    "wall_region_lj126_block": Case("fix_wall", ("fix wall/region",), wall_region(
+        "region ball block -4.3 4.4 -4.5 4.2 -4.6 4.5 units box", "lj126 1.5 0.8 1.6",
+        fill="region fill block -3.5 3.5 -3.5 3.5 -3.5 3.5 units box"), head=False),
+    "wall_region_harmonic_out": Case("fix_wall", ("fix wall/region", "fix_modify"), wall_region(
+        "region ball sphere 0.3 -0.2 0.1 1.6 side out units box", "harmonic 2.0 1.0 1.0",
+        fill="region fill block -4.5 4.5 -4.5 4.5 -4.5 4.5 units box\n"
+             "region notfill sphere 0.3 -0.2 0.1 2.2 side out units box\nregion fill_out intersect 2 fill notfill",
+        more="fix_modify wall energy yes\n").replace("create_atoms 1 region fill\n", "create_atoms 1 region fill_out\n"),
+        head=False),
+    # LAMMPS's colloid law in wall/region attracts a sphere near the surface (LIGGGHTS 3.8.0 and LAMMPS
+    # 22 Jul 2025 print the same rows and both stop at step 301: a sphere reaches the surface)
+    "wall_region_colloid": Case("fix_wall", ("fix wall/region",), wall_region(
+        "region ball sphere 0 0 0 4.8 units box", "colloid 2.0 1.0 1.5", style="sphere", steps=300), head=False),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

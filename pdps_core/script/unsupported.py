@@ -60,7 +60,6 @@ STYLE_ALTERNATIVES = {
     ("pair", "dpd/tstat"): "dpd (its dissipative and random parts with a = 0)",
     ("fix", "shake"): "pdps has no constraints",
     ("fix", "rattle"): "pdps has no constraints",
-    ("fix", "wall/region"): "fix wall/dem or wall/harmonic",
     ("fix", "deposit"): "create_atoms random between runs",
     ("fix", "pour"): "create_atoms random between runs",
     ("compute", "temp/com"): "compute temp (pdps removes no centre-of-mass bias)",
