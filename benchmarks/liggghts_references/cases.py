@@ -234,6 +234,20 @@ def wall_region(region, law, fill="region fill sphere 0 0 0 3.7 units box", styl
             f"c_sum[6]\nthermo_modify format float %20.15g norm no\nthermo 100\nrun {steps}\n")
 
 
+# a stream of 100 spheres every 2000 steps through a square face 0.15 m up, none touching another
+# (overlapcheck, one velocity): which spheres its tracers mark is random, how many is not
+STREAM_FACE = {"face.stl": floor_stl(0.15).replace("0.045", "0.04")}
+STREAM = (HEAD.split("region box")[0].replace("atom_modify map array", "atom_modify map array sort 0 0.0")
+          + "region box block -0.06 0.06 -0.06 0.06 0 0.2 units box\ncreate_box 1 box\nneighbor 0.001 bin\n"
+          "neigh_modify delay 0\n" + liggghts_material(5.e6, 0.45, 0.3, 0.5)
+          + "pair_style gran model hertz tangential history\npair_coeff * *\ntimestep 0.00001\n"
+          "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+          "fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0\n"
+          "fix inface all mesh/surface file face.stl type 1\n"
+          "fix ins all insert/stream seed 49979687 distributiontemplate pdd1 nparticles INF particlerate 5000 "
+          "overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02\n")
+
+
 # three overlapping spheres; LIGGGHTS 3.8.0's Monte Carlo inertia tensor is wrong in its yz element
 # (fix_template_multisphere.cpp), so where it is computed the body does not turn (tflag off)
 TRIPLE = "nspheres 3 ntry 100000 spheres 0.0 0.0 0.0 0.005 0.008 0.0 0.0 0.004 0.0 0.007 0.002 0.0045"
@@ -512,6 +526,14 @@ CASES = {
     # 22 Jul 2025 print the same rows and both stop at step 301: a sphere reaches the surface)
     "wall_region_colloid": Case("fix_wall", ("fix wall/region",), wall_region(
         "region ball sphere 0 0 0 4.8 units box", "colloid 2.0 1.0 1.5", style="sphere", steps=300), head=False),
+    # packets of 30 every 4000 steps from step 3000 (a packet waits for the spheres crossing after
+    # it), and 250 from step 2202 once (over three insertions); their counts in thermo
+    "tracer_stream": Case("fix_property", ("fix property/atom/tracer/stream",), STREAM
+        + "fix tr all property/atom/tracer/stream mark_step 3000 n_tracer 30 insert_stream ins every 4000\n"
+          "fix trb all property/atom/tracer/stream mark_step 2202 n_tracer 250 insert_stream ins every once\n"
+          "compute m all reduce sum f_tr f_trb\nfix integr all nve/sphere\n"
+          "thermo_style custom step atoms f_tr f_trb c_m[1] c_m[2]\nthermo_modify format float %20.15g\n"
+          "thermo 500\nrun 14000\n", head=False, files=STREAM_FACE, ranks=True),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

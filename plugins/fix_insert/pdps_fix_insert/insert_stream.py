@@ -137,6 +137,14 @@ class FixInsertStream(FixInsert):
         self.border = 1.0 if self.overlap_check else 0.0
         self.flight_name = f"flight_{self.id}"
         sim.particles.request(self.flight_name, width=FLIGHT_WIDTH, ghost=False)
+        self.release_watchers = []
+
+    def watch_releases(self, callback):
+        """Have ``callback(sim, rows, release_steps)`` called on every rank after each insertion, with
+        the rows of the particles this rank added (a slice; empty on the ranks that add none) and the
+        steps at which they cross the face (LIGGGHTS's tracer callback of fix insert/stream, which
+        fix property/atom/tracer/stream marks by)."""
+        self.release_watchers.append(callback)
 
     def setup(self, sim):
         largest = self.distribution.max_radius
@@ -203,6 +211,7 @@ class FixInsertStream(FixInsert):
         before = sim.particles.nlocal
         super()._insert(sim, count)
         p = sim.particles
+        steps = np.zeros(0)
         if p.nlocal > before:       # rank 0, which added them in the order they were placed
             new = slice(before, p.nlocal)
             record = p.arrays[self.flight_name]
@@ -217,6 +226,8 @@ class FixInsertStream(FixInsert):
             record[new, SPIN:SPIN + 3] = p.omega[new]
             p.v[new] = self.v_normal
             p.omega[new] = 0.0
+        for callback in self.release_watchers:
+            callback(sim, slice(before, p.nlocal), sim.step + steps.astype(np.int64))
 
     def end_of_step(self, sim):
         p = sim.particles

@@ -97,7 +97,8 @@ class ComputeNparticlesTracerRegion(Compute):
             raise ScriptError("compute nparticles/tracer/region needs region_count RID and tracer FIX_ID")
         sim.region(args.region_count)
         fix = sim.fixes.get(args.tracer)
-        if not isinstance(fix, FixPropertyAtomTracer):
+        # a tracer is a fix that keeps a marker (property/atom/tracer and its /stream)
+        if getattr(fix, "marker", None) is None:
             raise ScriptError(f"compute {id} (nparticles/tracer/region): fix {args.tracer} is not a fix "
                               "property/atom/tracer")
         self.image = None
