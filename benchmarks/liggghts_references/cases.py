@@ -534,6 +534,16 @@ CASES = {
           "compute m all reduce sum f_tr f_trb\nfix integr all nve/sphere\n"
           "thermo_style custom step atoms f_tr f_trb c_m[1] c_m[2]\nthermo_modify format float %20.15g\n"
           "thermo 500\nrun 14000\n", head=False, files=STREAM_FACE, ranks=True),
+    # LIGGGHTS's aliases of pair gran (its manual: for pair hybrid with a law per phase, which pdps's
+    # pair hybrid does not take granular styles for): the bed under each name, without tangential
+    # history (with it LIGGGHTS 3.8.0 crashes in FixContactHistory::init under either name, 12-03)
+    "bubble": Case("pair_gran", ("pair_style bubble",),
+                   HEAD.replace("pair_style gran model hertz tangential history",
+                                "pair_style bubble model hertz tangential no_history") + bed(""), head=False),
+    "gran_bubble": Case("pair_gran", ("pair_style bubble",),
+                        HEAD.replace("pair_style gran model hertz tangential history",
+                                     "pair_style gran_bubble model hooke tangential no_history")
+                        + "fix m5 all property/global characteristicVelocity scalar 1.5\n" + bed(""), head=False),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

@@ -50,6 +50,10 @@ Syntax (the words in any order after ``gran``, LIGGGHTS's)::
   ``torsionTorque`` (rolling models, default off: on, the spin about the normal is resisted too).
 - ``max_contacts N`` (pdps keyword, default 16): contacts a particle can hold at once.
 
+``pair_style bubble`` and ``pair_style gran_bubble`` are the same style under other names (LIGGGHTS's
+aliases of gran, meant for pair hybrid with a law per phase, which pdps's pair hybrid does not take
+granular styles for; recorded cases bubble and gran_bubble).
+
 Material, from ``fix property/global`` (LIGGGHTS's names; ``fix_property``): youngsModulus
 (pressure) and poissonsRatio per type (``peratomtype``), coefficientRestitution, coefficientFriction,
 coefficientRollingFriction, coefficientRollingViscousDamping and cohesionEnergyDensity per type pair
@@ -295,3 +299,19 @@ class PairGranModel(PairGran):
             raise SimulationError(f"particle {bad} has more than {capacity} contacts at step {sim.step}; "
                                   f"raise max_contacts of pair_style {self.name}")
         self.energy = 0.0
+
+
+class PairBubble(PairGranModel):
+    """LIGGGHTS's ``pair_style bubble``: the same as gran (its manual: "aliases for gran, which can
+    e.g. be used for the modelling of systems with different phases using pair hybrid")."""
+    name = "bubble"
+    usage = PairGranModel.usage.replace("pair_style gran", "pair_style bubble", 1)
+    history_name = "bubble_history"
+
+
+class PairGranBubble(PairGranModel):
+    """LIGGGHTS's ``pair_style gran_bubble``: the same as gran, under a third name for pair hybrid."""
+    name = "gran_bubble"
+    usage = PairGranModel.usage.replace("pair_style gran", "pair_style gran_bubble", 1)
+    history_name = "gran_bubble_history"
+
