@@ -186,8 +186,11 @@ def _run(args):
     except Exception as exc:  # a bug in pdps or a plugin: still one line unless --debug
         location = sim.script.error_location if sim is not None else None
         where = f" at {location[0]}:{location[1]}" if location else ""
+        # in a parallel run the other ranks may not have met it and would wait in their next
+        # collective call: the rank that did stops them all
         _fail(sim, f"ERROR: internal error{where}: {type(exc).__name__}: {exc} "
-                   "(run with --debug for the traceback)", args.debug)
+                   "(run with --debug for the traceback)", args.debug,
+              alone=sim is not None and sim.comm.nprocs > 1)
         return 1
     finally:
         if sim is not None:

@@ -443,3 +443,29 @@ def test_shell_makes_moves_and_removes_files_and_sets_the_environment(pdps_cli, 
     assert "WARNING: shell rm: No such file or directory (c/gone.txt)" in result.stdout
     assert "WARNING: shell false: the command exited with status 1" in result.stdout
     assert result.stdout.splitlines()[-1] == "end"
+
+
+def test_an_internal_error_on_one_rank_stops_every_rank(tmp_path):
+    """A bug one rank alone meets (a plugin's exception) must not leave the other ranks waiting in
+    their next collective call: the rank that met it reports it and stops them all."""
+    from pdps_core.testing import mpiexec
+    (tmp_path / "in.test").write_text(BOX + "create_particle 1 single 1 1 1\ncreate_particle 1 single 3 3 3\n"
+                                      "fix 1 all broken\nrun 3\n")
+    (tmp_path / "driver.py").write_text(
+        "import sys\n"
+        "from pdps_core.styles import Fix, registry\n"
+        "class Broken(Fix):\n"
+        "    name = 'broken'\n"
+        "    def initial_integrate(self, sim):\n"
+        "        if sim.comm.rank == 1:\n"
+        "            raise ZeroDivisionError('boom')\n"
+        "registry._local = {**registry._local, 'fix': {'broken': Broken}}\n"
+        "registry._loaded = {}\n"
+        "from pdps_core.cli import main\n"
+        "sys.exit(main(['run', 'in.test', '-log', 'none', '--no-progress']))\n")
+    # the timeout only tells a hang from an answer: the run takes seconds
+    done = subprocess.run([mpiexec(), "-n", "2", sys.executable, "driver.py"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode != 0
+    assert ("ERROR: internal error at in.test:7: ZeroDivisionError: boom (run with --debug for the traceback)"
+            in done.stderr.splitlines())

@@ -544,6 +544,15 @@ CASES = {
                         HEAD.replace("pair_style gran model hertz tangential history",
                                      "pair_style gran_bubble model hooke tangential no_history")
                         + "fix m5 all property/global characteristicVelocity scalar 1.5\n" + bed(""), head=False),
+    # residence times in the whole simulation and in two regions looked at every 20 steps (their bitmap
+    # summed too), and over the top row alone; the global means divide by all particles, as LIGGGHTS's
+    "regiontracer_time": Case("fix_property", ("fix property/atom/regiontracer/time",),
+                              bed("region low block INF INF INF INF INF 0.025 units box\n"
+                                  "region left block INF 0.0 INF INF INF INF units box\n"
+                                  "fix rt all property/atom/regiontracer/time add_region low add_region left "
+                                  "check_region_every 20\nfix rt0 top property/atom/regiontracer/time\n"
+                                  "compute s all reduce sum f_rt[1] f_rt[2] f_rt[3] f_rt[4] f_rt0\n",
+                                  "f_rt[1] f_rt[2] f_rt[3] f_rt0[1] c_s[1] c_s[2] c_s[3] c_s[4] c_s[5]"), ranks=True),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"
