@@ -20,10 +20,13 @@ Verlet for the centre of mass, the scheme is exact for constant force and torque
 Parameters:
 
 - ``disc`` (optional word): treat particles as discs, :math:`I = \tfrac12 m R^2`.
+- ``update dipole|dipole/dlm``: LAMMPS's and LIGGGHTS's turning of each particle's dipole moment
+  with its spin; refused at the line, as pdps's atom styles keep no dipole moment (LIGGGHTS 3.8.0's
+  neither: its fix nve/sphere update dipole stops with "requires atom attribute mu", run 12-03).
 
 Syntax::
 
-    fix ID GROUP nve/sphere [disc]
+    fix ID GROUP nve/sphere [update dipole|dipole/dlm] [disc]
 
 Example::
 
@@ -36,7 +39,7 @@ from typing import Literal
 
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword
 
 from ._common import require_radii, require_spheres
 
@@ -78,14 +81,18 @@ def inertia_factor(sim, disc, what):
 class FixNVESphere(Fix):
     name = "nve/sphere"
     time_integrate = True
-    usage = "fix ID GROUP nve/sphere [disc]"
+    usage = "fix ID GROUP nve/sphere [update dipole|dipole/dlm] [disc]"
     per_atom = ("omega", "torque")
 
     class Args(StyleArgs):
         inertia: Literal["disc"] | None = None
+        update: Literal["dipole", "dipole/dlm"] | None = keyword(None)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
+        if args.update is not None:
+            raise ScriptError(f"update {args.update} needs each particle's dipole moment (atom attribute mu), which "
+                              "pdps's atom styles do not keep (nor LIGGGHTS 3.8.0's)")
         require_spheres(sim, "fix nve/sphere")
         self.inertia = inertia_factor(sim, args.inertia == "disc", "fix nve/sphere")
 

@@ -87,7 +87,9 @@ def test_only_the_group_is_integrated(spheres):
 @pytest.mark.parametrize("fix, message", [
     ("nve/sphere sphere", "inertia must be one of 'disc' (got sphere)"),
     ("nve/sphere update dipole",
-     "too many arguments: unexpected 'dipole'; usage: fix ID GROUP nve/sphere [disc]"),
+     "update dipole needs each particle's dipole moment (atom attribute mu), which pdps's atom styles do not "
+     "keep (nor LIGGGHTS 3.8.0's)"),
+    ("nve/sphere update spin", "update must be one of 'dipole' or 'dipole/dlm' (got spin)"),
     ("nve/sphere disc", "fix nve/sphere disc needs a 2-d simulation (dimension 2)"),
 ])
 def test_bad_arguments_are_one_line_errors(spheres, fix, message):
