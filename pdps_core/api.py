@@ -139,7 +139,8 @@ CONTRACT = {
               "mv2d": "mass/volume to the density thermo reports"},
     "Neighbor": {"skin": "the neighbor skin (distance)",
                  "exclude_molecules": "exclude_molecules(group, kind='intra'): no pairs of the group within one molecule "
-                                      "(or between two: 'inter'), as neigh_modify exclude molecule/intra",
+                                      "(or between two: 'inter'; or within one of id > 0: 'body'), as neigh_modify "
+                                      "exclude molecule/intra",
                  "xhold": "the owned particles' positions at the last build of the lists (nlocal, 3), or None before one",
                  "radii_vary": "True in a run where a fix changes radii (Fix.varies_radius): a style keeping "
                                "its own candidate lists counts radius growth as a move"},

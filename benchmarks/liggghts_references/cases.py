@@ -190,7 +190,7 @@ def cna_scene(lattice, cells, pair_cutoff, computes, counted, more=""):
             "thermo_modify format float %20.15g norm no\nthermo 50\nrun 400\n")
 
 
-def clumps(templates, pack_a, pack_b, steps=6000, more="", columns=""):
+def clumps(templates, pack_a, pack_b, steps=6000, more="", columns="", integrate="fix integr all multisphere\n"):
     """Two clumps of spheres (the ``templates``' lines: particletemplate/multisphere pts1, pts2 and
     their distributions pdd1, pdd2) inserted once by insert/pack, each at one point (a block of
     1e-15 m a side, all LIGGGHTS's insertion regions must have volume; their centres of mass land
@@ -208,7 +208,7 @@ def clumps(templates, pack_a, pack_b, steps=6000, more="", columns=""):
             "overlapcheck yes region a particles_in_region 1\n"
             f"fix insb all insert/pack seed 32452867 {pack_b} orientation template insert_every once "
             "overlapcheck yes region b particles_in_region 1\n"
-            "fix integr all multisphere\n"
+            + integrate +
             "compute rke all erotate/sphere\ncompute er all erotate\ncompute kem all ke/multisphere\n"
             "compute erm all erotate/multisphere\n" + SUMS.splitlines()[1] + "\n"
             "fix ts all check/timestep/gran 300 0.1 0.1\n" + more +
@@ -553,6 +553,32 @@ CASES = {
                                   "check_region_every 20\nfix rt0 top property/atom/regiontracer/time\n"
                                   "compute s all reduce sum f_rt[1] f_rt[2] f_rt[3] f_rt[4] f_rt0\n",
                                   "f_rt[1] f_rt[2] f_rt[3] f_rt0[1] c_s[1] c_s[2] c_s[3] c_s[4] c_s[5]"), ranks=True),
+    # loose spheres beside the clumps, in fix multisphere's group: two of them collide head-on (the
+    # body exclusion must leave them, which belong to no body, in the lists), integrated by nve/sphere
+    "multisphere_loose": Case("fix_rigid", ("fix multisphere",), clumps(
+        "create_atoms 1 single 0.0 -0.03 0.02 units box\ncreate_atoms 1 single 0.0 -0.012 0.021 units box\n"
+        "group loose id 1 2\nset group loose diameter 0.008 density 2500\n"
+        "velocity loose set 0.0 0.4 0.0 units box\nset atom 2 vy -0.4\n"
+        f"fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 {TRIPLE} "
+        "type 1 mass 0.0025 inertia_tensor 3.1e-8 -4e-9 1e-9 2.7e-8 -2e-9 4.0e-8 use_volume\n"
+        "fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0\n",
+        "distributiontemplate pdd1 vel constant 0.2 0.0 -0.5 omega constant 0.0 5.0 3.0",
+        "distributiontemplate pdd1 vel constant -0.3 0.05 -0.8", more="fix move_loose loose nve/sphere\n"),
+        ranks=True),
+    # bodies of three spheres apart from each other that break when a sphere's centre comes below
+    # 12 mm (a tracer's marker as the trigger: LIGGGHTS 3.8.0 checks a v_ trigger against the fix of
+    # the variable's index, and stops); nve/sphere moves the released spheres
+    "multisphere_break": Case("fix_rigid", ("fix multisphere/break",), clumps(
+        "region low block INF INF INF INF INF 0.012 units box\n"
+        "fix low all property/atom/tracer region_mark low mark_step 0 marker_style heaviside check_mark_every 1\n"
+        "fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 nspheres 3 ntry 100000 "
+        "spheres 0.0 0.0 0.0 0.004 0.009 0.0 0.0 0.004 0.0 0.0085 0.001 0.004 type 1 mass 0.002 "
+        "inertia_tensor 3.1e-8 -4e-9 1e-9 2.7e-8 -2e-9 4.0e-8 use_volume\n"
+        "fix pdd1 all particledistribution/discrete 15485867 1 pts1 1.0\n",
+        "distributiontemplate pdd1 vel constant 0.2 0.0 -0.5 omega constant 0.0 5.0 3.0",
+        "distributiontemplate pdd1 vel constant -0.3 0.05 -0.8",
+        integrate="fix move all nve/sphere\nfix integr all multisphere/break trigger_name f_low trigger_threshold 0.5 "
+                  "trigger_timeStep 100\n"), ranks=True),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

@@ -130,9 +130,10 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
     last) linear bin offsets, where owned partners and ghost partners are looked for (for a half
     list the upper half without the own bin, and the rows not below in z); ``two_d``: z is not
     searched. Pairs of excluded types (``excluded_types[ti, tj]``), of excluded groups (rows of two
-    mask bits, either order) or, for rows (group bit, 1 for intra or 0 for inter) of
-    ``excluded_molecules``, pairs of the group in the same molecule (intra) or in different ones
-    (inter) are left out (neigh_modify exclude). ``moved``: the largest move of any particle since
+    mask bits, either order) or, for rows (group bit, 0 inter, 1 intra or 2 body) of
+    ``excluded_molecules``, pairs of the group in different molecules (inter), in the same one
+    (intra) or in the same one of id > 0 (body) are left out (neigh_modify exclude; fix
+    multisphere's bodies). ``moved``: the largest move of any particle since
     the ghosts were made (0 right after). Returns the number of pairs, or -1 when ``neighbors`` is
     too small.
 
@@ -224,8 +225,10 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
                     left_out = False
                     for g in range(excluded_molecules.shape[0]):
                         bit = excluded_molecules[g, 0]
+                        kind = excluded_molecules[g, 1]
+                        same = molecule[i] == molecule[j]
                         if (mask[i] & bit) and (mask[j] & bit) and \
-                                (molecule[i] == molecule[j]) == (excluded_molecules[g, 1] == 1):
+                                ((kind == 0 and not same) or (kind == 1 and same) or (kind == 2 and same and molecule[i] > 0)):
                             left_out = True
                             break
                     if left_out:

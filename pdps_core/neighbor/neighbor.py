@@ -69,6 +69,10 @@ DIRECT_PARTNERS = 1024
 NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
 
 
+# neigh_modify exclude molecule/inter, molecule/intra, and within bodies (molecule ids > 0): the codes the
+# list kernels read
+MOLECULE_EXCLUSIONS = ("inter", "intra", "body")
+
 class NeighborList:
     """CSR list: the neighbors of owned particle i are ``neighbors[offsets[i]:offsets[i+1]]``, row
     indices into the particle arrays (owned ``< nlocal``, ghosts after).
@@ -175,8 +179,11 @@ class Neighbor:
 
     def exclude_molecules(self, group, kind="intra"):
         """Leave out of the lists the pairs of ``group`` in one molecule (intra) or in two (inter), as
-        ``neigh_modify exclude molecule/intra|inter GROUP`` does (a fix whose bodies have molecule ids:
-        LIGGGHTS's fix multisphere)."""
+        ``neigh_modify exclude molecule/intra|inter GROUP`` does; or (body) in one molecule of id
+        > 0, the particles of molecule 0 belonging to none (a fix whose bodies have molecule ids:
+        LIGGGHTS's fix multisphere, whose exclusion leaves its loose spheres in the lists)."""
+        if kind not in MOLECULE_EXCLUSIONS:
+            raise ValueError(f"exclude_molecules: kind must be one of {', '.join(MOLECULE_EXCLUSIONS)} (got {kind})")
         if (group, kind) not in self.excluded_molecules:
             self.excluded_molecules.append((group, kind))
 
@@ -586,8 +593,8 @@ class Neighbor:
         self._excluded_types = table
         self._excluded_groups = np.array([[groups.bit(a), groups.bit(b)] for a, b in self.excluded_group_pairs],
                                          dtype=np.uint32).reshape(-1, 2)
-        self._excluded_molecules = np.array([[groups.bit(g), kind == "intra"] for g, kind in self.excluded_molecules],
-                                            dtype=np.uint32).reshape(-1, 2)
+        self._excluded_molecules = np.array([[groups.bit(g), MOLECULE_EXCLUSIONS.index(kind)]
+                                             for g, kind in self.excluded_molecules], dtype=np.uint32).reshape(-1, 2)
 
     def _fill(self, nlist, p, grid, skin, bins=None, moved=0.0):
         """Build ``nlist`` from particles binned on ``grid``: the lists' bins, or ``bins`` (cell,

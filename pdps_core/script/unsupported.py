@@ -85,7 +85,6 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     **{("fix", name): "pdps has no SPH" for name in ("sph/density/continuity", "sph/density/corr",
                                                      "sph/density/summation", "sph/pressure", "wall/region/sph")},
     ("pair", "sph/artVisc/tensCorr"): "pdps has no SPH",
-    ("fix", "multisphere/break"): "pdps's fix multisphere bodies do not break: fix multisphere",
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/superquadric"), ("fix", "particletemplate/superquadric"),
                           ("compute", "erotate/superquadric"))},

@@ -26,7 +26,8 @@ erotate/sphere`` and the per-atom energies leave the bodies' spheres out (LIGGGH
 test; recorded cases multisphere_given and multisphere_mc). ``compute ke/multisphere`` and
 ``erotate/multisphere`` give the bodies' energies alone. Each body's spheres share its molecule id
 (``mol`` in a dump), and the pairs within a body are left out of the neighbor lists (LIGGGHTS's
-neigh_modify exclude molecule, which this fix performs).
+neigh_modify exclude molecule, which this fix performs; like LIGGGHTS's it leaves the loose spheres,
+of no body, in the lists: recorded case multisphere_loose).
 
 A body that loses some of its spheres (a boundary of style f or m, ``delete_atoms``) stops the run
 with a line naming it: LIGGGHTS removes the whole body, pdps cannot yet. A body that leaves whole is
@@ -151,7 +152,7 @@ class FixMultisphere(Fix):
         p.request(self.displace_name, width=3, ghost=False)
         p.request("molecule")
         p.request("density")
-        sim.neighbor.exclude_molecules(group, "intra")
+        sim.neighbor.exclude_molecules(group, "body")
         self.nbody = 0
         for name, width in self.FIELDS.items():
             dtype = self.TYPES.get(name, np.float64)
