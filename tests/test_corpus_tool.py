@@ -96,17 +96,17 @@ def test_the_manual_items_and_what_pdps_makes_of_them():
     spec.loader.exec_module(manual)
     pages = ["fix insert/pack command :h3\n[Syntax:]\nkeyword = {region} or {sideways} :l\n"
              "  {region} value = region-ID\n[Examples:]\nfix insert/pack command :h3\n",
-             "run command :h3\n", "gran model hertz model :h3\n", "fix multisphere/break command :h3\n",
+             "run command :h3\n", "gran model hertz model :h3\n", "fix multicontact/halfspace command :h3\n",
              "fix imaginary/style command :h3\n", "fix couple/cfd command :h3\n",
              "Syntax: fix ID group command :h3\n"]
     assert manual.items(pages) == [("fix", "couple/cfd"), ("fix", "imaginary/style"), ("fix", "insert/pack"),
-                                   ("fix", "multisphere/break"), ("gran", "model hertz"), ("run", None)]
+                                   ("fix", "multicontact/halfspace"), ("gran", "model hertz"), ("run", None)]
     text = manual.table(pages)
     # insert/pack reads region, not the made-up sideways: known and checked, not fully working
     assert "| `fix insert/pack` | style | keywords: 1 of 2, not sideways | plugins/fix_insert" in text
     assert "| `run` | command |" in text
     assert "| `gran model hertz` | style |" in text and "| `fix imaginary/style` | unknown |" in text
-    assert "| `fix multisphere/break` | refused: pdps's fix multisphere bodies do not break" in text
+    assert "| `fix multicontact/halfspace` | refused: pdps has no multicontact surface model" in text
     # run and gran model hertz have recorded LIGGGHTS cases (the tables' checks, and CHECKED)
     assert "| `run` | command |  | plugins/fix_granular/tests/data/liggghts.cases.json (bed" in text
     assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown; "

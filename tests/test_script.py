@@ -395,8 +395,8 @@ class TestInclude:
      "create_atoms random between runs (docs/lammps.md)"),
     ("replicate 2 2 2", "replicate: replicate is a LAMMPS command pdps does not support; "
      "instead: create a larger box and fill it (create_atoms) (docs/lammps.md)"),
-    ("fix 2 all multisphere/break", "fix: fix style multisphere/break is a LIGGGHTS style pdps does not have; "
-     "instead: pdps's fix multisphere bodies do not break: fix multisphere (docs/liggghts.md)"),
+    ("fix 2 all multicontact/halfspace", "fix: fix style multicontact/halfspace is a LIGGGHTS style pdps does not "
+     "have; instead: pdps has no multicontact surface model (docs/liggghts.md)"),
     ("compute 3 all no/such/style", "compute: unknown compute style no/such/style"),
     ("thermo_stlye custom step", "thermo_stlye: unknown command thermo_stlye; did you mean thermo_style?"),
 ])

@@ -5,7 +5,8 @@ fix multisphere (LIGGGHTS's compute rigid, whose three names these are).
 bodies were inserted: a local vector for a property of one value, a local array (one column per
 component) for the others; read by ``compute reduce`` and ``dump local``. ``multisphere/single id
 N``: the property of body N (ids from 1 in insertion order) as a global scalar or vector (zeros
-while the body does not exist, as LIGGGHTS's sums over processes give).
+while the body does not exist or after it broke, as LIGGGHTS's sums over processes give; a broken
+body's id_multisphere is -1 in the local data, as LIGGGHTS resets it).
 
 Properties (LIGGGHTS's names of the fix multisphere's per-body data; the manual's ``id`` and
 ``type`` are read as ``id_multisphere`` and ``atomtype``, which LIGGGHTS 3.8.0 itself refuses as
@@ -92,7 +93,8 @@ class ComputeMultisphere(Compute):
         """(bodies,) or (bodies, k) floats: every body's property."""
         fix = self.multisphere(sim)
         if self.property == "id_multisphere":
-            return np.arange(1, fix.nbody + 1, dtype=np.float64)
+            # a broken body (multisphere/break) has lost its id, as LIGGGHTS's tagReset makes it -1
+            return np.where(fix.nrigid > 0, np.arange(1, fix.nbody + 1), -1).astype(np.float64)
         return np.asarray(getattr(fix, PROPERTIES[self.property]), dtype=np.float64)
 
     def local(self, sim):
@@ -122,7 +124,7 @@ class ComputeMultisphereSingle(ComputeMultisphere):
 
     def _row(self, sim):
         values = self.values(sim)
-        if self.body > len(values):
+        if self.body > len(values) or self.multisphere(sim).nrigid[self.body - 1] == 0:
             return np.zeros(self.width)
         return np.atleast_1d(values[self.body - 1]).astype(np.float64)
 

@@ -243,7 +243,12 @@ class FixMultisphere(Fix):
             raise ScriptError(f"fix {self.id}: multisphere body {b + 1} lost {self.nrigid[b] - counts[b]} of its "
                               f"{self.nrigid[b]} spheres at step {sim.step}; LIGGGHTS removes the whole body, pdps "
                               "cannot yet (keep the bodies inside the box, or let them leave through a periodic face)")
-        gone = self.alive & (counts == 0)
+        # a broken body (fix multisphere/break: no spheres left, nrigid 0) stays until its centre
+        # leaves the box, as LIGGGHTS keeps it
+        lo, hi = np.asarray(sim.box.lo), np.asarray(sim.box.hi)
+        fixed = ~np.asarray(sim.box.periodic, dtype=bool)
+        outside = ((self.xcm < lo) | (self.xcm >= hi))[:, fixed].any(axis=1)
+        gone = self.alive & (counts == 0) & ((self.nrigid > 0) | outside)
         if gone.any():
             self.alive[gone] = False
             self.vcm[gone] = self.angmom[gone] = self.omega[gone] = 0.0

@@ -6,7 +6,12 @@ after ``trigger_timeStep``, a body of two or more spheres one of whose spheres h
 at or above ``trigger_threshold`` breaks: all its spheres are released at once, where they are and
 as they move (no fragments), each taking the mass of its own volume at the body's density,
 :math:`m = \tfrac43\pi r^3\rho_B`, and no longer belonging to a body (molecule id 0: their pairs
-enter the neighbor lists at the next build, as in LIGGGHTS). A released sphere moves only if an
+enter the neighbor lists at the next build, as in LIGGGHTS). The body itself stays, as LIGGGHTS
+keeps it, until its centre leaves the box through a fixed face: it goes on moving under its weight
+alone, and its energies count in ke/multisphere, erotate/multisphere and thermo's ke beside those of
+its released spheres (LIGGGHTS 3.8.0 prints them so: recorded case multisphere_break). LIGGGHTS 3.8.0
+also gives the released spheres and the body no weight for the one step after the break (measured,
+thermo every step); pdps gives it. A released sphere moves only if an
 integrator acts on it: LIGGGHTS's manual asks for a ``fix nve/sphere`` on the spheres, whose motion of
 a body's spheres the fix multisphere, defined after it, overrides (measured in LIGGGHTS 3.8.0: a
 ``fix nve/sphere all`` before ``fix multisphere`` changes no printed digit; in pdps neither).
@@ -88,7 +93,6 @@ class FixMultisphereBreak(FixMultisphere):
         p.rmass[released] = 4.0 / 3.0 * math.pi * radius ** 3 * p.arrays["density"][released]
         body[released] = -1
         p.arrays["molecule"][released] = 0
-        self.alive[broken] = False
+        # the body stays, spheres gone, until its centre leaves the box (fix multisphere's count)
         self.nrigid[broken] = 0
-        self.vcm[broken] = self.angmom[broken] = self.omega[broken] = 0.0
         self.atom_arrays = None

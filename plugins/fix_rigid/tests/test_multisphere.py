@@ -192,3 +192,62 @@ def test_two_fixes_gravity_are_refused_with_fix_multisphere():
     with pytest.raises(ScriptError) as error:
         clump(more="fix g1 all gravity 9.81 vector 0.0 0.0 -1.0\nfix g2 all gravity 1.0 vector 1.0 0.0 0.0\n")
     assert "fix integr multisphere takes one fix gravity (as LIGGGHTS); fixes g1 and g2 are two" in str(error.value)
+
+
+def breaking_clump(trigger_lines, fix_args):
+    x, y, z = 0.0, 0.0, 0.05
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(HEAD.format(boundary="f f f") + TEMPLATE.format(flags="")
+                + f"region at block {x} {x + 1e-15} {y} {y + 1e-15} {z} {z + 1e-15} units box volume_limit 1e-50\n"
+                "fix ins all insert/pack seed 32452843 distributiontemplate pdd vel constant 0.0 0.0 -1.0 "
+                "omega constant 0.0 0.0 30.0 orientation template insert_every once overlapcheck yes region at "
+                "particles_in_region 1\n" + trigger_lines
+                + f"fix move all nve/sphere\nfix integr all multisphere/break {fix_args}\n"
+                "compute kem all ke/multisphere\ncompute one all multisphere/single id 1 property vcm\nrun 1\n")
+    return sim
+
+
+def test_a_body_breaks_when_a_sphere_s_trigger_reaches_the_threshold():
+    sim = breaking_clump("region low block INF INF INF INF INF 0.03 units box\n"
+                         "fix low all property/atom/tracer region_mark low mark_step 0 marker_style heaviside "
+                         "check_mark_every 1\n", "trigger_name f_low trigger_threshold 0.5")
+    fix = sim.fixes["integr"]
+    p = sim.particles
+    sim.command("run 1000")                  # the clump falls 1 cm: still whole
+    assert fix.nrigid[0] == 3
+    assert (p.rmass[:3] == MASS).all()
+    sim.command("run 1300")                  # its lowest sphere is below 3 cm by now
+    assert fix.nrigid[0] == 0
+    order = np.argsort(p.tag[:3])
+    radius, density = p.radius[:3][order], p.arrays["density"][:3][order]
+    # each released sphere weighs its own volume at the body's density
+    np.testing.assert_allclose(p.rmass[:3][order], 4.0 / 3.0 * np.pi * radius ** 3 * density, rtol=1e-14)
+    assert (p.arrays["molecule"][:3] == 0).all()
+    # the spheres fly on as released (no force acts: their spin and velocities stay)
+    v = p.v[:3].copy()
+    sim.command("run 10")
+    np.testing.assert_allclose(p.v[:3], v, rtol=0, atol=1e-15)
+    # the broken body has lost its id: its single compute reads zeros, as LIGGGHTS's
+    np.testing.assert_array_equal(sim.computes["one"].vector(sim), [0.0, 0.0, 0.0])
+
+
+def test_no_body_breaks_before_trigger_timestep():
+    sim = breaking_clump("variable one atom 1.0\n", "trigger_name v_one trigger_threshold 0.5 trigger_timeStep 50")
+    sim.command("run 49")
+    assert sim.step == 50
+    assert sim.fixes["integr"].nrigid[0] == 3       # at step 50, not after it
+    sim.command("run 1")
+    assert sim.fixes["integr"].nrigid[0] == 0       # at the end of step 51
+
+
+@pytest.mark.parametrize("fix_args, message", [
+    ("trigger_threshold 1", "No setting made for 'trigger_name'. You must make this setting! (as LIGGGHTS)"),
+    ("trigger_name c_x", "trigger_name must be f_NAME, f_NAME[k] or v_NAME (got c_x)"),
+    ("trigger_name f_a trigger_fixName a", "give trigger_name or the deprecated trigger_fixName, not both (as LIGGGHTS)"),
+])
+def test_bad_multisphere_break_lines(fix_args, message):
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(HEAD.format(boundary="f f f"))
+    with pytest.raises(ScriptError) as error:
+        sim.command(f"fix integr all multisphere/break {fix_args}")
+    assert str(error.value) == f"<command>:1: fix: {message}"
