@@ -284,7 +284,7 @@ CASES = {
                                           more="fix m5 all property/global coefficientRollingFriction "
                                                "peratomtypepair 2 0.1 0.2 0.2 0.3\n")),
     "capillary_easo_trio": Case("pair_gran", ("gran cohesion easo/capillary/viscous",),
-                                wet_trio("cohesion easo/capillary/viscous", viscosity=0.05)),
+                                wet_trio("cohesion easo/capillary/viscous", viscosity=0.05, content=0.0123456789)),
     "capillary_easo_moved": Case("pair_gran", ("gran cohesion easo/capillary/viscous",),
                                  wet_pair_moved("cohesion easo/capillary/viscous")),
     "capillary_washino": Case("pair_gran", ("gran cohesion washino/capillary/viscous", "pair_style gran"),

@@ -336,3 +336,15 @@ def test_fix_wall_gran_refuses_a_liquid_bridge(pdps_cli):  # noqa: F811
     assert_refused(pdps_cli(script), len(script.splitlines()),
                    "fix: cohesion easo/capillary/viscous is a liquid bridge between particles: pair gran only "
                    "(LIGGGHTS's manual: not part of fix wall/gran)")
+
+
+def test_a_liggghts_script_reads_the_liquid_as_f_surfaceLiquidContent():
+    """The per-atom liquid is LIGGGHTS's f_surfaceLiquidContent in computes and atom-style
+    variables, made at the first run (a run 0) with surfaceLiquidContentInitial as LIGGGHTS prints
+    it (%e: seven significant digits)."""
+    sim = wet_pair("cohesion easo/capillary/viscous", 0.01, liquid=liquid_lines(content=0.0123456789))
+    sim.command("run 0\nset atom 2 property/atom surfaceLiquidContent 0.02\n"
+                "compute lc all reduce sum f_surfaceLiquidContent\nvariable vl atom f_surfaceLiquidContent*radius^3\n"
+                "compute lv all reduce sum v_vl\nvariable lc equal c_lc\nvariable lv equal c_lv")
+    assert sim.variables.value("lc") == pytest.approx(0.01234568 + 0.02, rel=1e-15)
+    assert sim.variables.value("lv") == pytest.approx(0.01234568 * R1 ** 3 + 0.02 * R2 ** 3, rel=1e-14)

@@ -171,7 +171,7 @@ class PairGranModel(PairGran):
     def open_liquid(self):
         """The per-atom surface liquid of a wet model (LIGGGHTS's fix property/atom made by its
         transportequation/scalar liquidtransfer): ``surfaceLiquidContent`` (new particles start at
-        surfaceLiquidContentInitial as LIGGGHTS prints it, %e: six digits), ``liquidFlux`` and
+        surfaceLiquidContentInitial as LIGGGHTS prints it, %e: seven significant digits), ``liquidFlux`` and
         ``liquidSource`` (content/time); made once, kept by later runs."""
         p = self.sim.particles
         initial = float(f"{self.material.property('surfaceLiquidContentInitial'):e}")

@@ -42,7 +42,7 @@ radii, and the other models' histories are zeroed there (LIGGGHTS's surfacesClos
 
 Liquid. When the bridge breaks, its volume goes back to both particles by their solid volumes
 (``liquid_bridge``; the liquid volume :math:`\sum c V_s` is conserved). Each particle's content
-starts at surfaceLiquidContentInitial (as LIGGGHTS prints it, six digits) and is kept in the
+starts at surfaceLiquidContentInitial (as LIGGGHTS prints it, %e: seven significant digits) and is kept in the
 per-atom ``surfaceLiquidContent`` (``f_surfaceLiquidContent`` or ``f_surfaceLiquidContent[0]`` in a
 LIGGGHTS script), with ``liquidFlux`` (content/time, this step's) and ``liquidSource``
 (content/time, 0 unless ``set property/atom liquidSource`` gives one).
