@@ -246,6 +246,57 @@ STREAM = (HEAD.split("region box")[0].replace("atom_modify map array", "atom_mod
           "fix inface all mesh/surface file face.stl type 1\n"
           "fix ins all insert/stream seed 49979687 distributiontemplate pdd1 nparticles INF particlerate 5000 "
           "overlapcheck yes vel constant 0. 0. -1.0 insertion_face inface extrude_length 0.02\n")
+def liquid(cohesion, content=0.01, tension=0.3, viscosity=0.01, max_ratio=1.1, more=""):
+    """The material of a liquid bridge (LIGGGHTS's capillary cohesion models) and pair gran with
+    ``cohesion``, replacing the head's dry pair style."""
+    return (f"fix l1 all property/global surfaceLiquidContentInitial scalar {content}\n"
+            f"fix l2 all property/global surfaceTension scalar {tension}\n"
+            f"fix l3 all property/global fluidViscosity scalar {viscosity}\n"
+            "fix l4 all property/global contactAngle peratomtype 30 40\n"
+            "fix l5 all property/global minSeparationDistanceRatio scalar 1.01\n"
+            f"fix l6 all property/global maxSeparationDistanceRatio scalar {max_ratio}\n" + more
+            + f"pair_style gran model hertz tangential history {cohesion}\npair_coeff * *\n")
+
+
+# the liquid's columns: its content summed, and its volume / (4/3 pi) (conserved); LIGGGHTS makes the
+# content's fix property/atom at the first run, so the variables are 0 until a run 0 made it; then
+# type 2 is made wetter (with equal contents washino's bridges give each sphere back what it lent)
+LIQUID_COLUMNS = "v_lc v_lv"
+LIQUID_SUMS = ("set type 2 property/atom surfaceLiquidContent 0.02\n"
+               "compute lc all reduce sum f_surfaceLiquidContent\ncompute rad all property/atom radius\n"
+               "variable vl atom f_surfaceLiquidContent*c_rad*c_rad*c_rad\ncompute lv all reduce sum v_vl\n"
+               "variable lc equal c_lc\nvariable lv equal c_lv\n")
+
+
+def wet_bed(cohesion, steps=4500, **material):
+    """The bed with a liquid bridge of ``cohesion`` between its spheres (the floor stays dry)."""
+    return (liquid(cohesion, **material) + BED + SUMS + "variable lc equal 0.0\nvariable lv equal 0.0\n"
+            "fix integr all nve/sphere\n" + thermo(LIQUID_COLUMNS) + "run 0\n" + LIQUID_SUMS + f"run {steps}\n")
+
+
+def wet_trio(cohesion, **material):
+    """Three wet spheres near the x axis: 1 and 2 (types 1 and 2) touching and pulled apart, their
+    bridge stretching until it breaks; 3 (type 1) coming at 1 from the side, sliding and spinning it
+    up; thermo every 100 steps."""
+    return (liquid(cohesion, **material) + "create_atoms 1 single 0.0 0.0 0.05 units box\n"
+            "create_atoms 2 single 0.0109 0.0 0.05 units box\ncreate_atoms 1 single -0.0107 0.003 0.05 units box\n"
+            "set type 1 diameter 0.01 density 2500\nset type 2 diameter 0.012 density 1500\n"
+            "set atom 1 vx -0.03 vy 0.01\nset atom 2 vx 0.05 vz -0.02\nset atom 3 vx 0.08 vy -0.03\n"
+            + SUMS + "variable lc equal 0.0\nvariable lv equal 0.0\nfix integr all nve/sphere\n"
+            + thermo(LIQUID_COLUMNS).replace("thermo 300", "thermo 100") + "run 0\n" + LIQUID_SUMS + "run 4000\n")
+
+
+
+def wet_pair_moved(cohesion):
+    """Two wet spheres touching at rest, 50 steps, then moved beyond their bridge's rupture distance
+    between runs and held there: the bridge breaks in the next run's setup force computation, whose
+    liquid flux LIGGGHTS's transport equation drops (the contents stay)."""
+    return (liquid(cohesion) + "create_atoms 1 single 0.0 0.0 0.05 units box\n"
+            "create_atoms 2 single 0.0109 0.0 0.05 units box\n"
+            "set type 1 diameter 0.01 density 2500\nset type 2 diameter 0.012 density 1500\n"
+            + SUMS + "variable lc equal 0.0\nvariable lv equal 0.0\nfix integr all nve/sphere\n"
+            + thermo(LIQUID_COLUMNS).replace("thermo 300", "thermo 10") + "run 0\n" + LIQUID_SUMS + "run 50\n"
+            "set atom 2 x 0.0125\nvelocity all set 0.0 0.0 0.0 units box\nrun 50\n")
 
 
 # three overlapping spheres; LIGGGHTS 3.8.0's Monte Carlo inertia tensor is wrong in its yz element
@@ -254,6 +305,26 @@ TRIPLE = "nspheres 3 ntry 100000 spheres 0.0 0.0 0.0 0.005 0.008 0.0 0.0 0.004 0
 
 
 CASES = {
+    "capillary_easo": Case("pair_gran", ("gran cohesion easo/capillary/viscous", "pair_style gran"),
+                           wet_bed("cohesion easo/capillary/viscous"), ranks=True),
+    "capillary_easo_reduce": Case("pair_gran", ("gran cohesion easo/capillary/viscous",),
+                                  wet_bed("cohesion easo/capillary/viscous rolling_friction epsd2 tangential_reduce on",
+                                          tension=0.5, max_ratio=1.05,
+                                          more="fix m5 all property/global coefficientRollingFriction "
+                                               "peratomtypepair 2 0.1 0.2 0.2 0.3\n")),
+    "capillary_easo_trio": Case("pair_gran", ("gran cohesion easo/capillary/viscous",),
+                                wet_trio("cohesion easo/capillary/viscous", viscosity=0.05, content=0.0123456789)),
+    "capillary_easo_moved": Case("pair_gran", ("gran cohesion easo/capillary/viscous",),
+                                 wet_pair_moved("cohesion easo/capillary/viscous")),
+    "capillary_washino": Case("pair_gran", ("gran cohesion washino/capillary/viscous", "pair_style gran"),
+                              wet_bed("cohesion washino/capillary/viscous")),
+    "capillary_washino_limited": Case(
+        "pair_gran", ("gran cohesion washino/capillary/viscous",),
+        wet_bed("cohesion washino/capillary/viscous limitLiquidContent on modifyLbVolume on tangential_reduce on",
+                more="fix l7 all property/global maxLiquidContent peratomtype 0.008 0.02\n"
+                     "fix l8 all property/global lbVolumeFraction scalar 0.1\n")),
+    "capillary_washino_trio": Case("pair_gran", ("gran cohesion washino/capillary/viscous",),
+                                   wet_trio("cohesion washino/capillary/viscous", viscosity=0.05)),
     "bed": Case("fix_granular", ("fix", "compute", "fix nve/sphere", "fix wall/gran", "gran model hertz",
                                  "gran tangential history", "compute erotate/sphere", "compute reduce", "velocity",
                                  "lattice", "create_atoms",

@@ -46,6 +46,10 @@ class FormulaContext:
             if method is None:
                 raise ScriptError(f"{prefix}_{ident}: {style.kind} {ident} ({style.name}) has no global vector")
             return np.asarray(method(sim), dtype=np.float64).ravel()
+        if self.per_atom and prefix == "f" and len(indices) <= 1 and self._liggghts_property(ident):
+            from ..styles import PeratomReference
+            word = f"f_{ident}" + (f"[{indices[0]}]" if indices else "")
+            return PeratomReference(sim, word, word).values(sim)
         if self.per_atom and (not indices or len(indices) == 1 and self._has_peratom(prefix, ident)):
             return self._peratom(prefix, ident, indices)
         if prefix == "c":
@@ -58,6 +62,13 @@ class FormulaContext:
         if style is None:
             raise ScriptError(f"{'compute' if prefix == 'c' else 'fix'} {ident} is not defined")
         return style
+
+    def _liggghts_property(self, ident):
+        """In the LIGGGHTS dialect, f_NAME of no fix names a per-atom property a style made
+        (f_surfaceLiquidContent of a liquid bridge, f_Temp of fix heat/gran), as in dumps."""
+        sim = self.sim
+        return (sim.dialect.name == "liggghts" and ident not in sim.fixes and ident not in sim.analyzes
+                and sim.particles.has(ident))
 
     def _has_peratom(self, prefix, ident):
         return callable(getattr(self._style(prefix, ident), "peratom", None))

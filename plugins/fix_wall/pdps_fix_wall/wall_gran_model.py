@@ -217,6 +217,9 @@ class FixWallGranModel(Fix):
             raise ScriptError("fix wall/gran needs atom_style granular or sphere (per-particle radius, mass "
                               "and rotation)")
         self.contact_model = args.contact_model()
+        if self.contact_model.wet:
+            raise ScriptError(f"cohesion {args.cohesion} is a liquid bridge between particles: pair gran only "
+                              "(LIGGGHTS's manual: not part of fix wall/gran)")
         self.law = WallLaw(self.contact_model)
         # a wall contact keeps the law's history, then its last normal (wall_slots hands it on)
         width = self.contact_model.history_width + 3

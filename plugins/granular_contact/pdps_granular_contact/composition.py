@@ -35,6 +35,18 @@ pdps_core's pair loops are) the loops a pair style and a wall call:
 
 Only the parts a script names are called: a contact without rolling friction has no rolling call
 and no rolling history.
+
+Two extension points serve a liquid bridge (LIGGGHTS's capillary cohesion models):
+
+- a sub-model with a ``close`` function acts on bodies apart, as long as they are closer than its
+  ``reach`` times :math:`R_i + R_j` (LIGGGHTS's surfacesClose and contact distance factor): the
+  pair loop calls it for those pairs, one at a time (``close_pair``), the other sub-models'
+  histories forgotten there (LIGGGHTS's tangential and rolling models zero theirs), and the neighbor
+  cutoff covers the reach (``ContactModel.reach``, known after ``bind``). A contact made apart
+  (a bridge that forms before touching) gets history slots when its history is not all zero;
+- a ``wet`` sub-model reads the surface liquid of both particles and moves it (contact_state's
+  ``LIQUID_*``): the loops take the per-atom ``surfaceLiquidContent`` (written back: a model may cap
+  it) and ``liquidFlux`` (added to), which the pair style owns and integrates.
 """
 
 import importlib
@@ -43,6 +55,7 @@ from typing import ClassVar
 
 import numpy as np
 from numba import types
+from numba.core.registry import CPUDispatcher
 
 from pdps_core.api import ScriptError, SubModel, generated_module, registry
 
@@ -67,6 +80,25 @@ def coefficient_columns(ntypes, tables):
     return out
 
 
+def source_modules(*functions):
+    """The modules of the numba functions given and of those they call, to the last: what the
+    generated module's cache key reads (a helper in another module changes the law too)."""
+    found, visited, todo = [], set(), [f for f in functions if f is not None]
+    while todo:
+        function = getattr(todo.pop(), "py_func", None)
+        if function is None or function in visited:
+            continue
+        visited.add(function)
+        module = importlib.import_module(function.__module__)
+        if module not in found:
+            found.append(module)
+        for name in function.__code__.co_names:
+            value = function.__globals__.get(name)
+            if isinstance(value, CPUDispatcher):
+                todo.append(value)
+    return found
+
+
 class ContactSubModel(SubModel):
     """One part of a granular contact. A subclass sets ``kind`` (``"gran.cohesion"``), ``name``
     (the script word), ``compute`` (a module-level numba function ``(c, k, hist, h)``, module
@@ -84,6 +116,11 @@ class ContactSubModel(SubModel):
     # spells it, a check of one value, the check in words), e.g. {"hamakerConstant": ("per_type_pair",
     # "peratomtypepair", lambda a: a > 0, "> 0")}
     properties: ClassVar[dict] = {}
+    # a numba function (c, k, hist, h) for bodies apart but within ``reach`` (LIGGGHTS's surfacesClose:
+    # a liquid bridge stretched beyond touching; module docstring)
+    close: ClassVar = None
+    # reads the particles' surface liquid and may move it (contact_state's LIQUID_*)
+    wet: ClassVar[bool] = False
 
     def __init__(self, settings):
         """``settings``: the host style's model settings given in the script, by word
@@ -108,6 +145,11 @@ class ContactSubModel(SubModel):
         """This model's coefficients of every type pair: an array (ntypes + 1, ntypes + 1, n), row
         and column 0 unused; ``material`` reads LIGGGHTS's properties (``Material``)."""
         return material.columns()
+
+    def reach(self, material):
+        """How far bodies apart are handed to ``close``: a factor on R_i + R_j (LIGGGHTS's contact
+        distance factor), asked after ``coefficients``."""
+        return 1.0
 
 
 class ContactModel:
@@ -149,6 +191,9 @@ class ContactModel:
             self.history_offsets.append(offset)
             offset += model.history_width
         self.history_width = offset
+        self.closing = any(model.close is not None for model in self.sub_models)
+        self.wet = any(model.wet for model in self.sub_models)
+        self.reach = 1.0        # set by bind() where a model acts on bodies apart
 
     def part(self, part):
         """The sub-model of ``part``, or None."""
@@ -206,13 +251,15 @@ class ContactModel:
                  f"HIST_SIZE = {max(self.history_width, 1)}"]
         keyed = [inspect.getsource(module).encode() for module in (contact_loop, contact_state, contact_block,
                                                                    contact_slots)]
-        calls, column, beyond = [], 0, ""
+        calls, column, beyond, seen = [], 0, "", set()
         for k, (model, offset) in enumerate(zip(self.sub_models, self.history_offsets)):
             function = getattr(model.compute, "py_func", model.compute)
-            module = importlib.import_module(function.__module__)
             lines.append(f"from {function.__module__} import {function.__name__} as compute_{k}")
             lines.append(f"part_{k} = inline_part(compute_{k})")
-            keyed.append(inspect.getsource(module).encode())
+            for module in source_modules(model.compute, model.close):
+                if module not in seen:
+                    seen.add(module)
+                    keyed.append(inspect.getsource(module).encode())
             ncoeff = self.column_counts[k]
             coeff = "(" + "".join(f"coeff[ti, tj, {column + q}], " for q in range(max(ncoeff, 1))) + ")"
             if ncoeff == 0:
@@ -239,6 +286,9 @@ class ContactModel:
                   "def contact_one(c, coeff, ti, tj, hist):",
                   '    """contact(), compiled once for the scalar loops."""',
                   "    contact(c, coeff, ti, tj, hist)"]
+        if self.closing:
+            lines += self._apart_source()
+            beyond += contact_loop.CLOSE
         with_history = self.history_width > 0
         # values the same seen from either body (a rolling displacement, a twist angle) go to the
         # partner as they are, the others negated
@@ -248,18 +298,24 @@ class ContactModel:
             contact_loop.STORE_VALUE.format(h=h, sign="" if h in same else "-") for h in range(self.history_width)))
         heat = self.part("heat") is not None
         width = self.history_width
+        wet = self.wet
+        if self.closing:
+            lines.append(contact_loop.CLOSE_PAIR.format(store=contact_loop.CLOSE_STORE.format(values="".join(
+                contact_loop.CLOSE_STORE_VALUE.format(h=h, sign="" if h in same else "-")
+                for h in range(self.history_width))) if with_history else ""))
         lines.append(contact_loop.BLOCK_CONTACTS.format(
-            heat_fill=contact_loop.HEAT_FILL_BLOCK if heat else "",
-            heat_out=contact_loop.HEAT_OUT_BLOCK if heat else "",
+            heat_fill=(contact_loop.HEAT_FILL_BLOCK if heat else "") + (contact_loop.LIQUID_FILL_BLOCK if wet else ""),
+            heat_out=(contact_loop.HEAT_OUT_BLOCK if heat else "") + (contact_loop.LIQUID_OUT_BLOCK if wet else ""),
             hist_in="".join(f"    hist[{h}] = block_in[(HIST_IN + {h}) * BLOCK + m]\n" for h in range(width)),
             hist_out="".join(f"    block_out[(HIST_OUT + {h}) * BLOCK + m] = hist[{h}]\n" for h in range(width))))
         lines.append(contact_loop.SCATTER_CONTACTS.format(
-            store=store if with_history else "", heat_apply=contact_loop.HEAT_APPLY if heat else "",
+            store=store if with_history else "",
+            heat_apply=(contact_loop.HEAT_APPLY if heat else "") + (contact_loop.LIQUID_APPLY if wet else ""),
             log=contact_loop.LOG if self.log else ""))
         load = contact_loop.LOAD_CACHED if self.slot_cache else contact_loop.LOAD
         blocks = dict(load=load if with_history else contact_loop.NO_SLOTS,
                       heat_zero=contact_loop.HEAT_ZERO if heat else "",
-                      heat_gather=contact_loop.HEAT_GATHER if heat else "",
+                      heat_gather=(contact_loop.HEAT_GATHER if heat else "") + (contact_loop.LIQUID_GATHER if wet else ""),
                       hist_gather=contact_loop.HIST_GATHER if with_history else "", beyond=beyond)
         lines.append(contact_loop.PAIR_FORCES.format(**blocks, flush_full=contact_loop.flush(16),
                                                      flush_last=contact_loop.flush(4)))
@@ -269,9 +325,34 @@ class ContactModel:
         lines.append(contact_loop.PAIR_FORCES_TOUCHING.format(
             **{name: text if name == "heat_zero" else "".join(line[4:] + "\n" for line in text.splitlines())
                for name, text in blocks.items()}, flush_full=contact_loop.flush(12), flush_last=contact_loop.flush(4)))
-        lines.append(contact_loop.PAIR_CONTACTS)
+        lines.append(contact_loop.PAIR_CONTACTS.format(liquid_fill=contact_loop.LIQUID_FILL_ONE if wet else ""))
         lines.append(contact_loop.WALL_FORCES)
         return "\n".join(lines) + "\n", b"".join(keyed)
+
+    def _apart_source(self):
+        """``apart``: the sub-models of bodies apart within reach, each model's ``close`` where it has one,
+        the history of the others forgotten (LIGGGHTS's surfacesClose: its tangential and rolling
+        models zero theirs), the lever arms the radii (its cohesion models' surfacesClose)."""
+        lines = [f"REACH = {sum(self.column_counts)}", "", "", '@njit(inline="always", _nrt=False, error_model="numpy")',
+                 "def apart(c, coeff, ti, tj, hist):",
+                 '    """Bodies apart, closer than the reach: what each sub-model does then."""',
+                 *[f"    c[{slot}] = 0.0" for slot in range(contact_state.FIRST_OUTPUT, contact_state.SIZE)],
+                 "    c[ARM_I] = c[RADIUS_I]", "    c[ARM_J] = c[RADIUS_J]", "    slide(c)"]
+        column, imports = 0, []
+        for k, (model, offset) in enumerate(zip(self.sub_models, self.history_offsets)):
+            ncoeff = self.column_counts[k]
+            coeff = "(" + "".join(f"coeff[ti, tj, {column + q}], " for q in range(max(ncoeff, 1))) + ")"
+            if ncoeff == 0:
+                coeff = "(0.0,)"
+            column += ncoeff
+            if model.close is not None:
+                function = getattr(model.close, "py_func", model.close)
+                imports += [f"from {function.__module__} import {function.__name__} as close_{k}",
+                            f"close_part_{k} = inline_part(close_{k})"]
+                lines.append(f"    close_part_{k}(c, {coeff}, hist, {offset})")
+            else:
+                lines += [f"    hist[{offset + d}] = 0.0" for d in range(model.history_width)]
+        return imports + [""] + lines
 
     column_counts = None      # coefficient columns of each sub-model, once bind() has read them
 
@@ -289,6 +370,11 @@ class ContactModel:
                 raise ScriptError(f"{model.kind} {model.name}: coefficients() gave shape {table.shape}, not "
                                   f"({n}, {n}, columns)")
         self.column_counts = tuple(table.shape[2] for table in tables)
+        if self.closing:
+            # the last column: how far (a factor on R_i + R_j) bodies apart reach the models' close
+            self.reach = max([1.0] + [float(model.reach(material)) for model in self.sub_models
+                                      if model.close is not None])
+            tables.append(np.full((n, n, 1), self.reach))
         table = np.concatenate(tables, axis=2) if tables else np.zeros((n, n, 0))
         return np.ascontiguousarray(table if table.shape[2] else np.zeros((n, n, 1)))
 

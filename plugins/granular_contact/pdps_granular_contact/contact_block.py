@@ -42,8 +42,9 @@ from numba.extending import intrinsic
 from numba.np.arrayobj import make_array, populate_array
 
 # what a generated module takes from here
-__all__ = ["BLOCK", "HIST_IN", "HIST_OUT", "IN_TEMPERATURE_I", "IN_TEMPERATURE_J", "OUT_HEAT", "ROW_I", "ROW_J", "SLOT_I",
-           "SLOT_J", "TYPE_I", "TYPE_J", "inline_part", "stack_array"]
+__all__ = ["BLOCK", "HIST_IN", "HIST_OUT", "IN_LIQUID_I", "IN_LIQUID_J", "IN_TEMPERATURE_I", "IN_TEMPERATURE_J",
+           "OUT_HEAT", "OUT_LIQUID_FLUX_I", "OUT_LIQUID_FLUX_J", "OUT_LIQUID_I", "OUT_LIQUID_J", "ROW_I", "ROW_J",
+           "SLOT_I", "SLOT_J", "TYPE_I", "TYPE_J", "inline_part", "stack_array"]
 
 # contacts a block holds: its columns (about 30 of 8 bytes) stay within the first-level cache
 BLOCK = 128
@@ -52,10 +53,11 @@ BLOCK = 128
 # then its history (HIST_IN + h)
 (IN_DX, IN_DY, IN_DZ, IN_RADIUS_I, IN_RADIUS_J, IN_MASS_I, IN_MASS_J, IN_FROZEN_I, IN_FROZEN_J,
  IN_VX, IN_VY, IN_VZ, IN_WIX, IN_WIY, IN_WIZ, IN_WJX, IN_WJY, IN_WJZ, IN_TEMPERATURE_I, IN_TEMPERATURE_J,
- HIST_IN) = range(21)
-# the columns of block_out: the force on i, the torques on i and on j, the heat into i, then the
-# contact's history after this step (HIST_OUT + h)
-(OUT_FX, OUT_FY, OUT_FZ, OUT_TIX, OUT_TIY, OUT_TIZ, OUT_TJX, OUT_TJY, OUT_TJZ, OUT_HEAT, HIST_OUT) = range(11)
+ IN_LIQUID_I, IN_LIQUID_J, HIST_IN) = range(23)
+# the columns of block_out: the force on i, the torques on i and on j, the heat into i, the liquid
+# contents and fluxes of a wet model, then the contact's history after this step (HIST_OUT + h)
+(OUT_FX, OUT_FY, OUT_FZ, OUT_TIX, OUT_TIY, OUT_TIZ, OUT_TJX, OUT_TJY, OUT_TJZ, OUT_HEAT,
+ OUT_LIQUID_I, OUT_LIQUID_J, OUT_LIQUID_FLUX_I, OUT_LIQUID_FLUX_J, HIST_OUT) = range(15)
 # the columns of block_index: rows i and j, their slots in the contact history, their types
 (ROW_I, ROW_J, SLOT_I, SLOT_J, TYPE_I, TYPE_J, INDEX_COLUMNS) = range(7)
 

@@ -14,7 +14,7 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import find_slot
+from pdps_core.api import find_slot, open_slot
 
 from .contact_models import contact_mass
 from .contact_block import (BLOCK, HIST_IN, IN_DX, IN_DY, IN_DZ, IN_FROZEN_I, IN_FROZEN_J, IN_MASS_I, IN_MASS_J,
@@ -23,21 +23,24 @@ from .contact_block import (BLOCK, HIST_IN, IN_DX, IN_DY, IN_DZ, IN_FROZEN_I, IN
                             OUT_TIZ, OUT_TJX, OUT_TJY, OUT_TJZ, ROW_I, ROW_J, SLOT_I, SLOT_J, TYPE_I, TYPE_J, sqrt)
 from .contact_models import contact_mass
 from .contact_slots import load_history, wall_slots
-from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, HEAT, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ,
-                            M_EFF, NX, NY, NZ, R, RADIUS_I, RADIUS_J, R_EFF, UPDATE, VX, VY, VZ, WALL, WIX, WIY, WIZ,
-                            WJX, WJY, WJZ, ARM_I, ARM_J, TEMPERATURE_I, TEMPERATURE_J)
+from .contact_state import (DELTA, DIMENSION, DT, FN, FTX, FTY, FTZ, HEAT, LIQUID_FLUX_I, LIQUID_FLUX_J, LIQUID_I,
+                            LIQUID_J, MASS_I, MASS_J, MRX, MRY, MRZ, MTX, MTY, MTZ, M_EFF, NX, NY, NZ, R, RADIUS_I,
+                            RADIUS_J, R_EFF, UPDATE, VX, VY, VZ, WALL, WIX, WIY, WIZ, WJX, WJY, WJZ, ARM_I, ARM_J,
+                            TEMPERATURE_I, TEMPERATURE_J)
 
-__all__ = ["math", "find_slot", "load_history", "wall_slots", "set_run", "fill_pair", "fill_wall", "apply_wall",
-           "tangential_torque", "gather_pair", "gather_temperatures", "fill_block", "block_result", "apply_block",
-           "apply_block_heat", "log_block"]
+__all__ = ["math", "find_slot", "open_slot", "load_history", "wall_slots", "set_run", "fill_pair", "fill_wall",
+           "apply_wall", "tangential_torque", "gather_pair", "gather_temperatures", "fill_block", "block_result",
+           "apply_block", "apply_block_heat", "log_block", "apply_close"]
 
 
 @njit(cache=True)
 def set_run(c, dt, update, dimension):
-    """What every contact of this force computation shares."""
+    """What every contact of this force computation shares (and no liquid, where none is read)."""
     c[DT] = dt
     c[UPDATE] = 1.0 if update else 0.0
     c[DIMENSION] = dimension
+    c[LIQUID_I] = 0.0
+    c[LIQUID_J] = 0.0
 
 
 @njit(cache=True)
@@ -253,6 +256,39 @@ def apply_block_heat(block_in, block_out, m, heat_flux, directional, i, j):
 
 
 @njit(inline="always")
+def apply_close(c, f, torque, liquid, liquid_flux, i, j):
+    """A pair apart within reach (close_pair): its force F_n n + F_t on i and the negative on j,
+    the torques -a n x F_t - M on i and -a n x F_t + M on j (the radii as arms), and where the
+    model is wet the liquid contents and fluxes of both."""
+    cx = c[NY] * c[FTZ] - c[NZ] * c[FTY]
+    cy = c[NZ] * c[FTX] - c[NX] * c[FTZ]
+    cz = c[NX] * c[FTY] - c[NY] * c[FTX]
+    fx = c[FN] * c[NX] + c[FTX]
+    fy = c[FN] * c[NY] + c[FTY]
+    fz = c[FN] * c[NZ] + c[FTZ]
+    f[i, 0] += fx
+    f[i, 1] += fy
+    f[i, 2] += fz
+    f[j, 0] -= fx
+    f[j, 1] -= fy
+    f[j, 2] -= fz
+    mx = c[MRX] + c[MTX]
+    my = c[MRY] + c[MTY]
+    mz = c[MRZ] + c[MTZ]
+    torque[i, 0] -= c[ARM_I] * cx + mx
+    torque[i, 1] -= c[ARM_I] * cy + my
+    torque[i, 2] -= c[ARM_I] * cz + mz
+    torque[j, 0] += mx - c[ARM_J] * cx
+    torque[j, 1] += my - c[ARM_J] * cy
+    torque[j, 2] += mz - c[ARM_J] * cz
+    if len(liquid) > 0:
+        liquid[i] = c[LIQUID_I]
+        liquid[j] = c[LIQUID_J]
+        liquid_flux[i] += c[LIQUID_FLUX_I]
+        liquid_flux[j] += c[LIQUID_FLUX_J]
+
+
+@njit(inline="always")
 def log_block(block_out, m, log_pairs, log_force, logged, i, j):
     """Contact m (rows i, j) and its force on i, after ``logged[0]`` (a ContactTable style's log)."""
     row = logged[0]
@@ -325,7 +361,7 @@ SCATTER_CONTACTS = '''
 
 @njit(cache=True, _nrt=False)
 def scatter_contacts(n, block_in, block_out, block_index, f, torque, history, owner, update, heat_flux, directional,
-                     log_pairs, log_force, logged):
+                     liquid, liquid_flux, log_pairs, log_force, logged):
     for m in range(n):
         i = block_index[ROW_I * BLOCK + m]
         j = block_index[ROW_J * BLOCK + m]
@@ -349,6 +385,28 @@ HEAT_APPLY = """        apply_block_heat(block_in, block_out, m, heat_flux, dire
 LOG = """        log_block(block_out, m, log_pairs, log_force, logged, i, j)
 """
 
+# a wet model's liquid (contact_state LIQUID_*): the particles' contents gathered, given to the
+# contact, its contents (a cap may lower them) written back and its fluxes added
+LIQUID_GATHER = """            block_in[IN_LIQUID_I * BLOCK + b] = liquid[i]
+            block_in[IN_LIQUID_J * BLOCK + b] = liquid[j]
+"""
+LIQUID_FILL_BLOCK = """    c[LIQUID_I] = block_in[IN_LIQUID_I * BLOCK + m]
+    c[LIQUID_J] = block_in[IN_LIQUID_J * BLOCK + m]
+"""
+LIQUID_OUT_BLOCK = """    block_out[OUT_LIQUID_I * BLOCK + m] = c[LIQUID_I]
+    block_out[OUT_LIQUID_J * BLOCK + m] = c[LIQUID_J]
+    block_out[OUT_LIQUID_FLUX_I * BLOCK + m] = c[LIQUID_FLUX_I]
+    block_out[OUT_LIQUID_FLUX_J * BLOCK + m] = c[LIQUID_FLUX_J]
+"""
+LIQUID_APPLY = """        liquid[i] = block_out[OUT_LIQUID_I * BLOCK + m]
+        liquid[j] = block_out[OUT_LIQUID_J * BLOCK + m]
+        liquid_flux[i] += block_out[OUT_LIQUID_FLUX_I * BLOCK + m]
+        liquid_flux[j] += block_out[OUT_LIQUID_FLUX_J * BLOCK + m]
+"""
+LIQUID_FILL_ONE = """            c[LIQUID_I] = liquid[i]
+            c[LIQUID_J] = liquid[j]
+"""
+
 # the heat conduction of a contact, where a heat model is composed (fix heat/gran's): the fluxes of
 # owned and ghost rows are zeroed first, ghosts' summed onto their owners by the fix afterwards
 HEAT_ZERO = """    for i in range(len(heat_flux)):
@@ -368,7 +426,7 @@ NO_SLOTS = """            slot_i = -1
 # a full block computed and added; the calls after the pair loop, for the last, partial one
 FLUSH = """block_contacts(b, block_in, block_out, block_index, coeff, dt, update, dimension)
 scatter_contacts(b, block_in, block_out, block_index, f, torque, history, owner, update, heat_flux, directional,
-                 log_pairs, log_force, logged)"""
+                 liquid, liquid_flux, log_pairs, log_force, logged)"""
 
 
 def flush(indent):
@@ -383,14 +441,16 @@ PAIR_FORCES = '''
 @njit(cache=True, _nrt=False)
 def pair_forces(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, offsets, neighbors,
                 nlocal, coeff, freeze_bit, dt, update, dimension, partner, history, touched, touching, ntouching,
-                entry_slots, block_in, block_out, block_index, temp, heat_flux, directional, log_pairs, log_force,
-                logged):
+                entry_slots, block_in, block_out, block_index, temp, heat_flux, directional, liquid, liquid_flux,
+                log_pairs, log_force, logged):
     """Contact forces and torques of a half list; returns -1, or the tag of a particle whose contact
     slots are full. The list entries of the contacts, in list order, go into ``touching`` and their
     number into ``ntouching[0]`` (the end-of-step sweep of the history reads them); where the
     composition logs its contacts, (i, j) and the force on i into ``log_pairs``, ``log_force``
     after ``logged[0]``; where it keeps the slots of each list entry's contact (``entry_slots``, -1
-    for none yet), they are read there instead of searched for. ``block_*``: ContactModel.block()."""
+    for none yet), they are read there instead of searched for; where a wet model is composed, the
+    particles' surface liquid contents ``liquid`` (written back) and fluxes ``liquid_flux`` (added
+    to). ``block_*``: ContactModel.block()."""
 {heat_zero}    hist = stack_array(HIST_SIZE)
     m = 0
     b = 0
@@ -427,6 +487,62 @@ BEYOND = """            if rsq >= radsum * radsum:
                 radsum += lasting(coeff, type_[i], type_[j], radi, radius[j], partner, i, tag[j])
 """
 
+# spheres apart but within the reach of a sub-model's ``close`` (a liquid bridge): one at a time
+CLOSE = """            if rsq >= radsum * radsum:
+                far = coeff[type_[i], type_[j], REACH] * radsum
+                if rsq < far * far:
+                    full = close_pair(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, coeff,
+                                      freeze_bit, dt, update, dimension, partner, history, touched, liquid,
+                                      liquid_flux, i, j, delx, dely, delz, rsq)
+                    if full >= 0:
+                        return full
+                continue
+"""
+
+# The sub-models of a pair apart within reach (``apart``, generated), its history found where it
+# has one and kept where it is not all zero (a contact made apart opens its slots then); the
+# touched flags keep a held contact past the next build of the list
+CLOSE_PAIR = '''
+
+@njit(cache=True, _nrt=False)
+def close_pair(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, coeff, freeze_bit, dt,
+               update, dimension, partner, history, touched, liquid, liquid_flux, i, j, delx, dely, delz, rsq):
+    """Spheres i and j apart, closer than the reach; returns -1, or the tag of a particle whose contact
+    slots are full."""
+    c = stack_array(SIZE)
+    hist = stack_array(HIST_SIZE)
+    set_run(c, dt, update, dimension)
+    fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
+    if len(liquid) > 0:
+        c[LIQUID_I] = liquid[i]
+        c[LIQUID_J] = liquid[j]
+    jo = owner[j] if owner[j] >= 0 else j
+    slot_i = find_slot(partner, i, tag[j]) if HISTORY > 0 else -1
+    slot_j = find_slot(partner, jo, tag[i]) if slot_i >= 0 else -1
+    for d in range(HISTORY):
+        hist[d] = history[i, HISTORY * slot_i + d] if slot_i >= 0 else 0.0
+    apart(c, coeff, type_[i], type_[j], hist)
+    held = False
+    for d in range(HISTORY):
+        if hist[d] != 0.0:
+            held = True
+    if held and update and slot_i < 0:
+        slot_i = open_slot(partner, history, i, tag[j], HISTORY)
+        slot_j = open_slot(partner, history, jo, tag[i], HISTORY)
+        if slot_i < 0 or slot_j < 0:
+            return tag[i] if slot_i < 0 else tag[j]
+{store}    apply_close(c, f, torque, liquid, liquid_flux, i, j)
+    return -1
+'''
+CLOSE_STORE = """    if slot_i >= 0 and slot_j >= 0:
+        if update and held:
+            touched[i, slot_i] = True
+            touched[jo, slot_j] = True
+{values}"""
+CLOSE_STORE_VALUE = """        history[i, HISTORY * slot_i + {h}] = hist[{h}]
+        history[jo, HISTORY * slot_j + {h}] = {sign}hist[{h}]
+"""
+
 # The same over the touching entries of a list found first (``touching``: their entries, ``rows``:
 # each entry's particle i): one flat, branch-free pass finds the few listed pairs that touch, which
 # a loop per particle pays for with a mispredicted exit at most particles (gran_box)
@@ -435,8 +551,8 @@ PAIR_FORCES_TOUCHING = '''
 @njit(cache=True, _nrt=False)
 def pair_forces_touching(x, v, omega, radius, rmass, body_mass, type_, mask, f, torque, tag, owner, rows,
                          neighbors, touching, ntouching, coeff, freeze_bit, dt, update, dimension, partner, history,
-                         touched, block_in, block_out, block_index, temp, heat_flux, directional, log_pairs,
-                         log_force, logged):
+                         touched, block_in, block_out, block_index, temp, heat_flux, directional, liquid,
+                         liquid_flux, log_pairs, log_force, logged):
     """pair_forces over the list entries ``touching[:ntouching]`` (touching_pairs found them)."""
 {heat_zero}    hist = stack_array(HIST_SIZE)
     b = 0
@@ -483,10 +599,12 @@ PAIR_CONTACTS = '''
 
 @njit(cache=True, _nrt=False)
 def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offsets, neighbors, nlocal, coeff,
-                  freeze_bit, dt, dimension, partner, history, groupbit, rows, force_out, tangential_out, hist_out):
+                  freeze_bit, dt, dimension, partner, history, groupbit, liquid, rows, force_out, tangential_out,
+                  hist_out):
     """Every contact of the half list whose two particles are in ``groupbit``, evaluated as the
-    setup force computation does (nothing stored): returns how many; their rows (i, j), forces on
-    i, tangential parts and history values (as i sees them) into the ``*_out`` arrays."""
+    setup force computation does (nothing stored; ``liquid``: the surface liquid contents, for a
+    wet model): returns how many; their rows (i, j), forces on i, tangential parts and history
+    values (as i sees them) into the ``*_out`` arrays."""
     c = stack_array(SIZE)
     hist = stack_array(HIST_SIZE)
     set_run(c, dt, False, dimension)
@@ -511,7 +629,7 @@ def pair_contacts(x, v, omega, radius, rmass, body_mass, type_, mask, tag, offse
                 hist[d] = history[i, width * slot + d] if slot >= 0 else 0.0
                 hist_out[count, d] = hist[d]
             fill_pair(c, x, v, omega, radius, rmass, body_mass, mask, freeze_bit, i, j, delx, dely, delz, rsq)
-            contact_one(c, coeff, type_[i], type_[j], hist)
+{liquid_fill}            contact_one(c, coeff, type_[i], type_[j], hist)
             rows[count, 0] = i
             rows[count, 1] = j
             force_out[count, 0] = c[FN] * c[NX] + c[FTX]

@@ -22,6 +22,8 @@ from numba import njit
 HERTZ_DAMPING = 2.0 * math.sqrt(5.0 / 6.0)
 # body_mass where no fix provides it
 NO_BODY_MASS = np.zeros(0)
+# the surface liquid contents and fluxes a contact loop takes where no wet model is composed
+NO_LIQUID = (np.zeros(0), np.zeros(0))
 
 
 @njit(cache=True)

@@ -25,6 +25,10 @@ Filled by the loop, before any sub-model:
   computation, which reads the history and changes nothing: LAMMPS's and LIGGGHTS's
   ``shearupdate``); ``DIMENSION`` 2 or 3; ``TEMPERATURE_I``, ``TEMPERATURE_J`` where heat is
   conducted
+- ``LIQUID_I``, ``LIQUID_J``: the surface liquid content of each particle (per-atom
+  ``surfaceLiquidContent``) where a wet sub-model (``ContactSubModel.wet``: a liquid bridge) is
+  composed; such a model may lower them (LIGGGHTS's limitLiquidContent), and the loop writes them
+  back to the particles
 
 Written by the sub-models, in the order the loop calls them (surface, normal, damping, cohesion,
 tangential, rolling, twisting, heat):
@@ -36,27 +40,37 @@ tangential, rolling, twisting, heat):
   the tangential Coulomb limit and the rolling cap read; ``KN``, ``KT``, ``GAMMA_N``, ``GAMMA_T``
   the stiffnesses and dampings of this overlap (LIGGGHTS's normal models give the tangential ones)
 - tangential: ``FTX``..``FTZ`` the tangential force; its torque on each body is the loop's
-  (:math:`-a\,\mathbf{n}\times\mathbf{F}_t` with the arm a of the body)
+  (:math:`-a\,\mathbf{n}\times\mathbf{F}_t` with the arm a of the body). A cohesion model may put
+  a tangential force of its own there (a liquid bridge's viscous drag), which LIGGGHTS's tangential
+  models add theirs to and their Coulomb limit does not see
 - rolling, twisting: ``MRX``..``MRZ``, ``MTX``..``MTZ``: torques :math:`\mathbf{M}`, i gets
   :math:`-\mathbf{M}` and j :math:`+\mathbf{M}`
 - heat: ``HEAT`` the heat flow into i (power)
+- ``LIQUID_FLUX_I``, ``LIQUID_FLUX_J``: the rate at which a wet model moves surface liquid content
+  into i and into j (content/time: a bridge that breaks shares its liquid out); the loop adds them
+  to the per-atom ``liquidFlux``
 - ``CONTACT_RADIUS``: the radius a of the contact area, where a normal model defines one (LAMMPS's
   pair granular: :math:`\sqrt{\delta R^*}`, JKR's own), which its damping, tangential, rolling,
   twisting and heat models read
 
 Every slot a sub-model writes is zeroed by the loop before the first sub-model of each contact, so
 a kind no model fills contributes nothing.
+
+Bodies apart but within a sub-model's reach (``ContactSubModel.close``: LIGGGHTS's surfacesClose,
+a liquid bridge stretched beyond touching) are filled the same way, ``DELTA`` < 0, with the radii
+as lever arms (``ARM_I``, ``ARM_J``) and ``VN``, ``VT`` from them (``slide``).
 """
 
 from numba import njit
 
 (R, DELTA, RADIUS_I, RADIUS_J, MASS_I, MASS_J, R_EFF, M_EFF, WALL,
  NX, NY, NZ, VX, VY, VZ, WIX, WIY, WIZ, WJX, WJY, WJZ, DT, UPDATE, DIMENSION, TEMPERATURE_I, TEMPERATURE_J,
+ LIQUID_I, LIQUID_J,
  ARM_I, ARM_J, VN, VTX, VTY, VTZ, WRX, WRY, WRZ,
  FN, FN_LIMIT, KN, KT, GAMMA_N, GAMMA_T,
- FTX, FTY, FTZ, MRX, MRY, MRZ, MTX, MTY, MTZ, HEAT, CONTACT_RADIUS) = range(52)
+ FTX, FTY, FTZ, MRX, MRY, MRZ, MTX, MTY, MTZ, HEAT, CONTACT_RADIUS, LIQUID_FLUX_I, LIQUID_FLUX_J) = range(56)
 
-SIZE = 52
+SIZE = 56
 # the slots the sub-models write, zeroed before each contact
 FIRST_OUTPUT = ARM_I
 

@@ -252,7 +252,7 @@ class GranularPair(Pair):
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", contact_models.NO_BODY_MASS),
             a["type"], a["mask"], a["f"], a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal,
             self._law, np.uint32(0), sim.dt, update, sim.dimension, partner, values, touched, self._touching,
-            self._ntouching, NO_SLOTS, *self._block, *NO_HEAT, *self.contact_log(nlist))
+            self._ntouching, NO_SLOTS, *self._block, *NO_HEAT, *contact_models.NO_LIQUID, *self.contact_log(nlist))
 
     def law_tables(self):
         """The contact law's per-type-pair tables by the names its sub-models read."""

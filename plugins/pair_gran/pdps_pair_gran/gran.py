@@ -47,9 +47,9 @@ from pdps_granular_contact.contact_loop import touching_pairs
 from pdps_granular_contact.contact_slots import PAIR_SHEAR, HeldRows, Mirrors, pack_slots
 
 DEFAULT_CONTACTS = 16
-# the composed loop's arrays for heat and a contact log, which the classic styles have not
-NO_HEAT_OR_LOG = (np.zeros(0), np.zeros(0), np.zeros((0, 3)), np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)),
-                  np.zeros(1, dtype=np.int64))
+# the composed loop's arrays for heat, liquid and a contact log, which the classic styles have not
+NO_HEAT_OR_LOG = (np.zeros(0), np.zeros(0), np.zeros((0, 3)), *contact_models.NO_LIQUID, np.zeros((0, 2), dtype=np.int64),
+                  np.zeros((0, 3)), np.zeros(1, dtype=np.int64))
 
 
 class GranArgs(lammps_classic.ClassicLaw):

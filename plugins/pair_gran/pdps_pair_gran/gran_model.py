@@ -18,7 +18,8 @@ The force on i is :math:`F_n\mathbf{n} + \mathbf{F}_t` (:math:`-` that on j), th
 :math:`-(R_{i,j} - \delta/2)\,\mathbf{n}\times\mathbf{F}_t`, and the rolling torque
 :math:`\mp\mathbf{M}_r`. The law is composed of sub-models (``pdps_granular_contact.composition``),
 one per model word, which walls share: LIGGGHTS's (hertz, hooke, hertz/stiffness, hooke/stiffness,
-hooke/hysteresis; history, no_history; cdt, epsd, epsd2, epsd3; sjkr, sjkr2; surface default) are
+hooke/hysteresis; history, no_history; cdt, epsd, epsd2, epsd3; sjkr, sjkr2, easo/capillary/viscous,
+washino/capillary/viscous; surface default) are
 ``pdps_granular_contact.gran``, each module with its formulas (``pdps doc gran.normal hertz``), and
 a distribution may add others (entry-point groups ``pdps.gran.normal``, ``pdps.gran.tangential``,
 ``pdps.gran.rolling``, ``pdps.gran.cohesion``, ``pdps.gran.surface``; plugins/contact_vdw). Each
@@ -29,7 +30,8 @@ Syntax (the words in any order after ``gran``, LIGGGHTS's)::
 
     pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis
                tangential history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3]
-               [cohesion off|sjkr|sjkr2] [surface default] [SETTING on|off ...] [max_contacts N]
+               [cohesion off|sjkr|sjkr2|easo/capillary/viscous|washino/capillary/viscous]
+               [surface default] [SETTING on|off ...] [max_contacts N]
     pair_coeff * *
 
 - ``model``: normal model; hertz needs youngsModulus, poissonsRatio, coefficientRestitution;
@@ -41,13 +43,19 @@ Syntax (the words in any order after ``gran``, LIGGGHTS's)::
   friction capped at Coulomb's limit); both read coefficientFriction.
 - ``rolling_friction`` (default off): reads coefficientRollingFriction; epsd and epsd3 also
   coefficientRollingViscousDamping, epsd3 rollingStiffness.
-- ``cohesion`` (default off): reads cohesionEnergyDensity (energy/volume).
+- ``cohesion`` (default off): sjkr and sjkr2 read cohesionEnergyDensity (energy/volume); the
+  liquid bridges easo/capillary/viscous and washino/capillary/viscous (``pdps doc gran.cohesion
+  NAME``) their liquid's properties, act on spheres apart too (to the rupture distance; the
+  neighbor cutoff grows to 1.1 maxSeparationDistanceRatio (R_i + R_j)) and move the per-atom
+  ``surfaceLiquidContent``, which pair gran advances after each step's contacts (LIGGGHTS's
+  transport equation).
 - settings, each read by the models that declare it (LIGGGHTS refuses one no model of the line
   reads, and so does pdps): ``tangential_damping`` (default on), ``limitForce`` (default off: a
   contact may pull at its end, which gives the restitution coefficient exactly; on: :math:`F_n \ge
   0` before cohesion), ``absolute_damping`` (hooke/stiffness, default off), ``tangential_reduce``
   (sjkr, sjkr2, default off: on, the cohesion lowers the Coulomb limit and the rolling cap),
-  ``torsionTorque`` (rolling models, default off: on, the spin about the normal is resisted too).
+  ``torsionTorque`` (rolling models, default off: on, the spin about the normal is resisted too),
+  ``limitLiquidContent`` and ``modifyLbVolume`` (washino/capillary/viscous, default off).
 - ``max_contacts N`` (pdps keyword, default 16): contacts a particle can hold at once.
 
 ``pair_style bubble`` and ``pair_style gran_bubble`` are the same style under other names (LIGGGHTS's
@@ -95,20 +103,24 @@ from pdps_core.api import HeatTransport, Pair, ScriptError, SimulationError, key
 from pdps_granular_contact import contact_models
 from pdps_granular_contact.material import Material, find_property
 from pdps_granular_contact.gran.words import GranModelArgs
-from pdps_granular_contact.contact_models import NO_BODY_MASS
+from pdps_granular_contact.contact_models import NO_BODY_MASS, NO_LIQUID
 from pdps_granular_contact.contact_slots import HeldRows, Mirrors, pack_slots
 
 from .gran import DEFAULT_CONTACTS, PairGran
 
 NO_HEAT = (np.zeros(0), np.zeros(0), np.zeros((0, 3)))
+# a wet model's per-atom liquid (LIGGGHTS's names): content (content units, LIGGGHTS's "% of the
+# solid volume"), its rate of change from the bridges, and a source the script may set
+LIQUID, LIQUID_FLUX, LIQUID_SOURCE = "surfaceLiquidContent", "liquidFlux", "liquidSource"
 NO_LOG = (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)), np.zeros(1, dtype=np.int64))
 
 
 class PairGranModel(PairGran):
     name = "gran"
     usage = ("pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis tangential "
-             "history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2] "
-             "[surface default] [tangential_damping|limitForce|absolute_damping|tangential_reduce|torsionTorque on|off] "
+             "history|no_history [rolling_friction off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2|"
+             "easo/capillary/viscous|washino/capillary/viscous] [surface default] [tangential_damping|limitForce|"
+             "absolute_damping|tangential_reduce|torsionTorque|limitLiquidContent|modifyLbVolume on|off] "
              "[max_contacts N]")
     coeff_usage = "(no coefficients: pair_coeff * *; the material comes from fix property/global)"
     history_name = "gran_model_history"
@@ -129,6 +141,9 @@ class PairGranModel(PairGran):
         self._block = self.contact_model.block()
         self._no_history = (np.full((1, 2), -1, dtype=np.int64), np.zeros((1, 2)), 2)
         self.contact_coeff = self.kernels = None
+        if self.contact_model.wet:
+            # a liquid bridge reads the liquid of ghost partners too
+            self.ghost_fields = (*PairGran.ghost_fields, LIQUID)
 
     def init(self, ntypes):
         sim = self.sim
@@ -140,6 +155,8 @@ class PairGranModel(PairGran):
         heat = self.heat_fix(sim)
         self.contact_model = self.args.contact_model(None if heat is None else heat.contact_heat_model(sim))
         self.contact_coeff = self.contact_model.bind(self.material)
+        if self.contact_model.wet:
+            self.open_liquid()
         self.kernels = self.contact_model.pair_kernels()
         if self.history_width > 0:
             self.open_history()
@@ -149,6 +166,39 @@ class PairGranModel(PairGran):
         cutoffs = Pair.init(self, ntypes)
         self.warn_coarse_timestep(sim)
         return cutoffs
+
+    def init_one(self, i, j):
+        """The largest sum of radii the types meet with (gran's rule), times the reach of a model acting
+        on spheres apart (LIGGGHTS's contact distance factor: a liquid bridge's rupture distance)."""
+        return self.contact_model.reach * PairGran.init_one(self, i, j)
+
+    def open_liquid(self):
+        """The per-atom surface liquid of a wet model (LIGGGHTS's fix property/atom made by its
+        transportequation/scalar liquidtransfer): ``surfaceLiquidContent`` (new particles start at
+        surfaceLiquidContentInitial as LIGGGHTS prints it, %e: seven significant digits), ``liquidFlux`` and
+        ``liquidSource`` (content/time); made once, kept by later runs."""
+        p = self.sim.particles
+        initial = float(f"{self.material.property('surfaceLiquidContentInitial'):e}")
+        p.request(LIQUID, default=initial)
+        p.request(LIQUID_FLUX)
+        p.request(LIQUID_SOURCE, ghost=False)
+
+    def _liquid_arrays(self, p):
+        if not self.contact_model.wet:
+            return NO_LIQUID
+        return p.arrays[LIQUID], p.arrays[LIQUID_FLUX]
+
+    def transfer_liquid(self, sim, update):
+        """After the contacts: the fluxes of ghosts summed onto their owners, and on a step (not in a
+        run's setup) each owned particle's content advanced, c += (flux + source) dt (LIGGGHTS's
+        transportequation/scalar, explicit: its final_integrate gives the same c to every output
+        and to the next step's contacts)."""
+        p = sim.particles
+        sim.comm.reverse_comm(p, (LIQUID_FLUX,))
+        if update:
+            n = p.nlocal
+            a = p.arrays
+            a[LIQUID][:n] += (a[LIQUID_FLUX][:n] + a[LIQUID_SOURCE][:n]) * sim.dt
 
     def timestep_limits(self, sim, at_least=0.0):
         """{"rayleigh": t_R, "hertz": t_H, "contact": t}: the smallest Rayleigh time of the particles
@@ -253,8 +303,8 @@ class PairGranModel(PairGran):
         count = self.kernels.pair_contacts(
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", NO_BODY_MASS), a["type"], a["mask"], a["tag"],
             nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit, sim.dt, sim.dimension,
-            partner if width else partner[:0], values, np.uint32(sim.groups.bit(group)), rows, force, tangential,
-            hist)
+            partner if width else partner[:0], values, np.uint32(sim.groups.bit(group)), self._liquid_arrays(p)[0],
+            rows, force, tangential, hist)
         return {"i": rows[:count, 0], "j": rows[:count, 1], "force": force[:count],
                 "tangential": tangential[:count], "history": hist[:count]}
 
@@ -283,11 +333,15 @@ class PairGranModel(PairGran):
         rows, touching, npairs = self.list_rows(nlist, p.nlocal)
         entry_slots = self.entry_slots(nlist, npairs, fresh=not update or not self.held.ready(nlist))
         a = p.arrays
+        liquid = self._liquid_arrays(p)
+        liquid[1][:] = 0.0
         bad = self.kernels.pair_forces(
             a["x"], a["v"], a["omega"], a["radius"], a["rmass"], a.get("body_mass", NO_BODY_MASS), a["type"], a["mask"], a["f"],
             a["torque"], a["tag"], owner, nlist.offsets, nlist.neighbors, p.nlocal, self.contact_coeff, self.freeze_bit,
             sim.dt, update, sim.dimension, partner, values, touched, touching, self._ntouching, entry_slots,
-            *self._block, *self._heat_arrays(p), *NO_LOG)
+            *self._block, *self._heat_arrays(p), *liquid, *NO_LOG)
+        if self.contact_model.wet and bad < 0:
+            self.transfer_liquid(sim, update)
         if with_history and bad < 0 and update:
             bad = self.collect_mirrors(sim, owner, touched)
             if bad < 0:

@@ -177,8 +177,9 @@ def test_bad_material_stops_the_run_with_one_line(pdps_cli, lines, message):
 @pytest.mark.parametrize("line, message", [
     ("pair_style gran model hertz", "pair_style: missing keyword tangential; usage: pair_style gran model "
      "hertz|hooke|hertz/stiffness|hooke/stiffness|hooke/hysteresis tangential history|no_history [rolling_friction "
-     "off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2] [surface default] [tangential_damping|limitForce|"
-     "absolute_damping|tangential_reduce|torsionTorque on|off] [max_contacts N]"),
+     "off|cdt|epsd|epsd2|epsd3] [cohesion off|sjkr|sjkr2|easo/capillary/viscous|washino/capillary/viscous] "
+     "[surface default] [tangential_damping|limitForce|absolute_damping|tangential_reduce|torsionTorque|"
+     "limitLiquidContent|modifyLbVolume on|off] [max_contacts N]"),
     ("pair_style gran model hertz tangential history torsionTorque on",
      "pair_style: torsionTorque is not a setting of the chosen models (normal hertz tangential history)"),
     ("pair_style gran model hertz tangential history rolling_friction xyz",

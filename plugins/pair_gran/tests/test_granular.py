@@ -301,8 +301,8 @@ def test_the_partner_gets_the_spring_negated_and_the_rolling_and_twist_unchanged
                           (contact_block.SLOT_J, 0)):
         block_index[column * contact_block.BLOCK] = value
     kernels.scatter_contacts(1, block_in, block_out, block_index, np.zeros((2, 3)), np.zeros((2, 3)), history, owner,
-                             True, np.zeros(0), np.zeros((0, 3)), np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)),
-                             np.zeros(1, dtype=np.int64))
+                             True, np.zeros(0), np.zeros((0, 3)), np.zeros(0), np.zeros(0),
+                             np.zeros((0, 2), dtype=np.int64), np.zeros((0, 3)), np.zeros(1, dtype=np.int64))
     np.testing.assert_array_equal(history[0], hist)
     np.testing.assert_array_equal(history[1], [-1, -2, -3, 4, 5, 6, 7, 8])
 

@@ -10,7 +10,8 @@ model's, :math:`F_n` the normal model's force without the cohesion (LIGGGHTS's d
 peratomtypepair`` (dimensionless). In a run's setup force computation the spring is neither grown
 nor projected (LIGGGHTS's ``shearupdate``). Note the differences from LAMMPS's
 ``linear_history``: the Coulomb test uses the spring force alone, and the damping acts only while
-the contact sticks.
+the contact sticks. The force is added to what a cohesion model put in the tangential force (a
+liquid bridge's viscous drag, as LIGGGHTS adds both to the particles).
 
 Syntax: ``pair_style gran model ... tangential history``
 """
@@ -60,9 +61,10 @@ def history_force(c, k, hist, h):
         ftx -= c[GAMMA_T] * c[VTX]
         fty -= c[GAMMA_T] * c[VTY]
         ftz -= c[GAMMA_T] * c[VTZ]
-    c[FTX] = ftx
-    c[FTY] = fty
-    c[FTZ] = ftz
+    # added to a cohesion model's tangential force (a liquid bridge's drag), which the limit does not see
+    c[FTX] += ftx
+    c[FTY] += fty
+    c[FTZ] += ftz
 
 
 class TangentialHistory(GranSubModel):

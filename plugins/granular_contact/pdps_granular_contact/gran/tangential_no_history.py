@@ -5,7 +5,8 @@ r"""Tangential model ``no_history`` of LIGGGHTS: viscous friction capped at Coul
     \mathbf{F}_t = -\min(\mu|F_n|,\ \gamma_t|\mathbf{v}_{tr}|)\,\frac{\mathbf{v}_{tr}}{|\mathbf{v}_{tr}|}
 
 with :math:`\gamma_t` of the normal model and :math:`\mu` from ``coefficientFriction
-peratomtypepair`` (dimensionless). No history.
+peratomtypepair`` (dimensionless). No history. The force is added to what a cohesion model put in the tangential
+force (a liquid bridge's viscous drag).
 
 Syntax: ``pair_style gran model ... tangential no_history``
 """
@@ -24,9 +25,10 @@ def no_history_force(c, k, hist, h):
     """k: mu."""
     speed = math.sqrt(c[VTX] * c[VTX] + c[VTY] * c[VTY] + c[VTZ] * c[VTZ])
     scale = min(k[0] * abs(c[FN_LIMIT]), c[GAMMA_T] * speed) / speed if speed != 0.0 else 0.0
-    c[FTX] = -scale * c[VTX]
-    c[FTY] = -scale * c[VTY]
-    c[FTZ] = -scale * c[VTZ]
+    # added to a cohesion model's tangential force (a liquid bridge's drag), which the cap does not see
+    c[FTX] -= scale * c[VTX]
+    c[FTY] -= scale * c[VTY]
+    c[FTZ] -= scale * c[VTZ]
 
 
 class TangentialNoHistory(GranSubModel):

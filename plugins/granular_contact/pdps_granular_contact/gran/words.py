@@ -14,7 +14,8 @@ PART_WORDS = {"model": "normal", "tangential": "tangential", "cohesion": "cohesi
               "surface": "surface"}
 # LIGGGHTS's model settings: each is read by the sub-models that declare it (settings_read), and
 # refused on a line whose models do not
-SETTINGS = ("tangential_damping", "limitForce", "absolute_damping", "tangential_reduce", "torsionTorque")
+SETTINGS = ("tangential_damping", "limitForce", "absolute_damping", "tangential_reduce", "torsionTorque",
+            "limitLiquidContent", "modifyLbVolume")
 
 
 class GranModelArgs(StyleArgs):
@@ -29,6 +30,8 @@ class GranModelArgs(StyleArgs):
     absolute_damping: OnOff | None = keyword(None)
     tangential_reduce: OnOff | None = keyword(None)
     torsionTorque: OnOff | None = keyword(None)
+    limitLiquidContent: OnOff | None = keyword(None)
+    modifyLbVolume: OnOff | None = keyword(None)
 
     def contact_model(self, heat=None):
         """The composed law these words name; ``heat``: a heat sub-model to compose in (fix
