@@ -109,7 +109,7 @@ CONTRACT = {
         "q": "(nall,) charges, with particle_style charge, full",
         "body_mass": "(nall,) when a fix of rigid bodies provides it (sphere styles): the mass of each particle's body, 0 for particles in none; granular contacts take it for the effective mass (LAMMPS's mass_rigid)",
         "arrays": "{name: array} of every per-atom array, custom ones included",
-        "request": "request(name, width=, dtype=, default=, ghost=): allocate a per-atom array (ghost=False: ghosts do not carry it)",
+        "request": "request(name, width=, dtype=, default=, ghost=, replicate=): allocate a per-atom array (ghost=False: ghosts do not carry it; replicate=\"copy\": the replicate command copies it, \"refuse\" (default): replicate refuses while it exists)",
         "has": "has(name): whether a per-atom array exists",
         "index_of_tag": "index_of_tag(tag): the owned row of a global id, or -1",
     },

@@ -61,8 +61,8 @@ class ContactHistory:
         self.sim, self.name, self.width, self.capacity = sim, name, width, capacity
         particles = sim.particles
         self._partner_name, self._values_name = f"{name}_partner", f"{name}_history"
-        particles.request(self._partner_name, width=capacity, dtype=np.int64, default=-1)
-        particles.request(self._values_name, width=capacity * width)
+        particles.request(self._partner_name, width=capacity, dtype=np.int64, default=-1, replicate="contacts")
+        particles.request(self._values_name, width=capacity * width, replicate="copy")
 
     @property
     def partner(self):

@@ -62,6 +62,7 @@ SUMS = """compute rke all erotate/sphere
 compute sum all reduce sum x y z vx vy vz
 """
 COLUMNS = "step atoms ke c_rke c_sum[1] c_sum[2] c_sum[3] c_sum[4] c_sum[5] c_sum[6]"
+BOX_BOUNDS = "xlo xhi ylo yhi zlo zhi vol"
 
 
 # what a script gives again after read_restart or read_data (LIGGGHTS keeps none of it)
@@ -462,6 +463,39 @@ CASES = {
                             bed("displace_atoms top move 0.003 -0.002 0.004 units box\n"
                                 "region corner block 0.0 INF 0.0 INF INF INF units box\n"
                                 "delete_atoms region corner\n")),
+    # the top row squeezed in x about the middle (set after a stretch, then remap of a group); then
+    # the box made periodic in x and y, narrowed in x, widened in y with z keeping the volume, all
+    # remapped, and lowered in z without (its default units: box, LIGGGHTS 3.8.0's)
+    "change_box": Case("core", ("change_box",),
+                       BED + SUMS + "fix integr all nve/sphere\n" + thermo(BOX_BOUNDS) + "run 1500\n"
+                       "change_box top x scale 1.25 set x scale 0.8 remap\n"
+                       "change_box all boundary p p f x final -0.045 0.045 y scale 1.1 z volume remap "
+                       "z delta 0.0 -0.01\nrun 1500\n", ranks=True),
+    # the box lowered under the falling top row, which leaves it (LIGGGHTS ignores lost particles)
+    "change_box_lost": Case("core", ("change_box",),
+                            BED + SUMS + "fix integr all nve/sphere\n" + thermo(BOX_BOUNDS) + "run 600\n"
+                            "change_box all z final 0.0 0.04 units box\nrun 900\n", ranks=True),
+    # the bed (molecules 1 and 3) beside a copy of itself 0.08 away, everything shifted by -0.03 in x; the
+    # ids weighted by x summed, the molecules listed and the first counted (copies keep their molecule;
+    # LIGGGHTS 3.8.0 prints no number for the count of the second after replicate)
+    "replicate": Case("core", ("replicate",),
+                      HEAD.replace("atom_style granular", "atom_style hybrid granular molecular") + BED
+                      + "set group all mol 1\nset group top mol 3\n"
+                      "replicate 2 1 1 offset 0.08 0.0 0.0 shift -0.03 0.0 0.0\n" + SUMS
+                      + "variable idx atom id*x\ncompute ids all reduce sum v_idx\n"
+                      "compute pm all property/molecule mol count\nfix integr all nve/sphere\n"
+                      + thermo("c_ids c_pm[1][1] c_pm[1][2] c_pm[2][1] " + BOX_BOUNDS) + "run 3000\n",
+                      head=False, ranks=True),
+    # LJ-units point particles in a periodic box, four copies side by side (offset the box's
+    # lengths in x, more than it in y) and shifted, then run
+    "replicate_atomic": Case("core", ("replicate",),
+                             ATOMIC.replace("region box block 0 6 0 6 0 6", "region box block 0 4 0 4 0 3")
+                             .replace("region half block 0 3", "region half block 0 2")
+                             + "replicate 2 2 1 offset 4.0 4.5 0.0 shift 0.3 -0.2 0.0\n"
+                             "variable idx atom id*x+0.5*id*y\ncompute ids all reduce sum v_idx\n"
+                             "pair_style soft 1.2\npair_coeff * * 3.0\n"
+                             + ATOMIC_RUN.replace("c_sum[6]", "c_sum[6] c_ids " + BOX_BOUNDS), head=False,
+                             ranks=True),
     "runs": Case("core", ("reset_timestep", "unfix", "uncompute", "run"),
                  BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
                  + thermo() + "run 1200\nunfix grav\nreset_timestep 5000\nrun 900\n"

@@ -349,6 +349,21 @@ class MPIComm:
         arrived = self._alltoall_rows(rows, counts[:, 0], self._exchange_received[:, 0])
         p.append_owned(arrived)
 
+    def migrate(self, particles, box):
+        """Every owned particle to the rank whose sub-domain holds its position (clamped into the
+        box: none is lost, LAMMPS's Irregular::migrate_atoms), between runs: a command that moved
+        particles or changed the box (change_box, replicate) leaves each where it belongs, and the
+        next run's setup decides what has left the box."""
+        p = particles
+        p.clear_ghosts()
+        if self.decomposition is None or self.decomposition.box is not box:
+            self.decompose(box)
+        owner = self.rank_of(p.x[:p.nlocal])
+        leaving = np.flatnonzero(owner != self.rank)
+        received, _ = self.send_rows(p.pack(leaving), owner[leaving])
+        p.keep(np.flatnonzero(owner == self.rank))
+        p.append_owned(received)
+
     # ---- ghosts -------------------------------------------------------------------------------
     def borders(self, particles, box, cutghost):
         p = particles
@@ -358,8 +373,9 @@ class MPIComm:
         counts[:] = 0
         m = 0
         if cutghost > 0:
-            # the box may change in place (barostats, fix deform): its bounds are part of the key
-            key = (self.decomposition, cutghost, box.lo.tobytes(), box.hi.tobytes())
+            # the box may change in place (barostats, fix deform, change_box): its bounds and
+            # periodic axes are part of the key
+            key = (self.decomposition, cutghost, box.lo.tobytes(), box.hi.tobytes(), box.periodic)
             if self._bounds is None or self._bounds[0] != key:
                 self._bounds = (key,) + self._geometry(box, cutghost)
             _, sublo, subhi, periodic, few, reach = self._bounds

@@ -185,6 +185,14 @@ class SerialComm:
         if gone is not None:
             p.keep(np.flatnonzero(~gone))
 
+    def migrate(self, particles, box):
+        """Every particle is the only rank's (MPIComm.migrate moves them to their sub-domains)."""
+        particles.clear_ghosts()
+
+    def decompose(self, box):
+        """One sub-domain, the box."""
+        return (1, 1, 1)
+
     def borders(self, particles, box, cutghost):
         p = particles
         nlocal = p.nlocal

@@ -12,4 +12,5 @@ def command(*names):
     return register
 
 
-from . import control, create_atoms, edit_atoms, geometry, minimize, particles, restart, setup, styles, velocity  # noqa: E402,F401  (they register)
+from . import (change_box, control, create_atoms, edit_atoms, geometry, minimize, particles,  # noqa: E402,F401
+               replicate, restart, setup, styles, velocity)  # (they register)

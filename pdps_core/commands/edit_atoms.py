@@ -36,6 +36,7 @@ from ..errors import ScriptError
 from ..random import particle_uniforms
 from ..random_park import park_reset_coord, park_uniform
 from ..state import limits
+from ..state.box import remap
 from ..state.particles import style_columns
 from . import command
 from .particles import sphere_volume
@@ -313,9 +314,6 @@ def _compress_ids(sim):
 
 
 # ---- displace_atoms ------------------------------------------------------------------------------------
-MAX_PERIODS = 1000      # remap: box lengths walked one at a time, as LAMMPS, before jumping instead
-
-
 @command("displace_atoms")
 def displace_atoms(sim, args):
     usage = ("displace_atoms G move DX DY DZ | ramp DDIM DLO DHI DIM CLO CHI | random DX DY DZ SEED | "
@@ -387,7 +385,7 @@ def displace_atoms(sim, args):
         raise ScriptError("displace_atoms gives non-finite positions")
     box = sim.box
     shifts = np.zeros((n, 3), dtype=np.int64)
-    _remap(x, shifts, box.lo, box.hi, np.asarray(box.periodic, dtype=np.bool_))
+    remap(x, shifts, box.lo, box.hi, np.asarray(box.periodic, dtype=np.bool_))
     image += shifts
     if sim.comm.sum(int(np.abs(image).max(initial=0) > limits.MAX_IMAGE)):
         raise ScriptError(f"displace_atoms moves particles more than {limits.MAX_IMAGE} box lengths")
@@ -412,30 +410,6 @@ def _park_displace(x, rows, amplitude, seed):
         park_reset_coord(state, seed, coord)
         for d in range(3):
             x[k, d] += amplitude[d] * 2.0 * (park_uniform(state) - 0.5)
-
-
-@njit(cache=True)
-def _remap(x, shifts, lo, hi, periodic):
-    """LAMMPS's Domain::remap: across each periodic axis add or subtract the box length until
-    lo <= x < hi, counting image shifts, then no lower than lo (x - length can round below it).
-    A position more than MAX_PERIODS lengths away jumps most of the way first instead of looping."""
-    for i in range(len(x)):
-        for d in range(3):
-            if not periodic[d]:
-                continue
-            length = hi[d] - lo[d]
-            c = x[i, d]
-            if abs(c - lo[d]) > MAX_PERIODS * length:
-                jump = min(max(np.floor((c - lo[d]) / length), -2.0 ** 62), 2.0 ** 62)
-                c = lo[d] + np.mod(c - lo[d], length)
-                shifts[i, d] += np.int64(jump)
-            while c < lo[d]:
-                c += length
-                shifts[i, d] -= 1
-            while c >= hi[d]:
-                c -= length
-                shifts[i, d] += 1
-            x[i, d] = max(c, lo[d])
 
 
 def _rotate(x, point, axis, theta):

@@ -159,7 +159,7 @@ class Minimizer(Verlet):
     def _minimize(self, etol, ftol, maxiter, maxeval):
         sim = self.sim
         for name in ("minimize_g", "minimize_h", "minimize_x0", "minimize_v"):
-            sim.particles.request(name, 3)
+            sim.particles.request(name, 3, replicate="copy")     # worked out anew by each minimize
         self.setup()
         n = sim.particles.nlocal
         ecurrent = observables.potential_energy(sim) / self._norm()

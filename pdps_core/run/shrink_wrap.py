@@ -1,8 +1,8 @@
 """Shrink-wrapped box faces (``boundary s`` and ``m``, LAMMPS's and LIGGGHTS's): before each
 exchange of a neighbor list rebuild (and at a run's setup), such a face moves to the particles'
 extent along its axis, less (lower face) or plus (upper face) 1e-4 of the box length the box was
-made with (LAMMPS's ``small``, set by create_box, read_data and read_restart, not by later
-wrapping: recorded, in.crack's volume is LAMMPS's to 8 digits); an ``m`` face never moves inside its
+made with (LAMMPS's ``small``, set by create_box, read_data and read_restart, and again by
+change_box and replicate, not by later wrapping: recorded, in.crack's volume is LAMMPS's to 8 digits); an ``m`` face never moves inside its
 first position (the box command's or the data file's). The extent takes in what fixes say the box
 encloses besides the particles (``Fix.box_extent``: LIGGGHTS's meshes, so that a tutorial's box is
 its mesh's plus the margin before any particle exists). With neither particles nor such fixes the
@@ -21,6 +21,23 @@ def shrink_faces(periodicity, lo, hi):
     position, its margin) for each face whose boundary word (p, f, s, m, or two letters) says s or m."""
     return tuple((d, side, word[side % len(word)], float((lo, hi)[side][d]), SMALL * float(hi[d] - lo[d]))
                  for d, word in enumerate(periodicity) for side in (0, 1) if word[side % len(word)] in "sm")
+
+
+def set_initial_box(periodicity, lo, hi):
+    """LAMMPS's Domain::set_initial_box, which change_box runs after each operation and replicate
+    after making its box: (lo, hi, faces) with every shrink-wrapped face's margin SMALL times its
+    axis's length now, an s face moved out by its margin, an m face's first position where it is."""
+    lo, hi = np.array(lo, dtype=np.float64), np.array(hi, dtype=np.float64)
+    margins = SMALL * (hi - lo)
+    faces = []
+    for d, word in enumerate(periodicity):
+        for side, bound, outward in ((0, lo, -1.0), (1, hi, 1.0)):
+            style = word[side % len(word)]
+            if style == "s":
+                bound[d] += outward * margins[d]
+            if style in "sm":
+                faces.append((d, side, style, float(bound[d]), float(margins[d])))
+    return lo, hi, tuple(faces)
 
 
 def shrink_wrap(sim):

@@ -115,7 +115,7 @@ class Verlet:
         self.contributing = [fix for fix in sim.fixes.values() if fix.thermo_energy or fix.thermo_virial]
         self.tally_atom = [c for c in sim.computes.values() if c.peratom_tally]
         if self.tally_atom:
-            particles.request(TALLY, 7, ghost=False)
+            particles.request(TALLY, 7, ghost=False, replicate="copy")
         if self.tally_atom and sim.pair is not None and not sim.pair.peratom_tally:
             c = self.tally_atom[0]
             raise ScriptError(f"compute {c.id} ({c.name}) needs per-particle energies and virials, which pair "

@@ -42,6 +42,33 @@ def _inside_axis(x, n, d, lo, hi):
             return False
     return True
 
+MAX_PERIODS = 1000      # remap: box lengths walked one at a time, as LAMMPS, before jumping instead
+
+
+@njit(cache=True)
+def remap(x, shifts, lo, hi, periodic):
+    """LAMMPS's Domain::remap: across each periodic axis add or subtract the box length until
+    lo <= x < hi, counting image shifts, then no lower than lo (x - length can round below it).
+    A position more than MAX_PERIODS lengths away jumps most of the way first instead of looping."""
+    for i in range(len(x)):
+        for d in range(3):
+            if not periodic[d]:
+                continue
+            length = hi[d] - lo[d]
+            c = x[i, d]
+            if abs(c - lo[d]) > MAX_PERIODS * length:
+                jump = min(max(np.floor((c - lo[d]) / length), -2.0 ** 62), 2.0 ** 62)
+                c = lo[d] + np.mod(c - lo[d], length)
+                shifts[i, d] += np.int64(jump)
+            while c < lo[d]:
+                c += length
+                shifts[i, d] -= 1
+            while c >= hi[d]:
+                c -= length
+                shifts[i, d] += 1
+            x[i, d] = max(c, lo[d])
+
+
 class Box:
     def __init__(self, lo, hi, periodic, dimension=3):
         self.lo = np.asarray(lo, dtype=np.float64)
@@ -61,6 +88,11 @@ class Box:
                                   "and longer than 0 (the barostat or deformation ran away)")
         self.lo[:] = lo
         self.hi[:] = hi
+
+    def set_periodic(self, periodic):
+        """New periodic axes (change_box boundary), in place as set_bounds."""
+        self.periodic = tuple(bool(p) for p in periodic)
+        self._periodic_axes[:] = self.periodic
 
     @property
     def length(self):

@@ -12,12 +12,15 @@ the owners) nor image flags, which only owned particles have; such properties ar
 ``ghost=False`` and their ghost rows are zero after ghosts are made.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numba import njit
 
 from ..errors import ScriptError
+
+
+REPLICATE_RULES = ("copy", "contacts", "refuse")
 
 
 @dataclass(frozen=True)
@@ -27,26 +30,31 @@ class Property:
     dtype: type
     default: float = 0.0
     ghost: bool = True  # ghosts receive it when they are made
+    # what the replicate command does with it: "copy" (each copy of a particle takes its values),
+    # "contacts" (contact partners: refused while any contact is open, else copied), "refuse" (a
+    # style's own values a copy must not take, or no style said: replicate refuses while it exists)
+    replicate: str = "refuse"
 
 
+# (replicate gives each copy its own position, image flags, id and molecule id, copies the rest)
 CORE = {
-    "x": Property("x", 3, np.float64),
-    "v": Property("v", 3, np.float64),
-    "f": Property("f", 3, np.float64, ghost=False),
-    "tag": Property("tag", 1, np.int64),
-    "type": Property("type", 1, np.int32, 1),
-    "mask": Property("mask", 1, np.uint32, 1),
-    "image": Property("image", 3, np.int32, ghost=False),
+    "x": Property("x", 3, np.float64, replicate="copy"),
+    "v": Property("v", 3, np.float64, replicate="copy"),
+    "f": Property("f", 3, np.float64, ghost=False, replicate="copy"),
+    "tag": Property("tag", 1, np.int64, replicate="copy"),
+    "type": Property("type", 1, np.int32, 1, replicate="copy"),
+    "mask": Property("mask", 1, np.uint32, 1, replicate="copy"),
+    "image": Property("image", 3, np.int32, ghost=False, replicate="copy"),
 }
 
 # Properties styles commonly ask for, so that two styles asking for "radius" agree on its shape.
 KNOWN = {
-    "radius": Property("radius", 1, np.float64, 0.5),
-    "rmass": Property("rmass", 1, np.float64, 1.0),
-    "omega": Property("omega", 3, np.float64),
-    "torque": Property("torque", 3, np.float64, ghost=False),
-    "molecule": Property("molecule", 1, np.int64),
-    "q": Property("q", 1, np.float64),
+    "radius": Property("radius", 1, np.float64, 0.5, replicate="copy"),
+    "rmass": Property("rmass", 1, np.float64, 1.0, replicate="copy"),
+    "omega": Property("omega", 3, np.float64, replicate="copy"),
+    "torque": Property("torque", 3, np.float64, ghost=False, replicate="copy"),
+    "molecule": Property("molecule", 1, np.int64, replicate="copy"),
+    "q": Property("q", 1, np.float64, replicate="copy"),
 }
 
 # The particle styles (LAMMPS's atom styles) pdps reads: the per-atom arrays each one adds to the core
@@ -321,14 +329,23 @@ class Particles:
         self._views()
 
     # ---- properties -------------------------------------------------------------------------------
-    def request(self, name, width=None, dtype=np.float64, default=0.0, ghost=True):
+    def request(self, name, width=None, dtype=np.float64, default=0.0, ghost=True, replicate="refuse"):
         """Allocate a per-atom array (idempotent); known names have a fixed shape. ``ghost=False``
-        for a value only owned particles need (one summed back from ghosts, say)."""
-        prop = KNOWN.get(name) or Property(name, width or 1, dtype, default, ghost)
+        for a value only owned particles need (one summed back from ghosts, say). ``replicate``:
+        what the replicate command does with it (Property.replicate): "copy" for a value a copy of
+        the particle shares (a temperature, a value a style computes afresh), "contacts" for contact
+        partners, "refuse" (the default) for anything a copy must not take (a body id, a
+        particle's position at some earlier time)."""
+        if replicate not in REPLICATE_RULES:
+            raise ValueError(f"replicate must be one of {', '.join(REPLICATE_RULES)} (got {replicate!r})")
+        prop = KNOWN.get(name) or Property(name, width or 1, dtype, default, ghost, replicate)
         existing = self.properties.get(name)
         if existing is not None:
             if existing.width != prop.width or existing.dtype != prop.dtype:
                 raise ScriptError(f"per-atom property {name} requested with two different shapes")
+            if existing.replicate != prop.replicate:
+                # a property read back from a restart file takes the rule of the style asking again
+                self.properties[name] = replace(existing, replicate=prop.replicate)
             return self.arrays[name]
         self.properties[name] = prop
         self._store[name] = self._empty(prop, self._capacity())

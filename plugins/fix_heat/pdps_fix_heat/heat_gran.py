@@ -130,10 +130,11 @@ class FixHeatGran(Fix):
             if isinstance(fix, HeatTransport) and fix is not self:
                 raise ScriptError(f"fix {fix.id} ({fix.name}) already transports heat: one heat/gran fix at most")
         p = sim.particles
-        p.request("Temp", 1, default=args.initial_temperature)
-        p.request("heatFlux", 1)
-        p.request("heatSource", 1)
-        p.request("directionalHeatFlux", 3)
+        # a replicated particle's copies have its temperature (LIGGGHTS's replicate copies it)
+        p.request("Temp", 1, default=args.initial_temperature, replicate="copy")
+        p.request("heatFlux", 1, replicate="copy")
+        p.request("heatSource", 1, replicate="copy")
+        p.request("directionalHeatFlux", 3, replicate="copy")
         constant = isinstance(args.contact_area, tuple)
         self.mode = AREAS["constant" if constant else args.contact_area]
         self.area_constant = args.contact_area[1] if constant else 0.0
@@ -141,7 +142,7 @@ class FixHeatGran(Fix):
         self.store_contact_data = args.store_contact_data
         if self.store_contact_data:
             for name in CONTACT_DATA:
-                p.request(name, 1)
+                p.request(name, 1, replicate="copy")
 
     def init_run(self, sim):
         if not sim.particles.has("radius") or not sim.particles.has("rmass"):

@@ -53,7 +53,9 @@ class FixPropertyAtom(Fix):
             raise ScriptError(f"{name} scalar takes one default value (got {len(values)})")
         self.variable = name
         p = sim.particles
-        array = p.request(name, len(values) if args.style == "vector" else None, default=values[0])
+        # a replicated particle's copies share its values, as LIGGGHTS's replicate copies them
+        array = p.request(name, len(values) if args.style == "vector" else None, default=values[0],
+                          replicate="copy")
         if args.style == "vector":
             array[: p.nlocal] = values
 

@@ -53,7 +53,7 @@ class FixPropertyAtomTracer(Fix):
             raise ScriptError("fix property/atom/tracer needs mark_step N")
         sim.region(args.region_mark)
         self.marker = id
-        sim.particles.request(self.marker)
+        sim.particles.request(self.marker, replicate="copy")     # a copy of a marked particle is marked
         self.first_mark = args.mark_step >= sim.step
         self.marked = self.read = 0
 
