@@ -113,7 +113,7 @@ class ComputeMultisphereSingle(ComputeMultisphere):
     usage = "compute ID all multisphere/single id N property NAME"
 
     class Args(StyleArgs):
-        id: int = keyword(..., ge=1, names="id N")
+        id: int = keyword(..., ge=1, unit="1", names="id N")
         property: str = keyword(..., names="property NAME")
 
     def __init__(self, sim, id, group, args):
