@@ -688,6 +688,14 @@ CASES = {
         integrate="fix move all nve/sphere\nfix integr all multisphere/break trigger_name f_low trigger_threshold 0.5 "
                   "trigger_timeStep 100\n", steps=5700).replace("fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n", ""),
         ranks=True),
+    # settings without an effect here: box tilt (orthogonal box), dielectric (no Coulombic style in
+    # either program), and partition (one partition: yes 1 runs its command, no 1 does not)
+    "settings": Case("core", ("box", "dielectric", "partition"),
+                     HEAD.replace("region box block", "box tilt large\nregion box block", 1)
+                     + "dielectric 2.0\n" + bed("partition no 1 fix push all addforce 0.0 0.0 5.0\n"
+                                                 "partition yes * fix drag all viscous 0.0002\n"
+                                                 "partition no 2* fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"),
+                     head=False),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

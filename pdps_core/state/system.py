@@ -13,7 +13,7 @@ from .units import UNITS
 class System:
     __slots__ = ("sim", "units", "dimension", "periodicity", "box", "shrink_faces", "ntypes", "mass",
                  "particle_style", "lattice", "particles", "groups", "regions", "processors",
-                 "ghost_velocity", "stiffness_checks")
+                 "ghost_velocity", "stiffness_checks", "dielectric")
 
     def __init__(self, sim):
         self.sim = sim                  # for group selections (regions, variables)
@@ -33,6 +33,7 @@ class System:
         self.ghost_velocity = False     # comm_modify vel yes: ghosts carry velocities
         # LIGGGHTS's bounds on youngsModulus, lifted by soft_particles yes / hard_particles yes
         self.stiffness_checks = {"soft": True, "hard": True}
+        self.dielectric = 1.0           # the dielectric command's, for Coulombic styles (pdps has none yet)
 
     @property
     def particle_styles(self):
