@@ -696,6 +696,13 @@ CASES = {
                                                  "partition yes * fix drag all viscous 0.0002\n"
                                                  "partition no 2* fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"),
                      head=False),
+    # charged spheres in a field: a constant x part on the top row, an equal-style z part that
+    # oscillates and an atom-style y part that grows with x on all (charges of both signs)
+    "efield": Case("fix_granular", ("fix efield",),
+                   HEAD.replace("atom_style granular", "atom_style hybrid granular charge")
+                   + bed("set group all charge -1.0e-6\nset group top charge 2.0e-6\n"
+                         "variable ez equal -800.0*(1.0+0.5*sin(step*0.002))\nvariable ey atom 3.0e4*x\n"
+                         "fix push top efield 1500.0 0.0 0.0\nfix field all efield 0.0 v_ey v_ez\n"), head=False),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

@@ -90,7 +90,6 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     # in LIGGGHTS's manual, not in LIGGGHTS 3.8.0 itself ("Invalid compute style", run 12-02)
     ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
     ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
-    ("fix", "efield"): "pdps has no charges",
 }
 
 
