@@ -703,6 +703,12 @@ CASES = {
                    + bed("set group all charge -1.0e-6\nset group top charge 2.0e-6\n"
                          "variable ez equal -800.0*(1.0+0.5*sin(step*0.002))\nvariable ey atom 3.0e4*x\n"
                          "fix push top efield 1500.0 0.0 0.0\nfix field all efield 0.0 v_ey v_ez\n"), head=False),
+    # contact/atom/gran counts the pairs that touch (within its skin) or keep a contact history
+    # (until the lists are next built), and so differs from contact/atom after contacts open
+    "contacts_gran": Case("compute_gran_local", ("compute contact/atom/gran",),
+                          bed("compute cg all contact/atom/gran\ncompute cs all contact/atom/gran skin 0.001\n"
+                              "compute ca all contact/atom\ncompute sums all reduce sum c_cg c_cs c_ca\n",
+                              "c_sums[1] c_sums[2] c_sums[3]"), ranks=True),
     "restart": Case("core", ("write_restart", "read_restart", "clear"),
                     BED + SUMS + "fix integr all nve/sphere\n" + thermo() + "run 1500\n"
                     "write_restart bed.restart\nclear\natom_modify map array\nnewton off\n"

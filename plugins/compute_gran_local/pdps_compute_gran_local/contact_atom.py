@@ -25,7 +25,7 @@ Example::
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Compute, ScriptError, StyleArgs
+from pdps_core.api import Compute, ScriptError, StyleArgs, keyword
 
 COUNT = "contact_atom_count"
 
@@ -75,13 +75,67 @@ class ComputeContactAtom(Compute):
         return np.where(selected, counts[:n], 0.0)
 
 
-class ComputeContactAtomGran(ComputeContactAtom):
-    """Compute ``contact/atom/gran`` (LIGGGHTS): the contacts of each particle as its granular pair
-    counts them, overlaps (LIGGGHTS adds contacts its history flags, which only bonded models set; pdps
-    has none), so contact/atom's count. LIGGGHTS 3.8.0 gives the two alike (measured, 12-02: a chain
-    of spheres with an overlap, a gap inside the skin and one outside)::
+@njit(cache=True)
+def count_gran_contacts(x, radius, tag, mask, groupbit, offsets, neighbors, nlocal, skin, partner, counts):
+    """LIGGGHTS's contact/atom/gran: a pair of the half list whose first particle is in the group
+    counts on both when the gap is at most ``skin`` or the pair holds a contact history (partner:
+    the tags each particle keeps a history with; empty without one)."""
+    for i in range(len(counts)):
+        counts[i] = 0.0
+    history = partner.shape[0] > 0
+    for i in range(nlocal):
+        if not mask[i] & groupbit:
+            continue
+        for k in range(offsets[i], offsets[i + 1]):
+            j = neighbors[k]
+            dx = x[i, 0] - x[j, 0]
+            dy = x[i, 1] - x[j, 1]
+            dz = x[i, 2] - x[j, 2]
+            reach = radius[i] + radius[j] + skin
+            touching = dx * dx + dy * dy + dz * dz <= reach * reach
+            if not touching and history:
+                for s in range(partner.shape[1]):
+                    if partner[i, s] == tag[j]:
+                        touching = True
+                        break
+            if touching:
+                counts[i] += 1.0
+                counts[j] += 1.0
 
-        compute ID GROUP contact/atom/gran
+
+NO_PARTNERS = np.zeros((0, 1), dtype=np.int64)
+
+
+class ComputeContactAtomGran(ComputeContactAtom):
+    """Compute ``contact/atom/gran`` (LIGGGHTS 3.8.0's): for each particle, the pairs of the granular
+    pair style's list that touch, within ``skin`` (a distance, default 0), or that hold a contact
+    history (with ``tangential history``: a pair that touched since the list was last built keeps
+    it until then, as LIGGGHTS's touch flags), counted on both particles of each pair whose first
+    particle (in the list) is in the group, every particle's count given (LIGGGHTS's: use group
+    all for counts that do not depend on the list's order). Recorded with LIGGGHTS 3.8.0 (case
+    contacts_gran, plugins/compute_gran_local/tests/data/liggghts.cases.json)::
+
+        compute ID GROUP contact/atom/gran [skin S]
     """
     name = "contact/atom/gran"
-    usage = "compute ID GROUP contact/atom/gran"
+    usage = "compute ID GROUP contact/atom/gran [skin S]"
+
+    class Args(StyleArgs):
+        skin: float = keyword(0.0, unit="distance")
+
+    def peratom(self, sim):
+        p = sim.particles
+        if not p.has("radius"):
+            raise ScriptError(f"compute {self.id} (contact/atom/gran) needs particles with radii (atom_style "
+                              "sphere or granular)")
+        if sim.pair_list is None:
+            raise ScriptError(f"compute {self.id} (contact/atom/gran) needs a pair style (its neighbor list holds "
+                              "the contacts)")
+        partners = getattr(sim.pair, "history_partners", None)
+        partner = partners() if partners is not None else None
+        counts = p.arrays[COUNT]
+        count_gran_contacts(p.x, p.radius, p.tag, p.mask, np.uint32(sim.groups.bit(self.group)),
+                            sim.pair_list.offsets, sim.pair_list.neighbors, p.nlocal, self.args.skin,
+                            NO_PARTNERS if partner is None else partner, counts)
+        sim.comm.reverse_comm(p, (COUNT,))
+        return counts[:p.nlocal]

@@ -178,3 +178,11 @@ def test_contact_atom_and_contact_atom_gran_as_liggghts(make_sim):
     order = np.argsort(sim.tag)
     for compute in ("c", "cg"):
         assert sim.computes[compute].peratom(sim)[order].tolist() == LIGGGHTS_CONTACTS
+
+
+def test_contact_atom_gran_skin_counts_gaps_within_it(make_sim):
+    """skin S: a gap of at most S counts (spheres 2 and 3 are 0.05 apart, 3 and 4 0.2)."""
+    sim = make_sim(dialect="liggghts")
+    sim.command(LIGGGHTS_CONTACT_SCENE.replace("compute cg all contact/atom/gran", "compute cg all contact/atom/gran skin 0.1"))
+    order = np.argsort(sim.tag)
+    assert sim.computes["cg"].peratom(sim)[order].tolist() == [1, 2, 1, 0]

@@ -279,6 +279,13 @@ class PairGranModel(PairGran):
             self._entry_slots[:npairs] = -1
         return self._entry_slots
 
+    def history_partners(self):
+        """The tags each particle keeps a contact history with ((rows, slots), -1 empty), or None
+        without a history (compute contact/atom/gran reads it as LIGGGHTS's touch flags)."""
+        if self.history is None or not self.history_width:
+            return None
+        return self.history.partner
+
     def _history_arrays(self):
         if self.history is None:
             return self._no_history[0], self._no_history[1]
