@@ -136,6 +136,7 @@ CONTRACT = {
     "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},
     "Units": {"name": "lj, real, metal, si, cgs, micro or nano", "boltz": "k_B", "mvv2e": "m v^2 to energy",
               "nktv2p": "energy density to pressure", "ftm2v": "f dt / m to velocity (integrators)",
+              "qe2f": "charge * electric field to force (fix efield)",
               "mv2d": "mass/volume to the density thermo reports"},
     "Neighbor": {"skin": "the neighbor skin (distance)",
                  "exclude_molecules": "exclude_molecules(group, kind='intra'): no pairs of the group within one molecule "

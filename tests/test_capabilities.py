@@ -14,10 +14,12 @@ from pdps_core.styles import IN_PROCESS
 ROOT = Path(__file__).parents[1]
 
 METHOD_CAPABILITIES = {
-    ContactTable: {("pair", "gran"), ("pair", "granular"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
+    ContactTable: {("pair", "gran"), ("pair", "bubble"), ("pair", "gran_bubble"), ("pair", "granular"),
+                   ("pair", "dem/lsd"), ("pair", "dem/hertz")},
     # pair granular answers that its contacts carry no heat (its heat models are not built)
-    ContactConduction: {("pair", "gran"), ("pair", "granular")},
-    ContactTimes: {("pair", "gran"), ("pair", "granular"), ("pair", "gran/hooke"), ("pair", "gran/hooke/history"),
+    ContactConduction: {("pair", "gran"), ("pair", "bubble"), ("pair", "gran_bubble"), ("pair", "granular")},
+    ContactTimes: {("pair", "gran"), ("pair", "bubble"), ("pair", "gran_bubble"), ("pair", "granular"),
+                   ("pair", "gran/hooke"), ("pair", "gran/hooke/history"),
                    ("pair", "gran/hertz/history"), ("pair", "dem/lsd"), ("pair", "dem/hertz")},
     HeatTransport: {("fix", "heat/gran"), ("fix", "heat/gran/conduction")},
     MeshSurface: {("fix", "mesh/surface"), ("fix", "mesh/surface/stress"), ("fix", "mesh/surface/planar")},
