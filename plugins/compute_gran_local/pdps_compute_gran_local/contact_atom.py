@@ -59,14 +59,18 @@ class ComputeContactAtom(Compute):
     class Args(StyleArgs):
         pass
 
-    def peratom(self, sim):
-        p = sim.particles
-        if not p.has("radius"):
-            raise ScriptError(f"compute {self.id} (contact/atom) needs particles with radii (atom_style sphere "
+    def require_contacts(self, sim):
+        """Radii and a pair style's list, which the counts read."""
+        if not sim.particles.has("radius"):
+            raise ScriptError(f"compute {self.id} ({self.name}) needs particles with radii (atom_style sphere "
                               "or granular)")
         if sim.pair_list is None:
-            raise ScriptError(f"compute {self.id} (contact/atom) needs a pair style (its neighbor list holds the "
+            raise ScriptError(f"compute {self.id} ({self.name}) needs a pair style (its neighbor list holds the "
                               "contacts)")
+
+    def peratom(self, sim):
+        p = sim.particles
+        self.require_contacts(sim)
         counts = p.arrays[COUNT]
         count_contacts(p.x, p.radius, sim.pair_list.offsets, sim.pair_list.neighbors, p.nlocal, counts)
         sim.comm.reverse_comm(p, (COUNT,))
@@ -125,12 +129,7 @@ class ComputeContactAtomGran(ComputeContactAtom):
 
     def peratom(self, sim):
         p = sim.particles
-        if not p.has("radius"):
-            raise ScriptError(f"compute {self.id} (contact/atom/gran) needs particles with radii (atom_style "
-                              "sphere or granular)")
-        if sim.pair_list is None:
-            raise ScriptError(f"compute {self.id} (contact/atom/gran) needs a pair style (its neighbor list holds "
-                              "the contacts)")
+        self.require_contacts(sim)
         partners = getattr(sim.pair, "history_partners", None)
         partner = partners() if partners is not None else None
         counts = p.arrays[COUNT]
