@@ -140,6 +140,37 @@ def tilted_stl(z, slope_x, slope_y):
 FACE = {"face.stl": tilted_stl(0.024, 0.13, 0.047)}
 
 
+def snapshots_dump():
+    """A dump file of two snapshots for read_dump. Step 500: ids 1..24 of the bed (25..27 missing)
+    and ids 40, 41 it lacks, near the bed's lattice, each with velocities, a radius and omegax, the
+    columns in an order of their own. Step 800: 20 spheres of both types (ids 3..22) in a box of its
+    own (z up to 0.12), scaled coordinates (some beyond the box in x and y), image flags, masses."""
+    rows = []
+    for k, tag in enumerate([*range(1, 25), 40, 41]):
+        i, j, m = k % 3, (k // 3) % 3, k // 9
+        x, y, z = -0.02 + 0.02 * i + 0.0013 * (k % 4), -0.02 + 0.02 * j - 0.0009 * (k % 5), 0.012 + 0.021 * m
+        rows.append(f"{tag} {1 + (k % 2)} {-0.1 - 0.03 * k:.6f} {x:.7f} {0.003 * k:.6f} {y:.7f} "
+                    f"{0.0045 + 0.00005 * k:.6f} {z:.7f} {-0.4 - 0.025 * k:.6f} {0.05 * (k % 7) - 0.1:.4f}")
+    first = ("ITEM: TIMESTEP\n500\nITEM: NUMBER OF ATOMS\n26\nITEM: BOX BOUNDS ff ff ff\n-0.05 0.05\n"
+             "-0.05 0.05\n0 0.1\nITEM: ATOMS id type vx x vy y radius z vz omegax\n" + "\n".join(rows) + "\n")
+    rows = []
+    for k in range(20):
+        i, j, m = k % 4, (k // 4) % 3, k // 12
+        xs, ys, zs = 0.2 + 0.2 * i + (0.5 if k % 6 == 0 else 0.0), 0.25 + 0.25 * j - (0.6 if k % 7 == 3 else 0.0), \
+            0.1 + 0.18 * m + 0.01 * (k % 3)
+        kind = 1 + (k % 2)
+        radius = (0.005, 0.006)[kind - 1] * (1.0 + 0.01 * (k % 5))
+        mass = (2500.0, 1500.0)[kind - 1] * 4.0 / 3.0 * 3.141592653589793 * radius ** 3
+        rows.append(f"{k + 3} {kind} {xs:.6f} {ys:.6f} {zs:.6f} {0.02 * (k % 5) - 0.04:.4f} {-0.3 - 0.02 * k:.4f} "
+                    f"{radius:.8f} {mass:.10g} {k % 3 - 1} {(k % 2) * 2 - 1} 0")
+    second = ("ITEM: TIMESTEP\n800\nITEM: NUMBER OF ATOMS\n20\nITEM: BOX BOUNDS pp pp ff\n-0.05 0.05\n"
+              "-0.05 0.05\n0 0.12\nITEM: ATOMS id type xs ys zs vx vz radius mass ix iy iz\n" + "\n".join(rows) + "\n")
+    return first + second
+
+
+SNAPSHOTS = {"snapshots.dump": snapshots_dump()}
+
+
 @dataclass
 class Case:
     owner: str            # the plugin whose table holds it, or "core"
@@ -496,6 +527,21 @@ CASES = {
                              "pair_style soft 1.2\npair_coeff * * 3.0\n"
                              + ATOMIC_RUN.replace("c_sum[6]", "c_sum[6] c_ids " + BOX_BOUNDS), head=False,
                              ranks=True),
+    # the bed overwritten by the snapshot of step 500 (velocities, radii, omegax; its masses kept),
+    # the 22 particles of the 48 the snapshot lacks trimmed; the step is 500 after
+    "read_dump": Case("core", ("read_dump",),
+                      BED + SUMS + "read_dump snapshots.dump 500 x y z vx vy vz radius omegax box no trim yes\n"
+                      "fix integr all nve/sphere\n" + thermo(BOX_BOUNDS) + "run 2000\n", files=SNAPSHOTS,
+                      ranks=True),
+    # everything purged and the step-800 snapshot added (new ids, their types, masses and image flags
+    # read; vy 0) in its box, periodic in x and y: the scaled positions outside it wrapped in
+    "read_dump_add": Case("core", ("read_dump",),
+                          HEAD.replace("boundary f f f", "boundary p p f") + BED + SUMS
+                          + "read_dump snapshots.dump 800 x y z vx vz radius mass ix iy iz purge yes replace no "
+                          "add yes\ncompute im all property/atom ix iy\ncompute ims all reduce sum c_im[1] c_im[2]\n"
+                          "variable idx atom id*x\ncompute ids all reduce sum v_idx\n"
+                          "fix integr all nve/sphere\n" + thermo("c_ims[1] c_ims[2] c_ids " + BOX_BOUNDS)
+                          + "run 2000\n", head=False, files=SNAPSHOTS, ranks=True),
     "runs": Case("core", ("reset_timestep", "unfix", "uncompute", "run"),
                  BED + SUMS + "fix integr all nve/sphere\nfix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
                  + thermo() + "run 1200\nunfix grav\nreset_timestep 5000\nrun 900\n"

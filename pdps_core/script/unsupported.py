@@ -23,7 +23,6 @@ ALTERNATIVES = {
     "pair_write": "pdps doc pair STYLE (the formula) or a compute on two particles",
     "plugin": "pdps plugins are Python distributions (docs/plugin-guide.md)",
     "prd": "none in pdps", "python": "drive pdps from Python: pdps_core.api.Simulation",
-    "read_dump": "read_data or read_restart",
     "rerun": "none in pdps",
     "reset_atoms": "none in pdps", "reset_atom_ids": "none in pdps",
     "special_bonds": "pdps has no bonds", "suffix": "nothing: pdps has one build of each style",
