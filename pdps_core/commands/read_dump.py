@@ -26,16 +26,17 @@ create_atoms's defaults (diameter 1, density 1: a radius read does not change th
 yes`` (the default) takes the snapshot's box bounds (z only in 3-d). Then every particle is wrapped
 into the box along its periodic axes (image flags counting), the shrink-wrapped faces fit the
 particles again, and what lies outside a fixed face is for the next run to decide. The radius field
-is required in the LIGGGHTS dialect (LIGGGHTS's rule: its granular particles need radii); a z field in a 2-d simulation is
-refused; a snapshot whose boundary letters differ from the box's draws a warning.
+is required in the LIGGGHTS dialect (LIGGGHTS's rule: its granular particles need radii); a z field
+in a 2-d simulation is refused; a snapshot whose boundary letters differ from the box's draws a
+warning.
 
 Where pdps differs, openly: LIGGGHTS 3.8.0 refuses every ``label`` ("Illegal read_dump command",
 measured; its check compares with labels not yet set), which its manual allows and pdps reads as
 the manual says. ``format xyz`` is refused at the line: LIGGGHTS requires the radius field, which an
-XYZ file does not hold (its reader leaves the radii undefined). LAMMPS's read_dump (its
-nfile, fx fy fz and the like) is not what this reads: its own page is not followed. A triclinic snapshot is refused, as
-pdps's box is orthogonal (LIGGGHTS: "Read_dump triclinic status does not match simulation"). Under
-MPI, added particles get their ids in the file's order (serial LIGGGHTS's; its ranks take turns).
+XYZ file does not hold (its reader leaves the radii undefined). LAMMPS's read_dump page (nfile, fx
+fy fz and the like) is not what this reads. A triclinic snapshot is refused, as pdps's box is
+orthogonal (LIGGGHTS: "Read_dump triclinic status does not match simulation"). Under MPI, added
+particles get their ids in the file's order (serial LIGGGHTS's; its ranks take turns).
 
 Example::
 
