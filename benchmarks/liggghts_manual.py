@@ -58,6 +58,7 @@ KEYWORD_LIST = re.compile(r"^\s*[a-z_]*keywords?\s*=\s*(?P<list>.*)")
 LISTED = re.compile(r"\{(?P<word>[A-Za-z_][\w/]*)[^}]*\}")
 # items whose numbers tests compare with LIGGGHTS 3.8.0's, recorded on this machine
 CHECKED = {
+    ("info", None): "tests/test_info.py (the facts LIGGGHTS 3.8.0's info printed, tests/data/liggghts_info.txt)",
     ("fix", "insert/stream"): "plugins/fix_insert/tests/test_liggghts_placement.py; corpus insert_stream",
     ("fix", "insert/pack"): "plugins/fix_insert/tests/test_liggghts_placement.py, test_insertion.py; corpus",
     ("fix", "mesh/surface"): "plugins/fix_wall/tests/test_mesh_box_extent.py; plugins/pair_gran/tests "

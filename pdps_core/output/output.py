@@ -31,6 +31,7 @@ class Output:
         self.dumps = {}
         self.echo_to = "log"            # LAMMPS's echo: none, screen, log or both
         self.warnings = []              # every warning given, in order
+        self.started = time.perf_counter()   # the info command's wall time counts from here
         if log:
             self.open_log(log)
 

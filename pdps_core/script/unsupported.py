@@ -16,7 +16,7 @@ ALTERNATIVES = {
     "dihedral_style": "pdps has no dihedral styles", "dynamical_matrix": "none in pdps",
     "fitpod": "none in pdps", "group2ndx": "dump custom with id and the group",
     "improper_coeff": "pdps has no improper styles", "improper_style": "pdps has no improper styles",
-    "info": "pdps styles -v (installed styles), the log (settings)", "kim": "none in pdps",
+    "kim": "none in pdps",
     "kspace_modify": "pdps has no long-range electrostatics", "kspace_style": "pdps has no long-range electrostatics",
     "labelmap": "numeric types", "mdi": "none in pdps", "molecule": "read_data with molecule ids",
     "neb": "none in pdps", "package": "nothing: pdps compiles its kernels itself (numba)",
