@@ -70,7 +70,6 @@ STYLE_ALTERNATIVES = {
     **{(kind, name): "pdps has no bonds" for kind, name in (("fix", "bond/break"), ("fix", "bond/create"),
                                                              ("compute", "bond/local"))},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
-    ("fix", "external"): "drive pdps from Python (pdps_core.api.Simulation)",
     ("fix", "box/relax"): "none in pdps",
     ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",
     ("dump", "image"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
