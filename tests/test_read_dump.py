@@ -82,19 +82,22 @@ def test_a_gzipped_file_of_a_pattern_is_found_by_its_number(tmp_path, monkeypatc
 
 
 @pytest.mark.parametrize("line, message", [
-    ("read_dump dump.snap 5 x y z", "read_dump: the radius field is required to be read (LIGGGHTS's rule)"),
-    ("read_dump dump.snap 5 x radius purge yes", "read_dump: purge yes cannot go with replace yes or trim yes "
+    ("read_dump dump.snap 5 x y z", "the radius field is required to be read (LIGGGHTS's rule)"),
+    ("read_dump dump.snap 5 x radius purge yes", "purge yes cannot go with replace yes or trim yes "
      "(LIGGGHTS's rule; replace is yes by default)"),
-    ("read_dump dump.snap 5 x radius format xyz", "read_dump format xyz: LIGGGHTS requires the radius field, which "
+    ("read_dump dump.snap 5 x radius format xyz", "format xyz: LIGGGHTS requires the radius field, which "
      "an XYZ file does not hold (its reader leaves the radii undefined); write the snapshot with dump custom"),
     ("read_dump dump.snap 6 x radius", "dump.snap holds no snapshot of step 6"),
-    ("read_dump dump.snap 5 x vx radius", "dump.snap: read_dump field vx not found in the dump file's columns "
+    ("read_dump dump.snap 5 x vx radius", "dump.snap: field vx not found in the dump file's columns "
      "(id type x radius)"),
-    ("read_dump dump.snap 5 x radius label vy q", "read_dump label vy: not a field read (fields: x radius, id, type)"),
+    ("read_dump dump.snap 5 x radius label vy q", "label vy: not a field read (fields: x radius, id, type)"),
     ("read_dump dump.snap 5 x radius format native box no", "format must be the last keyword (got box no after it); "
      "usage: " + "read_dump FILE NSTEP FIELD... [box|replace|purge|trim|add|scaled|wrapped yes|no] "
      "[label FIELD COLUMN] [format native]"),
     ("read_dump nothere 5 x radius", "cannot open dump file nothere"),
+    ("read_dump nowhere/d.* 5 x radius", "cannot search nowhere for dump files nowhere/d.*: No such file or directory"),
+    ("read_dump dump.snap 5", "no field to read; usage: " + "read_dump FILE NSTEP FIELD... "
+     "[box|replace|purge|trim|add|scaled|wrapped yes|no] [label FIELD COLUMN] [format native]"),
 ])
 def test_bad_lines_are_refused_in_one_line(tmp_path, monkeypatch, line, message):
     sim = simulation(tmp_path, monkeypatch, snapshot(5, "id type x radius", [(1, 1, 0.5, 0.1)]))
@@ -138,4 +141,4 @@ def test_a_2d_simulation_reads_no_z(tmp_path, monkeypatch):
     (tmp_path / "dump.snap").write_text(snapshot(5, "id type x z radius", [(1, 1, 0.5, 0.0, 0.1)]))
     with pytest.raises(ScriptError) as caught:
         sim.command("read_dump dump.snap 5 x z radius")
-    assert caught.value.message == "read_dump: a 2-d simulation reads no z, vz or iz field"
+    assert caught.value.message == "a 2-d simulation reads no z, vz or iz field"

@@ -117,23 +117,25 @@ def read_dump(sim, args):
 
 
 def _check_fields(sim, args, fields):
+    if not fields:
+        raise ScriptError(f"no field to read; usage: {USAGE}")
     if "radius" not in fields and sim.dialect.name == "liggghts":
-        raise ScriptError("read_dump: the radius field is required to be read (LIGGGHTS's rule)")
+        raise ScriptError("the radius field is required to be read (LIGGGHTS's rule)")
     if args.format == "xyz":
-        raise ScriptError("read_dump format xyz: LIGGGHTS requires the radius field, which an XYZ file does not "
+        raise ScriptError("format xyz: LIGGGHTS requires the radius field, which an XYZ file does not "
                           "hold (its reader leaves the radii undefined); write the snapshot with dump custom")
     duplicate = next((f for f in fields if fields.count(f) > 1), None)
     if duplicate:
-        raise ScriptError(f"read_dump: field {duplicate} given twice")
+        raise ScriptError(f"field {duplicate} given twice")
     if sim.dimension == 2 and {"z", "vz", "iz"} & set(fields):
-        raise ScriptError("read_dump: a 2-d simulation reads no z, vz or iz field")
+        raise ScriptError("a 2-d simulation reads no z, vz or iz field")
     p = sim.particles
     for field in fields:
         target = TARGET.get(field, (None,))[0]
         if target is not None and not p.has(target):
-            raise ScriptError(f"read_dump: field {field}: the particles have no {target} (atom_style)")
+            raise ScriptError(f"field {field}: the particles have no {target} (atom_style)")
     if args.purge == "yes" and (args.replace == "yes" or args.trim == "yes"):
-        raise ScriptError("read_dump: purge yes cannot go with replace yes or trim yes (LIGGGHTS's rule; "
+        raise ScriptError("purge yes cannot go with replace yes or trim yes (LIGGGHTS's rule; "
                           "replace is yes by default)")
 
 
@@ -142,7 +144,7 @@ def _labels(args, fields):
     labels = {}
     for field, column in args.label:
         if field not in (*fields, "id", "type"):
-            raise ScriptError(f"read_dump label {field}: not a field read (fields: {' '.join(fields)}, id, type)")
+            raise ScriptError(f"label {field}: not a field read (fields: {' '.join(fields)}, id, type)")
         labels[field] = column
     return labels
 
@@ -160,7 +162,12 @@ def _files(sim, pattern):
     if "*" in tail:
         raise ScriptError(f"dump file pattern {pattern}: one * only")
     found = []
-    for entry in sorted(os.listdir(folder or ".")):
+    try:
+        entries = sorted(os.listdir(folder or "."))
+    except OSError as exc:
+        raise ScriptError(f"cannot search {os.path.dirname(pattern) or '.'} for dump files {pattern}: "
+                          f"{exc.strerror}") from None
+    for entry in entries:
         if entry.startswith(head) and entry.endswith(tail) and len(entry) >= len(head) + len(tail):
             middle = entry[len(head):len(entry) - len(tail)]
             number = re.match(r"[+-]?\d+", middle)
@@ -266,7 +273,7 @@ def _columns(file_labels, labels, args, path):
         else:
             found = _index(file_labels, field)
         if found is None:
-            raise ScriptError(f"{path}: read_dump field {field} not found in the dump file's columns "
+            raise ScriptError(f"{path}: field {field} not found in the dump file's columns "
                               f"({' '.join(file_labels)})")
         columns[field] = found
     if len(set(styles.values())) > 1:
@@ -403,10 +410,10 @@ def _add(sim, values, header, scaled, rows, largest, path):
     ntypes = sim.system.ntypes
     bad = np.flatnonzero((types < 1) | (types > ntypes))
     if len(bad):
-        raise ScriptError(f"{path}: read_dump add: atom {values['id'][rows[bad[0]]]} has type {types[bad[0]]}, "
+        raise ScriptError(f"{path}: add: atom {values['id'][rows[bad[0]]]} has type {types[bad[0]]}, "
                           f"out of range 1..{ntypes}")
     if largest + len(rows) > limits.MAX_TAG:
-        raise ScriptError(f"read_dump add: ids beyond {limits.MAX_TAG}")
+        raise ScriptError(f"add: ids beyond {limits.MAX_TAG}")
     p.next_tag = max(p.next_tag, largest + len(rows) + 1)
     if sim.comm.rank != 0:
         return 0
@@ -439,5 +446,5 @@ def _wrap(sim):
     remap(x, shifts, box.lo, box.hi, np.asarray(box.periodic, dtype=np.bool_))
     image = p.image[:n] + shifts
     if sim.comm.sum(int(np.abs(image).max(initial=0) > limits.MAX_IMAGE)):
-        raise ScriptError(f"read_dump leaves particles more than {limits.MAX_IMAGE} box lengths from the box")
+        raise ScriptError(f"the box leaves particles more than {limits.MAX_IMAGE} box lengths from the box")
     p.x[:n], p.image[:n] = x, image

@@ -53,7 +53,7 @@ class FixExternal(Fix):
 
     class Args(StyleArgs):
         mode: Literal["pf/callback", "pf/array"] = param()
-        every: list[int] = param(default_factory=list, unit="1", names="NCALL NAPPLY | NAPPLY")
+        every: list[int] = param(default_factory=list, unit="1", alias="NCALL NAPPLY")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
