@@ -237,7 +237,7 @@ def delete_bonds(sim, args):
     if style == "atom":
         chosen &= (p.type[:n, None] == which) | (partner_type == which)
     elif style == "bond":
-        chosen &= kinds == which
+        chosen &= np.abs(kinds) == which         # a bond turned off is still of its type (undo)
     if style != "stats":
         if "undo" in flags:
             kinds[chosen & (kinds < 0)] *= -1

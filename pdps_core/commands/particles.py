@@ -500,5 +500,5 @@ def read_data(sim, args):
             raise ScriptError(f"{args[0]}:{number}: Bond Coeffs: {exc}") from None
     if data.skipped:
         listed = ", ".join(f"{amount} {kind}" for kind, amount in data.skipped.items())
-        sim.warn(f"read_data {args[0]}: {listed} read past: pdps has no bond styles, so only "
-                           "the molecule ids take effect")
+        sim.warn(f"read_data {args[0]}: {listed} read past: pdps has no angle styles, so "
+                           "they have no effect")

@@ -96,8 +96,8 @@ def read_data_file(path, particle_style):
                 continue
             if head == "Bonds" or two == "Bond Coeffs":
                 if not molecular:
-                    fail(number, f"section {text} needs a particle_style with bonds (bond, angle, molecular or "
-                                 f"full), not {particle_style}")
+                    fail(number, f"section {text} needs a particle_style with molecule ids (molecular, bond, "
+                                 f"angle or full), not {particle_style}")
                 section = "Bonds" if head == "Bonds" else two
                 continue
             if head in SKIPPED_SECTIONS or two in SKIPPED_SECTIONS:

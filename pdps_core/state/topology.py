@@ -63,9 +63,10 @@ class Topology:
 
     def make_arrays(self, particles, per_atom):
         """The bond and special arrays, ``per_atom`` bonds wide (kept wider when they are)."""
-        width = max(per_atom, 1)
+        # two at least: a per-atom array one wide is a plain vector, and the bond loops index slots
+        width = max(per_atom, 2)
         if particles.has("bond_type"):
-            width = max(width, particles.bond_type.shape[1] if particles.bond_type.ndim == 2 else 1)
+            width = max(width, particles.bond_type.shape[1])
             if width == particles.bond_type.shape[1]:
                 return
             raise ScriptError("bonds per particle cannot grow once bonds exist: give extra bond per atom "
@@ -146,6 +147,24 @@ class Topology:
 
     def bonds(self):
         return self.bond_list[:self.nbondlist]
+
+    def stored_bonds(self, sim):
+        """Every bond stored on an owned particle, turned off ones too (type < 0), broken ones not,
+        as rows (i, j, type) with j the partner's copy nearest to i (compute bond/local)."""
+        p = sim.particles
+        nall = p.nall
+        order = np.argsort(p.tag[:nall], kind="stable")
+        kinds = np.where(p.bond_type == 0, 0, 1).astype(np.int32)
+        rows = np.empty((int(p.num_bond[:p.nlocal].sum()), 3), dtype=np.int64)
+        found = _list_bonds(p.x, p.nlocal, p.num_bond, kinds, p.bond_atom, p.tag[:nall][order], order, rows)
+        if found < 0:
+            i, b = divmod(-found - 1, p.bond_type.shape[1])
+            raise SimulationError(f"bond atoms {int(p.tag[i])} {int(p.bond_atom[i, b])} missing at step {sim.step}")
+        rows = rows[:found]
+        slots = np.arange(p.bond_type.shape[1])[None, :] < p.num_bond[:p.nlocal, None]
+        stored = p.bond_type[:p.nlocal][slots]
+        rows[:, 2] = stored[stored != 0]
+        return rows
 
 
 @njit(cache=True)
