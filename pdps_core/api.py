@@ -21,11 +21,11 @@ from .run.hookspec import HOOKS
 from .simulation import Simulation
 from .state import observables
 from .state.limits import check_bins, check_images
-from .styles import (API_VERSION, Analyze, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
+from .styles import (API_VERSION, Analyze, Bond, Compute, Dump, Fix, FloatOrVariable, Pair, PairLaw, Region, RegionArgs,
                      StyleArgs, StyleName, SubModel, SurfaceContacts, Variable, VariableRef, keyword, param, parse_args,
                      PERATOM_REFERENCE, PeratomReference, peratom_column, registry)
 
-__all__ = ["API_VERSION", "Analyze", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
+__all__ = ["API_VERSION", "Analyze", "Bond", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
@@ -69,6 +69,8 @@ CONTRACT = {
         "in_setup": "True while a run computes its setup forces (styles with history do not advance it)",
         # the other styles and script objects
         "pair": "the pair style, or None",
+        "bonds": "bonds(): this rank's bonds as rows (i, j, type), i owned, j the nearest copy of its partner, turned-off ones (type < 0) included",
+        "bond_single": "bond_single(type, rsq): (F/r, energy) of one bond of that type at r^2 = rsq under the run's bond styles",
         "pair_list": "the pair style's neighbor list (NeighborList), once a run set it up",
         "fixes": "{id: fix} in script order",
         "substitute": "substitute(text): $x, ${name} and $(formula) replaced now (fix print)",
@@ -112,6 +114,9 @@ CONTRACT = {
         "request": "request(name, width=, dtype=, default=, ghost=, replicate=): allocate a per-atom array (ghost=False: ghosts do not carry it; replicate=\"copy\": the replicate command copies it, \"refuse\" (default): replicate refuses while it exists)",
         "has": "has(name): whether a per-atom array exists",
         "index_of_tag": "index_of_tag(tag): the owned row of a global id, or -1",
+        "num_bond": "(nall,) int32 bonds stored on each particle (on a bond's first particle only), in a scene with bonds",
+        "bond_type": "(nall, B) int32 their types (> 0 computed, < 0 turned off, 0 broken)",
+        "bond_atom": "(nall, B) int64 the id of each bond's other particle",
     },
     "Box": {
         "lo": "lower corner (3,)", "hi": "upper corner (3,)", "length": "hi - lo (3,)",

@@ -227,6 +227,19 @@ class Simulation:
             raise ScriptError("this neighbor list belongs to an earlier run: request it again in init_run")
         return self.neighbor.build_occasional(nlist, self.system.particles, self.system.box, self.run_state.step)
 
+    # ---- bonds -------------------------------------------------------------------------------------
+    def bond_single(self, bond_type, rsq):
+        """(F/r, energy) of one bond of ``bond_type`` at r^2 = ``rsq`` under the current run's bond
+        styles ((0, 0) for a type none computes, or before a run)."""
+        integrator = self.run_state.integrator
+        forces = getattr(integrator, "bond_forces", None)
+        return (0.0, 0.0) if forces is None else forces.single(int(bond_type), float(rsq))
+
+    def bonds(self):
+        """This rank's bonds as rows (i, j, type): i an owned row, j the nearest copy of its partner,
+        turned-off bonds (type < 0) included, broken ones (type 0) not."""
+        return self.system.topology.stored_bonds(self)
+
     # ---- running -----------------------------------------------------------------------------------
     def run_steps(self, nsteps, ramp_bounds=None):
         """Run ``nsteps`` timesteps (pdps_core/run/driver.py)."""

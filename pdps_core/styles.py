@@ -32,7 +32,7 @@ from pydantic_core import PydanticCustomError, core_schema
 from .errors import ScriptError
 from .state import limits
 
-KINDS = ("pair", "fix", "compute", "analyze", "dump", "region")
+KINDS = ("pair", "bond", "fix", "compute", "analyze", "dump", "region")
 TALLY = "pair_tally"    # the per-particle (energy, 6 virial components) array of Compute.peratom_tally
 
 
@@ -981,6 +981,46 @@ class PairLaw(Pair):
         return rows
 
 
+class Bond(Style):
+    r"""A bond style: ``bond_style NAME`` then ``bond_coeff N coeffs`` for each bond type; a force law,
+    the core owns the loop over the bonds (pdps_core/bond_loop.py, the bond list of
+    pdps_core/state/topology.py).
+
+    Subclasses give ``Coeff`` (the bond_coeff model), ``params`` (the per-type values the law reads,
+    in order), ``values(coeff)`` returning them from one type's Coeff, and ``law``, a numba function
+    (a ``staticmethod`` decorated ``@njit(cache=True, inline="always")``)::
+
+        law(rsq, coeff) -> (fbond, energy)
+
+    ``rsq`` = r^2 of the bond (distance^2), ``coeff`` its type's values as a tuple; it returns
+    ``fbond`` = F/r (force/distance units: the force on the first particle is ``fbond * (r_1 - r_2)``)
+    and the bond's energy (energy units). The core applies it to every bond of a type the style
+    owns, with Newton's third law (LAMMPS's newton_bond on), tallies energy and virial on the steps
+    that read them, and sums the forces on ghost partners back to their owners.
+    """
+    kind = "bond"
+    Coeff: ClassVar[type[StyleArgs]] = StyleArgs
+    coeff_usage: ClassVar[str] = ""
+    params: ClassVar[tuple] = ()
+    law: ClassVar = None
+
+    def __init__(self, sim, args):
+        self.sim = sim
+        self.args = args
+        self.coeffs = {}        # bond type -> Coeff
+
+    def parse_coeff(self, words):
+        return parse_args(self.Coeff, words, self.coeff_usage)
+
+    def values(self, coeff):
+        """The law's values of one bond type, in the order of ``params``, from its Coeff."""
+        return tuple(float(getattr(coeff, name)) for name in self.params)
+
+    def equilibrium_distance(self, coeff):
+        """r0 of one bond type (LAMMPS's Bond::equilibrium_distance), or None."""
+        return getattr(coeff, "r0", None)
+
+
 class Fix(Style):
     """A fix: joins the timestep through hooks. Define any of the methods named in
     ``pdps_core.run.hookspec`` (``initial_integrate(self, sim)``, ``post_force(self, sim)``, ...);
@@ -1386,7 +1426,7 @@ class SubModel(Style):
     kind = ""
 
 
-BASES = {"pair": Pair, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,
+BASES = {"pair": Pair, "bond": Bond, "fix": Fix, "compute": Compute, "analyze": Analyze, "dump": Dump,
          "region": Region}
 
 

@@ -107,8 +107,9 @@ INTRA, INTER = 2 * lj(1.1), 2 * lj(1.2) + 2 * lj(math.hypot(1.1, 1.2))
 def dimers(tmp_path, style="full", data=DIMER):
     (tmp_path / "dimers.data").write_text(data)
     sim = Simulation(screen=False, log=None)
-    sim.command(f"atom_style {style}\nread_data {tmp_path / 'dimers.data'}\n"
-                "pair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
+    # the bonds (at their rest length: no bond energy) leave the pairs in, as special_bonds 1 1 1 says
+    sim.command(f"atom_style {style}\nbond_style harmonic\nread_data {tmp_path / 'dimers.data'}\n"
+                "special_bonds lj/coul 1.0 1.0 1.0\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
                 "thermo_style custom step pe\nthermo_modify norm no")
     return sim
 
@@ -118,13 +119,13 @@ def pe(sim, exclusions=""):
     return sim.variables.evaluate("pe")
 
 
-def test_read_data_full_style_reads_molecules_and_charges_and_skips_the_bonds(tmp_path):
+def test_read_data_full_style_reads_molecules_charges_and_bonds(tmp_path):
     sim = dimers(tmp_path)
     order = np.argsort(sim.tag)
     np.testing.assert_array_equal(sim.particles.molecule[:4][order], [7, 7, 8, 8])
     np.testing.assert_array_equal(sim.particles.q[:4][order], [0.5, -0.5, 0.25, -0.25])
-    assert sim.warnings == ["read_data " + str(tmp_path / "dimers.data") + ": 2 bonds read past: pdps has no "
-                            "bond styles, so only the molecule ids take effect"]
+    assert sim.warnings == []
+    assert sorted(zip(sim.tag.tolist(), sim.particles.num_bond[:4].tolist())) == [(1, 1), (2, 0), (3, 1), (4, 0)]
 
 
 def test_exclude_molecule_intra_and_inter(tmp_path):

@@ -12,5 +12,5 @@ def command(*names):
     return register
 
 
-from . import (change_box, control, create_atoms, edit_atoms, geometry, minimize, particles,  # noqa: E402,F401
+from . import (bonds, change_box, control, create_atoms, edit_atoms, geometry, minimize, particles,  # noqa: E402,F401
                info, read_dump, replicate, restart, settings, setup, styles, velocity)  # (they register)

@@ -8,7 +8,7 @@ from numba import njit
 
 from ..errors import ScriptError
 from ..state import limits
-from . import command
+from . import COMMANDS, command
 from .geometry import make_box
 from .words import choice, count, integer, number, type_range
 
@@ -433,6 +433,21 @@ def _data_pair_coeffs(sim, data, name):
     return coeffs
 
 
+def _data_bonds(sim, data, start):
+    """The data file's bonds, each stored on its first particle (rows from ``start``)."""
+    p, topology = sim.particles, sim.system.topology
+    row_of = {int(tag): start + k for k, tag in enumerate(data.tags)}
+    owners = np.array([row_of[int(a)] for a in data.bonds[:, 1]], dtype=np.int64)
+    counts = np.bincount(owners - start, minlength=len(data.tags)) if len(owners) else np.zeros(len(data.tags), int)
+    topology.nbondtypes = data.nbondtypes
+    topology.extra_bonds = data.extra_bonds
+    topology.make_arrays(p, int(counts.max(initial=0)) + data.extra_bonds)
+    for (kind, _, partner), row in zip(data.bonds.tolist(), owners.tolist()):
+        slot = p.num_bond[row]
+        p.bond_type[row, slot], p.bond_atom[row, slot] = kind, partner
+        p.num_bond[row] = slot + 1
+
+
 @command("read_data")
 def read_data(sim, args):
     from ..state.data_file import read_data_file
@@ -446,6 +461,9 @@ def read_data(sim, args):
         raise ScriptError(f"{args[0]}: Masses: cannot set a per-type mass for atom_style sphere (LAMMPS's rule): "
                           "each particle's mass comes from its diameter and density columns")
     coeffs = _data_pair_coeffs(sim, data, args[0])
+    if data.bond_coeffs and sim.styles.bond is None:
+        raise ScriptError(f"{args[0]}:{data.bond_coeffs[0][0]}: the data file has bond coefficients: define the "
+                          "bond_style before read_data")
     make_box(sim, data.lo, data.hi, data.ntypes)
     for i, j, coeff in coeffs:
         sim.pair.coeff(i, j, coeff)
@@ -467,10 +485,20 @@ def read_data(sim, args):
         p.v[start:] = data.velocities
     if data.angular_velocities is not None:
         p.omega[start:] = data.angular_velocities
+    if data.bonds is not None:
+        _data_bonds(sim, data, start)
     sim.comm.distribute(p, sim.box)
     sim.groups.update(sim)
     sim.output.message(f"Read {len(data.tags)} particles from {args[0]}")
+    if data.bonds is not None:
+        sim.system.topology.build_special(sim)
+        sim.output.message(f"  {len(data.bonds)} bonds")
+    for number, words in data.bond_coeffs:
+        try:
+            COMMANDS["bond_coeff"](sim, words)
+        except ScriptError as exc:
+            raise ScriptError(f"{args[0]}:{number}: Bond Coeffs: {exc}") from None
     if data.skipped:
         listed = ", ".join(f"{amount} {kind}" for kind, amount in data.skipped.items())
-        sim.warn(f"read_data {args[0]}: {listed} read past: pdps has no bond styles, so only "
-                           "the molecule ids take effect")
+        sim.warn(f"read_data {args[0]}: {listed} read past: pdps has no angle styles, so "
+                           "they have no effect")

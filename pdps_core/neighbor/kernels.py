@@ -123,7 +123,7 @@ def bin_into(x, nall, nlocal, lo, binsize, nbins, keep_off, cell, start, ghost_s
 @njit(cache=True)
 def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_start, order, slot,
                owned_rows, ghost_rows, half, two_d, offsets, neighbors, excluded_types, excluded_groups,
-               molecule, excluded_molecules, moved):
+               molecule, excluded_molecules, moved, tag, special, nspecial, special_levels):
     """Neighbors of each owned particle of the group (``mask & groupbit``) within
     cutneighsq[type_i, type_j], into ``offsets`` (nlocal + 1) and ``neighbors``; particles outside the
     group have none. ``owned_rows`` and ``ghost_rows``: the stencil's rows of bins along x, (first,
@@ -133,7 +133,9 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
     mask bits, either order) or, for rows (group bit, 0 inter, 1 intra or 2 body) of
     ``excluded_molecules``, pairs of the group in different molecules (inter), in the same one
     (intra) or in the same one of id > 0 (body) are left out (neigh_modify exclude; fix
-    multisphere's bodies). ``moved``: the largest move of any particle since
+    multisphere's bodies), and so are an owned particle's special neighbors (``special[i]``, ids,
+    ``nspecial[i]`` the ends of its 1-2, 1-3 and 1-4 runs) of the levels ``special_levels`` marks
+    (special_bonds weights 0). ``moved``: the largest move of any particle since
     the ghosts were made (0 right after). Returns the number of pairs, or -1 when ``neighbors`` is
     too small.
 
@@ -141,6 +143,7 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
     reference counting on every candidate (20 times slower, measured)."""
     screen = excluded_groups.shape[0] > 0
     screen_molecules = excluded_molecules.shape[0] > 0
+    screen_special = nspecial.shape[0] > 0
     capacity = len(neighbors)
     # ghosts made now lie outside the owned particles' bounding box (outside the box or this rank's
     # part of it), and those made earlier outside that box shrunk by twice the largest move since: a
@@ -231,6 +234,21 @@ def build_list(x, type_, mask, groupbit, nlocal, cutneighsq, cell, start, ghost_
                                 ((kind == 0 and not same) or (kind == 1 and same) or (kind == 2 and same and molecule[i] > 0)):
                             left_out = True
                             break
+                    if left_out:
+                        continue
+                if screen_special:
+                    left_out = False
+                    first = 0
+                    for level in range(3):
+                        last = nspecial[i, level]
+                        if special_levels[level]:
+                            for e in range(first, last):
+                                if special[i, e] == tag[j]:
+                                    left_out = True
+                                    break
+                        if left_out:
+                            break
+                        first = last
                     if left_out:
                         continue
                 if k >= capacity:

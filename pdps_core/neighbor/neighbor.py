@@ -67,6 +67,8 @@ DIRECT_SKIN = 0.5
 # about 100 in dense LJ or DPD): a denser bin makes the loop allocate more for that call
 DIRECT_PARTNERS = 1024
 NO_MOLECULES = np.zeros(0, dtype=np.int64)      # build_list's molecule ids when there are none
+NO_SPECIAL = np.zeros((0, 1), dtype=np.int64)   # and its special neighbors (pdps_core/state/topology.py)
+NO_NSPECIAL = np.zeros((0, 3), dtype=np.int32)
 
 
 # neigh_modify exclude molecule/inter, molecule/intra, and within bodies (molecule ids > 0): the codes the
@@ -210,7 +212,9 @@ class Neighbor:
     def _direct_due(self):
         """Direct mode for the lists that allow it at the coming build: nearly every recent decision
         rebuilt, and no exclusions (the cell loops know none: such a scene keeps its lists)."""
-        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules)
+        levels = getattr(self, "_special_levels", None)
+        excluding = bool(self.excluded_type_pairs or self.excluded_group_pairs or self.excluded_molecules
+                         or (levels is not None and levels.any()))
         return bin(self.history).count("1") >= DIRECT_AT and not excluding
 
     def use_built_skin(self):
@@ -596,6 +600,18 @@ class Neighbor:
         self._excluded_molecules = np.array([[groups.bit(g), MOLECULE_EXCLUSIONS.index(kind)]
                                              for g, kind in self.excluded_molecules], dtype=np.uint32).reshape(-1, 2)
 
+    def special_exclusions(self, particles, topology):
+        """The special levels (1-2, 1-3, 1-4) whose pairs leave every list: those special_bonds weighs
+        0 (called at a run's start; none without bonds)."""
+        levels = topology.left_out_levels() if topology.has_bonds(particles) else np.zeros(3, dtype=np.bool_)
+        self._special_levels = levels.astype(np.bool_)
+
+    def _special(self, p):
+        levels = getattr(self, "_special_levels", None)
+        if levels is None or not levels.any() or not p.has("special"):
+            return NO_SPECIAL, NO_NSPECIAL, np.zeros(3, dtype=np.bool_)
+        return p.special, p.nspecial, levels
+
     def _fill(self, nlist, p, grid, skin, bins=None, moved=0.0):
         """Build ``nlist`` from particles binned on ``grid``: the lists' bins, or ``bins`` (cell,
         start, ghost_start, order, slot) binned on that grid. ``moved``: the largest move since the
@@ -624,7 +640,8 @@ class Neighbor:
             total = build_list(p.x, p.type, p.mask, np.uint32(nlist.groupbit), p.nlocal, cutneighsq, *binned,
                                owned_rows, ghost_rows,
                                nlist.half_list, grid[2][2] == 1, offsets, nlist.buffer, self._excluded_types,
-                               self._excluded_groups, molecule, self._excluded_molecules, float(moved))
+                               self._excluded_groups, molecule, self._excluded_molecules, float(moved),
+                               p.tag, *self._special(p))
             if total >= 0:
                 break
             if len(nlist.buffer) >= most:

@@ -6,7 +6,7 @@ eimp, emol, elong, etail, ecouple, econserve, vol, density, lx, ly, lz, xlo, xhi
 xy, xz, yz, fmax, fnorm, nbuild, ndanger, ``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``, ``f_ID...``,
 ``v_NAME`` and ``v_NAME[i]`` (indices from 0 in the PDPS dialect, from 1 in LAMMPS's). Energies are
 per particle in lj units (``thermo_modify norm yes``, LAMMPS's default there) and totals otherwise.
-Energies of interactions pdps has no style for (Coulomb, bonds, k-space) read 0, as in LAMMPS
+Energies of interactions pdps has no style for (Coulomb, angles, k-space) read 0, as in LAMMPS
 without them. A line is written at the start of a run, every N steps, and at the last step
 (``thermo 0``: first and last only), as the PDPS manual describes.
 
@@ -37,10 +37,10 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
            "pyz": "Pyz"}
 PRESSURE_TENSOR = ("pxx", "pyy", "pzz", "pxy", "pxz", "pyz")
 INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger"}
-ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve"}
+ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve", "ebond", "emol"}
 NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"},
          **{name: {"virial"} for name in PRESSURE_TENSOR}}
-ABSENT = {"ecoul", "ebond", "eangle", "edihed", "eimp", "emol", "elong", "xy", "xz", "yz"}
+ABSENT = {"ecoul", "eangle", "edihed", "eimp", "elong", "xy", "xz", "yz"}
 REFERENCE = re.compile(r"^(c|v|f)_([A-Za-z0-9_]+)((\[\d+\])*)$")
 BOUNDS = {"xlo": (0, 0), "xhi": (1, 0), "ylo": (0, 1), "yhi": (1, 1), "zlo": (0, 2), "zhi": (1, 2)}
 
@@ -100,6 +100,8 @@ def keyword_value(sim, name, indices=()):
         if name == "econserve":
             total += _ecouple(sim)
         return total / _normalise(sim)
+    if name in ("ebond", "emol"):
+        return obs.bond_energy(sim) / _normalise(sim)
     if name == "evdwl":
         # with the pair style's tail correction, as LAMMPS's thermo evdwl
         return obs.pair_energy(sim) / _normalise(sim)

@@ -9,7 +9,7 @@ from .minimize import MinSettings
 
 class RunState:
     __slots__ = ("step", "dt", "time", "run_first_step", "run_last_step", "ramp_bounds", "random_epoch",
-                 "highest_step", "pe", "evdwl", "virial", "pair_virial", "eflag", "vflag", "energy_step", "virial_step",
+                 "highest_step", "pe", "evdwl", "ebond", "virial", "pair_virial", "eflag", "vflag", "energy_step", "virial_step",
                  "in_setup", "in_init", "integrator", "run_wall_start", "restart_output", "min_settings",
                  "minimize_result", "box_changed", "tally_step", "tally_atom")
 
@@ -24,6 +24,7 @@ class RunState:
         self.highest_step = 0
         self.pe = 0.0
         self.evdwl = 0.0                # the pair style's share of pe (thermo evdwl)
+        self.ebond = 0.0                # the bond style's share of pe (thermo ebond)
         self.virial = np.zeros(6)
         self.pair_virial = np.zeros(6)  # the pair style's share of virial (compute pressure pair)
         self.eflag = False              # energy is computed on the current step (read by fixes)

@@ -3,7 +3,7 @@
 import time
 from collections import defaultdict
 
-STAGES = ("Pair", "Neigh", "Comm", "Modify", "Output", "Other")
+STAGES = ("Pair", "Bond", "Neigh", "Comm", "Modify", "Output", "Other")
 
 
 class Timers:

@@ -50,6 +50,7 @@ class Verlet:
         self.contributing = []
         self.tally_atom = []
         self.sized_radius = None        # per type, the radii the pair's cutoffs cover (radii that vary)
+        self.bond_forces = None         # the bond styles' loops (pdps_core/bond_loop.py), when bonds are computed
 
     # ---- setup ----------------------------------------------------------------------------------
     def _register_hooks(self):
@@ -88,6 +89,8 @@ class Verlet:
         self.reverse = ("f", "torque") if particles.has("torque") else ("f",)
         sim.neighbor.clear_requests()
         sim.neighbor.exclusions(sim.ntypes, sim.groups)
+        self.bond_forces = self._bond_setup()
+        sim.neighbor.special_exclusions(particles, sim.system.topology)
         sim.box.lost = sim.output.thermo.lost_policy()
         sim.neighbor.overrun = 0.0
         sim.styles.pair_list = None
@@ -128,6 +131,10 @@ class Verlet:
                 trial.begin(max(float(r.cutoff.max()) for r in sim.neighbor.requests))
             else:
                 sim.neighbor.skin_trial = None
+        if self.bond_forces is not None and not sim.neighbor.requests:
+            raise ScriptError("bonds are computed between particles and their ghosts, and no neighbor list "
+                              "makes ghosts here: define a pair style (pair_style zero CUTOFF, as long as the "
+                              "longest bond, if the scene has no other)")
         limits.check_images(sim.box, sim.neighbor.ghost_cutoff())
         limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
         # a shrink-wrapped box is fitted to the particles at every run's start, as LAMMPS's is
@@ -162,6 +169,8 @@ class Verlet:
         self._call("pre_neighbor")
         t1 = time.perf_counter()
         sim.neighbor.build(particles, sim.box)
+        if self.bond_forces is not None:
+            sim.system.topology.build_bond_list(sim)
         t2 = time.perf_counter()
         sim.timers.stage["Neigh"] += t2 - t1
         self._call("post_neighbor")
@@ -200,6 +209,8 @@ class Verlet:
         particles.x[:n] = sim.neighbor.xhold
         sim.comm.borders(particles, sim.box, sim.neighbor.ghost_cutoff())
         sim.neighbor.build(particles, sim.box, resume=True)
+        if self.bond_forces is not None:
+            sim.system.topology.build_bond_list(sim)
         particles.x[:n] = current
         sim.comm.forward_comm(particles, self.forward)
         sim.neighbor.refresh(particles, sim.box)
@@ -240,22 +251,59 @@ class Verlet:
                                  + [float(x[:, 0] @ f[:, 1]), float(x[:, 0] @ f[:, 2]),
                                     float(x[:, 1] @ f[:, 2])])
             sim.timers.stage["Pair"] += time.perf_counter() - t0
+            self._bond_forces(eflag, vflag)
             self._call("pre_reverse")
             t0 = time.perf_counter()
             sim.comm.reverse_comm(particles, self.reverse + ((TALLY,) if run.tally_atom else ()))
             sim.timers.stage["Comm"] += time.perf_counter() - t0
         else:
-            self._call("pre_reverse")
             if vflag:
                 run.virial[:] = 0.0
+            self._bond_forces(eflag, vflag)
+            self._call("pre_reverse")
+            if self.bond_forces is not None:
+                sim.comm.reverse_comm(particles, self.reverse)
         if eflag:
-            run.pe = run.evdwl = pair.energy if pair is not None else 0.0
+            run.evdwl = pair.energy if pair is not None else 0.0
+            run.pe = run.evdwl + run.ebond
             run.energy_step = run.step
         if vflag:
             run.pair_virial[:] = run.virial
+            if self.bond_forces is not None:
+                run.virial += self.bond_forces.virial
             run.virial_step = run.step
         if run.tally_atom:
             run.tally_step = run.step
+
+    def _bond_setup(self):
+        """The bond loops of this run, or None where no bond is computed (no bonds, bond_style none);
+        bonds with no bond style are ignored with LAMMPS's warning."""
+        sim = self.sim
+        topology, styles = sim.system.topology, sim.styles.bond
+        self.sim.run_state.ebond = 0.0
+        if not topology.has_bonds(sim.particles):
+            return None
+        if styles is None:
+            if int(sim.comm.sum(int(sim.particles.num_bond[:sim.particles.nlocal].sum()))) > 0:
+                sim.warn("Bonds are defined but no bond style is set: no bond forces are computed")
+            return None
+        from ..bond_loop import BondForces
+        styles.check_set(topology.nbondtypes)
+        forces = BondForces(sim)
+        return forces if forces.parts else None
+
+    def _bond_forces(self, eflag, vflag):
+        """The bonds' forces (before ghosts' forces are summed back), energy and virial when asked."""
+        if self.bond_forces is None:
+            return
+        sim = self.sim
+        t0 = time.perf_counter()
+        run = sim.run_state
+        tally = bool(eflag or vflag)
+        energy = self.bond_forces.compute(sim, tally)
+        if eflag:
+            run.ebond = energy
+        sim.timers.stage["Bond"] += time.perf_counter() - t0
 
     def _fix_contributions(self, stage="post_force"):
         """Fix energies and virials, where switched on, join the pair's: after post_force, when the

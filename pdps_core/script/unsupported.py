@@ -4,14 +4,13 @@ one stops there with one line saying so, rather than "unknown command"."""
 ALTERNATIVES = {
     "angle_coeff": "pdps has no angle styles", "angle_style": "pdps has no angle styles",
     "balance": "the processor grid is chosen at the start (processors)",
-    "bond_coeff": "pdps has no bond styles", "bond_style": "pdps has no bond styles",
     # headings of LIGGGHTS's manual that LIGGGHTS 3.8.0 itself does not know ("Unknown command", run 12-02)
     "neigh_settings": "neigh_modify (LIGGGHTS 3.8.0 itself has no neigh_settings)",
     "neighbor_skin": "neighbor SKIN bin (LIGGGHTS 3.8.0 itself has no neighbor_skin)",
     "orient": "lattice ... orient DIM I J K (LIGGGHTS 3.8.0 itself has no orient command)",
     "origin": "lattice ... origin X Y Z (LIGGGHTS 3.8.0 itself has no origin command)",
     "comm_style": "comm_modify cutoff",
-    "create_bonds": "pdps has no bonds", "delete_bonds": "pdps has no bonds",
+    "create_bonds": "bonds from a data file's Bonds section (read_data)",
     "dihedral_coeff": "pdps has no dihedral styles",
     "dihedral_style": "pdps has no dihedral styles", "dynamical_matrix": "none in pdps",
     "fitpod": "none in pdps", "group2ndx": "dump custom with id and the group",
@@ -25,7 +24,7 @@ ALTERNATIVES = {
     "prd": "none in pdps", "python": "drive pdps from Python: pdps_core.api.Simulation",
     "rerun": "none in pdps",
     "reset_atoms": "none in pdps", "reset_atom_ids": "none in pdps",
-    "special_bonds": "pdps has no bonds", "suffix": "nothing: pdps has one build of each style",
+    "suffix": "nothing: pdps has one build of each style",
     "tad": "none in pdps", "temper": "none in pdps", "timer": "the timing table printed after each run",
     "write_coeff": "none in pdps",
 }
@@ -67,8 +66,8 @@ STYLE_ALTERNATIVES = {
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"), ("fix", "nve/line"),
                           ("compute", "erotate/asphere"))},
-    **{(kind, name): "pdps has no bonds" for kind, name in (("fix", "bond/break"), ("fix", "bond/create"),
-                                                             ("compute", "bond/local"))},
+    **{("fix", name): "pdps's bonds come from a data file and change by delete_bonds only"
+       for name in ("bond/break", "bond/create")},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
     ("fix", "box/relax"): "none in pdps",
     ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",

@@ -12,9 +12,12 @@
     Pair Coeffs:        I coefficients...      (as pair_coeff I I ..., needs a pair_style first)
     PairIJ Coeffs:      I J coefficients...    (as pair_coeff I J ...)
 
-For the styles with molecule ids, the header's bond, angle, dihedral and improper counts and types and
-the sections that list them (Bonds, Bond Coeffs, ...) are read past: pdps has no bond styles.
-``DataFile.skipped`` says how many of each were, so that read_data can warn.
+    Bonds:              id type atom1 atom2    (each stored on atom1, as LAMMPS with newton_bond on)
+    Bond Coeffs:        N coefficients...      (as bond_coeff N ..., needs a bond_style first)
+
+For the styles with molecule ids, the header's bonds, bond types and extra bond per atom are read;
+its angle, dihedral and improper counts and types and the sections that list them are read past:
+pdps has no angle styles. ``DataFile.skipped`` says how many of each were, so that read_data can warn.
 """
 
 import re
@@ -32,8 +35,8 @@ SECTIONS = ("Masses", "Atoms", "Velocities")
 PAIR_SECTIONS = ("Pair Coeffs", "PairIJ Coeffs")
 TOPOLOGY = ("bonds", "angles", "dihedrals", "impropers")
 # sections of the topology pdps reads past (with a molecular style)
-SKIPPED_SECTIONS = ("Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
-                    "Dihedral Coeffs", "Improper Coeffs")
+SKIPPED_SECTIONS = ("Angles", "Dihedrals", "Impropers", "Angle Coeffs", "Dihedral Coeffs", "Improper Coeffs")
+BOND_SECTIONS = ("Bonds", "Bond Coeffs")
 
 
 @dataclass
@@ -53,6 +56,10 @@ class DataFile:
     skipped: dict = field(default_factory=dict)        # "bonds": 12, ...: topology read past
     pair_coeffs: list = field(default_factory=list)    # (line number, [I, J, coefficient words...])
     angular_velocities: np.ndarray = None               # spheres' wx wy wz from Velocities
+    nbondtypes: int = 0
+    extra_bonds: int = 0                                # extra bond per atom: room for bonds made later
+    bonds: np.ndarray = None                            # (nbonds, 3) int64: type, atom1, atom2
+    bond_coeffs: list = field(default_factory=list)     # (line number, [N, coefficient words...])
 
 
 def read_data_file(path, particle_style):
@@ -65,6 +72,7 @@ def read_data_file(path, particle_style):
     natoms, ntypes = None, None
     lo, hi = np.zeros(3), np.ones(3)
     masses, atoms, velocities, skipped, pair_coeffs = {}, [], {}, {}, []
+    nbonds, nbondtypes, extra_bonds, bond_lines, bond_coeffs = 0, 0, 0, [], []
     columns = style_columns(particle_style)
     spheres = "sphere" in substyles(particle_style)
     molecular = "molecule" in columns
@@ -85,6 +93,12 @@ def read_data_file(path, particle_style):
             two = " ".join(words[:2])
             if two in PAIR_SECTIONS:
                 section = two
+                continue
+            if head == "Bonds" or two == "Bond Coeffs":
+                if not molecular:
+                    fail(number, f"section {text} needs a particle_style with molecule ids (molecular, bond, "
+                                 f"angle or full), not {particle_style}")
+                section = "Bonds" if head == "Bonds" else two
                 continue
             if head in SKIPPED_SECTIONS or two in SKIPPED_SECTIONS:
                 if not molecular:
@@ -123,7 +137,19 @@ def read_data_file(path, particle_style):
                     d = "xyz".index(words[2][0])
                     lo[d], hi[d] = float(words[0]), float(words[1])
                 elif molecular and len(words) > 2 and words[1] == "extra" and text.endswith("per atom"):
-                    int(words[0])          # room LAMMPS reserves for bonds made later: nothing to do
+                    amount = int(words[0])
+                    if not 0 <= amount <= 64:
+                        fail(number, f"extra per atom must be from 0 to 64 (got {words[0]})")
+                    if text == f"{words[0]} extra bond per atom":
+                        extra_bonds = amount
+                elif text.endswith(("bonds", "bond types")) and molecular:
+                    amount = int(words[0])
+                    if not 0 <= amount <= (limits.MAX_TAG if text.endswith("bonds") else limits.MAX_TYPES):
+                        fail(number, f"a count must be >= 0 and in range: {text}")
+                    if text.endswith("bonds"):
+                        nbonds = amount
+                    else:
+                        nbondtypes = amount
                 elif any(text.endswith(k) for k in TOPOLOGY) or text.endswith("types"):
                     amount = int(words[0])
                     if amount != 0 and not molecular:
@@ -152,6 +178,19 @@ def read_data_file(path, particle_style):
                     fail(number, f"expected {width} or {width + 3} values per {particle_style} atom "
                                  f"(got {len(words)})")
                 atoms.append(number)        # its words are split again below, one line at a time
+            elif section == "Bonds":
+                if len(words) != 4:
+                    fail(number, f"expected id type atom1 atom2 in Bonds (got {text})")
+                values = [int(w) for w in words]
+                if not 1 <= values[1] <= nbondtypes:
+                    fail(number, f"bond type {words[1]} is out of range 1..{nbondtypes}")
+                if values[2] == values[3]:
+                    fail(number, f"a bond joins two particles, not atom {words[2]} to itself")
+                bond_lines.append((number, values))
+            elif section == "Bond Coeffs":
+                if not words[0].isdigit() or not 1 <= int(words[0]) <= nbondtypes:
+                    fail(number, f"bond type {words[0]} is out of range 1..{nbondtypes} in Bond Coeffs")
+                bond_coeffs.append((number, words))
             elif section in PAIR_SECTIONS:
                 width = 1 if section == "Pair Coeffs" else 2
                 if len(words) < width or not all(w.isdigit() for w in words[:width]):
@@ -254,5 +293,14 @@ def read_data_file(path, particle_style):
     for number, words in pair_coeffs:
         if not all(1 <= int(w) <= ntypes for w in words[:2]):
             fail(number, f"pair coefficients for types {words[0]} {words[1]} out of range 1..{ntypes}")
+    if len(bond_lines) != nbonds:
+        fail(len(lines), f"header says {nbonds} bonds but the Bonds section has {len(bond_lines)}")
+    bonds = np.zeros((len(bond_lines), 3), dtype=np.int64)
+    for k, (number, values) in enumerate(bond_lines):
+        for atom in values[2:]:
+            if atom not in seen:
+                fail(number, f"Bonds name atom {atom}, which is not in Atoms")
+        bonds[k] = values[1:]
     return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped,
-                    pair_coeffs, omega)
+                    pair_coeffs, omega, nbondtypes, extra_bonds, bonds if nbonds or nbondtypes or extra_bonds else None,
+                    bond_coeffs)

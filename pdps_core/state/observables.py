@@ -207,6 +207,12 @@ def potential_energy(sim):
     return float(sim.comm.sum(sim.pe)) + tail_corrections(sim)[0]
 
 
+def bond_energy(sim):
+    """The bond styles' energy (LAMMPS's ebond; emol, as pdps has no angle styles)."""
+    sim.run_state.require_energy()
+    return float(sim.comm.sum(sim.run_state.ebond))
+
+
 def pair_energy(sim):
     """The pair style's energy (LAMMPS's evdwl, with the tail correction), without fixes'."""
     sim.run_state.require_energy()

@@ -59,7 +59,7 @@ KNOWN = {
 
 # The particle styles (LAMMPS's atom styles) pdps reads: the per-atom arrays each one adds to the core
 # ones, and the columns of its lines in a data file's Atoms section (image flags may follow). The bond,
-# angle and full styles read molecule ids; their bonds and angles are skipped, as pdps has no bond styles.
+# angle and full styles read molecule ids and bonds (pdps_core/state/topology.py); their angles are skipped.
 PARTICLE_STYLES = {
     "atomic": ((), ("id", "type", "x", "y", "z")),
     "sphere": (("radius", "rmass", "omega", "torque"), ("id", "type", "diameter", "density", "x", "y", "z")),

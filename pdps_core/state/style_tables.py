@@ -8,11 +8,12 @@ from ..errors import ScriptError
 
 
 class StyleTables:
-    __slots__ = ("sim", "pair", "pair_list", "fixes", "computes", "analyzes", "restored_states")
+    __slots__ = ("sim", "pair", "bond", "pair_list", "fixes", "computes", "analyzes", "restored_states")
 
     def __init__(self, sim):
         self.sim = sim                  # for the dialect's index base
         self.pair = None
+        self.bond = None                # the bond style (commands/bonds.py BondStyles), or None
         self.pair_list = None           # the pair style's NeighborList, once a run set it up
         self.fixes = {}
         self.computes = {}

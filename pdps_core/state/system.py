@@ -6,6 +6,7 @@ import numpy as np
 
 from ..errors import ScriptError
 from .groups import Groups
+from .topology import Topology
 from .particles import Particles, substyles
 from .units import UNITS
 
@@ -13,7 +14,7 @@ from .units import UNITS
 class System:
     __slots__ = ("sim", "units", "dimension", "periodicity", "box", "shrink_faces", "ntypes", "mass",
                  "particle_style", "lattice", "particles", "groups", "regions", "processors",
-                 "ghost_velocity", "stiffness_checks", "dielectric")
+                 "ghost_velocity", "stiffness_checks", "dielectric", "topology")
 
     def __init__(self, sim):
         self.sim = sim                  # for group selections (regions, variables)
@@ -33,6 +34,7 @@ class System:
         self.ghost_velocity = False     # comm_modify vel yes: ghosts carry velocities
         # LIGGGHTS's bounds on youngsModulus, lifted by soft_particles yes / hard_particles yes
         self.stiffness_checks = {"soft": True, "hard": True}
+        self.topology = Topology()      # bonds: their types, special_bonds, the bond list
         self.dielectric = 1.0           # the dielectric command's, for Coulombic styles (pdps has none yet)
 
     @property
