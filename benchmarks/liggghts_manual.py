@@ -46,7 +46,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PAGE = ROOT / "docs" / "liggghts.md"
 BEGIN, END = "<!-- manual:begin -->", "<!-- manual:end -->"
 # heading words -> pdps's style kind
-KINDS = {"fix": "fix", "compute": "compute", "pair_style": "pair", "dump": "dump", "region": "region"}
+KINDS = {"fix": "fix", "compute": "compute", "pair_style": "pair", "bond_style": "bond", "dump": "dump", "region": "region"}
 # "gran KIND NAME model" -> the sub-model kind of pdps's pair gran
 SUBMODELS = {"model": "gran.normal", "tangential": "gran.tangential", "cohesion": "gran.cohesion",
              "rolling_friction": "gran.rolling", "surface": "gran.surface"}
@@ -86,6 +86,15 @@ LAMMPS_CHECKED = {
     ("fix", "rigid/small"): "LAMMPS: plugins/fix_rigid/tests/test_rigid_small_lammps.py (LIGGGHTS 3.8.0 has none)",
     ("compute", "msd/nongauss"): "LAMMPS: plugins/compute_basic/tests/test_compute_basic.py "
                                  "(test_msd_nongauss_as_lammps; LIGGGHTS 3.8.0 has none)",
+    # LIGGGHTS 3.8.0 lists no bond style (liggghts -h), so bonds have no LIGGGHTS numbers
+    **{key: f"LAMMPS: plugins/bond_basic/tests/data/bonds.cases.json ({cases}; LIGGGHTS 3.8.0 has no bond style)"
+       for key, cases in ((("bond_style", None), "every case"), (("bond_coeff", None), "every case"),
+                          (("bond_style", "harmonic"), "harmonic, harmonic_star, 2 ranks"),
+                          (("bond_style", "hybrid"), "hybrid; none sub-style: test_bonds.py"),
+                          (("bond_style", "none"), "none"),
+                          (("delete_bonds", None), "delete_bonds, delete_keep_special, 2 ranks"))},
+    ("compute", "bond/local"): "LAMMPS: plugins/bond_basic/tests/test_bonds.py (test_bond_local_gives_lammps_rows; "
+                               "LIGGGHTS 3.8.0 has no bond style)",
 }
 CHECKED.update(LAMMPS_CHECKED)
 # the sub-models, each in the pair, wall and mesh cases of plugins/pair_gran/tests/data/liggghts_submodels.json
@@ -245,8 +254,8 @@ def answer(family, name, styles):
         kind, _, sub = name.partition(" ")
         sub = "default" if (kind, sub) == ("surface", "sphere") else sub
         return ("style", "") if sub in registry.names(SUBMODELS[kind]) else ("unknown", "")
-    if (family, name) == ("pair_style", "none"):
-        return "command", "pair_style none"
+    if (family, name) in (("pair_style", "none"), ("bond_style", "none"), ("bond_style", "hybrid")):
+        return "command", f"{family} {name}"
     kind = KINDS.get(family)
     if name is None or kind is None:
         command = family if name is None else family
