@@ -298,7 +298,7 @@ def table(texts):
     lines += ["", f"{len(counted)} items (CFD coupling left out): {known} known to pdps, {refused} refused with "
                   f"a reason, {len(counted) - known - refused} unknown; {complete} styles read every keyword "
                   f"of their page; {fully} work fully (known, every keyword, numbers checked against LIGGGHTS's, "
-                  f"or LAMMPS's for the {len(LAMMPS_CHECKED)} styles LIGGGHTS 3.8.0 lacks or cannot run here)."]
+                  f"or LAMMPS's for the {len(LAMMPS_CHECKED)} items LIGGGHTS 3.8.0 lacks or cannot run here)."]
     return "\n".join(lines)
 
 

@@ -111,8 +111,8 @@ def test_the_manual_items_and_what_pdps_makes_of_them():
     assert "| `run` | command |  | plugins/fix_granular/tests/data/liggghts.cases.json (bed" in text
     assert text.endswith("5 items (CFD coupling left out): 3 known to pdps, 1 refused with a reason, 1 unknown; "
                          "0 styles read every keyword of their page; 2 work fully (known, every keyword, numbers "
-                         "checked against LIGGGHTS's, or LAMMPS's for the 8 styles LIGGGHTS 3.8.0 lacks or cannot run "
-                         "here).")
+                         f"checked against LIGGGHTS's, or LAMMPS's for the {len(manual.LAMMPS_CHECKED)} items LIGGGHTS 3.8.0 "
+                         "lacks or cannot run here).")
     # headings in a row share the page after them; LAMMPS's page rules some keywords out for rigid/small
     shared = manual.sections(["fix rigid command :h3\n\nfix rigid/small command :h3\n[Syntax:]\n"
                               "keyword = {temp} or {infile} :l\n[Examples:]\n"])
