@@ -110,7 +110,7 @@ DATA_SCRIPTS = {
               "fix g all gravity 1.0 vector 0 0 -1\nfix 1 all rigid/small molecule\ntimestep 0.001\n"
               "thermo 5\nthermo_style custom step atoms pe\n"
               "dump 1 all custom 5 dump.fuzz id mol x y z radius omegax\nrun 10\nwrite_data out.data\n",
-    "full": "atom_style full\nread_data data.fuzz\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
+    "full": "atom_style full\nbond_style harmonic\nread_data data.fuzz\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
             "group first molecule 1\nneigh_modify exclude molecule/intra all exclude molecule/inter first\n"
             "fix 1 all nve\ntimestep 0.002\nthermo 5\nthermo_style custom step atoms pe ke press\n"
             "dump 1 all custom 5 dump.fuzz id mol type q x y z\nrun 10\n",
