@@ -451,13 +451,28 @@ def write_data(sim, args):
     # spheres' lines carry their angular velocity too, as LAMMPS writes them
     spin = [p.omega[:n]] if sphere else []
     velocities = sim.comm.gather_rows(np.column_stack([p.tag[:n].astype(np.float64), p.v[:n]] + spin))
+    bonds = None
+    if p.has("num_bond"):
+        # every stored bond (turned-off ones with their negative type, as LAMMPS writes them)
+        slots = np.arange(p.bond_type.shape[1])[None, :] < p.num_bond[:n, None]
+        owners = np.repeat(p.tag[:n], p.num_bond[:n])
+        bonds = sim.comm.gather_rows(np.column_stack([p.bond_type[:n][slots], owners, p.bond_atom[:n][slots]])
+                                     .astype(np.float64)).astype(np.int64).reshape(-1, 3)
+        bonds = bonds[bonds[:, 0] != 0]        # broken ones are gone
     if not sim.comm.is_root:
         return
     atoms = atoms[np.argsort(atoms[:, 0])]
     velocities = velocities[np.argsort(velocities[:, 0])]
     box = sim.box
     lines = [f"LAMMPS data file via pdps write_data, timestep = {sim.step}, units = {sim.units.name}", "",
-             f"{len(atoms)} atoms", f"{sim.ntypes} atom types", ""]
+             f"{len(atoms)} atoms", f"{sim.ntypes} atom types"]
+    if bonds is not None:
+        topology = sim.system.topology
+        lines += [f"{len(bonds)} bonds", f"{topology.nbondtypes} bond types"]
+        width = p.bond_type.shape[1]
+        most = int(np.unique(bonds[:, 1], return_counts=True)[1].max()) if len(bonds) else 0
+        lines += [f"{width - most} extra bond per atom"]
+    lines += [""]
     lines += [f"{lo!r} {hi!r} {a}lo {a}hi" for lo, hi, a in zip(box.lo.tolist(), box.hi.tolist(), "xyz")]
     if not sphere:
         lines += ["", "Masses", ""]
@@ -468,6 +483,10 @@ def write_data(sim, args):
         lines.append(" ".join(numbers + [f"{int(v)}" for v in row[-3:]]))
     lines += ["", "Velocities", ""]
     lines += [" ".join([f"{int(row[0])}"] + [repr(v) for v in row[1:]]) for row in velocities.tolist()]
+    if bonds is not None and len(bonds):
+        bonds = bonds[np.lexsort((bonds[:, 2], bonds[:, 1]))]
+        lines += ["", "Bonds", ""]
+        lines += [f"{k + 1} {kind} {a} {b}" for k, (kind, a, b) in enumerate(bonds.tolist())]
     path = sim.resolve(args[0])
     try:
         with open(path, "w") as handle:

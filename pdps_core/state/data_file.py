@@ -182,7 +182,8 @@ def read_data_file(path, particle_style):
                 if len(words) != 4:
                     fail(number, f"expected id type atom1 atom2 in Bonds (got {text})")
                 values = [int(w) for w in words]
-                if not 1 <= values[1] <= nbondtypes:
+                # a bond turned off (delete_bonds) is written with its type negative
+                if not 1 <= abs(values[1]) <= nbondtypes:
                     fail(number, f"bond type {words[1]} is out of range 1..{nbondtypes}")
                 if values[2] == values[3]:
                     fail(number, f"a bond joins two particles, not atom {words[2]} to itself")

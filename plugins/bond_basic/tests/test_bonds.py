@@ -148,3 +148,19 @@ def test_bonds_in_an_atomic_data_file_are_refused(tmp_path):
     sim = Simulation(screen=False, log=None, dialect="lammps")
     with pytest.raises(ScriptError, match="2 bonds need a particle_style with molecule ids"):
         sim.command(f"atom_style atomic\nread_data {tmp_path / 'trimer.data'}")
+
+
+def test_write_data_keeps_the_bonds_and_restart_files_refuse_them(tmp_path):
+    shutil.copy(DATA / "chains.data", tmp_path)
+    script = (f"units lj\natom_style bond\nread_data {tmp_path / 'chains.data'}\npair_style soft 2.5\n"
+              "pair_coeff * * 5.0\nbond_style harmonic\nbond_coeff 1 100.0 1.0\nbond_coeff 2 80.0 0.95\n"
+              "thermo_style custom step pe ebond\nthermo_modify norm no\n")
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(script + f"delete_bonds all bond 2\nrun 0\nwrite_data {tmp_path / 'out.data'}")
+    energy = (sim.variables.evaluate("pe"), sim.variables.evaluate("ebond"))
+    again = Simulation(screen=False, log=None, dialect="lammps")
+    again.command(script.replace(str(tmp_path / "chains.data"), str(tmp_path / "out.data")) + "run 0")
+    assert (again.variables.evaluate("pe"), again.variables.evaluate("ebond")) == pytest.approx(energy, rel=1e-14)
+    assert int((again.particles.bond_type[:again.particles.nlocal] < 0).sum()) == 80
+    with pytest.raises(ScriptError, match="restart files do not keep bonds yet"):
+        again.command(f"write_restart {tmp_path / 'r.restart'}")
