@@ -138,11 +138,14 @@ class Topology:
             self.bond_list = np.empty((int(1.25 * total) + 16, 3), dtype=np.int64)
         found = _list_bonds(p.x, p.nlocal, p.num_bond, p.bond_type, p.bond_atom, self._sorted[:nall],
                             self._order[:nall], self.bond_list)
+        message = None
         if found < 0:
             i, b = divmod(-found - 1, p.bond_type.shape[1])
-            raise SimulationError(f"bond atoms {int(p.tag[i])} {int(p.bond_atom[i, b])} missing at step "
-                                  f"{sim.step}: the partner is on no rank's reach (a bond longer than the "
-                                  "ghost cutoff, comm_modify cutoff, or a particle lost or deleted)")
+            message = (f"bond atoms {int(p.tag[i])} {int(p.bond_atom[i, b])} missing at step {sim.step}: the "
+                       "partner is out of this rank's reach (a bond longer than the ghost cutoff: a longer pair "
+                       "cutoff or comm_modify cutoff; or a particle lost or deleted)")
+        # every rank learns of one rank's missing partner (collective, once per rebuild)
+        sim.comm.agree(message)
         self.nbondlist = found
 
     def bonds(self):

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError, Simulation
+from pdps_core.api import ScriptError, Simulation, SimulationError
 from pdps_core.testing import assert_force_is_minus_gradient
 
 DATA = Path(__file__).parent / "data"
@@ -164,3 +164,10 @@ def test_write_data_keeps_the_bonds_and_restart_files_refuse_them(tmp_path):
     assert int((again.particles.bond_type[:again.particles.nlocal] < 0).sum()) == 80
     with pytest.raises(ScriptError, match="restart files do not keep bonds yet"):
         again.command(f"write_restart {tmp_path / 'r.restart'}")
+
+
+def test_a_deleted_partner_stops_the_run_with_lammps_message(tmp_path):
+    sim = trimer(tmp_path, "bond_style harmonic\nbond_coeff * 1.0 1.0\ngroup last id 3\ndelete_atoms group last")
+    with pytest.raises(SimulationError, match=re.escape("bond atoms 2 3 missing at step 0: the partner is out of "
+                                                        "this rank's reach")):
+        sim.command("run 0")
