@@ -95,6 +95,12 @@ LAMMPS_CHECKED = {
                           (("delete_bonds", None), "delete_bonds, delete_keep_special, 2 ranks"))},
     ("compute", "bond/local"): "LAMMPS: plugins/bond_basic/tests/test_bonds.py (test_bond_local_gives_lammps_rows; "
                                "LIGGGHTS 3.8.0 has no bond style)",
+    ("fix", "bond/break"): "LAMMPS: plugins/bond_basic/tests/data/bond_topology.cases.json (break, break_group, "
+                           "create_and_break, 2 ranks); prob: test_bond_topology.py, binomial (LIGGGHTS 3.8.0 has no "
+                           "bond style)",
+    ("fix", "bond/create"): "LAMMPS: plugins/bond_basic/tests/data/bond_topology.cases.json (create, iparam/jparam "
+                            "types dumped, special 0 0 0 / 0 1 1 / 1 1 1, create_and_break, 2 ranks); prob: "
+                            "test_bond_topology.py (LIGGGHTS 3.8.0 has no bond style)",
 }
 CHECKED.update(LAMMPS_CHECKED)
 # the sub-models, each in the pair, wall and mesh cases of plugins/pair_gran/tests/data/liggghts_submodels.json

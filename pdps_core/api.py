@@ -70,6 +70,9 @@ CONTRACT = {
         # the other styles and script objects
         "pair": "the pair style, or None",
         "bonds": "bonds(): this rank's bonds as rows (i, j, type), i owned, j the nearest copy of its partner, turned-off ones (type < 0) included",
+        "nbondtypes": "number of bond types of the box (0 without bonds)",
+        "create_bonds": "create_bonds(pairs, bond_type): new bonds between id pairs (k, 2), the same on every rank; special lists made again",
+        "break_bonds": "break_bonds(pairs): delete the bonds between id pairs (k, 2), the same on every rank; special lists made again",
         "bond_single": "bond_single(type, rsq): (F/r, energy) of one bond of that type at r^2 = rsq under the run's bond styles",
         "pair_list": "the pair style's neighbor list (NeighborList), once a run set it up",
         "fixes": "{id: fix} in script order",
@@ -117,6 +120,8 @@ CONTRACT = {
         "num_bond": "(nall,) int32 bonds stored on each particle (on a bond's first particle only), in a scene with bonds",
         "bond_type": "(nall, B) int32 their types (> 0 computed, < 0 turned off, 0 broken)",
         "bond_atom": "(nall, B) int64 the id of each bond's other particle",
+        "nspecial": "(nall, 3) int32 per owned particle: n12, n12 + n13, n12 + n13 + n14 (ghosts do not carry it)",
+        "special": "(nall, S) int64 per owned particle: the ids of its 1-2, then 1-3, then 1-4 neighbors",
     },
     "Box": {
         "lo": "lower corner (3,)", "hi": "upper corner (3,)", "length": "hi - lo (3,)",

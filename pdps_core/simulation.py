@@ -240,6 +240,22 @@ class Simulation:
         turned-off bonds (type < 0) included, broken ones (type 0) not."""
         return self.system.topology.stored_bonds(self)
 
+    @property
+    def nbondtypes(self):
+        """The box's number of bond types (0 without bonds)."""
+        return self.system.topology.nbondtypes
+
+    def create_bonds(self, pairs, bond_type):
+        """New bonds of ``bond_type`` between the id pairs ``pairs`` ((k, 2), the same rows on every
+        rank; fix bond/create), the special lists made again; a fix doing this mid-run also sets
+        ``next_reneighbor`` to this step, so the neighbor lists see the new exclusions."""
+        self.system.topology.create_bonds(self, pairs, int(bond_type))
+
+    def break_bonds(self, pairs):
+        """Delete the bonds between the id pairs ``pairs`` ((k, 2), the same rows on every rank; fix
+        bond/break), the special lists made again (set ``next_reneighbor`` as for create_bonds)."""
+        self.system.topology.break_bonds(self, pairs)
+
     # ---- running -----------------------------------------------------------------------------------
     def run_steps(self, nsteps, ramp_bounds=None):
         """Run ``nsteps`` timesteps (pdps_core/run/driver.py)."""

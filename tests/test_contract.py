@@ -139,14 +139,14 @@ def test_every_name_in_the_contract_exists(tmp_path):
     # body_mass exists where a fix of rigid bodies provides it
     # bonds' arrays exist in a scene with bonds
     assert missing == ["Particles.molecule", "Particles.q", "Particles.body_mass", "Particles.num_bond",
-                       "Particles.bond_type", "Particles.bond_atom"]
+                       "Particles.bond_type", "Particles.bond_atom", "Particles.nspecial", "Particles.special"]
     assert hasattr(full.particles, "molecule") and hasattr(full.particles, "q")
     (tmp_path / "bonded.data").write_text("two bonded\n\n2 atoms\n1 atom types\n1 bonds\n1 bond types\n\n"
                                           "0 5 xlo xhi\n0 5 ylo yhi\n0 5 zlo zhi\n\nMasses\n\n1 1\n\n"
                                           "Atoms # bond\n\n1 1 1 1 1 1\n2 1 1 2 1 1\n\nBonds\n\n1 1 1 2\n")
     bonded = Simulation(screen=False, log=None)
     bonded.command(f"particle_style bond\nread_data {tmp_path / 'bonded.data'}")
-    assert all(hasattr(bonded.particles, name) for name in ("num_bond", "bond_type", "bond_atom"))
+    assert all(hasattr(bonded.particles, name) for name in ("num_bond", "bond_type", "bond_atom", "nspecial", "special"))
     # contacts(sim, group) is the ContactTable capability: LIGGGHTS's gran and the dem styles have it
     from pdps_core.api import ContactTable
     assert isinstance(sim.pair, ContactTable)

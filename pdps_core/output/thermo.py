@@ -3,7 +3,8 @@
 Keywords, as LAMMPS's thermo_style names them: step, elapsed, elaplong, dt, time, cpu, tpcpu, spcpu,
 cpuremain, atoms, temp, press, pe, ke, etotal, enthalpy, evdwl, ecoul, epair, ebond, eangle, edihed,
 eimp, emol, elong, etail, ecouple, econserve, vol, density, lx, ly, lz, xlo, xhi, ylo, yhi, zlo, zhi,
-xy, xz, yz, fmax, fnorm, nbuild, ndanger, ``c_ID``, ``c_ID[i]``, ``c_ID[i][j]``, ``f_ID...``,
+xy, xz, yz, fmax, fnorm, nbuild, ndanger, bonds (angles, dihedrals, impropers: 0), ``c_ID``, ``c_ID[i]``,
+``c_ID[i][j]``, ``f_ID...``,
 ``v_NAME`` and ``v_NAME[i]`` (indices from 0 in the PDPS dialect, from 1 in LAMMPS's). Energies are
 per particle in lj units (``thermo_modify norm yes``, LAMMPS's default there) and totals otherwise.
 Energies of interactions pdps has no style for (Coulomb, angles, k-space) read 0, as in LAMMPS
@@ -33,10 +34,11 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
            "econserve": "Econserve", "vol": "Volume", "density": "Density", "lx": "Lx", "ly": "Ly",
            "lz": "Lz", "xlo": "Xlo", "xhi": "Xhi", "ylo": "Ylo", "yhi": "Yhi", "zlo": "Zlo", "zhi": "Zhi",
            "xy": "Xy", "xz": "Xz", "yz": "Yz", "fmax": "Fmax", "fnorm": "Fnorm", "nbuild": "Nbuild",
-           "ndanger": "Ndanger", "pxx": "Pxx", "pyy": "Pyy", "pzz": "Pzz", "pxy": "Pxy", "pxz": "Pxz",
+           "ndanger": "Ndanger", "bonds": "Bonds", "angles": "Angles", "dihedrals": "Diheds",
+           "impropers": "Impros", "pxx": "Pxx", "pyy": "Pyy", "pzz": "Pzz", "pxy": "Pxy", "pxz": "Pxz",
            "pyz": "Pyz"}
 PRESSURE_TENSOR = ("pxx", "pyy", "pzz", "pxy", "pxz", "pyz")
-INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger"}
+INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger", "bonds", "angles", "dihedrals", "impropers"}
 ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve", "ebond", "emol"}
 NEEDS = {**{name: {"energy"} for name in ENERGY}, "press": {"virial"}, "enthalpy": {"energy", "virial"},
          **{name: {"virial"} for name in PRESSURE_TENSOR}}
@@ -71,6 +73,11 @@ def keyword_value(sim, name, indices=()):
         sim.require_box(f"thermo keyword {name}")
     if name == "atoms":
         return obs.count(sim)
+    if name == "bonds":
+        p = sim.particles
+        return int(sim.comm.sum(int(p.num_bond[:p.nlocal].sum()))) if p.has("num_bond") else 0
+    if name in ("angles", "dihedrals", "impropers"):
+        return 0
     if name == "temp":
         return sim.output.thermo.temperature()
     if name == "press":

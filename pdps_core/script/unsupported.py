@@ -66,8 +66,6 @@ STYLE_ALTERNATIVES = {
     **{(kind, name): "pdps simulates spheres only"
        for kind, name in (("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"), ("fix", "nve/line"),
                           ("compute", "erotate/asphere"))},
-    **{("fix", name): "pdps's bonds come from a data file and change by delete_bonds only"
-       for name in ("bond/break", "bond/create")},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
     ("fix", "box/relax"): "none in pdps",
     ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",

@@ -352,6 +352,20 @@ class Particles:
         self.arrays[name] = self._store[name][:self.nlocal + self.nghost]
         return self.arrays[name]
 
+    def widen(self, name, width):
+        """Make a per-atom array ``width`` columns wide, its values kept and the new columns at the
+        default (room for more bonds per particle). Every rank must widen alike: rows travel
+        between ranks with one width."""
+        prop = self.properties[name]
+        if width <= prop.width:
+            return self.arrays[name]
+        wider = replace(prop, width=width)
+        grown = self._empty(wider, self._capacity())
+        grown[:, :prop.width] = self._store[name].reshape(len(grown), -1)
+        self.properties[name], self._store[name] = wider, grown
+        self.arrays[name] = grown[:self.nlocal + self.nghost]
+        return self.arrays[name]
+
     def request_all(self, entries):
         """Allocate what a style's ``per_atom`` lists: names, or (name, width) pairs."""
         for entry in entries:

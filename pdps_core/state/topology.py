@@ -106,21 +106,65 @@ class Topology:
         for a, b in every.tolist():
             bonded.setdefault(a, set()).add(b)
             bonded.setdefault(b, set()).add(a)
-        capacity = p.special.shape[1]
-        for row, tag in enumerate(p.tag[:n].tolist()):
+        lists = []
+        for tag in p.tag[:n].tolist():
             one_two = sorted(bonded.get(tag, ()))
             seen = {tag, *one_two}
             one_three = sorted({c for b in one_two for c in bonded.get(b, ())} - seen)
             seen.update(one_three)
             one_four = sorted({d for c in one_three for d in bonded.get(c, ())} - seen)
+            lists.append((one_two, one_three, one_four))
+        # room for the longest list on any rank (bonds made by fix bond/create lengthen them)
+        longest = int(sim.comm.max(max((sum(map(len, levels)) for levels in lists), default=0)))
+        if longest > p.special.shape[1]:
+            p.widen("special", longest + 4)
+        for row, (one_two, one_three, one_four) in enumerate(lists):
             listed = one_two + one_three + one_four
-            if len(listed) > capacity:
-                raise SimulationError(f"particle {tag} has {len(listed)} special neighbors, more than the "
-                                      f"{capacity} room was made for (fewer bonds per particle, or a "
-                                      "larger extra bond per atom)")
             p.special[row, :len(listed)] = listed
             p.special[row, len(listed):] = 0
             p.nspecial[row] = (len(one_two), len(one_two) + len(one_three), len(listed))
+
+    # ---- bonds made and broken during a run (fix bond/create, fix bond/break) ------------------
+    def create_bonds(self, sim, pairs, bond_type):
+        """Bonds of ``bond_type`` between the id pairs ``pairs`` (k, 2), the same rows on every rank,
+        each stored on the particle of the smaller id (LAMMPS's newton_bond), the special lists made
+        again. Room for more bonds per particle is made as needed, on every rank alike."""
+        p = sim.particles
+        pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
+        rows = _owned_rows(p, pairs[:, 0])
+        mine = rows >= 0
+        counts = np.bincount(rows[mine], minlength=p.nlocal) if mine.any() else np.zeros(p.nlocal, np.int64)
+        need = int(sim.comm.max(int((p.num_bond[:p.nlocal] + counts[:p.nlocal]).max(initial=0))))
+        if need > p.bond_type.shape[1]:
+            p.widen("bond_type", need)
+            p.widen("bond_atom", need)
+        for row, partner in zip(rows[mine].tolist(), pairs[mine, 1].tolist()):
+            slot = p.num_bond[row]
+            p.bond_type[row, slot] = bond_type
+            p.bond_atom[row, slot] = partner
+            p.num_bond[row] = slot + 1
+        self.build_special(sim)
+
+    def break_bonds(self, sim, pairs):
+        """Delete the bonds between the id pairs ``pairs`` (k, 2), the same rows on every rank, from
+        whichever of their particles stores them, and make the special lists again."""
+        p = sim.particles
+        pairs = np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
+        both = np.concatenate([pairs, pairs[:, ::-1]])
+        for row, partner in zip(_owned_rows(p, both[:, 0]).tolist(), both[:, 1].tolist()):
+            if row < 0:
+                continue
+            count = int(p.num_bond[row])
+            slots = [k for k in range(count) if p.bond_atom[row, k] == partner]
+            if not slots:
+                continue
+            keep = [k for k in range(count) if k != slots[0]]
+            p.bond_type[row, :len(keep)] = p.bond_type[row, keep]
+            p.bond_atom[row, :len(keep)] = p.bond_atom[row, keep]
+            p.bond_type[row, len(keep):count] = 0
+            p.bond_atom[row, len(keep):count] = 0
+            p.num_bond[row] = len(keep)
+        self.build_special(sim)
 
     # ---- the bond list -------------------------------------------------------------------------
     def build_bond_list(self, sim):
@@ -168,6 +212,18 @@ class Topology:
         stored = p.bond_type[:p.nlocal][slots]
         rows[:, 2] = stored[stored != 0]
         return rows
+
+
+def _owned_rows(p, tags):
+    """The owned row of each id in ``tags``, -1 for ids not owned here."""
+    n = p.nlocal
+    order = np.argsort(p.tag[:n], kind="stable")
+    at = np.searchsorted(p.tag[:n][order], tags)
+    at = np.minimum(at, max(n - 1, 0))
+    if n == 0:
+        return np.full(len(tags), -1, dtype=np.int64)
+    rows = order[at]
+    return np.where(p.tag[rows] == tags, rows, -1).astype(np.int64)
 
 
 @njit(cache=True)
