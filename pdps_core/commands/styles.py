@@ -202,6 +202,13 @@ def dump_modify(sim, args):
     k, words = 1, args
     while k < len(words):
         keyword = words[k]
+        own = dump.modify_words(sim, keyword, words[k + 1:])
+        if own is not None:
+            if len(words) - k - 1 < own:
+                raise ScriptError(f"dump_modify {keyword} needs {own} value(s) here (got {len(words) - k - 1})")
+            dump.modify(sim, keyword, words[k + 1:k + 1 + own])
+            k += 1 + own
+            continue
         arity = DUMP_MODIFY.get(keyword, 0)
         if keyword not in DUMP_MODIFY:
             raise ScriptError(f"unknown dump_modify keyword {keyword}; usage: {usage}")
