@@ -191,7 +191,8 @@ DUMP_MODIFY = {"every": 1, "first": 1, "append": 1, "sort": 1, "format": 2, "flu
 @command("dump_modify")
 def dump_modify(sim, args):
     """LAMMPS's ``dump_modify ID keyword value ...``: every and first for any dump; sort, format,
-    append (and flush, accepted) for the text dumps. In the LIGGGHTS dialect ``format "F1 F2 ..."``
+    append (and flush, accepted) for the text dumps; a style's own keywords, as many words as its
+    ``modify_words`` says (dump image's acolor, amap, element...). In the LIGGGHTS dialect ``format "F1 F2 ..."``
     is LIGGGHTS's one string for the whole line (LAMMPS's ``format line``; LAMMPS refuses it now)."""
     usage = "dump_modify ID [every N] [first yes|no] [sort id|off|N|-N] [format line|int|float|N FMT] [append yes|no]"
     if len(args) < 3:

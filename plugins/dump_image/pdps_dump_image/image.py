@@ -80,7 +80,7 @@ VECTOR = {"x": ("x", 0), "y": ("x", 1), "z": ("x", 2), "vx": ("v", 0), "vy": ("v
           "fx": ("f", 0), "fy": ("f", 1), "fz": ("f", 2), "ix": ("image", 0), "iy": ("image", 1),
           "iz": ("image", 2), "omegax": ("omega", 0), "omegay": ("omega", 1), "omegaz": ("omega", 2),
           "tqx": ("torque", 0), "tqy": ("torque", 1), "tqz": ("torque", 2)}
-SPECIAL = ("id", "type", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "q", "radius", "diameter")
+SPECIAL = ("id", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "q", "radius", "diameter")
 NEEDED = {"radius": "radius", "diameter": "radius", "q": "q"}
 REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 YesNo = Literal["yes", "no"]
@@ -320,8 +320,10 @@ class DumpImage(Dump):
         elif keyword == "color":
             self.palette.add(values[0], *(_number(v, "color") for v in values[1:]))
         elif keyword == "element":
-            for t, name in enumerate(values, start=1):
-                self.elements[t] = name
+            if "element" in (self.color_kind, self.diameter_kind):
+                for name in values:
+                    element(name)
+            self.elements[1:] = values
         else:
             super().modify(sim, keyword, values)
 
@@ -367,8 +369,6 @@ class DumpImage(Dump):
         box = sim.box
         if word == "id":
             return p.tag[chosen].astype(np.float64)
-        if word == "type":
-            return p.type[chosen].astype(np.float64)
         if word == "mass":
             return observables.masses(sim)[chosen]
         if word == "q":
@@ -394,18 +394,24 @@ class DumpImage(Dump):
         table = sim.comm.gather_rows(local.reshape(len(chosen), 7))
         bonds = None
         if self.bond_color is not None and p.has("num_bond"):
-            rows = [(p.tag[i], p.bond_atom[i, m], p.bond_type[i, m])
-                    for i in chosen for m in range(p.num_bond[i]) if p.bond_type[i, m] != 0]
-            bonds = sim.comm.gather_rows(np.array(rows, dtype=np.float64).reshape(len(rows), 3))
+            slots = p.bond_type.shape[1]
+            stored = (np.arange(slots) < p.num_bond[chosen, None]) & (p.bond_type[chosen] != 0)
+            rows, slot = np.nonzero(stored)
+            mine = np.column_stack([p.tag[chosen[rows]], p.bond_atom[chosen[rows], slot],
+                                    p.bond_type[chosen[rows], slot]]).astype(np.float64)
+            bonds = sim.comm.gather_rows(mine.reshape(len(rows), 3))
         if table is not None:
             table = table[np.argsort(table[:, 0], kind="stable")]
+            if bonds is not None:
+                bonds = bonds[np.argsort(bonds[:, 0], kind="stable")]
         return table, bonds
 
     def _colors(self, kind, types, values):
         if kind == "type":
             return self.type_colors[types]
         if kind == "element":
-            return np.array([element(self.elements[t])[0] for t in types]).reshape(len(types), 3)
+            table = np.array([element(name)[0] for name in self.elements])
+            return table[types]
         out = np.empty((len(values), 3))
         render.map_colors(values, *self.map_table, out)
         return out
@@ -416,7 +422,8 @@ class DumpImage(Dump):
         if self.diameter_kind == "type":
             return self.type_diameters[types]
         if self.diameter_kind == "element":
-            return np.array([element(self.elements[t])[1] for t in types], dtype=np.float64)
+            table = np.array([element(name)[1] for name in self.elements], dtype=np.float64)
+            return table[types]
         return values
 
     def render(self, sim):
@@ -458,39 +465,43 @@ class DumpImage(Dump):
         return pic.rows()
 
     def _bond_cylinders(self, sim, table, x, colors, diameters, bonds):
-        row_of = {int(tag): k for k, tag in enumerate(table[:, 0])}
-        types = table[:, 1].astype(np.int64)
+        """The cylinders of the bonds whose particles are both drawn: (ends (n, 2, 3), colors, diameters).
+        A bond is one cylinder, or two halves (each from its particle towards the other's nearest
+        image) where its colors are its particles' or it crosses a periodic boundary."""
+        tags = table[:, 0]
+        i = np.searchsorted(tags, bonds[:, 0])
+        j = np.searchsorted(tags, bonds[:, 1])
+        i, j = np.minimum(i, len(tags) - 1), np.minimum(j, len(tags) - 1)
+        drawn = (tags[i] == bonds[:, 0]) & (tags[j] == bonds[:, 1])
+        i, j, btype = i[drawn], j[drawn], np.abs(bonds[drawn, 2]).astype(np.int64)
+        if self.bond_width == "atom":
+            diameter = np.minimum(diameters[i], diameters[j])
+        elif self.bond_width == "type":
+            diameter = self.bond_type_diameters[btype]
+        else:
+            diameter = np.full(len(i), float(self.bond_width))
         length = np.asarray(sim.box.length, dtype=np.float64)
-        periodic = np.asarray(sim.box.periodic, dtype=bool)
-        ends, out_colors, out_diameters = [], [], []
-        for tag1, tag2, btype in bonds:
-            i, j = row_of.get(int(tag1)), row_of.get(int(tag2))
-            if i is None or j is None:
-                continue
-            btype = abs(int(btype))
-            if self.bond_width == "atom":
-                diameter = min(diameters[i], diameters[j])
-            elif self.bond_width == "type":
-                diameter = self.bond_type_diameters[btype]
-            else:
-                diameter = self.bond_width
-            delta = x[j] - x[i]
-            crosses = bool(np.any(periodic & (np.abs(delta) > 0.5 * length)))
-            if self.bond_color == "atom" or crosses:
-                shifted = np.where(periodic & (np.abs(delta) > 0.5 * length),
-                                   np.where(delta < 0.0, delta + length, delta - length), delta)
-                first = colors[i] if self.bond_color == "atom" else self.bond_type_colors[btype]
-                second = colors[j] if self.bond_color == "atom" else self.bond_type_colors[btype]
-                ends += [(x[i], x[i] + 0.5 * shifted), (x[j] - 0.5 * shifted, x[j])]
-                out_colors += [first, second]
-                out_diameters += [diameter, diameter]
-            else:
-                ends.append((x[i], x[j]))
-                out_colors.append(self.bond_type_colors[btype])
-                out_diameters.append(diameter)
-        del types
-        return (np.array(ends, dtype=np.float64).reshape(-1, 2, 3), np.array(out_colors).reshape(-1, 3),
-                np.array(out_diameters, dtype=np.float64))
+        delta = x[j] - x[i]
+        far = np.asarray(sim.box.periodic, dtype=bool) & (np.abs(delta) > 0.5 * length)
+        shifted = np.where(far, np.where(delta < 0.0, delta + length, delta - length), delta)
+        halves = far.any(axis=1) | (self.bond_color == "atom")
+        if self.bond_color == "atom":
+            first, second = colors[i], colors[j]
+        else:
+            first = second = self.bond_type_colors[btype]
+        whole = ~halves
+        ends = np.concatenate([np.stack([x[i][whole], x[j][whole]], axis=1),
+                               np.stack([x[i][halves], x[i][halves] + 0.5 * shifted[halves]], axis=1),
+                               np.stack([x[j][halves] - 0.5 * shifted[halves], x[j][halves]], axis=1)])
+        # LIGGGHTS draws each bond's pieces in turn: the order matters only where two depths tie
+        order = np.concatenate([np.flatnonzero(whole), np.flatnonzero(halves),
+                                np.flatnonzero(halves)])
+        piece = np.concatenate([np.zeros(whole.sum()), np.zeros(halves.sum()), np.ones(halves.sum())])
+        sequence = np.lexsort((piece, order))
+        out_colors = np.concatenate([first[whole], first[halves], second[halves]])
+        out_diameters = np.concatenate([diameter[whole], diameter[halves], diameter[halves]])
+        return (np.ascontiguousarray(ends[sequence]), np.ascontiguousarray(out_colors[sequence]),
+                np.ascontiguousarray(out_diameters[sequence]))
 
     def _shortest(self, sim, lo, hi):
         edges = [hi[d] - lo[d] for d in range(3 if sim.dimension == 3 else 2)]
