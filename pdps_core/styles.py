@@ -1310,6 +1310,13 @@ class Dump(Style):
     def write(self, sim):
         raise NotImplementedError
 
+    def modify_words(self, sim, keyword, rest):
+        """How many words a ``dump_modify`` keyword of this style's own takes, given the words after
+        it (``rest``), or None where the keyword is not one of its own (then the core's table of
+        keywords says, as for sort, format and append). For keywords whose count depends on the
+        dump or the words (dump image's ``element`` E1 ... EN, ``amap``)."""
+        return None
+
     def modify(self, sim, keyword, values):
         """One ``dump_modify`` keyword with its values (words); ``every`` and ``first`` here, a style
         adds its own (a text dump: sort, format, append)."""

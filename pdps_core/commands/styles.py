@@ -191,7 +191,8 @@ DUMP_MODIFY = {"every": 1, "first": 1, "append": 1, "sort": 1, "format": 2, "flu
 @command("dump_modify")
 def dump_modify(sim, args):
     """LAMMPS's ``dump_modify ID keyword value ...``: every and first for any dump; sort, format,
-    append (and flush, accepted) for the text dumps. In the LIGGGHTS dialect ``format "F1 F2 ..."``
+    append (and flush, accepted) for the text dumps; a style's own keywords, as many words as its
+    ``modify_words`` says (dump image's acolor, amap, element...). In the LIGGGHTS dialect ``format "F1 F2 ..."``
     is LIGGGHTS's one string for the whole line (LAMMPS's ``format line``; LAMMPS refuses it now)."""
     usage = "dump_modify ID [every N] [first yes|no] [sort id|off|N|-N] [format line|int|float|N FMT] [append yes|no]"
     if len(args) < 3:
@@ -202,6 +203,13 @@ def dump_modify(sim, args):
     k, words = 1, args
     while k < len(words):
         keyword = words[k]
+        own = dump.modify_words(sim, keyword, words[k + 1:])
+        if own is not None:
+            if len(words) - k - 1 < own:
+                raise ScriptError(f"dump_modify {keyword} needs {own} value(s) here (got {len(words) - k - 1})")
+            dump.modify(sim, keyword, words[k + 1:k + 1 + own])
+            k += 1 + own
+            continue
         arity = DUMP_MODIFY.get(keyword, 0)
         if keyword not in DUMP_MODIFY:
             raise ScriptError(f"unknown dump_modify keyword {keyword}; usage: {usage}")

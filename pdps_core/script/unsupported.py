@@ -69,8 +69,6 @@ STYLE_ALTERNATIVES = {
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
     ("fix", "box/relax"): "none in pdps",
     ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",
-    ("dump", "image"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
-    ("dump", "movie"): "dump custom/vtk or dump vtk, viewed in ParaView or OVITO",
 }
 
 # LIGGGHTS's styles for what pdps does not simulate
