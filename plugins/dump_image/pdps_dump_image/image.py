@@ -84,6 +84,7 @@ SPECIAL = ("id", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "q", "radius", "dia
 NEEDED = {"radius": "radius", "diameter": "radius", "q": "q"}
 REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 YesNo = Literal["yes", "no"]
+MAX_PIXELS = 50_000_000
 
 
 def _is_prime(n):
@@ -138,6 +139,9 @@ class DumpImage(Dump):
         width, height = args.size
         if width <= 0 or height <= 0:
             raise ScriptError(f"size must be two whole numbers > 0 (got {width} {height})")
+        if width * height > MAX_PIXELS:
+            raise ScriptError(f"size {width} {height}: at most {MAX_PIXELS:.0e} pixels (27 bytes each in the "
+                              "renderer's buffers)")
         self.width, self.height = width, height
         ntypes = sim.ntypes
         self.palette = Palette()
