@@ -365,6 +365,8 @@ class DumpImage(Dump):
         p = sim.particles
         if kind in ("type", "element"):
             return p.type[chosen].astype(np.float64)
+        if kind == "number":                 # adiam: the attribute named is not read
+            return np.zeros(len(chosen))
         if kind == "reference":
             return np.asarray(word.values(sim), dtype=np.float64)[chosen]
         if word in VECTOR:
