@@ -63,7 +63,9 @@ Example::
 
 import gzip
 import math
+import os
 import re
+import tempfile
 from typing import Literal
 
 import numpy as np
@@ -163,11 +165,11 @@ class DumpImage(Dump):
             if any(v < 0.0 for v in values[1:]):
                 raise ScriptError(f"{name}: the lengths and diameters must be >= 0 (got {' '.join(map(str, values))})")
         self.random = None
-        self.ssao_strength = 0.0
+        self.ssao_on, self.ssao_strength = False, 0.0
         if args.ssao is not None:
             self._ssao(sim, args.ssao)
         self.camera = render.Camera()
-        self.picture = render.Picture(width, height)
+        self.picture = None              # rank 0's buffers, made at its first picture
         self.frames = 0
         lo, hi = self._box(sim)
         self.center = self._center(sim, lo, hi)
@@ -183,6 +185,12 @@ class DumpImage(Dump):
             raise ScriptError(f"dump image writes one picture per file: put a * (the step) in {path}")
         if "%" in path:
             raise ScriptError(f"per-processor dump files (% in {path}) are not supported: rank 0 writes each picture")
+        if sim.comm.is_root:             # rank 0 alone writes: its folder must take files now
+            try:
+                with tempfile.NamedTemporaryFile(dir=os.path.dirname(path) or ".", prefix=".pdps-probe-"):
+                    pass
+            except OSError as exc:
+                raise ScriptError(f"cannot write pictures {path}: {exc.strerror}") from None
 
     def _attribute(self, sim, word, what):
         if word in ("type", "element"):
@@ -275,7 +283,7 @@ class DumpImage(Dump):
 
     @property
     def ssao_enabled(self):
-        return self.random is not None and self.ssao_on
+        return self.ssao_on
 
     # ---- dump_modify -----------------------------------------------------------------------------
     def modify_words(self, sim, keyword, rest):
@@ -453,6 +461,8 @@ class DumpImage(Dump):
         colors = self._colors(self.color_kind, types, table[:, 5])
         diameters = self._diameters(types, table[:, 6])
         x = np.ascontiguousarray(table[:, 2:5])
+        if self.picture is None:
+            self.picture = render.Picture(self.width, self.height)
         pic, p = self.picture, self.camera.params
         pic.clear(self.background)
         args = (p, pic.width, pic.height, pic.depth, pic.surface, pic.rgb)

@@ -109,6 +109,8 @@ def test_ranmars_gives_the_published_test_numbers():
 
 @pytest.mark.parametrize("line, message", [
     ("dump d all image 1 d.ppm type diameter", "dump image writes one picture per file: put a * (the step) in d.ppm"),
+    ("dump d all image 1 nowhere/d.*.ppm type diameter", "cannot write pictures nowhere/d.*.ppm: No such file or "
+                                                         "directory"),
     ("dump d all image 1 d.*.ppm type diameter persp 0.5",
      "persp: pdps draws no perspective (LIGGGHTS 3.8.0 refuses persp: \"not yet supported\"; LAMMPS has none); "
      "leave persp out, or give 0"),

@@ -14,7 +14,6 @@ import json
 from pathlib import Path
 
 import numpy as np
-import pytest
 from PIL import Image
 
 from pdps_core.api import Simulation
