@@ -991,9 +991,9 @@ class TestDump:
     def test_unknown_style(self, sim):
         exc = fails(sim, self.SETUP + "dump d all no/such 1 a.mpg", "dump")
         assert exc.message == f"unknown dump style no/such (installed: {', '.join(registry.names('dump'))})"
-        exc = fails(sim, "dump d all movie 1 a.mpg", "dump")
-        assert exc.message == ("dump style movie is a LAMMPS style pdps does not have; instead: dump custom/vtk or "
-                               "dump vtk, viewed in ParaView or OVITO (docs/lammps.md)")
+        exc = fails(sim, "dump d all dcd 1 a.dcd", "dump")
+        assert exc.message == ("dump style dcd is a LAMMPS style pdps does not have; instead: dump custom or "
+                               "dump xdmf (docs/lammps.md)")
         exc = fails(sim, "dump d all xyz 1 a.xyz", "dump")
         assert exc.message == ("dump style xyz is a LAMMPS style pdps does not have; instead: dump custom with "
                                "id type x y z (docs/lammps.md)")
