@@ -37,7 +37,9 @@ Keywords (defaults as LIGGGHTS's):
   image persp option is not yet supported"), LAMMPS 22 Jul 2025 has none (measured).
 - ``box yes|no D``: the box's 12 edges, of diameter D times the shortest box edge (yes 0.02).
 - ``axes yes|no L D``: x, y, z axes in red, green, blue from 10 % of the longest edge below the
-  box's lower corner, L times each edge long, D times the shortest edge thick (no).
+  box's lower corner, L times each edge long, D times the shortest edge thick (no). Edges and axes of
+  diameter 0 (or axes of length 0) are not drawn; LIGGGHTS 3.8.0 divides by their zero size and
+  leaves a stray black pixel or so (measured: one, in a 100 by 75 picture of the bed).
 - ``shiny S``: 0 to 1, the specular highlight's strength and sharpness (1).
 - ``ssao yes|no SEED F``: screen-space ambient occlusion of strength F (0 to 1), jittered with a
   RanMars generator of SEED (in the LIGGGHTS dialect a prime > 10000, as LIGGGHTS asks); no.
