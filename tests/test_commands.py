@@ -1042,8 +1042,8 @@ class TestThermo:
     @pytest.mark.parametrize("line, command, message", [
         ("thermo -1", "thermo", "N must be >= 0 (got -1)"),
         ("thermo often", "thermo", "N must be an integer (got often)"),
-        ("thermo_style custom step bogus", "thermo_style",
-         "unknown thermo keyword bogus (keywords: step, temp, press, pe, ke, etotal and the rest of LAMMPS's "
+        ("thermo_style custom step qqq", "thermo_style",
+         "unknown thermo keyword qqq (keywords: step, temp, press, pe, ke, etotal and the rest of LAMMPS's "
          "thermo_style list; c_ID, f_ID, v_NAME)"),
         ("thermo_style custom step tempp", "thermo_style",
          "unknown thermo keyword tempp (did you mean temp? keywords: step, temp, press, pe, ke, etotal and the "
