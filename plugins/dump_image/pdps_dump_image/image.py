@@ -37,7 +37,9 @@ Keywords (defaults as LIGGGHTS's):
   image persp option is not yet supported"), LAMMPS 22 Jul 2025 has none (measured).
 - ``box yes|no D``: the box's 12 edges, of diameter D times the shortest box edge (yes 0.02).
 - ``axes yes|no L D``: x, y, z axes in red, green, blue from 10 % of the longest edge below the
-  box's lower corner, L times each edge long, D times the shortest edge thick (no).
+  box's lower corner, L times each edge long, D times the shortest edge thick (no). Edges and axes of
+  diameter 0 (or axes of length 0) are not drawn; LIGGGHTS 3.8.0 divides by their zero size and
+  leaves a stray black pixel or so (measured: one, in a 100 by 75 picture of the bed).
 - ``shiny S``: 0 to 1, the specular highlight's strength and sharpness (1).
 - ``ssao yes|no SEED F``: screen-space ambient occlusion of strength F (0 to 1), jittered with a
   RanMars generator of SEED (in the LIGGGHTS dialect a prime > 10000, as LIGGGHTS asks); no.
@@ -63,7 +65,9 @@ Example::
 
 import gzip
 import math
+import os
 import re
+import tempfile
 from typing import Literal
 
 import numpy as np
@@ -84,6 +88,7 @@ SPECIAL = ("id", "mass", "xs", "ys", "zs", "xu", "yu", "zu", "q", "radius", "dia
 NEEDED = {"radius": "radius", "diameter": "radius", "q": "q"}
 REFERENCE = re.compile(r"^(c|f|v)_([A-Za-z0-9_]+)(?:\[(\d+)\])?$")
 YesNo = Literal["yes", "no"]
+MAX_PIXELS = 50_000_000
 
 
 def _is_prime(n):
@@ -138,6 +143,9 @@ class DumpImage(Dump):
         width, height = args.size
         if width <= 0 or height <= 0:
             raise ScriptError(f"size must be two whole numbers > 0 (got {width} {height})")
+        if width * height > MAX_PIXELS:
+            raise ScriptError(f"size {width} {height}: at most {MAX_PIXELS:.0e} pixels (27 bytes each in the "
+                              "renderer's buffers)")
         self.width, self.height = width, height
         ntypes = sim.ntypes
         self.palette = Palette()
@@ -159,11 +167,11 @@ class DumpImage(Dump):
             if any(v < 0.0 for v in values[1:]):
                 raise ScriptError(f"{name}: the lengths and diameters must be >= 0 (got {' '.join(map(str, values))})")
         self.random = None
-        self.ssao_strength = 0.0
+        self.ssao_on, self.ssao_strength = False, 0.0
         if args.ssao is not None:
             self._ssao(sim, args.ssao)
         self.camera = render.Camera()
-        self.picture = render.Picture(width, height)
+        self.picture = None              # rank 0's buffers, made at its first picture
         self.frames = 0
         lo, hi = self._box(sim)
         self.center = self._center(sim, lo, hi)
@@ -179,6 +187,12 @@ class DumpImage(Dump):
             raise ScriptError(f"dump image writes one picture per file: put a * (the step) in {path}")
         if "%" in path:
             raise ScriptError(f"per-processor dump files (% in {path}) are not supported: rank 0 writes each picture")
+        if sim.comm.is_root:             # rank 0 alone writes: its folder must take files now
+            try:
+                with tempfile.NamedTemporaryFile(dir=os.path.dirname(path) or ".", prefix=".pdps-probe-"):
+                    pass
+            except OSError as exc:
+                raise ScriptError(f"cannot write pictures {path}: {exc.strerror}") from None
 
     def _attribute(self, sim, word, what):
         if word in ("type", "element"):
@@ -271,7 +285,7 @@ class DumpImage(Dump):
 
     @property
     def ssao_enabled(self):
-        return self.random is not None and self.ssao_on
+        return self.ssao_on
 
     # ---- dump_modify -----------------------------------------------------------------------------
     def modify_words(self, sim, keyword, rest):
@@ -361,6 +375,8 @@ class DumpImage(Dump):
         p = sim.particles
         if kind in ("type", "element"):
             return p.type[chosen].astype(np.float64)
+        if kind == "number":                 # adiam: the attribute named is not read
+            return np.zeros(len(chosen))
         if kind == "reference":
             return np.asarray(word.values(sim), dtype=np.float64)[chosen]
         if word in VECTOR:
@@ -447,6 +463,8 @@ class DumpImage(Dump):
         colors = self._colors(self.color_kind, types, table[:, 5])
         diameters = self._diameters(types, table[:, 6])
         x = np.ascontiguousarray(table[:, 2:5])
+        if self.picture is None:
+            self.picture = render.Picture(self.width, self.height)
         pic, p = self.picture, self.camera.params
         pic.clear(self.background)
         args = (p, pic.width, pic.height, pic.depth, pic.surface, pic.rgb)

@@ -6,8 +6,8 @@ Syntax::
 
 Everything of dump image (image.py) but the file: FILE is one movie, without ``*`` or ``%`` and
 not ``.gz``; its suffix chooses FFmpeg's format and codec (``.mp4``, ``.avi``, ``.mkv``, ``.mpg``,
-``.m4v``, ``.mov``, ``.flv``, ``.gif``, ``.apng``, ...). As LIGGGHTS's and LAMMPS's dump movie, rank
-0 pipes each picture as a PPM into::
+``.m4v``, ``.mov``, ``.flv``, ``.gif``, ``.apng``, ...). As LIGGGHTS's dump movie, rank
+0 pipes each picture as a PPM into (LIGGGHTS 3.8.0's command line, from its source)::
 
     ffmpeg -v error -y -r FRAMERATE -f image2pipe -c:v ppm -i - -r 24.0 -b:v BITRATEk FILE
 

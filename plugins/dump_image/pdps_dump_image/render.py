@@ -174,6 +174,24 @@ def _pixel(p, width, depth_buf, surf_buf, rgb, ix, iy, depth, s0, s1, s2, c0, c1
         rgb[3 * k + j] = np.uint8(int(_saturate(c) * 255.0))
 
 
+# a centre or a half-size beyond this many pixels (a sphere far off the picture, an absurd diameter or
+# zoom) is off the picture or covers it all: centres are skipped, half-sizes capped, so no loop runs on
+LIMIT = 2.0 ** 30
+
+
+@njit(cache=True)
+def _on_screen(xf, yf):
+    return abs(xf) < LIMIT and abs(yf) < LIMIT
+
+
+@njit(cache=True)
+def _pixels(full):
+    """int(full) for a half-size in pixels, capped at LIMIT (NaN: 0)."""
+    if not full < LIMIT:
+        return 0 if full != full else int(LIMIT)
+    return int(full)
+
+
 @njit(cache=True)
 def _pixel_width(p, dist):
     if p[TAN_PER_PIXEL] > 0:
@@ -191,19 +209,20 @@ def _sphere(p, width, height, depth_buf, surf_buf, rgb, x0, x1, x2, c0, c1, c2, 
     radius = 0.5 * diameter
     radsq = radius * radius
     pixel_width = _pixel_width(p, dist)
-    pixel_radius = int(radius / pixel_width + 0.5) + 1
     xf = xmap / pixel_width
     yf = ymap / pixel_width
+    if not _on_screen(xf, yf):
+        return
+    pixel_radius = _pixels(radius / pixel_width + 0.5) + 1
     xc = int(xf)
     yc = int(yf)
     width_error = xf - xc
     height_error = yf - yc
     xc += width // 2
     yc += height // 2
-    for iy in range(yc - pixel_radius, yc + pixel_radius + 1):
-        for ix in range(xc - pixel_radius, xc + pixel_radius + 1):
-            if iy < 0 or iy >= height or ix < 0 or ix >= width:
-                continue
+    # the square of pixels around the centre, within the picture
+    for iy in range(max(yc - pixel_radius, 0), min(yc + pixel_radius, height - 1) + 1):
+        for ix in range(max(xc - pixel_radius, 0), min(xc + pixel_radius, width - 1) + 1):
             s1 = ((iy - yc) - height_error) * pixel_width
             s0 = ((ix - xc) - width_error) * pixel_width
             proj = s0 * s0 + s1 * s1
@@ -230,6 +249,8 @@ def _cylinder(p, width, height, depth_buf, surf_buf, rgb, x, y, c0, c1, c2, diam
     m1 = (y[1] + x[1]) * 0.5 - p[CENTER + 1]
     m2 = (y[2] + x[2]) * 0.5 - p[CENTER + 2]
     length = math.sqrt(z0 * z0 + z1 * z1 + z2 * z2)
+    if length == 0.0:
+        return
     inverse = 1.0 / length
     z0, z1, z2 = z0 * inverse, z1 * inverse, z2 * inverse
     length *= 0.5
@@ -241,14 +262,16 @@ def _cylinder(p, width, height, depth_buf, surf_buf, rgb, x, y, c0, c1, c2, diam
     pixel_width = _pixel_width(p, dist)
     xf = xmap / pixel_width
     yf = ymap / pixel_width
+    if not _on_screen(xf, yf):
+        return
     xc = int(xf)
     yc = int(yf)
     width_error = xf - xc
     height_error = yf - yc
     xc += width // 2
     yc += height // 2
-    half_width = int((raster_width * 0.5) / pixel_width + 0.5)
-    half_height = int((raster_height * 0.5) / pixel_width + 0.5)
+    half_width = _pixels((raster_width * 0.5) / pixel_width + 0.5)
+    half_height = _pixels((raster_height * 0.5) / pixel_width + 0.5)
     d0, d1, d2 = p[DIR], p[DIR + 1], p[DIR + 2]
     if (z0 == d0 and z1 == d1 and z2 == d2) or (z0 == -d0 and z1 == -d1 and z2 == -d2):
         return
@@ -275,10 +298,8 @@ def _cylinder(p, width, height, depth_buf, surf_buf, rgb, x, y, c0, c1, c2, diam
     scale = 1.0 / math.sqrt(lu0 * lu0 + lu1 * lu1 + lu2 * lu2)
     lu0, lu1, lu2 = lu0 * scale, lu1 * scale, lu2 * scale
     a = ld0 * ld0
-    for iy in range(yc - half_height, yc + half_height + 1):
-        for ix in range(xc - half_width, xc + half_width + 1):
-            if iy < 0 or iy >= height or ix < 0 or ix >= width:
-                continue
+    for iy in range(max(yc - half_height, 0), min(yc + half_height, height - 1) + 1):
+        for ix in range(max(xc - half_width, 0), min(xc + half_width, width - 1) + 1):
             sy = ((iy - yc) - height_error) * pixel_width
             sx = ((ix - xc) - width_error) * pixel_width
             s0 = lr0 * sx + lu0 * sy
@@ -365,7 +386,7 @@ def ssao(p, width, height, depth_buf, surf_buf, rgb, radius, samples, state, ind
     are the RanMars generator's (ranmars.py), advanced by one number per covered pixel."""
     del_theta = 2.0 * MY_PI / samples
     pixel_width = p[TAN_PER_PIXEL] if p[TAN_PER_PIXEL] > 0 else -p[TAN_PER_PIXEL] / p[ZOOM]
-    pixel_radius = int(math.trunc(radius / pixel_width + 0.5))
+    pixel_radius = _pixels(radius / pixel_width + 0.5)
     jitter = MY_PI / 12
     npixels = width * height
     index = 0

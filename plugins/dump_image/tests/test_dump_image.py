@@ -109,6 +109,8 @@ def test_ranmars_gives_the_published_test_numbers():
 
 @pytest.mark.parametrize("line, message", [
     ("dump d all image 1 d.ppm type diameter", "dump image writes one picture per file: put a * (the step) in d.ppm"),
+    ("dump d all image 1 nowhere/d.*.ppm type diameter", "cannot write pictures nowhere/d.*.ppm: No such file or "
+                                                         "directory"),
     ("dump d all image 1 d.*.ppm type diameter persp 0.5",
      "persp: pdps draws no perspective (LIGGGHTS 3.8.0 refuses persp: \"not yet supported\"; LAMMPS has none); "
      "leave persp out, or give 0"),
@@ -168,3 +170,26 @@ def test_dynamic_view_errors_stop_the_run(tmp_path, monkeypatch):
     with pytest.raises(Exception, match="zoom must be > 0 \\(got 0\\)"):
         sim.command("fix integr all nve/sphere\nrun 100")
     assert sorted(p.name for p in tmp_path.glob("d.*.ppm")) == ["d.0.ppm", "d.50.ppm"]
+
+
+def test_absurd_sizes_and_distances_draw_at_once(tmp_path, monkeypatch):
+    """Spheres a billion boxes wide, a view centred a billion boxes away, zooms of 1e-30 and 1e30 with
+    SSAO: each picture is drawn (loops stay within the picture) and nothing is raised; the spheres
+    that enclose the camera are not drawn (their surface is behind it, as LIGGGHTS's depth test has
+    it), and the far view is empty."""
+    sim = scene(tmp_path, monkeypatch)
+    sim.command("dump a all image 1 a.*.ppm type diameter size 40 30 box no 0.0 adiam 1e8\n"
+                "dump f all image 1 f.*.ppm type diameter size 40 30 center s 1e9 0.5 0.5\n"
+                "dump b all image 1 b.*.ppm type diameter size 40 30 zoom 1e-30 ssao yes 15485863 1.0\n"
+                "dump c all image 1 c.*.ppm type diameter size 40 30 zoom 1e30 ssao yes 15485863 1.0\n"
+                "run 0")
+    sim.close()
+    assert not np.any(ppm(tmp_path / "f.0.ppm"))
+    for name in ("a", "b", "c"):
+        assert ppm(tmp_path / f"{name}.0.ppm").shape == (30, 40, 3)
+
+
+def test_too_many_pixels_are_refused(tmp_path, monkeypatch):
+    sim = scene(tmp_path, monkeypatch)
+    with pytest.raises(ScriptError, match="size 10000 10000: at most 5e\\+07 pixels"):
+        sim.command("dump d all image 1 d.*.ppm type diameter size 10000 10000")

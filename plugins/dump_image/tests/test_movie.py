@@ -105,3 +105,16 @@ def test_bad_movies_are_refused_at_their_line(tmp_path, monkeypatch, line, messa
         sim.command(line)
     assert str(caught.value).split(": ", 2)[-1] == message
     assert not list(tmp_path.glob(".pdps-probe-*"))
+
+
+def test_framerate_and_bitrate_reach_ffmpegs_command_line(tmp_path, monkeypatch):
+    """LIGGGHTS's command line: the pictures' rate in, 24 frames a second out, the bit rate in kbit/s."""
+    monkeypatch.chdir(tmp_path)
+    sim = Simulation(screen=False, log=None, dialect="liggghts")
+    sim.command(TABLE["scene"] + "dump m all movie 10 film.mp4 type diameter\n"
+                "dump_modify m framerate 7.5 bitrate 3500")
+    command = sim.output.dumps["m"].command()
+    assert command[1:] == ["-v", "error", "-y", "-r", "7.50", "-f", "image2pipe", "-c:v", "ppm", "-i", "-",
+                           "-r", "24.0", "-b:v", "3500k", "film.mp4"]
+    sim.close()
+    assert not (tmp_path / "film.mp4").exists()        # no picture, no movie
