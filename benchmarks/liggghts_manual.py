@@ -63,7 +63,7 @@ CHECKED = {
     ("info", None): "tests/test_info.py (the facts LIGGGHTS 3.8.0's info printed, tests/data/liggghts_info.txt)",
     ("fix", "insert/stream"): "plugins/fix_insert/tests/test_liggghts_placement.py; corpus insert_stream",
     ("fix", "insert/pack"): "plugins/fix_insert/tests/test_liggghts_placement.py, test_insertion.py; corpus",
-    ("fix", "mesh/surface"): "plugins/fix_wall/tests/test_mesh_box_extent.py; plugins/pair_gran/tests "
+    ("fix", "mesh/surface"): "plugins/fix_wall/tests/test_mesh_box_extent.py; plugins/fix_wall/tests/test_mesh_quality.py; plugins/pair_gran/tests "
                              "(liggghts_submodels.json, mesh cases)",
     ("fix", "wall/gran"): "plugins/pair_gran/tests (liggghts_submodels.json, wall and mesh cases)",
     ("pair_style", "gran"): "plugins/pair_gran/tests (liggghts_submodels.json, pair cases; cohesive cluster)",

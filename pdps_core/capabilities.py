@@ -43,11 +43,14 @@ class HeatTransport(Protocol):
     own conduction law and the current temperatures; valid once a run has started (compute
     pair/gran/local's heatFlux reads it). ``contact_heat_model(sim)`` is that law as the contact part
     a ContactConduction pair style composes into its contacts at a run's start (its own family's
-    object; its material read then)."""
+    object; its material read then). ``wall_conduction(sim)`` gives what a wall's contacts conduct by:
+    (contact area model, constant area, conductivity per type), once a run has started."""
 
     def contact_heat_flux(self, sim, i, j, r): ...
 
     def contact_heat_model(self, sim): ...
+
+    def wall_conduction(self, sim): ...
 
 
 @runtime_checkable

@@ -171,6 +171,37 @@ def snapshots_dump():
 SNAPSHOTS = {"snapshots.dump": snapshots_dump()}
 
 
+def facets_stl(triangles, z, name):
+    """An ASCII STL of the triangles (corners (x, y)) at height ``z``, normals up."""
+    facets = []
+    for corners in triangles:
+        vertices = "".join(f"      vertex {x} {y} {z}\n" for x, y in corners)
+        facets.append(f"  facet normal 0 0 1\n    outer loop\n{vertices}    endloop\n  endfacet\n")
+    return f"solid {name}\n" + "".join(facets) + f"endsolid {name}\n"
+
+
+SQUARE = ((-0.045, -0.045), (0.045, -0.045), (0.045, 0.045), (-0.045, 0.045))
+# the floor of floor_stl with its first facet again after the others, one vertex 1e-9 higher
+DUPLICATE_FLOOR = floor_stl(0.002).replace(
+    "endsolid floor", "  facet normal 0 0 1\n    outer loop\n      vertex -0.045 -0.045 0.002000001\n"
+    "      vertex 0.045 -0.045 0.002\n      vertex 0.045 0.045 0.002\n    endloop\n  endfacet\nendsolid floor")
+# a fan of four triangles about (0.005, 0.003), the last split by a sliver of 0.7 degrees
+FAN_CENTRE, SLIVER_TIP = (0.005, 0.003), (-0.044, 0.045)
+SLIVER_FLOOR = facets_stl([(SQUARE[0], SQUARE[1], FAN_CENTRE), (SQUARE[1], SQUARE[2], FAN_CENTRE),
+                           (SQUARE[2], SLIVER_TIP, FAN_CENTRE), (SLIVER_TIP, SQUARE[3], FAN_CENTRE)], 0.002, "sliver")
+# a lid just wider than the bed, high above it: extruded 0.06 down it walls the bed in
+LID = facets_stl([((-0.0362, -0.0362), (0.0362, -0.0362), (0.0362, 0.0362)),
+                  ((-0.0362, -0.0362), (0.0362, 0.0362), (-0.0362, 0.0362))], 0.065, "lid")
+MESH_FLOOR_WALL = "fix meshfloor all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
+HOT_FLOOR = (BED + SUMS + "fix cad all mesh/surface file floor.stl type 1 temperature 500.0{}\n" + MESH_FLOOR_WALL
+             + "fix integr all nve/sphere\n"
+             "fix k all property/global thermalConductivity peratomtype 5.0 20.0\n"
+             "fix c all property/global thermalCapacity peratomtype 10.0 30.0\n"
+             "fix ht all heat/gran/conduction initial_temperature 300.0 store_contact_data yes\n"
+             "compute ts all reduce sum f_Temp f_heatFlux f_wallHeattransferCoeff\ncompute tm all reduce max f_Temp\n"
+             + thermo("c_ts[1] c_ts[2] c_ts[3] c_tm") + "run 3000\n")
+
+
 @dataclass
 class Case:
     owner: str            # the plugin whose table holds it, or "core"
@@ -469,6 +500,31 @@ CASES = {
                         bed("fix cad all mesh/surface/planar file floor.stl type 1\n"
                             "fix meshfloor all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"),
                         files={"floor.stl": floor_stl(0.002)}),
+    "mesh_extrude": Case("fix_wall", ("fix mesh/surface", "fix mesh/surface/planar"),
+                         BED + SUMS + "fix lid all mesh/surface/planar file lid.stl type 1 extrude_planar 0.06\n"
+                         "fix integr all nve/sphere\n" + thermo() + "run 0\nfix cad all mesh/surface fix lid type 1\n"
+                         + MESH_FLOOR_WALL + "run 3000\n",
+                         files={"lid.stl": LID}),
+    "mesh_heal": Case("fix_wall", ("fix mesh/surface",),
+                      bed("fix cad all mesh/surface file dup.stl type 1 precision 1e-5 heal auto_remove_duplicates\n"
+                          + MESH_FLOOR_WALL), files={"dup.stl": DUPLICATE_FLOOR}),
+    # LIGGGHTS writes line 2 (the first facet, a duplicate) into the list, twice; pdps once
+    "mesh_exclusion_write": Case("fix_wall", ("fix mesh/surface",),
+                                 bed("fix cad all mesh/surface file dup.stl type 1 precision 1e-5 "
+                                     "element_exclusion_list write written.txt\n" + MESH_FLOOR_WALL),
+                                 files={"dup.stl": DUPLICATE_FLOOR}),
+    "mesh_exclusion_read": Case("fix_wall", ("fix mesh/surface",),
+                                bed("fix cad all mesh/surface file dup.stl type 1 element_exclusion_list read "
+                                    "excluded.txt\n" + MESH_FLOOR_WALL),
+                                files={"dup.stl": DUPLICATE_FLOOR, "excluded.txt": "2\n"}),
+    "mesh_tolerant": Case("fix_wall", ("fix mesh/surface",),
+                          bed("fix cad all mesh/surface file sliver.stl type 1 curvature 5 curvature_tolerant yes\n"
+                              + MESH_FLOOR_WALL), files={"sliver.stl": SLIVER_FLOOR}),
+    "mesh_temperature": Case("fix_wall", ("fix mesh/surface", "fix heat/gran/conduction"), HOT_FLOOR.format(""),
+                             files={"floor.stl": floor_stl(0.002)}),
+    # LIGGGHTS 3.8.0 sums no heat flux into a mesh: mass_temperature changes nothing
+    "mesh_mass_temperature": Case("fix_wall", ("fix mesh/surface",), HOT_FLOOR.format(" mass_temperature 0.01"),
+                                  files={"floor.stl": floor_stl(0.002)}),
     "deform": Case("fix_nh", ("fix deform",),
                    bed("fix squeeze all deform 1 x final -0.04 0.04 y final -0.045 0.045 remap x units box\n")),
     "adapt_diameter": Case("fix_simple", ("fix adapt",),

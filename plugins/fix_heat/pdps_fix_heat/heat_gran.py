@@ -47,8 +47,14 @@ thermal energy :math:`\sum m_ic_iT_i` (thermo); per particle ``f_ID[1]`` the tem
 ``store_contact_data yes`` (LIGGGHTS's) keeps, after each step's forces, the per-atom properties
 ``contactAreaConduction`` (the mean contact area of the particle's contacts with a particle of the
 group or between two others in it, by the area model above; 0 without contacts),
-``nContactsConduction`` (how many), and ``wallHeattransferCoeff`` and ``wallTemp``, 0 (pdps's walls
-conduct no heat).
+``nContactsConduction`` (how many), ``wallHeattransferCoeff`` (the conductance of the particle's contact
+with a wall that has a temperature at this step, its last one's; 0 without: LIGGGHTS's) and ``wallTemp`` (0, as
+LIGGGHTS leaves it).
+
+Walls: a ``fix wall/gran`` on a ``fix mesh/surface ... temperature T0`` adds each contact's
+:math:`\frac{4k_pk_w}{k_p + k_w}\sqrt{A}\,(T_0 - T_p)` to the particle's heat flux, A by this fix's
+contact_area (overlap: :math:`\pi(R^2 - d^2)` at centre distance d), :math:`k_w` the conductivity of
+the mesh's type (LIGGGHTS's fix wall/gran; recorded: the mesh_temperature case).
 
 Syntax::
 
@@ -157,6 +163,11 @@ class FixHeatGran(Fix):
     def setup(self, sim):
         self.conduct(sim)
 
+    def pre_force(self, sim):
+        # a wall contact's conductance is this step's (LIGGGHTS: 0 out of contact)
+        if self.store_contact_data:
+            sim.particles.arrays["wallHeattransferCoeff"][:] = 0.0
+
     def post_force(self, sim):
         self.conduct(sim)
 
@@ -175,7 +186,6 @@ class FixHeatGran(Fix):
         area, number = a["contactAreaConduction"], a["nContactsConduction"]
         area[:] = 0.0
         number[:] = 0.0
-        a["wallHeattransferCoeff"][:] = 0.0
         a["wallTemp"][:] = 0.0
         found = sim.pair.contacts(sim)
         i, j = found["i"], found["j"]
@@ -206,6 +216,13 @@ class FixHeatGran(Fix):
         model = HeatConduction({"contact_area": "constant" if constant else area, "area": area[1] if constant else 0.0})
         model.conductivity = read_property(sim, "thermalConductivity", sim.ntypes, f"fix {self.id} ({self.name})")
         return model
+
+    def wall_conduction(self, sim):
+        """(contact area model, constant area, conductivity per type) for the walls' contacts (the
+        HeatTransport capability: fix wall/gran on a mesh with a temperature)."""
+        if self.conductivity is None:
+            raise ScriptError(f"fix {self.id} ({self.name}): the conductivities are read at a run's start")
+        return self.mode, self.area_constant, self.conductivity
 
     def contact_heat_flux(self, sim, i, j, r):
         """Heat into i from j of each contact (the HeatTransport capability), by the docstring's

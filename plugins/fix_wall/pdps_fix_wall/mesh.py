@@ -96,8 +96,10 @@ MERGE_TOLERANCE = 1e-9      # points this close (relative to the radius plus the
 
 
 # ---- reading and placing the mesh ---------------------------------------------------------------
-def read_triangles(path, shown):
-    """(vertices n x 3, triangles m x 3) of a surface mesh file; ScriptError naming ``shown``."""
+def read_triangles(path, shown, with_index=False):
+    """(vertices n x 3, triangles m x 3) of a surface mesh file; ScriptError naming ``shown``. With
+    ``with_index``, also the place of each triangle among the file's (those of zero area are left
+    out)."""
     if not os.path.isfile(path):
         raise ScriptError(f"mesh file {shown} does not exist")
     if os.path.getsize(path) == 0:
@@ -120,14 +122,15 @@ def read_triangles(path, shown):
         elif cells.type == "quad":
             blocks += [data[:, [0, 1, 2]], data[:, [0, 2, 3]]]
     triangles = np.concatenate(blocks) if blocks else np.zeros((0, 3), dtype=np.int64)
+    index = np.arange(len(triangles))
     if len(triangles):
         corners = points[triangles]
         area = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]),
                               axis=1)
-        triangles = triangles[area > 0.0]
+        triangles, index = triangles[area > 0.0], index[area > 0.0]
     if len(triangles) == 0:
         raise ScriptError(f"mesh file {shown} has no triangles: not a surface mesh")
-    return points, triangles
+    return (points, triangles, index) if with_index else (points, triangles)
 
 
 def rotation_matrix(axis, angle):
@@ -171,6 +174,11 @@ def placed_mesh(sim, shown, placement):
     """(vertices, triangles) of the mesh file ``shown``, scaled, moved and rotated once in the
     order given (LIGGGHTS's fix mesh/surface)."""
     points, triangles = read_triangles(sim.resolve(shown), shown)
+    return apply_placement(points, placement), triangles
+
+
+def apply_placement(points, placement):
+    """``points`` scaled, moved and rotated in the order given."""
     for word, *values in placement:
         if word == "scale":
             points = points * values[0]
@@ -179,7 +187,7 @@ def placed_mesh(sim, shown, placement):
         else:
             axis = unit(values[1:4], "rotate axis")
             points = points @ rotation_matrix(axis, math.radians(values[5])).T
-    return np.ascontiguousarray(points), triangles
+    return np.ascontiguousarray(points)
 
 
 # the contact law: PDPS's lsd, lsd from the restitution coefficient, LIGGGHTS's hertz
@@ -457,14 +465,15 @@ def mesh_scratch(most):
 
 @njit(cache=True)
 def mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity, spin, pivot,
-                      belt, conveyor, tri, point, gap, on_face, keep, probe, base, distance, normal, key, touch,
+                      belt, conveyor, precision, tri, point, gap, on_face, keep, probe, base, distance, normal, key, touch,
                       wall_velocity):
     """Particle i's contacts (the k-th visited) with its candidate triangles (module docstring) into
     rows ``base``.. of ``distance``, ``normal`` (surface to centre), ``key`` (triangle), ``touch``
-    (contact point) and ``wall_velocity`` (the wall's there); returns how many."""
+    (contact point) and ``wall_velocity`` (the wall's there); returns how many. Points closer than
+    ``precision`` (the mesh's, as its nodes are compared) are one point."""
     r = radius[i]
     xi, yi, zi = x[i, 0], x[i, 1], x[i, 2]
-    tolerance = MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi)))
+    tolerance = max(MERGE_TOLERANCE * (r + max(abs(xi), abs(yi), abs(zi))), precision)
     nc = 0
     for m in range(offsets[k], offsets[k + 1]):
         t = candidates[m]
@@ -530,7 +539,7 @@ def mesh_contact_rows(k, i, offsets, candidates, x, vertices, triangles, face_no
 
 @njit(cache=True, _nrt=False)
 def mesh_contact_table(chosen, offsets, candidates, x, vertices, triangles, face_normal, radius, velocity, spin,
-                       pivot, belt, conveyor, scratch, starts, table):
+                       pivot, belt, conveyor, precision, scratch, starts, table):
     """Every chosen particle's contacts with its candidate triangles, one after the other: particle
     k's are rows starts[k] .. starts[k + 1] of ``table`` (distance, normal, key, touch,
     wall_velocity: WallContactTable's arrays), for a composed contact loop."""
@@ -540,7 +549,7 @@ def mesh_contact_table(chosen, offsets, candidates, x, vertices, triangles, face
     for k in range(len(chosen)):
         starts[k] = base
         base += mesh_contact_rows(k, chosen[k], offsets, candidates, x, vertices, triangles, face_normal, radius,
-                                  velocity, spin, pivot, belt, conveyor, tri, point, gap, on_face, keep, probe,
+                                  velocity, spin, pivot, belt, conveyor, precision, tri, point, gap, on_face, keep, probe,
                                   base, distance, normal, key, touch, wall_velocity)
     starts[len(chosen)] = base
 
@@ -563,7 +572,8 @@ class MeshContacts:
     ``surface`` is any object with the attributes ``vertices`` (n x 3, now), ``triangles``
     (m x 3), ``face_normal`` (m x 3), ``moving``, ``velocity``, ``spin``, ``pivot`` (its rigid
     motion now: the wall velocity at p is velocity + spin x (p - pivot)), ``belt`` and ``conveyor``
-    (a conveyor's surface velocity), ``transfer_cos`` (history hand-over between triangles): fix
+    (a conveyor's surface velocity), ``transfer_cos`` (history hand-over between triangles),
+    ``precision`` (contact points this close are one): fix
     wall/mesh itself, or a fix mesh/surface."""
 
     def __init__(self, sim, surface, history_name, group, width=HISTORY_WIDTH):
@@ -680,7 +690,8 @@ class MeshContacts:
                                       overflowed=history.overflowed)
         table = self.table.room(len(near), int(offsets[-1]))
         mesh_contact_table(near, offsets, candidates, p.x, mesh.vertices, mesh.triangles, mesh.face_normal,
-                           p.radius, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor, self.scratch(),
+                           p.radius, mesh.velocity, mesh.spin, mesh.pivot, mesh.belt, mesh.conveyor, mesh.precision,
+                           self.scratch(),
                            table.starts, table.arrays())
         bad, logged = law.forces(sim, near, len(near), table.starts, table.arrays(), table.contact_force, history,
                                  wall_type, f, torque, update, radius=p.radius, mass=observables.masses(sim),
@@ -775,6 +786,7 @@ class FixWallMesh(Fix):
         self.belt = np.array(args.surface_vel or (0.0, 0.0, 0.0))
         self.conveyor = args.surface_vel is not None
         self.moving = bool(np.any(self.velocity) or np.any(self.spin))
+        self.precision = 0.0        # PDPS's wall/mesh: points merge by MERGE_TOLERANCE alone
 
     # ---- mesh motion and candidate lists ----
     def _place(self):

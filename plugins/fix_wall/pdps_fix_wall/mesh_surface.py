@@ -28,20 +28,39 @@ moves along with the motions defined before it, :math:`\mathbf{X}(t) = T_1(T_2(\
 
 Syntax::
 
-    fix ID GROUP mesh/surface file FILE [type N] [verbose yes|no] [heal no] [curvature DEG]
+    fix ID GROUP mesh/surface file FILE | fix MESH_ID
+        [type N] [verbose yes|no] [heal no|auto_remove_duplicates] [precision P]
+        [element_exclusion_list read|write LIST] [min_feature_length L]
         [scale S] [move DX DY DZ] [rotate axis AX AY AZ angle DEG]
+        [temperature T0] [mass_temperature M] [extrude_planar L]
         [surface_vel VX VY VZ | surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]
+        [curvature DEG] [curvature_tolerant yes|no]
 
-``curvature DEG``: a contact that moves onto a neighbouring triangle keeps its history (tangential
-spring, rolling spring) when the two contact normals are within DEG degrees (default 5.73, a cosine
-of 0.995: LIGGGHTS's default of 0.256 degrees would restart the friction of a sphere rolling around a
-drum tessellated in facets of a few degrees). LIGGGHTS also uses it to decide edge and corner
-contacts; pdps finds those from the geometry alone (fix wall/mesh's docstring).
+The keywords stand in any order (LIGGGHTS wants them in the order above).
 
-The group is not used (the wall fix's group says which particles see the mesh). LIGGGHTS keywords
-pdps does not honour are refused by name: ``precision`` and ``heal auto_remove_duplicates`` (meshio
-merges only identical nodes), ``temperature`` (no heat conduction with walls),
-``element_exclusion_list`` (every triangle of the file is kept).
+``fix MESH_ID`` instead of ``file FILE``: the mesh is the walls a ``fix mesh/surface ...
+extrude_planar L`` swept from its planar mesh (LIGGGHTS makes them at a ``run 0`` in between, which
+pdps does not need). ``extrude_planar`` needs a planar mesh.
+
+Reading checks (``precision``, ``heal``, ``element_exclusion_list``, ``min_feature_length``,
+``curvature_tolerant``) and the extrusion are LIGGGHTS's: ``pdps_fix_wall.mesh_quality``'s
+docstring. ``curvature DEG`` (in (0, 60], as LIGGGHTS): a contact that moves onto a neighbouring
+triangle keeps its history (tangential spring, rolling spring) when the two contact normals are
+within DEG degrees (default 5.73, a cosine of 0.995: LIGGGHTS's default of 0.256 degrees would restart
+the friction of a sphere rolling around a drum tessellated in facets of a few degrees); the reading
+check compares the triangles' angles with the DEG given, or with LIGGGHTS's 0.256 degrees. LIGGGHTS
+also uses it to decide edge and corner contacts; pdps finds those from the geometry alone (fix
+wall/mesh's docstring).
+
+``temperature T0``: the wall's temperature (temperature units) for the heat conduction of fix
+heat/gran: each contact of a wall/gran wall on this mesh carries :math:`Q = \frac{4k_pk_w}{k_p +
+k_w}\sqrt{A}\,(T_0 - T_p)` into the particle (k of the particle's and of the mesh's type, A by fix
+heat/gran's contact_area: overlap :math:`\pi(R^2 - d^2)` at centre distance d, projection
+:math:`\pi R^2`, or the constant). ``mass_temperature M`` (mass units, > 0) is read and has no effect,
+as in LIGGGHTS 3.8.0 (it warms the wall by the heat flux summed into the mesh, which nothing sums
+there: measured, the run is the same without it); pdps says so in a warning.
+
+The group is not used (the wall fix's group says which particles see the mesh).
 
 Example::
 
@@ -54,17 +73,16 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
+from pydantic import PositiveFloat
+
 from pdps_core.api import Fix, ScriptError, keyword
 
-from .mesh import (PlacedMeshArgs, Vector, belt_on_face, check_placement, face_normals, placed_mesh, rigid_velocity,
-                   unit)
+from . import mesh_quality
+from .mesh import (PlacedMeshArgs, Vector, apply_placement, belt_on_face, check_placement, face_normals, mesh_fix,
+                   read_triangles, rigid_velocity, unit)
 from .wall_contact import TRANSFER_COS
 
-REFUSED = {
-    "precision": "pdps merges only identical nodes (meshio)",
-    "temperature": "pdps has no heat conduction with walls",
-    "element_exclusion_list": "pdps keeps every triangle of the file",
-}
+PLANAR_TOLERANCE = 1e-8
 
 
 @njit(cache=True)
@@ -91,17 +109,25 @@ def skew_axis(matrix):
 
 class FixMeshSurface(Fix):
     name = "mesh/surface"
-    usage = ("fix ID GROUP mesh/surface file FILE [type N] [scale S] [move DX DY DZ] "
-             "[rotate axis AX AY AZ angle DEG] [surface_vel VX VY VZ | "
-             "surface_ang_vel origin OX OY OZ axis AX AY AZ omega W]")
-    refused = REFUSED
+    usage = ("fix ID GROUP mesh/surface file FILE|fix MESH_ID [type N] [heal no|auto_remove_duplicates] "
+             "[precision P] [element_exclusion_list read|write LIST] [scale S] [move DX DY DZ] "
+             "[rotate axis AX AY AZ angle DEG] [temperature T0] [extrude_planar L] [surface_vel VX VY VZ | "
+             "surface_ang_vel origin OX OY OZ axis AX AY AZ omega W] [curvature DEG] [curvature_tolerant yes|no]")
 
     class Args(PlacedMeshArgs):
-        file: str = keyword(...)
+        file: str | None = keyword(None)
+        fix: str | None = keyword(None, names="fix mesh/surface ID")
         type: int = keyword(1, unit="1")
         verbose: Literal["yes", "no"] = keyword("no")
         heal: Literal["no", "auto_remove_duplicates"] = keyword("no")
+        precision: float | None = keyword(None, unit="distance")
+        element_exclusion_list: tuple[Literal["read", "write"], str] | None = keyword(None)
+        min_feature_length: float | None = keyword(None, unit="distance")
+        temperature: float | None = keyword(None, unit="temperature")
+        mass_temperature: float | None = keyword(None, unit="mass")
+        extrude_planar: PositiveFloat | None = keyword(None, unit="distance")
         curvature: float | None = keyword(None, unit="degrees")
+        curvature_tolerant: bool = keyword(False)
         surface_vel: Vector | None = keyword(None, unit="velocity")
         surface_ang_vel: tuple[Literal["origin"], float, float, float, Literal["axis"], float, float, float,
                                Literal["omega"], float] | None = keyword(None, unit=(
@@ -109,24 +135,37 @@ class FixMeshSurface(Fix):
 
     @classmethod
     def check_args(cls, args):
-        if args.heal != "no":
-            raise ScriptError(f"heal {args.heal} is not supported (heal no only): pdps merges "
-                              "only identical nodes (meshio)")
+        if (args.file is None) == (args.fix is None):
+            given = "both" if args.file is not None else "neither"
+            raise ScriptError(f"expected file FILE or fix MESH_ID (got {given}); usage: {cls.usage}")
+        if args.precision is not None and not 0.0 < args.precision <= mesh_quality.LARGEST_PRECISION:
+            raise ScriptError(f"precision must be in (0, 0.001] (got {args.precision:g})")
+        if args.min_feature_length is not None:
+            if not args.min_feature_length > 0.0:
+                raise ScriptError(f"min_feature_length must be > 0 (got {args.min_feature_length:g})")
+            if args.element_exclusion_list is None or args.element_exclusion_list[0] != "write":
+                raise ScriptError("min_feature_length needs element_exclusion_list write FILE (LIGGGHTS)")
+            raise ScriptError("min_feature_length is not supported: LIGGGHTS 3.8.0 has no feature removal either "
+                              "('surface mesh feature remove not available in this version')")
+        if args.element_exclusion_list is not None and args.fix is not None:
+            raise ScriptError("element_exclusion_list numbers the lines of a mesh file: not with fix MESH_ID")
+        if args.mass_temperature is not None and not args.mass_temperature > 0.0:
+            raise ScriptError(f"mass_temperature must be > 0 (got {args.mass_temperature:g})")
         check_placement(args.placement)
         if args.surface_vel is not None and args.surface_ang_vel is not None:
             raise ScriptError("surface_vel and surface_ang_vel cannot both be given")
         if args.surface_ang_vel is not None:
             unit(args.surface_ang_vel[5:8], "surface_ang_vel axis")
-        if args.curvature is not None and not 0.0 < args.curvature <= 90.0:
-            raise ScriptError(f"curvature must be in (0, 90] degrees (got {args.curvature:g})")
+        if args.curvature is not None and not 0.0 < args.curvature <= 60.0:
+            raise ScriptError(f"curvature must be in (0, 60] degrees (got {args.curvature:g})")
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         if not 1 <= args.type <= sim.ntypes:
             raise ScriptError(f"type must be from 1 to {sim.ntypes}, the number of types (got {args.type})")
-        self.file = args.file
+        self.file = args.file if args.file is not None else f"fix {args.fix}"
         self.material_type = args.type
-        self.placed, self.triangles = placed_mesh(sim, args.file, args.placement)
+        self.placed, self.triangles = self.read_mesh(sim, args)
         self.vertices = self.placed.copy()
         self.face_normal = face_normals(self.vertices, self.triangles)
         self.velocity, self.spin, self.pivot = np.zeros(3), np.zeros(3), np.zeros(3)
@@ -140,7 +179,74 @@ class FixMeshSurface(Fix):
         self.surface_motion = self.conveyor or args.surface_ang_vel is not None
         self.moving = False
         self.movers = []
+        self.temperature = args.temperature
+        if args.mass_temperature is not None:
+            sim.warn(f"fix {id} ({self.name}): mass_temperature has no effect, as in LIGGGHTS 3.8.0 (nothing sums "
+                     "the heat flux into a mesh there): the wall stays at its temperature")
+        self.extrusion_length = args.extrude_planar
+        if self.extrusion_length is not None:
+            self.check_planar()
         self.extra_keywords(sim, args)
+
+    def read_mesh(self, sim, args):
+        """(vertices, triangles) of the file or of the walls another fix extruded, with LIGGGHTS's
+        reading checks and repairs (mesh_quality)."""
+        precision = mesh_quality.DEFAULT_PRECISION if args.precision is None else args.precision
+        if args.fix is not None:
+            source = mesh_fix(sim, args.fix)
+            if getattr(source, "extrusion_length", None) is None:
+                raise ScriptError(f"fix {args.fix} extrudes no walls (give it extrude_planar L)")
+            corners = source.extruded_corners()
+            points = corners.reshape(-1, 3)
+            triangles = np.arange(len(points), dtype=np.int64).reshape(-1, 3)
+            lines, numbered = np.arange(1, len(triangles) + 1, dtype=np.int64), False
+        else:
+            path = sim.resolve(args.file)
+            points, triangles, index = read_triangles(path, args.file, with_index=True)
+            listing = args.element_exclusion_list
+            try:
+                lines = mesh_quality.element_lines(path, args.file, int(index.max()) + 1)[index]
+                numbered = True
+            except ScriptError:
+                if listing is not None:
+                    raise
+                lines, numbered = index + 1, False
+            if listing is not None and listing[0] == "read":
+                excluded = mesh_quality.read_exclusion_list(sim.resolve(listing[1]), listing[1])
+                kept = ~np.isin(lines, excluded)
+                triangles, lines = triangles[kept], lines[kept]
+                if len(triangles) == 0:
+                    raise ScriptError(f"element exclusion list {listing[1]} leaves no triangle of {args.file}")
+        if args.heal == "auto_remove_duplicates":
+            kept = mesh_quality.healed(points[triangles], precision)
+            triangles, lines = triangles[kept], lines[kept]
+        points = apply_placement(points, args.placement)
+        listing = args.element_exclusion_list
+        writing = listing is not None and listing[0] == "write"
+        curvature_cos = (mesh_quality.DEFAULT_CURVATURE_COS if args.curvature is None
+                         else math.cos(math.radians(args.curvature)))
+        pairs = mesh_quality.check_mesh(self.id, self.file, points[triangles], lines, precision, curvature_cos,
+                                args.curvature_tolerant, args.heal != "no", numbered,
+                                (listing[1], sim.resolve(listing[1]) if sim.comm.rank == 0 else None) if writing
+                                else None, sim.warn)
+        if len(pairs):
+            triangles = triangles[mesh_quality.healed(points[triangles], precision)]
+        self.precision = precision
+        return points, triangles
+
+    def check_planar(self, remedy="extrude_planar needs a planar mesh"):
+        """A ScriptError when a vertex lies farther than 1e-8 of the mesh's size from the plane of its
+        first triangle."""
+        origin = self.placed[self.triangles[0, 0]]
+        distance = np.abs((self.placed[self.triangles].reshape(-1, 3) - origin) @ self.face_normal[0])
+        size = float(np.ptp(self.placed, axis=0).max())
+        if distance.max() > PLANAR_TOLERANCE * size:
+            raise ScriptError(f"mesh file {self.file} is not planar: a vertex lies {distance.max():.3g} from the "
+                              f"plane of its first triangle ({remedy})")
+
+    def extruded_corners(self):
+        """The walls extrude_planar sweeps from the mesh's boundary, as the mesh is now."""
+        return mesh_quality.extruded_corners(self.vertices[self.triangles], self.extrusion_length, self.precision)
 
     def extra_keywords(self, sim, args):
         """What a derived style makes of its own keywords (mesh/surface/stress), or its checks of

@@ -79,8 +79,9 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, ScriptError, keyword
+from pdps_core.api import ContactHistory, Fix, HeatTransport, ScriptError, keyword
 from pdps_granular_contact import contact_models
+from pdps_granular_contact.gran.heat_conduction import CONSTANT, OVERLAP
 from pdps_granular_contact.material import Material
 from pdps_granular_contact.gran.words import GranModelArgs
 
@@ -166,6 +167,32 @@ def near_primitive(x, radius, chosen, wallstyle, position, cylinder, margin, fla
         flags[k] = gap < radius[i] + margin
 
 
+@njit(cache=True)
+def wall_heat_flux(near, count, starts, distance, radius, ptype, wall_type, conductivity, mode, area_constant,
+                   wall_temperature, temp, heat_flux, coefficient, store):
+    """Heat into each particle from a wall at ``wall_temperature`` through its contacts (rows
+    starts[k] .. starts[k + 1] of particle near[k], centre distance ``distance``):
+    4 k_p k_w / (k_p + k_w) sqrt(A) (T_w - T_p), A by fix heat/gran's contact_area; the last
+    contact's conductance into ``coefficient`` when ``store`` (LIGGGHTS's wallHeattransferCoeff)."""
+    kw = conductivity[wall_type]
+    for k in range(count):
+        i = near[k]
+        kp = conductivity[ptype[i]]
+        for row in range(starts[k], starts[k + 1]):
+            h = 0.0
+            if kp > 0.0 and kw > 0.0:
+                if mode == OVERLAP:
+                    area = math.pi * (radius[i] * radius[i] - distance[row] * distance[row])
+                elif mode == CONSTANT:
+                    area = area_constant
+                else:
+                    area = math.pi * radius[i] * radius[i]
+                h = 4.0 * kp * kw / (kp + kw) * math.sqrt(max(area, 0.0))
+            heat_flux[i] += h * (wall_temperature - temp[i])
+            if store:
+                coefficient[i] = h
+
+
 class FixWallGranModel(Fix):
     name = "wall/gran"
     minimize_idle = True         # LAMMPS's fix wall/gran has no min_post_force (recorded: a minimization ignores it)
@@ -243,6 +270,7 @@ class FixWallGranModel(Fix):
         self.table = WallContactTable()
         self._near = np.zeros(0, dtype=np.int64)
         self._count = 0
+        self.heat = None        # fix heat/gran, when a mesh has a temperature (found at each run's setup)
 
     def _primitive(self, sim, words, shear):
         _, kind, (style, *values) = words
@@ -264,6 +292,13 @@ class FixWallGranModel(Fix):
     # ---- hooks ----
     def setup(self, sim):
         self.law.bind(Material(sim, sim.ntypes, f"fix {self.id} (wall/gran)"))
+        self.heat = None
+        hot = [mesh.id for mesh in self.meshes if getattr(mesh, "temperature", None) is not None]
+        if hot:
+            self.heat = next((fix for fix in sim.fixes.values() if isinstance(fix, HeatTransport)), None)
+            if self.heat is None:
+                raise ScriptError(f"fix {self.id} (wall/gran): mesh {hot[0]} has a temperature, which needs a fix "
+                                  "heat/gran for the particles' (LIGGGHTS: no Temp property)")
         for contacts in self.mesh_contacts:
             contacts.setup()
         if self.primitive is not None:
@@ -311,9 +346,23 @@ class FixWallGranModel(Fix):
             logs.append((number, contacts.forces(sim, self.law, update, tally=None if log else mesh.tally(),
                                                  wall_type=mesh.material_type, log=log, store=bool(self.store),
                                                  f=f, torque=torque)))
+            if not log and self.heat is not None and mesh.temperature is not None:
+                self._conduct(sim, mesh, contacts)
         if self.store and not log:
             self._store_forces(sim, logs)
         return logs
+
+    def _conduct(self, sim, mesh, contacts):
+        """The heat of this step's contacts with a mesh that has a temperature into the particles'
+        heat flux (fix heat/gran's law, its area model and conductivities)."""
+        a = sim.particles.arrays
+        mode, area_constant, conductivity = self.heat.wall_conduction(sim)
+        store = "wallHeattransferCoeff" in a
+        coefficient = a["wallHeattransferCoeff"] if store else a["heatFlux"]
+        table = contacts.table
+        wall_heat_flux(contacts.near, len(contacts.near), table.starts, table.distance, a["radius"], a["type"],
+                       mesh.material_type, conductivity, mode, area_constant, float(mesh.temperature), a["Temp"],
+                       a["heatFlux"], coefficient, store)
 
     def _wall_forces(self, sim, rows, nrows, history, wall_type, f, torque, update, log, transfer_cos):
         """The composed law on the contact table's rows; the contacts' log (rows of LOG_COLUMNS and

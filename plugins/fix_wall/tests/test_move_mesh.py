@@ -231,19 +231,27 @@ def test_a_conveyor_cannot_be_moved(data):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("type 1", "missing keyword file"),
+    ("type 1", "expected file FILE or fix MESH_ID (got neither)"),
+    ("file {data}/square.stl fix other", "expected file FILE or fix MESH_ID (got both)"),
     ("file {data}/square.stl type 7", "type must be from 1 to 1, the number of types (got 7)"),
     ("file {data}/square.stl type x", "type must be an integer (got x)"),
-    ("file {data}/square.stl curvature 120", "curvature must be in (0, 90] degrees (got 120)"),
-    ("file {data}/square.stl precision 1e-5", "keyword precision of fix mesh/surface: pdps merges only identical nodes (meshio)"),
-    ("file {data}/square.stl heal auto_remove_duplicates", "heal auto_remove_duplicates is not supported"),
+    ("file {data}/square.stl curvature 61", "curvature must be in (0, 60] degrees (got 61)"),
+    ("file {data}/square.stl precision 0.002", "precision must be in (0, 0.001] (got 0.002)"),
+    ("file {data}/square.stl precision -1e-5", "precision must be in (0, 0.001] (got -1e-05)"),
     ("file {data}/square.stl surface_ang_vel origin 0 0 0 axis 0 0 1 spin 1",
      "surface_ang_vel must be one of 'omega' (got spin)"),
     ("file {data}/square.stl scale 0", "scale must be > 0 (got 0)"),
     ("file {data}/nothere.stl", "mesh file {data}/nothere.stl does not exist"),
     ("file {data}/square.stl wobble 1", "unknown keyword wobble"),
-    ("file {data}/square.stl element_exclusion_list read ex.txt",
-     "keyword element_exclusion_list of fix mesh/surface: pdps keeps every triangle of the file"),
+    ("file {data}/square.stl element_exclusion_list read ex.txt", "element exclusion list ex.txt does not exist"),
+    ("file {data}/square.stl element_exclusion_list keep ex.txt",
+     "element_exclusion_list must be one of 'read' or 'write' (got keep)"),
+    ("file {data}/square.stl min_feature_length 0.1", "min_feature_length needs element_exclusion_list write FILE"),
+    ("file {data}/square.stl min_feature_length 0.1 element_exclusion_list write ex.txt",
+     "min_feature_length is not supported: LIGGGHTS 3.8.0 has no feature removal either"),
+    ("file {data}/square.stl mass_temperature 0", "mass_temperature must be > 0 (got 0)"),
+    ("file {data}/square.stl extrude_planar 0", "extrude_planar must be > 0 (got 0)"),
+    ("fix nothere", "fix nothere is not defined"),
     ("file {data}/square.stl scale 2 scale x", "placement scale must be a finite number (got x)"),
 ])
 def test_bad_mesh_surface_words(data, words, message):
