@@ -117,6 +117,16 @@ def test_fixed_boundaries_make_no_ghosts(make_sim):
     assert listed_pairs(sim, "half") == expected
 
 
+@pytest.mark.parametrize("cut", [2.0e9, 1.0e40])
+def test_a_cutoff_far_wider_than_the_box_lists_every_pair(make_sim, cut):
+    # a stencil of cut/binsize bins would index bins beyond any grid (it crashed pdps): bins one
+    # cutoff wide instead
+    sim = setup_random(make_sim, 60, 4.0, cut, 0.3, periodic="f f f")
+    x = sim.particles.x[: sim.nlocal]
+    assert listed_pairs(sim, "half") == brute_force_pairs(x, sim.box.length, (False,) * 3, 100.0)
+    assert len(listed_pairs(sim, "half")) == 60 * 59 // 2
+
+
 class Drift(Fix):
     """Moves every particle by a fixed displacement per step (no integrator, no forces needed)."""
     name = "test/drift"

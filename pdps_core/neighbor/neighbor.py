@@ -526,6 +526,12 @@ class Neighbor:
             per_box = limits.bin_grid(box.length, target)
             binsize = box.length / per_box
             reach = np.ceil(cutneigh / binsize).astype(np.int64)
+            # a cutoff far wider than the box (absurd radii): bins one cutoff wide, a stencil of one
+            # bin each way (a stencil wider than any grid would index bins that do not exist)
+            wide = 2 * reach + 1 > limits.MAX_BINS_PER_AXIS
+            if wide.any():
+                binsize = np.where(wide, cutneigh, binsize)
+                reach = np.where(wide, 1, reach)
             with np.errstate(invalid="ignore", over="ignore"):
                 first = np.floor((np.minimum(low_high[2], low_high[0] - reach * binsize) - box.lo) / binsize) - 1
                 last = np.floor((np.maximum(low_high[3], low_high[1] + reach * binsize) - box.lo) / binsize) + 1
