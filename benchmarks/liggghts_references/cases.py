@@ -522,6 +522,13 @@ CASES = {
                               + MESH_FLOOR_WALL), files={"sliver.stl": SLIVER_FLOOR}),
     "mesh_temperature": Case("fix_wall", ("fix mesh/surface", "fix heat/gran/conduction"), HOT_FLOOR.format(""),
                              files={"floor.stl": floor_stl(0.002)}),
+    "wall_local_heat": Case("fix_wall", ("compute wall/gran/local",),
+                            HOT_FLOOR.format("").replace(
+                                "compute tm all reduce max f_Temp\n",
+                                "compute tm all reduce max f_Temp\ncompute wl all wall/gran/local delta heatFlux\n"
+                                "compute ws all reduce sum c_wl[1] c_wl[2]\n").replace(
+                                "c_ts[1] c_ts[2] c_ts[3] c_tm", "c_ts[1] c_ts[2] c_tm c_ws[1] c_ws[2]"),
+                            files={"floor.stl": floor_stl(0.002)}),
     # LIGGGHTS 3.8.0 sums no heat flux into a mesh: mass_temperature changes nothing
     "mesh_mass_temperature": Case("fix_wall", ("fix mesh/surface",), HOT_FLOOR.format(" mass_temperature 0.01"),
                                   files={"floor.stl": floor_stl(0.002)}),

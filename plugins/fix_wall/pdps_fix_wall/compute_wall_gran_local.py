@@ -18,15 +18,18 @@ chosen by the keywords, always in LIGGGHTS's order whatever order they are given
   values, with tangential history; the epsd/epsd2 rolling spring torque, 3 values; as pair gran's);
 - ``contactArea`` (1): :math:`\pi(R^2 - d^2)`, the area of the circle where the sphere meets the
   wall's plane (distance^2);
-- ``delta`` (1): the overlap :math:`R - d` (distance).
+- ``delta`` (1): the overlap :math:`R - d` (distance);
+- ``heatFlux`` (1): the heat into the particle through the contact, :math:`\frac{4k_pk_w}{k_p +
+  k_w}\sqrt{A}\,(T_w - T_p)` for a mesh with a ``temperature`` under fix heat/gran (its contact area
+  model, the temperatures now), else 0 (energy/time).
 
-No keyword: pos, vel, id, force, torque, history, contactArea. ``heatFlux`` is refused (no heat
-conduction with walls). Rows of a parallel run come from the rank owning the particle.
+No keyword: pos, vel, id, force, torque, history, contactArea. Rows of a parallel run come from the
+rank owning the particle.
 
 Syntax::
 
     compute ID GROUP wall/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea]
-        [delta] [wall FIX_ID]
+        [delta] [heatFlux] [wall FIX_ID]
 
 Example::
 
@@ -34,27 +37,29 @@ Example::
     dump contacts all local 1000 contacts.txt c_walls[1] c_walls[2] c_walls[3] c_walls[7]
 """
 
+import math
 from typing import Literal
 
 import numpy as np
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
+from pdps_granular_contact.gran.heat_conduction import CONSTANT, OVERLAP
 
 from .wall_contact import LOG_COLUMNS
 from .wall_gran_model import FixWallGranModel
 
 # columns of each keyword; history's are as many as the wall's contact law keeps
 KEYWORDS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None, "contactArea": 1,
-            "delta": 1}
+            "delta": 1, "heatFlux": 1}
 DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
 COLUMN = {name: k for k, name in enumerate(LOG_COLUMNS)}
-COLUMN_WORDS = (*KEYWORDS, "heatFlux")
+COLUMN_WORDS = tuple(KEYWORDS)
 
 
 class ComputeWallGranLocal(Compute):
     name = "wall/gran/local"
     usage = ("compute ID GROUP wall/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] "
-             "[delta] [wall FIX_ID]")
+             "[delta] [heatFlux] [wall FIX_ID]")
 
     class Args(StyleArgs):
         # LIGGGHTS's column words (its manual calls them keywords); heatFlux is refused below
@@ -65,9 +70,6 @@ class ComputeWallGranLocal(Compute):
         super().__init__(sim, id, group, args)
         words = list(args.columns)
         self.wall_id = args.wall
-        for word in words:
-            if word == "heatFlux":
-                raise ScriptError("heatFlux is not supported (no heat conduction with walls)")
         chosen = set(words) or set(DEFAULT)
         self.keywords = [name for name in KEYWORDS if name in chosen]
 
@@ -108,8 +110,33 @@ class ComputeWallGranLocal(Compute):
                 "history": [log[:, len(LOG_COLUMNS):]],
                 "contactArea": [log[:, [COLUMN["area"]]]],
                 "delta": [log[:, [COLUMN["delta"]]]],
+                "heatFlux": [self._heat(sim, wall, number, rows, log[:, COLUMN["delta"]])[:, None]]
+                if "heatFlux" in self.keywords else [],
             }
             blocks.append(np.hstack([part for name in self.keywords for part in parts[name]]))
         if not blocks:
             return np.zeros((0, columns))
         return np.vstack(blocks).reshape(-1, columns)
+
+    @staticmethod
+    def _heat(sim, wall, number, rows, delta):
+        """The heat into each contact's particle from the wall (0 unless it is a mesh with a
+        temperature under fix heat/gran), by fix heat/gran's law and the temperatures now."""
+        mesh = wall.meshes[number] if wall.meshes else None
+        if mesh is None or getattr(mesh, "temperature", None) is None or wall.heat is None:
+            return np.zeros(len(rows))
+        p = sim.particles
+        a = p.arrays
+        mode, constant, conductivity = wall.heat.wall_conduction(sim)
+        radius = p.radius[rows]
+        if mode == OVERLAP:
+            distance = radius - delta
+            area = math.pi * (radius * radius - distance * distance)
+        elif mode == CONSTANT:
+            area = np.full(len(rows), constant)
+        else:
+            area = math.pi * radius * radius
+        kp, kw = conductivity[a["type"][rows]], conductivity[mesh.material_type]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            h = np.where((kp > 0.0) & (kw > 0.0), 4.0 * kp * kw / (kp + kw) * np.sqrt(np.maximum(area, 0.0)), 0.0)
+        return h * (mesh.temperature - a["Temp"][rows])

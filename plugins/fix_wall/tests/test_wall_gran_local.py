@@ -91,7 +91,6 @@ def test_keywords_come_in_liggghts_order_and_dump_local_writes_them(tmp_path, li
 
 
 @pytest.mark.parametrize("line, message", [
-    ("compute bad all wall/gran/local heatFlux", "heatFlux is not supported"),
     ("compute bad all wall/gran/local speed", "columns must be one of 'pos', 'vel', 'id', 'force', 'torque', "
      "'history', 'contactArea', 'delta' or 'heatFlux' (got speed)"),
     ("dump d all local 10 {tmp}/x.txt", "dump local needs at least one attribute"),
