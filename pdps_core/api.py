@@ -117,6 +117,7 @@ CONTRACT = {
         "request": "request(name, width=, dtype=, default=, ghost=, replicate=): allocate a per-atom array (ghost=False: ghosts do not carry it; replicate=\"copy\": the replicate command copies it, \"refuse\" (default): replicate refuses while it exists)",
         "has": "has(name): whether a per-atom array exists",
         "index_of_tag": "index_of_tag(tag): the owned row of a global id, or -1",
+        "owned_rows": "owned_rows(tags): the owned row of each global id of an array, -1 for those not owned here",
         "num_bond": "(nall,) int32 bonds stored on each particle (on a bond's first particle only), in a scene with bonds",
         "bond_type": "(nall, B) int32 their types (> 0 computed, < 0 turned off, 0 broken)",
         "bond_atom": "(nall, B) int64 the id of each bond's other particle",

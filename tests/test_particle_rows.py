@@ -131,3 +131,12 @@ def test_ghost_blocks_carry_neighbour_values_and_zero_the_summed_ones():
     assert p.nlocal == 5 and p.nghost == 0
     assert p.f[4].tolist() == [4.0] * 3 and p.torque[4].tolist() == [5.0] * 3 and p.image[4].tolist() == [2] * 3
     assert p.mask[4] == 9 and p.tag[4] == 3
+
+
+def test_owned_rows_finds_each_id_and_marks_the_others():
+    p = Particles()
+    p.add(np.zeros((5, 3)), 1, tags=np.array([40, 7, 19, 3, 25]))
+    rows = p.owned_rows(np.array([3, 40, 8, 25, 3, 100, 0]))
+    assert rows.tolist() == [3, 0, -1, 4, 3, -1, -1]
+    assert all(p.index_of_tag(t) == r for t, r in zip([3, 40, 8, 25], rows[:4]))
+    assert Particles().owned_rows(np.array([1, 2])).tolist() == [-1, -1]

@@ -541,3 +541,15 @@ class Particles:
     def index_of_tag(self, tag):
         hits = np.flatnonzero(self.arrays["tag"][: self.nlocal] == tag)
         return int(hits[0]) if len(hits) else -1
+
+    def owned_rows(self, tags):
+        """The owned row of each id in ``tags`` (an array), -1 for ids not owned here."""
+        tags = np.asarray(tags, dtype=np.int64)
+        n = self.nlocal
+        if n == 0:
+            return np.full(len(tags), -1, dtype=np.int64)
+        owned = self.arrays["tag"][:n]
+        order = np.argsort(owned, kind="stable")
+        at = np.minimum(np.searchsorted(owned[order], tags), n - 1)
+        rows = order[at]
+        return np.where(owned[rows] == tags, rows, -1).astype(np.int64)

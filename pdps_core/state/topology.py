@@ -131,7 +131,7 @@ class Topology:
         again. Room for more bonds per particle is made as needed, on every rank alike."""
         p = sim.particles
         pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
-        rows = _owned_rows(p, pairs[:, 0])
+        rows = p.owned_rows(pairs[:, 0])
         mine = rows >= 0
         counts = np.bincount(rows[mine], minlength=p.nlocal) if mine.any() else np.zeros(p.nlocal, np.int64)
         need = int(sim.comm.max(int((p.num_bond[:p.nlocal] + counts[:p.nlocal]).max(initial=0))))
@@ -151,7 +151,7 @@ class Topology:
         p = sim.particles
         pairs = np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
         both = np.concatenate([pairs, pairs[:, ::-1]])
-        for row, partner in zip(_owned_rows(p, both[:, 0]).tolist(), both[:, 1].tolist()):
+        for row, partner in zip(p.owned_rows(both[:, 0]).tolist(), both[:, 1].tolist()):
             if row < 0:
                 continue
             count = int(p.num_bond[row])
@@ -212,18 +212,6 @@ class Topology:
         stored = p.bond_type[:p.nlocal][slots]
         rows[:, 2] = stored[stored != 0]
         return rows
-
-
-def _owned_rows(p, tags):
-    """The owned row of each id in ``tags``, -1 for ids not owned here."""
-    n = p.nlocal
-    order = np.argsort(p.tag[:n], kind="stable")
-    at = np.searchsorted(p.tag[:n][order], tags)
-    at = np.minimum(at, max(n - 1, 0))
-    if n == 0:
-        return np.full(len(tags), -1, dtype=np.int64)
-    rows = order[at]
-    return np.where(p.tag[rows] == tags, rows, -1).astype(np.int64)
 
 
 @njit(cache=True)

@@ -118,12 +118,10 @@ class FixBondCreate(Fix):
         ends = np.concatenate([np.repeat(p.tag[:n], slots.sum(axis=1)), p.bond_atom[:n][slots]])
         every = sim.comm.allgather_rows(ends.astype(np.float64).reshape(-1, 1)).reshape(-1).astype(np.int64)
         tags, counts = np.unique(every, return_counts=True)
-        at = np.searchsorted(tags, p.tag[:n])
-        found = (at < len(tags)) & (tags[np.minimum(at, max(len(tags) - 1, 0))] == p.tag[:n]) if len(tags) else \
-            np.zeros(n, dtype=bool)
+        rows = p.owned_rows(tags)
         count = p.arrays[self.count_name]
         count[:n] = 0
-        count[:n][found] = counts[at[found]]
+        count[rows[rows >= 0]] = counts[rows >= 0]
 
     def post_integrate(self, sim):
         step = sim.step
@@ -151,12 +149,10 @@ class FixBondCreate(Fix):
         # the count of each owned particle of a new bond, and its new type at its limit
         p = sim.particles
         count = p.arrays[self.count_name]
-        n = p.nlocal
         ends, times = np.unique(pairs.reshape(-1), return_counts=True)
-        at = np.searchsorted(ends, p.tag[:n])
-        mine = (at < len(ends)) & (ends[np.minimum(at, len(ends) - 1)] == p.tag[:n])
-        rows = np.flatnonzero(mine)
-        count[rows] += times[at[rows]]
+        at = p.owned_rows(ends)
+        rows, times = at[at >= 0], times[at >= 0]
+        count[rows] += times
         for row in rows.tolist():
             if p.type[row] == a.itype:
                 if count[row] == self.imax:
