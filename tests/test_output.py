@@ -288,3 +288,20 @@ def test_pdps_run_progress_goes_to_stderr_unless_turned_off(pdps_cli, monkeypatc
 
 def test_a_silent_simulation_has_no_progress(make_sim):
     assert make_sim(screen=False).output.progress is None
+
+
+# ---- lattice spacings ---------------------------------------------------------------------------
+@pytest.mark.parametrize("lattice, spacings", [
+    # LAMMPS 22 Jul 2025 printed these for the same lines (%20.15g)
+    ("lattice fcc 0.8442 orient x 1 1 0 orient y -1 1 0 orient z 0 0 1",
+     (2.37530771316334, 2.37530771316334, 1.67959619138251)),
+    ("lattice none 2.5", (2.5, 2.5, 2.5)),
+    ("", (1.0, 1.0, 1.0)),                           # before any lattice command: none 1.0
+])
+def test_thermo_xlat_ylat_zlat_are_the_lattice_spacings(make_sim, lattice, spacings):
+    screen = io.StringIO()
+    sim = make_sim(dialect="lammps", screen=screen)
+    sim.command(f"units lj\n{lattice}\nregion box block 0 2 0 2 0 2 units box\ncreate_box 1 box\nmass 1 1.0\n"
+                "thermo_style custom step xlat ylat zlat\nrun 0")
+    assert sim.output.thermo.values()[1:] == pytest.approx(spacings, rel=1e-14)
+    assert "Step           Xlat           Ylat           Zlat" in screen.getvalue()

@@ -36,7 +36,7 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
            "xy": "Xy", "xz": "Xz", "yz": "Yz", "fmax": "Fmax", "fnorm": "Fnorm", "nbuild": "Nbuild",
            "ndanger": "Ndanger", "bonds": "Bonds", "angles": "Angles", "dihedrals": "Diheds",
            "impropers": "Impros", "pxx": "Pxx", "pyy": "Pyy", "pzz": "Pzz", "pxy": "Pxy", "pxz": "Pxz",
-           "pyz": "Pyz"}
+           "pyz": "Pyz", "xlat": "Xlat", "ylat": "Ylat", "zlat": "Zlat"}
 PRESSURE_TENSOR = ("pxx", "pyy", "pzz", "pxy", "pxz", "pyz")
 INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger", "bonds", "angles", "dihedrals", "impropers"}
 ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve", "ebond", "emol"}
@@ -119,6 +119,9 @@ def keyword_value(sim, name, indices=()):
         return total_mass / sim.box.volume * sim.units.mv2d
     if name in ("lx", "ly", "lz"):
         return float(sim.box.length["xyz".index(name[1])])
+    if name in ("xlat", "ylat", "zlat"):
+        # the lattice spacings; LAMMPS's lattice before any lattice command is "none 1.0"
+        return 1.0 if sim.lattice is None else float(sim.lattice.spacing["xyz".index(name[0])])
     if name in BOUNDS:
         side, d = BOUNDS[name]
         return float((sim.box.lo, sim.box.hi)[side][d])
