@@ -37,11 +37,46 @@ def test_extra_dof_sets_what_a_temp_compute_takes_off():
     assert observables.temperature(sim) == pytest.approx(2 * 1.0 / 3, rel=1e-15)
 
 
+LJ_CRYSTAL = """\
+units lj
+lattice fcc 0.8442
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+fix 1 all nve
+compute_modify thermo_temp extra/dof 0
+thermo_style custom step temp ke press etotal
+thermo 10
+run 20
+"""
+# LAMMPS 22 Jul 2025 on this machine, the script above (%20.15g): temp, ke, press, etotal at 0, 10, 20
+LAMMPS_EXTRA_DOF_0 = [
+    (1.48611111111111, 2.22916666666667, -4.98074227008559, -4.54420138658623),
+    (1.16477332394566, 1.74715998591849, -2.45684768334709, -4.54494549805407),
+    (0.657891869979291, 0.986837804968936, 1.18404584704705, -4.54924919233268),
+]
+
+
+def test_extra_dof_of_thermo_temp_gives_lammps_thermo():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command(LJ_CRYSTAL.replace("run 20", "run 0"))
+    assert sim.output.thermo.values()[1:] == pytest.approx(LAMMPS_EXTRA_DOF_0[0], rel=1e-13)
+    # 108 particles at 1.5 over 321 degrees of freedom (velocity create's), read over 324
+    assert sim.output.thermo.values()[1] == pytest.approx(1.5 * 321 / 324, rel=1e-14)
+    for k, steps in enumerate((10, 10)):
+        sim.command(f"run {steps}")
+        assert sim.output.thermo.values()[1:] == pytest.approx(LAMMPS_EXTRA_DOF_0[k + 1], rel=1e-9)
+
+
 @pytest.mark.parametrize("line, message", [
     ("compute_modify thermo_temp dynamic no",
      "dynamic no is not supported: pdps counts a temperature's particles each time it is read (LAMMPS's dynamic yes)"),
-    ("compute_modify thermo_temp extra/dof 0", "extra/dof 0 is not supported for thermo_temp: it removes the 3 "
-     "degrees of freedom of the centre of mass (LAMMPS's default); define a compute temp and set it there"),
+    ("compute_modify thermo_press extra/dof 0", "extra/dof 0 is not supported for thermo_press: it takes no "
+     "degrees of freedom off"),
     ("compute_modify nothing dynamic yes", "compute nothing is not defined"),
     ("compute_modify t dynamic", "expected an ID and keyword/value pairs; usage: compute_modify ID [dynamic yes] "
      "[dynamic/dof yes] [extra/dof N]"),

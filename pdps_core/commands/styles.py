@@ -129,8 +129,8 @@ def compute_modify(sim, args):
     compute or thermo's own (``thermo_temp``): pdps counts a temperature's particles each time it
     is read, which is ``dynamic yes`` (particles inserted or lost during a run count at once); ``no``
     is refused. ``extra/dof N`` (``extra`` in LIGGGHTS) sets the degrees of freedom a temperature
-    compute of the script takes off (LAMMPS's default: the dimension); thermo's own keep the
-    default."""
+    compute of the script or thermo's own (``thermo_temp``) takes off (LAMMPS's default: the
+    dimension); thermo's pressure and ke follow its temperature's."""
     usage = "compute_modify ID [dynamic yes] [dynamic/dof yes] [extra/dof N]"
     if len(args) < 3 or len(args) % 2 == 0:
         raise ScriptError(f"expected an ID and keyword/value pairs; usage: {usage}")
@@ -148,10 +148,10 @@ def compute_modify(sim, args):
         compute = sim.computes.get(ident)
         if compute is not None and hasattr(compute, "extra_dof"):
             compute.extra_dof = extra
+        elif ident == "thermo_temp" and compute is None:
+            sim.output.thermo.extra_dof = extra
         elif extra != sim.dimension:
-            raise ScriptError(f"{key} {value} is not supported for {ident}: it removes the {sim.dimension} "
-                              "degrees of freedom of the centre of mass (LAMMPS's default); define a compute "
-                              "temp and set it there")
+            raise ScriptError(f"{key} {value} is not supported for {ident}: it takes no degrees of freedom off")
 
 
 @command("uncompute")

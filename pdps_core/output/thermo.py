@@ -101,7 +101,10 @@ def keyword_value(sim, name, indices=()):
                 # clump counted as one body
                 total += obs.kinetic_energy_with_clumps(sim, thermo.temp_group())
             else:
-                total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group()) * sim.units.boltz * thermo.temperature()
+                extra = thermo.extra_dof if thermo.temp_id is None else getattr(
+                    sim.computes.get(thermo.temp_id), "extra_dof", None)
+                total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group(), extra) * sim.units.boltz \
+                    * thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         if name == "econserve":
@@ -171,7 +174,7 @@ class _ThermoTemp(_ThermoCompute):
     gives_temperature = True
 
     def scalar(self, sim):
-        return obs.temperature(sim)
+        return obs.temperature(sim, extra=sim.output.thermo.extra_dof)
 
     def vector(self, sim):
         return obs.kinetic_tensor(sim)
@@ -187,7 +190,7 @@ class _ThermoPress(_ThermoCompute):
     def scalar(self, sim):
         thermo = sim.output.thermo
         if thermo.temp_id is None:
-            return obs.pressure(sim)
+            return obs.pressure(sim, extra=thermo.extra_dof)
         return obs.pressure(sim, temp=thermo.temperature(), temp_group=thermo.temp_group())
 
     def vector(self, sim):
@@ -217,6 +220,7 @@ class Thermo:
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.flush_each = False
         self.temp_id = self.press_id = None
+        self.extra_dof = None           # compute_modify thermo_temp extra/dof N (None: the dimension)
         self.lost = None                # thermo_modify lost (None: the dialect's default): particles leaving fixed faces
         self.told_lost = False          # the dialect's ignore has said once that particles went
         self.counted = None             # the particle count at the last line (lost warn)
@@ -289,7 +293,7 @@ class Thermo:
     def temperature(self):
         if self.temp_id is not None:
             return float(self.sim.compute_value(self.temp_id))
-        return obs.temperature(self.sim)
+        return obs.temperature(self.sim, extra=self.extra_dof)
 
     def temp_group(self):
         """The group of the thermo temperature (thermo_modify temp's compute, or all): pxx ... pyz
@@ -303,7 +307,7 @@ class Thermo:
         if self.temp_id is not None:
             # the kinetic part is the temperature compute's: its T and its group's degrees of freedom
             return obs.pressure(self.sim, temp=self.temperature(), temp_group=self.temp_group())
-        return obs.pressure(self.sim)
+        return obs.pressure(self.sim, extra=self.extra_dof)
 
     def clock(self, name):
         """cpu (wall seconds of this run), tpcpu and spcpu (simulated time and steps per wall second

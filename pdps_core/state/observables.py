@@ -156,13 +156,13 @@ def virial_trace(sim):
     return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension])))) + sim.dimension * tail_corrections(sim)[1]
 
 
-def pressure(sim, temp=None, temp_group="all"):
+def pressure(sim, temp=None, temp_group="all", extra=None):
     """Pressure of the whole system from the virial theorem. The kinetic part is N_dof k_B T of
-    ``temp_group`` (LAMMPS: the temperature compute's own degrees of freedom); T defaults to its
-    temperature."""
+    ``temp_group`` (LAMMPS: the temperature compute's own degrees of freedom, ``extra`` as
+    degrees_of_freedom's); T defaults to its temperature."""
     if temp is None:
-        temp = temperature(sim, temp_group)
-    dof = degrees_of_freedom(sim, temp_group)
+        temp = temperature(sim, temp_group, extra)
+    dof = degrees_of_freedom(sim, temp_group, extra)
     return (dof * sim.units.boltz * temp + virial_trace(sim)) / (sim.dimension * sim.box.volume) \
         * sim.units.nktv2p
 
