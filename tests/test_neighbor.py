@@ -451,3 +451,48 @@ def test_the_spatial_sort_orders_particles_by_cell_z_slowest_each_cells_in_their
     k = np.clip(np.floor((x - lo) / binsize).astype(np.int64), 0, nbins - 1)
     cell = (k[:, 2] * nbins[1] + k[:, 1]) * nbins[0] + k[:, 0]
     np.testing.assert_array_equal(cell_order(x, len(x), lo, binsize, nbins), np.argsort(cell, kind="stable"))
+
+
+ONCE_MELT = """\
+units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 5 0 5 0 5
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 3.0 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+neighbor 0.3 bin
+neigh_modify once yes
+fix 1 all nve
+thermo_style custom step temp pe ke etotal press
+thermo_modify format float %20.15g
+thermo 20
+run 100
+"""
+# LAMMPS 22 Jul 2025 on this machine, the script above (%20.15g): its one list goes stale as the
+# melt moves, the energy drifts, and pdps misses the same pairs
+LAMMPS_ONCE = [
+    (0, 3, -6.77336805325466, 4.491, -2.28236805325465, -3.70778247008558),
+    (20, 1.64505451181359, -4.75512512933149, 2.46264660418495, -2.29247852514653, 5.97041422504125),
+    (40, 1.59288071820764, -4.669771138092, 2.38454243515684, -2.28522870293516, 6.16989792361061),
+    (60, 1.6396705309889, -4.73411092672105, 2.45458678489038, -2.27952414183067, 5.83256529810339),
+    (80, 1.63918362596287, -4.72622649892004, 2.45385788806641, -2.27236861085363, 5.86238144036211),
+    (100, 1.71794933560485, -4.83850440415407, 2.57177015540047, -2.26673424875361, 5.38395589175498),
+]
+
+
+def test_neigh_modify_once_builds_one_list_a_run_as_lammps_and_says_when_it_goes_stale(make_sim):
+    screen = io.StringIO()
+    sim = make_sim(dialect="lammps", screen=screen)
+    sim.command(ONCE_MELT)
+    rows = thermo_rows("\n".join(line for line in screen.getvalue().splitlines() if not line.startswith("WARNING")))
+    assert len(rows) == len(LAMMPS_ONCE)
+    for row, reference in zip(rows, LAMMPS_ONCE):
+        assert row == pytest.approx(reference, rel=1e-10, abs=1e-12)
+    # the run's first build alone (pdps's count has it, LAMMPS's "builds = 0" leaves it out, as in every run)
+    assert "Neighbor list builds = 1, dangerous builds = 0" in screen.getvalue()
+    assert ("neigh_modify once yes: a particle moved 0.17 since the run's neighbor list build, more than half "
+            "the skin 0.3, at step 7") in screen.getvalue()

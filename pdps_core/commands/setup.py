@@ -79,7 +79,7 @@ def neighbor(sim, args):
 
 @command("neigh_modify", "neighbor_modify")
 def neigh_modify(sim, args):
-    usage = "neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | molecule/intra G | molecule/inter G | none]"
+    usage = "neigh_modify [every N] [delay N] [check yes|no] [once yes|no] [one N] [exclude type I J | group G1 G2 | molecule/intra G | molecule/inter G | none]"
     if not args:
         raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
     args = _exclusions(sim, list(args), usage)
@@ -89,9 +89,9 @@ def neigh_modify(sim, args):
         raise ScriptError(f"expected keyword/value pairs; usage: {usage}")
     values = {}
     for key, value in zip(args[::2], args[1::2]):
-        choice(key, "neigh_modify keyword", ("every", "delay", "check", "one", "exclude"))
-        if key == "check":
-            values[key] = yes_no(value, "check")
+        choice(key, "neigh_modify keyword", ("every", "delay", "check", "once", "one", "exclude"))
+        if key in ("check", "once"):
+            values[key] = yes_no(value, key)
         elif key == "one":
             values[key] = integer(value, key, low=1, high=limits.MAX_NEIGHBORS_ONE)
         else:

@@ -148,6 +148,8 @@ class Neighbor:
         self.every = 1
         self.delay = 0
         self.check = True
+        self.once = False           # neigh_modify once yes: lists built at a run's start only
+        self.once_overrun = 0.0     # with once: the largest move beyond half the skin, this run
         self.requests = []
         self.ago = 0
         self.xhold = None
@@ -206,7 +208,7 @@ class Neighbor:
         wider one (``direct_skin``) rebuilds less often, at the price of more ghosts to copy."""
         lists = self.perpetual
         direct = (self._direct_due() and bool(lists) and all(r.direct_ok for r in lists) and self.check
-                  and self.skin_trial is None)
+                  and not self.once and self.skin_trial is None)
         self._skin = self.direct_skin(box) if direct else self.requested_skin
 
     def _direct_due(self):
@@ -237,7 +239,9 @@ class Neighbor:
         """``neighbor auto``: the next run tries skins first (skin_trial.py)."""
         self.skin_trial = SkinTrial(self.skin)
 
-    def modify(self, every=None, delay=None, check=None, one=None):
+    def modify(self, every=None, delay=None, check=None, one=None, once=None):
+        if once is not None:
+            self.once = once
         if one is not None:
             self.one = one
         if every is not None:
@@ -321,6 +325,11 @@ class Neighbor:
             self._moved_sq[0] = largest_displacement_sq(particles.x, self.xhold, len(self.xhold))
         moved_sq = float(comm.max(self._moved_sq)[0])
         self.moved_everywhere = float(np.sqrt(moved_sq))
+        if self.once:
+            # LAMMPS builds no list after the run's first; pdps still says when pairs may be missed
+            if self.requests and moved_sq > (0.5 * self.skin) ** 2:
+                self.once_overrun = max(self.once_overrun, self.moved_everywhere)
+            return False, False
         if self.check:
             limit = 0.5 * self.skin
             if moved_sq <= limit * limit:

@@ -93,6 +93,7 @@ class Verlet:
         sim.neighbor.special_exclusions(particles, sim.system.topology)
         sim.box.lost = sim.output.thermo.lost_policy()
         sim.neighbor.overrun = 0.0
+        sim.neighbor.once_overrun = 0.0
         sim.styles.pair_list = None
         if sim.pair is not None:
             cutoff = sim.pair.init(sim.ntypes)
@@ -373,6 +374,11 @@ class Verlet:
             self._call("initial_integrate")
             self._call("post_integrate")
             rebuild = sim.neighbor.decide(particles, sim.comm)
+            if sim.neighbor.once_overrun and not self.warned_overrun:
+                self.warned_overrun = True
+                sim.warn(f"neigh_modify once yes: a particle moved {sim.neighbor.once_overrun:.3g} since the "
+                         f"run's neighbor list build, more than half the skin {sim.neighbor.skin:g}, at step {step}: "
+                         "interactions may be missed from now on (LAMMPS builds no list either)")
             if new_skin is not None:
                 sim.neighbor.skin = new_skin
                 sim.neighbor.moved_at_build = 0.0       # moves under the old skin are not the new one's
