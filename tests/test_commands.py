@@ -710,10 +710,10 @@ class TestNeighbor:
         ("neigh_modify every 0", "neigh_modify", "every must be >= 1 (got 0)"),
         ("neigh_modify delay -1", "neigh_modify", "delay must be >= 0 (got -1)"),
         ("neigh_modify every", "neigh_modify",
-         "expected keyword/value pairs; usage: neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | "
+         "expected keyword/value pairs; usage: neigh_modify [every N] [delay N] [check yes|no] [once yes|no] [one N] [exclude type I J | group G1 G2 | "
                                         "molecule/intra G | molecule/inter G | none]"),
         ("neighbor_modify check maybe", "neighbor_modify", "check must be one of yes, no (got maybe)"),
-        ("neigh_modify often 2", "neigh_modify", "neigh_modify keyword must be one of every, delay, check, one, exclude (got often)"),
+        ("neigh_modify often 2", "neigh_modify", "neigh_modify keyword must be one of every, delay, check, once, one, exclude (got often)"),
     ])
     def test_errors(self, sim, line, command, message):
         fails(sim, line, command, message)

@@ -184,7 +184,7 @@ def test_restart_keeps_molecule_ids(tmp_path):
     ("atomic", "neigh_modify exclude molecule/intra all",
      "exclude molecule/intra needs molecule ids (particle_style molecular, bond, angle or full; this is atomic)"),
     ("molecular", "neigh_modify exclude molecule/inter", "exclude molecule/inter needs a group; usage: "
-     "neigh_modify [every N] [delay N] [check yes|no] [one N] [exclude type I J | group G1 G2 | molecule/intra G | "
+     "neigh_modify [every N] [delay N] [check yes|no] [once yes|no] [one N] [exclude type I J | group G1 G2 | molecule/intra G | "
      "molecule/inter G | none]"),
     ("sphere", "group g molecule 1", "group molecule needs molecule ids (particle_style molecular, bond, angle or "
                                      "full; this is sphere)"),
