@@ -53,7 +53,6 @@ STYLE_ALTERNATIVES = {
     ("pair", "tersoff"): "pdps has no many-body potentials",
     ("pair", "sw"): "pdps has no many-body potentials",
     ("pair", "granular"): "gran/hooke, gran/hooke/history, gran/hertz/history, dem/lsd or dem/hertz",
-    ("pair", "dpd/tstat"): "dpd (its dissipative and random parts with a = 0)",
     ("fix", "shake"): "pdps has no constraints",
     ("fix", "rattle"): "pdps has no constraints",
     ("fix", "deposit"): "create_atoms random between runs",
