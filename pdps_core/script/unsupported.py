@@ -68,7 +68,6 @@ STYLE_ALTERNATIVES = {
                           ("compute", "erotate/asphere"))},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
     ("fix", "box/relax"): "none in pdps",
-    ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",
 }
 
 # LIGGGHTS's styles for what pdps does not simulate
