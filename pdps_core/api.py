@@ -8,7 +8,7 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
-from .capabilities import (ContactConduction, ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
+from .capabilities import (ContactConduction, ContactRows, ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
                            TriangleSurface)
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
@@ -25,7 +25,7 @@ from .styles import (API_VERSION, Analyze, Bond, Compute, Dump, Fix, FloatOrVari
                      StyleArgs, StyleName, SubModel, SurfaceContacts, Variable, VariableRef, keyword, param, parse_args,
                      PERATOM_REFERENCE, PeratomReference, peratom_column, registry)
 
-__all__ = ["API_VERSION", "Analyze", "Bond", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactTable", "ContactTimes",
+__all__ = ["API_VERSION", "Analyze", "Bond", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactRows", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",

@@ -99,3 +99,16 @@ class SurfaceValues(Protocol):
     {name: (m,) or (m, k) array}, written by the mesh dumps as cell data."""
 
     def face_data(self, sim) -> dict: ...
+
+
+@runtime_checkable
+class ContactRows(Protocol):
+    """A compute of one row per granular contact (compute pair/gran/local, wall/gran/local):
+    ``contact_columns(sim)`` gives [(keyword, width), ...], the blocks of its ``local(sim)`` rows in
+    order, named by LIGGGHTS's keywords ("pos", "vel", "id", "force", "torque", "history",
+    "contactArea", "delta", "heatFlux"); ``keywords`` lists those keywords it was given, in that
+    order. dump local/gran/vtk writes the rows as lines."""
+
+    keywords: list
+
+    def contact_columns(self, sim) -> list: ...

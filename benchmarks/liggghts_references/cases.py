@@ -889,6 +889,21 @@ CASES = {
                                 "inside_out\n",
                                 "f_down[1] f_down[2] f_up[1] f_up[2] f_up[3]"),
                             files=FACE, ranks=True),
+    # a sieve of holes smaller than every sphere (passage probability 0): the spheres bounce off the
+    # face on its spring-dashpot; one of holes far larger (probability > 1): all pass, counted as
+    # massflow/mesh counts them
+    "sieve_held": Case("fix_wall", ("fix massflow/mesh/sieve",),
+                       bed("fix face all mesh/surface file face.stl type 1\n"
+                           "fix sieve all massflow/mesh/sieve mesh face count once vec_side 0 0 -1 sieveSize 0.005 "
+                           "sieveSpacing 0.006 sieveStiffness 2000 sieveDamping 0.3\n",
+                           "f_sieve[1] f_sieve[2]"),
+                       files=FACE),
+    "sieve_pass": Case("fix_wall", ("fix massflow/mesh/sieve",),
+                       bed("fix face all mesh/surface file face.stl type 1\n"
+                           "fix sieve all massflow/mesh/sieve mesh face count once vec_side 0 0 -1 sieveSize 0.05 "
+                           "sieveSpacing 0.01 sieveStiffness 2000\n",
+                           "f_sieve[1] f_sieve[2] f_sieve[3] f_sieve[4]"),
+                       files=FACE),
     # the floor's force on each sphere, kept as the per-atom vector force_ID (store_force), summed;
     # store_force_contact and store_force_contact_stress keep what no output of LIGGGHTS-PUBLIC reads
     "wall_store_force": Case("fix_wall", ("fix wall/gran",),

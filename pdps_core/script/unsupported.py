@@ -67,7 +67,6 @@ STYLE_ALTERNATIVES = {
                           ("compute", "erotate/asphere"))},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
     ("fix", "box/relax"): "none in pdps",
-    ("fix", "massflow/mesh/sieve"): "fix massflow/mesh (pdps has no sieve model: its random passing of a mesh)",
 }
 
 # LIGGGHTS's styles for what pdps does not simulate
@@ -82,6 +81,8 @@ LIGGGHTS_STYLE_ALTERNATIVES = {
     # in LIGGGHTS's manual, not in LIGGGHTS 3.8.0 itself ("Invalid compute style", run 12-02)
     ("compute", "coord/gran"): "compute contact/atom (LIGGGHTS 3.8.0 itself has no coord/gran)",
     ("compute", "voronoi/atom"): "none in pdps (LIGGGHTS 3.8.0 itself has no voronoi/atom)",
+    ("compute", "pair/gran/local/bond"): "compute pair/gran/local (pdps has no cohesion bond model; LIGGGHTS "
+                                         "3.8.0 itself has no pair/gran/local/bond)",
 }
 
 

@@ -3,12 +3,16 @@ LIGGGHTS's compute pair/gran/local gives (its columns and their order), for ``du
 
 Columns, in this order whatever the order of the keywords (LIGGGHTS's):
 
-- ``pos`` (6): :math:`\mathbf{x}_i`, :math:`\mathbf{x}_j` (distance);
+- ``pos`` (6): :math:`\mathbf{x}_i`, :math:`\mathbf{x}_j` (distance), each wrapped into the box along
+  periodic axes (a contact across a periodic boundary has j's own position, not its image's, as
+  LIGGGHTS's; measured with dump local/gran/vtk);
 - ``vel`` (6): :math:`\mathbf{v}_i`, :math:`\mathbf{v}_j` (velocity);
 - ``id`` (3): the ids of i and j, and 1 when the contact crosses a periodic boundary (0 else);
 - ``force`` (3): the contact force on i (force; :math:`-` on j);
-- ``torque`` (3): :math:`-\mathbf{n}\times\mathbf{F}_t`, the torque of the tangential force on i
-  divided by its lever arm (force; rolling friction torques are not included, as LIGGGHTS);
+- ``torque`` (3): :math:`-(R_i - \delta/2)\,\mathbf{n}\times\mathbf{F}_t`, the torque of the
+  tangential force on i about its centre, lever arm :math:`R_i - \delta/2` (force*distance; as
+  LIGGGHTS 3.8.0 writes it, measured with dump local/gran/vtk; rolling friction torques are not
+  included);
 - ``history``: the values the contact keeps, as i sees them: the tangential spring (3, tangential
   history), then the rolling spring torque (3, rolling_friction epsd or epsd2); none with
   no_history and no spring of rolling (as LIGGGHTS's contact history, read from its source);
@@ -39,7 +43,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Compute, ContactTable, HeatTransport, ScriptError, StyleArgs, param
+from pdps_core.api import Compute, ContactRows, ContactTable, HeatTransport, ScriptError, StyleArgs, param
 from pdps_granular_contact.contact_models import intersection_area
 
 # keyword -> columns, in LIGGGHTS's order
@@ -48,7 +52,7 @@ COLUMNS = {"pos": 6, "vel": 6, "id": 3, "force": 3, "torque": 3, "history": None
 DEFAULT = ("pos", "vel", "id", "force", "torque", "history", "contactArea")
 
 
-class ComputePairGranLocal(Compute):
+class ComputePairGranLocal(Compute, ContactRows):
     name = "pair/gran/local"
     usage = "compute ID GROUP pair/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] [delta] [heatFlux]"
 
@@ -59,6 +63,7 @@ class ComputePairGranLocal(Compute):
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         self.keywords = [k for k in COLUMNS if k in args.columns] if args.columns else list(DEFAULT)
+        self.width = None           # columns of the last rows given
 
     def local(self, sim):
         pair = sim.pair
@@ -78,7 +83,7 @@ class ComputePairGranLocal(Compute):
         for key in self.keywords:
             start = len(blocks)
             if key == "pos":
-                blocks += [xi, xj]
+                blocks += [self._wrapped(sim, xi), self._wrapped(sim, xj)]
             elif key == "vel":
                 blocks += [p.v[i], p.v[j]]
             elif key == "id":
@@ -87,7 +92,8 @@ class ComputePairGranLocal(Compute):
                 blocks.append(found["force"])
             elif key == "torque":
                 n = d / r[:, None]
-                blocks.append(-np.cross(n, found["tangential"]))
+                arm = ri - 0.5 * (ri + rj - r)
+                blocks.append(-arm[:, None] * np.cross(n, found["tangential"]))
             elif key == "history":
                 blocks.append(found["history"])
             elif key == "contactArea":
@@ -100,7 +106,27 @@ class ComputePairGranLocal(Compute):
             for k in range(start, len(blocks)):
                 b = np.asarray(blocks[k], dtype=np.float64)
                 blocks[k] = b.reshape(len(i), b.shape[1] if b.ndim == 2 else 1)
-        return np.column_stack(blocks) if len(i) else np.hstack(blocks)
+        table = np.column_stack(blocks) if len(i) else np.hstack(blocks)
+        self.width = table.shape[1]
+        return table
+
+    def contact_columns(self, sim):
+        """[(keyword, width)] of the rows of ``local`` (ContactRows); history's width is the pair
+        style's."""
+        if self.width is None:
+            self.local(sim)
+        fixed = sum(COLUMNS[k] for k in self.keywords if k != "history")
+        return [(k, COLUMNS[k] if k != "history" else self.width - fixed) for k in self.keywords]
+
+    @staticmethod
+    def _wrapped(sim, x):
+        """Positions wrapped into the box along its periodic axes."""
+        box = sim.box
+        x = np.array(x, dtype=np.float64)
+        for d in range(3):
+            if box.periodic[d]:
+                x[:, d] = box.lo[d] + np.mod(x[:, d] - box.lo[d], box.length[d])
+        return x
 
     @staticmethod
     def _periodic(sim, xj):

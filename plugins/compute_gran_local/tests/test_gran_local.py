@@ -66,13 +66,12 @@ def test_rows_hold_the_pair_styles_contacts():
         r = np.linalg.norm(xi - xj)
         assert row[25] == pytest.approx(D - r, rel=1e-12)
         assert row[24] == pytest.approx(math.pi * ((D / 2) ** 2 - (r / 2) ** 2), rel=1e-9)
-    # torque column: the tangential force's torque on i over its lever arm R - delta/2, which both
-    # spheres of a contact feel; sphere 1 has one contact and no rolling friction: its whole torque
+    # torque column: the tangential force's torque on i, lever arm R - delta/2, the same on both
+    # spheres of equal size; sphere 1 has one contact and no rolling friction: its whole torque
     k = int(np.flatnonzero((ids == 1).any(axis=1))[0])
-    arm = D / 2 - 0.5 * rows[k, 25]
     torque_1 = sim.particles.torque[p.index_of_tag(1)]
     assert np.abs(torque_1).max() > 0
-    np.testing.assert_allclose(arm * rows[k, 18:21], torque_1, rtol=1e-12)
+    np.testing.assert_allclose(rows[k, 18:21], torque_1, rtol=1e-12)
 
 
 def test_default_columns_and_heat_flux():

@@ -7,13 +7,15 @@ The compute finds the fix wall/gran of LIGGGHTS's spelling: the one mesh wall wh
 forces or contact histories. For each contact of a particle of the compute's group, the columns
 chosen by the keywords, always in LIGGGHTS's order whatever order they are given in:
 
-- ``pos`` (6): the particle's position, then the contact point on the wall (distance);
-- ``vel`` (6): the particle's velocity, then the wall's velocity at the contact point;
+- ``pos`` (6): the contact point on the wall, then the particle's position (distance);
+- ``vel`` (6): the wall's velocity at the contact point, then the particle's velocity (LIGGGHTS's
+  order of both, measured with dump local/gran/vtk);
 - ``id`` (3): the mesh number (its place in ``meshes ...``, from 0; 0 for a primitive wall), the
   triangle's index in the mesh file (from 0; 0 for a primitive wall), the particle's id;
 - ``force`` (3): the contact force on the particle (force);
-- ``torque`` (3): the torque of the contact's tangential force on the particle divided by the
-  particle's radius (force; without rolling friction, as LIGGGHTS);
+- ``torque`` (3): the torque of the contact's tangential force on the particle about its centre
+  (force*distance; as LIGGGHTS 3.8.0 writes it, measured with dump local/gran/vtk; without rolling
+  friction);
 - ``history``: the contact's history, as many values as its law keeps (tangential spring, 3
   values, with tangential history; the epsd/epsd2 rolling spring torque, 3 values; as pair gran's);
 - ``contactArea`` (1): :math:`\pi(R^2 - d^2)`, the area of the circle where the sphere meets the
@@ -42,7 +44,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Compute, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import Compute, ContactRows, ScriptError, StyleArgs, keyword, param
 from pdps_granular_contact.gran.heat_conduction import CONSTANT, OVERLAP
 
 from .wall_contact import LOG_COLUMNS
@@ -56,13 +58,13 @@ COLUMN = {name: k for k, name in enumerate(LOG_COLUMNS)}
 COLUMN_WORDS = tuple(KEYWORDS)
 
 
-class ComputeWallGranLocal(Compute):
+class ComputeWallGranLocal(Compute, ContactRows):
     name = "wall/gran/local"
     usage = ("compute ID GROUP wall/gran/local [pos] [vel] [id] [force] [torque] [history] [contactArea] "
              "[delta] [heatFlux] [wall FIX_ID]")
 
     class Args(StyleArgs):
-        # LIGGGHTS's column words (its manual calls them keywords); heatFlux is refused below
+        # LIGGGHTS's column words (its manual calls them keywords)
         columns: list[Literal[COLUMN_WORDS]] = param([])
         wall: str | None = keyword(None)
 
@@ -89,6 +91,11 @@ class ComputeWallGranLocal(Compute):
                               f"(found {found}); name one with wall FIX_ID")
         return walls[0]
 
+    def contact_columns(self, sim):
+        """[(keyword, width)] of the rows of ``local`` (ContactRows)."""
+        history = self.wall(sim).contact_model.history_width
+        return [(name, KEYWORDS[name] or history) for name in self.keywords]
+
     def local(self, sim):
         """This rank's contacts, one row each: (rows, columns) floats in the keywords' order."""
         p = sim.particles
@@ -101,12 +108,12 @@ class ComputeWallGranLocal(Compute):
             keep = in_group[rows] != 0
             log, rows = log[keep], rows[keep]
             parts = {
-                "pos": [p.x[rows], log[:, COLUMN["px"]:COLUMN["pz"] + 1]],
-                "vel": [p.v[rows], log[:, COLUMN["vwx"]:COLUMN["vwz"] + 1]],
+                "pos": [log[:, COLUMN["px"]:COLUMN["pz"] + 1], p.x[rows]],
+                "vel": [log[:, COLUMN["vwx"]:COLUMN["vwz"] + 1], p.v[rows]],
                 "id": [np.full((len(rows), 1), float(number)), log[:, [COLUMN["element"]]],
                        p.tag[rows].astype(np.float64)[:, None]],
                 "force": [log[:, COLUMN["fx"]:COLUMN["fz"] + 1]],
-                "torque": [log[:, COLUMN["tx"]:COLUMN["tz"] + 1] / p.radius[rows][:, None]],
+                "torque": [log[:, COLUMN["tx"]:COLUMN["tz"] + 1]],
                 "history": [log[:, len(LOG_COLUMNS):]],
                 "contactArea": [log[:, [COLUMN["area"]]]],
                 "delta": [log[:, [COLUMN["delta"]]]],

@@ -41,16 +41,16 @@ def resting(wall, extra="", keywords=""):
 ], ids=["primitive", "mesh"])
 def test_a_resting_sphere_gives_one_row(data, wall, extra, ids):
     """One contact of the compute's group (sphere 1; sphere 2 rests on the wall too): pos =
-    (particle, contact point below it), vel = (~0, wall 0), id = (mesh 0, triangle, particle 1),
+    (contact point below it, particle), vel = (wall 0, ~0), id = (mesh 0, triangle, particle 1),
     force = (0, 0, m g), no tangential torque, contactArea = pi (R^2 - d^2) for the settled height
-    d."""
+    d; pos and vel give the wall's side first (LIGGGHTS's order)."""
     sim = resting(wall, extra.format(data=data))
     rows = sim.computes["walls"].local(sim)
     assert rows.shape == (1, 6 + 6 + 3 + 3 + 3 + 3 + 1)
     row = rows[0]
     x = sim.x[0]
-    np.testing.assert_allclose(row[0:3], x, atol=1e-12)
-    np.testing.assert_allclose(row[3:6], [x[0], x[1], 0.0], atol=1e-12)
+    np.testing.assert_allclose(row[3:6], x, atol=1e-12)
+    np.testing.assert_allclose(row[0:3], [x[0], x[1], 0.0], atol=1e-12)
     np.testing.assert_allclose(row[6:12], 0.0, atol=1e-6)
     assert row[12:15].tolist() == [ids[0], ids[1], 1.0]
     np.testing.assert_allclose(row[15:18], [0, 0, MASS * G], rtol=1e-6, atol=1e-9)
