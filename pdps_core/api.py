@@ -71,6 +71,7 @@ CONTRACT = {
         "pair": "the pair style, or None",
         "bonds": "bonds(): this rank's bonds as rows (i, j, type), i owned, j the nearest copy of its partner, turned-off ones (type < 0) included",
         "nbondtypes": "number of bond types of the box (0 without bonds)",
+        "fix_with": "fix_with(capability): the first fix having a capability (HeatTransport, MeshSurface, ...), or None",
         "create_bonds": "create_bonds(pairs, bond_type): new bonds between id pairs (k, 2), the same on every rank; special lists made again",
         "break_bonds": "break_bonds(pairs): delete the bonds between id pairs (k, 2), the same on every rank; special lists made again",
         "bond_single": "bond_single(type, rsq): (F/r, energy) of one bond of that type at r^2 = rsq under the run's bond styles",

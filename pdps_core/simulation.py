@@ -245,6 +245,11 @@ class Simulation:
         """The box's number of bond types (0 without bonds)."""
         return self.system.topology.nbondtypes
 
+    def fix_with(self, capability):
+        """The first fix (in definition order) that has ``capability`` (a Protocol of
+        pdps_core.api, e.g. HeatTransport), or None."""
+        return next((fix for fix in self.fixes.values() if isinstance(fix, capability)), None)
+
     def create_bonds(self, pairs, bond_type):
         """New bonds of ``bond_type`` between the id pairs ``pairs`` ((k, 2), the same rows on every
         rank; fix bond/create), the special lists made again; a fix doing this mid-run also sets

@@ -139,7 +139,7 @@ class ComputePairGranLocal(Compute, ContactRows):
         return flag.astype(np.float64)
 
     def _heat_flux(self, sim, i, j, r):
-        heat = next((f for f in sim.fixes.values() if isinstance(f, HeatTransport)), None)
+        heat = sim.fix_with(HeatTransport)
         if heat is None:
             raise ScriptError(f"compute {self.id} (pair/gran/local): heatFlux needs a fix heat/gran (and a run)")
         return heat.contact_heat_flux(sim, i, j, r)

@@ -39,13 +39,11 @@ Example::
     dump contacts all local 1000 contacts.txt c_walls[1] c_walls[2] c_walls[3] c_walls[7]
 """
 
-import math
 from typing import Literal
 
 import numpy as np
 
 from pdps_core.api import Compute, ContactRows, ScriptError, StyleArgs, keyword, param
-from pdps_granular_contact.gran.heat_conduction import CONSTANT, OVERLAP
 
 from .wall_contact import LOG_COLUMNS
 from .wall_gran_model import FixWallGranModel
@@ -117,33 +115,11 @@ class ComputeWallGranLocal(Compute, ContactRows):
                 "history": [log[:, len(LOG_COLUMNS):]],
                 "contactArea": [log[:, [COLUMN["area"]]]],
                 "delta": [log[:, [COLUMN["delta"]]]],
-                "heatFlux": [self._heat(sim, wall, number, rows, log[:, COLUMN["delta"]])[:, None]]
+                "heatFlux": [
+                    wall.contact_heat(sim, number, rows, p.radius[rows] - log[:, COLUMN["delta"]])[:, None]]
                 if "heatFlux" in self.keywords else [],
             }
             blocks.append(np.hstack([part for name in self.keywords for part in parts[name]]))
         if not blocks:
             return np.zeros((0, columns))
         return np.vstack(blocks).reshape(-1, columns)
-
-    @staticmethod
-    def _heat(sim, wall, number, rows, delta):
-        """The heat into each contact's particle from the wall (0 unless it is a mesh with a
-        temperature under fix heat/gran), by fix heat/gran's law and the temperatures now."""
-        mesh = wall.meshes[number] if wall.meshes else None
-        if mesh is None or getattr(mesh, "temperature", None) is None or wall.heat is None:
-            return np.zeros(len(rows))
-        p = sim.particles
-        a = p.arrays
-        mode, constant, conductivity = wall.heat.wall_conduction(sim)
-        radius = p.radius[rows]
-        if mode == OVERLAP:
-            distance = radius - delta
-            area = math.pi * (radius * radius - distance * distance)
-        elif mode == CONSTANT:
-            area = np.full(len(rows), constant)
-        else:
-            area = math.pi * radius * radius
-        kp, kw = conductivity[a["type"][rows]], conductivity[mesh.material_type]
-        with np.errstate(invalid="ignore", divide="ignore"):
-            h = np.where((kp > 0.0) & (kw > 0.0), 4.0 * kp * kw / (kp + kw) * np.sqrt(np.maximum(area, 0.0)), 0.0)
-        return h * (mesh.temperature - a["Temp"][rows])

@@ -198,14 +198,19 @@ def smallest_angle_cos(corners):
     return cos.max(axis=1)
 
 
-def healed(corners, precision):
-    """Which triangles stay when each one duplicate of a triangle kept before it is left out."""
-    keep = np.ones(len(corners), dtype=bool)
-    pairs = duplicate_pairs(corners, precision)
+def first_of_duplicates(count, pairs):
+    """Which of ``count`` triangles stay when each one duplicate (``pairs``: earlier, later) of a
+    triangle kept before it is left out."""
+    keep = np.ones(count, dtype=bool)
     for earlier, later in pairs[np.argsort(pairs[:, 1], kind="stable")]:
         if keep[earlier]:
             keep[later] = False
     return keep
+
+
+def healed(corners, precision):
+    """Which triangles stay when duplicates of earlier ones are left out (heal auto_remove_duplicates)."""
+    return first_of_duplicates(len(corners), duplicate_pairs(corners, precision))
 
 
 # ---- the checks of a placed mesh ------------------------------------------------------------------

@@ -191,7 +191,9 @@ class FixMeshSurface(Fix):
     def read_mesh(self, sim, args):
         """(vertices, triangles) of the file or of the walls another fix extruded, with LIGGGHTS's
         reading checks and repairs (mesh_quality)."""
-        precision = mesh_quality.DEFAULT_PRECISION if args.precision is None else args.precision
+        precision = self.precision = (mesh_quality.DEFAULT_PRECISION if args.precision is None
+                                      else args.precision)
+        listing = args.element_exclusion_list
         if args.fix is not None:
             source = mesh_fix(sim, args.fix)
             if getattr(source, "extrusion_length", None) is None:
@@ -203,7 +205,6 @@ class FixMeshSurface(Fix):
         else:
             path = sim.resolve(args.file)
             points, triangles, index = read_triangles(path, args.file, with_index=True)
-            listing = args.element_exclusion_list
             try:
                 lines = mesh_quality.element_lines(path, args.file, int(index.max()) + 1)[index]
                 numbered = True
@@ -221,7 +222,6 @@ class FixMeshSurface(Fix):
             kept = mesh_quality.healed(points[triangles], precision)
             triangles, lines = triangles[kept], lines[kept]
         points = apply_placement(points, args.placement)
-        listing = args.element_exclusion_list
         writing = listing is not None and listing[0] == "write"
         curvature_cos = (mesh_quality.DEFAULT_CURVATURE_COS if args.curvature is None
                          else math.cos(math.radians(args.curvature)))
@@ -230,8 +230,7 @@ class FixMeshSurface(Fix):
                                 (listing[1], sim.resolve(listing[1]) if sim.comm.rank == 0 else None) if writing
                                 else None, sim.warn)
         if len(pairs):
-            triangles = triangles[mesh_quality.healed(points[triangles], precision)]
-        self.precision = precision
+            triangles = triangles[mesh_quality.first_of_duplicates(len(triangles), pairs)]
         return points, triangles
 
     def check_planar(self, remedy="extrude_planar needs a planar mesh"):

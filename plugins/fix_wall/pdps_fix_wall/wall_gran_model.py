@@ -168,29 +168,46 @@ def near_primitive(x, radius, chosen, wallstyle, position, cylinder, margin, fla
 
 
 @njit(cache=True)
+def wall_conductance(kp, kw, mode, area_constant, radius, distance):
+    """4 k_p k_w / (k_p + k_w) sqrt(A) of one wall contact (0 when either conductivity is), A by
+    fix heat/gran's contact_area: overlap pi (R^2 - d^2) at centre distance d, constant, or pi R^2."""
+    if kp <= 0.0 or kw <= 0.0:
+        return 0.0
+    if mode == OVERLAP:
+        area = math.pi * (radius * radius - distance * distance)
+    elif mode == CONSTANT:
+        area = area_constant
+    else:
+        area = math.pi * radius * radius
+    return 4.0 * kp * kw / (kp + kw) * math.sqrt(max(area, 0.0))
+
+
+@njit(cache=True)
 def wall_heat_flux(near, count, starts, distance, radius, ptype, wall_type, conductivity, mode, area_constant,
                    wall_temperature, temp, heat_flux, coefficient, store):
     """Heat into each particle from a wall at ``wall_temperature`` through its contacts (rows
     starts[k] .. starts[k + 1] of particle near[k], centre distance ``distance``):
-    4 k_p k_w / (k_p + k_w) sqrt(A) (T_w - T_p), A by fix heat/gran's contact_area; the last
-    contact's conductance into ``coefficient`` when ``store`` (LIGGGHTS's wallHeattransferCoeff)."""
+    wall_conductance (T_w - T_p); the last contact's conductance into ``coefficient`` when ``store``
+    (LIGGGHTS's wallHeattransferCoeff)."""
     kw = conductivity[wall_type]
     for k in range(count):
         i = near[k]
-        kp = conductivity[ptype[i]]
         for row in range(starts[k], starts[k + 1]):
-            h = 0.0
-            if kp > 0.0 and kw > 0.0:
-                if mode == OVERLAP:
-                    area = math.pi * (radius[i] * radius[i] - distance[row] * distance[row])
-                elif mode == CONSTANT:
-                    area = area_constant
-                else:
-                    area = math.pi * radius[i] * radius[i]
-                h = 4.0 * kp * kw / (kp + kw) * math.sqrt(max(area, 0.0))
+            h = wall_conductance(conductivity[ptype[i]], kw, mode, area_constant, radius[i], distance[row])
             heat_flux[i] += h * (wall_temperature - temp[i])
             if store:
                 coefficient[i] = h
+
+
+@njit(cache=True)
+def contact_heat(rows, distance, radius, ptype, wall_type, conductivity, mode, area_constant, wall_temperature,
+                 temp, out):
+    """The heat of each logged contact (particle rows[k], centre distance distance[k]) into ``out``."""
+    kw = conductivity[wall_type]
+    for k in range(len(rows)):
+        i = rows[k]
+        out[k] = wall_conductance(conductivity[ptype[i]], kw, mode, area_constant, radius[i], distance[k]) \
+            * (wall_temperature - temp[i])
 
 
 class FixWallGranModel(Fix):
@@ -295,7 +312,7 @@ class FixWallGranModel(Fix):
         self.heat = None
         hot = [mesh.id for mesh in self.meshes if getattr(mesh, "temperature", None) is not None]
         if hot:
-            self.heat = next((fix for fix in sim.fixes.values() if isinstance(fix, HeatTransport)), None)
+            self.heat = sim.fix_with(HeatTransport)
             if self.heat is None:
                 raise ScriptError(f"fix {self.id} (wall/gran): mesh {hot[0]} has a temperature, which needs a fix "
                                   "heat/gran for the particles' (LIGGGHTS: no Temp property)")
@@ -363,6 +380,20 @@ class FixWallGranModel(Fix):
         wall_heat_flux(contacts.near, len(contacts.near), table.starts, table.distance, a["radius"], a["type"],
                        mesh.material_type, conductivity, mode, area_constant, float(mesh.temperature), a["Temp"],
                        a["heatFlux"], coefficient, store)
+
+    def contact_heat(self, sim, number, rows, distance):
+        """The heat into the particles of logged contacts with mesh ``number`` (rows, centre
+        distances): 0 unless the mesh has a temperature under fix heat/gran (compute
+        wall/gran/local's heatFlux)."""
+        mesh = self.meshes[number] if self.meshes else None
+        out = np.zeros(len(rows))
+        if mesh is None or getattr(mesh, "temperature", None) is None or self.heat is None:
+            return out
+        a = sim.particles.arrays
+        mode, area_constant, conductivity = self.heat.wall_conduction(sim)
+        contact_heat(rows, np.ascontiguousarray(distance), a["radius"], a["type"], mesh.material_type, conductivity,
+                     mode, area_constant, float(mesh.temperature), a["Temp"], out)
+        return out
 
     def _wall_forces(self, sim, rows, nrows, history, wall_type, f, torque, update, log, transfer_cos):
         """The composed law on the contact table's rows; the contacts' log (rows of LOG_COLUMNS and

@@ -36,11 +36,11 @@ def square_triangles(z=0.0):
     return [(a, b, c), (a, c, d)]
 
 
-def mesh_box(tmp_path, triangles, words="", name="m.stl"):
+def mesh_box(tmp_path, triangles, words="", name="m.stl", screen=False):
     path = tmp_path / name
     path.write_text(stl(triangles))
     return make_box(f"fix cad all mesh/surface file {path} type 1 {words}", box="-4 4 -4 4 -4 4",
-                    particle_style="sphere")
+                    particle_style="sphere", screen=screen)
 
 
 def refusal(tmp_path, triangles, words=""):
@@ -90,11 +90,7 @@ def test_duplicates_placed_within_precision_after_a_scale(tmp_path):
 def test_the_written_list_names_the_earlier_duplicate_and_the_run_goes_on(tmp_path):
     listing = tmp_path / "written.txt"
     screen = io.StringIO()
-    path = tmp_path / "m.stl"
-    path.write_text(stl(with_duplicate()))
-    sim = Simulation(screen=screen, log=None)
-    sim.command(f"units lj\nparticle_style sphere\nboundary f f f\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box\n"
-                f"fix cad all mesh/surface file {path} element_exclusion_list write {listing}")
+    sim = mesh_box(tmp_path, with_duplicate(), f"element_exclusion_list write {listing}", screen=screen)
     # LIGGGHTS 3.8.0 wrote "2" twice for this file, and went on with the three triangles
     assert listing.read_text() == "2\n"
     assert len(sim.fixes["cad"].triangles) == 2
@@ -163,10 +159,7 @@ def test_curvature_against_the_smallest_angle(tmp_path):
                             "(1 such); lower curvature or give curvature_tolerant yes")
     mesh_box(tmp_path, sliver, "curvature 1")
     screen = io.StringIO()
-    path = tmp_path / "m.stl"
-    sim = Simulation(screen=screen, log=None)
-    sim.command(f"units lj\nparticle_style sphere\nboundary f f f\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box\n"
-                f"fix cad all mesh/surface file {path} curvature 5 curvature_tolerant yes")
+    mesh_box(tmp_path, sliver, "curvature 5 curvature_tolerant yes", screen=screen)
     assert "smaller than the curvature 5 (1 such)" in screen.getvalue()
 
 
@@ -246,11 +239,7 @@ def test_a_hot_floor_heats_a_sphere_by_the_conduction_law(tmp_path, area, spot):
 
 def test_mass_temperature_is_read_and_warned_about(tmp_path):
     screen = io.StringIO()
-    path = tmp_path / "m.stl"
-    path.write_text(stl(square_triangles()))
-    sim = Simulation(screen=screen, log=None)
-    sim.command(f"units lj\nparticle_style sphere\nboundary f f f\nregion box block -4 4 -4 4 -4 4\ncreate_box 1 box\n"
-                f"fix cad all mesh/surface file {path} temperature 400 mass_temperature 0.5")
+    sim = mesh_box(tmp_path, square_triangles(), "temperature 400 mass_temperature 0.5", screen=screen)
     assert "mass_temperature has no effect, as in LIGGGHTS 3.8.0" in screen.getvalue()
     assert sim.fixes["cad"].temperature == 400.0
 

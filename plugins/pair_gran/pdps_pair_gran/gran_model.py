@@ -254,7 +254,7 @@ class PairGranModel(PairGran):
 
     @staticmethod
     def heat_fix(sim):
-        return next((fix for fix in sim.fixes.values() if isinstance(fix, HeatTransport)), None)
+        return sim.fix_with(HeatTransport)
 
     def conducts_heat(self, sim):
         """Whether the contacts carry heat now (the ContactConduction capability): a fix heat/gran
