@@ -50,6 +50,7 @@ bench: $(STAMP)
 corpus: $(RUN_STAMP)
 	$(VENV)/bin/python benchmarks/corpus.py
 	$(VENV)/bin/python benchmarks/liggghts_manual.py
+	$(VENV)/bin/python benchmarks/corpus_lammps.py
 
 # Wheels as users install them: the core, every distribution under plugins/ and the pdps
 # meta-distribution (packaging/pdps). All are built in .venv with its setuptools (an isolated build

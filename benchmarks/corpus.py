@@ -280,17 +280,17 @@ def compare(reference, mine):
         f"{len(runs)} runs (p = {p_value:.2f}; LIGGGHTS's own pairs: median t {statistics.median(theirs):.1f})")
 
 
-def resolution(table):
+def resolution(table, precision=DETERMINISTIC):
     """Per row and column, the smallest difference that counts: one for a count (particles), the
-    printed precision (relative DETERMINISTIC) or round-off (ROUNDOFF of the column's largest) else,
+    printed precision (relative ``precision``) or round-off (ROUNDOFF of the column's largest) else,
     on log10 of positive values as the t test reads them."""
     logarithmic = (table > 0).all(axis=0)
     values = np.where(logarithmic, np.log10(np.where(logarithmic, table, 1.0)), table)
     counts = (table == np.round(table)).all(axis=0)
     smallest = np.where(table > 0, table, np.inf).min(axis=0)
     scale = np.abs(table).max(axis=(0, 1))
-    floor = np.where(logarithmic, np.log10(1.0 + DETERMINISTIC), np.maximum(DETERMINISTIC * np.abs(table).max(axis=0),
-                                                                            ROUNDOFF * scale))
+    floor = np.where(logarithmic, np.log10(1.0 + precision), np.maximum(precision * np.abs(table).max(axis=0),
+                                                                        ROUNDOFF * scale))
     floor = np.where(counts & logarithmic, np.log10(1.0 + 1.0 / smallest), floor)
     floor = np.where(counts & ~logarithmic, 1.0, floor)
     return values, floor

@@ -1089,6 +1089,9 @@ class Fix(Style):
     minimize_idle: ClassVar[bool] = False
     # the box lengths (0 x, 1 y, 2 z) the fix changes itself (fix deform): barostats refuse to share them
     deformed_axes: tuple = ()
+    # the fix changes the box during a run (fix deform, the barostats): LAMMPS's box_change, which
+    # adds Volume to thermo_style one's columns
+    changes_box: bool = False
     # the fix holds its group's particles at rest (LAMMPS's fix freeze): granular pair styles give a
     # contact with a held particle the other one's mass as its effective mass, as LAMMPS does
     holds_at_rest: ClassVar[bool] = False

@@ -213,3 +213,47 @@ def test_a_liggghts_2_wall_name_in_a_lammps_script_is_refused_before_the_run(pdp
         "ERROR: in.test:5: fix: fix style wall/gran/hooke/history is LIGGGHTS 2.x's spelling of wall/gran "
         "model hooke tangential history; read the script as LIGGGHTS (--dialect liggghts)")
     assert "Loop time" not in result.stdout
+
+
+# LIGGGHTS 3.8.0's default thermo line is Step Atoms KinEng CPU, and its ke is its compute
+# thermo_kin_eng, the sum of 1/2 m v^2 (not LAMMPS's 1/2 dof k_B T, which is 0 for one particle).
+# One sphere falling onto a wall, as LIGGGHTS 3.8.0 printed it here.
+FALLING_SPHERE = """atom_style granular
+atom_modify map array
+boundary p p f
+newton off
+communicate single vel yes
+units si
+region reg block 0 0.1 0 0.1 0 0.1 units box
+create_box 1 reg
+neighbor 0.002 bin
+neigh_modify delay 0
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 0.00001
+fix gravi all gravity 9.81 vector 0.0 0.0 -1.0
+create_atoms 1 single 0.05 0.05 0.05
+set atom 1 diameter 0.01 density 2500
+fix integr all nve/sphere
+fix wz all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+thermo 1000
+run 3000
+"""
+FALLING_SPHERE_LIGGGHTS = {0: (1, 0.0), 1000: (1, 6.298638e-06), 2000: (1, 2.5194552e-05)}
+
+
+def test_liggghts_default_thermo_line_and_its_kinetic_energy(tmp_path):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.liggghts"), dialect="liggghts")
+    sim.command(FALLING_SPHERE)
+    sim.close()
+    lines = (tmp_path / "log.liggghts").read_text().splitlines()
+    at = next(i for i, line in enumerate(lines) if line.split()[:1] == ["Step"])
+    assert lines[at].split() == ["Step", "Atoms", "KinEng", "CPU"]
+    rows = {int(words[0]): words for words in map(str.split, lines[at + 1:at + 4])}
+    for step, (atoms, ke) in FALLING_SPHERE_LIGGGHTS.items():
+        assert int(rows[step][1]) == atoms
+        assert float(rows[step][2]) == pytest.approx(ke, rel=1e-6, abs=1e-30)

@@ -71,3 +71,73 @@ def test_thermo_modify_temp_of_a_subset_sets_ke_and_press_as_lammps(pdps_cli):
     assert len(rows) == len(SUBSET_TEMP_LAMMPS)
     for row, expected in zip(rows, SUBSET_TEMP_LAMMPS):
         assert row == pytest.approx(expected, rel=5e-8)
+
+
+# LAMMPS's default thermo line is its thermo_style one, step temp epair emol etotal press, with
+# Volume added where the box changes in a run (a fix deform here, a shrink-wrapped face below; its
+# Thermo::init). LAMMPS 22 Jul 2025 on these scripts, the header and rows it printed.
+DEFAULT_LINE = """units lj
+{boundary}atom_style atomic
+lattice fcc 0.8
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1
+velocity all create 1.0 87287
+pair_style lj/cut 2.5
+pair_coeff * * 1 1
+fix 1 all nve
+thermo 5
+run 10
+{deform}run 10
+"""
+HEADER = ["Step", "Temp", "E_pair", "E_mol", "TotEng", "Press"]
+DEFAULT_LINE_LAMMPS = {
+    "deform": ("", "fix 2 all deform 1 x scale 1.1\n", [
+        (HEADER, [[0, 1, -6.3647465, 0, -4.8786354, -5.416374]]),
+        (HEADER + ["Volume"], [[10, 0.86577011, -6.1540052, 0, -4.8673747, -4.200268, 135]])]),
+    "shrink-wrapped": ("boundary p p s\n", "", [
+        (HEADER + ["Volume"], [[0, 1, -5.693671, 0, -4.2055757, -5.5070233, 135.027],
+                               [5, 0.98516499, -5.6712539, 0, -4.2052346, -5.1904164, 135.027],
+                               [10, 0.89401696, -5.5279222, 0, -4.1975398, -4.0989061, 135.027]]),
+        (HEADER + ["Volume"], [[10, 0.89401696, -5.5279222, 0, -4.1975398, -3.9918452, 138.64841],
+                               [15, 0.67382459, -5.1948582, 0, -4.192143, -2.062795, 138.64841]])]),
+}
+
+
+def _blocks(log):
+    """[(header, {step: row})] of each run, as the log shows them."""
+    blocks = []
+    for line in log.read_text().splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            blocks.append((words, {}))
+        elif blocks and blocks[-1][0] and len(words) == len(blocks[-1][0]) and words[0].isdigit():
+            blocks[-1][1].setdefault(int(words[0]), [float(w) for w in words])
+        elif line.startswith("Loop time"):
+            blocks.append((None, {}))
+    return [block for block in blocks if block[0]]
+
+
+@pytest.mark.parametrize("case", list(DEFAULT_LINE_LAMMPS))
+def test_default_thermo_line_is_lammps_thermo_style_one(tmp_path, case):
+    boundary, deform, want = DEFAULT_LINE_LAMMPS[case]
+    sim = Simulation(screen=False, log=str(tmp_path / "log.lammps"), dialect="lammps")
+    sim.command(DEFAULT_LINE.format(boundary=boundary, deform=deform))
+    sim.close()
+    printed = _blocks(tmp_path / "log.lammps")
+    assert len(printed) == 2
+    for (header, rows), (got_header, got_rows) in zip(want, printed):
+        assert got_header == header
+        for row in rows:
+            assert got_rows[row[0]] == pytest.approx(row, rel=2e-8, abs=1e-12), (case, row[0])
+
+
+def test_pdps_dialect_keeps_its_default_line(tmp_path):
+    one_run = DEFAULT_LINE.format(boundary="", deform="").replace("run 10\nrun 10", "run 0")
+    for log, script, header in (("log.pdps", one_run, ["Step", "Temp", "PotEng", "KinEng", "TotEng", "Press"]),
+                                ("log.one", one_run.replace("thermo 5", "thermo_style one"), HEADER)):
+        sim = Simulation(screen=False, log=str(tmp_path / log), dialect="pdps")
+        sim.command(script)
+        sim.close()
+        assert _blocks(tmp_path / log)[0][0] == header

@@ -37,6 +37,8 @@ HEADERS = {"step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "
            "ndanger": "Ndanger", "bonds": "Bonds", "angles": "Angles", "dihedrals": "Diheds",
            "impropers": "Impros", "pxx": "Pxx", "pyy": "Pyy", "pzz": "Pzz", "pxy": "Pxy", "pxz": "Pxz",
            "pyz": "Pyz", "xlat": "Xlat", "ylat": "Ylat", "zlat": "Zlat"}
+# LAMMPS's thermo_style one, its default (and LIGGGHTS's)
+ONE = ("step", "temp", "epair", "emol", "etotal", "press")
 PRESSURE_TENSOR = ("pxx", "pyy", "pzz", "pxy", "pxz", "pyz")
 INTEGER = {"step", "elapsed", "elaplong", "atoms", "nbuild", "ndanger", "bonds", "angles", "dihedrals", "impropers"}
 ENERGY = {"pe", "etotal", "enthalpy", "evdwl", "epair", "econserve", "ebond", "emol"}
@@ -88,6 +90,8 @@ def keyword_value(sim, name, indices=()):
     if name == "epair":
         # the pair style's energy alone, as LAMMPS's (pe adds the fixes' of fix_modify energy yes)
         return obs.pair_energy(sim) / _normalise(sim)
+    if name == "ke" and sim.dialect.thermo_ke_sum:
+        return obs.kinetic_energy_with_clumps(sim) / _normalise(sim)
     if name in ("pe", "econserve", "etotal", "enthalpy", "ke"):
         total = 0.0
         if name != "ke":
@@ -215,7 +219,9 @@ class Thermo:
     def __init__(self, sim):
         self.sim = sim
         self.every = 0
-        self.columns = ["step", "temp", "pe", "ke", "etotal", "press"]
+        # None until thermo_style: the dialect's default line; "one": LAMMPS's thermo_style one
+        self.style = None
+        self.columns = list(ONE)        # until a run's setup names the dialect's (validate)
         self.norm = None                # thermo_modify norm; None: LAMMPS's default for the units
         self.formats = {"line": None, "int": None, "float": None, "columns": {}}
         self.flush_each = False
@@ -331,10 +337,11 @@ class Thermo:
         return ((sim.time - at) if name == "tpcpu" else (sim.step - step)) / (now - wall)
 
     def set_style(self, words):
+        self.style = "custom"
         if words and words[0] == "custom":
             words = words[1:]
         elif words and words[0] == "one":
-            words = ["step", "temp", "epair", "etotal", "press"]
+            self.style, words = "one", list(ONE)
         if not words:
             raise ScriptError("thermo_style needs at least one keyword")
         for word in words:
@@ -373,7 +380,15 @@ class Thermo:
         return match.group(2), indices
 
     def validate(self):
-        """Called at run setup: every compute and variable a column names must exist."""
+        """Called at run setup: every compute and variable a column names must exist; LAMMPS's
+        line (the default of the LAMMPS and LIGGGHTS dialects, and thermo_style one) gains Volume
+        where the box changes in the run, a shrink-wrapped face or a fix's (its Thermo::init)."""
+        sim = self.sim
+        if self.style is None:
+            self.columns = list(sim.dialect.thermo_default)
+        if self.style == "one" or (self.style is None and self.columns == list(ONE)):
+            changes = bool(sim.system.shrink_faces) or any(fix.changes_box for fix in sim.fixes.values())
+            self.columns = list(ONE) + (["vol"] if changes else [])
         for word in self.columns:
             if word.startswith("c_"):
                 ident, _ = self._reference(word)

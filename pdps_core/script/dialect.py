@@ -81,11 +81,19 @@ class Dialect:
     # None: quit takes [STATUS], 0 unless given (LAMMPS's); a number: quit takes no status and exits
     # with that one (LIGGGHTS 3.8.0's exits with 1: its Error::done, measured)
     quit_status: int | None = None
+    # the thermo columns before any thermo_style: LAMMPS's thermo_style one, Volume added where the
+    # box changes; LIGGGHTS 3.8.0's Step Atoms KinEng CPU (measured); the PDPS dialect's kinetic and
+    # potential energy apart
+    thermo_default: tuple = ("step", "temp", "epair", "emol", "etotal", "press")
+    # thermo ke: LAMMPS's, 1/2 dof k_B T of the thermo temperature; or (LIGGGHTS 3.8.0, its
+    # thermo.cpp) its compute thermo_kin_eng, the sum of 1/2 m v^2 over all particles, each rigid
+    # clump one body
+    thermo_ke_sum: bool = False
 
 
 DIALECTS = {
     "pdps": Dialect("pdps", "PDPS", index_base=0, region_units="box", velocity_units="box",
-                    velocity_numbers="counter"),
+                    velocity_numbers="counter", thermo_default=("step", "temp", "pe", "ke", "etotal", "press")),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
                       velocity_numbers="park", volume_2d="sphere", restart_styles=False),
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
@@ -93,7 +101,8 @@ DIALECTS = {
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
                         adapt_rule="liggghts", lost_default="ignore", dump_format_string=True,
                         rebuild_at_setup=True, print_at_setup=False, command_units="box",
-                        rdf_distinct_pairs=False, variable_force_energy=False, quit_status=1),
+                        rdf_distinct_pairs=False, variable_force_energy=False, quit_status=1,
+                        thermo_default=("step", "atoms", "ke", "cpu"), thermo_ke_sum=True),
 }
 
 # commands one language has and the other has not: the first one met names the dialect

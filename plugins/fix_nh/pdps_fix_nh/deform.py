@@ -134,6 +134,7 @@ class FixDeform(Fix):
         self.remap, self.units = args.remap, args.units or sim.dialect.command_units
         self.links = {d: self._volume_links(d) for d, (style, _) in self.axes.items() if style == "volume"}
         self.deformed_axes = tuple(sorted(self.axes))
+        self.changes_box = True
         if self.remap == "v":
             self.per_atom = (("deform_image", 3, np.int32),)
 

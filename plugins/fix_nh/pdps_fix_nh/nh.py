@@ -205,7 +205,7 @@ class FixNH(Fix):
                 self.deviatoric = True
         if a.couple is not None:
             pcouple = a.couple
-        self.pstat = bool(self.p_flag.any())
+        self.pstat = self.changes_box = bool(self.p_flag.any())
         controls = f"fix {self.name}"
         if self.needs_temp is True and not self.tstat:
             raise ScriptError(f"{controls} needs temp TSTART TSTOP TDAMP")

@@ -216,7 +216,7 @@ class NoseHooverBarostat:
             pcouple = a.couple
         if d == 2 and pcouple in ("yz", "xz"):
             raise ScriptError(f"couple {pcouple}: a 2d simulation has no z pressure to couple")
-        self.pstat = bool(self.p_flag.any())
+        self.pstat = self.changes_box = bool(self.p_flag.any())
         self.tstat = a.temp is not None
         coupled = [axis for axis in COUPLED[pcouple] if axis < d]
         if self.pstat:
