@@ -28,7 +28,8 @@ The reference's runs are kept in the results file and made again only with ``--r
 What the table says, per script (between docs/lammps.md's ``corpus:begin`` and ``corpus:end``):
 - runs: pdps ran it to its end (exit 0, its last ``Loop time`` line printed); else pdps's first
   ``ERROR`` line, or ``timeout``. Where LAMMPS itself fails, the script is out of the count.
-- agrees, compared on the thermo rows both print, column by column by name:
+- agrees, compared on the thermo rows both print, column by column by name (the wall clock's
+  columns, CPU and its kin, left out):
   - printed digits: pdps's set 0 prints LAMMPS's set 0 to every digit (one unit in the last of
     LAMMPS's 8 significant digits, or 1e-12 of the column's largest value at round-off) on every row;
   - until chaos: else the step where they part is given beside the step where LAMMPS on two ranks
@@ -69,6 +70,8 @@ RESULTS = HERE / "results" / "corpus_lammps.json"
 EXAMPLES = Path("usr/share/lammps/examples")
 DIGITS = 8                  # LAMMPS's thermo prints 8 significant digits (%.8g)
 STEPS = 5000
+# thermo columns of the wall clock, which no two runs share
+CLOCK = {"CPU", "T/CPU", "S/CPU", "CPULeft"}
 
 # The examples of the field: LJ, soft and table pairs, DPD, granular, rigid bodies, walls,
 # thermostats and barostats, minimization, deformation, transport.
@@ -297,7 +300,8 @@ def thermo(text):
                 values = [float(word) for word in words]
             except ValueError:
                 continue
-            rows.setdefault(str(int(values[0])), dict(zip(names[1:], values[1:])))
+            rows.setdefault(str(int(values[0])), {name: value for name, value in zip(names[1:], values[1:])
+                                                  if name not in CLOCK})
     return rows
 
 

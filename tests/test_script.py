@@ -393,8 +393,8 @@ class TestInclude:
 @pytest.mark.parametrize("later, message", [
     ("fix 2 all pour 10 1 1 region box", "fix: fix style pour is a LAMMPS style pdps does not have; instead: "
      "create_atoms random between runs (docs/lammps.md)"),
-    ("balance 1.0 shift x 5 1.1", "balance: balance is a LAMMPS command pdps does not support; "
-     "instead: the processor grid is chosen at the start (processors) (docs/lammps.md)"),
+    ("kspace_style pppm 1e-4", "kspace_style: kspace_style is a LAMMPS command pdps does not support; "
+     "instead: pdps has no long-range electrostatics (docs/lammps.md)"),
     ("fix 2 all multicontact/halfspace", "fix: fix style multicontact/halfspace is a LIGGGHTS style pdps does not "
      "have; instead: pdps has no multicontact surface model (docs/liggghts.md)"),
     ("compute 3 all no/such/style", "compute: unknown compute style no/such/style"),

@@ -196,13 +196,46 @@ def comm_modify(sim, args):
     for key, value in zip(args[::2], args[1::2]):
         choice(key, "comm_modify keyword", ("mode", "cutoff", "vel", "cutoff/multi", "group"))
         if key == "mode":
-            choice(value, "mode", ("single",))
+            # multi sends each type pair's ghosts only as far as its own cutoff: fewer ghosts than
+            # single's, never another force, so pdps's single ghosts give the same numbers
+            if choice(value, "mode", ("single", "multi")) == "multi" and sim.neighbor.style != "multi":
+                raise ScriptError("mode multi needs multi neighbor lists (neighbor SKIN multi first), as LAMMPS's")
+        elif key == "group":
+            if value != "all":
+                raise ScriptError(f"comm_modify group {value}: pdps sends the ghosts of every particle (group all)")
         elif key == "cutoff":
             sim.neighbor.comm_cutoff = number(value, "cutoff", low=0.0, high=limits.MAX_COORDINATE)
         elif key == "vel":
             sim.system.ghost_velocity = yes_no(value, "vel")
         else:
             raise ScriptError(f"comm_modify {key} is not supported (supported: mode single, cutoff, vel)")
+
+
+@command("comm_style")
+def comm_style(sim, args):
+    """LAMMPS's ``comm_style brick|tiled``: pdps's ranks hold a regular grid of bricks (LAMMPS's brick);
+    tiled, the sub-domains balance/fix balance rcb would cut, is read as it: the tiling changes
+    which rank computes a particle, not a number."""
+    count(args, 1, "comm_style brick|tiled")
+    choice(args[0], "comm_style", ("brick", "tiled"))
+
+
+@command("balance")
+def balance(sim, args):
+    """LAMMPS's ``balance THRESH STYLE args ... [keyword value ...]`` (styles x, y, z, shift, rcb):
+    pdps keeps the regular processor grid it starts with, so on one rank this does nothing, as in
+    LAMMPS, and on more it says once that it keeps the grid; ``out FILE`` is refused (no sub-domains
+    to write)."""
+    usage = "balance THRESH x|y|z|shift|rcb args ... [weight ...]"
+    count(args, 2, usage, at_most=999)
+    number(args[0], "thresh", low=0.0)
+    choice(args[1], "balance style", ("x", "y", "z", "shift", "rcb"))
+    if "out" in args[2:]:
+        raise ScriptError("out: pdps keeps a regular processor grid, so it has no balanced sub-domains to write")
+    sim.require_box("balance")
+    if sim.comm.nprocs > 1:
+        sim.warn("balance: pdps keeps its regular processor grid; balancing would move work between ranks, not "
+                 "change a number")
 
 
 @command("communicate")

@@ -105,10 +105,9 @@ def keyword_value(sim, name, indices=()):
                 # clump counted as one body
                 total += obs.kinetic_energy_with_clumps(sim, thermo.temp_group())
             else:
-                extra = thermo.extra_dof if thermo.temp_id is None else getattr(
-                    sim.computes.get(thermo.temp_id), "extra_dof", None)
-                total += 0.5 * obs.degrees_of_freedom(sim, thermo.temp_group(), extra) * sim.units.boltz \
-                    * thermo.temperature()
+                dof = obs.degrees_of_freedom(sim, extra=thermo.extra_dof) if thermo.temp_id is None else \
+                    obs.compute_dof(sim, sim.computes[thermo.temp_id])
+                total += 0.5 * dof * sim.units.boltz * thermo.temperature()
         if name == "enthalpy":
             total += sim.output.thermo.pressure() * sim.box.volume / sim.units.nktv2p
         if name == "econserve":
@@ -312,7 +311,8 @@ class Thermo:
             return float(self.sim.compute_value(self.press_id))
         if self.temp_id is not None:
             # the kinetic part is the temperature compute's: its T and its group's degrees of freedom
-            return obs.pressure(self.sim, temp=self.temperature(), temp_group=self.temp_group())
+            dof = obs.compute_dof(self.sim, self.sim.computes[self.temp_id])
+            return obs.pressure(self.sim, temp=self.temperature(), dof=dof)
         return obs.pressure(self.sim, extra=self.extra_dof)
 
     def clock(self, name):

@@ -195,10 +195,11 @@ class FormulaContext:
             return float(values.mean())
         if name == "trap":
             return float(values.sum() - 0.5 * (values[0] + values[-1]))
-        # slope: least-squares slope of the values against their index (LAMMPS's slope())
+        # slope: least-squares slope of the values against their index (LAMMPS's slope()); of one
+        # value, LAMMPS's BIG, 1e20 (measured: slope(f_ID) of a fix vector's first row)
         index = np.arange(len(values), dtype=np.float64)
         if len(values) < 2:
-            return 0.0
+            return 1.0e20
         return float(np.polyfit(index, values, 1)[0])
 
     def mask_function(self, name, words):

@@ -3,13 +3,11 @@ one stops there with one line saying so, rather than "unknown command"."""
 
 ALTERNATIVES = {
     "angle_coeff": "pdps has no angle styles", "angle_style": "pdps has no angle styles",
-    "balance": "the processor grid is chosen at the start (processors)",
     # headings of LIGGGHTS's manual that LIGGGHTS 3.8.0 itself does not know ("Unknown command", run 12-02)
     "neigh_settings": "neigh_modify (LIGGGHTS 3.8.0 itself has no neigh_settings)",
     "neighbor_skin": "neighbor SKIN bin (LIGGGHTS 3.8.0 itself has no neighbor_skin)",
     "orient": "lattice ... orient DIM I J K (LIGGGHTS 3.8.0 itself has no orient command)",
     "origin": "lattice ... origin X Y Z (LIGGGHTS 3.8.0 itself has no origin command)",
-    "comm_style": "comm_modify cutoff",
     "create_bonds": "bonds from a data file's Bonds section (read_data)",
     "dihedral_coeff": "pdps has no dihedral styles",
     "dihedral_style": "pdps has no dihedral styles", "dynamical_matrix": "none in pdps",

@@ -134,6 +134,14 @@ def degrees_of_freedom(sim, group="all", extra=None):
     return max(dof, 0)
 
 
+def compute_dof(sim, compute):
+    """The degrees of freedom of a temperature compute: its own count where it has one (temp/partial
+    counts only its components, LAMMPS's dof_compute), else its group's with its extra/dof."""
+    if hasattr(compute, "dof"):
+        return compute.dof(sim)
+    return degrees_of_freedom(sim, compute.group, getattr(compute, "extra_dof", None))
+
+
 def temperature(sim, group="all", extra=None):
     dof = degrees_of_freedom(sim, group, extra)
     if dof <= 0:
@@ -156,13 +164,14 @@ def virial_trace(sim):
     return float(sim.comm.sum(float(sum(sim.virial[: sim.dimension])))) + sim.dimension * tail_corrections(sim)[1]
 
 
-def pressure(sim, temp=None, temp_group="all", extra=None):
+def pressure(sim, temp=None, temp_group="all", extra=None, dof=None):
     """Pressure of the whole system from the virial theorem. The kinetic part is N_dof k_B T of
-    ``temp_group`` (LAMMPS: the temperature compute's own degrees of freedom, ``extra`` as
-    degrees_of_freedom's); T defaults to its temperature."""
+    ``temp_group`` (LAMMPS: the temperature compute's own degrees of freedom, ``dof`` where given,
+    else ``extra`` as degrees_of_freedom's); T defaults to its temperature."""
     if temp is None:
         temp = temperature(sim, temp_group, extra)
-    dof = degrees_of_freedom(sim, temp_group, extra)
+    if dof is None:
+        dof = degrees_of_freedom(sim, temp_group, extra)
     return (dof * sim.units.boltz * temp + virial_trace(sim)) / (sim.dimension * sim.box.volume) \
         * sim.units.nktv2p
 

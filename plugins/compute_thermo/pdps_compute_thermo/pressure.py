@@ -84,15 +84,17 @@ class ComputePressure(Compute):
         if self.every_term and self.temperature is None:
             return observables.pressure(sim)
         if self.every_term:
-            return observables.pressure(sim, sim.compute_value(self.temperature), self._temperature_group())
+            return observables.pressure(sim, sim.compute_value(self.temperature),
+                                        dof=observables.compute_dof(sim, sim.computes[self.temperature]))
         kinetic = 0.0
         if self.ke:
             temp = sim.compute_value(self.temperature) if self.temperature else None
             group = self._temperature_group()
             if temp is None:
                 temp = observables.temperature(sim, group)
-            extra = getattr(sim.computes.get(self.temperature), "extra_dof", None)
-            kinetic = observables.degrees_of_freedom(sim, group, extra) * sim.units.boltz * temp
+            dof = observables.compute_dof(sim, sim.computes[self.temperature]) if self.temperature else \
+                observables.degrees_of_freedom(sim, group)
+            kinetic = dof * sim.units.boltz * temp
         virial = float(self._virial(sim)[: sim.dimension].sum())
         return (kinetic + virial) / (sim.dimension * sim.box.volume) * sim.units.nktv2p
 
