@@ -1089,6 +1089,9 @@ class Fix(Style):
     minimize_idle: ClassVar[bool] = False
     # the box lengths (0 x, 1 y, 2 z) the fix changes itself (fix deform): barostats refuse to share them
     deformed_axes: tuple = ()
+    # hooks the fix defines but does not join for now (LAMMPS's fix mask, changed by fix_modify: fix
+    # rigid's post_force only with bodyforces early); read when a run is set up
+    idle_hooks: frozenset = frozenset()
     # the fix changes the box during a run (fix deform, the barostats): LAMMPS's box_change, which
     # adds Volume to thermo_style one's columns
     changes_box: bool = False

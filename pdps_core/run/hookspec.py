@@ -39,5 +39,7 @@ FORCE_HOOKS = ("pre_force", "pre_reverse", "post_force")
 
 
 def implements(style, hook):
-    """Whether ``style`` joins ``hook`` (its class defines a method of that name)."""
-    return callable(getattr(type(style), hook, None))
+    """Whether ``style`` joins ``hook``: its class defines a method of that name, and the style has
+    not left it for now (its ``idle_hooks``: LAMMPS's fix mask, which fix_modify may change, as
+    fix rigid's bodyforces early|late does)."""
+    return callable(getattr(type(style), hook, None)) and hook not in getattr(style, "idle_hooks", ())

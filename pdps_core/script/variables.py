@@ -30,7 +30,7 @@ from .expression import Expression, FormulaError
 NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 LISTS = ("index", "loop", "universe", "uloop", "world", "file")
 REDEFINABLE = ("string", "getenv", "format", "internal", "file", "equal", "atom", "vector")
-STYLES = LISTS + ("string", "getenv", "format", "internal", "equal", "atom", "vector", "delete")
+STYLES = LISTS + ("string", "getenv", "format", "internal", "equal", "atom", "atomfile", "vector", "delete")
 C_FORMAT = re.compile(r"^%[-+ #0]*\d*(?:\.\d+)?[eEfgG]$")
 
 
@@ -55,7 +55,10 @@ class Variables:
         return list(self._vars)
 
     def style(self, name):
-        return self._get(name).style
+        """The variable's style as its readers take it: an atomfile variable is an atom-style one
+        (its values per particle, from a file), as LAMMPS reads it wherever atom-style is."""
+        style = self._get(name).style
+        return "atom" if style == "atomfile" else style
 
     def signature(self):
         """Every variable's definition and position, to tell one state of a script loop from another."""
@@ -113,6 +116,8 @@ class Variables:
             return Variable(name, style, args)
         if style == "file":
             return Variable(name, style, _file_values(name, args))
+        if style == "atomfile":
+            return Variable(name, style, _atomfile_sets(name, args))
         formula_text = " ".join(args)
         if style == "vector" and formula_text.startswith("["):
             return Variable(name, style, [_vector_literal(name, formula_text)])
@@ -128,9 +133,9 @@ class Variables:
     def next(self, name):
         """Step a list variable; False when it is exhausted (and then deleted), as LAMMPS's next."""
         var = self._get(name)
-        if var.style not in LISTS:
-            raise ScriptError(f"next works only on index, loop, universe, uloop, world and file variables "
-                              f"({name} is {var.style})")
+        if var.style not in LISTS + ("atomfile",):
+            raise ScriptError(f"next works only on index, loop, universe, uloop, world, file and atomfile "
+                              f"variables ({name} is {var.style})")
         var.index += 1
         if var.index >= len(var.values):
             del self._vars[name]
@@ -165,7 +170,7 @@ class Variables:
             return f"{var.values[0]:.15g}"
         if var.style == "format":
             return _c_format(var.values[1], self.value(var.values[0]))
-        if var.style in ("atom", "vector"):
+        if var.style in ("atom", "atomfile", "vector"):
             raise ScriptError(f"${{{name}}}: variable {name} is {var.style}-style, not a single value")
         return str(var.values[var.index])
 
@@ -178,7 +183,7 @@ class Variables:
             return float(var.values[0])
         if var.style == "format":
             return self.value(var.values[0])
-        if var.style in ("atom", "vector"):
+        if var.style in ("atom", "atomfile", "vector"):
             raise ScriptError(f"v_{name} is {var.style}-style: name one element, v_{name}[i]")
         text = var.values[var.index]
         try:
@@ -192,7 +197,7 @@ class Variables:
         atom-style formula. ``i`` counts from ``index_base`` (the dialect's)."""
         var = self._get(name)
         if not indices:
-            if var.style == "atom":
+            if var.style in ("atom", "atomfile"):
                 if not per_atom:
                     raise ScriptError(f"v_{name} is atom-style: an equal-style formula reads one "
                                       f"particle's value as v_{name}[ID]")
@@ -210,7 +215,7 @@ class Variables:
                 raise ScriptError(f"v_{name}[{i}] is out of range (vector {name} has {len(values)} "
                                   f"values, from {index_base})")
             return float(values[k])
-        if var.style == "atom":
+        if var.style in ("atom", "atomfile"):
             context = self._context(per_atom=False)
             values = self.atom_values(name)
             sim = context.sim
@@ -224,6 +229,14 @@ class Variables:
     def atom_values(self, name):
         """An atom-style variable: one number per owned particle."""
         var = self._get(name)
+        if var.style == "atomfile":
+            sim = self._context(per_atom=True).sim
+            ids, values = var.values[var.index]
+            tags = sim.particles.tag[:sim.particles.nlocal]
+            # particles the file does not list read 0, as LAMMPS's
+            at = np.searchsorted(ids, tags)
+            listed = (at < len(ids)) & (ids[np.minimum(at, len(ids) - 1)] == tags)
+            return np.where(listed, values[np.minimum(at, len(ids) - 1)], 0.0)
         if var.style != "atom":
             value = self.value(name)
             context = self._context(per_atom=True)
@@ -310,6 +323,38 @@ def _file_values(name, args):
     if not values:
         raise ScriptError(f"variable {name} file: {args[0]} holds no values")
     return values
+
+
+def _atomfile_sets(name, args):
+    """LAMMPS's atomfile: sets of 'N' then N lines 'ID value' (# comments and blank lines skipped);
+    [(sorted ids, their values)] one per set, ``next`` stepping to the following one."""
+    from .lexer import read_text
+    if len(args) != 1:
+        raise ScriptError(f"variable {name} atomfile takes one file name")
+    lines = [line.split("#", 1)[0].split() for line in read_text(args[0], "variable atomfile").splitlines()]
+    lines = [words for words in lines if words]
+    sets, at = [], 0
+    while at < len(lines):
+        head = lines[at]
+        if len(head) != 1 or not head[0].isdigit():
+            raise ScriptError(f"variable {name} atomfile: {args[0]}: expected a count of lines, got {' '.join(head)}")
+        count = int(head[0])
+        rows = lines[at + 1:at + 1 + count]
+        if len(rows) < count or any(len(row) != 2 for row in rows):
+            raise ScriptError(f"variable {name} atomfile: {args[0]}: {count} lines 'ID value' expected after "
+                              f"line {at + 1} of its values")
+        try:
+            ids = np.array([int(row[0]) for row in rows], dtype=np.int64)
+            values = np.array([float(row[1]) for row in rows], dtype=np.float64)
+        except ValueError:
+            raise ScriptError(f"variable {name} atomfile: {args[0]}: IDs must be integers and values "
+                              "numbers") from None
+        order = np.argsort(ids, kind="stable")
+        sets.append((ids[order], values[order]))
+        at += 1 + count
+    if not sets:
+        raise ScriptError(f"variable {name} atomfile: {args[0]} holds no values")
+    return sets
 
 
 def _vector_literal(name, text):

@@ -60,6 +60,33 @@ def test_temp_rescale_with_a_partial_temperature_prints_lammps_thermo(tmp_path):
         assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
 
 
+# fix temp/berendsen 0.2 0.2 0.5 instead of temp/rescale, the rest as TEMP_PARTIAL: LAMMPS's thermo
+BERENDSEN_LAMMPS = [
+    [0, 0.461308, 0.461308, 0.17178918, -3.2864505, -3.1146613, -1.442934],
+    [20, 0.13260636, 0.13260636, 0.049382057, -2.9364484, -2.8870663, 1.3061072],
+    [40, 0.21427063, 0.21427063, 0.07979349, -3.0123891, -2.9325956, 0.69335239],
+    [60, 0.24310809, 0.24310809, 0.09053244, -3.0275691, -2.9370367, 0.5988406],
+    [80, 0.26023334, 0.26023334, 0.096909812, -3.017284, -2.9203742, 0.68681114],
+    [100, 0.23052869, 0.23052869, 0.085847924, -3.0164666, -2.9306187, 0.68442955],
+    [120, 0.26586265, 0.26586265, 0.099006142, -3.0370787, -2.9380725, 0.52483273],
+    [140, 0.23984446, 0.23984446, 0.089317077, -3.0179024, -2.9285853, 0.65025774],
+    [160, 0.24362544, 0.24362544, 0.0907251, -3.0275691, -2.936844, 0.60528137],
+    [180, 0.24118207, 0.24118207, 0.089815198, -3.0257633, -2.9359481, 0.62362299],
+    [200, 0.23153094, 0.23153094, 0.086221156, -3.0165826, -2.9303614, 0.68251917],
+]
+
+
+def test_temp_berendsen_with_a_partial_temperature_prints_lammps_thermo(tmp_path):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
+    sim.command(TEMP_PARTIAL.replace("fix 3 mobile temp/rescale 20 0.2 0.2 0.01 1.0",
+                                     "fix 3 mobile temp/berendsen 0.2 0.2 0.5"))
+    sim.close()
+    rows = thermo_rows((tmp_path / "log.case").read_text())
+    assert len(rows) == len(BERENDSEN_LAMMPS)
+    for got, want in zip(rows, BERENDSEN_LAMMPS):
+        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+
+
 def test_partial_temperature_counts_only_its_components():
     sim = Simulation(screen=False, log=None, dialect="lammps")
     sim.command(TEMP_PARTIAL.replace("run 200", "run 0"))

@@ -249,7 +249,30 @@ def omegas(angmom, ex, ey, ez, inertia, omega):
         omega_from_angmom(angmom, ex, ey, ez, inertia, omega, b)
 
 
-class FixRigid(Fix):
+class BodyForcesTiming:
+    """``fix_modify ID bodyforces early|late`` of the rigid fixes: early, the bodies' forces and
+    torques are summed at the fix's turn in post_force, so forces that fixes defined after it add
+    there do not reach the bodies (LAMMPS's earlyflag); late, the default, in final_integrate, every
+    fix's forces included. ``_sum_force_torque`` is the fix's own sum."""
+    idle_hooks = frozenset({"post_force"})
+
+    def modify_param(self, sim, keyword, value):
+        if keyword != "bodyforces":
+            return super().modify_param(sim, keyword, value)
+        if value not in ("early", "late"):
+            raise ScriptError(f"bodyforces must be early or late (got {value})")
+        self.idle_hooks = frozenset() if value == "early" else frozenset({"post_force"})
+        return True
+
+    def post_force(self, sim):
+        self._sum_force_torque(sim)
+
+    def _late_sum(self, sim):
+        if "post_force" in self.idle_hooks:
+            self._sum_force_torque(sim)
+
+
+class FixRigid(BodyForcesTiming, Fix):
     name = "rigid"
     time_integrate = True
     usage = ("fix ID GROUP rigid single|molecule|group N G1 .. GN|custom i_NAME|v_NAME [force M XFLAG YFLAG ZFLAG] "
@@ -708,7 +731,7 @@ class FixRigid(Fix):
                       self.step_virial, self.thermo_virial)
 
     def final_integrate(self, sim):
-        self._sum_force_torque(sim)
+        self._late_sum(sim)
         self.advance_final(sim)
         self.final_virial[:] = 0.0
         self._set_v(sim, self.final_virial, sim.vflag and self.thermo_virial)

@@ -86,7 +86,7 @@ from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
 from . import bodies
 from .quaternion import axes_from_quaternion, quaternion_from_axes
-from .rigid import (EPSILON, TOLERANCE, BodyStyle, FixRigid, check_langevin, langevin_keyed_forces, omegas,
+from .rigid import (EPSILON, TOLERANCE, BodyForcesTiming, BodyStyle, FixRigid, check_langevin, langevin_keyed_forces, omegas,
                     richardson_final, richardson_initial)
 
 NO_ARRAY = np.zeros(0)
@@ -279,7 +279,7 @@ def principal_axes(tensor):
     return moments, quat
 
 
-class FixRigidSmall(Fix):
+class FixRigidSmall(BodyForcesTiming, Fix):
     name = "rigid/small"
     time_integrate = True
     usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]"
@@ -798,7 +798,7 @@ class FixRigidSmall(Fix):
                       self.step_virial, self.thermo_virial)
 
     def final_integrate(self, sim):
-        self._sum_force_torque(sim)
+        self._late_sum(sim)
         self.advance_final(sim)
         self._share(sim, motion_only=True)
         self.final_virial[:] = 0.0

@@ -6,11 +6,14 @@ r"""Fix ``temp/berendsen``: Berendsen's weak coupling of the group's temperature
     \mathbf{v}_i \leftarrow \lambda\mathbf{v}_i, \qquad
     \lambda = \sqrt{1 + \frac{\Delta t}{\tau}\left(\frac{T_t}{T} - 1\right)}
 
-with T_t ramped from TSTART to TSTOP over the run (as temp/rescale) and T the group's temperature.
+with T_t ramped from TSTART to TSTOP over the run (as temp/rescale) and T the group's temperature,
+or that of the temperature compute ``fix_modify ID temp CID`` names (named_temperature.py: a
+compute's bias is kept out of the scaling, as LAMMPS's).
 
 Syntax::
 
     fix ID GROUP temp/berendsen TSTART TSTOP DAMP
+    fix_modify ID temp CID
 
 DAMP the coupling time tau (time units). Example::
 
@@ -19,10 +22,12 @@ DAMP the coupling time tau (time units). Example::
 
 import math
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, observables, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, param
+
+from .named_temperature import NamedTemperature
 
 
-class FixTempBerendsen(Fix):
+class FixTempBerendsen(NamedTemperature, Fix):
     name = "temp/berendsen"
     usage = "fix ID GROUP temp/berendsen TSTART TSTOP DAMP"
 
@@ -32,7 +37,7 @@ class FixTempBerendsen(Fix):
         damp: float = param(gt=0, unit="time")
 
     def end_of_step(self, sim):
-        t = observables.temperature(sim, self.group)
+        t = self.current_temperature(sim)
         if t == 0.0:
             raise ScriptError(f"fix {self.id} temp/berendsen: the group's temperature is 0, so velocities "
                               "cannot be scaled to the target")
@@ -41,7 +46,4 @@ class FixTempBerendsen(Fix):
         if square < 0.0:
             raise ScriptError(f"fix {self.id} temp/berendsen: the scaling factor is not real at step {sim.step} "
                               f"(1 + dt/damp (T_target/T - 1) = {square:.4g}): make damp larger than the timestep")
-        factor = math.sqrt(square)
-        p = sim.particles
-        chosen = sim.groups.select(sim, self.group)
-        p.v[:p.nlocal][chosen] *= factor
+        self.scale_velocities(sim, math.sqrt(square))

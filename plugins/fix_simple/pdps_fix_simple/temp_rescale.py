@@ -8,10 +8,8 @@ its target, scale the velocities to bring it a fraction of the way there (LAMMPS
 
 with s the step and s_0, s_1 the run's first and last (or ``run ... start/stop``); T the group's
 temperature with d N - d degrees of freedom (LAMMPS's compute temp), or that of the temperature
-compute ``fix_modify ID temp CID`` names: its T decides, the fix's group is scaled, and a compute with
-a bias (temp/partial: the components it leaves out) has it kept out of the scaling, as LAMMPS's
-remove_bias and restore_bias do. A compute of another group than the fix's is warned of, as LAMMPS
-warns.
+compute ``fix_modify ID temp CID`` names (named_temperature.py: a compute's bias is kept out of
+the scaling, as LAMMPS's).
 
 Syntax::
 
@@ -25,10 +23,12 @@ Example::
 
 import math
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, observables, param
+from pdps_core.api import Fix, StyleArgs, param
+
+from .named_temperature import NamedTemperature
 
 
-class FixTempRescale(Fix):
+class FixTempRescale(NamedTemperature, Fix):
     name = "temp/rescale"
     usage = "fix ID GROUP temp/rescale N TSTART TSTOP WINDOW FRACTION"
 
@@ -39,42 +39,13 @@ class FixTempRescale(Fix):
         window: float = param(ge=0, unit="temperature")
         fraction: float = param(ge=0, le=1, unit="dimensionless")
 
-    temp_id = None          # fix_modify temp: the temperature compute named instead of the group's
-
-    def modify_param(self, sim, keyword, value):
-        if keyword != "temp":
-            return False
-        compute = sim.computes.get(value)
-        if compute is None:
-            raise ScriptError(f"compute {value} is not defined (temperature of fix {self.id})")
-        if not type(compute).gives_temperature:
-            raise ScriptError(f"compute {value} ({compute.name}) is not a temp compute, so it gives no temperature")
-        if compute.group != self.group:
-            sim.warn(f"fix {self.id} {self.name}: temperature compute {value} is of group {compute.group}, not the "
-                     f"fix's {self.group} (LAMMPS's fix_modify warns so too)")
-        self.temp_id = value
-        return True
-
-    def init_run(self, sim):
-        if self.temp_id is not None and self.temp_id not in sim.computes:
-            raise ScriptError(f"fix {self.id}: its temperature compute {self.temp_id} is not defined")
-
     def end_of_step(self, sim):
         if sim.step % self.args.every:
             return
-        compute = sim.computes[self.temp_id] if self.temp_id is not None else None
-        t = observables.temperature(sim, self.group) if compute is None else float(sim.compute_value(self.temp_id))
+        t = self.current_temperature(sim)
         if t == 0.0:
             return
         target = sim.ramp(self.args.t_start, self.args.t_stop)
         if abs(t - target) > self.args.window:
             goal = t - self.args.fraction * (t - target)
-            factor = math.sqrt(goal / t)
-            p = sim.particles
-            chosen = sim.groups.select(sim, self.group)
-            v = p.v[:p.nlocal]
-            if hasattr(compute, "velocity_bias"):
-                bias = compute.velocity_bias(sim)[chosen]
-                v[chosen] = bias + factor * (v[chosen] - bias)
-            else:
-                v[chosen] *= factor
+            self.scale_velocities(sim, math.sqrt(goal / t))
