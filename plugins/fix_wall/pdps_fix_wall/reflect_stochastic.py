@@ -180,6 +180,8 @@ class FixWallReflectStochastic(Fix):
         sim.require_box(f"fix {self.name}")
         for wall in args.wall:
             axis = FACES.index(wall.face) // 2
+            if axis == 2 and sim.dimension == 2:
+                raise ScriptError(f"wall {wall.face} in a 2-d simulation")
             if sim.box.periodic[axis]:
                 raise ScriptError(f"wall {wall.face} stands on the periodic {'xyz'[axis]} axis: "
                                   "make it fixed (boundary f)")
