@@ -207,3 +207,50 @@ def test_a_2d_run_has_no_z_walls():
     setup = "dimension 2\nboundary f f p\nregion box block 0 10 0 10 -0.5 0.5\ncreate_box 1 box"
     assert script_error(setup, "fix 1 all wall/reflect/stochastic diffusive 5 zlo EDGE 1 0 0 0").message == \
         "wall zlo in a 2-d simulation"
+
+
+GAS = """units lj
+atom_style atomic
+boundary f p p
+lattice sc 16
+region box block 0 5 0 5 0 5 units box
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.0 5511 loop geom
+timestep 0.01
+fix 1 all nve
+compute vy all reduce ave vy
+thermo_style custom step temp c_vy
+thermo 100
+fix 2 all wall/reflect/stochastic ccl {seed} xlo EDGE 1.0 0 0.3 0 0.6 0.8 0.8 xhi EDGE 2.0 0 -0.2 0 0.9 0.4 0.4
+run 23000
+unfix 2
+fix 3 all wall/reflect/stochastic maxwell {seed} xlo EDGE 1.0 0 0.5 0 0.3 xhi EDGE 3.0 0 0 0 0.7
+run 23000
+unfix 3
+fix 4 all wall/reflect/stochastic diffusive {seed} xlo EDGE 0.5 0 0 0.4 xhi EDGE 2.5 0 0 0
+run 23000
+"""
+
+# LAMMPS 22 Jul 2025, this script with 8 seeds (8231 1177 90210 4242 555 31337 2718 16180): per
+# rule, temp and c_vy averaged over the last 20,000 steps of its 23,000 (thermo every 100), the
+# mean of the 8 runs and the standard deviation of one run's average
+LAMMPS_GAS = {"ccl": ((1.42768, 0.00579), (0.17041, 0.00757)),
+              "maxwell": ((2.27908, 0.02345), (0.17456, 0.00957)),
+              "diffusive": ((1.16542, 0.00426), (0.00119, 0.00816))}
+
+
+def test_an_ideal_gas_between_two_walls_of_each_rule_reaches_lammps_s_state(tmp_path):
+    """2,000 particles without a pair style between walls at different temperatures and wall
+    velocities: the gas's stationary temperature and mean vy, pdps's run (seed 8231) within 4
+    standard deviations of LAMMPS's mean (the deviation of one run, and that of the 8-run mean)."""
+    rows = logged_thermo(tmp_path, GAS.format(seed=8231))
+    for k, rule in enumerate(("ccl", "maxwell", "diffusive")):
+        start = 23000 * k
+        chosen = rows[(rows[:, 0] > start + 3000) & (rows[:, 0] <= start + 23000)]
+        _, first = np.unique(chosen[:, 0], return_index=True)
+        chosen = chosen[first]
+        assert len(chosen) == 200
+        for column, (mean, std) in zip((1, 2), LAMMPS_GAS[rule]):
+            assert abs(chosen[:, column].mean() - mean) < 4 * std * math.sqrt(1 + 1 / 8), (rule, column)
