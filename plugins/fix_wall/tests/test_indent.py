@@ -267,3 +267,13 @@ def test_lammps_minimizes_under_an_indenter_as_pdps(tmp_path):
     assert mine.shape == lammps.shape
     np.testing.assert_array_equal(mine[:, 0], lammps[:, 0])
     np.testing.assert_allclose(mine, lammps, rtol=1e-10, atol=1e-12)
+
+
+def test_f_id_is_per_particle_where_lj_thermo_normalises(tmp_path):
+    """The first run's set-up with LAMMPS's default thermo_modify norm yes in lj units: LAMMPS prints
+    f_ID and f_ID[1..3] divided by the 224 particles, as pe."""
+    script = RUNS.split("run 100")[0].replace(" norm no", "") + "run 0\n"
+    mine = logged_thermo(tmp_path, script)
+    lammps = [0, 0.5, -6.01947977816597, -5.27282799245168, 0.0366142287868026, 0.000119670094198852,
+              0.000246683329950535, 0.172618626688664]
+    np.testing.assert_allclose(mine[0], lammps, rtol=1e-12)
