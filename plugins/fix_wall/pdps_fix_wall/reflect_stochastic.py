@@ -63,7 +63,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param, particle_gaussians, particle_uniforms
 
-from .faces import FACES, Face, once_each, wall_planes
+from .faces import FACES, Face, check_order, once_each, wall_planes
 
 RULES = ("diffusive", "maxwell", "ccl")
 DIFFUSIVE, MAXWELL, CCL = range(3)
@@ -187,12 +187,7 @@ class FixWallReflectStochastic(Fix):
                                   "make it fixed (boundary f)")
         self.rule = RULES.index(args.rule)
         self.axes, self.lower, self.coords = wall_planes(sim, {w.face: w.coord for w in args.wall}, args.units)
-        for axis, name in enumerate("xyz"):
-            both = [k for k, w in enumerate(args.wall) if w.face[0] == name]
-            if len(both) == 2:
-                lo, hi = sorted(both, key=lambda k: not args.wall[k].face.endswith("lo"))
-                if not self.coords[lo] < self.coords[hi]:
-                    raise ScriptError(f"{name}lo must be below {name}hi (got {self.coords[lo]:g} {self.coords[hi]:g})")
+        check_order([w.face for w in args.wall], self.coords)
         # k_B T / mvv2e: divided by each particle's mass, the variance of a velocity component
         self.kt = np.array([sim.units.boltz * w.temp / sim.units.mvv2e for w in args.wall])
         self.wall_velocity = np.array([(w.vx, w.vy, w.vz) for w in args.wall], dtype=np.float64)
