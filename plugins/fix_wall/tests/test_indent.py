@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import observables
-from pdps_core.testing import logged_thermo, make_box, script_error
+from pdps_core.testing import logged_thermo, make_box, script_error, thermo_on_ranks
 
 
 def one_particle(position, fix, box="0 10 0 10 0 10", boundary="f f f", more=""):
@@ -277,3 +277,11 @@ def test_f_id_is_per_particle_where_lj_thermo_normalises(tmp_path):
     lammps = [0, 0.5, -6.01947977816597, -5.27282799245168, 0.0366142287868026, 0.000119670094198852,
               0.000246683329950535, 0.172618626688664]
     np.testing.assert_allclose(mine[0], lammps, rtol=1e-12)
+
+
+def test_the_same_run_on_1_and_2_ranks(tmp_path):
+    """The sphere across the periodic x face and the cylinder (first 200 steps of the LAMMPS scene):
+    thermo and f_ID on 2 ranks as on 1, to round-off."""
+    one, two = thermo_on_ranks(RUNS.split("unfix cyl")[0], tmp_path)
+    assert one[:, 0].tolist() == [0, 25, 50, 75, 100, 100, 125, 150, 175, 200]
+    np.testing.assert_allclose(two, one, rtol=1e-9, atol=1e-10)

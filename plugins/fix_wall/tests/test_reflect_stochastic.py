@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from pdps_core.testing import build, logged_thermo, script_error
+from pdps_core.testing import build, logged_thermo, script_error, thermo_on_ranks
 
 N = 20000
 V0 = np.array([-1.0, 0.25, -0.125])
@@ -254,3 +254,13 @@ def test_an_ideal_gas_between_two_walls_of_each_rule_reaches_lammps_s_state(tmp_
         assert len(chosen) == 200
         for column, (mean, std) in zip((1, 2), LAMMPS_GAS[rule]):
             assert abs(chosen[:, column].mean() - mean) < 4 * std * math.sqrt(1 + 1 / 8), (rule, column)
+
+
+def test_the_same_run_on_1_and_2_ranks(tmp_path):
+    """The random numbers follow particle ids, not ranks: the gas's first 1,500 steps of each rule
+    on 2 ranks as on 1, to round-off."""
+    script = GAS.format(seed=8231).replace("run 23000", "run 1500").replace("thermo 100", "thermo 500")
+    script = script.replace("thermo_style custom step temp c_vy", "thermo_style custom step temp c_vy\nthermo_modify format float %.15g")
+    one, two = thermo_on_ranks(script, tmp_path)
+    assert one[:, 0].tolist() == [0, 500, 1000, 1500, 1500, 2000, 2500, 3000, 3000, 3500, 4000, 4500]
+    np.testing.assert_allclose(two, one, rtol=1e-9, atol=1e-12)
