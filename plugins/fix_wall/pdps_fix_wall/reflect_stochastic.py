@@ -1,7 +1,7 @@
 r"""Fix ``wall/reflect/stochastic``: flat walls that send crossing particles back with a velocity
 drawn from the wall's gas-surface scattering kernel (LAMMPS's fix wall/reflect/stochastic, by
-Q.-D. To; the kernels: Maxwell, Phil. Trans. R. Soc. 170, 231 (1879); Cercignani and Lampis,
-Transp. Theory Stat. Phys. 1, 101 (1971)).
+Q.-D. To: To, Vu, Lauriat and Leonard, J. Math. Phys. 56, 103101 (2015); the kernels: Maxwell, Phil.
+Trans. R. Soc. 170, 231 (1879); Cercignani and Lampis, Transp. Theory Stat. Phys. 1, 101 (1971)).
 
 After the positions have moved (``post_integrate``), a particle of the group found beyond a wall at
 :math:`x_n = c` (below a ``lo`` wall, above a ``hi`` wall) is taken back along its path to the
