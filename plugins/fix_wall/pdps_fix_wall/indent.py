@@ -21,9 +21,10 @@ z and a plane by their axis's spacing, the radius by x's; variables are taken as
 LAMMPS. On periodic axes the centre (axis) is wrapped into the box and distances are minimum-image.
 
 Output: ``f_ID`` is the indenter's energy, the sum of E (``fix_modify ID energy yes`` adds it to
-``pe`` and to what ``minimize`` minimizes), ``f_ID[1..3]`` (LAMMPS's indices) the force on the
-indenter, minus the sum of the forces on the particles; both extensive. The forces act at set-up, in
-every step's ``post_force`` and at every evaluation of a minimization, as LAMMPS's.
+``pe`` and to what ``minimize`` minimizes), ``f_ID[1..3]`` in LAMMPS's dialect (``f_ID[0..2]`` in
+PDPS's) the force on the indenter, minus the sum of the forces on the particles; both extensive.
+The forces act at set-up, in every step's ``post_force`` and at every evaluation of a minimization,
+as LAMMPS's.
 
 Where pdps differs: a particle exactly at a sphere's centre (on a cylinder's axis) feels no force,
 its energy counted (LAMMPS divides by r = 0). LAMMPS's ``cone`` indenter is not built and is refused.
@@ -217,5 +218,5 @@ class FixIndent(Fix):
         return float(sim.comm.sum(self.on_indenter[0]))
 
     def vector(self, sim):
-        """The force on the indenter (f_ID[1..3] in LAMMPS's indices), summed over ranks."""
+        """The force on the indenter (f_ID[1..3] in LAMMPS's dialect), summed over ranks."""
         return np.array(sim.comm.sum(self.on_indenter[1:].copy()), dtype=float)
