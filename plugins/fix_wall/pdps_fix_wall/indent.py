@@ -31,7 +31,9 @@ its energy counted (LAMMPS divides by r = 0). LAMMPS's ``cone`` indenter is not 
 
 Syntax (LAMMPS's)::
 
-    fix ID GROUP indent K sphere x y z R | cylinder x|y|z c1 c2 R | plane x|y|z pos lo|hi  [side in|out] [units box|lattice]
+    fix ID GROUP indent K GEOMETRY [side in|out] [units box|lattice]
+
+    GEOMETRY = sphere x y z R | cylinder x|y|z c1 c2 R | plane x|y|z pos lo|hi
 
 Example::
 

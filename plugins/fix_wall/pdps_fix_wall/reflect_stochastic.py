@@ -95,8 +95,8 @@ def bessel_exponential(theta, alpha, vn, u1, u2):
 
 
 @njit(cache=True)
-def scatter(x, v, tag, type_, mass, rmass, mask, groupbit, nlocal, axes, lower, coords, kt, wall_velocity, accommodation,
-            rule, key, step, dimension):
+def scatter(x, v, tag, type_, mass, rmass, mask, groupbit, nlocal, axes, lower, coords, kt, wall_velocity,
+            accommodation, rule, key, step, dimension):
     """Every particle of the group beyond a wall: back to its crossing point, a new velocity from the
     wall's kernel, on from there for the time it had spent beyond the wall."""
     for w in range(len(axes)):
@@ -162,7 +162,8 @@ class FixWallReflectStochastic(Fix):
                                      f"(got {' '.join(f'{a:g}' for a in wall.accommodation) or 'none'})")
                 for a in wall.accommodation:
                     if not 0.0 <= a <= 1.0:
-                        raise ValueError(f"wall {wall.face}: accommodation coefficients must be from 0 to 1 (got {a:g})")
+                        raise ValueError(f"wall {wall.face}: accommodation coefficients must be from 0 to 1 "
+                                         f"(got {a:g})")
                 if wall.temp < 0.0:
                     raise ValueError(f"wall {wall.face}: temperature must be >= 0 (got {wall.temp:g})")
                 draws_rayleigh = self.rule == "diffusive" or (self.rule == "maxwell" and wall.accommodation[0] > 0)

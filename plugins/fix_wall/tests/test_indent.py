@@ -148,7 +148,8 @@ def test_bad_indenters(line, message):
 
 @pytest.mark.parametrize("line, message", [
     ("fix 1 all indent 10 sphere v_nope 2 3 1\nrun 0", "fix 1 indent: variable nope is not defined"),
-    ("variable a atom x\nfix 1 all indent 10 plane z v_a lo\nrun 0", "fix 1 indent: variable a is not equal-style (got atom)"),
+    ("variable a atom x\nfix 1 all indent 10 plane z v_a lo\nrun 0",
+     "fix 1 indent: variable a is not equal-style (got atom)"),
     ("variable r equal 1-step\nfix 1 all indent 10 sphere 1 1 1 v_r\nrun 2",
      "fix 1 indent: the sphere radius must be >= 0 (got -1 at step 2)"),
 ])

@@ -260,7 +260,8 @@ def test_the_same_run_on_1_and_2_ranks(tmp_path):
     """The random numbers follow particle ids, not ranks: the gas's first 1,500 steps of each rule
     on 2 ranks as on 1, to round-off."""
     script = GAS.format(seed=8231).replace("run 23000", "run 1500").replace("thermo 100", "thermo 500")
-    script = script.replace("thermo_style custom step temp c_vy", "thermo_style custom step temp c_vy\nthermo_modify format float %.15g")
+    script = script.replace("thermo_style custom step temp c_vy",
+                            "thermo_style custom step temp c_vy\nthermo_modify format float %.15g")
     one, two = thermo_on_ranks(script, tmp_path)
     assert one[:, 0].tolist() == [0, 500, 1000, 1500, 1500, 2000, 2500, 3000, 3000, 3500, 4000, 4500]
     np.testing.assert_allclose(two, one, rtol=1e-9, atol=1e-12)
