@@ -33,6 +33,16 @@ def once_each(walls):
     return given
 
 
+def check_order(faces, coords):
+    """Each axis with both walls among ``faces`` (in the order of ``coords``, their positions) has
+    its lo wall below its hi wall."""
+    position = dict(zip(faces, coords))
+    for name in "xyz":
+        lo, hi = position.get(f"{name}lo"), position.get(f"{name}hi")
+        if lo is not None and hi is not None and not lo < hi:
+            raise ScriptError(f"{name}lo must be below {name}hi (got {lo:g} {hi:g})")
+
+
 class PotentialWallArgs(StyleArgs):
     """What wall/harmonic and wall/lj93, wall/lj126 check of their ``wall`` entries (face coord
     epsilon sigma cutoff ...): each face once, every cutoff > 0."""

@@ -60,7 +60,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Fix, FloatOrVariable, ScriptError, StyleArgs, VariableRef, keyword, param
 
-from .faces import Face, once_each, wall_planes
+from .faces import Face, check_order, once_each, wall_planes
 
 STYLES = ("specular", "bounce_forward", "bounce_back")
 SPECULAR, BOUNCE_FORWARD, BOUNCE_BACK = range(3)
@@ -137,13 +137,8 @@ class FixWallReflect(Fix):
                 self.moving.append((k, coord, float(spacing)))
         axes, lower, coords = wall_planes(sim, {face: 0.0 if isinstance(coord, VariableRef) else coord
                                                 for face, coord in walls.items()}, units)
-        for axis, name in enumerate("xyz"):
-            lo, hi = walls.get(f"{name}lo"), walls.get(f"{name}hi")
-            if lo is not None and hi is not None and not any(isinstance(c, VariableRef) for c in (lo, hi)):
-                c_lo = coords[list(walls).index(f"{name}lo")]
-                c_hi = coords[list(walls).index(f"{name}hi")]
-                if not c_lo < c_hi:
-                    raise ScriptError(f"{name}lo must be below {name}hi (got {c_lo:g} {c_hi:g})")
+        fixed = [k for k, coord in enumerate(walls.values()) if not isinstance(coord, VariableRef)]
+        check_order([list(walls)[k] for k in fixed], coords[fixed])
         self.axes, self.lower, self.coords = axes, lower, coords
         self.old_name = f"wall_reflect_{id}_x_old"
         if self.style == BOUNCE_BACK:
