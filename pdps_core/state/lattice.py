@@ -44,21 +44,42 @@ USAGE = ("lattice spacing x DX y DY z DZ | lattice none SCALE | lattice sc|bcc|f
 class Lattice(NamedTuple):
     """``spacing`` (3,): what units lattice multiplies by; ``basis`` (n, 3): sites of a unit cell in
     its fractions; ``cell`` (3, 3): box-space vectors of the unit cell as columns (scaled, rotated);
-    ``offset`` (3,): origin * spacing; ``style``."""
+    ``offset`` (3,): origin * spacing; ``style``; ``primitive`` (3, 3) the unscaled a1, a2, a3 as
+    columns, ``scale`` and ``rotation`` (3, 3) the orient rows normalised, of which ``cell`` is made
+    (None where only the cell is known: a restart's lattice)."""
     spacing: np.ndarray
     basis: np.ndarray
     cell: np.ndarray
     offset: np.ndarray
     style: str
+    primitive: np.ndarray | None = None
+    scale: float = 1.0
+    rotation: np.ndarray | None = None
 
     def sites(self, cells):
-        """Box positions of every basis site of the integer cells (m, 3) -> (m * n_basis, 3)."""
-        fractions = (cells[:, None, :] + self.basis[None, :, :]).reshape(-1, 3)
-        return fractions @ self.cell.T + self.offset
+        """Box positions of every basis site of the integer cells (m, 3) -> (m * n_basis, 3): with
+        LAMMPS's arithmetic (its Lattice::lattice2box, one rounding after another: a1, a2, a3 times
+        the fractions, times the scale, rotated, plus the origin), so that a site on a region's
+        surface falls on the side it falls in LAMMPS (a hex lattice's y differs in its last bit
+        with the cell premultiplied)."""
+        f = (cells[:, None, :] + self.basis[None, :, :]).reshape(-1, 3)
+        if self.primitive is None:
+            return f @ self.cell.T + self.offset
+        return lattice_to_box(f, self.primitive, self.scale, self.rotation, self.offset)
 
     def fractions(self, x):
         """Cell coordinates (ijk + b) of box positions x (m, 3)."""
         return (x - self.offset) @ np.linalg.inv(self.cell).T
+
+
+def lattice_to_box(f, primitive, scale, rotation, offset):
+    """Box positions of lattice coordinates f (m, 3), LAMMPS's Lattice::lattice2box term by term."""
+    p, r = primitive, rotation
+    unrotated = [(p[a, 0] * f[:, 0] + p[a, 1] * f[:, 1] + p[a, 2] * f[:, 2]) * scale for a in range(3)]
+    out = np.empty_like(f)
+    for a in range(3):
+        out[:, a] = r[a, 0] * unrotated[0] + r[a, 1] * unrotated[1] + r[a, 2] * unrotated[2] + offset[a]
+    return out
 
 
 def parse_lattice(words, units, dimension):
@@ -133,17 +154,18 @@ def parse_lattice(words, units, dimension):
     if abs(np.linalg.det(vectors)) < 1e-12:
         raise ScriptError("a1, a2 and a3 must not lie in one plane")
     if units == "lj":
-        area = vectors[0, 0] * vectors[1, 1] - vectors[1, 0] * vectors[0, 1]
-        size = abs(np.linalg.det(vectors)) if dimension == 3 else abs(area)
-        constant = (len(basis) / (size * scale)) ** (1.0 / dimension)
+        # LAMMPS's: the cell volume a1 . (a2 x a3) in 2d too, and n / volume / rho* in that order
+        size = abs(float(vectors[:, 0] @ np.cross(vectors[:, 1], vectors[:, 2])))
+        constant = (len(basis) / size / scale) ** (1.0 / dimension)
     else:
         constant = scale
     cell = rotation @ vectors * constant
     if spacing is None:
         corners = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=np.float64)
-        extent = corners @ cell.T
+        extent = lattice_to_box(corners, vectors, constant, rotation, np.zeros(3))
         spacing = extent.max(axis=0) - extent.min(axis=0)
-    return Lattice(np.asarray(spacing, dtype=np.float64), basis, cell, origin * spacing, style)
+    return Lattice(np.asarray(spacing, dtype=np.float64), basis, cell, origin * spacing, style, vectors.copy(),
+                   constant, rotation)
 
 
 def _pdps_spacing(words):
