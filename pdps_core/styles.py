@@ -1087,6 +1087,9 @@ class Fix(Style):
     virial_default: ClassVar[bool] = False
     virial_after: ClassVar[str] = "post_force"
     minimize_idle: ClassVar[bool] = False
+    # the fix may be defined before the box exists (LAMMPS's fix property/atom, whose values read_data's
+    # fix keyword then reads)
+    before_box: ClassVar[bool] = False
     # the box lengths (0 x, 1 y, 2 z) the fix changes itself (fix deform): barostats refuse to share them
     deformed_axes: tuple = ()
     # hooks the fix defines but does not join for now (LAMMPS's fix mask, changed by fix_modify: fix

@@ -142,8 +142,8 @@ def test_formulas_give_what_lammps_prints(formula, value, dialect):
 @pytest.mark.parametrize("line, message", [
     ("kspace_style pppm 1e-4", "kspace_style is a LAMMPS command pdps does not support; instead: pdps has no "
                                "long-range electrostatics (docs/lammps.md)"),
-    ("balance 1.0 shift x 5 1.1", "balance is a LAMMPS command pdps does not support; instead: the processor "
-                                  "grid is chosen at the start (processors) (docs/lammps.md)"),
+    ("molecule water water.mol", "molecule is a LAMMPS command pdps does not support; instead: read_data with "
+                                 "molecule ids (docs/lammps.md)"),
 ])
 def test_lammps_commands_pdps_does_not_run_name_an_alternative(pdps_cli, line, message):
     done = pdps_cli(f"units lj\natom_style atomic\n{line}\n", "-log", "none")

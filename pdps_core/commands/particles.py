@@ -448,13 +448,50 @@ def _data_bonds(sim, data, start):
         p.num_bond[row] = slot + 1
 
 
+# LAMMPS's read_data's own section names, which a fix's section must not take (its read_data.cpp)
+DATA_SECTIONS = frozenset({
+    "Atoms", "Velocities", "Masses", "Ellipsoids", "Lines", "Triangles", "Bodies", "Bonds", "Angles", "Dihedrals",
+    "Impropers", "Pair Coeffs", "PairIJ Coeffs", "Bond Coeffs", "Angle Coeffs", "Dihedral Coeffs",
+    "Improper Coeffs", "BondBond Coeffs", "BondAngle Coeffs", "MiddleBondTorsion Coeffs", "EndBondTorsion Coeffs",
+    "AngleTorsion Coeffs", "AngleAngleTorsion Coeffs", "BondBond13 Coeffs", "AngleAngle Coeffs"})
+
+
+def _data_fix_readers(sim, words, usage):
+    """{SECTION: fix} of read_data's ``fix ID NULL SECTION`` keywords (LAMMPS's: the fix reads the
+    section's lines); any other keyword is refused."""
+    readers = {}
+    k = 0
+    while k < len(words):
+        if words[k] != "fix":
+            raise ScriptError(f"read_data keyword {words[k]} is not supported; usage: {usage}")
+        if len(words) < k + 4:
+            raise ScriptError(f"fix needs ID NULL SECTION; usage: {usage}")
+        ident, header, section = words[k + 1:k + 4]
+        fix = sim.fixes.get(ident)
+        if fix is None:
+            raise ScriptError(f"fix {ident} is not defined (read_data fix)")
+        if not callable(getattr(fix, "read_data_section", None)):
+            raise ScriptError(f"fix {ident} ({fix.name}) reads no data file section")
+        if header != "NULL":
+            raise ScriptError(f"fix {ident} {header}: a fix's header keyword is not supported (give NULL)")
+        if section in DATA_SECTIONS:
+            raise ScriptError(f"fix {ident}: section {section} is one of read_data's own sections (LAMMPS refuses "
+                              "it too): name the fix's section otherwise")
+        readers[section] = fix
+        k += 4
+    return readers
+
+
 @command("read_data")
 def read_data(sim, args):
     from ..state.data_file import read_data_file
-    count(args, 1, "read_data FILE")
+    usage = "read_data FILE [fix ID NULL SECTION ...]"
+    if not args:
+        raise ScriptError(f"expected a file; usage: {usage}")
+    readers = _data_fix_readers(sim, args[1:], usage)
     if sim.box is not None:
         raise ScriptError("read_data needs no box to exist yet (it creates it)")
-    data = read_data_file(sim.resolve(args[0]), sim.particle_style)
+    data = read_data_file(sim.resolve(args[0]), sim.particle_style, tuple(readers))
     if sim.particle_style == "sphere" and data.masses:
         # LAMMPS's read_data refuses them too; in the PDPS dialect the mass command after read_data
         # gives a type's spheres one mass
@@ -480,6 +517,15 @@ def read_data(sim, args):
     p.add(data.x, data.types, **extra)
     p.tag[start:] = data.tags
     p.image[start:] = data.images
+    if readers:
+        rows = {int(tag): start + k for k, tag in enumerate(data.tags)}
+        for section, fix in readers.items():
+            if section not in data.fix_sections:
+                raise ScriptError(f"{args[0]}: no section {section} for fix {fix.id}")
+            try:
+                fix.read_data_section(sim, section, data.fix_sections[section], rows)
+            except ScriptError as exc:
+                raise ScriptError(f"{args[0]}: {exc.message}") from None
     p.next_tag = int(data.tags.max()) + 1 if len(data.tags) else p.next_tag
     if data.velocities is not None:
         p.v[start:] = data.velocities

@@ -56,9 +56,12 @@ def _create(sim, kind, table, args, usage):
     if len(args) < 3:
         raise ScriptError(f"expected: {usage}")
     ident, group, style = args[0], args[1], args[2]
-    sim.require_box(kind)
-    sim.require_group(group)
+    if sim.box is not None or kind != "fix":
+        sim.require_box(kind)
     cls, words = spelled(sim, kind, style, args[3:])
+    if sim.box is None and not getattr(cls, "before_box", False):
+        sim.require_box(kind)
+    sim.require_group(group)
     previous = table.get(ident)
     if previous is not None and kind != "fix":
         raise ScriptError(f"{kind} {ident} is already defined")

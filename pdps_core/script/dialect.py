@@ -149,6 +149,10 @@ def _liggghts_marker(words):
     # the word respell looks for: LIGGGHTS's keywords stand in any order
     if name == "fix" and style == "wall/gran" and "model" in words[4:]:
         return "fix wall/gran model"
+    # LAMMPS has a fix property/atom of its own (i_NAME, d_NAME, mol ...): LIGGGHTS's names a
+    # property and then scalar or vector
+    if name == "fix" and style == "property/atom" and words[5:6] not in (["scalar"], ["vector"]):
+        return None
     return f"{name} {style}" if (name, style) in LIGGGHTS_ONLY else None
 
 

@@ -60,9 +60,12 @@ class DataFile:
     extra_bonds: int = 0                                # extra bond per atom: room for bonds made later
     bonds: np.ndarray = None                            # (nbonds, 3) int64: type, atom1, atom2
     bond_coeffs: list = field(default_factory=list)     # (line number, [N, coefficient words...])
+    fix_sections: dict = field(default_factory=dict)    # read_data fix ID NULL SECTION: {SECTION: [(line, words)]}
 
 
-def read_data_file(path, particle_style):
+def read_data_file(path, particle_style, fix_sections=()):
+    """The data file's contents; ``fix_sections``: names of sections a fix reads (read_data's fix
+    keyword), kept as (line number, words) for it."""
     lines = read_text(path, "data file").splitlines()
     name = path
 
@@ -71,7 +74,7 @@ def read_data_file(path, particle_style):
 
     natoms, ntypes = None, None
     lo, hi = np.zeros(3), np.ones(3)
-    masses, atoms, velocities, skipped, pair_coeffs = {}, [], {}, {}, []
+    masses, atoms, velocities, skipped, pair_coeffs, kept = {}, [], {}, {}, [], {}
     nbonds, nbondtypes, extra_bonds, bond_lines, bond_coeffs = 0, 0, 0, [], []
     columns = style_columns(particle_style)
     spheres = "sphere" in substyles(particle_style)
@@ -100,6 +103,10 @@ def read_data_file(path, particle_style):
                                  f"angle or full), not {particle_style}")
                 section = "Bonds" if head == "Bonds" else two
                 continue
+            if text in fix_sections:
+                section = text
+                kept.setdefault(text, [])
+                continue
             if head in SKIPPED_SECTIONS or two in SKIPPED_SECTIONS:
                 if not molecular:
                     fail(number, f"section {text} needs a particle_style with molecule ids (molecular, bond, "
@@ -117,6 +124,9 @@ def read_data_file(path, particle_style):
                              f" (set particle_style {hint.group(1)} before read_data)")
             continue
         if section == "skipped":
+            continue
+        if section in kept:
+            kept[section].append((number, words))
             continue
         # Python's int() and float() take other scripts' digits (U+FF11) and 1_000; a data file's
         # numbers are ASCII, as LAMMPS reads them ("Expected floating point parameter")
@@ -304,4 +314,4 @@ def read_data_file(path, particle_style):
         bonds[k] = values[1:]
     return DataFile(lo, hi, ntypes, masses, tags, types, x, images, diameter, density, v, per_atom, skipped,
                     pair_coeffs, omega, nbondtypes, extra_bonds, bonds if nbonds or nbondtypes or extra_bonds else None,
-                    bond_coeffs)
+                    bond_coeffs, kept)

@@ -42,6 +42,19 @@ class FixPropertyAtom(Fix):
         reverse: Literal["yes", "no"]
         defaults: list[float] = param([], unit="as the property")
 
+    @classmethod
+    def respell(cls, dialect, words):
+        # LAMMPS's own fix property/atom (i_NAME, d_NAME, ...): a name, then no scalar|vector
+        if dialect != "liggghts" and words[1:2] not in (["scalar"], ["vector"]):
+            from .property_atom_lammps import FixPropertyAtomLammps
+            return FixPropertyAtomLammps, words
+        return None
+
+    @classmethod
+    def spellings(cls):
+        from .property_atom_lammps import FixPropertyAtomLammps
+        return (FixPropertyAtomLammps,)
+
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
         name, values = args.variable, list(args.defaults)
