@@ -1,0 +1,60 @@
+"""benchmarks/corpus_lammps.py's rules (make corpus): LAMMPS's seeds found by command and replaced,
+through the variable that holds one too; long runs cut alike; thermo rows read by column name without
+the clock's; the step where two runs part beyond LAMMPS's printed digits."""
+
+import importlib.util
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "benchmarks"))
+spec = importlib.util.spec_from_file_location("corpus_lammps", ROOT / "benchmarks" / "corpus_lammps.py")
+tool = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(tool)
+
+SCRIPT = """variable seed equal 4928
+variable n equal 20000
+velocity all create 1.0 87287 loop geom
+fix 2 all langevin 1.0 1.0 0.1 ${seed}   # a comment stays
+pair_style hybrid/overlay lj/cut 2.5 dpd/tstat 1.0 1.0 2.5 34387
+run 100
+run ${n}
+run 8000 every 100
+"""
+
+
+def test_seeds_are_found_by_command_and_through_variables():
+    places = tool.seed_places(SCRIPT.splitlines())
+    assert places == [(2, 4), (0, 3), (4, 8)]
+    new = tool.prepared(SCRIPT, 1, 5000).splitlines()
+    primes = [str(p) for p in tool.seed_set(1, 3)]
+    assert new[2] == f"velocity all create 1.0 {primes[0]} loop geom"
+    assert new[0] == f"variable seed equal {primes[1]}"
+    assert new[3] == "fix 2 all langevin 1.0 1.0 0.1 ${seed}   # a comment stays"
+    assert new[4].split()[-1] == primes[2]
+    assert tool.prepared(SCRIPT, 0, 5000).splitlines()[2] == "velocity all create 1.0 87287 loop geom"
+
+
+def test_long_runs_are_cut_and_short_ones_kept():
+    lines = tool.prepared(SCRIPT, 0, 5000).splitlines()
+    assert lines[1] == "variable n equal 5000"
+    assert lines[5:8] == ["run 100", "run ${n}", "run 5000 every 100"]
+    assert tool.prepared(SCRIPT, 0, None).splitlines()[1] == "variable n equal 20000"
+
+
+def test_thermo_rows_by_name_without_the_clock():
+    screen = """   Step          Temp          CPU           Press
+         0   1.5            0             -4.97
+       100   0.75           0.0215        0.73
+Loop time of 0.07 on 1 procs for 100 steps with 256 atoms
+   Step          Temp          CPU           Press
+       100   0.76           0.0300        0.74
+"""
+    assert tool.thermo(screen) == {"0": {"Temp": 1.5, "Press": -4.97}, "100": {"Temp": 0.75, "Press": 0.73}}
+
+
+def test_runs_part_beyond_one_unit_of_the_eighth_digit():
+    one = {"rows": {"0": {"Temp": 1.2345678}, "50": {"Temp": 0.98765432}, "100": {"Temp": 0.5}}}
+    close = {"rows": {"0": {"Temp": 1.2345679}, "50": {"Temp": 0.98765433}, "100": {"Temp": 0.5000002}}}
+    assert tool.parting(one, close) == (100, "Temp", 0.5, 0.5000002)
+    assert tool.parting(one, one)[0] is None
