@@ -24,6 +24,7 @@ How each script runs, unmodified but for two things done alike in both programs:
 LAMMPS (``../shared/bench/lmp``, or ``$PDPS_LAMMPS_BENCH/lmp``) runs seed set 0 on one rank and on
 two, and seed sets 1 .. ``--reference-seeds``-1; pdps (this checkout's ``.venv``, ``pdps -in SCRIPT``
 as LAMMPS's ``lmp`` is called) runs set 0 and ``--pdps-seeds`` sets of its own (numbered from 100).
+Where pdps stops at a line, LAMMPS runs set 0 only (the others wait until pdps runs the script).
 The reference's runs are kept in the results file and made again only with ``--rerun-reference``.
 
 What the table says, per script (between docs/lammps.md's ``corpus:begin`` and ``corpus:end``):
@@ -486,23 +487,25 @@ def main():
                 uncut = run_script(lammps, examples, script, 0, None, args.timeout, "lammps")
                 if uncut["ok"]:
                     steps, reference = None, [uncut]
-        reference += [run_script(lammps, examples, script, k, steps, args.timeout, "lammps")
-                      for k in range(len(reference), wanted)]
-        twin = recorded.get("twin")
-        if twin is None and reference[0]["ok"]:
-            twin = run_script(["env", "NP=2"] + lammps, examples, script, 0, steps, args.timeout, "lammps-2")
-        entry = {"seeded": seeded, "steps": steps, "reference": reference, "twin": twin}
-        if reference[0]["ok"]:
-            sets = [0] + (list(range(PDPS_FIRST_SEED, PDPS_FIRST_SEED + args.pdps_seeds)) if seeded else [])
-            entry["pdps"] = []
-            for k in sets:
-                entry["pdps"].append(run_script(pdps, examples, script, k, steps, args.timeout, "pdps"))
-                if not entry["pdps"][-1]["ok"]:
-                    break
-            if all(run["ok"] for run in entry["pdps"]):
-                entry["agreement"] = compare(entry, seeded)
-        else:
+        entry = {"seeded": seeded, "steps": steps, "reference": reference, "twin": recorded.get("twin")}
+        if not reference[0]["ok"]:
             entry["pdps"] = [{"ok": False, "why": "not run: LAMMPS fails"}]
+        else:
+            # pdps's own seeds first: where pdps stops, LAMMPS's other seed sets and its run on
+            # two ranks wait until it runs
+            entry["pdps"] = [run_script(pdps, examples, script, 0, steps, args.timeout, "pdps")]
+            if entry["pdps"][0]["ok"]:
+                reference += [run_script(lammps, examples, script, k, steps, args.timeout, "lammps")
+                              for k in range(len(reference), wanted)]
+                if entry["twin"] is None:
+                    entry["twin"] = run_script(["env", "NP=2"] + lammps, examples, script, 0, steps, args.timeout,
+                                               "lammps-2")
+                for k in range(PDPS_FIRST_SEED, PDPS_FIRST_SEED + args.pdps_seeds) if seeded else ():
+                    entry["pdps"].append(run_script(pdps, examples, script, k, steps, args.timeout, "pdps"))
+                    if not entry["pdps"][-1]["ok"]:
+                        break
+                if all(run["ok"] for run in entry["pdps"]):
+                    entry["agreement"] = compare(entry, seeded)
         results["scripts"][script] = entry
         RESULTS.write_text(json.dumps(results, indent=None, separators=(",", ":")) + "\n")
     text = table(results)
