@@ -286,13 +286,13 @@ def prepared(text, k, steps):
 
 
 def thermo(text):
-    """The thermo rows a run printed: {step: {column: value}} (a row printed again at the next run's
-    start keeps its first printing)."""
-    rows, names = {}, None
+    """The thermo rows a run printed: {"RUN:STEP": {column: value}}, RUN counting the runs (and
+    minimizations) from 1, so that a run after reset_timestep keeps its rows apart."""
+    rows, names, run = {}, None, 0
     for line in text.splitlines():
         words = line.split()
         if words[:1] == ["Step"]:
-            names = words
+            names, run = words, run + 1
             continue
         if line.startswith("Loop time") or not words:
             names = None
@@ -302,9 +302,21 @@ def thermo(text):
                 values = [float(word) for word in words]
             except ValueError:
                 continue
-            rows.setdefault(str(int(values[0])), {name: value for name, value in zip(names[1:], values[1:])
-                                                  if name not in CLOCK})
+            rows.setdefault(f"{run}:{int(values[0])}", {name: value for name, value in zip(names[1:], values[1:])
+                                                       if name not in CLOCK})
     return rows
+
+
+def order(key):
+    """Sort key of a row's "RUN:STEP"."""
+    run, step = key.split(":")
+    return int(run), int(step)
+
+
+def shown(key):
+    """A row's "RUN:STEP" as the table says it: step S (of run R after the first)."""
+    run, step = key.split(":")
+    return f"step {step}" + (f" of run {run}" if run != "1" else "")
 
 
 def run_script(command, examples, script, k, steps, timeout, label):
@@ -343,36 +355,39 @@ def digit(value):
 
 
 def parting(reference, other):
-    """(the first step where ``other`` parts from ``reference`` beyond the printed digits, or None,
-    the column, the two values), over the rows and columns both print."""
-    steps = sorted(set(reference["rows"]) & set(other["rows"]), key=int)
-    columns = [c for c in reference["rows"][steps[0]] if c in other["rows"][steps[0]]] if steps else []
-    scale = {c: max(abs(reference["rows"][s][c]) for s in steps) for c in columns}
+    """(the first row, "RUN:STEP", where ``other`` parts from ``reference`` beyond the printed digits,
+    or None, the column, the two values, the row's index), over the rows and columns both print."""
+    steps = sorted(set(reference["rows"]) & set(other["rows"]), key=order)
+    scale = {}
     for s in steps:
-        for c in columns:
-            want, got = reference["rows"][s][c], other["rows"][s][c]
-            if abs(got - want) > max(1.01 * digit(want), ROUNDOFF * scale[c]):
-                return int(s), c, want, got
-    return None, None, None, None
+        for c, value in reference["rows"][s].items():
+            scale[c] = max(scale.get(c, 0.0), abs(value))
+    for index, s in enumerate(steps):
+        for c, want in reference["rows"][s].items():
+            got = other["rows"][s].get(c)
+            if got is not None and abs(got - want) > max(1.01 * digit(want), ROUNDOFF * scale[c]):
+                return s, c, want, got, index
+    return None, None, None, None, None
 
 
 def statistics_verdict(reference, mine):
-    """(agrees, detail) of the permutation test over the rows and columns every run prints."""
+    """(agrees, detail) of the permutation test over the values (row and column) every run prints."""
     runs = reference + mine
-    steps = sorted(set.intersection(*(set(run["rows"]) for run in runs)), key=int)
-    if not steps:
-        return False, "no thermo row every run prints"
-    columns = [c for c in reference[0]["rows"][steps[0]] if all(c in run["rows"][steps[0]] for run in runs)]
-    table = np.array([[[run["rows"][s][c] for c in columns] for s in steps] for run in runs], dtype=np.float64)
+    steps = sorted(set.intersection(*(set(run["rows"]) for run in runs)), key=order)
+    features = [(s, c) for s in steps for c in reference[0]["rows"][s] if all(c in run["rows"][s] for run in runs)]
+    if not features:
+        return False, "no thermo value every run prints"
+    table = np.array([[[run["rows"][s][c] for s, c in features]] for run in runs], dtype=np.float64)
     values, floor = resolution(table, 10.0 ** -(DIGITS - 1))
     chosen = tuple(range(len(reference), len(runs)))
     measured = {group: largest_t(values, floor, group) for group in
                 itertools.combinations(range(len(runs)), len(mine))}
-    ours, (row, column) = measured[chosen]
+    ours, (_, at) = measured[chosen]
     p_value = sum(value >= ours for value, _ in measured.values()) / len(measured)
     theirs = [value for group, (value, _) in measured.items() if max(group) < len(reference)]
+    s, c = features[at]
     return p_value > P_VALUE, (
-        f"t = {ours:.1f} at step {steps[row]} {columns[column]}, as extreme as {round(p_value * len(measured))} "
+        f"t = {ours:.1f} at {shown(s)} {c}, as extreme as {round(p_value * len(measured))} "
         f"of the {len(measured)} choices of {len(mine)} of {len(runs)} runs (p = {p_value:.2f}; LAMMPS's own "
         f"pairs: median t {statistics.median(theirs):.1f})")
 
@@ -381,24 +396,24 @@ def compare(entry, seeded):
     """(how, agrees, detail) of pdps's runs against LAMMPS's."""
     own, twin = entry["reference"][0], entry.get("twin")
     mine = entry["pdps"][0]
-    common = set(own["rows"]) & set(mine["rows"])
+    common = sorted(set(own["rows"]) & set(mine["rows"]), key=order)
     if not common:
         return "none", False, "no thermo row both print"
-    first = min(common, key=int)
-    missing = [c for c in own["rows"][first] if c not in mine["rows"][first]]
-    if missing:
-        return "none", False, f"pdps prints no {', '.join(missing)} ({', '.join(mine['rows'][first])})"
-    step, column, want, got = parting(own, mine)
+    for s in common:
+        missing = [c for c in own["rows"][s] if c not in mine["rows"][s]]
+        if missing:
+            return "none", False, f"pdps prints no {', '.join(missing)} at {shown(s)} ({', '.join(mine['rows'][s])})"
+    step, column, want, got, index = parting(own, mine)
     if step is None:
         return "printed digits", True, f"{len(common)} rows to every printed digit"
-    chaos = parting(own, twin)[0] if twin and twin["ok"] else None
-    parted = f"part at step {step} ({column} {want:.8g} against {got:.8g})"
-    parted += f"; LAMMPS on 2 ranks parts at step {chaos}" if chaos is not None else \
+    chaos, *_, chaos_index = parting(own, twin) if twin and twin["ok"] else (None, None, None, None, None)
+    parted = f"part at {shown(step)} ({column} {want:.8g} against {got:.8g})"
+    parted += f"; LAMMPS on 2 ranks parts at {shown(chaos)}" if chaos is not None else \
         "; LAMMPS on 2 ranks prints every digit of 1"
     if seeded and len(entry["reference"]) > 1:
         ok, detail = statistics_verdict(entry["reference"], entry["pdps"][1:] or entry["pdps"])
         return "statistics", ok, parted + "; " + detail
-    ok = chaos is not None and step >= chaos / 2
+    ok = chaos is not None and index >= chaos_index / 2
     return "until chaos", ok, parted
 
 

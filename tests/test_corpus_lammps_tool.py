@@ -1,6 +1,6 @@
 """benchmarks/corpus_lammps.py's rules (make corpus): LAMMPS's seeds found by command and replaced,
 through the variable that holds one too; long runs cut alike; thermo rows read by column name without
-the clock's; the step where two runs part beyond LAMMPS's printed digits."""
+the clock's, each run's apart; the row where two runs part beyond LAMMPS's printed digits."""
 
 import importlib.util
 import sys
@@ -50,11 +50,12 @@ Loop time of 0.07 on 1 procs for 100 steps with 256 atoms
    Step          Temp          CPU           Press
        100   0.76           0.0300        0.74
 """
-    assert tool.thermo(screen) == {"0": {"Temp": 1.5, "Press": -4.97}, "100": {"Temp": 0.75, "Press": 0.73}}
+    assert tool.thermo(screen) == {"1:0": {"Temp": 1.5, "Press": -4.97}, "1:100": {"Temp": 0.75, "Press": 0.73},
+                                   "2:100": {"Temp": 0.76, "Press": 0.74}}
 
 
 def test_runs_part_beyond_one_unit_of_the_eighth_digit():
-    one = {"rows": {"0": {"Temp": 1.2345678}, "50": {"Temp": 0.98765432}, "100": {"Temp": 0.5}}}
-    close = {"rows": {"0": {"Temp": 1.2345679}, "50": {"Temp": 0.98765433}, "100": {"Temp": 0.5000002}}}
-    assert tool.parting(one, close) == (100, "Temp", 0.5, 0.5000002)
+    one = {"rows": {"1:0": {"Temp": 1.2345678}, "1:50": {"Temp": 0.98765432}, "2:0": {"Temp": 0.5}}}
+    close = {"rows": {"1:0": {"Temp": 1.2345679}, "1:50": {"Temp": 0.98765433}, "2:0": {"Temp": 0.5000002}}}
+    assert tool.parting(one, close) == ("2:0", "Temp", 0.5, 0.5000002, 2)
     assert tool.parting(one, one)[0] is None
