@@ -206,7 +206,8 @@ class TestVariables:
     def test_next_needs_an_index_variable(self, sim):
         exc = error(sim, "variable e equal 1\nnext e")
         assert exc.command == "next"
-        assert exc.message == "next works only on index, loop, universe, uloop, world and file variables (e is equal)"
+        assert exc.message == ("next works only on index, loop, universe, uloop, world, file and atomfile variables "
+                               "(e is equal)")
         assert error(sim, "next").message == "expected: next NAME..."
         assert error(sim, "next missing").message == "undefined variable missing"
 
@@ -239,7 +240,7 @@ class TestVariables:
         ("variable a", "expected: variable NAME STYLE ARGS"),
         ("variable a equal", "variable a equal needs a value"),
         ("variable a loops 10", "unknown variable style loops (known: index, loop, universe, uloop, world, "
-                                "file, string, getenv, format, internal, equal, atom, vector, delete)"),
+                                "file, string, getenv, format, internal, equal, atom, atomfile, vector, delete)"),
         ("variable a loop 0 x", "variable a loop: bounds must be integers (got 0 x)"),
         ("variable a equal x", "variable a: an equal-style formula cannot read atom vectors (atom-style: "
                                "variable a atom ...) in 'x'"),

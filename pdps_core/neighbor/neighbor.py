@@ -395,11 +395,13 @@ class Neighbor:
                     and periodic == box.periodic and len(lists) == len(self.requests)
                     and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
                             for (kind, cutoff), r in zip(lists, self.requests)))
-        if same and not all(box.periodic):
-            # a run's setup drops what crossed a fixed face since the last build, as LAMMPS's does
+        if same:
+            # a run's setup drops what crossed a fixed face since the last build and wraps what
+            # crossed a periodic one, as LAMMPS's does: region tests and positions read after it see
+            # the wrapped positions (a temp/region compute, fix ave/spatial bins)
             x = particles.x[:particles.nlocal]
             for d in range(3):
-                if not box.periodic[d] and len(x) and (x[:, d].min() < box.lo[d] or x[:, d].max() >= box.hi[d]):
+                if len(x) and (x[:, d].min() < box.lo[d] or x[:, d].max() >= box.hi[d]):
                     same = False
         return bool(comm.min(int(same)))
 
