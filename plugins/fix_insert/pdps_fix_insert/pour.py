@@ -58,6 +58,9 @@ POLY_SUM_TOLERANCE = 1.0e-10            # LAMMPS's SMALL on the sum of the poly 
 WARMUP = 30                             # numbers LAMMPS discards after seeding
 ONE, RANGE, POLY = 0, 1, 2
 BLOCK, CYLINDER = 0, 1
+# LAMMPS takes these two region styles by name and reads their geometry (RegBlock's and
+# RegCylinder's bounds); pdps's regions declare no capability that gives it
+SHAPES = {"block": BLOCK, "cylinder": CYLINDER}
 MOLECULES = "pdps has no molecule templates (LAMMPS's fix pour inserts molecules with mol, rigid, shake)"
 
 
@@ -224,13 +227,7 @@ class FixPour(Fix):
         rate: float = keyword(0.0, unit="velocity")
         vel: tuple[float, ...] | None = keyword(None, unit="velocity")
         id: Literal["max", "next"] = keyword("max")
-        ignore: Literal["yes"] | None = keyword(None)
-
-    @classmethod
-    def parse(cls, words):
-        # LAMMPS's ignore takes no value
-        words = [w for word in words for w in ((word, "yes") if word == "ignore" else (word,))]
-        return super().parse(words)
+        ignore: tuple[()] | None = keyword(None)
 
     @classmethod
     def check_args(cls, args):
@@ -340,18 +337,17 @@ class FixPour(Fix):
         box = sim.box
         # bounds: xlo xhi ylo yhi xc yc rc
         self.bounds = np.zeros(7)
-        if region.name == "block":
-            self.shape = BLOCK
+        self.shape = SHAPES.get(region.name)
+        if self.shape == BLOCK:
             lo, hi = region.lo, region.hi
             self.bounds[:4] = lo[0], hi[0], lo[1], hi[1]
             self.zlo, self.zhi = float(lo[2]), float(hi[2])
             outside = (lo < box.lo).any() or (hi > box.hi).any()
-        elif region.name == "cylinder":
+        elif self.shape == CYLINDER:
             if dimension == 2:
                 raise ScriptError(f"region {name}: fix pour in 2-d needs a block region (as LAMMPS)")
             if region.axis != 2:
                 raise ScriptError(f"region {name}: fix pour needs a z-axis cylinder (got {'xyz'[region.axis]})")
-            self.shape = CYLINDER
             (xc, yc), rc = region.c, region.radius
             self.bounds[4:] = xc, yc, rc
             self.zlo, self.zhi = float(region.lo), float(region.hi)

@@ -123,7 +123,7 @@ CYLINDER = """
     fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0
     region cyl cylinder z 0.5 -0.5 4.0 6 7 units box
     fix ins all pour 70 2 98765 vol 0.1 20 diam poly 3 0.6 0.5 0.8 0.3 1.0 0.2 dens 1.5 2.5 &
-        vel 0 0.2 -0.3 0 -1.0 rate -0.5 id next region cyl
+        vel 0 0.2 -0.3 0 -1.0 rate -0.5 id next ignore region cyl
 """ + OUTPUT + """
     thermo 1
     dump d all custom 900 cyl.dump id type radius mass x y z vx vy vz
@@ -237,7 +237,8 @@ def test_the_first_batch_is_lammps_s_to_round_off(pdps_cli, tmp_path):
 
 
 def test_a_cylinder_pours_lammps_s_batches_on_its_steps(pdps_cli, tmp_path):
-    """diam poly, dens, vel, a falling region (rate) and id next: LAMMPS's counts on LAMMPS's steps,
+    """diam poly, dens, vel, a falling region (rate), id next and ignore (LAMMPS recorded the same with
+    and without it): LAMMPS's counts on LAMMPS's steps,
     and its thermo through contacts with the floor."""
     result = pdps_cli(CYLINDER, name="in.cyl")
     assert result.returncode == 0, result.stderr
