@@ -17,8 +17,8 @@ Syntax::
         id max|next                        ids after the largest present one (pdps always numbers so)
         ignore                             LAMMPS skips line and triangle particles (pdps has none)
 
-``mol``, ``rigid``, ``shake`` and ``molfrac`` (molecules) are refused. Units: distance, mass/distance^3
-(distance^2 in 2-d is not used: the mass is always :math:`\tfrac{4}{3}\pi r^3 \rho`), velocity.
+``mol``, ``rigid``, ``shake`` and ``molfrac`` (molecules) are refused. Units: diameters distance,
+densities mass/distance^3 (in 2-d too: the mass is :math:`\tfrac{4}{3}\pi r^3 \rho`, as LAMMPS), velocities.
 
 The schedule. A batch falls for the time a particle needs from the top of the volume to its bottom
 under the gravity g of the fix gravity (which must point along -z, -y in 2-d, and be defined before):
@@ -41,7 +41,7 @@ a present particle near the volume or one placed before it; the first particle t
 ends the batch, with LAMMPS's warning. A placed particle gets vx, vy uniform in their ranges and
 :math:`v_z = -\sqrt{v_z^2 + 2 g (z_{hi} - z)}`, the speed of a fall from the top, then its density.
 
-Output: ``f_ID`` is none (LAMMPS's fix pour has none).
+Output: none (LAMMPS's fix pour has no f_ID).
 """
 
 import math
