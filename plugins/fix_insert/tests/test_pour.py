@@ -334,3 +334,11 @@ def test_gravity_must_point_down(pdps_cli):
     assert result.returncode == 1
     assert result.stderr.strip().endswith("fix ins (pour): gravity must point along -z in 3-d (got 0.707107 0 "
                                           "-0.707107)")
+
+
+def test_a_gravity_changed_after_the_pour_was_defined_is_refused_at_the_run(pdps_cli):
+    """nfreq was worked out from the gravity the fix found; LAMMPS stops when it has changed."""
+    script = BAD.format(gravity=GRAVITY, args="10 1 5 region slab") + "fix 2 all gravity 2.0 vector 0 0 -1\nrun 1\n"
+    result = pdps_cli(script, name="in.bad")
+    assert result.returncode == 1
+    assert result.stderr.strip().endswith("fix ins (pour): gravity changed since the fix was defined")
