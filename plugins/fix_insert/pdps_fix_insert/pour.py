@@ -21,7 +21,7 @@ Syntax::
 densities mass/distance^3 (in 2-d too: the mass is :math:`\tfrac{4}{3}\pi r^3 \rho`, as LAMMPS), velocities.
 
 The schedule. A batch falls for the time a particle needs from the top of the volume to its bottom
-under the gravity g of the fix gravity (which must point along -z, -y in 2-d, and be defined before):
+under the gravity g of the fix gravity (which must point along -z, -y in 2-d) at the first run:
 with :math:`v_r = v_z - \mathrm{rate}` and :math:`\Delta = z_{hi} - z_{lo}`,
 
 .. math::  t = \bigl(-v_r - \sqrt{v_r^2 + 2 g \Delta}\bigr) / (-g), \qquad
@@ -31,6 +31,8 @@ steps, and holds :math:`n_\mathrm{per} = \lfloor f V / V_1 \rfloor` particles, V
 y extent at least 1 in 3-d; its area in 2-d), :math:`V_1` the sphere (disc in 2-d) of the largest
 diameter, or the mean of the ``poly`` ones. The first batch comes on the step after the fix is
 defined, and on the first step of every later run; then every :math:`n_\mathrm{freq}` steps until N.
+The gravity and the time step are those of the first run (LAMMPS 22 Jul 2025 takes them there: a
+fix gravity or timestep given after the fix pour counts); a later run with another is refused.
 
 One batch, as LAMMPS draws it from its Park-Miller generator (seeded with SEED, 30 numbers discarded),
 the same on every rank: for each particle a height :math:`h = z_{hi} - u^2 (z_{hi} - z_{lo})` (u
@@ -272,23 +274,9 @@ class FixPour(Fix):
         self._read_diameters(args.diam)
         self._read_velocity(args.vel, dimension)
         self._read_region(sim, args.region, dimension)
-        g = gravity_of(sim)
-        if g is None:
-            raise ScriptError("fix pour needs a fix gravity defined before it (LAMMPS: No fix gravity defined "
-                              "for fix pour)")
-        self.grav = -float(np.linalg.norm(g)) * sim.units.ftm2v
         self.state = park_state(args.seed)
         for _ in range(WARMUP):
             park_uniform(self.state)
-        if dimension == 3:
-            v_relative, delta = self.velocity[5] - self.rate, self.zhi - self.zlo
-        else:
-            v_relative, delta = self.velocity[4] - self.rate, self.bounds[3] - self.bounds[2]
-        t = (-v_relative - math.sqrt(v_relative * v_relative - 2.0 * self.grav * delta)) / self.grav
-        self.nfreq = int(t / sim.dt + 0.5)
-        if self.nfreq < 1:
-            raise ScriptError(f"fix pour: a batch falls through region {args.region} in {t:g} time units, "
-                              f"less than half a time step ({sim.dt:g}): nothing would clear the volume")
         self.next_reneighbor = sim.step + 1
         self.nfirst = self.next_reneighbor
         self.ninserted = 0
@@ -296,6 +284,24 @@ class FixPour(Fix):
         if self.nper == 0:
             raise ScriptError("fix pour inserts 0 particles each time (vol FRAC times the region's volume is "
                               "less than one particle's)")
+        self.region_id = args.region
+        # LAMMPS 22 Jul 2025 finds the gravity and the schedule at the first run (recorded: a fix
+        # gravity or a timestep given after the fix pour counts), and stops a later run whose
+        # gravity or time step has changed
+        self.grav = self.dt = self.nfreq = None
+
+    def _schedule(self, sim):
+        """nfreq from the fall through the region under the gravity now, and LAMMPS's line."""
+        if sim.dimension == 3:
+            v_relative, delta = self.velocity[5] - self.rate, self.zhi - self.zlo
+        else:
+            v_relative, delta = self.velocity[4] - self.rate, self.bounds[3] - self.bounds[2]
+        t = (-v_relative - math.sqrt(v_relative * v_relative - 2.0 * self.grav * delta)) / self.grav
+        self.nfreq = int(t / sim.dt + 0.5)
+        if self.nfreq < 1:
+            raise ScriptError(f"fix {self.id} (pour): a batch falls through region {self.region_id} in {t:g} time "
+                              f"units, less than half a time step ({sim.dt:g}): nothing would clear the volume")
+        self.dt = sim.dt
         nfinal = sim.step + 1 + (self.ninsert - 1) // self.nper * self.nfreq
         sim.info(f"Particle insertion: {self.nper} every {self.nfreq} steps, {self.ninsert} by step {nfinal}")
 
@@ -378,7 +384,7 @@ class FixPour(Fix):
     def setup(self, sim):
         g = gravity_of(sim)
         if g is None:
-            raise ScriptError(f"fix {self.id} (pour): no fix gravity is defined")
+            raise ScriptError(f"fix {self.id} (pour) needs a fix gravity (LAMMPS: No fix gravity defined for fix pour)")
         magnitude = float(np.linalg.norm(g))
         down = np.zeros(3)
         down[sim.dimension - 1] = -1.0
@@ -386,8 +392,14 @@ class FixPour(Fix):
             axis = "-z in 3-d" if sim.dimension == 3 else "-y in 2-d"
             raise ScriptError(f"fix {self.id} (pour): gravity must point along {axis} (got "
                               f"{' '.join(f'{c:g}' for c in g)})")
+        if self.grav is None:
+            self.grav = -magnitude * sim.units.ftm2v
+            self._schedule(sim)
         if -magnitude * sim.units.ftm2v != self.grav:
-            raise ScriptError(f"fix {self.id} (pour): gravity changed since the fix was defined")
+            raise ScriptError(f"fix {self.id} (pour): gravity changed since its first run")
+        if sim.dt != self.dt:
+            raise ScriptError(f"fix {self.id} (pour): the time step changed since its first run ({self.dt:g}, now "
+                              f"{sim.dt:g}; LAMMPS: Cannot change timestep with fix pour)")
         # LAMMPS's setup_pre_exchange: every run starts with a batch on its first step
         self.next_reneighbor = sim.step + 1 if self.ninserted < self.ninsert else None
 

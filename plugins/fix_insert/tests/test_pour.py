@@ -321,11 +321,42 @@ def test_bad_input_gets_one_line(pdps_cli, args, message):
     assert result.stderr.strip() == f"ERROR: in.bad:12: {message}"
 
 
-def test_pour_needs_a_gravity_defined_before_it(pdps_cli):
-    result = pdps_cli(BAD.format(gravity="", args="10 1 5 region slab"), name="in.bad")
+def test_pour_needs_a_gravity_at_its_first_run(pdps_cli):
+    result = pdps_cli(BAD.format(gravity="", args="10 1 5 region slab") + "run 1\n", name="in.bad")
     assert result.returncode == 1
-    assert result.stderr.strip() == ("ERROR: in.bad:12: fix: fix pour needs a fix gravity defined before it "
-                                     "(LAMMPS: No fix gravity defined for fix pour)")
+    assert result.stderr.strip() == ("ERROR: in.bad:13: run: fix ins (pour) needs a fix gravity (LAMMPS: No fix "
+                                     "gravity defined for fix pour)")
+
+
+# LAMMPS's thermo of BOX with the fix gravity and "timestep 0.002" given after the fix pour: LAMMPS
+# takes both at the first run ("Particle insertion: 41 every 823 steps, 150 by step 2470")
+LATE_THERMO = np.array([
+    (1, 41, 35.911272429653, 0),
+    (500, 71, 151.050076434256, 0.0772130129043982),
+    (1000, 112, 334.228778626066, 0.124122677429796),
+    (1700, 150, 278.861022641657, 10.8382503337614),
+    (2000, 150, 197.416542497777, 15.4123668233667),
+])
+
+
+def test_gravity_and_timestep_given_after_the_pour_count_as_lammps_s(pdps_cli):
+    script = BOX.format(steps=1999).replace("    timestep 0.001\n", "").replace(
+        "    fix 2 all gravity 1.0 vector 0 0 -1\n", "")
+    script = script.replace("    compute 1 all erotate/sphere\n",
+                            "    fix 2 all gravity 1.0 vector 0 0 -1\n    timestep 0.002\n    compute 1 all erotate/sphere\n")
+    result = pdps_cli(script, name="in.late")
+    assert result.returncode == 0, result.stderr
+    assert "Particle insertion: 41 every 823 steps, 150 by step 2470" in result.stdout
+    agrees(thermo(result.stdout), LATE_THERMO)
+
+
+def test_a_timestep_changed_after_the_first_run_is_refused(pdps_cli):
+    """LAMMPS (recorded): ERROR: Cannot change timestep with fix pour."""
+    script = BAD.format(gravity=GRAVITY, args="10 1 5 region slab") + "run 1\ntimestep 0.002\nrun 1\n"
+    result = pdps_cli(script, name="in.bad")
+    assert result.returncode == 1
+    assert result.stderr.strip().endswith("fix ins (pour): the time step changed since its first run (0.001, now "
+                                          "0.002; LAMMPS: Cannot change timestep with fix pour)")
 
 
 def test_gravity_must_point_down(pdps_cli):
@@ -336,9 +367,10 @@ def test_gravity_must_point_down(pdps_cli):
                                           "-0.707107)")
 
 
-def test_a_gravity_changed_after_the_pour_was_defined_is_refused_at_the_run(pdps_cli):
-    """nfreq was worked out from the gravity the fix found; LAMMPS stops when it has changed."""
-    script = BAD.format(gravity=GRAVITY, args="10 1 5 region slab") + "fix 2 all gravity 2.0 vector 0 0 -1\nrun 1\n"
+def test_a_gravity_changed_after_the_first_run_is_refused(pdps_cli):
+    """nfreq was worked out from the gravity of the first run; LAMMPS stops when it has changed."""
+    script = BAD.format(gravity=GRAVITY, args="10 1 5 region slab") + ("run 1\nfix 2 all gravity 2.0 vector 0 0 -1\n"
+                                                                      "run 1\n")
     result = pdps_cli(script, name="in.bad")
     assert result.returncode == 1
-    assert result.stderr.strip().endswith("fix ins (pour): gravity changed since the fix was defined")
+    assert result.stderr.strip().endswith("fix ins (pour): gravity changed since its first run")
