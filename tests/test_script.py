@@ -392,8 +392,8 @@ class TestInclude:
 
 
 @pytest.mark.parametrize("later, message", [
-    ("fix 2 all pour 10 1 1 region box", "fix: fix style pour is a LAMMPS style pdps does not have; instead: "
-     "create_atoms random between runs (docs/lammps.md)"),
+    ("fix 2 all deposit 10 1 100 1 region box", "fix: fix style deposit is a LAMMPS style pdps does not have; "
+     "instead: create_atoms random between runs (docs/lammps.md)"),
     ("kspace_style pppm 1e-4", "kspace_style: kspace_style is a LAMMPS command pdps does not support; "
      "instead: pdps has no long-range electrostatics (docs/lammps.md)"),
     ("fix 2 all multicontact/halfspace", "fix: fix style multicontact/halfspace is a LIGGGHTS style pdps does not "

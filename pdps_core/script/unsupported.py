@@ -54,7 +54,6 @@ STYLE_ALTERNATIVES = {
     ("fix", "shake"): "pdps has no constraints",
     ("fix", "rattle"): "pdps has no constraints",
     ("fix", "deposit"): "create_atoms random between runs",
-    ("fix", "pour"): "create_atoms random between runs",
     ("compute", "temp/com"): "compute temp (pdps removes no centre-of-mass bias)",
     ("compute", "rdf/atom"): "compute rdf",
     ("dump", "xyz"): "dump custom with id type x y z",
