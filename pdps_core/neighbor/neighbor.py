@@ -382,7 +382,7 @@ class Neighbor:
         return (len(tag) == n and len(self.xhold) == n and np.array_equal(particles.tag[:n], tag)
                 and np.array_equal(particles.x[:n], x))
 
-    def can_resume(self, particles, box, comm):
+    def can_resume(self, particles, box, comm, wrap=False):
         """Called at the start of a run, after the styles made their requests: True when the lists of
         the last build are still right (same particles, positions, box, skin and cutoffs), so the run
         continues the schedule instead of starting afresh. Answers once per mark; all ranks agree."""
@@ -396,12 +396,14 @@ class Neighbor:
                     and all(kind == r.kind and np.array_equal(cutoff, r.cutoff)
                             for (kind, cutoff), r in zip(lists, self.requests)))
         if same:
-            # a run's setup drops what crossed a fixed face since the last build and wraps what
-            # crossed a periodic one, as LAMMPS's does: region tests and positions read after it see
-            # the wrapped positions (a temp/region compute, fix ave/spatial bins)
+            # a run's setup drops what crossed a fixed face since the last build, as LAMMPS's does;
+            # with ``wrap`` (the LAMMPS dialect) it also wraps what crossed a periodic one, as
+            # LAMMPS's setup does, so that region tests and positions read after it see the wrapped
+            # positions (a temp/region compute); without, split runs go on as one run to the last bit
             x = particles.x[:particles.nlocal]
             for d in range(3):
-                if len(x) and (x[:, d].min() < box.lo[d] or x[:, d].max() >= box.hi[d]):
+                if (wrap or not box.periodic[d]) and len(x) and (x[:, d].min() < box.lo[d]
+                                                                 or x[:, d].max() >= box.hi[d]):
                     same = False
         return bool(comm.min(int(same)))
 

@@ -140,7 +140,7 @@ class Verlet:
         limits.check_ghosts(sim.box, sim.neighbor.ghost_cutoff(), int(sim.comm.sum(particles.nlocal)))
         # a shrink-wrapped box is fitted to the particles at every run's start, as LAMMPS's is
         resume = not sim.system.shrink_faces and not sim.dialect.rebuild_at_setup
-        if resume and sim.neighbor.can_resume(particles, sim.box, sim.comm):
+        if resume and sim.neighbor.can_resume(particles, sim.box, sim.comm, wrap=sim.dialect.wrap_at_setup):
             self._resume_lists()
         else:
             shrink_wrap(sim)

@@ -69,6 +69,10 @@ class Dialect:
     # going on with the last build's (Neighbor.can_resume): LIGGGHTS keeps the spring of a contact
     # that came apart until the list is next built, so when the lists are built is physics there
     rebuild_at_setup: bool = False
+    # a run's setup wraps particles that crossed a periodic face since the last build, as LAMMPS's
+    # setup does (region tests at a run's start see the wrapped positions); PDPS goes on with the
+    # last build, so that run N + run M is run N+M to the last bit
+    wrap_at_setup: bool = False
     # fix print prints at a run's first step when it is a multiple of N (LAMMPS since 2014); LIGGGHTS
     # 3.8.0's prints at the end of steps only (measured)
     print_at_setup: bool = True
@@ -95,7 +99,7 @@ DIALECTS = {
     "pdps": Dialect("pdps", "PDPS", index_base=0, region_units="box", velocity_units="box",
                     velocity_numbers="counter", thermo_default=("step", "temp", "pe", "ke", "etotal", "press")),
     "lammps": Dialect("lammps", "LAMMPS", index_base=1, region_units="lattice", velocity_units="lattice",
-                      velocity_numbers="park", volume_2d="sphere", restart_styles=False),
+                      velocity_numbers="park", volume_2d="sphere", restart_styles=False, wrap_at_setup=True),
     # LIGGGHTS is a LAMMPS fork: LAMMPS's meaning wherever the two share a command, but for these
     "liggghts": Dialect("liggghts", "LIGGGHTS", index_base=1, region_units="box", velocity_units="box",
                         velocity_numbers="park", set_diameter_keeps="density", restart_styles=False,
