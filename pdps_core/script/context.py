@@ -173,10 +173,23 @@ class FormulaContext:
         return AXES[words[0]]
 
     # ---- special functions ---------------------------------------------------------------------------
-    def vector_reduce(self, name, prefix, ident):
+    def vector_reduce(self, name, prefix, ident, column=None):
+        """sum(), min(), max(), ave(), trap(), slope() of a global vector (c_ID, f_ID, v_NAME), or of
+        one column of a global array (c_ID[i], f_ID[i], i counted as the dialect counts)."""
         sim = self.sim
         if prefix == "v":
             values = np.asarray(sim.variables.vector(ident), dtype=np.float64)
+        elif column is not None:
+            style = self._style(prefix, ident)
+            method = getattr(style, "array", None)
+            shown = f"{prefix}_{ident}[{column}]"
+            if method is None:
+                raise ScriptError(f"{name}({shown}): {style.kind} {ident} has no global array")
+            table = np.asarray(method(sim), dtype=np.float64)
+            k = sim.dialect_index(column, shown)
+            if table.ndim != 2 or not 0 <= k < table.shape[1]:
+                raise ScriptError(f"{name}({shown}): {style.kind} {ident}'s array has {np.shape(table)} values")
+            values = table[:, k]
         else:
             style = self._style(prefix, ident)
             method = getattr(style, "vector", None)

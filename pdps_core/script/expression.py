@@ -202,7 +202,14 @@ class Expression:
         while True:
             start = self._at
             token = self._peek()
-            args.append((self._expression(), token[1] if self._at == start + 1 and token[0] == "name" else None))
+            closure = self._expression()
+            taken = self._tokens[start:self._at]
+            # the argument's text where it is one reference: NAME, or NAME[N] (a column of an array)
+            word = token[1] if len(taken) == 1 and token[0] == "name" else None
+            if (len(taken) == 4 and token[0] == "name" and taken[1] == ("op", "[") and taken[2][0] == "number"
+                    and taken[3] == ("op", "]")):
+                word = f"{token[1]}[{taken[2][1]}]"
+            args.append((closure, word))
             kind, value = self._take()
             if (kind, value) == ("op", ")"):
                 self._depth -= 1
@@ -377,9 +384,11 @@ class Expression:
     def _reference_word(self, arg, name):
         # sum(c_ID) and the like take a reference, not a value: re-read it from the source text
         closure, word = arg
-        if word is None or word[:2] not in ("c_", "f_", "v_"):
-            self._fail(f"{name}() takes a compute, fix or vector-variable reference (c_ID, f_ID, v_NAME)")
-        return word[0], word[2:]
+        if word is None or word[:2] not in ("c_", "f_", "v_") or (word.endswith("]") and word[0] == "v"):
+            self._fail(f"{name}() takes a compute, fix or vector-variable reference (c_ID, f_ID, c_ID[i], f_ID[i], "
+                       "v_NAME)")
+        ident, _, column = word[2:].partition("[")
+        return word[0], ident, int(column[:-1]) if column else None
 
 
 class _Chain:

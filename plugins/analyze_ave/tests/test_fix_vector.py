@@ -73,3 +73,45 @@ SETUP = "dialect lammps\n" + FIX_VECTOR.split("fix 9")[0]
 ])
 def test_bad_vectors_are_refused(line, message):
     assert str(script_error(SETUP, line)) == message
+
+
+# trap() and sum() of one column of a global array (fix ave/correlate's), f_ID[i] with i from 1 as in
+# LAMMPS's VISCOSITY/in.gk.2d: LAMMPS 22 Jul 2025's thermo for ARRAY_COLUMN, recorded here
+ARRAY_COLUMN = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_coeff 1 1 1.0 1.0 2.5
+fix 1 all nve
+variable pxy equal pxy
+variable pxz equal pxz
+fix SS all ave/correlate 1 10 50 v_pxy v_pxz type auto ave running
+variable t3 equal trap(f_SS[3])
+variable t4 equal trap(f_SS[4])
+variable s2 equal sum(f_SS[2])
+thermo_style custom step temp press v_t3 v_t4 v_s2
+thermo 50
+run 200
+"""
+ARRAY_COLUMN_LAMMPS = [
+    [0, 1.5, -4.9739638, 0.0020464704, 0.00034919745, 1],
+    [50, 0.73570063, 0.73267385, 0.32740632, 0.12719806, 465],
+    [100, 0.75591871, 0.55560942, 0.3572215, 0.71486064, 965],
+    [150, 0.81591063, 0.18402571, 0.32777378, 1.2009902, 1465],
+    [200, 0.75459308, 0.52830868, 0.27473244, 1.0071481, 1965],
+]
+
+
+def test_special_functions_read_a_column_of_an_array_as_lammps(tmp_path):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
+    sim.command(ARRAY_COLUMN)
+    sim.close()
+    rows = thermo_rows((tmp_path / "log.case").read_text())
+    assert len(rows) == len(ARRAY_COLUMN_LAMMPS)
+    for got, want in zip(rows, ARRAY_COLUMN_LAMMPS):
+        assert got == pytest.approx(want, rel=2e-8, abs=1e-20), want[0]
