@@ -434,10 +434,11 @@ def per_step(run):
 def table(results):
     lines = ["| example | LAMMPS | pdps runs unmodified | agrees | how compared | time a step, LAMMPS / pdps |",
              "|---|---|---|---|---|---|"]
-    counted = ran = agreed = 0
+    counted = ran = agreed = pending = 0
     for script in FIELD:
         entry = results["scripts"].get(script)
         if entry is None:
+            pending += 1
             lines.append(f"| {script} | not run yet | | | | |")
             continue
         reference, mine = entry["reference"], entry["pdps"]
@@ -459,7 +460,8 @@ def table(results):
     lines.append("")
     lines.append(f"{ran} of the {counted} examples LAMMPS runs run unmodified in pdps; {agreed} agree "
                  f"({results['date']}, runs cut to {results['steps']} steps, {results['reference_seeds']} LAMMPS "
-                 f"seed sets, {results['pdps_seeds']} of pdps's).")
+                 f"seed sets, {results['pdps_seeds']} of pdps's)" + (f"; {pending} of the {len(FIELD)} not run yet." if pending
+                                                                  else "."))
     lines.append("")
     lines.append("Out of the field, by folder of LAMMPS's examples:")
     lines.append("")
