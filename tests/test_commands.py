@@ -441,7 +441,7 @@ class TestReadData:
         exc = fails(sim, "read_data missing.data", "read_data")
         assert exc.message.startswith("cannot read data file ")
         assert exc.message.endswith("missing.data: No such file or directory")
-        fails(sim, "read_data", "read_data", "expected 1 argument(s), got 0; usage: read_data FILE")
+        fails(sim, "read_data", "read_data", "expected a file; usage: read_data FILE [fix ID NULL SECTION ...]")
         (tmp_path / "in.data").write_text(DATA)
         fails(sim, box() + "read_data in.data", "read_data", "read_data needs no box to exist yet (it creates it)")
 
