@@ -115,21 +115,26 @@ def with_seeds(text, k):
     return SEED.sub(lambda match: match.group(1) + new[match.group(2)], text)
 
 
+def unpacked(package, target):
+    """Debian's ``package`` unpacked into ``target`` (``apt-get download``, an ``apt-get update``
+    first when the list has not got it)."""
+    target.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as folder:
+        fetched = subprocess.run(["apt-get", "download", package], cwd=folder, capture_output=True, text=True)
+        if fetched.returncode != 0:
+            subprocess.run(["apt-get", "update", "-qq"], check=True)
+            subprocess.run(["apt-get", "download", package], cwd=folder, check=True)
+        deb = next(Path(folder).glob(f"{package}_*.deb"))
+        subprocess.run(["dpkg-deb", "-x", str(deb), str(target)], check=True)
+
+
 def doc_folder(given):
     """The unpacked tutorials: ``given``, or build/corpus/liggghts-doc, fetched when missing."""
     if given is not None:
         return Path(given)
     target = BUILD / "liggghts-doc"
     if not (target / TUTORIALS).is_dir():
-        target.mkdir(parents=True, exist_ok=True)
-        with tempfile.TemporaryDirectory() as folder:
-            fetched = subprocess.run(["apt-get", "download", "liggghts-doc"], cwd=folder, capture_output=True,
-                                     text=True)
-            if fetched.returncode != 0:
-                subprocess.run(["apt-get", "update", "-qq"], check=True)
-                subprocess.run(["apt-get", "download", "liggghts-doc"], cwd=folder, check=True)
-            package = next(Path(folder).glob("liggghts-doc_*.deb"))
-            subprocess.run(["dpkg-deb", "-x", str(package), str(target)], check=True)
+        unpacked("liggghts-doc", target)
     return target / TUTORIALS
 
 

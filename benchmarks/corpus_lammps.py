@@ -56,14 +56,13 @@ import shutil
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
 from corpus import (BEGIN, BUILD, END, P_VALUE, PDPS_FIRST_SEED, REFERENCE, ROUNDOFF, largest_t, loop_time,
-                    resolution, seed_set, why_failed)
+                    resolution, seed_set, unpacked, why_failed)
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -202,15 +201,7 @@ def examples_folder(given):
         return Path(given)
     target = BUILD / "lammps-examples"
     if not (target / EXAMPLES).is_dir():
-        target.mkdir(parents=True, exist_ok=True)
-        with tempfile.TemporaryDirectory() as folder:
-            fetched = subprocess.run(["apt-get", "download", "lammps-examples"], cwd=folder, capture_output=True,
-                                     text=True)
-            if fetched.returncode != 0:
-                subprocess.run(["apt-get", "update", "-qq"], check=True)
-                subprocess.run(["apt-get", "download", "lammps-examples"], cwd=folder, check=True)
-            package = next(Path(folder).glob("lammps-examples_*.deb"))
-            subprocess.run(["dpkg-deb", "-x", str(package), str(target)], check=True)
+        unpacked("lammps-examples", target)
     return target / EXAMPLES
 
 
