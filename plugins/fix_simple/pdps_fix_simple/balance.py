@@ -12,11 +12,18 @@ NFREQ the steps between balancings (0: only at the start of a run), THRESH the i
 (>= 1) beyond which LAMMPS balances; the keywords (``weight``, ``out``) are LAMMPS's. ``out FILE``,
 which writes LAMMPS's sub-domain boxes, is refused: pdps has none to write.
 
+Outputs, LAMMPS's: ``f_ID`` the imbalance factor (the most particles a rank holds over the mean per
+rank), ``f_ID[1]`` the most particles a rank holds, ``f_ID[2]`` the iterations of the last
+balancing (0: pdps never moves its bricks), ``f_ID[3]`` the imbalance factor before it. pdps reports
+its own grid's numbers, so before and after are equal. On one rank they are LAMMPS's: N, 0, 1 and 1.
+
 Example::
 
     comm_style tiled
     fix 10 all balance 50 0.9 rcb
 """
+
+import numpy as np
 
 from pdps_core.api import Fix, ScriptError, StyleArgs, param
 
@@ -44,3 +51,16 @@ class FixBalance(Fix):
         if sim.comm.nprocs > 1:
             sim.warn(f"fix {id} balance: pdps keeps its regular processor grid; balancing would move work "
                      "between ranks, not change a number")
+
+    def _imbalance(self, sim):
+        most = sim.comm.max(sim.nlocal)
+        total = sim.comm.sum(sim.nlocal)
+        return most * sim.comm.nprocs / total if total else 1.0
+
+    def scalar(self, sim):
+        """The imbalance factor: the most particles on a rank over the mean per rank."""
+        return float(self._imbalance(sim))
+
+    def vector(self, sim):
+        """The most particles on a rank, the last balancing's iterations (0), the imbalance before it."""
+        return np.array([float(sim.comm.max(sim.nlocal)), 0.0, self._imbalance(sim)])

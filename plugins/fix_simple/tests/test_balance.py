@@ -73,3 +73,45 @@ SETUP = "dialect lammps\n" + BALANCE.split("comm_style")[0]
 ])
 def test_bad_balancing_is_refused(line, message):
     assert str(script_error(SETUP, line)) == message
+
+
+OUTPUTS = """units lj
+dimension 2
+atom_style atomic
+boundary f f p
+lattice hex 0.85
+region box block 0 20 0 10 -0.5 0.5
+create_box 1 box
+region circle sphere 6 4 0.0 4
+create_atoms 1 region circle
+mass 1 1.0
+velocity all create 0.5 87287 loop geom
+velocity all set 5 2 0 sum yes
+pair_style lj/cut 2.5
+pair_coeff 1 1 10.0 1.0 2.5
+fix 1 all nve
+fix 2 all wall/lj93 xlo 0.0 1 1 2.5 xhi 20 1 1 2.5
+fix 3 all wall/lj93 ylo 0.0 1 1 2.5 yhi 10 1 1 2.5
+comm_style tiled
+fix 10 all balance 50 0.9 rcb
+thermo_style custom step temp epair press f_10[1] f_10[2] f_10[3] f_10 atoms
+thermo 100
+run 300
+"""
+# LAMMPS 22 Jul 2025 on one rank: the most particles a rank holds, iterations, imbalance before and after
+OUTPUTS_LAMMPS = [
+    [0, 26.072625, -26.08571, -0.51470668, 58, 0, 1, 1, 58],
+    [100, 26.037246, -26.051425, 0.5803223, 58, 0, 1, 1, 58],
+    [200, 25.966618, -25.981426, 0.42574508, 58, 0, 1, 1, 58],
+    [300, 26.011219, -26.022754, 0.72222753, 58, 0, 1, 1, 58],
+]
+
+
+def test_fix_balance_outputs_are_lammps_on_one_rank(tmp_path):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
+    sim.command(OUTPUTS)
+    sim.close()
+    rows = thermo_rows((tmp_path / "log.case").read_text())
+    assert len(rows) == len(OUTPUTS_LAMMPS)
+    for got, want in zip(rows, OUTPUTS_LAMMPS):
+        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
