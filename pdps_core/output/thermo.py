@@ -454,7 +454,9 @@ class Thermo:
                 value = read(ident, indices)
                 style = self.sim.styles.find_compute(ident) if word[0] == "c" else self.sim.fixes.get(ident)
                 extensive = getattr(style, "extensive", False)
-                if len(indices) == 2:
+                if len(indices) == 1:
+                    extensive = getattr(style, "extensive_vector", extensive)
+                elif len(indices) == 2:
                     extensive = getattr(style, "extensive_array", extensive)
                 if extensive:
                     value /= _normalise(self.sim)
