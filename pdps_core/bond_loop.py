@@ -22,9 +22,10 @@ from numba import njit
 LOOP = '''
 
 @njit(cache=True)
-def bond_loop(x, f, bonds, owned, coeff, tally, virial):
+def bond_loop(x, f, bonds, owned, coeff, tally, virial, stretch, stretched):
     """Forces of the bonds whose type ``owned`` marks; with ``tally``, their energy (returned) and
-    virial (added to ``virial``, 6)."""
+    virial (added to ``virial``, 6). Bonds with r^2 beyond their type's ``stretch[t, 0]`` are counted
+    in ``stretched[0]``, beyond ``stretch[t, 1]`` in ``stretched[1]`` (the last such in ``stretched[2]``)."""
     energy = 0.0
     for b in range(bonds.shape[0]):
         t = bonds[b, 2]
@@ -36,6 +37,11 @@ def bond_loop(x, f, bonds, owned, coeff, tally, virial):
         dy = x[i, 1] - x[j, 1]
         dz = x[i, 2] - x[j, 2]
         rsq = dx * dx + dy * dy + dz * dz
+        if rsq > stretch[t, 0]:
+            stretched[0] += 1
+            if rsq > stretch[t, 1]:
+                stretched[1] += 1
+                stretched[2] = b
         fbond, e = law(rsq, ({values}))
         f[i, 0] += dx * fbond
         f[i, 1] += dy * fbond
@@ -61,6 +67,7 @@ def bond_single(rsq, coeff, t):
 '''
 
 _loaded = {}
+WARNINGS = 10   # stretched-bond warnings a style prints in a run before it falls silent
 
 
 def loop_for(style):
@@ -83,30 +90,54 @@ class BondForces:
         ntypes = topology.nbondtypes
         self.parts = []
         self.virial = np.zeros(6)
+        self.stretched = np.zeros(3, dtype=np.int64)
+        self.warned = {}
         for style, types in sim.styles.bond.parts():
             missing = [t for t in types if t not in style.coeffs]
             if missing:
                 raise_missing(sim, missing[0])
             owned = np.zeros(ntypes + 1, dtype=np.bool_)
             coeff = np.zeros((ntypes + 1, max(len(style.params), 1)))
+            stretch = np.full((ntypes + 1, 2), np.inf)
             for t in types:
                 owned[t] = True
                 coeff[t, :len(style.params)] = style.values(style.coeffs[t])
+                stretch[t] = np.square(style.stretch_limits(style.coeffs[t]))
             loop, single = loop_for(style)
-            self.parts.append((style, owned, coeff, loop, single))
+            self.parts.append((style, owned, coeff, loop, single, stretch))
 
     def compute(self, sim, tally):
         p = sim.system.particles
         bonds = sim.system.topology.bonds()
         energy = 0.0
         self.virial[:] = 0.0
-        for _, owned, coeff, loop, _ in self.parts:
-            energy += loop(p.x, p.f, bonds, owned, coeff, tally, self.virial)
+        for style, owned, coeff, loop, _, stretch in self.parts:
+            self.stretched[:] = 0
+            energy += loop(p.x, p.f, bonds, owned, coeff, tally, self.virial, stretch, self.stretched)
+            if self.stretched[0]:
+                self._stretched(sim, style, bonds)
         return energy
+
+    def _stretched(self, sim, style, bonds):
+        """Bonds beyond their style's warning length are warned of (the first WARNINGS times), beyond
+        its failure length stop the run: LAMMPS's "FENE bond too long" and "Bad FENE bond"."""
+        p = sim.system.particles
+        if self.stretched[1]:
+            from .errors import SimulationError
+            i, j = bonds[self.stretched[2], 0], bonds[self.stretched[2], 1]
+            r = float(np.linalg.norm(p.x[i] - p.x[j]))
+            raise SimulationError(f"bond style {style.name}: the bond of particles {int(p.tag[i])} and {int(p.tag[j])} "
+                                  f"is {r:g} long at step {sim.step}, beyond {style.stretch_failure}")
+        told = self.warned.get(style.name, 0)
+        if told < WARNINGS:
+            more = "; further such warnings are left out" if told == WARNINGS - 1 else ""
+            sim.warn(f"bond style {style.name}: {int(self.stretched[0])} bonds longer than {style.stretch_warning} "
+                     f"at step {sim.step}{more}")
+            self.warned[style.name] = told + 1
 
     def single(self, bond_type, rsq):
         """(fbond, energy) of one bond of this type at r^2 = rsq; (0, 0) for a type no style computes."""
-        for _, owned, coeff, _, single in self.parts:
+        for _, owned, coeff, _, single, _ in self.parts:
             if owned[bond_type]:
                 return single(rsq, coeff, bond_type)
         return 0.0, 0.0

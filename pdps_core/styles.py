@@ -1020,6 +1020,15 @@ class Bond(Style):
         """r0 of one bond type (LAMMPS's Bond::equilibrium_distance), or None."""
         return getattr(coeff, "r0", None)
 
+    # a law defined only up to some length (fene) gives the lengths (distance) of one type beyond
+    # which the core warns, and stops the run, saying what they are in these words
+    stretch_warning: ClassVar[str] = ""
+    stretch_failure: ClassVar[str] = ""
+
+    def stretch_limits(self, coeff):
+        """(warning length, failure length) of one bond type; inf for a law defined at every length."""
+        return math.inf, math.inf
+
 
 class Fix(Style):
     """A fix: joins the timestep through hooks. Define any of the methods named in
