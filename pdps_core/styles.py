@@ -29,7 +29,7 @@ from packaging.version import Version
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, field_validator
 from pydantic_core import PydanticCustomError, core_schema
 
-from .errors import ScriptError
+from .errors import ScriptError, SimulationError
 from .state import limits
 
 KINDS = ("pair", "bond", "fix", "compute", "analyze", "dump", "region")
@@ -919,6 +919,31 @@ class PairLaw(Pair):
     def law_state(self, sim):
         """Per-step scalars the law reads (seed, step, 1/sqrt(dt), ...), as a tuple."""
         return ()
+
+    # the coefficients fix adapt pair may change in a run: LAMMPS's names (Pair::extract) -> Coeff field
+    adaptable: ClassVar[dict] = {}
+
+    def adapt(self, changes):
+        """fix adapt pair: ``changes`` maps type pairs (i, j), i <= j, to {Coeff field: value} for the
+        rest of the run; the law's values follow, and mixed pairs are mixed afresh from their i i and
+        j j (LAMMPS's Pair::reinit). A change that would move a cutoff is an error: the neighbor
+        lists were built for the run's cutoffs."""
+        if self.tail:
+            raise SimulationError(f"fix adapt pair {self.name}: with pair_modify tail yes the tail corrections "
+                                  "would have to follow the coefficients, which pdps does not do")
+        for pair, fields in changes.items():
+            if pair in self.resolved:
+                self.resolved[pair] = self.resolved[pair].model_copy(update=fields)
+        rule = self.mix_rule or self.mix_default
+        for (i, j) in self.resolved:
+            if i != j and (i, j) not in self.coeffs:
+                self.resolved[(i, j)] = self.mix_coeff(self.resolved[(i, i)], self.resolved[(j, j)], rule)
+        for (i, j) in self.resolved:
+            cutoff, values = self.init_one(i, j)
+            if not math.isclose(cutoff * cutoff, self.cutsq[i, j], rel_tol=1e-12):
+                raise SimulationError(f"fix adapt pair {self.name}: types {i} {j} would change their cutoff "
+                                      f"({math.sqrt(self.cutsq[i, j]):g} to {cutoff:g}) in a run")
+            self.coeff_table[i, j, :len(values)] = self.coeff_table[j, i, :len(values)] = values
 
     def force_law(self):
         """The law to compile for this run (default ``law``); a style with variants (dpd without its

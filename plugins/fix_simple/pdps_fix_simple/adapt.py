@@ -1,10 +1,11 @@
-r"""Fix ``adapt``: particle diameters (or charges) set from a variable during a run, every N steps
-(LAMMPS's and LIGGGHTS's fix adapt, ``atom`` attributes).
+r"""Fix ``adapt``: particle diameters (or charges), or pair coefficients, set from a variable during a
+run, every N steps (LAMMPS's and LIGGGHTS's fix adapt).
 
 Syntax::
 
     fix ID GROUP adapt N atom diameter|charge v_NAME [atom ... v_NAME ...] [scale yes|no] [reset yes|no]
         [mass yes|no]
+    fix ID GROUP adapt N pair PSTYLE PARAM I J v_NAME [pair ...] [scale yes|no] [reset yes|no]
 
 At the start of every run (LAMMPS's setup_pre_force) and then on every step that is a multiple of
 N (none with N = 0), before the forces, each particle of the group takes the variable's value:
@@ -28,18 +29,29 @@ LIGGGHTS 3.8.0 and LAMMPS 22 Jul 2025, plugins/fix_simple/tests/test_adapt.py):
   multiplies each particle's value into the next particle's (fix_adapt.cpp), so its numbers depend
   on the particle order.
 
+``pair PSTYLE PARAM I J v_NAME`` (LAMMPS's dialect): the coefficient PARAM (the name LAMMPS's
+style gives it: ``a`` of soft, ``epsilon`` and ``sigma`` of lj/cut; ``pdps doc pair STYLE``) of the
+type pairs I J (``*``, ``2*``, ... ranges, i <= j) of pair style PSTYLE (the pair style, or a
+sub-style of hybrid) takes the equal-style variable's value, or with ``scale yes`` that value times
+the coefficient the run began with; a pair whose coefficients were mixed is mixed afresh from its
+adapted i i and j j, as LAMMPS's Pair::reinit; with ``reset no`` (the default) the values of the
+run's end stay for the next run, with ``reset yes`` the pair_coeff values come back. A change of a
+cutoff in a run is an error (the neighbor lists were built for the run's cutoffs).
+
 Radii that change in a run: the neighbor lists count radius growth as a move and the granular
 pair's cutoffs grow with the radii (the core's rule for ``Fix.varies_radius``); ghosts take the new
 radii and masses at once. An adaptation growing a radius by more than half the neighbor skin in
 one go is warned about: contacts can be missed until the next rebuild (as in both programs, which
-change radii after the step's neighbor decision). ``pair``, ``kspace`` and ``bond`` settings are
-refused.
+change radii after the step's neighbor decision). ``kspace`` and ``bond`` settings are refused.
 
-Example (LIGGGHTS's packing tutorial)::
+Examples (LIGGGHTS's packing tutorial; LAMMPS's micelle push-off)::
 
     compute rad all property/atom radius
     variable dgrown atom ${Rgrowrate}*2.*c_rad
     fix grow all adapt 40 atom diameter v_dgrown
+
+    variable prefactor equal ramp(1.0,20.0)
+    fix 3 all adapt 1 pair soft a * * v_prefactor
 """
 
 import math
@@ -47,7 +59,7 @@ from typing import Literal
 
 import numpy as np
 
-from pdps_core.api import Fix, ScriptError, SimulationError, StyleArgs, Variable, keyword, param
+from pdps_core.api import Fix, ScriptError, SimulationError, StyleArgs, Variable, keyword, param, type_range
 
 FOUR_THIRDS_PI = 4.0 * math.pi / 3.0
 Setting = (tuple[Literal["atom"], Literal["diameter", "diameter/disc", "charge"], Variable]
@@ -75,10 +87,12 @@ class FixAdapt(Fix):
         if not args.settings:
             raise ScriptError("fix adapt needs an attribute to change: atom diameter v_NAME or atom charge v_NAME")
         for setting in args.settings:
-            if setting[0] != "atom":
+            if setting[0] not in ("atom", "pair") or (setting[0] == "pair" and self.rule != "lammps"):
                 raise ScriptError(f"fix adapt {setting[0]} (a {setting[0]} coefficient changed in time) is not in "
-                                  "pdps: set the coefficient between runs instead")
-        self.attributes = [(attribute, variable) for _, attribute, variable in args.settings]
+                                  f"pdps{' for ' + sim.dialect.label if setting[0] == 'pair' else ''}: set the "
+                                  "coefficient between runs instead")
+        self.attributes = [(setting[1], setting[2]) for setting in args.settings if setting[0] == "atom"]
+        self.pair_settings = [self.pair_setting(sim, *setting[1:]) for setting in args.settings if setting[0] == "pair"]
         names = [attribute for attribute, _ in self.attributes]
         diameters = [a for a in names if a.startswith("diameter")]
         if diameters and "sphere" not in sim.particle_styles:
@@ -110,7 +124,45 @@ class FixAdapt(Fix):
                 p.arrays[name][:p.nlocal][chosen] = p.arrays[column][:p.nlocal][chosen]
                 self.originals[attribute] = (column, name)
 
+    def pair_setting(self, sim, style_name, param_name, itypes, jtypes, variable):
+        """(style name, Coeff field, type pairs i <= j, variable) of one ``pair`` setting."""
+        style = self.pair_style(sim, style_name)
+        if param_name not in style.adaptable:
+            known = ", ".join(style.adaptable) or "none"
+            raise ScriptError(f"fix adapt pair {style_name}: {param_name} is not a coefficient fix adapt can change "
+                              f"(it can: {known})")
+        ntypes = sim.ntypes
+        ilo, ihi = type_range(itypes, ntypes)
+        jlo, jhi = type_range(jtypes, ntypes)
+        pairs = [(i, j) for i in range(ilo, ihi + 1) for j in range(max(jlo, i), jhi + 1)]
+        return style_name, style.adaptable[param_name], pairs, variable
+
+    def pair_style(self, sim, name):
+        pair = sim.pair
+        if pair is None:
+            raise ScriptError(f"fix adapt pair {name}: there is no pair style")
+        if pair.name == name:
+            style = pair
+        else:
+            style = getattr(pair, "substyles", {}).get(name)
+        if style is None:
+            raise ScriptError(f"fix adapt pair {name}: the pair style is {pair.name}, not {name}")
+        return style
+
     def init_run(self, sim):
+        self.began = {}     # (style, pair) -> {field: the run's first value} (scale yes)
+        for style_name, field, pairs, variable in self.pair_settings:
+            style = self.pair_style(sim, style_name)
+            for pair in pairs:
+                if pair not in style.resolved:
+                    raise ScriptError(f"fix {self.id} (adapt): pair style {style_name} does not act on types "
+                                      f"{pair[0]} {pair[1]}")
+                self.began.setdefault((style_name, pair), {})[field] = getattr(style.resolved[pair], field)
+        for _, _, _, variable in self.pair_settings:
+            style = sim.variables.style(variable.name)
+            if style not in ("equal", "internal"):
+                raise ScriptError(f"fix {self.id} (adapt): variable {variable.name} is {style}-style; fix adapt pair "
+                                  "takes equal-style variables")
         for attribute, variable in self.attributes:
             style = sim.variables.style(variable.name)
             allowed = ("equal", "internal", "atom") if self.rule == "liggghts" else ("equal", "internal")
@@ -126,7 +178,20 @@ class FixAdapt(Fix):
 
     def pre_force(self, sim):
         if sim.in_setup or (self.args.every and sim.step % self.args.every == 0):
-            self.change(sim)
+            if self.attributes:
+                self.change(sim)
+            if self.pair_settings:
+                self.change_pairs(sim)
+
+    def change_pairs(self, sim):
+        changes = {}
+        for style_name, field, pairs, variable in self.pair_settings:
+            value = float(sim.variables.value(variable.name))
+            for pair in pairs:
+                new = value * self.began[(style_name, pair)][field] if self.scale else value
+                changes.setdefault(style_name, {}).setdefault(pair, {})[field] = new
+        for style_name, style_changes in changes.items():
+            self.pair_style(sim, style_name).adapt(style_changes)
 
     def change(self, sim):
         p = sim.particles
@@ -204,7 +269,14 @@ class FixAdapt(Fix):
         radius[chosen] = new
 
     def post_run(self, sim):
-        """LAMMPS's reset yes: the values the particles had when the fix was made."""
+        """LAMMPS's reset yes: the values the particles had when the fix was made; reset no keeps the
+        adapted pair coefficients for the runs that follow (they become the pair_coeff values)."""
+        if self.pair_settings and self.args.reset != "yes":
+            for style_name, field, pairs, _ in self.pair_settings:
+                style = self.pair_style(sim, style_name)
+                for pair in pairs:
+                    if pair in style.coeffs:
+                        style.coeffs[pair] = style.coeffs[pair].model_copy(update={field: getattr(style.resolved[pair], field)})
         p = sim.particles
         n = p.nlocal
         chosen = sim.groups.select(sim, self.group)

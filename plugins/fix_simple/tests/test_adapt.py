@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import thermo_rows
 
 LAMMPS_SCENE = """
 units lj
@@ -162,7 +163,14 @@ def test_growing_spheres_find_every_contact(tmp_path, monkeypatch):
      "fix a (adapt): scale yes with equal-style variable d: LIGGGHTS 3.8.0 multiplies each particle's value "
      "into the next one's, so its result depends on the particle order; use an atom-style variable (v x 2*c_rad)"),
     ("lammps", "variable d equal 1\nfix a all adapt 1 pair lj/cut epsilon 1 1 v_d",
-     "fix adapt pair (a pair coefficient changed in time) is not in pdps: set the coefficient between runs instead"),
+     "fix adapt pair lj/cut: the pair style is zero, not lj/cut"),
+    ("lammps", "variable d equal 1\npair_style soft 1.0\npair_coeff * * 1.0\nfix a all adapt 1 pair soft b 1 1 v_d",
+     "fix adapt pair soft: b is not a coefficient fix adapt can change (it can: a)"),
+    ("lammps", "variable d atom x\npair_style soft 1.0\npair_coeff * * 1.0\nfix a all adapt 1 pair soft a * * v_d\n"
+               "run 0", "fix a (adapt): variable d is atom-style; fix adapt pair takes equal-style variables"),
+    ("liggghts", "variable d equal 1\nfix a all adapt 1 pair gran kn 1 1 v_d",
+     "fix adapt pair (a pair coefficient changed in time) is not in pdps for LIGGGHTS: set the coefficient between "
+     "runs instead"),
     ("liggghts", "variable d equal 1\nfix a all adapt 1 atom diameter v_d mass no",
      "fix adapt mass is LAMMPS's keyword; LIGGGHTS always keeps the density"),
     ("lammps", "variable d equal 1\nfix a all adapt 1 atom diameter/disc v_d",
@@ -186,3 +194,92 @@ def test_a_diameter_that_is_not_positive_is_an_error(make_sim):
         sim.command(LAMMPS_SCENE.format(expr="1-step", every=1, keywords="", steps=3))
     assert "fix a (adapt) at step 1: particle 1 gets diameter 0; a diameter must be a finite number > 0" \
         in str(error.value)
+
+
+# fix adapt pair: LAMMPS 22 Jul 2025's thermo on this machine for PAIR_SOFT (an explicit pair ramped
+# every step, a diagonal one scaled every 5, reset no: the values stay for the next run) and PAIR_LJ
+# (epsilon of every pair, mixed ones too, scaled every 2 steps with reset yes; sigma ramped, reset no)
+PAIR_SOFT = """units lj
+atom_style atomic
+lattice fcc 0.9
+region box block 0 4 0 4 0 4
+create_box 2 box
+create_atoms 1 box
+region half block 0 2 INF INF INF INF
+set region half type 2
+mass * 1.0
+velocity all create 1.0 87287 loop geom
+pair_style soft 1.12246
+pair_coeff 1 1 1.0
+pair_coeff 2 2 2.0
+pair_coeff 1 2 0.5 1.0
+variable prefactor equal ramp(1.0,20.0)
+fix 1 all nve
+fix 3 all adapt 1 pair soft a 1 2 v_prefactor
+fix 4 all adapt 5 pair soft a 2 2 v_prefactor scale yes
+thermo_style custom step temp pe press v_prefactor
+thermo 20
+run 100
+unfix 3
+unfix 4
+run 20
+"""
+PAIR_SOFT_LAMMPS = [
+    [0, 1, 0, 0.89648438, 1],
+    [20, 0.78080599, 0.46801507, 2.9422226, 4.8],
+    [40, 0.69707895, 1.0653386, 5.3867587, 8.6],
+    [60, 0.8808257, 1.1423534, 6.2181527, 12.4],
+    [80, 1.0751548, 1.0855603, 6.6551012, 16.2],
+    [100, 1.281341, 0.93266661, 6.1417393, 20],
+    [100, 1.281341, 0.93266661, 6.1417393, 1],
+    [120, 1.2585258, 0.96733245, 5.6213161, 20],
+]
+PAIR_LJ = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 4 0 4 0 4
+create_box 2 box
+create_atoms 1 box
+region half block 0 2 INF INF INF INF
+set region half type 2
+mass * 1.0
+velocity all create 1.5 87287 loop geom
+pair_style lj/cut 2.5
+pair_modify shift yes
+pair_coeff 1 1 1.0 1.0
+pair_coeff 2 2 0.8 1.05
+variable eps equal 1.0+0.5*sin(2*PI*elapsed/60)
+variable sig equal ramp(1.0,0.95)
+fix 1 all nve
+fix 3 all adapt 2 pair lj/cut epsilon * * v_eps scale yes reset yes
+fix 4 all adapt 1 pair lj/cut sigma 1 1 v_sig
+thermo_style custom step temp pe press v_eps v_sig
+thermo 20
+run 100
+unfix 3
+unfix 4
+run 20
+"""
+PAIR_LJ_LAMMPS = [
+    [0, 1.5, -5.9256701, -2.916936, 1, 1],
+    [20, 0.64726867, -7.0779901, 1.2292975, 1.4330127, 0.99],
+    [40, 0.62372368, -2.7208149, 0.94089518, 0.5669873, 0.98],
+    [60, 0.57098772, -4.595335, 1.9583493, 1, 0.97],
+    [80, 0.8797208, -7.1134197, -0.15852162, 1.4330127, 0.96],
+    [100, 0.71786498, -2.6581939, 0.80077206, 0.5669873, 0.95],
+    [100, 0.71786498, -4.6882777, 0.95131243, 1, 1],
+    [120, 0.75036974, -4.7369289, 0.87943969, 1.4330127, 0.95],
+]
+
+
+@pytest.mark.parametrize("script, lammps", [(PAIR_SOFT, PAIR_SOFT_LAMMPS), (PAIR_LJ, PAIR_LJ_LAMMPS)],
+                         ids=["soft", "lj_cut"])
+def test_adapted_pair_coefficients_give_lammps_thermo(tmp_path, script, lammps):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
+    sim.command(script)
+    sim.close()
+    rows = thermo_rows((tmp_path / "log.case").read_text())
+    assert len(rows) == len(lammps)
+    for got, want in zip(rows, lammps):
+        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+

@@ -27,7 +27,8 @@ Unset i != j pairs are mixed from the i i and j j coefficients, geometrically by
 :math:`r_{c,ij} = \sqrt{r_{c,i} r_{c,j}}`); ``pair_modify mix arithmetic`` takes the arithmetic mean
 of sigma and the cutoff (Lorentz-Berthelot); ``pair_modify mix sixthpower`` LAMMPS's sixth-power rule
 (:math:`\varepsilon_{ij} = 2\sqrt{\varepsilon_i\varepsilon_j}\sigma_i^3\sigma_j^3/(\sigma_i^6+\sigma_j^6)`,
-:math:`\sigma_{ij} = ((\sigma_i^6+\sigma_j^6)/2)^{1/6}`, the cutoff alike).
+:math:`\sigma_{ij} = ((\sigma_i^6+\sigma_j^6)/2)^{1/6}`, the cutoff alike). ``fix adapt pair lj/cut
+epsilon|sigma I J v_NAME`` changes them in a run.
 
 Example (LAMMPS's ``in.lj`` melt)::
 
@@ -56,6 +57,7 @@ class PairLJCut(PairLaw):
     coeff_usage = "EPSILON SIGMA [RC]"
     mix_default = "geometric"
     params = ("lj1", "lj2", "lj3", "lj4", "offset")
+    adaptable = {"epsilon": "epsilon", "sigma": "sigma"}
     law = staticmethod(lj_law)
     masked = True       # a few multiplications: cheaper than a mispredicted cutoff branch
 

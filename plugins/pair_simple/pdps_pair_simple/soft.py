@@ -14,7 +14,8 @@ Parameters:
 
 Unset i != j pairs mix as LAMMPS: A = sqrt(A_i A_j), the cutoff by ``pair_modify mix`` (geometric by
 default). The energy is 0 at the cutoff, so ``pair_modify shift`` changes nothing. Coincident particles
-feel no force (sin 0 = 0). Example::
+feel no force (sin 0 = 0). ``fix adapt pair soft a I J v_NAME`` changes A in a run (LAMMPS's push-off
+ramp). Example::
 
     pair_style soft 1.12246
     pair_coeff * * 10.0
@@ -43,6 +44,7 @@ class PairSoft(PairLaw):
     mix_default = "geometric"
     params = ("prefactor", "pi_over_cut")
     law = staticmethod(soft_law)
+    adaptable = {"a": "prefactor"}
 
     class Args(StyleArgs):
         cutoff: float = param(gt=0, unit="distance")
