@@ -75,6 +75,7 @@ CONTRACT = {
         "create_bonds": "create_bonds(pairs, bond_type): new bonds between id pairs (k, 2), the same on every rank; special lists made again",
         "break_bonds": "break_bonds(pairs): delete the bonds between id pairs (k, 2), the same on every rank; special lists made again",
         "bond_single": "bond_single(type, rsq): (F/r, energy) of one bond of that type at r^2 = rsq under the run's bond styles",
+        "interaction_energy": "interaction_energy(): in a run, the pair and bond energy of the particles where they stand now (all ranks), forces recomputed into f (save and restore them)",
         "pair_list": "the pair style's neighbor list (NeighborList), once a run set it up",
         "fixes": "{id: fix} in script order",
         "substitute": "substitute(text): $x, ${name} and $(formula) replaced now (fix print)",

@@ -276,6 +276,29 @@ class Verlet:
         if run.tally_atom:
             run.tally_step = run.step
 
+    def interaction_energy(self):
+        """The pair and bond energy of the particles where they stand now, summed over ranks, with
+        the neighbor lists of the last build; the forces are computed afresh into f (the caller
+        keeps and restores the step's). No fix hook runs (LAMMPS's FixNumDiff::update_energy)."""
+        sim = self.sim
+        particles, run, pair = sim.system.particles, sim.run_state, sim.styles.pair
+        _clear(particles.arrays["f"])
+        # the step's own tallies (pair.energy, per-particle energies) stay as they were
+        tally_atom, run.tally_atom = run.tally_atom, False
+        energy = 0.0
+        try:
+            if pair is not None:
+                kept = pair.energy
+                pair.energy = 0.0
+                pair.compute(sim, sim.styles.pair_list, True, False)
+                energy += pair.energy
+                pair.energy = kept
+            if self.bond_forces is not None:
+                energy += self.bond_forces.compute(sim, True)
+        finally:
+            run.tally_atom = tally_atom
+        return float(sim.comm.sum(energy))
+
     def _bond_setup(self):
         """The bond loops of this run, or None where no bond is computed (no bonds, bond_style none);
         bonds with no bond style are ignored with LAMMPS's warning."""
