@@ -696,6 +696,10 @@ class Pair(Style):
     # rank (energy units), half of r_ij f_ij for each listed pair.
     virial = None
 
+    # may be a sub-style of pair hybrid: a force law (PairLaw), or a loop of its own over a half list
+    # that skips the type pairs of cutoff 0 (those ``init(ntypes, pairs)`` leaves to other sub-styles)
+    hybrid_sub_style: ClassVar[bool] = False
+
     def __init__(self, sim, args):
         self.sim = sim
         self.args = args
@@ -870,6 +874,7 @@ class PairLaw(Pair):
     pdps_core.neighbor): same forces, summed in another order.
     """
     peratom_tally = True
+    hybrid_sub_style = True
     params: ClassVar[tuple] = ()
     law_atom: ClassVar[tuple] = ()
     law: ClassVar = None            # the force law (a static numba function)

@@ -24,8 +24,9 @@ sub-style; the tail correction of a pair sums those of its sub-styles that have 
 
 The core builds one half neighbor list with, for each type pair, the largest cutoff among its
 sub-styles; each sub-style's loop sees only its own pairs (the others' cutoffs are 0). Sub-styles are
-force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, dpd, dpd/fdt, ...);
-a style with its own loop (the granular ones) is refused by name. A style may appear more than once,
+force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, dpd, dpd/fdt, ...)
+and the styles with a loop of their own that skips the type pairs left to others (``Pair.hybrid_sub_style``:
+dpd/ext, dpd/ext/tstat); the others (the granular ones) are refused by name. A style may appear more than once,
 each with its own settings (LAMMPS's); then pair_coeff names which, counted from 1:
 ``pair_coeff I J soft 2 COEFFS`` (``soft:2`` in what pdps prints). Example::
 
@@ -40,7 +41,7 @@ from typing import Annotated, NamedTuple
 
 import numpy as np
 
-from pdps_core.api import Pair, PairLaw, ScriptError, StyleArgs, StyleName, param, registry
+from pdps_core.api import Pair, ScriptError, StyleArgs, StyleName, param, registry
 
 
 class SubStyle(NamedTuple):
@@ -76,7 +77,7 @@ class PairHybrid(Pair):
         seen = {}
         for name, words in args.substyles:
             cls = registry.lookup("pair", name)
-            if not issubclass(cls, PairLaw) or cls.neighbor_list != "half" \
+            if not cls.hybrid_sub_style or cls.neighbor_list != "half" \
                     or "pairs" not in inspect.signature(cls.init).parameters:
                 raise ScriptError(f"pair style {name} cannot be a sub-style of {self.name}: it is not a force law "
                                   "over a half list")
