@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
+from pdps_core.testing import thermo_on_ranks
 
 # ---- chunk ids by hand ----------------------------------------------------------------------------
 
@@ -310,3 +311,11 @@ def test_bad_input_is_one_line(planes, line, message):
     with pytest.raises(ScriptError) as error:
         planes.command(line)
     assert str(error.value) == f"<command>:1: {message}"
+
+
+def test_profiles_on_two_ranks_are_those_of_one(tmp_path):
+    script = WALLS + ("thermo_style custom step c_c2 f_2[3][2] f_2[3][3] f_2[5][7] f_2[12][4] f_3[450][4]\n"
+                      "thermo 10\nrun 40\n")
+    one, two = thermo_on_ranks(script, tmp_path)
+    assert one.shape == (5, 7) and np.all(one[1:, 2:6] != 0)
+    np.testing.assert_allclose(two, one, rtol=1e-12, atol=1e-12)

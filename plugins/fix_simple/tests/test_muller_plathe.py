@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError
-from pdps_core.testing import assert_thermo_as_lammps, lammps_thermo
+from pdps_core.testing import assert_thermo_as_lammps, lammps_thermo, thermo_on_ranks
 
 SCENE = """
 units lj
@@ -162,3 +162,10 @@ def test_bad_input_is_one_line(make_sim, line, message):
     with pytest.raises(ScriptError) as error:
         sim.command(line)
     assert str(error.value) == f"<command>:1: {message}"
+
+
+def test_swaps_across_ranks_are_those_of_one(tmp_path):
+    """On 2 ranks the two slabs lie on different ranks: the same particles swap, the same f_ID."""
+    one, two = thermo_on_ranks(FLUID, tmp_path)
+    assert one.shape == (11, 6) and one[-1, 4] != 0 and one[-1, 5] != 0
+    np.testing.assert_allclose(two, one, rtol=1e-11, atol=1e-12)
