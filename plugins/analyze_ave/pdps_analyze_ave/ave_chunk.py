@@ -136,6 +136,14 @@ class FixAveChunk(WindowCombination, Fix):
         self.schedule = Schedule(args.nevery, args.nrepeat, args.nfreq, sim.step)
         # the chunks stay as set up for a window of several samples, and for good under ave running|window
         self.holds = args.nrepeat > 1 or args.ave[0] != "one"
+        if self.holds:
+            way = (args.nevery, args.nrepeat, args.nfreq, args.ave[0])
+            other = next((fix for fix, held in chunk.holders.items() if held != way and fix != id), None)
+            if other is not None:
+                raise ScriptError(f"fix {id} ave/chunk: compute {args.chunk} is held by fix {other} over other "
+                                  "windows (LAMMPS: \"Two fix commands using same compute chunk/atom command in "
+                                  "incompatible ways\"); give each its own compute chunk/atom")
+            chunk.holders[id] = way
         self.average = None
         self.windows, self.combined = [], 0
         self.root = sim.comm.rank == 0

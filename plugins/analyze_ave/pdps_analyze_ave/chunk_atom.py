@@ -110,6 +110,7 @@ class ComputeChunkAtom(Compute):
         self.nchunk = 0
         self.set_up = False
         self.locked = False         # fix ave/chunk holds the chunks for a window (LAMMPS's lock)
+        self.holders = {}           # fix ID: how it holds them (its schedule and ave)
         self.coords = np.zeros((0, self.ncoord))
         self.original_ids = None    # with compress: the chunk number each compressed chunk had
         self.volume = 1.0
@@ -118,6 +119,9 @@ class ComputeChunkAtom(Compute):
     def setup_chunks(self, sim):
         """N (and the bins, their coordinates and volume) for now, unless held or set up once."""
         if self.set_up and (self.locked or self.once):
+            if self.binned and self.args.units == "reduced":
+                # bins that follow the box: their volume follows it too (LAMMPS's bin_volumes)
+                self.volume = float(sim.box.volume) * math.prod(self.deltas)
             return self.nchunk
         self.set_up = True
         box = sim.box

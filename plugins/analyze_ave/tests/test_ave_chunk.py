@@ -302,6 +302,9 @@ def test_two_and_three_dimensional_bins_as_lammps(make_sim):
      "fix: values must be vx, vy, vz, fx, fy, fz, mass, density/number, density/mass, temp, c_ID, c_ID[k], "
      "f_ID, f_ID[k] or v_NAME (got press)"),
     ("fix a all ave/chunk 1 1 1 c vx overwrite", "fix: overwrite needs ave running (LAMMPS)"),
+    ("fix b all ave/chunk 2 5 10 c vx\nfix a all ave/chunk 1 1 10 c vx ave running",
+     "fix: fix a ave/chunk: compute c is held by fix b over other windows (LAMMPS: \"Two fix commands using same "
+     "compute chunk/atom command in incompatible ways\"); give each its own compute chunk/atom"),
     ("fix a all ave/chunk 2 1 5 c vx", "fix: nfreq must be a multiple of nevery (got nevery 2, nfreq 5)"),
     ("fix a all ave/chunk 1 1 1 c vx format %d%d",
      "fix: format must be a C format of one number (got %d%d)"),
@@ -310,7 +313,7 @@ def test_bad_input_is_one_line(planes, line, message):
     planes.command("compute c all chunk/atom bin/1d z lower 1 units box\ncompute k all ke")
     with pytest.raises(ScriptError) as error:
         planes.command(line)
-    assert str(error.value) == f"<command>:1: {message}"
+    assert str(error.value) == f"<command>:{line.count(chr(10)) + 1}: {message}"
 
 
 def test_profiles_on_two_ranks_are_those_of_one(tmp_path):
@@ -319,3 +322,13 @@ def test_profiles_on_two_ranks_are_those_of_one(tmp_path):
     one, two = thermo_on_ranks(script, tmp_path)
     assert one.shape == (5, 7) and np.all(one[1:, 2:6] != 0)
     np.testing.assert_allclose(two, one, rtol=1e-12, atol=1e-12)
+
+
+def test_reduced_bins_follow_the_box_and_their_volume_with_it(planes):
+    """units reduced, nchunk once: after the box doubles along z the same two halves hold the
+    particles (z/20 now) and the densities divide by the new half volume."""
+    planes.command("compute h all chunk/atom bin/1d z lower 0.5 units reduced\n"
+                   "fix d all ave/chunk 1 1 1 h density/number\nrun 0")
+    np.testing.assert_allclose(planes.fixes["d"].array(planes)[:, 2], [8 / 80, 2 / 80], rtol=1e-15)
+    planes.command("change_box all z final 0 20\nrun 1")
+    np.testing.assert_allclose(planes.fixes["d"].array(planes)[:, 2], [10 / 160, 0], rtol=1e-15)
