@@ -25,9 +25,10 @@ Values: ``vx vy vz fx fy fz`` (velocity, force), ``mass`` (mean particle mass), 
 
 Keywords (LAMMPS's, with its defaults): ``norm all|sample|none``; ``ave one|running|window M``
 (each output the window's average, the mean of every window's since the command, or of the last M);
-``append NAME`` (as file, added to the end of NAME); ``adof A`` (degrees of freedom per particle, default the dimension) and ``cdof C`` (per chunk,
-default 0) of temp; ``file NAME``; ``overwrite`` (with ave running: the file keeps its header and the
-last output); ``format F`` (each value's C format, in place of " %g"); ``title1 S``..``title3 S``.
+``adof A`` (degrees of freedom per particle, default the dimension) and ``cdof C`` (per chunk,
+default 0) of temp; ``file NAME``, or ``append NAME`` (as file, after what NAME holds);
+``overwrite`` (with ave running: the file keeps its header and the last output); ``format F`` (each
+value's C format, in place of " %g"); ``title1 S``..``title3 S``.
 LAMMPS's ``bias`` (a velocity bias compute) is refused at the line: pdps's temperature computes
 give none.
 

@@ -105,6 +105,28 @@ def bin_layout(lo, hi, origin, delta):
     return first, max(1, int((last - first) / delta + 0.5))
 
 
+def lay_bins(lo, hi, origin, delta, scale, what, axis):
+    """(first boundary, width, number) of the bins along one axis from lo to hi: ORIGIN a word
+    (``lower``, ``center``, ``upper``) or a number, it and DELTA times ``scale`` (lattice spacings);
+    ``what`` names the style, ``axis`` the axis, in the too-many-bins error."""
+    delta *= scale
+    if isinstance(origin, str):
+        origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
+    else:
+        origin *= scale
+    check_bins((hi - lo) / delta, f"{what}: bin width {delta:g} along {axis} over the box ({lo:g} to {hi:g})")
+    first, layers = bin_layout(lo, hi, origin, delta)
+    return first, delta, layers
+
+
+def bin_centres(firsts, widths, layers, what):
+    """The centres of the bins of one to three axes, one row each, the first axis slowest."""
+    check_bins(math.prod(layers), f"{what}: bins of {' by '.join(map(str, layers))}")
+    centres = [first + width * (np.arange(n) + 0.5) for first, width, n in zip(firsts, widths, layers)]
+    grid = np.meshgrid(*centres, indexing="ij")
+    return np.stack([g.ravel() for g in grid], axis=1)
+
+
 def bin_index(coord, lo, length, periodic, first, delta):
     """Each coordinate's bin along one axis, LAMMPS's way: wrapped into the box on a periodic axis,
     ``floor((coord - first) * (1/delta))`` (its product, not a quotient, so that a particle on a
@@ -250,26 +272,17 @@ class AveSpace(WindowCombination):
     def _setup_bins(self, sim):
         """Bin boundaries, centres and volumes for the current box (called at each window start)."""
         box = sim.box
-        self.first, self.width, self.layers, centres, extents = [], [], [], [], []
+        self.first, self.width, self.layers, extents = [], [], [], []
         for d, origin, delta in zip(self.axes, self.origins, self.deltas):
             lo, hi = float(box.lo[d]), float(box.hi[d])
-            scale = self._scale(sim, d)
-            delta *= scale
-            if isinstance(origin, str):
-                origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
-            else:
-                origin *= scale
-            check_bins((hi - lo) / delta, f"{self.name} {self.id}: bin width {delta:g} along {AXES[d]} over the box ({lo:g} to {hi:g})")
-            first, layers = bin_layout(lo, hi, origin, delta)
+            first, delta, layers = lay_bins(lo, hi, origin, delta, self._scale(sim, d), f"{self.name} {self.id}",
+                                            AXES[d])
             edges = first + delta * np.arange(layers + 1)
             self.first.append(first)
             self.width.append(delta)
             self.layers.append(layers)
-            centres.append(first + delta * (np.arange(layers) + 0.5))
             extents.append(np.diff(np.clip(edges, lo, hi)))
-        check_bins(math.prod(self.layers), f"{self.name} {self.id}: bins of {' by '.join(map(str, self.layers))}")
-        grid = np.meshgrid(*centres, indexing="ij")
-        self.coords = np.stack([g.ravel() for g in grid], axis=1)
+        self.coords = bin_centres(self.first, self.width, self.layers, f"{self.name} {self.id}")
         volume = np.ones(1)
         for extent in extents:
             volume = np.multiply.outer(volume, extent)

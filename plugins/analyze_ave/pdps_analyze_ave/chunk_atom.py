@@ -55,7 +55,7 @@ from pydantic import model_validator
 
 from pdps_core.api import Compute, ScriptError, StyleArgs, check_bins, keyword, param
 
-from .ave_space import AXES, Bins, bin_index, bin_layout
+from .ave_space import AXES, Bins, bin_centres, bin_index, lay_bins
 
 DIMENSIONS = {"bin/1d": 1, "bin/2d": 2, "bin/3d": 3, "type": 0, "molecule": 0}
 NOT_IN_PDPS = "not in pdps (LAMMPS's compute chunk/atom has it)"
@@ -151,23 +151,13 @@ class ComputeChunkAtom(Compute):
         for d, (axis, origin, delta) in zip(self.axes, self.args.bins):
             lo, hi = (0.0, 1.0) if reduced else (float(box.lo[d]), float(box.hi[d]))
             scale = float(sim.lattice.spacing[d]) if self.args.units == "lattice" and sim.lattice is not None else 1.0
-            delta *= scale
-            if isinstance(origin, str):
-                origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
-            else:
-                origin *= scale
-            check_bins((hi - lo) / delta, f"compute {self.id} chunk/atom: bin width {delta:g} along {axis} "
-                                          f"over the box ({lo:g} to {hi:g})")
-            first, n = bin_layout(lo, hi, origin, delta)
+            first, delta, n = lay_bins(lo, hi, origin, delta, scale, f"compute {self.id} chunk/atom", axis)
             offsets.append(first)
             deltas.append(delta)
             layers.append(n)
         self.offsets, self.deltas, self.layers = offsets, deltas, layers
         self.nchunk = math.prod(layers)
-        check_bins(self.nchunk, f"compute {self.id} chunk/atom: bins of {' by '.join(map(str, layers))}")
-        centres = [first + delta * (np.arange(n) + 0.5) for first, delta, n in zip(offsets, deltas, layers)]
-        grid = np.meshgrid(*centres, indexing="ij")
-        self.coords = np.stack([g.ravel() for g in grid], axis=1)
+        self.coords = bin_centres(offsets, deltas, layers, f"compute {self.id} chunk/atom")
         lengths = np.ones(3) if reduced else np.asarray(box.length, dtype=np.float64)
         self.volume = float(box.volume) * math.prod(delta / lengths[d] for d, delta in zip(self.axes, deltas))
 

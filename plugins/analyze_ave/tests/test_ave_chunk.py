@@ -332,3 +332,10 @@ def test_reduced_bins_follow_the_box_and_their_volume_with_it(planes):
     np.testing.assert_allclose(planes.fixes["d"].array(planes)[:, 2], [8 / 80, 2 / 80], rtol=1e-15)
     planes.command("change_box all z final 0 20\nrun 1")
     np.testing.assert_allclose(planes.fixes["d"].array(planes)[:, 2], [10 / 160, 0], rtol=1e-15)
+
+
+def test_too_many_bins_is_one_line(planes):
+    with pytest.raises(ScriptError) as error:
+        planes.command("compute q all chunk/atom bin/3d x lower 1e-3 y lower 1e-3 z lower 1e-3 units box\n"
+                       "fix a all ave/chunk 1 1 1 q vx\nrun 0")
+    assert "compute q chunk/atom: bins of 4000 by 4000 by 10000" in str(error.value)

@@ -108,7 +108,26 @@ def test_vtarget_and_swap_pick_the_closest_and_unequal_masses_keep_the_totals(ma
     assert got_energy == pytest.approx(energy, rel=1e-15)
 
 
-FLUID = 'units lj\natom_style atomic\nlattice fcc 0.8442\nregion box block 0 3 0 3 0 6\ncreate_box 2 box\ncreate_atoms 1 box\nmass 1 1.0\nmass 2 2.0\nset group all type/fraction 2 0.25 555\nvelocity all create 1.4 4711 loop geom\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0 2.5\nfix 1 all nve\nfix 3 all thermal/conductivity 5 z 10 swap 2\nfix 4 all viscosity 10 x z 12 swap 3 vtarget 1.5\nthermo_style custom step temp pe etotal f_3 f_4\nthermo_modify format float %.15g\nthermo 20\nrun 200\n'
+FLUID = """units lj
+atom_style atomic
+lattice fcc 0.8442
+region box block 0 3 0 3 0 6
+create_box 2 box
+create_atoms 1 box
+mass 1 1.0
+mass 2 2.0
+set group all type/fraction 2 0.25 555
+velocity all create 1.4 4711 loop geom
+pair_style lj/cut 2.5
+pair_coeff * * 1.0 1.0 2.5
+fix 1 all nve
+fix 3 all thermal/conductivity 5 z 10 swap 2
+fix 4 all viscosity 10 x z 12 swap 3 vtarget 1.5
+thermo_style custom step temp pe etotal f_3 f_4
+thermo_modify format float %.15g
+thermo 20
+run 200
+"""
 # LAMMPS 22 Jul 2025's thermo of FLUID: step temp pe etotal f_3 f_4, with swap 2 and swap 3 vtarget 1.5
 LAMMPS_SWAPS = [
     ['0', '1.4', '-6.77336805325301', '-4.68309027547523', '0', '0'],
