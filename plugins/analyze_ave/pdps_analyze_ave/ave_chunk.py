@@ -26,7 +26,7 @@ Values: ``vx vy vz fx fy fz`` (velocity, force), ``mass`` (mean particle mass), 
 Keywords (LAMMPS's, with its defaults): ``norm all|sample|none``; ``ave one|running|window M``
 (each output the window's average, the mean of every window's since the command, or of the last M);
 ``adof A`` (degrees of freedom per particle, default the dimension) and ``cdof C`` (per chunk,
-default 0) of temp; ``file NAME``, or ``append NAME`` (as file, after what NAME holds);
+default 0) of temp (0 in a chunk they leave no degree of freedom); ``file NAME``, or ``append NAME`` (as file, after what NAME holds);
 ``overwrite`` (with ave running: the file keeps its header and the last output); ``format F`` (each
 value's C format, in place of " %g"); ``title1 S``..``title3 S``.
 LAMMPS's ``bias`` (a velocity bias compute) is refused at the line: pdps's temperature computes
@@ -57,6 +57,7 @@ Examples::
     fix 4 all ave/chunk 20 250 5000 layers vx density/mass norm sample
 """
 
+import re
 from typing import Literal
 
 import numpy as np
@@ -68,6 +69,8 @@ from .ave_space import ATTRIBUTES, WindowCombination
 from .chunk_atom import ComputeChunkAtom
 from .schedule import Schedule, ScheduleArgs
 
+# text with one %e, %f or %g conversion (flags, width, precision), %% elsewhere
+ONE_NUMBER = re.compile(r"^(?:[^%]|%%)*%[-+ #0]*\d*(?:\.\d+)?[eEfFgG](?:[^%]|%%)*$")
 VALUES = ("vx", "vy", "vz", "fx", "fy", "fz", "mass", "density/number", "density/mass", "temp")
 
 
@@ -101,12 +104,15 @@ class AveChunkArgs(ScheduleArgs):
             raise ValueError("file and append name one file: give one")
         if self.overwrite is not None and self.ave[0] != "running":
             raise ValueError("overwrite needs ave running (LAMMPS)")
-        if self.format is not None:
-            try:
-                self.format % 1.0
-            except (TypeError, ValueError):
-                raise ValueError(f"format must be a C format of one number (got {self.format})") from None
+        if self.format is not None and not ONE_NUMBER.match(self.format):
+            raise ValueError(f"format must be a C format of one number, %e %f or %g (got {self.format})")
         return self
+
+
+def temperature(twice_kinetic, dof, units):
+    """m v^2 summed over a chunk as a temperature over ``dof`` degrees of freedom; 0 where there
+    are none (a chunk of one particle with cdof taking its own away: LAMMPS prints inf there)."""
+    return np.divide(twice_kinetic * units.mvv2e, dof * units.boltz, out=np.zeros_like(twice_kinetic), where=dof > 0)
 
 
 def shortest(number):
@@ -210,7 +216,7 @@ class FixAveChunk(WindowCombination, Fix):
                 # this sample's chunk value joins the window's (LAMMPS's values_one into values_many)
                 seen = count > 0
                 if value == "temp":
-                    sums[seen] *= units.mvv2e / ((self.args.cdof + self.adof * count[seen]) * units.boltz)
+                    sums = temperature(sums, self.args.cdof + self.adof * count, units)
                 elif value == "density/number":
                     sums = sums / self.chunk.volume
                 elif value == "density/mass":
@@ -228,8 +234,7 @@ class FixAveChunk(WindowCombination, Fix):
             for k, value in enumerate(self.values):
                 column = values[:, k]
                 if value == "temp":
-                    column[seen] *= units.mvv2e / ((repeat * self.args.cdof + self.adof * self.count_total[seen])
-                                                   * units.boltz)
+                    values[:, k] = temperature(column, repeat * self.args.cdof + self.adof * self.count_total, units)
                 elif value == "density/number":
                     column[seen] = column[seen] / self.chunk.volume / repeat
                 elif value == "density/mass":

@@ -111,11 +111,14 @@ def test_profile_averages_are_the_sums_over_each_chunk(make_sim):
     p.v[:p.nlocal][order] = v
     sim.command("compute s all chunk/atom bin/1d z lower 2 units box\n"
                 "fix a all ave/chunk 1 1 1 s vx mass temp density/number density/mass\n"
-                "fix b all ave/chunk 1 1 1 s vx temp norm none adof 2 cdof 1\nrun 0")
+                "fix b all ave/chunk 1 1 1 s vx temp norm none adof 2 cdof 1\n"
+                "fix c all ave/chunk 1 1 1 s temp adof 0\nrun 0")
     slab = (z // 2).astype(int)
     m = np.where(t == 2, 2.0, 1.0)
     table = sim.fixes["a"].array(sim)
     tableb = sim.fixes["b"].array(sim)
+    # no degrees of freedom: 0, not inf
+    np.testing.assert_array_equal(sim.fixes["c"].array(sim)[:, 2], [0, 0, 0])
     np.testing.assert_array_equal(table[:, 0], [1, 3, 5])
     for k in range(3):
         here = slab == k
@@ -123,7 +126,7 @@ def test_profile_averages_are_the_sums_over_each_chunk(make_sim):
         np.testing.assert_allclose(table[k, 1:], [n, v[here, 0].mean(), m[here].mean(),
                                                   (m[here] * (v[here] ** 2).sum(1)).sum() / (3 * n),
                                                   n / 12.0, m[here].sum() / 12.0], rtol=1e-13)
-        # norm none: vx summed; temp over cdof + adof N degrees of freedom
+        # norm none: vx summed; temp over cdof + adof N degrees of freedom (none left: 0)
         np.testing.assert_allclose(tableb[k, 2:], [v[here, 0].sum(),
                                                    (m[here] * (v[here] ** 2).sum(1)).sum() / (1 + 2 * n)],
                                    rtol=1e-13)
@@ -307,7 +310,8 @@ def test_two_and_three_dimensional_bins_as_lammps(make_sim):
      "compute chunk/atom command in incompatible ways\"); give each its own compute chunk/atom"),
     ("fix a all ave/chunk 2 1 5 c vx", "fix: nfreq must be a multiple of nevery (got nevery 2, nfreq 5)"),
     ("fix a all ave/chunk 1 1 1 c vx format %d%d",
-     "fix: format must be a C format of one number (got %d%d)"),
+     "fix: format must be a C format of one number, %e %f or %g (got %d%d)"),
+    ("fix a all ave/chunk 1 1 1 c vx format %s", "fix: format must be a C format of one number, %e %f or %g (got %s)"),
 ])
 def test_bad_input_is_one_line(planes, line, message):
     planes.command("compute c all chunk/atom bin/1d z lower 1 units box\ncompute k all ke")
