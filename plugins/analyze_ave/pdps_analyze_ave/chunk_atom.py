@@ -22,7 +22,8 @@ Keywords (LAMMPS's, with its defaults):
   at each use (each window of fix ave/chunk). Default: once for ``type``, ``molecule`` and
   ``units reduced``, every for other bins, every with ``compress yes``;
 - ``compress yes|no`` (default no): the chunks holding no particle of the group are dropped and the
-  others renumbered 1..N in order (``OrigID``: the number each had before);
+  others renumbered 1..N in order (``OrigID``: the number each had before; molecule 0 is one of
+  them when the group holds particles of molecule 0, as in LAMMPS);
 - ``discard yes|no|mixed``: a particle outside every chunk (beyond the bins on a non-periodic axis, a
   molecule id above N) is in none (``yes``) or in the nearest bin (``no``; for type and molecule:
   in chunk N). ``mixed`` (bins only) is LAMMPS's default for bins and, with no ``bound`` keyword,
@@ -133,13 +134,14 @@ class ComputeChunkAtom(Compute):
         elif not self.binned:
             self.nchunk = max(1, int(sim.comm.max(int(raw[inside].max()) if inside.any() else -1)))
         if self.compress:
-            check_bins(self.nchunk, f"compute {self.id} chunk/atom: {self.nchunk} chunks")
-            populated = np.bincount(raw[inside & (raw >= 1) & (raw <= self.nchunk)], minlength=self.nchunk + 1)
-            populated = np.asarray(sim.comm.sum(populated[1:].astype(np.float64)))
-            self.original_ids = np.flatnonzero(populated > 0) + 1
-            self.renumber = np.zeros(self.nchunk + 1, dtype=np.int64)
+            # the numbers the group's particles hold, before any discard (LAMMPS's hash): molecule 0 too
+            top = int(sim.comm.max(int(raw[inside].max()) if inside.any() else 0))
+            check_bins(top + 1, f"compute {self.id} chunk/atom: chunk numbers up to {top}")
+            held = np.asarray(sim.comm.sum(np.bincount(raw[inside], minlength=top + 1).astype(np.float64)))
+            self.original_ids = np.flatnonzero(held > 0)
+            self.renumber = np.zeros(top + 1, dtype=np.int64)
             self.renumber[self.original_ids] = np.arange(1, len(self.original_ids) + 1)
-            self.nchunk = len(self.original_ids)
+            self.nchunk = max(1, len(self.original_ids))
         if not self.binned:
             self.volume = float(box.volume)
         return self.nchunk
@@ -192,7 +194,7 @@ class ComputeChunkAtom(Compute):
         """Each owned particle's chunk, 1..N, 0 for none (int64, (nlocal,)), for the chunks set up last."""
         raw, inside = self._assign(sim)
         if self.compress:
-            known = inside & (raw >= 1) & (raw < len(self.renumber))
+            known = inside & (raw >= 0) & (raw < len(self.renumber))
             ids = np.zeros_like(raw)
             ids[known] = self.renumber[raw[known]]
             if self.clamp and not self.binned:

@@ -91,8 +91,77 @@ def test_molecules_are_chunks_and_molecule_zero_is_in_none(make_sim):
                 "compute m all chunk/atom molecule\ncompute n all chunk/atom molecule compress yes discard no")
     assert sim.computes["m"].scalar(sim) == 3
     assert ids(sim, "m") == [3, 1, 3, 0]
-    # compressed: molecules 1 and 3 are chunks 1 and 2; discard no puts molecule 0 in the last
-    assert ids(sim, "n") == [2, 1, 2, 2]
+    # compressed: the numbers held, molecule 0 among them (LAMMPS's hash), are 0, 1, 3: chunks 1, 2, 3
+    assert ids(sim, "n") == [3, 2, 3, 1]
+    assert sim.computes["n"].original_ids.tolist() == [0, 1, 3]
+
+
+MOLECULES = """units lj
+atom_style molecular
+lattice sc 0.5
+region box block 0 3 0 3 0 3
+create_box 2 box
+create_atoms 1 box
+mass * 1.0
+set atom 1*9 mol 2
+set atom 10*18 mol 5
+set atom 19*20 mol 7
+set atom 21*27 type 2
+velocity all create 1.0 999 loop geom
+fix 1 all nve
+compute m all chunk/atom molecule
+compute mc all chunk/atom molecule compress yes discard no
+fix a all ave/chunk 1 2 4 m vx temp mass file prof.m
+fix b all ave/chunk 2 1 4 mc vy density/number file prof.mc
+thermo_style custom step c_m c_mc f_a[5][3] f_b[2][1] f_b[4][3]
+thermo 4
+run 8
+"""
+# LAMMPS's files of MOLECULES (compress yes: molecule 0 is chunk 1, OrigID 0)
+MOLECULE_FILE = ('# Chunk-averaged data for fix a and group all\n'
+    '# Timestep Number-of-chunks Total-count\n'
+    '# Chunk Ncount vx temp mass\n'
+    '4 7 20\n'
+    '  1 0 0 0 0\n'
+    '  2 9 -0.0911578 0.945139 1\n'
+    '  3 0 0 0 0\n'
+    '  4 0 0 0 0\n'
+    '  5 9 -0.0759723 1.08121 1\n'
+    '  6 0 0 0 0\n'
+    '  7 2 0.478591 0.661574 1\n'
+    '8 7 20\n'
+    '  1 0 0 0 0\n'
+    '  2 9 -0.0911578 0.945139 1\n'
+    '  3 0 0 0 0\n'
+    '  4 0 0 0 0\n'
+    '  5 9 -0.0759723 1.08121 1\n'
+    '  6 0 0 0 0\n'
+    '  7 2 0.478591 0.661574 1\n')
+COMPRESSED_MOLECULES = ('# Chunk-averaged data for fix b and group all\n'
+    '# Timestep Number-of-chunks Total-count\n'
+    '# Chunk OrigID Ncount vy density/number\n'
+    '0 4 27\n'
+    '  1 0 7 0.489452 0.12963\n'
+    '  2 2 9 -0.470968 0.166667\n'
+    '  3 5 9 0.10885 0.166667\n'
+    '  4 7 2 -0.08355 0.037037\n'
+    '4 4 27\n'
+    '  1 0 7 0.489452 0.12963\n'
+    '  2 2 9 -0.470968 0.166667\n'
+    '  3 5 9 0.10885 0.166667\n'
+    '  4 7 2 -0.08355 0.037037\n'
+    '8 4 27\n'
+    '  1 0 7 0.489452 0.12963\n'
+    '  2 2 9 -0.470968 0.166667\n'
+    '  3 5 9 0.10885 0.166667\n'
+    '  4 7 2 -0.08355 0.037037\n')
+
+
+def test_molecule_chunks_as_lammps(make_sim):
+    sim = make_sim(dialect="lammps")
+    sim.command(MOLECULES)
+    assert read("prof.m") == MOLECULE_FILE
+    assert read("prof.mc") == COMPRESSED_MOLECULES
 
 
 # ---- averages against numpy -----------------------------------------------------------------------
