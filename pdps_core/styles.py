@@ -643,6 +643,9 @@ class Style:
     ghost_fields: ClassVar[tuple] = ()         # other per-atom arrays ghosts need every step ("omega")
     # keywords of kindred styles this one does not take, and why ("temp": "only fix rigid/nvt takes it")
     refused: ClassVar[dict[str, str]] = {}
+    # the array's row count changes from output to output (LAMMPS's size_array_rows_variable: fix
+    # ave/chunk): ID[i][j] of a row past the last reads 0, as LAMMPS's, rather than an error
+    array_rows_vary: ClassVar[bool] = False
 
     @classmethod
     def parse(cls, words):

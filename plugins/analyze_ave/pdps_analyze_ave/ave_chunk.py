@@ -43,7 +43,8 @@ bins only)::
       ...
 
 The global array ``f_ID[i][j]`` (``array(sim)``) is the last output: one row per chunk, columns
-[OrigID], the coordinates, N_k, then the values (zeros before the first output).
+[OrigID], the coordinates, N_k, then the values (zeros before the first output; a row past the
+last chunk reads 0, as LAMMPS's).
 
 Syntax::
 
@@ -126,6 +127,7 @@ class FixAveChunk(WindowCombination, Fix):
     usage = ("fix ID GROUP ave/chunk NEVERY NREPEAT NFREQ CHUNKID value... [norm all|sample|none] "
              "[ave one|running|window M] [adof A] [cdof C] [file|append NAME] [overwrite] [format F] [title1 S]")
     Args = AveChunkArgs
+    array_rows_vary = True      # chunks come and go (compress, nchunk every)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)

@@ -162,6 +162,11 @@ def test_molecule_chunks_as_lammps(make_sim):
     sim.command(MOLECULES)
     assert read("prof.m") == MOLECULE_FILE
     assert read("prof.mc") == COMPRESSED_MOLECULES
+    # a row past the last chunk reads 0 (LAMMPS's thermo of f_b[9][2]: 0), a column past the last is an error
+    sim.command("variable past equal f_b[9][2]")
+    assert sim.variables.value("past") == 0
+    with pytest.raises(ScriptError, match=r"f_b\[2\]\[9\] is out of range"):
+        sim.command("variable wide equal f_b[2][9]\nprint ${wide}")
 
 
 # ---- averages against numpy -----------------------------------------------------------------------
