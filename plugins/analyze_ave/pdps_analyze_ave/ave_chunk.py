@@ -179,12 +179,14 @@ class FixAveChunk(WindowCombination, Fix):
             return
         if self.schedule.irepeat == 0:
             self.nchunk = self.chunk.setup_chunks(sim)
-            self.chunk.locked = self.holds
+            # a fix of one-sample windows neither holds the chunks nor lets them go (another may hold them)
+            if self.holds:
+                self.chunk.locked = True
             self.count_total = np.zeros(self.nchunk)
             self.value_total = np.zeros((self.nchunk, len(self.values)))
         self._sample(sim)
         if self.schedule.advance(step):
-            if self.args.ave[0] == "one":
+            if self.holds and self.args.ave[0] == "one":
                 self.chunk.locked = False
             self._average()
             self._combine()

@@ -417,3 +417,16 @@ def test_too_many_bins_is_one_line(planes):
         planes.command("compute q all chunk/atom bin/3d x lower 1e-3 y lower 1e-3 z lower 1e-3 units box\n"
                        "fix a all ave/chunk 1 1 1 q vx\nrun 0")
     assert "compute q chunk/atom: bins of 4000 by 4000 by 10000" in str(error.value)
+
+
+def test_a_fix_of_single_samples_leaves_another_fixs_hold(make_sim):
+    """ave running holds compressed chunks for good; a one-sample fix on the same compute must not let
+    them change under it: the particle at z 0.5 moves 2 in 10 steps, through the empty slab 1-2 into
+    the other's, 2-3 (laid anew, one chunk)."""
+    sim = make_sim(dialect="lammps")
+    sim.command("units lj\nregion box block 0 4 0 4 0 4\ncreate_box 1 box\nmass 1 1\n"
+                "create_atoms 1 single 1 1 0.5\ncreate_atoms 1 single 1 1 2.5\ngroup a id 1\nvelocity a set 0 0 40\n"
+                "fix 1 all nve\ncompute c all chunk/atom bin/1d z lower 1 units box compress yes\n"
+                "fix r all ave/chunk 1 1 1 c vz ave running\nfix o all ave/chunk 1 1 1 c vz\nrun 10")
+    assert sim.computes["c"].scalar(sim) == 2
+    assert sim.fixes["r"].array(sim).shape == sim.fixes["o"].array(sim).shape == (2, 4)
