@@ -164,6 +164,11 @@ class FixAveChunk(WindowCombination, Fix):
                               " ".join(["# Chunk", *columns, "Ncount", *self.values])],
                              mode="w" if args.append is None else "a")
 
+    def removed(self, sim):
+        """unfix: the chunks are let go once no fix holds them (LAMMPS's unlock)."""
+        if self.chunk.holders.pop(self.id, None) is not None and not self.chunk.holders:
+            self.chunk.locked = False
+
     def needs(self, step):
         if step != self.schedule.due or not self.references:
             return set()

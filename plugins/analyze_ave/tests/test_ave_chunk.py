@@ -430,3 +430,6 @@ def test_a_fix_of_single_samples_leaves_another_fixs_hold(make_sim):
                 "fix r all ave/chunk 1 1 1 c vz ave running\nfix o all ave/chunk 1 1 1 c vz\nrun 10")
     assert sim.computes["c"].scalar(sim) == 2
     assert sim.fixes["r"].array(sim).shape == sim.fixes["o"].array(sim).shape == (2, 4)
+    # unfix lets them go: the next window lays them anew; another fix may hold them its own way
+    sim.command("unfix r\nrun 1\nfix w all ave/chunk 1 2 2 c vz")
+    assert sim.computes["c"].scalar(sim) == 1
