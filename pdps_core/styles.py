@@ -560,6 +560,8 @@ def parse_args(model, words, usage="", refused=None):
         if spellings:
             del keywords[n]
     values, i = {}, 0
+    # a refused keyword ends a run of positional words as a keyword does, so that its error is the one
+    stops = {**keywords, **refused}
     for k, (name, info) in enumerate(positional):
         # an optional style word (wall/reflect's) is left out when a later argument follows instead
         choices = _bare(info.annotation)
@@ -571,16 +573,16 @@ def parse_args(model, words, usage="", refused=None):
                               and bool(_first_words(choices)) and words[i] not in _first_words(choices))
         # a run another positional follows takes the words that start its entries (region R1 region R2)
         leading = k + 1 < len(positional) and typing.get_origin(choices) is list and bool(_starts(choices))
-        if i >= len(words) or words[i] in keywords or skipped or (leading and words[i] not in _starts(choices)):
+        if i >= len(words) or words[i] in stops or skipped or (leading and words[i] not in _starts(choices)):
             if info.is_required():
-                got = f" (got {words[i]})" if i < len(words) and words[i] not in keywords else ""
+                got = f" (got {words[i]})" if i < len(words) and words[i] not in stops else ""
                 hint = f"; usage: {usage}" if usage else ""
                 raise ScriptError(f"missing argument {name}{got}{hint}")
             continue
         if leading:
-            values[name], i = _leading_run(choices, words, i, keywords, name)
+            values[name], i = _leading_run(choices, words, i, stops, name)
             continue
-        values[name], i = _read(info.annotation, words, i, keywords, name)
+        values[name], i = _read(info.annotation, words, i, stops, name)
     while i < len(words):
         word = words[i]
         if word in refused:
@@ -641,6 +643,9 @@ class Style:
     ghost_fields: ClassVar[tuple] = ()         # other per-atom arrays ghosts need every step ("omega")
     # keywords of kindred styles this one does not take, and why ("temp": "only fix rigid/nvt takes it")
     refused: ClassVar[dict[str, str]] = {}
+    # the array's row count changes from output to output (LAMMPS's size_array_rows_variable: fix
+    # ave/chunk): ID[i][j] of a row past the last reads 0, as LAMMPS's, rather than an error
+    array_rows_vary: ClassVar[bool] = False
 
     @classmethod
     def parse(cls, words):

@@ -52,6 +52,10 @@ class StyleTables:
         values = method(sim)
         shown = f"{prefix}_{ident}{''.join(f'[{i}]' for i in indices)}"
         position = tuple(sim.dialect_index(i, shown) for i in indices)
+        shape = np.shape(values)
+        if style.array_rows_vary and len(position) == 2 == len(shape) and position[0] >= shape[0] \
+                and position[1] < shape[1]:
+            return 0.0
         try:
             return float(values[position])
         except IndexError:

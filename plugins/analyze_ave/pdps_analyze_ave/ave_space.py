@@ -105,6 +105,81 @@ def bin_layout(lo, hi, origin, delta):
     return first, max(1, int((last - first) / delta + 0.5))
 
 
+def lay_bins(lo, hi, origin, delta, scale, what, axis):
+    """(first boundary, width, number) of the bins along one axis from lo to hi: ORIGIN a word
+    (``lower``, ``center``, ``upper``) or a number, it and DELTA times ``scale`` (lattice spacings);
+    ``what`` names the style, ``axis`` the axis, in the too-many-bins error."""
+    delta *= scale
+    if isinstance(origin, str):
+        origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
+    else:
+        origin *= scale
+    check_bins((hi - lo) / delta, f"{what}: bin width {delta:g} along {axis} over the box ({lo:g} to {hi:g})")
+    first, layers = bin_layout(lo, hi, origin, delta)
+    return first, delta, layers
+
+
+def bin_centres(firsts, widths, layers, what):
+    """The centres of the bins of one to three axes, one row each, the first axis slowest."""
+    check_bins(math.prod(layers), f"{what}: bins of {' by '.join(map(str, layers))}")
+    centres = [first + width * (np.arange(n) + 0.5) for first, width, n in zip(firsts, widths, layers)]
+    grid = np.meshgrid(*centres, indexing="ij")
+    return np.stack([g.ravel() for g in grid], axis=1)
+
+
+def bin_index(coord, lo, length, periodic, first, delta):
+    """Each coordinate's bin along one axis, LAMMPS's way: wrapped into the box on a periodic axis,
+    ``floor((coord - first) * (1/delta))`` (its product, not a quotient, so that a particle on a
+    boundary falls where LAMMPS puts it), unclamped: -1 or ``layers`` and beyond lie outside."""
+    if periodic:
+        coord = lo + np.mod(coord - lo, length)
+    return np.floor((coord - first) * (1.0 / delta)).astype(np.int64)
+
+
+class WindowCombination:
+    """``ave one|running|window M`` over the averages of successive windows (LAMMPS's ave/spatial,
+    ave/chunk) and the file written at each: the class sets ``self.args`` (with ``ave``, ``title1``..3,
+    ``overwrite``), ``self.path``, ``self.root`` and ``self.window_average``, and says in
+    ``_table(mean)`` how a combined mean becomes the output rows."""
+
+    def _combine(self):
+        """This window's average combined as ``ave`` says; ``self.average`` the output table."""
+        combine = self.args.ave[0]
+        window = self.window_average
+        if combine == "one":
+            self.windows, self.combined = [window], 1
+        elif combine == "running":
+            self.windows = [window if not self.windows else self.windows[0] + window]
+            self.combined += 1
+        else:
+            self.windows = (self.windows + [window])[-self.args.ave[1]:]
+            self.combined = len(self.windows)
+        total = self.windows[0] if combine != "window" else np.sum(self.windows, axis=0)
+        self.total = total
+        self.average = self._table(total / self.combined)
+
+    def _start_file(self, lines, mode="w"):
+        """The file's three header lines (title1..3 in their place), anew or (``mode`` "a") after
+        what it holds; ``body_starts`` where the averages begin (overwrite rewrites from there)."""
+        args = self.args
+        text = "\n".join(title or line for title, line in zip((args.title1, args.title2, args.title3), lines)) + "\n"
+        try:
+            with open(self.path, mode) as handle:
+                handle.write(text)
+                self.body_starts = handle.tell()
+        except OSError as exc:
+            raise ScriptError(f"cannot open {self.kind} {self.name} file {self.path}: "
+                              f"{exc.strerror}") from None
+
+    def _append(self, rows):
+        """One output's lines, after the last (overwrite: in place of the last)."""
+        with open(self.path, "r+" if self.args.overwrite is not None else "a") as handle:
+            if self.args.overwrite is not None:
+                handle.seek(self.body_starts)
+                handle.truncate()
+            handle.write("\n".join(rows) + "\n")
+
+
 class Bins(NamedTuple):
     """``DIM ORIGIN DELTA``: bins of width DELTA along DIM with a boundary at ORIGIN."""
     dim: Literal["x", "y", "z"]
@@ -139,7 +214,7 @@ class AveSpaceArgs(ScheduleArgs):
         return self
 
 
-class AveSpace:
+class AveSpace(WindowCombination):
     """What analyze ave/space and fix ave/spatial share (all of it)."""
     Args = AveSpaceArgs
     default_units = "box"
@@ -197,26 +272,17 @@ class AveSpace:
     def _setup_bins(self, sim):
         """Bin boundaries, centres and volumes for the current box (called at each window start)."""
         box = sim.box
-        self.first, self.width, self.layers, centres, extents = [], [], [], [], []
+        self.first, self.width, self.layers, extents = [], [], [], []
         for d, origin, delta in zip(self.axes, self.origins, self.deltas):
             lo, hi = float(box.lo[d]), float(box.hi[d])
-            scale = self._scale(sim, d)
-            delta *= scale
-            if isinstance(origin, str):
-                origin = {"lower": lo, "upper": hi, "center": 0.5 * (lo + hi)}[origin]
-            else:
-                origin *= scale
-            check_bins((hi - lo) / delta, f"{self.name} {self.id}: bin width {delta:g} along {AXES[d]} over the box ({lo:g} to {hi:g})")
-            first, layers = bin_layout(lo, hi, origin, delta)
+            first, delta, layers = lay_bins(lo, hi, origin, delta, self._scale(sim, d), f"{self.name} {self.id}",
+                                            AXES[d])
             edges = first + delta * np.arange(layers + 1)
             self.first.append(first)
             self.width.append(delta)
             self.layers.append(layers)
-            centres.append(first + delta * (np.arange(layers) + 0.5))
             extents.append(np.diff(np.clip(edges, lo, hi)))
-        check_bins(math.prod(self.layers), f"{self.name} {self.id}: bins of {' by '.join(map(str, self.layers))}")
-        grid = np.meshgrid(*centres, indexing="ij")
-        self.coords = np.stack([g.ravel() for g in grid], axis=1)
+        self.coords = bin_centres(self.first, self.width, self.layers, f"{self.name} {self.id}")
         volume = np.ones(1)
         for extent in extents:
             volume = np.multiply.outer(volume, extent)
@@ -227,10 +293,8 @@ class AveSpace:
         box = sim.box
         index = []
         for d, first, delta, layers in zip(self.axes, self.first, self.width, self.layers):
-            coord = x[:, d]
-            if box.periodic[d]:
-                coord = box.lo[d] + np.mod(coord - box.lo[d], box.length[d])
-            index.append(np.clip(np.floor((coord - first) / delta).astype(np.int64), 0, layers - 1))
+            where = bin_index(x[:, d], box.lo[d], box.length[d], box.periodic[d], first, delta)
+            index.append(np.clip(where, 0, layers - 1))
         return np.ravel_multi_index(index, self.layers)
 
     # ---- the timestep -----------------------------------------------------------------------------
@@ -300,36 +364,14 @@ class AveSpace:
             columns.append(column)
         self.window_average = np.column_stack([count, *columns])
 
-    def _combine(self):
-        """This window's average combined as ``ave`` says (LAMMPS's ave one|running|window M)."""
-        combine = self.args.ave[0]
-        window = self.window_average
-        if combine == "one":
-            self.windows, self.combined = [window], 1
-        elif combine == "running":
-            self.windows = [window if not self.windows else self.windows[0] + window]
-            self.combined += 1
-        else:
-            self.windows = (self.windows + [window])[-self.args.ave[1]:]
-            self.combined = len(self.windows)
-        total = self.windows[0] if combine != "window" else np.sum(self.windows, axis=0)
-        self.total = total
-        self.average = np.column_stack([self.coords, total / self.combined])
+    def _table(self, mean):
+        return np.column_stack([self.coords, mean])
 
     # ---- output -----------------------------------------------------------------------------------
     def _write_header(self):
         coords = "Coord" if len(self.axes) == 1 else " ".join(f"Coord{k + 1}" for k in range(len(self.axes)))
-        args = self.args
-        text = "\n".join([args.title1 or f"# Spatial-averaged data for {self.kind} {self.id} and group {self.group}",
-                          args.title2 or "# Timestep Number-of-bins",
-                          args.title3 or f"# Bin {coords} Ncount {' '.join(self.values)}"]) + "\n"
-        try:
-            with open(self.path, "w") as handle:
-                handle.write(text)
-                self.body_starts = handle.tell()
-        except OSError as exc:
-            raise ScriptError(f"cannot open {self.kind} {self.name} file {self.path}: "
-                              f"{exc.strerror}") from None
+        self._start_file([f"# Spatial-averaged data for {self.kind} {self.id} and group {self.group}",
+                          "# Timestep Number-of-bins", f"# Bin {coords} Ncount {' '.join(self.values)}"])
 
     def _write(self, step):
         if self.path is None or not self.root:
@@ -337,11 +379,7 @@ class AveSpace:
         rows = [f"{step} {len(self.average)}"] if self.args.write_ts else []
         rows += [f"  {b + 1}" + "".join(" %g" % v for v in row)
                  for b, row in enumerate(self.average.tolist())]
-        with open(self.path, "r+" if self.args.overwrite is not None else "a") as handle:
-            if self.args.overwrite is not None:
-                handle.seek(self.body_starts)
-                handle.truncate()
-            handle.write("\n".join(rows) + "\n")
+        self._append(rows)
 
     def _write_std(self, step):
         """LIGGGHTS's std file line: the values' spread over the bins whose count is within LO..HI,
