@@ -27,7 +27,7 @@ thermal kinetic energy stops the run, as LAMMPS's. Applied in ``end_of_step`` on
 multiples of N.
 
 Compared with LAMMPS 22 Jul 2025 (plugins/fix_simple/tests/test_ehex.py): an eHEX source and a HEX
-sink of our own, every 1 and every 2 steps, to 10 digits over 200 steps.
+sink of our own, every 1 and every 2 steps, to 10 digits over 200 steps, on 1 and 2 ranks.
 
 Not supported: ``constrain`` and ``com`` (SHAKE/RATTLE's corrections after the scaling; pdps has no
 fix shake or rattle, and LAMMPS refuses both without one), refused at the fix's line.

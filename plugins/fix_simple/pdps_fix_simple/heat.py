@@ -20,7 +20,7 @@ first application; intensive). A sink that would take more than the particles' t
 steps that are multiples of N.
 
 Compared with LAMMPS 22 Jul 2025 (plugins/fix_simple/tests/test_heat.py): a source and a sink of
-our own, one given by a variable, every 1 and every 2 steps, to 10 digits over 200 steps.
+our own, one given by a variable, every 1 and every 2 steps, to 10 digits over 200 steps, on 1 and 2 ranks.
 
 Not supported: LAMMPS's atom-style variable EFLUX (a flux per atom), refused when the run starts.
 

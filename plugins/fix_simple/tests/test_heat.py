@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, SimulationError
-from pdps_core.testing import build, by_tag, lammps_thermo
+from pdps_core.testing import build, by_tag, lammps_thermo, run_ranks, thermo_rows
 
 X = [[1.0, 1.0, 1.0], [3.0, 2.0, 1.5], [6.0, 5.0, 4.0], [8.0, 7.5, 6.0], [2.5, 8.0, 3.0]]
 V = [[0.3, -0.2, 0.1], [-0.5, 0.4, 0.2], [0.1, 0.1, -0.6], [0.7, -0.3, 0.0], [-0.2, 0.5, 0.4]]
@@ -155,3 +155,11 @@ def test_a_lammps_source_and_variable_sink_are_reproduced_to_10_digits(tmp_path,
     assert [int(row[0]) for row in rows] == sorted(LAMMPS_HEAT)
     for row in rows:
         assert [float(v) for v in row[1:]] == pytest.approx(LAMMPS_HEAT[int(row[0])], rel=1e-10), row[0]
+
+
+def test_two_ranks_give_lammps_figures_too(tmp_path):
+    """The reservoir's sums run over both ranks' particles."""
+    rows = thermo_rows(run_ranks(HEAT_SCRIPT.replace("thermo 50", "thermo 50\nthermo_modify format float %22.16g"), 2, tmp_path, dialect="lammps").stdout)
+    assert [int(row[0]) for row in rows] == sorted(LAMMPS_HEAT)
+    for row in rows:
+        assert row[1:] == pytest.approx(LAMMPS_HEAT[int(row[0])], rel=1e-10), row[0]
