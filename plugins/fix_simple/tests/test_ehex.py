@@ -76,6 +76,21 @@ def test_ehex_corrects_positions_as_eq_20_and_keeps_the_centre_of_mass(tmp_path)
     assert ke(v[near], M[near]) == pytest.approx(ke(v0[near], M[near]) + flux * DT, rel=1e-13)
 
 
+def test_a_particle_past_a_periodic_face_counts_by_its_image_in_the_box(tmp_path):
+    """Particle 2 crosses x = 10 in the step (no rebuild wraps it before end_of_step): at 10.04 it is
+    in region 0..5 by its image at 0.04, as LAMMPS's remap, so it is scaled with the others."""
+    sim = build(tmp_path, [[1.0, 1.0, 1.0], [9.99, 1.0, 1.0], [3.0, 1.0, 1.0]],
+                v=[[0.3, 0.1, 0.0], [5.0, 0.0, 0.0], [-0.2, 0.0, 0.1]],
+                setup="timestep 0.01\nfix 1 all nve\nregion low block 0 5 INF INF INF INF\n"
+                      "fix e all ehex 1 1.0 region low hex")
+    sim.command("run 1")
+    x, v = by_tag(sim, sim.particles.x[:3]), by_tag(sim, sim.particles.v[:3])
+    assert x[1, 0] == pytest.approx(10.04, rel=1e-14)
+    assert v[1, 0] != 5.0
+    assert 0.5 * np.sum(v * v) == pytest.approx(0.5 * (0.3 ** 2 + 0.1 ** 2 + 5.0 ** 2 + 0.2 ** 2 + 0.1 ** 2) + 0.01,
+                                                rel=1e-13)
+
+
 def test_a_sink_larger_than_the_thermal_energy_stops_the_run(tmp_path):
     sim = cluster(tmp_path, "fix e all ehex 1 -1000.0")
     with pytest.raises(SimulationError, match=r"^<command>:1: run: fix e ehex at step 1: the kinetic energy went "
