@@ -456,6 +456,8 @@ class Thermo:
                 extensive = getattr(style, "extensive", False)
                 if len(indices) == 2:
                     extensive = getattr(style, "extensive_array", extensive)
+                elif len(indices) == 1:
+                    extensive = getattr(style, "extensive_vector", extensive)
                 if extensive:
                     value /= _normalise(self.sim)
                 out.append(value)

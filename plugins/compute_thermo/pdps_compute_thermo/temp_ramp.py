@@ -21,7 +21,9 @@ region units). Compared with LAMMPS 22 Jul 2025 (plugins/compute_thermo/tests/te
 two-mass LJ solid with a vx ramp in y, lattice and box units, rescaled by temp/rescale about the
 ramp, to 10 digits over 200 steps.
 
-Not supported: LAMMPS's vector (the six kinetic tensor components).
+The vector ``c_ID[1..6]`` (LAMMPS's indices; from 0 in the PDPS dialect) is the kinetic tensor about
+the ramp, :math:`\sum_i m_i u_a u_b` (xx, yy, zz, xy, xz, yz; energy units, extensive: thermo divides
+it by N where it normalises, as LAMMPS's).
 
 Syntax::
 
@@ -57,6 +59,29 @@ def ramp_velocities(x, mask, groupbit, nlocal, coord_dim, coord_lo, coord_hi, v_
 
 
 @njit(cache=True)
+def thermal_tensor(v, ramp, mass, mask, groupbit, nlocal, v_dim, out):
+    """out <- sum m (u_x u_x, u_y u_y, u_z u_z, u_x u_y, u_x u_z, u_y u_z) of the thermal velocities u
+    over the owned particles of the group, in row order (LAMMPS's compute_vector)."""
+    out[:] = 0.0
+    for i in range(nlocal):
+        if mask[i] & groupbit:
+            t0, t1, t2 = v[i, 0], v[i, 1], v[i, 2]
+            if v_dim == 0:
+                t0 -= ramp[i]
+            elif v_dim == 1:
+                t1 -= ramp[i]
+            else:
+                t2 -= ramp[i]
+            m = mass[i]
+            out[0] += m * t0 * t0
+            out[1] += m * t1 * t1
+            out[2] += m * t2 * t2
+            out[3] += m * t0 * t1
+            out[4] += m * t0 * t2
+            out[5] += m * t1 * t2
+
+
+@njit(cache=True)
 def thermal_sum(v, ramp, mass, mask, groupbit, nlocal, v_dim):
     """sum m |v - u e|^2 over the owned particles of the group, in row order (LAMMPS's)."""
     total = 0.0
@@ -77,6 +102,7 @@ class ComputeTempRamp(Compute):
     name = "temp/ramp"
     gives_temperature = True
     usage = "compute ID GROUP temp/ramp vx|vy|vz VLO VHI x|y|z CLO CHI [units box|lattice]"
+    extensive_vector = True     # the kinetic tensor, as LAMMPS's extvector
     extra_dof = None        # compute_modify extra/dof (None: the dimension)
 
     class Args(StyleArgs):
@@ -103,6 +129,7 @@ class ComputeTempRamp(Compute):
         if not self.coord_hi != self.coord_lo:
             raise ScriptError(f"CLO and CHI must differ (got {args.clo:g} and {args.chi:g})")
         self.ramp = np.zeros(0)
+        self.tensor = np.zeros(6)
 
     def _ramp(self, sim):
         p = sim.particles
@@ -122,6 +149,15 @@ class ComputeTempRamp(Compute):
                                             p.nlocal, self.v_dim))
         dof = self.dof(sim)
         return twice_ke * sim.units.mvv2e / (dof * sim.units.boltz) if dof > 0 else 0.0
+
+    def vector(self, sim):
+        """c_ID[1..6] (LAMMPS's indices): the kinetic tensor about the ramp, sum m u_a u_b mvv2e (xx, yy,
+        zz, xy, xz, yz; energy units, extensive: divided by N where thermo normalises)."""
+        p = sim.particles
+        ramp = self._ramp(sim)
+        thermal_tensor(p.v, ramp, observables.masses(sim), p.mask, sim.groups.bit(self.group), p.nlocal,
+                       self.v_dim, self.tensor)
+        return np.asarray(sim.comm.sum(self.tensor), dtype=np.float64) * sim.units.mvv2e
 
     def velocity_bias(self, sim):
         """The ramp's velocity at each owned particle: the bias this temperature leaves out."""
