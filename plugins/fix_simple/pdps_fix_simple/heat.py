@@ -39,7 +39,8 @@ import math
 import numpy as np
 from numba import njit
 
-from pdps_core.api import FloatOrVariable, Fix, ScriptError, SimulationError, StyleArgs, VariableRef, keyword, observables, param
+from pdps_core.api import (FloatOrVariable, Fix, ScriptError, SimulationError, StyleArgs, VariableRef, keyword,
+                           observables, param)
 
 
 @njit(cache=True)

@@ -168,7 +168,8 @@ def test_a_lammps_ehex_source_and_hex_sink_are_reproduced_to_10_digits(tmp_path,
 
 def test_two_ranks_give_lammps_figures_too(tmp_path):
     """The reservoir's sums run over both ranks' particles."""
-    rows = thermo_rows(run_ranks(EHEX_SCRIPT.replace("thermo 50", "thermo 50\nthermo_modify format float %22.16g"), 2, tmp_path, dialect="lammps").stdout)
+    script = EHEX_SCRIPT.replace("thermo 50", "thermo 50\nthermo_modify format float %22.16g")
+    rows = thermo_rows(run_ranks(script, 2, tmp_path, dialect="lammps").stdout)
     assert [int(row[0]) for row in rows] == sorted(LAMMPS_EHEX)
     for row in rows:
         assert row[1:] == pytest.approx(LAMMPS_EHEX[int(row[0])], rel=1e-10), row[0]
