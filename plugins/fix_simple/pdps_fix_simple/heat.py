@@ -20,9 +20,16 @@ first application; intensive). A sink that would take more than the particles' t
 steps that are multiples of N.
 
 Compared with LAMMPS 22 Jul 2025 (plugins/fix_simple/tests/test_heat.py): a source and a sink of
-our own, one given by a variable, every 1 and every 2 steps, to 10 digits over 200 steps, on 1 and 2 ranks.
+our own, one given by a variable, every 1 and every 2 steps, to 10 digits over 200 steps, on 1 and 2 ranks;
+atom-style fluxes in a region and in the whole box, alike.
 
-Not supported: LAMMPS's atom-style variable EFLUX (a flux per atom), refused when the run starts.
+EFLUX as an atom-style variable ``v_NAME`` gives each particle i its own flux :math:`q_i`, as
+LAMMPS's: :math:`s_i^2 = (K + q_i N \Delta t - \tfrac12 M v_\mathrm{cm}^2)/(K - \tfrac12 M
+v_\mathrm{cm}^2)` with the reservoir's K, M and :math:`v_\mathrm{cm}`, and
+:math:`\mathbf{v}_i \leftarrow s_i \mathbf{v}_i - \sum_j (s_j - 1) m_j \mathbf{v}_j / M`: the momentum is
+kept, and the energy added is, to first order in dt, the mean of the :math:`q_i N \Delta t` weighted by
+each particle's share of the thermal kinetic energy (a uniform :math:`q_i = q` adds exactly what
+EFLUX q does). ``f_ID`` is then the mean of the :math:`s_i` of the last application.
 
 Syntax::
 
@@ -66,6 +73,26 @@ def scale_about(v, inside, nlocal, scale, vcm):
                 v[i, d] = scale * v[i, d] - (scale - 1.0) * vcm[d]
 
 
+@njit(cache=True)
+def scale_each(v, mass, inside, nlocal, scales, vsub):
+    """vsub <- sum (s_i - 1) v_i m_i over the owned particles ``inside`` (row order); the caller
+    divides it by M over all ranks and ``shift_each`` applies v <- s_i v - vsub."""
+    vsub[:] = 0.0
+    for i in range(nlocal):
+        if inside[i]:
+            for d in range(3):
+                vsub[d] += (scales[i] - 1.0) * v[i, d] * mass[i]
+
+
+@njit(cache=True)
+def shift_each(v, inside, nlocal, scales, vsub):
+    """v <- s_i v - vsub on the owned particles ``inside``."""
+    for i in range(nlocal):
+        if inside[i]:
+            for d in range(3):
+                v[i, d] = scales[i] * v[i, d] - vsub[d]
+
+
 def region_of(sim, fix_id, style, region):
     """The region a heat exchanger names, or the one-line error that it is not defined."""
     try:
@@ -90,15 +117,17 @@ class FixHeat(Fix):
         self.scale = 1.0
         self.sums = np.zeros(5)
         self.vcm = np.zeros(3)
+        self.vsub = np.zeros(3)
 
     def init_run(self, sim):
         flux = self.args.eflux
         if isinstance(flux, VariableRef):
             if flux.name not in sim.variables:
                 raise ScriptError(f"fix {self.id} heat: variable {flux.name} is not defined")
-            if sim.variables.style(flux.name) == "atom":
-                raise ScriptError(f"fix {self.id} heat: EFLUX v_{flux.name} is an atom-style variable (a flux per "
-                                  "particle), which pdps's fix heat does not take; give an equal-style one")
+            if sim.variables.style(flux.name) not in ("equal", "internal", "atom"):
+                raise ScriptError(f"fix {self.id} heat: EFLUX v_{flux.name} is a {sim.variables.style(flux.name)}-"
+                                  "style variable; give an equal-style or atom-style one (LAMMPS's 'Variable for "
+                                  "fix heat is invalid style')")
         if observables.count(sim, self.group) == 0:
             raise ScriptError(f"fix {self.id} heat: group {self.group} has no particles")
 
@@ -130,7 +159,11 @@ class FixHeat(Fix):
         ftm2v = sim.units.ftm2v
         # in mass * velocity^2, as LAMMPS: ke and heat times ftm2v (mvv2e ftm2v = 1)
         ke = twice_ke * (0.5 * sim.units.mvv2e) * ftm2v
-        heat = float(sim.evaluate(self.args.eflux)) * self.args.every * sim.dt * ftm2v
+        flux = self.args.eflux
+        if isinstance(flux, VariableRef) and sim.variables.style(flux.name) == "atom":
+            self.per_particle(sim, inside, mass, vcm, ke)
+            return
+        heat = float(sim.evaluate(flux)) * self.args.every * sim.dt * ftm2v
         drift = 0.5 * (vcm[0] * vcm[0] + vcm[1] * vcm[1] + vcm[2] * vcm[2]) * mass
         thermal = ke - drift
         if not thermal > 0.0:
@@ -145,6 +178,30 @@ class FixHeat(Fix):
         self.vcm[:] = vcm
         scale_about(sim.particles.v, inside, sim.particles.nlocal, self.scale, self.vcm)
 
+    def per_particle(self, sim, inside, mass, vcm, ke):
+        """An atom-style EFLUX: each particle's own factor s_i, the momentum kept by one shift."""
+        p = sim.particles
+        ftm2v = sim.units.ftm2v
+        heat = np.asarray(sim.variables.atom_values(self.args.eflux.name), dtype=np.float64)
+        heat = heat * self.args.every * sim.dt * ftm2v
+        drift = 0.5 * (vcm[0] * vcm[0] + vcm[1] * vcm[1] + vcm[2] * vcm[2]) * mass
+        thermal = ke - drift
+        if not thermal > 0.0:
+            raise SimulationError(f"fix {self.id} heat at step {sim.step}: the particles have no kinetic energy "
+                                  "about their centre of mass, which velocity scaling could change")
+        squares = (ke + heat - drift) / thermal
+        negative = inside & ~(squares >= 0.0)
+        if sim.comm.sum(int(negative.sum())):
+            raise SimulationError(f"fix {self.id} heat at step {sim.step}: the kinetic energy of a particle went "
+                                  "negative (its EFLUX takes more than the thermal kinetic energy; LAMMPS's 'Fix heat "
+                                  "kinetic energy of an atom went negative')")
+        scales = np.sqrt(np.where(inside, squares, 1.0))
+        scale_each(p.v, observables.masses(sim), inside, p.nlocal, scales, self.vsub)
+        self.vsub[:] = np.asarray(sim.comm.sum(self.vsub), dtype=np.float64) / mass
+        shift_each(p.v, inside, p.nlocal, scales, self.vsub)
+        count = sim.comm.sum(int(inside.sum()))
+        self.scale = float(sim.comm.sum(float(np.sum(scales[inside])))) / count if count else 0.0
+
     def scalar(self, sim):
-        """f_ID: the velocity scale factor of the last application."""
+        """f_ID: the velocity scale factor of the last application (an atom-style EFLUX: their mean)."""
         return self.scale

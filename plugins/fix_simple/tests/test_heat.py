@@ -99,13 +99,60 @@ def test_bad_arguments_are_refused_with_one_line(tmp_path, line, message):
     assert str(caught.value) == f"<command>:1: {message}"
 
 
-def test_an_atom_style_flux_and_an_undefined_variable_are_refused_when_the_run_starts(tmp_path):
-    sim = free_particles(tmp_path, "variable a atom 1.0\nfix h all heat 1 v_a")
-    with pytest.raises(ScriptError, match=r"^<command>:1: run: fix h heat: EFLUX v_a is an atom-style variable"):
+def test_a_string_flux_and_an_undefined_variable_are_refused_when_the_run_starts(tmp_path):
+    sim = free_particles(tmp_path, "variable a string hot\nfix h all heat 1 v_a")
+    with pytest.raises(ScriptError, match=r"^<command>:1: run: fix h heat: EFLUX v_a is a string-style variable; give "
+                                          r"an equal-style or atom-style one \(LAMMPS's 'Variable for fix heat is "
+                                          r"invalid style'\)$"):
         sim.command("run 1")
     sim = free_particles(tmp_path, "fix h all heat 1 v_missing")
     with pytest.raises(ScriptError, match=r"^<command>:1: run: fix h heat: variable missing is not defined$"):
         sim.command("run 1")
+
+
+def test_an_atom_style_flux_scales_each_particle_by_its_own_factor_and_keeps_the_momentum(tmp_path):
+    sim = free_particles(tmp_path, "variable q atom 2.0*x\nfix h all heat 1 v_q")
+    x, v0 = np.array(X), np.array(V)
+    m = np.array([MASSES[t] for t in TYPES])
+    ke = 0.5 * float(np.sum(m * np.sum(v0 * v0, axis=1)))
+    drift = 0.5 * float((m @ v0) @ (m @ v0)) / m.sum()
+    s = np.sqrt((ke + 2.0 * x[:, 0] * 0.01 - drift) / (ke - drift))
+    expected = s[:, None] * v0 - ((s - 1.0)[:, None] * v0 * m[:, None]).sum(axis=0) / m.sum()
+    sim.command("run 1")
+    v = by_tag(sim, sim.particles.v[:5])
+    assert v == pytest.approx(expected, rel=1e-13)
+    assert m @ v == pytest.approx(m @ v0, abs=1e-14)
+    assert sim.fix_value("h") == pytest.approx(s.mean(), rel=1e-14)
+
+
+def test_a_uniform_atom_style_flux_is_the_equal_style_one(tmp_path):
+    equal = free_particles(tmp_path, "fix h all heat 1 2.5")
+    atom = free_particles(tmp_path, "variable q atom 2.5\nfix h all heat 1 v_q")
+    equal.command("run 3")
+    atom.command("run 3")
+    assert by_tag(atom, atom.particles.v[:5]) == pytest.approx(by_tag(equal, equal.particles.v[:5]), rel=1e-14)
+
+
+def test_an_atom_style_sink_larger_than_the_thermal_energy_stops_the_run(tmp_path):
+    sim = free_particles(tmp_path, "variable q atom -1000*(x>5)\nfix h all heat 1 v_q")
+    with pytest.raises(SimulationError, match=r"fix h heat at step 1: the kinetic energy of a particle went negative"):
+        sim.command("run 1")
+
+
+# LAMMPS 22 Jul 2025 on this machine, this script (ours), thermo_modify format float %22.16g: EFLUX
+# atom-style in a region (every step) and in the whole box (every 2 steps).
+#   step temp etotal c_Thot c_Tcold f_hot f_cold
+LAMMPS_HEAT_ATOM = {
+    0: (1.200000000000001, -4.976883678254707, 1.230016263924002, 1.34684259883633, 1, 1),
+    50: (0.618131737977394, -4.986016736246104, 0.6736444503316347, 0.6148063343082361, 1.00000124659654,
+         0.9999998421169499),
+    100: (0.6546280776029199, -4.985671177778688, 0.6526286064042993, 0.6430530701015925, 1.000001315457056,
+          0.9999998503352586),
+    150: (0.6216841398981289, -4.986013091811913, 0.6043027198473875, 0.5493979654811295, 1.000001201650911,
+          0.9999998424043092),
+    200: (0.6355302960583292, -4.984849382566659, 0.5978724756834856, 0.6886447567004227, 1.000001263098704,
+          0.9999998454368698),
+}
 
 
 # LAMMPS 22 Jul 2025 on this machine, this script (ours), thermo_modify format float %22.16g:
@@ -164,3 +211,14 @@ def test_two_ranks_give_lammps_figures_too(tmp_path):
     assert [int(row[0]) for row in rows] == sorted(LAMMPS_HEAT)
     for row in rows:
         assert row[1:] == pytest.approx(LAMMPS_HEAT[int(row[0])], rel=1e-10), row[0]
+
+
+def test_a_lammps_run_with_atom_style_fluxes_is_reproduced_to_10_digits(tmp_path, monkeypatch):
+    script = HEAT_SCRIPT.replace("variable flux equal -0.5-0.001*step\n",
+                                 "variable q atom 0.02*(1+x/lx)\nvariable s atom -0.01*(1+y/ly)\n")
+    script = script.replace("fix hot all heat 1 0.5 region hot\nfix cold all heat 2 v_flux region cold",
+                            "fix hot all heat 1 v_q region hot\nfix cold all heat 2 v_s")
+    _, rows = lammps_thermo(tmp_path, monkeypatch, script)
+    assert [int(row[0]) for row in rows] == sorted(LAMMPS_HEAT_ATOM)
+    for row in rows:
+        assert [float(v) for v in row[1:]] == pytest.approx(LAMMPS_HEAT_ATOM[int(row[0])], rel=1e-10), row[0]
