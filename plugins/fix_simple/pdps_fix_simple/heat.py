@@ -13,8 +13,8 @@ conductivity by non-equilibrium MD, LAMMPS's KAPPA/in.heat).
 with K the particles' kinetic energy, M their mass and :math:`\mathbf{v}_\mathrm{cm}` their
 centre-of-mass velocity at the end of the step: the kinetic energy changes by exactly Q, the momentum
 not at all. EFLUX is in energy/time units; ``v_NAME`` (an equal-style variable) is evaluated at each
-application. The particles scaled are those of the group inside the region at that step (the region
-is read as it is then, moving or not). The fix's scalar ``f_ID`` is the last factor s (1 before the
+application (an atom-style one: below). The particles scaled are those of the group inside the
+region at that step (the region is read as it is then, moving or not). The fix's scalar ``f_ID`` is the last factor s (1 before the
 first application; intensive). A sink that would take more than the particles' thermal kinetic energy
 (s^2 < 0) stops the run, as LAMMPS's ("kinetic energy went negative"). Applied in ``end_of_step`` on
 steps that are multiples of N.
