@@ -10,14 +10,14 @@ conductivity by non-equilibrium MD, LAMMPS's KAPPA/in.heat).
     s = \sqrt{\frac{K + Q - \tfrac12 M v_\mathrm{cm}^2}{K - \tfrac12 M v_\mathrm{cm}^2}},
     \qquad Q = \mathrm{EFLUX}\; N\, \Delta t
 
-with K the particles' kinetic energy, M their mass and :math:`\mathbf{v}_\mathrm{cm}` their centre-of-
-mass velocity at the end of the step: the kinetic energy changes by exactly Q, the momentum not at all.
-EFLUX is in energy/time units; ``v_NAME`` (an equal-style variable) is evaluated at each application (an
-atom-style one: below). The particles scaled are those of the group inside the region at that step (the
-region is read as it is then, moving or not). The fix's scalar ``f_ID`` is the last factor s (1 before
-the first application; intensive). A sink that would take more than the particles' thermal kinetic
-energy (s^2 < 0) stops the run, as LAMMPS's ("kinetic energy went negative"). Applied in ``end_of_step``
-on steps that are multiples of N.
+with K the particles' kinetic energy, M their mass and :math:`\mathbf{v}_\mathrm{cm}` their
+centre-of-mass velocity at the end of the step: the kinetic energy changes by exactly Q, the momentum
+not at all. EFLUX is in energy/time units; ``v_NAME`` (an equal-style variable) is evaluated at each
+application (an atom-style one: below). The particles scaled are those of the group inside the region at
+that step (the region is read as it is then, moving or not). The fix's scalar ``f_ID`` is the last
+factor s (1 before the first application; intensive). A sink that would take more than the particles'
+thermal kinetic energy (s^2 < 0) stops the run, as LAMMPS's ("kinetic energy went negative"). Applied in
+``end_of_step`` on steps that are multiples of N.
 
 Compared with LAMMPS 22 Jul 2025 (plugins/fix_simple/tests/test_heat.py): a source and a sink of
 our own, one given by a variable, every 1 and every 2 steps, to 10 digits over 200 steps, on 1 and 2 ranks;
