@@ -7,7 +7,7 @@ reproduced to 10 digits."""
 import numpy as np
 import pytest
 
-from pdps_core.api import ScriptError
+from pdps_core.api import ScriptError, Simulation
 from pdps_core.testing import by_tag, lammps_thermo
 
 SETUP = """
@@ -80,6 +80,14 @@ def test_a_compute_that_is_no_temperature_and_gjf_with_a_bias_are_refused(make_s
     with pytest.raises(ScriptError, match=r"^<command>:1: fix_modify: fix l langevin gjf with a temperature that has "
                                           r"a bias \(Thot, temp/region\) is not supported; use gjf no$"):
         sim.command("fix_modify l temp Thot")
+
+
+def test_a_temperature_of_another_group_is_warned_of(tmp_path):
+    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
+    sim.command(SETUP + "group low region hot\nfix l low langevin 1.0 1.0 0.5 1234\nfix_modify l temp Thot")
+    sim.close()
+    assert ("WARNING: fix l langevin: temperature compute Thot is of group all, not the fix's low "
+            "(LAMMPS's fix_modify warns so too)") in (tmp_path / "log.case").read_text()
 
 
 def test_an_uncomputed_temperature_is_refused_when_the_run_starts(make_sim):
