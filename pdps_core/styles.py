@@ -1202,8 +1202,9 @@ class Compute(Style):
     peratom_tally: ClassVar[bool] = False
     # a total over particles (LAMMPS's extscalar): thermo divides it by the particle count when it
     # normalises energies (lj units), as LAMMPS does; variables read it as it is. A style whose array
-    # (ID[i][j]) is not, where its scalar is, sets extensive_array = False (LAMMPS's extarray), and
-    # one whose vector differs from its scalar so sets extensive_vector (LAMMPS's extvector)
+    # (ID[i][j]) is not, where its scalar is, sets extensive_array = False (LAMMPS's extarray); one
+    # whose vector (ID[i]) differs from its scalar sets extensive_vector (LAMMPS's extvector: a
+    # temperature's kinetic tensor is extensive where its scalar is not)
     extensive: ClassVar[bool] = False
     # what a thermostat or barostat may take the compute for (LAMMPS's tempflag, pressflag): a
     # temperature (scalar T, vector the kinetic tensor) or a pressure (scalar p, vector the tensor)

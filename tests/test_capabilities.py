@@ -47,7 +47,7 @@ def test_a_fix_holding_particles_and_computes_a_thermostat_reads_say_so():
                for flag in ("holds_at_rest", "gives_temperature", "gives_pressure")}
     assert flagged["holds_at_rest"] == ["freeze"]
     temperature, pressure = flagged["gives_temperature"], flagged["gives_pressure"]
-    assert (temperature, pressure) == (["temp", "temp/partial", "temp/region", "temp/sphere"], ["pressure"])
+    assert (temperature, pressure) == (["temp", "temp/partial", "temp/ramp", "temp/region", "temp/sphere"], ["pressure"])
 
 
 # another distribution's style tested by its name: what the capabilities replace

@@ -41,7 +41,6 @@ STYLE_ALTERNATIVES = {
     ("pair", "lj/cut/coul/cut"): "pdps has no charges: lj/cut for the Lennard-Jones part",
     ("pair", "lj/cut/coul/long"): "pdps has no charges: lj/cut for the Lennard-Jones part",
     ("pair", "lj/cut/coul/debye"): "pdps has no charges: lj/cut plus yukawa for screened charges",
-    ("pair", "lj/smooth/linear"): "lj/cut with pair_modify shift yes, or pair_style formula",
     ("pair", "lj96/cut"): "pair_style formula with the 9-6 law",
     ("pair", "buck"): "pair_style formula with the Buckingham law",
     ("pair", "born"): "pair_style formula with the Born-Mayer-Huggins law",

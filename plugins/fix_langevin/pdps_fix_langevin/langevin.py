@@ -50,6 +50,17 @@ yes`` is refused, as LAMMPS 22 Jul 2025 refuses it: ecouple carries the tally. W
 counts the force GJF's velocities feel, :math:`(\mathbf{F}^\mathrm{drag} + \beta^{n-1})\sqrt b`, against
 the half-step velocity, and a run starts from :math:`\Delta t\,P_0` rather than 0 (LAMMPS's sign).
 
+**A temperature with a bias** (``fix_modify ID temp CID``, as LAMMPS's): with a temperature compute
+that has a velocity bias (temp/partial, temp/region, temp/ramp), friction acts on each particle's
+velocity less the bias, and a component of that thermal velocity that is exactly 0 gets no noise
+(LAMMPS's remove_bias/restore_bias and its v = 0 test): temp/region thermostats only the group's
+particles inside the region at that step, temp/partial only its chosen components, temp/ramp the
+velocities about the ramp. A compute without a bias (temp) changes nothing, as in LAMMPS; the tally
+dots the forces with the full velocities, as LAMMPS's; a compute of another group than the fix's is
+warned of. Not supported with ``gjf`` (refused at the fix_modify line). Compared with LAMMPS 22 Jul
+2025 at T = 0 (friction alone): temp/region then temp/partial, with tally yes, thermo to 1e-10 over
+300 steps (plugins/fix_langevin/tests/test_langevin_temp.py).
+
 **Gronbech-Jensen-Farago** (``gjf vfull|vhalf``; Gronbech-Jensen & Farago, Mol. Phys. 111, 983
 (2013)): a discretisation of the Langevin equation that samples positions from the Boltzmann
 distribution at any stable time step (a harmonic well holds :math:`\langle x^2\rangle = k_BT/k`
@@ -98,6 +109,7 @@ Syntax::
 
     fix ID GROUP langevin T_START T_STOP DAMP SEED [scale TYPE RATIO]... [zero yes|no]
         [omega yes|no] [tally yes|no] [gjf no|vfull|vhalf]
+    fix_modify ID temp CID
 
 Example::
 
@@ -130,10 +142,12 @@ def friction_and_amplitude(m, ratio, damp, noise_scale):
 
 @njit(cache=True)
 def langevin_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_scale, ratio, seed, step,
-                    noise_sum, tally, flangevin):
+                    noise_sum, tally, flangevin, biased):
     """Friction -m v/(damp ratio) and noise sqrt(24 kT m/(dt damp ratio)) (u - 1/2), ``noise_scale``
     being sqrt(24 kT / (dt damp)) in force units; the noise added is summed into ``noise_sum`` (3,),
-    friction plus noise stored in ``flangevin`` when ``tally``."""
+    friction plus noise stored in ``flangevin`` when ``tally``. ``biased``: ``v`` holds the thermal
+    velocities (a temperature compute's bias taken off), and a component exactly 0 there gets no
+    noise (LAMMPS's test: a compute masks the particles it leaves out by v = 0)."""
     noise_sum[:] = 0.0
     for i in range(nlocal):
         if not mask[i] & groupbit:
@@ -141,6 +155,10 @@ def langevin_forces(v, f, tag, type_, mass, mask, groupbit, nlocal, damp, noise_
         friction, amplitude = friction_and_amplitude(mass[i], ratio[type_[i]], damp, noise_scale)
         u0, u1, u2, _ = particle_uniforms(seed, step, tag[i], STREAM)
         n0, n1, n2 = amplitude * (u0 - 0.5), amplitude * (u1 - 0.5), amplitude * (u2 - 0.5)
+        if biased:
+            n0 = 0.0 if v[i, 0] == 0.0 else n0
+            n1 = 0.0 if v[i, 1] == 0.0 else n1
+            n2 = 0.0 if v[i, 2] == 0.0 else n2
         d0, d1, d2 = -friction * v[i, 0], -friction * v[i, 1], -friction * v[i, 2]
         f[i, 0] += d0 + n0
         f[i, 1] += d1 + n1
@@ -317,12 +335,45 @@ class FixLangevin(Fix):
         self.noise_sum = np.zeros(3)
         self.no_forces = np.zeros((0, 3))
         self.last_target = None
+        self.temp_id = None          # fix_modify temp: the temperature compute whose bias is kept out
         self.energy_total = 0.0      # this rank's sum of dt P_n, from half a step before the run
         self.energy_onestep = 0.0    # this rank's P_n of the last step
         # per-particle arrays follow their particles through sorting and migration
         self.force_name = f"langevin_force_{id}"
         if args.tally or args.gjf == "vfull":
             self._fresh_array(self.force_name)
+
+    def modify_param(self, sim, keyword, value):
+        """``fix_modify ID temp CID``: the velocities the thermostat acts on are those about the
+        compute's bias (LAMMPS's remove_bias/restore_bias around the friction and the noise)."""
+        if keyword != "temp":
+            return super().modify_param(sim, keyword, value)
+        compute = sim.computes.get(value)
+        if compute is None:
+            raise ScriptError(f"compute {value} is not defined (temperature of fix {self.id})")
+        if not type(compute).gives_temperature:
+            raise ScriptError(f"compute {value} ({compute.name}) is not a temp compute, so it gives no temperature")
+        if self.gjf and hasattr(compute, "velocity_bias"):
+            raise ScriptError(f"fix {self.id} langevin gjf with a temperature that has a bias ({value}, "
+                              f"{compute.name}) is not supported; use gjf no")
+        if compute.group != self.group:
+            sim.warn(f"fix {self.id} langevin: temperature compute {value} is of group {compute.group}, not the "
+                     f"fix's {self.group} (LAMMPS's fix_modify warns so too)")
+        self.temp_id = value
+        return True
+
+    def init_run(self, sim):
+        if self.temp_id is not None and self.temp_id not in sim.computes:
+            raise ScriptError(f"fix {self.id}: its temperature compute {self.temp_id} is not defined")
+
+    def _thermal_velocities(self, sim):
+        """The owned particles' velocities less the named temperature compute's bias, or None where
+        there is no bias (no fix_modify temp, or a compute without one: LAMMPS's tbiasflag)."""
+        compute = sim.computes.get(self.temp_id) if self.temp_id is not None else None
+        if not hasattr(compute, "velocity_bias"):
+            return None
+        p = sim.particles
+        return p.v[:p.nlocal] - compute.velocity_bias(sim)
 
     def _fresh_array(self, name):
         p = self.sim.particles
@@ -354,8 +405,10 @@ class FixLangevin(Fix):
                        tally or self.args.gjf == "vfull", forces)
         else:
             noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp)) / ftm2v
-            langevin_forces(p.v, p.f, p.tag, p.type, mass, p.mask, groupbit, p.nlocal, self.args.damp * ftm2v,
-                            noise_scale, self.ratio, key, sim.step, self.noise_sum, tally, forces)
+            thermal = self._thermal_velocities(sim)
+            langevin_forces(p.v if thermal is None else thermal, p.f, p.tag, p.type, mass, p.mask, groupbit,
+                            p.nlocal, self.args.damp * ftm2v, noise_scale, self.ratio, key, sim.step,
+                            self.noise_sum, tally, forces, thermal is not None)
         if self.args.zero:
             # LAMMPS's zero yes: the mean random force of the group taken off each of its particles
             count = observables.count(sim, self.group)
@@ -431,6 +484,7 @@ class FixLangevinGJF(FixLangevin):
         self.gjfsib = math.sqrt(1.0 + half)
 
     def init_run(self, sim):
+        super().init_run(sim)
         if 2.0 * self.args.damp == sim.dt:
             raise ScriptError(f"fix {self.id} langevin gjf: DAMP must not be dt/2 (got {self.args.damp:g} "
                               f"with timestep {sim.dt:g}), which makes GJF's a = 0")

@@ -79,7 +79,7 @@ class FixDtReset(Fix):
         tmin: float | Literal["NULL"] = param(unit="time")
         tmax: float | Literal["NULL"] = param(unit="time")
         xmax: float = param(gt=0, unit="distance")
-        units: Literal["lattice", "box"] | None = keyword(None)
+        units: Literal["box", "lattice"] | None = keyword(None)
 
         @model_validator(mode="after")
         def _bounds(self):
