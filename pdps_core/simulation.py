@@ -236,13 +236,10 @@ class Simulation:
         return (0.0, 0.0) if forces is None else forces.single(int(bond_type), float(rsq))
 
     def interaction_energy(self):
-        """Inside a run: the pair and bond energy (energy units, all ranks) of the particles where they
-        stand now, on the last neighbor lists; the forces are recomputed into f, so a caller that
-        moves particles to probe the energy (fix numdiff) saves and restores f and x."""
-        integrator = self.run_state.integrator
-        if integrator is None:
+        """In a run: the pair and bond energy where the particles stand now, f recomputed (Verlet's)."""
+        if self.run_state.integrator is None:
             raise SimulationError("interaction_energy() is for styles inside a run")
-        return integrator.interaction_energy()
+        return self.run_state.integrator.interaction_energy()
 
     def bonds(self):
         """This rank's bonds as rows (i, j, type): i an owned row, j the nearest copy of its partner,

@@ -165,7 +165,7 @@ class _ThermoCompute:
     kind = "compute"
     group = "all"
     peratom = None
-    needs_energy = needs_virial = extensive = gives_temperature = gives_pressure = False
+    needs_energy = needs_virial = extensive = gives_temperature = gives_pressure = array_rows_vary = False
 
     def __init__(self, ident):
         self.id = ident
