@@ -13,6 +13,7 @@ from .capabilities import (ContactConduction, ContactRows, ContactTable, Contact
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
 from .errors import ScriptError, SimulationError
+from .named_temperature import NamedTemperature
 from .neighbor.neighbor import NeighborList
 from .pair_loop import generated_module
 from .random import pair_gaussian, pair_uniform, particle_gaussians, particle_uniforms, philox4x32
@@ -27,7 +28,7 @@ from .styles import (API_VERSION, Analyze, Bond, Compute, Dump, Fix, FloatOrVari
 
 __all__ = ["API_VERSION", "Analyze", "Bond", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactRows", "ContactTable", "ContactTimes",
            "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
-           "FloatOrVariable", "HOOKS", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
+           "FloatOrVariable", "HOOKS", "NamedTemperature", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "park_gaussian", "park_state", "park_uniform", "pair_uniform", "param", "parse_args",
            "particle_gaussians", "particle_uniforms", "PERATOM_REFERENCE", "PeratomReference", "peratom_column", "philox4x32", "registry",

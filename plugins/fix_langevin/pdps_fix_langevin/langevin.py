@@ -124,7 +124,7 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import (Fix, ScriptError, StyleArgs, keyword, observables, param, particle_gaussians,
+from pdps_core.api import (Fix, NamedTemperature, ScriptError, StyleArgs, keyword, observables, param, particle_gaussians,
                            particle_uniforms)
 
 STREAM = 1              # the translational noise
@@ -287,7 +287,7 @@ def gjf_report(v, f, lv, flangevin, franprev, mass, mask, groupbit, nlocal, half
                 lv[i, d] = kept
 
 
-class FixLangevin(Fix):
+class FixLangevin(NamedTemperature, Fix):
     name = "langevin"
     minimize_idle = True         # LAMMPS's fix langevin has no min_post_force (recorded: a minimization ignores it)
     usage = ("fix ID GROUP langevin T_START T_STOP DAMP SEED [scale TYPE RATIO]... [zero yes|no] "
@@ -335,7 +335,6 @@ class FixLangevin(Fix):
         self.noise_sum = np.zeros(3)
         self.no_forces = np.zeros((0, 3))
         self.last_target = None
-        self.temp_id = None          # fix_modify temp: the temperature compute whose bias is kept out
         self.energy_total = 0.0      # this rank's sum of dt P_n, from half a step before the run
         self.energy_onestep = 0.0    # this rank's P_n of the last step
         # per-particle arrays follow their particles through sorting and migration
@@ -343,37 +342,10 @@ class FixLangevin(Fix):
         if args.tally or args.gjf == "vfull":
             self._fresh_array(self.force_name)
 
-    def modify_param(self, sim, keyword, value):
-        """``fix_modify ID temp CID``: the velocities the thermostat acts on are those about the
-        compute's bias (LAMMPS's remove_bias/restore_bias around the friction and the noise)."""
-        if keyword != "temp":
-            return super().modify_param(sim, keyword, value)
-        compute = sim.computes.get(value)
-        if compute is None:
-            raise ScriptError(f"compute {value} is not defined (temperature of fix {self.id})")
-        if not type(compute).gives_temperature:
-            raise ScriptError(f"compute {value} ({compute.name}) is not a temp compute, so it gives no temperature")
+    def check_temperature(self, ident, compute):
         if self.gjf and hasattr(compute, "velocity_bias"):
-            raise ScriptError(f"fix {self.id} langevin gjf with a temperature that has a bias ({value}, "
+            raise ScriptError(f"fix {self.id} langevin gjf with a temperature that has a bias ({ident}, "
                               f"{compute.name}) is not supported; use gjf no")
-        if compute.group != self.group:
-            sim.warn(f"fix {self.id} langevin: temperature compute {value} is of group {compute.group}, not the "
-                     f"fix's {self.group} (LAMMPS's fix_modify warns so too)")
-        self.temp_id = value
-        return True
-
-    def init_run(self, sim):
-        if self.temp_id is not None and self.temp_id not in sim.computes:
-            raise ScriptError(f"fix {self.id}: its temperature compute {self.temp_id} is not defined")
-
-    def _thermal_velocities(self, sim):
-        """The owned particles' velocities less the named temperature compute's bias, or None where
-        there is no bias (no fix_modify temp, or a compute without one: LAMMPS's tbiasflag)."""
-        compute = sim.computes.get(self.temp_id) if self.temp_id is not None else None
-        if not hasattr(compute, "velocity_bias"):
-            return None
-        p = sim.particles
-        return p.v[:p.nlocal] - compute.velocity_bias(sim)
 
     def _fresh_array(self, name):
         p = self.sim.particles
@@ -405,7 +377,7 @@ class FixLangevin(Fix):
                        tally or self.args.gjf == "vfull", forces)
         else:
             noise_scale = math.sqrt(24.0 * kt / (sim.dt * self.args.damp)) / ftm2v
-            thermal = self._thermal_velocities(sim)
+            thermal = self.thermal_velocities(sim)
             langevin_forces(p.v if thermal is None else thermal, p.f, p.tag, p.type, mass, p.mask, groupbit,
                             p.nlocal, self.args.damp * ftm2v, noise_scale, self.ratio, key, sim.step,
                             self.noise_sum, tally, forces, thermal is not None)

@@ -7,7 +7,7 @@ r"""Fix ``temp/berendsen``: Berendsen's weak coupling of the group's temperature
     \lambda = \sqrt{1 + \frac{\Delta t}{\tau}\left(\frac{T_t}{T} - 1\right)}
 
 with T_t ramped from TSTART to TSTOP over the run (as temp/rescale) and T the group's temperature,
-or that of the temperature compute ``fix_modify ID temp CID`` names (named_temperature.py: a
+or that of the temperature compute ``fix_modify ID temp CID`` names (pdps_core's NamedTemperature: a
 compute's bias is kept out of the scaling, as LAMMPS's).
 
 Syntax::
@@ -22,9 +22,8 @@ DAMP the coupling time tau (time units). Example::
 
 import math
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, param
+from pdps_core.api import Fix, NamedTemperature, ScriptError, StyleArgs, param
 
-from .named_temperature import NamedTemperature
 
 
 class FixTempBerendsen(NamedTemperature, Fix):

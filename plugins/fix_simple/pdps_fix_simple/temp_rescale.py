@@ -8,7 +8,7 @@ its target, scale the velocities to bring it a fraction of the way there (LAMMPS
 
 with s the step and s_0, s_1 the run's first and last (or ``run ... start/stop``); T the group's
 temperature with d N - d degrees of freedom (LAMMPS's compute temp), or that of the temperature
-compute ``fix_modify ID temp CID`` names (named_temperature.py: a compute's bias is kept out of
+compute ``fix_modify ID temp CID`` names (pdps_core's NamedTemperature: a compute's bias is kept out of
 the scaling, as LAMMPS's).
 
 Syntax::
@@ -23,9 +23,8 @@ Example::
 
 import math
 
-from pdps_core.api import Fix, StyleArgs, param
+from pdps_core.api import Fix, NamedTemperature, StyleArgs, param
 
-from .named_temperature import NamedTemperature
 
 
 class FixTempRescale(NamedTemperature, Fix):
