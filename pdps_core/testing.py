@@ -433,6 +433,21 @@ def thermo_rows(text):
     return rows
 
 
+def assert_prints_as_lammps(tmp_path, script, lammps, *, rel=2e-8, abs=1e-12):
+    """Run ``script`` in LAMMPS's dialect with its log in ``tmp_path``: its thermo rows are ``lammps``
+    (the rows LAMMPS printed for it), as many and each to LAMMPS's printed digits. The log's text."""
+    log = Path(tmp_path) / "log.case"
+    sim = Simulation(screen=False, log=str(log), dialect="lammps")
+    sim.command(script)
+    sim.close()
+    text = log.read_text()
+    rows = thermo_rows(text)
+    assert len(rows) == len(lammps)
+    for got, want in zip(rows, lammps):
+        assert got == pytest.approx(want, rel=rel, abs=abs), want[0]
+    return text
+
+
 def logged_thermo(folder, script):
     """The thermo rows (an array, as printed) that ``script``, written to ``folder``/in.case and run
     from there as ``pdps run`` does, prints to its log."""

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation, SimulationError
-from pdps_core.testing import assert_force_is_minus_gradient, thermo_rows
+from pdps_core.testing import assert_prints_as_lammps, assert_force_is_minus_gradient
 
 DATA = Path(__file__).parent / "data"
 
@@ -114,10 +114,4 @@ FENE_LAMMPS = [
 
 def test_fene_chains_print_lammps_thermo(tmp_path):
     shutil.copy(DATA / "chains.data", tmp_path)
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(FENE.format(data=tmp_path / "chains.data"))
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(FENE_LAMMPS)
-    for got, want in zip(rows, FENE_LAMMPS):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, FENE.format(data=tmp_path / "chains.data"), FENE_LAMMPS)

@@ -6,7 +6,7 @@ SPHERES_2D_LAMMPS on this machine for SPHERES_3D and SPHERES_2D: granular gases 
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import script_error, thermo_rows
+from pdps_core.testing import assert_prints_as_lammps, script_error
 
 SPHERES_3D = """units lj
 atom_style sphere
@@ -76,13 +76,7 @@ SPHERES_2D_LAMMPS = [
 @pytest.mark.parametrize("script, lammps", [(SPHERES_3D, SPHERES_3D_LAMMPS), (SPHERES_2D, SPHERES_2D_LAMMPS)],
                          ids=["3d", "2d"])
 def test_temp_sphere_prints_lammps_numbers(tmp_path, script, lammps):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(script)
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(lammps)
-    for got, want in zip(rows, lammps):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, script, lammps)
 
 
 def test_temperature_is_the_formula_with_its_degrees_of_freedom():

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
-from pdps_core.testing import thermo_rows
+from pdps_core.testing import assert_prints_as_lammps
 
 LAMMPS_SCENE = """
 units lj
@@ -275,11 +275,5 @@ PAIR_LJ_LAMMPS = [
 @pytest.mark.parametrize("script, lammps", [(PAIR_SOFT, PAIR_SOFT_LAMMPS), (PAIR_LJ, PAIR_LJ_LAMMPS)],
                          ids=["soft", "lj_cut"])
 def test_adapted_pair_coefficients_give_lammps_thermo(tmp_path, script, lammps):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(script)
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(lammps)
-    for got, want in zip(rows, lammps):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, script, lammps)
 

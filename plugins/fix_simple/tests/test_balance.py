@@ -5,8 +5,7 @@ printed on this machine for BALANCE on one rank."""
 
 import pytest
 
-from pdps_core.api import Simulation
-from pdps_core.testing import script_error, thermo_rows
+from pdps_core.testing import assert_prints_as_lammps, script_error
 
 BALANCE = """units lj
 atom_style atomic
@@ -45,15 +44,8 @@ BALANCE_LAMMPS = [
 
 
 def test_balanced_run_prints_lammps_thermo(tmp_path):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(BALANCE)
-    sim.close()
-    text = (tmp_path / "log.case").read_text()
+    text = assert_prints_as_lammps(tmp_path, BALANCE, BALANCE_LAMMPS)
     assert text.count("Volume") == 2
-    rows = thermo_rows(text)
-    assert len(rows) == len(BALANCE_LAMMPS)
-    for got, want in zip(rows, BALANCE_LAMMPS):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
 
 
 SETUP = "dialect lammps\n" + BALANCE.split("comm_style")[0]
@@ -108,10 +100,4 @@ OUTPUTS_LAMMPS = [
 
 
 def test_fix_balance_outputs_are_lammps_on_one_rank(tmp_path):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(OUTPUTS)
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(OUTPUTS_LAMMPS)
-    for got, want in zip(rows, OUTPUTS_LAMMPS):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, OUTPUTS, OUTPUTS_LAMMPS)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import Simulation
-from pdps_core.testing import script_error, thermo_rows
+from pdps_core.testing import assert_prints_as_lammps, script_error, thermo_rows
 
 FRICTION = """units lj
 atom_style atomic
@@ -72,13 +72,7 @@ TSTAT_LAMMPS = [
 @pytest.mark.parametrize("script, lammps", [(FRICTION, FRICTION_LAMMPS), (TSTAT, TSTAT_LAMMPS)],
                          ids=["dpd_ext", "dpd_ext_tstat_overlay"])
 def test_friction_alone_gives_lammps_thermo(tmp_path, script, lammps):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(script)
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(lammps)
-    for got, want in zip(rows, lammps):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, script, lammps)
 
 
 NOISY = """units lj

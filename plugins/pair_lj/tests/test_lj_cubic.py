@@ -3,12 +3,9 @@
 LAMMPS 22 Jul 2025 printed LJ_CUBIC_LAMMPS on this machine for LJ_CUBIC (two types, mixed
 geometrically and then arithmetically)."""
 
-import math
-
 import pytest
 
-from pdps_core.api import Simulation
-from pdps_core.testing import assert_force_is_minus_gradient, script_error, thermo_rows, two_type_cluster
+from pdps_core.testing import assert_prints_as_lammps, assert_force_is_minus_gradient, script_error, two_type_cluster
 
 LJ_CUBIC = """units metal
 atom_style atomic
@@ -46,13 +43,7 @@ LJ_CUBIC_LAMMPS = [
 
 
 def test_lj_cubic_prints_lammps_thermo(tmp_path):
-    sim = Simulation(screen=False, log=str(tmp_path / "log.case"), dialect="lammps")
-    sim.command(LJ_CUBIC)
-    sim.close()
-    rows = thermo_rows((tmp_path / "log.case").read_text())
-    assert len(rows) == len(LJ_CUBIC_LAMMPS)
-    for got, want in zip(rows, LJ_CUBIC_LAMMPS):
-        assert got == pytest.approx(want, rel=2e-8, abs=1e-12), want[0]
+    assert_prints_as_lammps(tmp_path, LJ_CUBIC, LJ_CUBIC_LAMMPS)
 
 
 def _law(r, epsilon=1.0, sigma=1.0):
