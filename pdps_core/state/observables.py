@@ -119,8 +119,7 @@ def degrees_of_freedom(sim, group="all", extra=None):
     0 for a group with particles is an error, as LAMMPS's compute temp ("Temperature compute degrees
     of freedom < 0"): the fixes remove more than the group has; an empty group has 0."""
     d = sim.dimension
-    removing = [(fix, int(fix.dof_removed(sim, group))) for fix in sim.fixes.values()
-                if hasattr(fix, "dof_removed")]
+    removing = _removing(sim, group)
     members = count(sim, group)
     removed = sum(n for _, n in removing)
     dof = d * members - (d if extra is None else extra) - removed
@@ -132,6 +131,15 @@ def degrees_of_freedom(sim, group="all", extra=None):
         error.agreed = True
         raise error
     return max(dof, 0)
+
+
+def _removing(sim, group):
+    return [(fix, int(fix.dof_removed(sim, group))) for fix in sim.fixes.values() if hasattr(fix, "dof_removed")]
+
+
+def dof_removed(sim, group="all"):
+    """The degrees of freedom the fixes remove from ``group`` (``Fix.dof_removed``; global count)."""
+    return sum(n for _, n in _removing(sim, group))
 
 
 def compute_dof(sim, compute):

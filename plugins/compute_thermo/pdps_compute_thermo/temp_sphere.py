@@ -68,8 +68,7 @@ class ComputeTempSphere(Compute):
         if self.rotate_only:
             per_sphere, per_point = per_sphere - sim.dimension, 0
         counted = sim.comm.sum(per_sphere * spheres + per_point * points)
-        removed = sum(int(fix.dof_removed(sim, self.group)) for fix in sim.fixes.values()
-                      if hasattr(fix, "dof_removed"))
+        removed = observables.dof_removed(sim, self.group)
         extra = sim.dimension if self.extra_dof is None else self.extra_dof
         return counted - extra - removed
 
