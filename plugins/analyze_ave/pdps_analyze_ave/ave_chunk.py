@@ -169,15 +169,6 @@ class FixAveChunk(WindowCombination, Fix):
         if self.chunk.holders.pop(self.id, None) is not None and not self.chunk.holders:
             self.chunk.locked = False
 
-    def needs(self, step):
-        if step != self.schedule.due or not self.references:
-            return set()
-        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
-
-    def setup(self, sim):
-        self.schedule.run_setup(sim.step)
-        self.end_of_step(sim)
-
     def end_of_step(self, sim):
         step = sim.step
         if step != self.schedule.due:

@@ -140,7 +140,17 @@ class WindowCombination:
     """``ave one|running|window M`` over the averages of successive windows (LAMMPS's ave/spatial,
     ave/chunk) and the file written at each: the class sets ``self.args`` (with ``ave``, ``title1``..3,
     ``overwrite``), ``self.path``, ``self.root`` and ``self.window_average``, and says in
-    ``_table(mean)`` how a combined mean becomes the output rows."""
+    ``_table(mean)`` how a combined mean becomes the output rows; with its ``self.schedule`` and
+    per-atom ``self.references`` it also gets the samples' step logic (``needs``, ``setup``)."""
+
+    def needs(self, step):
+        if step != self.schedule.due or not self.references:
+            return set()
+        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
+
+    def setup(self, sim):
+        self.schedule.run_setup(sim.step)
+        self.end_of_step(sim)
 
     def _combine(self):
         """This window's average combined as ``ave`` says; ``self.average`` the output table."""
@@ -298,15 +308,6 @@ class AveSpace(WindowCombination):
         return np.ravel_multi_index(index, self.layers)
 
     # ---- the timestep -----------------------------------------------------------------------------
-    def needs(self, step):
-        if step != self.schedule.due or not self.references:
-            return set()
-        return set().union(*(reference.needs(self.sim) for reference in self.references.values()))
-
-    def setup(self, sim):
-        self.schedule.run_setup(sim.step)
-        self.end_of_step(sim)
-
     def end_of_step(self, sim):
         step = sim.step
         if step != self.schedule.due:
