@@ -132,9 +132,11 @@ class Watchdog(threading.Thread):
             if cpu < self.limit and not idle(clock, now, cpu, self.limit):
                 continue
             # advancing over the last 1.5 s of CPU time (on a busy machine as many steps as on an
-            # idle one) and over the limit's span on the clock (a case idle that long is not)
+            # idle one) and over the last half of the limit's span on the clock: the idle test fires
+            # when the case has waited nearly the whole span, so the whole span can still hold the
+            # last step it made before it stopped (a hang then read as a long run)
             by_cpu = [step for _, t, step in samples if t >= cpu - 1.5 and step is not None]
-            by_clock = [step for t, _, step in samples if t >= now - self.limit and step is not None]
+            by_clock = [step for t, _, step in samples if t >= now - 0.5 * self.limit and step is not None]
             last = getattr(sim, "run_last_step", None)
             # across runs too: a loop of short runs (``variable i loop 100000`` ... ``jump``) advances
             stepping = all(len(r) >= 2 and r[-1] > r[0] for r in (by_cpu, by_clock))
