@@ -83,6 +83,7 @@ class Minimizer(Verlet):
             shrink_wrap(sim)            # as a run's rebuild: a shrink-wrapped box follows the particles
             sim.comm.exchange(particles, sim.box, sim.step)
             self._reneighbor()
+            self._follow_wrapped_x0()
         else:
             sim.comm.forward_comm(particles, self.forward)
         self._forces(eflag=True, vflag=True)
@@ -91,6 +92,22 @@ class Minimizer(Verlet):
         self._check_finite()
         self.neval += 1
         return observables.potential_energy(sim) / self._norm()
+
+    def _follow_wrapped_x0(self):
+        """After a rebuild wrapped particles across periodic faces, their line-search origins follow
+        by whole box lengths (LAMMPS's FixMinimize::reset_coords), so that x0 + alpha h is the same
+        point and the next evaluation does not read the wrap as a move past the skin."""
+        sim, p = self.sim, self.sim.particles
+        n = p.nlocal
+        x0, x = p.arrays["minimize_x0"][:n], p.x[:n]
+        for d in range(3):
+            if not sim.box.periodic[d]:
+                continue
+            length = sim.box.length[d]
+            delta = x[:, d] - x0[:, d]
+            wrapped = np.abs(delta) > 0.5 * length
+            if wrapped.any():
+                x0[wrapped, d] = x[wrapped, d] - (delta[wrapped] - length * np.round(delta[wrapped] / length))
 
     def _dot(self, a, b):
         return float(self.sim.comm.sum(float(np.einsum("ij,ij->", a, b))))
