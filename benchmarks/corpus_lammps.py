@@ -14,7 +14,9 @@ the field and OUT_OF_FIELD says why each other folder is out; docs/lammps.md sho
 
 How each script runs, unmodified but for two things done alike in both programs:
 - Long runs are cut: a ``run N`` with N above ``--steps`` (5000) runs that many steps (a literal N,
-  or a ``${name}`` whose ``variable name equal|index`` line gives a number). Where LAMMPS refuses the
+  or a ``${name}`` whose ``variable name equal|index`` line gives a number; where its line works it
+  out from numbers and other such variables, ``floor(${tprod}/${dt})``, the run line itself is cut
+  and the variable keeps its value for the script's other uses). Where LAMMPS refuses the
   cut script (an average falling due past the cut), both programs run it whole.
 - Seed set k > 0 replaces each seed of the script (``velocity create``, ``fix langevin``, ``fix
   pour``, ``pair_style dpd*``, ``create_atoms random``, ``fix wall/reflect/stochastic``, ...; where
@@ -51,6 +53,7 @@ Not part of ``make test``: a full run takes about an hour on this 2-core machine
 import argparse
 import itertools
 import json
+import math
 import re
 import shutil
 import statistics
@@ -223,6 +226,32 @@ def variables(lines):
     return found
 
 
+def evaluated(lines, name, depth=0):
+    """The number a ``variable NAME equal EXPRESSION`` line gives where its expression is
+    arithmetic of numbers and other such variables (``floor(${tprod}/${dt})``), else None."""
+    rows = [line.split("#")[0].split() for line in lines]
+    row = next((words for words in rows if len(words) >= 4 and words[0] == "variable" and words[1] == name
+                and words[2] in ("equal", "index")), None)
+    if row is None or depth > 20:
+        return None
+    expression = " ".join(row[3:]).strip("\"'")
+
+    def value(match):
+        found = evaluated(lines, match.group(1) or match.group(2), depth + 1)
+        if found is None:
+            raise ValueError(match.group(0))
+        return repr(found)
+
+    try:
+        expression = re.sub(r"\$\{(\w+)\}|\$(\w)", value, expression)
+        if not re.fullmatch(r"[-+*/^().\deE\s]*", re.sub(r"\b(floor|ceil|sqrt)\(", "(", expression)):
+            return None
+        return float(eval(expression.replace("^", "**"), {"__builtins__": {}},
+                          {"floor": math.floor, "ceil": math.ceil, "sqrt": math.sqrt}))
+    except (ValueError, SyntaxError, ZeroDivisionError, TypeError, OverflowError):
+        return None
+
+
 def seed_places(lines):
     """(line index, word index) of every seed of the script, a ``${name}`` resolved to its variable."""
     places, named = [], variables(lines)
@@ -272,6 +301,10 @@ def prepared(text, k, steps):
             if value > steps:
                 lines[at] = replace_word(lines[at], 3, str(steps))
         elif re.fullmatch(r"\d+", word) and int(word) > steps:
+            lines[i] = replace_word(line, 1, str(steps))
+        elif match and (evaluated(lines, match.group(1) or match.group(2)) or 0.0) > steps:
+            # a length worked out from other variables: the run line itself is cut, the variable
+            # keeps its value for the script's other uses
             lines[i] = replace_word(line, 1, str(steps))
     return "\n".join(lines) + "\n"
 

@@ -42,6 +42,21 @@ def test_long_runs_are_cut_and_short_ones_kept():
     assert tool.prepared(SCRIPT, 0, None).splitlines()[1] == "variable n equal 20000"
 
 
+def test_a_run_length_worked_out_from_variables_is_cut_at_the_run_line():
+    script = """variable dt equal 0.007
+variable tprod equal 5000
+variable Nprod equal floor(${tprod}/${dt})
+variable short equal ${tprod}/10
+variable unknown equal v_x*1000000
+run ${Nprod}
+run ${short}
+run ${unknown}
+"""
+    lines = tool.prepared(script, 0, 5000).splitlines()
+    assert lines[2] == "variable Nprod equal floor(${tprod}/${dt})"
+    assert lines[5:8] == ["run 5000", "run ${short}", "run ${unknown}"]
+
+
 def test_thermo_rows_by_name_without_the_clock():
     screen = """   Step          Temp          CPU           Press
          0   1.5            0             -4.97
