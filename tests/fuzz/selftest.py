@@ -49,7 +49,9 @@ class Misbehave(Fix):
         elif mode == "descheduled" and not getattr(self, "was_throttled", False):
             self.was_throttled = True
             pid = os.getpid()
-            throttle = subprocess.Popen(["sh", "-c", f"while true; do kill -STOP {pid}; sleep 0.3; "
+            # the loop ends with the case: a watchdog's kill skips the finally below, and a loop left
+            # running would stop whatever process takes the pid next
+            throttle = subprocess.Popen(["sh", "-c", f"while kill -STOP {pid} 2>/dev/null; do sleep 0.3; "
                                                      f"kill -CONT {pid}; sleep 0.1; done"])
             try:
                 until = time.process_time() + 3.0
