@@ -23,6 +23,14 @@ force evaluation, the setup's included, and its energy joins the minimized one a
 energy yes``; integrators, thermostats and the fixes LAMMPS leaves out (``minimize_idle``: gravity,
 freeze, langevin, granular walls) are not called at all; any other fix that changes forces is
 refused at the ``minimize`` line.
+
+Fixes may add global degrees of freedom to the search (LAMMPS's extra global dof: fix box/relax's
+box lengths): a fix with ``min_dof`` > 0 gives their energy and forces in ``min_energy(sim, fextra)``
+(energy units; joined to the minimized energy, its forces to every dot product and norm), keeps the
+line search's starting point in ``min_store(sim)``, moves them (and the particles with them) to the
+start plus ``alpha`` times its direction in ``min_step(sim, alpha, hextra)``, bounds the step in
+``max_alpha(hextra)``, and may reset its reference after a successful line search in
+``min_reset_ref(sim)`` (True: the energy is evaluated again). cg and sd only, as LAMMPS.
 """
 
 import math
@@ -66,6 +74,9 @@ class Minimizer(Verlet):
         super().__init__(sim)
         self.settings = settings
         self.neval = 0
+        self.extra = []
+        self.fextra = self.gextra = self.hextra = np.zeros(0)
+        self.box0_length = sim.box.length.copy()
         self.last_thermo = None
 
     # ---- energy and forces ----------------------------------------------------------------------
@@ -77,9 +88,12 @@ class Minimizer(Verlet):
         return float(max(sim.comm.sum(sim.particles.nlocal), 1)) if norm else 1.0
 
     def energy_force(self):
-        """Forces and the energy (per particle where thermo normalises) at the current positions."""
+        """Forces and the energy (per particle where thermo normalises) at the current positions,
+        the extra degrees of freedom's energy with it (their forces in ``self.fextra``)."""
         sim, particles = self.sim, self.sim.particles
-        if sim.neighbor.decide(particles, sim.comm):
+        # a box a fix changed shifts every periodic image: ghosts made again with the new lengths
+        box_changed, sim.run_state.box_changed = sim.run_state.box_changed, False
+        if sim.neighbor.decide(particles, sim.comm) or box_changed:
             shrink_wrap(sim)            # as a run's rebuild: a shrink-wrapped box follows the particles
             sim.comm.exchange(particles, sim.box, sim.step)
             self._reneighbor()
@@ -91,7 +105,14 @@ class Minimizer(Verlet):
         self._fix_contributions()
         self._check_finite()
         self.neval += 1
-        return observables.potential_energy(sim) / self._norm()
+        return self._energy()
+
+    def _energy(self):
+        """The minimized energy of the forces just computed: pe and the extra dof's."""
+        energy = observables.potential_energy(self.sim)
+        for fix, part in self.extra:
+            energy += fix.min_energy(self.sim, self.fextra[part])
+        return energy / self._norm()
 
     def _follow_wrapped_x0(self):
         """After a rebuild wrapped particles across periodic faces, their line-search origins follow
@@ -103,7 +124,8 @@ class Minimizer(Verlet):
         for d in range(3):
             if not sim.box.periodic[d]:
                 continue
-            length = sim.box.length[d]
+            # the origins are positions in the box of the search's start (LAMMPS's box_swap)
+            length = self.box0_length[d]
             delta = x[:, d] - x0[:, d]
             wrapped = np.abs(delta) > 0.5 * length
             if wrapped.any():
@@ -116,8 +138,26 @@ class Minimizer(Verlet):
     def _step(self, alpha):
         p = self.sim.particles
         n = p.nlocal
-        p.x[:n] = p.arrays["minimize_x0"][:n] + alpha * p.arrays["minimize_h"][:n]
+        if not self.extra:
+            p.x[:n] = p.arrays["minimize_x0"][:n] + alpha * p.arrays["minimize_h"][:n]
+            return self.energy_force()
+        # as LAMMPS's alpha_step: back to the start, then the fixes' step (which carries the
+        # particles with the box), then the particles' own
+        for fix, part in self.extra:
+            fix.min_step(self.sim, 0.0, self.hextra[part])
+        p.x[:n] = p.arrays["minimize_x0"][:n]
+        if alpha > 0.0:
+            for fix, part in self.extra:
+                fix.min_step(self.sim, alpha, self.hextra[part])
+            p.x[:n] += alpha * p.arrays["minimize_h"][:n]
         return self.energy_force()
+
+    def _success(self, ecurrent):
+        """A line search's end: a fix resetting its reference (box/relax nreset) evaluates again."""
+        if any([fix.min_reset_ref(self.sim) for fix, _ in self.extra]):
+            ecurrent = self.energy_force()
+            self.neval -= 1         # LAMMPS counts the line search's steps, not this evaluation
+        return ecurrent, None
 
     def linemin(self, eoriginal):
         """(energy, status): LAMMPS's linemin_quadratic or linemin_backtrack along h."""
@@ -125,20 +165,27 @@ class Minimizer(Verlet):
         p = sim.particles
         norm = self._norm()
         # particles' arrays are new after every rebuild of the ghosts: read them after each step
-        fdothall = self._dot(p.f[:p.nlocal], self._vector("minimize_h")) / norm
+        fdothall = (self._dot(p.f[:p.nlocal], self._vector("minimize_h")) + float(self.fextra @ self.hextra)) / norm
         if fdothall <= 0.0:
             return eoriginal, "downhill"
         h = self._vector("minimize_h")
         hmaxall = float(sim.comm.max(float(np.abs(h).max()) if len(h) else 0.0))
+        alphamax = min(ALPHA_MAX, self.settings.dmax / hmaxall) if hmaxall > 0.0 else ALPHA_MAX
+        for fix, part in self.extra:
+            alphamax = min(alphamax, fix.max_alpha(self.hextra[part]))
+        if len(self.hextra):
+            hmaxall = max(hmaxall, float(np.abs(self.hextra).max()))
         if hmaxall == 0.0:
             return eoriginal, "zeroforce"
-        alphamax = min(ALPHA_MAX, self.settings.dmax / hmaxall)
+        self.box0_length = sim.box.length.copy()
+        for fix, _ in self.extra:
+            fix.min_store(sim)
         self._vector("minimize_x0")[:] = p.x[:p.nlocal]
         alpha, alphaprev, engprev, fhprev = alphamax, 0.0, eoriginal, fdothall
         while True:
             ecurrent = self._step(alpha)
             if self.settings.line == "quadratic":
-                fh = self._dot(p.f[:p.nlocal], self._vector("minimize_h")) / norm
+                fh = (self._dot(p.f[:p.nlocal], self._vector("minimize_h")) + float(self.fextra @ self.hextra)) / norm
                 delfh = fh - fhprev
                 if abs(fh) < EPS_QUAD or abs(delfh) < EPS_QUAD:
                     return self._step(0.0), "zeroquad"
@@ -147,11 +194,11 @@ class Minimizer(Verlet):
                 if relerr <= QUADRATIC_TOL and 0.0 < alpha0 < alphamax:
                     ecurrent = self._step(alpha0)
                     if ecurrent - eoriginal < EMACH:
-                        return ecurrent, None
+                        return self._success(ecurrent)
                 fhprev, engprev = fh, ecurrent
             de_ideal = -BACKTRACK_SLOPE * alpha * fdothall
             if ecurrent - eoriginal <= de_ideal:
-                return ecurrent, None
+                return self._success(ecurrent)
             alphaprev = alpha
             alpha *= ALPHA_REDUCE
             if alpha <= 0.0 or de_ideal >= -EMACH:
@@ -177,9 +224,10 @@ class Minimizer(Verlet):
         sim = self.sim
         for name in ("minimize_g", "minimize_h", "minimize_x0", "minimize_v"):
             sim.particles.request(name, 3, replicate="copy")     # worked out anew by each minimize
+        self._extra_dof()
         self.setup()
         n = sim.particles.nlocal
-        ecurrent = observables.potential_energy(sim) / self._norm()
+        ecurrent = self._energy()
         self.neval = 0
         sim.output.setup(sim.step, sim.step + maxiter)
         initial = previous = ecurrent
@@ -194,8 +242,10 @@ class Minimizer(Verlet):
         if self.last_thermo != sim.step:        # the last iteration may have written it already
             sim.output.write(sim.step, sim.step)
         sim.neighbor.mark_current(sim.particles)
-        fnorm = math.sqrt(self._dot(sim.particles.f[:sim.particles.nlocal], sim.particles.f[:sim.particles.nlocal]))
+        fnorm = math.sqrt(self._dot(sim.particles.f[:sim.particles.nlocal], sim.particles.f[:sim.particles.nlocal])
+                          + float(self.fextra @ self.fextra))
         fmax = float(sim.comm.max(float(np.abs(sim.particles.f[:sim.particles.nlocal]).max()) if n else 0.0))
+        fmax = max([fmax] + [abs(float(value)) for value in self.fextra])
         sim.output.message(f"Loop time of {loop:g} on {sim.comm.nprocs} procs for {iterations} steps with "
                            f"{int(sim.comm.sum(sim.particles.nlocal))} particles")
         sim.output.message("Minimization stats:")
@@ -207,6 +257,24 @@ class Minimizer(Verlet):
         self.result = {"stop": stop, "initial": initial, "final": ecurrent, "iterations": iterations,
                        "evaluations": self.neval, "fnorm": fnorm, "energies": self.energies}
         return self.result
+
+    def _extra_dof(self):
+        """The fixes' extra global degrees of freedom (LAMMPS's nextra_global): each fix's slice of
+        fextra, gextra and hextra."""
+        sim = self.sim
+        self.extra, start = [], 0
+        for fix in sim.fixes.values():
+            dof = int(getattr(fix, "min_dof", 0))
+            if dof:
+                self.extra.append((fix, slice(start, start + dof)))
+                start += dof
+        if start and self.settings.style == "fire":
+            raise ScriptError(f"min_style fire cannot minimize with fix {self.extra[0][0].id} "
+                              f"({self.extra[0][0].name}): use cg or sd (as LAMMPS)")
+        self.fextra, self.gextra, self.hextra = np.zeros(start), np.zeros(start), np.zeros(start)
+        self.box0_length = sim.box.length.copy()
+        if start:
+            sim.warn(f"Energy due to {start} extra global DOFs will be included in minimizer energies")
 
     def _converged(self, ecurrent, eprevious, etol):
         return abs(ecurrent - eprevious) < etol * 0.5 * (abs(ecurrent) + abs(eprevious) + EPS_ENERGY)
@@ -220,10 +288,11 @@ class Minimizer(Verlet):
     def _cg(self, etol, ftol, maxiter, maxeval, ecurrent):
         sim = self.sim
         p = sim.particles
-        nlimit = max(1, 3 * int(sim.comm.sum(p.nlocal)))
+        nlimit = max(1, 3 * int(sim.comm.sum(p.nlocal)) + len(self.fextra))
         self._vector("minimize_g")[:] = p.f[:p.nlocal]
         self._vector("minimize_h")[:] = p.f[:p.nlocal]
-        gg = self._dot(self._vector("minimize_g"), self._vector("minimize_g"))
+        self.gextra[:] = self.hextra[:] = self.fextra
+        gg = self._dot(self._vector("minimize_g"), self._vector("minimize_g")) + float(self.fextra @ self.fextra)
         eprevious = ecurrent
         for iteration in range(1, maxiter + 1):
             sim.run_state.step += 1
@@ -237,7 +306,8 @@ class Minimizer(Verlet):
             if self._converged(ecurrent, eprevious, etol):
                 return "etol", iteration, ecurrent, eprevious
             f, g, h = p.f[:p.nlocal], self._vector("minimize_g"), self._vector("minimize_h")
-            ff, fg = self._dot(f, f), self._dot(f, g)
+            ff = self._dot(f, f) + float(self.fextra @ self.fextra)
+            fg = self._dot(f, g) + float(self.fextra @ self.gextra)
             if ff < ftol * ftol:
                 return "ftol", iteration, ecurrent, eprevious
             beta = 0.0 if self.settings.style == "sd" else max(0.0, (ff - fg) / gg)
@@ -246,8 +316,11 @@ class Minimizer(Verlet):
             gg = ff
             g[:] = f
             h[:] = g + beta * h
-            if self._dot(g, h) <= 0.0:
+            self.gextra[:] = self.fextra
+            self.hextra[:] = self.gextra + beta * self.hextra
+            if self._dot(g, h) + float(self.gextra @ self.hextra) <= 0.0:
                 h[:] = g
+                self.hextra[:] = self.gextra
             self._thermo()
         return "maxiter", maxiter, ecurrent, eprevious
 

@@ -62,7 +62,6 @@ STYLE_ALTERNATIVES = {
        for kind, name in (("fix", "nve/asphere"), ("fix", "nve/asphere/noforce"), ("fix", "nve/line"),
                           ("compute", "erotate/asphere"))},
     ("fix", "poems"): "pdps has no POEMS coupling: fix rigid",
-    ("fix", "box/relax"): "none in pdps",
 }
 
 # LIGGGHTS's styles for what pdps does not simulate
