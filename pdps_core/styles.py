@@ -1096,7 +1096,10 @@ class Fix(Style):
     fixes with a min_post_force: addforce, setforce, walls...). A fix that changes forces in a run
     (``pre_force``, ``post_force``) but does nothing in a minimization, as LAMMPS leaves its fix out
     (gravity, langevin, granular walls), sets ``minimize_idle = True``; a force fix that says neither
-    is refused by ``minimize``, at its line, rather than silently left out.
+    is refused by ``minimize``, at its line, rather than silently left out. A fix adding global
+    degrees of freedom to the search (fix box/relax's box lengths: LAMMPS's min_dof, min_energy,
+    min_store, min_step, max_alpha, min_reset_ref) sets ``min_dof`` and defines those methods as
+    pdps_core/run/minimize.py's docstring says.
 
     ``modify_param(sim, keyword, value)``: a ``fix_modify ID keyword value`` other than energy and
     virial (LAMMPS's modify_param); returns True when the fix took it, False for an unknown keyword.
