@@ -74,3 +74,23 @@ def test_runs_part_beyond_one_unit_of_the_eighth_digit():
     close = {"rows": {"1:0": {"Temp": 1.2345679}, "1:50": {"Temp": 0.98765433}, "2:0": {"Temp": 0.5000002}}}
     assert tool.parting(one, close) == ("2:0", "Temp", 0.5, 0.5000002, 2)
     assert tool.parting(one, one)[0] is None
+
+
+def test_a_flagged_script_is_measured_again_on_more_seed_sets(monkeypatch):
+    import numpy as np
+    generator = np.random.default_rng(5)
+
+    def fake_run(command, examples, script, k, steps, timeout, label):
+        # pdps's runs sit 0.5 standard deviations off LAMMPS's: no real difference the larger test sees
+        shift = 0.5 if label == "pdps" else 0.0
+        rows = {f"1:{s}": {"Temp": 1.0 + shift + float(generator.normal())} for s in (0, 100, 200)}
+        return {"ok": True, "rows": rows, "label": label, "k": k}
+
+    monkeypatch.setattr(tool, "run_script", fake_run)
+    entry = {"reference": [fake_run(None, None, None, k, 0, 0, "lammps") for k in range(5)],
+             "pdps": [fake_run(None, None, None, k, 0, 0, "pdps") for k in (0, 100, 101)], "twin": None}
+    tool.confirm(entry, ["lmp"], ["pdps"], None, "x/in.x", 5000, 60)
+    assert [run["k"] for run in entry["reference"]] == list(range(10))
+    assert [run["k"] for run in entry["pdps"]] == [0, 100, 101, 102, 103]
+    how, _, detail = entry["agreement"]
+    assert how == "statistics" and "of the 1001 choices of 4 of 14 runs" in detail
