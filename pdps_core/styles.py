@@ -1401,11 +1401,16 @@ def _positive_int(word, name):
 class RegionArgs(StyleArgs):
     """Keywords every LAMMPS region style takes after its own arguments: ``side in|out`` (``match``
     selects the inside or the outside) and ``units box|lattice`` (coordinates in distance units or in
-    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS); in the LIGGGHTS
+    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS); ``move v_dx v_dy
+    v_dz`` (each v_NAME or NULL) and ``rotate v_theta Px Py Pz Rx Ry Rz``: the region displaced and
+    turned by equal-style variables evaluated at each use (pdps_core.region_motion); in the LIGGGHTS
     dialect also ``volume_limit V``, the smallest volume (distance^3, default 1e-10) an insertion
     fix accepts of the region, as LIGGGHTS's region.cpp."""
     side: typing.Literal["in", "out"] = keyword("in")
     units: typing.Literal["box", "lattice"] | None = keyword(None)
+    move: tuple[str, str, str] | None = keyword(None)
+    rotate: tuple[str, float, float, float, float, float, float] | None = keyword(
+        None, unit=("1", "distance", "distance", "distance", "1", "1", "1"))
     volume_limit: float | None = keyword(None, unit="volume")
 
 
@@ -1413,8 +1418,11 @@ class Region(Style):
     """A region: ``region ID STYLE args``; ``inside(x)`` marks positions inside its shape, ``match(x)``
     the positions the region selects (its inside, or its outside with ``side out``). A style whose
     Args derive from ``RegionArgs`` scales its coordinates by ``self.scale`` (x, y, z lattice spacings
-    with ``units lattice``, else 1; radii by the x spacing, as LAMMPS)."""
+    with ``units lattice``, else 1; radii by the x spacing, as LAMMPS), and moves with RegionArgs's
+    ``move`` and ``rotate`` (``self.motion``, applied by ``match`` and ``surface``: ``inside`` and
+    ``surface_contacts`` see the shape in its own frame). ``deleted`` is set by ``region ID delete``."""
     kind = "region"
+    deleted = False
 
     def __init__(self, sim, id, args):
         self.sim, self.id, self.args = sim, id, args
@@ -1423,6 +1431,10 @@ class Region(Style):
         if units == "lattice" and sim.lattice is not None:
             self.scale = np.asarray(sim.lattice.spacing, dtype=np.float64).copy()
         self.side_out = getattr(args, "side", "in") == "out"
+        self.motion = None
+        if isinstance(args, RegionArgs) and (args.move or args.rotate):
+            from .region_motion import RegionMotion
+            self.motion = RegionMotion(id, args.move, args.rotate, self.scale)
         limit = getattr(args, "volume_limit", None)
         if limit is not None and sim.dialect.name != "liggghts":
             raise ScriptError("volume_limit is a LIGGGHTS region keyword (read as LIGGGHTS to use it)")
@@ -1432,7 +1444,27 @@ class Region(Style):
         raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")
 
     def match(self, x):
+        if self.motion is not None:
+            self.motion.update(self.sim)
+            x = self.motion.to_frame(np.asarray(x, dtype=np.float64).reshape(-1, 3))
         return ~self.inside(x) if self.side_out else self.inside(x)
+
+    def surface(self, x, reach, out=None):
+        """``surface_contacts`` where the region is now: a moving region's contacts found in its own
+        frame and brought back (LAMMPS's Region::surface). Walls that follow a region call this."""
+        if self.motion is None:
+            return self.surface_contacts(x, reach, out)
+        self.motion.update(self.sim)
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        frame = self.motion.to_frame(x)
+        index, distance, normal, element = self.surface_contacts(frame, reach, out)
+        self.motion.contacts_back(x, frame, index, distance, normal)
+        return index, distance, normal, element
+
+    @property
+    def dynamic(self):
+        """Whether the region moves (LAMMPS's dynamic_check): move or rotate, its own or a part's."""
+        return self.motion is not None
 
     def bounds(self):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""

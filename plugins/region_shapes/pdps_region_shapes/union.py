@@ -33,6 +33,9 @@ class _Combined(Region):
         super().__init__(sim, id, args)
         if id in args.regions:
             raise ScriptError(f"region {id} cannot contain itself")
+        if args.move or args.rotate:
+            raise ScriptError(f"region {self.name} cannot move or rotate itself (as LAMMPS): give move or rotate "
+                              "to the regions it combines")
         self.parts = [sim.region(name) for name in args.regions]
 
     def bounds(self):
