@@ -1466,6 +1466,52 @@ class Region(Style):
         """Whether the region moves (LAMMPS's dynamic_check): move or rotate, its own or a part's."""
         return self.motion is not None
 
+    def wall_contacts(self, x, reach, out=None):
+        """LAMMPS's Region::surface for granular walls where the region is now: (index, distance,
+        normal, element, curvature), the contacts of ``own_wall_contacts`` found in the region's
+        frame and brought back; the region remembers them for ``wall_velocity``."""
+        out = out if out is not None else SurfaceContacts()
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        if self.motion is None:
+            rows = self.own_wall_contacts(x, reach, out)
+        else:
+            self.motion.update(self.sim)
+            frame = self.motion.to_frame(x)
+            rows = self.own_wall_contacts(frame, reach, out)
+            self.motion.contacts_back(x, frame, *rows[:3])
+        self._wall_rows = (x, rows)
+        return rows
+
+    def own_wall_contacts(self, x, reach, out):
+        """In the region's own frame: LAMMPS's surface_interior (side in) or surface_exterior (side
+        out), each contact's normal LAMMPS's (the vector from the surface to the point times 1 /
+        distance) and its surface's radius of curvature (0 flat; negative concave, LAMMPS's -2R of a
+        cylinder's inside); (index, distance, normal, element, curvature) in point order, in ``out``.
+        A region with a granular wall surface overrides it."""
+        raise ScriptError(f"region {self.id} ({self.name}) has no granular wall surface (LAMMPS's surface_interior "
+                          "and surface_exterior are not built for it)")
+
+    def set_velocity(self, step, dt):
+        """The motion's velocity over the last step (LAMMPS's set_velocity); nothing for a still region."""
+        if self.motion is not None:
+            self.motion.set_velocity(step, dt)
+
+    def start_run(self, moved_in):
+        """A run begins (LAMMPS's init); ``moved_in``: a fix takes this region up (reset_vel)."""
+        if self.motion is not None:
+            if moved_in:
+                self.motion.reset_velocity()
+            self.motion.start_run()
+
+    def wall_velocity(self, rows, out):
+        """The wall's velocity at the contacts ``rows`` of the last ``wall_contacts`` into out (LAMMPS's
+        velocity_contact)."""
+        x, (index, distance, normal, _, _) = self._wall_rows
+        if self.motion is None:
+            out[:] = 0.0
+            return
+        self.motion.wall_velocity(x, index[rows], distance[rows], normal[rows], out)
+
     def bounds(self):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""
         raise ScriptError(f"region {self.id} ({self.name}) has no extent to make a box from")
@@ -1494,20 +1540,27 @@ class SurfaceContacts:
         self.distance = np.empty(0)
         self.normal = np.empty((0, 3))
         self.element = np.empty(0, dtype=np.int64)
+        self.curvature = np.empty(0)
 
     def room(self, rows):
-        """(index, distance, normal, element) with room for at least ``rows`` rows."""
+        """(index, distance, normal, element) with room for at least ``rows`` rows (and ``curvature``,
+        each contact's radius of curvature, for ``Region.own_wall_contacts``)."""
         if len(self.index) < rows:
             size = rows + rows // 4 + 16
             self.index = np.empty(size, dtype=np.int64)
             self.distance = np.empty(size)
             self.normal = np.empty((size, 3))
             self.element = np.empty(size, dtype=np.int64)
+            self.curvature = np.empty(size)
         return self.index, self.distance, self.normal, self.element
 
     def rows(self, count):
         """The first ``count`` rows written, as surface_contacts returns them."""
         return self.index[:count], self.distance[:count], self.normal[:count], self.element[:count]
+
+    def wall_rows(self, count):
+        """The first ``count`` rows with their curvature, as own_wall_contacts returns them."""
+        return (*self.rows(count), self.curvature[:count])
 
 
 class SubModel(Style):

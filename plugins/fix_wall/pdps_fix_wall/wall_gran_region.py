@@ -58,7 +58,7 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import ContactHistory, Fix, Region, ScriptError, StyleArgs, keyword, param, parse_args
+from pdps_core.api import ContactHistory, Fix, ScriptError, StyleArgs, SurfaceContacts, keyword, param, parse_args
 from pdps_granular_contact import contact_models, lammps_classic
 from pdps_granular_contact.composition import ContactModel
 from pdps_granular_contact.granular.base import WALL, Laws
@@ -66,8 +66,7 @@ from pdps_granular_contact.granular.base import WALL, Laws
 from .wall_contact import WallContactTable, WallLaw
 from .wall_gran_granular import FixWallGranGranular
 
-FLAT = ("block",)
-CONTACTS_AT_MOST = 3        # LAMMPS's tmax of a block: a sphere in a corner
+CONTACTS_AT_MOST = 8        # LAMMPS's tmax: 3 for a block (a sphere in a corner), its parts' sum for intersect
 
 
 class WallGranRegionArgs(StyleArgs):
@@ -84,14 +83,13 @@ class ClassicWords(lammps_classic.ClassicLaw):
 
 
 @njit(cache=True)
-def lammps_contacts(rows, index, distance, normal, element, radius, partner, values, starts, out_distance,
-                    out_normal, out_key, out_at, scratch, scaled):
+def lammps_contacts(rows, index, distance, normal, element, curvature, radius, partner, values, starts, out_distance,
+                    out_normal, out_key, out_curvature, out_at, scratch):
     """Each particle rows[k]'s contacts closer than its radius (the region's rows of point k, in
     ``index`` order) into the table (starts, out_*; out_at: the region's row), its history slots
     kept as LAMMPS's fix wall/gran/region keeps them (see the module docstring); each contact's key
     is the wall of the slot it takes, so the force loop finds that slot (``scratch``: two rows of
-    the capacity's length). ``scaled``: each normal made LAMMPS's (distance n) (1 / distance), the
-    rounding of its nx = dx rinv, as a still region's faces give it. Returns the table's rows, or -1 - i when particle i has too many."""
+    the capacity's length). Returns the table's rows, or -1 - i when particle i has too many."""
     capacity = partner.shape[1]
     stride = values.shape[1] // capacity
     row = 0
@@ -107,9 +105,9 @@ def lammps_contacts(rows, index, distance, normal, element, radius, partner, val
                 out_distance[m] = distance[row]
                 out_key[m] = element[row]
                 out_at[m] = row
-                rinv = 1.0 / distance[row] if scaled and distance[row] > 0.0 else 1.0
+                out_curvature[m] = curvature[row]
                 for d in range(3):
-                    out_normal[m, d] = normal[row, d] * distance[row] * rinv if scaled else normal[row, d]
+                    out_normal[m, d] = normal[row, d]
                 m += 1
             row += 1
         nc = m - first
@@ -206,17 +204,14 @@ class FixWallGranRegion(Fix):
                                       capacity=CONTACTS_AT_MOST)
         self.table = WallContactTable()
         self._near = np.empty(0, dtype=np.int64)
-        self._region_row = np.empty(0, dtype=np.int64)
+        self._region_row, self._curvature = np.empty(0, dtype=np.int64), np.empty(0)
+        self._contacts = SurfaceContacts()
         self._scratch = np.empty((2, CONTACTS_AT_MOST), dtype=np.int64)
 
     @staticmethod
     def checked_region(region):
-        if type(region).surface_contacts is Region.surface_contacts:
-            raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
-        if region.name not in FLAT:
-            raise ScriptError(f"region {region.id} ({region.name}) is not built for fix wall/gran/region: its "
-                              f"effective radius needs the surface's curvature, which pdps's regions do not give "
-                              f"(built: {', '.join(FLAT)})")
+        # a region without LAMMPS's granular surface refuses here, with its own reason
+        region.own_wall_contacts(np.zeros((0, 3)), 0.0, SurfaceContacts())
         return region
 
     def setup(self, sim):
@@ -225,13 +220,11 @@ class FixWallGranRegion(Fix):
             region = sim.region(self.region_id)
         except ScriptError:
             raise ScriptError(f"region {self.region_id} for fix wall/gran/region does not exist") from None
-        if region is not self.region:
+        moved_in = region is not self.region
+        if moved_in:
             self.region = self.checked_region(region)
             sim.warn(f"Region properties for region {self.region_id} changed between runs, resetting its motion")
-            if region.dynamic:
-                region.motion.reset_velocity()
-        if self.region.dynamic:
-            self.region.motion.start_run()
+        self.region.start_run(moved_in)
         if self.args.style == "granular":
             self.law.bind(Laws(sim.ntypes, {(0, t): self.granular_law for t in range(1, sim.ntypes + 1)}, WALL))
         else:
@@ -249,7 +242,7 @@ class FixWallGranRegion(Fix):
             self._near = chosen
             return
         radius = p.arrays["radius"]
-        index = self.region.surface(p.x[chosen], float(radius[chosen].max()) + sim.neighbor.skin)[0]
+        index = self.region.wall_contacts(p.x[chosen], float(radius[chosen].max()) + sim.neighbor.skin)[0]
         near = np.zeros(len(chosen), dtype=np.bool_)
         near[index] = True
         far = chosen[~near]
@@ -263,9 +256,10 @@ class FixWallGranRegion(Fix):
         p = sim.particles
         a = p.arrays
         region = self.region
-        if region.dynamic:
-            region.motion.update(sim)
-            region.motion.set_velocity(sim.step, sim.dt)
+        dynamic = region.dynamic
+        if dynamic:
+            region.match(a["x"][:0])            # the motion of this step (LAMMPS's prematch)
+            region.set_velocity(sim.step, sim.dt)
         rows = self._near
         x = a["x"][rows]
         # LAMMPS's loop visits only the particles the region selects (their history otherwise untouched)
@@ -273,25 +267,24 @@ class FixWallGranRegion(Fix):
         x = a["x"][rows]
         radius = a["radius"]
         farthest = float(radius[rows].max()) if len(rows) else 0.0
-        index, distance, normal, element = region.surface(x, farthest)
+        index, distance, normal, element, curvature = region.wall_contacts(x, farthest, self._contacts)
         table = self.table.room(len(rows), len(index))
         if len(self._region_row) < table.rows:
             self._region_row = np.empty(table.rows, dtype=np.int64)
-        count = lammps_contacts(rows, index, distance, normal, element, radius, self.history.partner,
+            self._curvature = np.empty(table.rows)
+        count = lammps_contacts(rows, index, distance, normal, element, curvature, radius, self.history.partner,
                                 self.history.values, table.starts, table.distance, table.normal, table.key,
-                                self._region_row, self._scratch,
-                                not (region.dynamic and region.motion.rotating))
+                                self._curvature, self._region_row, self._scratch)
         if count < 0:
             self.history.overflowed(p.tag[-1 - count])
         velocity = table.wall_velocity[:count]
-        if region.dynamic:
-            region.motion.wall_velocity(x, index[self._region_row[:count]], table.distance[:count],
-                                        table.normal[:count], velocity)
+        if dynamic:
+            region.wall_velocity(self._region_row[:count], velocity)
         else:
             velocity[:] = 0.0
         bad, _ = self.law.forces(sim, rows, len(rows), table.starts, table.arrays(), table.contact_force,
                                  self.history, 0, a["f"], a["torque"], update, radius=radius, mass=a["rmass"],
                                  omega=a["omega"], body_mass=a.get("body_mass", contact_models.NO_BODY_MASS),
-                                 transfer_cos=2.0)
+                                 transfer_cos=2.0, curvature=self._curvature)
         if bad >= 0:
             self.history.overflowed(p.tag[bad])

@@ -93,8 +93,8 @@ def test_bad_region_lines_are_refused_at_their_line(pdps_cli):
 def test_bad_wall_lines_are_refused_at_their_line(pdps_cli):
     cases = [
         ("region ball sphere 0 0 0 3\n" + f"{WALL} ball",
-         "fix: region ball (sphere) is not built for fix wall/gran/region: its effective radius needs the "
-         "surface's curvature, which pdps's regions do not give (built: block)"),
+         "fix: region ball (sphere) has no granular wall surface (LAMMPS's surface_interior and "
+         "surface_exterior are not built for it)"),
         ("region c block -5 5 -5 5 -5 5\n" + WALL.replace("0.5 1", "0.5 2") + " c",
          "fix: dampflag must be <= 1 (got 2)"),
         ("region c block -5 5 -5 5 -5 5 rotate v_theta 0 0 0 0 0 1\n"
