@@ -1443,7 +1443,13 @@ class Region(Style):
     def inside(self, x):
         raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")
 
+    def refuse_deleted(self):
+        if self.deleted:
+            raise ScriptError(f"region {self.id} was deleted (region {self.id} delete) but a style or region made "
+                              f"with it still uses it: define that again after the new region {self.id}")
+
     def match(self, x):
+        self.refuse_deleted()
         if self.motion is not None:
             self.motion.update(self.sim)
             x = self.motion.to_frame(np.asarray(x, dtype=np.float64).reshape(-1, 3))
@@ -1452,6 +1458,7 @@ class Region(Style):
     def surface(self, x, reach, out=None):
         """``surface_contacts`` where the region is now: a moving region's contacts found in its own
         frame and brought back (LAMMPS's Region::surface). Walls that follow a region call this."""
+        self.refuse_deleted()
         if self.motion is None:
             return self.surface_contacts(x, reach, out)
         self.motion.update(self.sim)
@@ -1470,6 +1477,7 @@ class Region(Style):
         """LAMMPS's Region::surface for granular walls where the region is now: (index, distance,
         normal, element, curvature), the contacts of ``own_wall_contacts`` found in the region's
         frame and brought back; the region remembers them for ``wall_velocity``."""
+        self.refuse_deleted()
         out = out if out is not None else SurfaceContacts()
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
         if self.motion is None:

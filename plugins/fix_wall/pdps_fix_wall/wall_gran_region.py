@@ -214,7 +214,7 @@ class FixWallGranRegion(Fix):
         region.own_wall_contacts(np.zeros((0, 3)), 0.0, SurfaceContacts())
         return region
 
-    def setup(self, sim):
+    def init_run(self, sim):
         # LAMMPS's init: the region of this ID now, its motion restarted when it is another one
         try:
             region = sim.region(self.region_id)
@@ -225,6 +225,8 @@ class FixWallGranRegion(Fix):
             self.region = self.checked_region(region)
             sim.warn(f"Region properties for region {self.region_id} changed between runs, resetting its motion")
         self.region.start_run(moved_in)
+
+    def setup(self, sim):
         if self.args.style == "granular":
             self.law.bind(Laws(sim.ntypes, {(0, t): self.granular_law for t in range(1, sim.ntypes + 1)}, WALL))
         else:

@@ -198,6 +198,12 @@ def test_a_deleted_region_or_its_missing_variable_stops_the_run_at_its_line(pdps
     body = (SETUP + "region c block -5 5 -5 5 -5 5 units box rotate v_theta 0 0 0 0 0 1\n" + f"{WALL} c\n"
             + "create_atoms 1 single 0 0 0 units box\nrun 1\n")
     assert_refused(pdps_cli(body), 10, "run: region c: variable theta is not defined")
+    # a union holds its regions as they were made: one deleted under it stops the run
+    body = (SETUP + "region a block -5 5 -5 5 -5 5 units box\nregion b block 4 6 -1 1 -1 1 units box\n"
+            "region u union 2 a b\n" + f"{WALL} u\n" + "region a delete\nregion a block -4 4 -4 4 -4 4 units box\n"
+            "run 1\n")
+    assert_refused(pdps_cli(body), 13, "run: region a was deleted (region a delete) but a style or region made "
+                                       "with it still uses it: define that again after the new region a")
 
 
 def test_hybrid_with_its_one_granular_sub_style_names_it_in_pair_coeff(pdps_cli):
