@@ -1412,6 +1412,7 @@ class RegionArgs(StyleArgs):
     rotate: tuple[str, float, float, float, float, float, float] | None = keyword(
         None, unit=("1", "distance", "distance", "distance", "1", "1", "1"))
     volume_limit: float | None = keyword(None, unit="volume")
+    open: int | None = keyword(None, unit="1")
 
 
 class Region(Style):
@@ -1432,6 +1433,9 @@ class Region(Style):
             self.scale = np.asarray(sim.lattice.spacing, dtype=np.float64).copy()
         self.side_out = getattr(args, "side", "in") == "out"
         self.motion = None
+        if getattr(args, "open", None) is not None:
+            raise ScriptError(f"open faces are not built (LAMMPS's open keyword: a region's face left out of its "
+                              f"surface and its test of points) (got open {args.open})")
         if isinstance(args, RegionArgs) and (args.move or args.rotate):
             from .region_motion import RegionMotion
             self.motion = RegionMotion(id, args.move, args.rotate, self.scale)

@@ -3,13 +3,18 @@ classic laws of fix wall/gran (hooke, hooke/history, hertz/history: ``pdps doc f
 the contact models of its pair granular (``granular``: ``pdps doc pair granular``, ``pdps doc
 granular.PART NAME``), as LAMMPS's fix wall/gran/region.
 
-The region's surface is LAMMPS's: with ``side in`` (the default) its inside is a container and only
-particles inside it touch it, each face closer than the particle's radius once (a sphere in a corner
-touches two or three faces); with ``side out`` it is an obstacle and only particles outside touch it,
-once, at its closest point (face, edge or corner). Each contact is a wall of infinite mass and
-radius as fix wall/gran's planes: overlap :math:`\delta = R_i - d`, :math:`R^* = R_i`,
-:math:`m^* = m_i`, the tangential force turning i with arm :math:`R_i`; the wall's velocity at the
-contact point :math:`\mathbf{x}_c` enters the relative velocity.
+The region's surface is LAMMPS's (Region.wall_contacts: its surface_interior with ``side in``, its
+surface_exterior with ``side out``): a ``block`` with ``side in`` is a container, only particles
+inside it touching it, each face closer than the particle's radius once (a sphere in a corner touches
+two or three faces); with ``side out`` an obstacle touched once, at its closest point (face, edge or
+corner), by the particles outside. A ``cylinder`` inside: its curved wall (unless the centre is on the
+axis) and its two caps; outside: its closest point. ``intersect`` and ``union`` of them: each
+region's contacts, kept where the contact point is inside all the others (intersect) or none
+(union). Each contact is a wall of infinite mass: overlap :math:`\delta = R_i - d`, :math:`m^* = m_i`,
+:math:`R^* = R_i` on flat faces and :math:`R^* = R_iR_w/(R_i + R_w)` on a cylinder's curved wall
+(:math:`R_w = -2R` inside, :math:`2R` outside, as LAMMPS), the tangential force turning i with arm
+:math:`R_i`; the wall's velocity at the contact point :math:`\mathbf{x}_c` enters the relative
+velocity.
 
 A region that moves (``region ... move v_dx v_dy v_dz``, ``rotate v_theta P R``) is followed at each
 step: its variables evaluated, the contacts found in its frame and brought back, the wall velocity
@@ -38,10 +43,10 @@ Syntax::
     fix ID GROUP wall/gran/region granular NORMAL coefficients [damping DAMPING] tangential TANGENTIAL
         coefficients [rolling sds ...] [twisting marshall|sds ...] [limit_damping] region REGION-ID
 
-Regions: ``block`` (moving or still). Not built: other flat regions (pdps's plane and polygon
-surfaces are two-sided, LAMMPS's one-sided), curved region surfaces (sphere, cylinder, cone: LAMMPS's
-effective radius needs the surface's curvature at the contact, which pdps's regions do not give),
-union and intersect, the ``contacts`` and ``temperature`` keywords, jkr.
+Regions: ``block`` and ``cylinder``, still or moving, and their ``intersect`` and ``union`` (side in;
+their contacts have no wall velocity, as LAMMPS 22 Jul 2025's: see pdps_region_shapes.union). Not
+built: sphere, cone, plane, prism and the other regions, ``open`` faces, union and intersect with
+``side out``, the ``contacts`` and ``temperature`` keywords, jkr.
 
 Cost: a still region: at each neighbor list rebuild the particles within their radius plus the skin
 of the surface, the others visited no more until the next; a moving one: every particle of the group

@@ -169,6 +169,9 @@ def test_bad_region_lines_are_refused_at_their_line(pdps_cli):
          "combines"),
         ("region c delete", "region: region c is not defined: nothing to delete"),
         ("region box delete now", "region: region ID delete takes nothing more (got now)"),
+        ("region c cylinder z 0 0 2 0 5 side in units box open 2",
+         "region: open faces are not built (LAMMPS's open keyword: a region's face left out of its surface and its "
+         "test of points) (got open 2)"),
     ]
     for line, message in cases:
         assert_refused(pdps_cli(SETUP + line + "\n"), 7, message)
