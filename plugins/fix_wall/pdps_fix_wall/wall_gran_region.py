@@ -28,8 +28,9 @@ one selected without contacts forgets them all. Otherwise the slots of faces no 
 removed (the last slot copied over each), new faces open zeroed slots at the end, and contact number
 ic (the region's order: xlo, xhi, ylo, yhi, zlo, zhi) takes the slot c2r[ic], where LAMMPS sets
 c2r[slot] = ic: the right slot for one or two contacts, a permuted one when a sphere in a corner has
-gained its three faces in a cyclic order (pdps follows LAMMPS). The setup force computation of a run
-does not advance the history.
+gained its three faces in a cyclic order (pdps follows LAMMPS; measured: a sphere pushed into a box
+corner, floor first, then xlo, then ylo, keeps LAMMPS's energies to 1e-15, and differs from them by
+1e-3 with each face's own spring). The setup force computation of a run does not advance the history.
 
 The region is looked up by its ID when each run starts (LAMMPS's init): ``region ID delete`` and a
 new region of that ID between runs make the wall the new region, with LAMMPS's warning "Region

@@ -145,6 +145,49 @@ LAMMPS_UNION = [
 ]
 
 
+# one sphere pressed by a tilted gravity onto the floor, then into the xlo and ylo walls of a box
+# corner: it gains its faces in the order zlo, xlo, ylo, and LAMMPS's c2r hands contact xlo the ylo
+# slot's spring, ylo the zlo's, zlo the xlo's (with each face's own spring pdps measured 0.012519041
+# for c_k at step 5500)
+CORNER = SETUP.replace("-8 8 -8 8 -8 8", "-1 11 -1 11 -1 11") + """\
+create_atoms    1 single 0.8 1.5 0.499 units box
+region          cup block 0 10 0 10 0 10 units box
+fix             cup all wall/gran/region hooke/history 4000.0 NULL 10.0 NULL 0.5 1 region cup
+fix             1 all nve/sphere
+fix             2 all gravity 1.0 vector -1 -0.5 -1
+timestep        0.001
+compute         rot all erotate/sphere
+compute         k all ke
+variable        px equal xcm(all,x)
+variable        py equal xcm(all,y)
+variable        pz equal xcm(all,z)
+thermo          500
+thermo_style    custom step c_k c_rot v_px v_py v_pz
+thermo_modify   format float %20.15g norm no
+run             6000
+"""
+
+LAMMPS_CORNER = [
+    (0, 0, 0, 0.8, 1.5, 0.499),
+    (500, 0.0254282467154261, 0.0026420096557745, 0.724073776879228, 1.46203688843961, 0.500499641515624),
+    (1000, 0.0884821063312269, 0.0176185124840873, 0.521833140442235, 1.36091657022112, 0.500314700746735),
+    (1500, 0.036891470385556, 0.0079184186310992, 0.614374821841049, 1.21642851231145, 0.500324554553165),
+    (2000, 0.0695414136859404, 0.0187870060016346, 0.572416579792898, 1.01183984838135, 0.499593664090821),
+    (2500, 0.0739705619758093, 0.0335535509844393, 0.539042475466756, 0.764751856385798, 0.499933721395717),
+    (3000, 0.0767813516914868, 0.0154621123824696, 0.509431425739483, 0.503215469790376, 0.502180151825868),
+    (3500, 0.0105337714325841, 0.00397884987808542, 0.498819178049333, 0.672576200080238, 0.5047092233418),
+    (4000, 0.000482201514535656, 0.000962113549633726, 0.504617884290658, 0.706196949163048, 0.500573706938492),
+    (4500, 0.00312032928603737, 0.000738852969180524, 0.49950150919297, 0.672299250869405, 0.499885093389494),
+    (5000, 0.00854747374161078, 0.00625394479562795, 0.499909895028309, 0.601258091619422, 0.499914838485518),
+    (5500, 0.0125040173125895, 0.00562259550218769, 0.500487414742649, 0.501330476244001, 0.50049136746736),
+    (6000, 0.00063363073111244, 0.000313876087943863, 0.499884876050121, 0.524544176909256, 0.499884253712796),
+]
+
+
+def test_a_sphere_in_a_corner_keeps_its_springs_as_lammps_hands_them_out(tmp_path):
+    assert_prints_as_lammps(tmp_path, CORNER, LAMMPS_CORNER, rel=1e-12, abs=1e-15)
+
+
 def test_a_cylinder_cup_with_a_turning_paddle_prints_as_lammps(tmp_path):
     assert_prints_as_lammps(tmp_path, MIXER, LAMMPS_MIXER)
 
