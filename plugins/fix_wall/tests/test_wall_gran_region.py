@@ -229,6 +229,9 @@ def test_bad_wall_lines_are_refused_at_their_line(pdps_cli):
          "fix: dampflag must be <= 1 (got 2)"),
         ("region c block -5 5 -5 5 -5 5\nregion u union 2 box c side out\n" + f"{WALL} u",
          "fix: region u (union) with side out is not built as a granular wall"),
+        ("region c block -5 5 -5 5 -5 5 units box move v_dx NULL NULL\n"
+         "fix p all pour 10 1 4767 region c diam one 1.0",
+         "fix: region c moves (move or rotate): fix pour region cannot be dynamic (as LAMMPS)"),
         ("region c block -5 5 -5 5 -5 5 rotate v_theta 0 0 0 0 0 1\n"
          "fix w all wall/dem lsd region c 0.85 3000 28.6527 571.43 15.82634 0.4 0.5",
          "fix: region c moves (move or rotate): fix wall/dem's walls stand still (fix wall/gran/region follows "
