@@ -28,7 +28,8 @@ force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, tabl
 and the styles with a loop of their own that skips the type pairs left to others (``Pair.hybrid_sub_style``:
 dpd/ext, dpd/ext/tstat). A granular style (one with its own loop over a list of its own) may be the
 only sub-style of ``hybrid``: then the line is that style, each pair_coeff naming it first (LAMMPS's
-granregion example: ``pair_style hybrid gran/hooke ...`` with ``pair_coeff * * gran/hooke``); beside
+granregion example: ``pair_style hybrid gran/hooke ...`` with ``pair_coeff * * gran/hooke``; a
+restart brings it back as that style itself, whose pair_coeff lines then name no style); beside
 other sub-styles, or with ``hybrid/overlay``, it is refused by name. A style may appear more than once,
 each with its own settings (LAMMPS's); then pair_coeff names which, counted from 1:
 ``pair_coeff I J soft 2 COEFFS`` (``soft:2`` in what pdps prints). Example::
