@@ -1404,20 +1404,29 @@ def _positive_int(word, name):
 class RegionArgs(StyleArgs):
     """Keywords every LAMMPS region style takes after its own arguments: ``side in|out`` (``match``
     selects the inside or the outside) and ``units box|lattice`` (coordinates in distance units or in
-    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS); in the LIGGGHTS
+    lattice spacings; the default is the dialect's: box in PDPS, lattice in LAMMPS); ``move v_dx v_dy
+    v_dz`` (each v_NAME or NULL) and ``rotate v_theta Px Py Pz Rx Ry Rz``: the region displaced and
+    turned by equal-style variables evaluated at each use (pdps_core.region_motion); in the LIGGGHTS
     dialect also ``volume_limit V``, the smallest volume (distance^3, default 1e-10) an insertion
     fix accepts of the region, as LIGGGHTS's region.cpp."""
     side: typing.Literal["in", "out"] = keyword("in")
     units: typing.Literal["box", "lattice"] | None = keyword(None)
+    move: tuple[str, str, str] | None = keyword(None)
+    rotate: tuple[str, float, float, float, float, float, float] | None = keyword(
+        None, unit=("1", "distance", "distance", "distance", "1", "1", "1"))
     volume_limit: float | None = keyword(None, unit="volume")
+    open: int | None = keyword(None, unit="1")
 
 
 class Region(Style):
     """A region: ``region ID STYLE args``; ``inside(x)`` marks positions inside its shape, ``match(x)``
     the positions the region selects (its inside, or its outside with ``side out``). A style whose
     Args derive from ``RegionArgs`` scales its coordinates by ``self.scale`` (x, y, z lattice spacings
-    with ``units lattice``, else 1; radii by the x spacing, as LAMMPS)."""
+    with ``units lattice``, else 1; radii by the x spacing, as LAMMPS), and moves with RegionArgs's
+    ``move`` and ``rotate`` (``self.motion``, applied by ``match`` and ``surface``: ``inside`` and
+    ``surface_contacts`` see the shape in its own frame). ``deleted`` is set by ``region ID delete``."""
     kind = "region"
+    deleted = False
 
     def __init__(self, sim, id, args):
         self.sim, self.id, self.args = sim, id, args
@@ -1426,6 +1435,13 @@ class Region(Style):
         if units == "lattice" and sim.lattice is not None:
             self.scale = np.asarray(sim.lattice.spacing, dtype=np.float64).copy()
         self.side_out = getattr(args, "side", "in") == "out"
+        self.motion = None
+        if getattr(args, "open", None) is not None:
+            raise ScriptError(f"open faces are not built (LAMMPS's open keyword: a region's face left out of its "
+                              f"surface and its test of points) (got open {args.open})")
+        if isinstance(args, RegionArgs) and (args.move or args.rotate):
+            from .region_motion import RegionMotion
+            self.motion = RegionMotion(id, args.move, args.rotate, self.scale)
         limit = getattr(args, "volume_limit", None)
         if limit is not None and sim.dialect.name != "liggghts":
             raise ScriptError("volume_limit is a LIGGGHTS region keyword (read as LIGGGHTS to use it)")
@@ -1434,8 +1450,82 @@ class Region(Style):
     def inside(self, x):
         raise ScriptError(f"region {self.id} ({self.name}) has no inside: it is a surface")
 
+    def refuse_deleted(self):
+        if self.deleted:
+            raise ScriptError(f"region {self.id} was deleted (region {self.id} delete) but a style or region made "
+                              f"with it still uses it: define that again after the new region {self.id}")
+
     def match(self, x):
+        self.refuse_deleted()
+        if self.motion is not None:
+            self.motion.update(self.sim)
+            x = self.motion.to_frame(np.asarray(x, dtype=np.float64).reshape(-1, 3))
         return ~self.inside(x) if self.side_out else self.inside(x)
+
+    def surface(self, x, reach, out=None):
+        """``surface_contacts`` where the region is now: a moving region's contacts found in its own
+        frame and brought back (LAMMPS's Region::surface). Walls that follow a region call this."""
+        self.refuse_deleted()
+        if self.motion is None:
+            return self.surface_contacts(x, reach, out)
+        self.motion.update(self.sim)
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        frame = self.motion.to_frame(x)
+        index, distance, normal, element = self.surface_contacts(frame, reach, out)
+        self.motion.contacts_back(x, frame, index, distance, normal)
+        return index, distance, normal, element
+
+    @property
+    def dynamic(self):
+        """Whether the region moves (LAMMPS's dynamic_check): move or rotate, its own or a part's."""
+        return self.motion is not None
+
+    def wall_contacts(self, x, reach, out=None):
+        """LAMMPS's Region::surface for granular walls where the region is now: (index, distance,
+        normal, element, curvature), the contacts of ``own_wall_contacts`` found in the region's
+        frame and brought back; the region remembers them for ``wall_velocity``."""
+        self.refuse_deleted()
+        out = out if out is not None else SurfaceContacts()
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
+        if self.motion is None:
+            rows = self.own_wall_contacts(x, reach, out)
+        else:
+            self.motion.update(self.sim)
+            frame = self.motion.to_frame(x)
+            rows = self.own_wall_contacts(frame, reach, out)
+            self.motion.contacts_back(x, frame, *rows[:3])
+        self._wall_rows = (x, rows)
+        return rows
+
+    def own_wall_contacts(self, x, reach, out):
+        """In the region's own frame: LAMMPS's surface_interior (side in) or surface_exterior (side
+        out), each contact's normal LAMMPS's (the vector from the surface to the point times 1 /
+        distance) and its surface's radius of curvature (0 flat; negative concave, LAMMPS's -2R of a
+        cylinder's inside); (index, distance, normal, element, curvature) in point order, in ``out``.
+        A region with a granular wall surface overrides it."""
+        raise ScriptError(f"region {self.id} ({self.name}) has no granular wall surface (LAMMPS's surface_interior "
+                          "and surface_exterior are not built for it)")
+
+    def set_velocity(self, step, dt):
+        """The motion's velocity over the last step (LAMMPS's set_velocity); nothing for a still region."""
+        if self.motion is not None:
+            self.motion.set_velocity(step, dt)
+
+    def start_run(self, moved_in):
+        """A run begins (LAMMPS's init); ``moved_in``: a fix takes this region up (reset_vel)."""
+        if self.motion is not None:
+            if moved_in:
+                self.motion.reset_velocity()
+            self.motion.start_run()
+
+    def wall_velocity(self, rows, out):
+        """The wall's velocity at the contacts ``rows`` of the last ``wall_contacts`` into out (LAMMPS's
+        velocity_contact)."""
+        x, (index, distance, normal, _, _) = self._wall_rows
+        if self.motion is None:
+            out[:] = 0.0
+            return
+        self.motion.wall_velocity(x, index[rows], distance[rows], normal[rows], out)
 
     def bounds(self):
         """(lo, hi) of a box that holds the region, for create_box and lattice filling."""
@@ -1465,20 +1555,27 @@ class SurfaceContacts:
         self.distance = np.empty(0)
         self.normal = np.empty((0, 3))
         self.element = np.empty(0, dtype=np.int64)
+        self.curvature = np.empty(0)
 
     def room(self, rows):
-        """(index, distance, normal, element) with room for at least ``rows`` rows."""
+        """(index, distance, normal, element) with room for at least ``rows`` rows (and ``curvature``,
+        each contact's radius of curvature, for ``Region.own_wall_contacts``)."""
         if len(self.index) < rows:
             size = rows + rows // 4 + 16
             self.index = np.empty(size, dtype=np.int64)
             self.distance = np.empty(size)
             self.normal = np.empty((size, 3))
             self.element = np.empty(size, dtype=np.int64)
+            self.curvature = np.empty(size)
         return self.index, self.distance, self.normal, self.element
 
     def rows(self, count):
         """The first ``count`` rows written, as surface_contacts returns them."""
         return self.index[:count], self.distance[:count], self.normal[:count], self.element[:count]
+
+    def wall_rows(self, count):
+        """The first ``count`` rows with their curvature, as own_wall_contacts returns them."""
+        return (*self.rows(count), self.curvature[:count])
 
 
 class SubModel(Style):

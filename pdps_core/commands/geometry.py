@@ -16,6 +16,14 @@ def region(sim, args):
     if len(args) < 2:
         raise ScriptError("expected: region ID STYLE args")
     ident, style = args[0], args[1]
+    if style == "delete":
+        # LAMMPS's region ID delete: styles that look the ID up when a run starts see the next one of that ID
+        if len(args) > 2:
+            raise ScriptError(f"region ID delete takes nothing more (got {' '.join(args[2:])})")
+        if ident not in sim.system.regions:
+            raise ScriptError(f"region {ident} is not defined: nothing to delete")
+        sim.system.regions.pop(ident).deleted = True
+        return
     if ident in sim.system.regions:
         raise ScriptError(f"region {ident} is already defined")
     cls = registry.lookup("region", style)

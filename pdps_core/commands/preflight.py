@@ -39,7 +39,7 @@ def _style_named(sim, words):
         return "fix", args[2]
     if name in ("compute", "analyze", "dump") and len(args) >= 3:
         return name, args[2]
-    if name == "region" and len(args) >= 2:
+    if name == "region" and len(args) >= 2 and args[1] != "delete":
         return "region", args[1]
     return None
 

@@ -340,6 +340,8 @@ class FixPour(Fix):
 
     def _read_region(self, sim, name, dimension):
         region = sim.region(name)
+        if region.dynamic:
+            raise ScriptError(f"region {name} moves (move or rotate): fix pour region cannot be dynamic (as LAMMPS)")
         box = sim.box
         # bounds: xlo xhi ylo yhi xc yc rc
         self.bounds = np.zeros(7)

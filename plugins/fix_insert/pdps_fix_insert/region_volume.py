@@ -11,6 +11,8 @@ def insertion_region(sim, name):
     if region.side_out:
         raise ScriptError(f"region {name} has side out: insertion needs a region whose inside is the "
                           "insertion volume")
+    if region.dynamic:
+        raise ScriptError(f"region {name} moves (move or rotate): insertion needs a still region")
     return region
 
 

@@ -168,6 +168,9 @@ class FixWallDEM(Fix):
             region = sim.region(ident)
             if type(region).surface_contacts is Region.surface_contacts:
                 raise ScriptError(f"region {region.id} ({region.name}) has no surface to act as a wall")
+            if region.dynamic:
+                raise ScriptError(f"region {region.id} moves (move or rotate): fix {self.name}'s walls stand still "
+                                  "(fix wall/gran/region follows a moving region)")
             self.regions.append(region)
         self.history = ContactHistory(sim, f"wall_{id}", width=width)
         self._near, self._farthest = np.empty(0, dtype=np.int64), 0.0

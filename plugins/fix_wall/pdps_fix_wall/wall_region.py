@@ -191,7 +191,7 @@ class FixWallRegion(PotentialWalls):
         outside = np.flatnonzero(~region.match(p.x[:n]) & ((p.mask[:n] & groupbit) != 0))
         if outside.size:
             message = self._too_close(sim, int(outside[0]))
-        index, distance, normal, _ = region.surface_contacts(p.x[:n], self.args.cutoff, self.contacts)
+        index, distance, normal, _ = region.surface(p.x[:n], self.args.cutoff, self.contacts)
         radius = p.radius if self.law == 2 else self.no_radius
         self.tally[:] = 0.0
         self.wall_virial[:] = 0.0

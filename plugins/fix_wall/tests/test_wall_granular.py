@@ -33,14 +33,12 @@ def test_bad_lines_are_refused_at_their_line(pdps_cli, words, message):
 
 
 @pytest.mark.parametrize("words, message", [
-    ("hooke 1e5 NULL 50 NULL 0.5 1 region box", "the classic styles of fix wall/gran/region are not built: give "
-     "granular and pair granular's models (hooke ... damping mass_velocity tangential ...) (got hooke)"),
-    (f"granular {MODEL}", "missing keyword region; usage: fix ID GROUP wall/gran/region granular NORMAL "
-     "coefficients [damping DAMPING] tangential TANGENTIAL coefficients [rolling ...] [twisting ...] "
-     "[limit_damping] region REGION-ID"),
+    (f"granular {MODEL}", "missing keyword region; usage: fix ID GROUP wall/gran/region hooke|hooke/history|"
+     "hertz/history Kn Kt gamma_n gamma_t xmu dampflag [limit_damping] region REGION-ID | granular NORMAL "
+     "coefficients ... region REGION-ID"),
     (f"granular {MODEL} region box contacts", "unknown keyword contacts (known: region)"),
-    (f"granular {MODEL} region ball", "region ball (sphere) is curved: its effective radius needs the surface's "
-     "curvature, which pdps's regions do not give (flat ones: block)"),
+    (f"granular {MODEL} region ball", "region ball (sphere) has no granular wall surface (LAMMPS's "
+     "surface_interior and surface_exterior are not built for it)"),
     ("granular jkr 1e5 0.5 0.3 1.0 tangential mindlin NULL 1.0 0.5 region box",
      "jkr on a wall is not built: its contact would outlast touching the wall (got jkr)"),
 ])

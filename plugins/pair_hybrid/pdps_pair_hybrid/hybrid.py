@@ -26,7 +26,11 @@ The core builds one half neighbor list with, for each type pair, the largest cut
 sub-styles; each sub-style's loop sees only its own pairs (the others' cutoffs are 0). Sub-styles are
 force laws over half lists (``PairLaw``: lj/cut, soft, morse, yukawa, zero, table, dpd, dpd/fdt, ...)
 and the styles with a loop of their own that skips the type pairs left to others (``Pair.hybrid_sub_style``:
-dpd/ext, dpd/ext/tstat); the others (the granular ones) are refused by name. A style may appear more than once,
+dpd/ext, dpd/ext/tstat). A granular style (one with its own loop over a list of its own) may be the
+only sub-style of ``hybrid``: then the line is that style, each pair_coeff naming it first (LAMMPS's
+granregion example: ``pair_style hybrid gran/hooke ...`` with ``pair_coeff * * gran/hooke``; a
+restart brings it back as that style itself, whose pair_coeff lines then name no style); beside
+other sub-styles, or with ``hybrid/overlay``, it is refused by name. A style may appear more than once,
 each with its own settings (LAMMPS's); then pair_coeff names which, counted from 1:
 ``pair_coeff I J soft 2 COEFFS`` (``soft:2`` in what pdps prints). Example::
 
@@ -54,6 +58,22 @@ class SubStyles(StyleArgs):
     substyles: list[SubStyle] = param(min_length=1, names="pair style, then its own arguments")
 
 
+def sole_sub_style(cls):
+    """``cls`` as the one sub-style of pair_style hybrid: the style itself, its pair_coeff lines
+    naming it before its own coefficients."""
+
+    class Sole(cls):
+        def parse_coeff(self, words):
+            if not words or words[0] != cls.name:
+                got = " ".join(words) or "nothing"
+                raise ScriptError(f"pair_coeff I J {cls.name} COEFFS: the only sub-style of this pair_style hybrid "
+                                  f"is {cls.name} (got {got})")
+            return super().parse_coeff(words[1:])
+
+    Sole.__name__ = Sole.__qualname__ = f"Hybrid{cls.__name__}"
+    return Sole
+
+
 class PairHybrid(Pair):
     name = "hybrid"
     usage = "pair_style hybrid STYLE1 ARGS1 [STYLE2 ARGS2 ...]"
@@ -61,6 +81,25 @@ class PairHybrid(Pair):
     overlay = False
     peratom_tally = True        # every sub-style is a force law, which tallies
     Args = SubStyles
+
+    @classmethod
+    def respell(cls, dialect, words):
+        # hybrid with one sub-style that has its own loop (a granular one) is that style
+        if cls.overlay or not words or words[0] not in registry.names("pair"):
+            return None
+        names = registry.names("pair")
+        if any(word in names for word in words[1:]):
+            return None
+        sub = registry.lookup("pair", words[0])
+        if cls.force_law(sub) or words[0] in ("hybrid", "hybrid/overlay"):
+            return None
+        return sole_sub_style(sub), list(words[1:])
+
+    @staticmethod
+    def force_law(sub):
+        """Whether the pair style class ``sub`` can share a run with others as a sub-style."""
+        return (sub.hybrid_sub_style and sub.neighbor_list == "half"
+                and "pairs" in inspect.signature(sub.init).parameters)
 
     @classmethod
     def check_args(cls, args):
@@ -77,8 +116,7 @@ class PairHybrid(Pair):
         seen = {}
         for name, words in args.substyles:
             cls = registry.lookup("pair", name)
-            if not cls.hybrid_sub_style or cls.neighbor_list != "half" \
-                    or "pairs" not in inspect.signature(cls.init).parameters:
+            if not self.force_law(cls):
                 raise ScriptError(f"pair style {name} cannot be a sub-style of {self.name}: it is not a force law "
                                   "over a half list")
             seen[name] = seen.get(name, 0) + 1

@@ -60,8 +60,12 @@ BAD = {
     "twice, unnamed": ("pair_style hybrid lj/cut 2.5 lj/cut 3.0\npair_coeff 1 1 lj/cut 1.0 1.0",
                        "pair style lj/cut appears 2 times in pair_style hybrid: name which with a number from 1 to "
                        "2 after it (got 1.0 1.0)"),
-    "own loop": ("pair_style hybrid gran/hooke 200000 NULL 50 NULL 0.5 0",
-                 "pair style gran/hooke cannot be a sub-style of hybrid: it is not a force law over a half list"),
+    "own loop beside another": ("pair_style hybrid gran/hooke 200000 NULL 50 NULL 0.5 0 lj/cut 2.5",
+                                "pair style gran/hooke cannot be a sub-style of hybrid: it is not a force law over a "
+                                "half list"),
+    "own loop, overlaid": ("pair_style hybrid/overlay gran/hooke 200000 NULL 50 NULL 0.5 0",
+                           "pair style gran/hooke cannot be a sub-style of hybrid/overlay: it is not a force law "
+                           "over a half list"),
 }
 
 

@@ -85,6 +85,58 @@ def block_contacts(x, lo, hi, reach, index, distance, normal, element):
     return m
 
 
+@njit(cache=True)
+def block_wall_contacts(x, lo, hi, reach, exterior, index, distance, normal, element, curvature):
+    """LAMMPS's RegBlock::surface_interior (each face closer than reach of a point inside, faces 0-5
+    xlo, xhi, ylo, yhi, zlo, zhi) or surface_exterior (a point outside within reach: its closest
+    point, element 0), normals LAMMPS's (the vector from the surface times 1 / distance); a point at
+    distance 0 has no normal and no contact. Returns how many rows (room for 6 a point)."""
+    m = 0
+    for p in range(x.shape[0]):
+        if not exterior:
+            if (x[p, 0] < lo[0] or x[p, 0] > hi[0] or x[p, 1] < lo[1] or x[p, 1] > hi[1]
+                    or x[p, 2] < lo[2] or x[p, 2] > hi[2]):
+                continue
+            for d in range(3):
+                for side in range(2):
+                    gap = x[p, d] - lo[d] if side == 0 else hi[d] - x[p, d]
+                    if gap < reach and gap > 0.0:
+                        index[m] = p
+                        distance[m] = gap
+                        rinv = 1.0 / gap
+                        for e in range(3):
+                            normal[m, e] = 0.0
+                        normal[m, d] = gap * rinv if side == 0 else -gap * rinv
+                        element[m] = 2 * d + side
+                        curvature[m] = 0.0
+                        m += 1
+            continue
+        outside_reach = False
+        inside = True
+        for d in range(3):
+            if x[p, d] <= lo[d] - reach or x[p, d] >= hi[d] + reach:
+                outside_reach = True
+            if not (x[p, d] > lo[d] and x[p, d] < hi[d]):
+                inside = False
+        if outside_reach or inside:
+            continue
+        dx = x[p, 0] - min(max(x[p, 0], lo[0]), hi[0])
+        dy = x[p, 1] - min(max(x[p, 1], lo[1]), hi[1])
+        dz = x[p, 2] - min(max(x[p, 2], lo[2]), hi[2])
+        gap = math.sqrt(dx * dx + dy * dy + dz * dz)
+        if gap < reach and gap > 0.0:
+            rinv = 1.0 / gap
+            index[m] = p
+            distance[m] = gap
+            normal[m, 0] = dx * rinv
+            normal[m, 1] = dy * rinv
+            normal[m, 2] = dz * rinv
+            element[m] = 0
+            curvature[m] = 0.0
+            m += 1
+    return m
+
+
 class RegionBlock(Region):
     name = "block"
     usage = "region ID block xlo xhi ylo yhi zlo zhi [side in|out] [units box|lattice]"
@@ -147,3 +199,8 @@ class RegionBlock(Region):
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1, 3)
         out = out if out is not None else SurfaceContacts()
         return out.rows(block_contacts(x, self.lo, self.hi, float(reach), *out.room(6 * len(x))))
+
+    def own_wall_contacts(self, x, reach, out):
+        out.room(6 * len(x))
+        return out.wall_rows(block_wall_contacts(x, self.lo, self.hi, float(reach), self.side_out, out.index,
+                                                 out.distance, out.normal, out.element, out.curvature))

@@ -75,6 +75,81 @@ def cylinder_contacts(x, axis, a, b, c1, c2, radius, lo, hi, lo_cap, hi_cap, rea
     return m
 
 
+@njit(cache=True)
+def cylinder_wall_contacts(x, axis, a, b, c1, c2, radius, lo, hi, reach, exterior, index, distance, normal, element,
+                           curvature):
+    """LAMMPS's RegCylinder::surface_interior (a point inside: the curved wall, element 2, radius of
+    curvature -2R, unless on the axis; the lo and hi caps, elements 0 and 1) or surface_exterior (a
+    point outside within reach: its closest point, element 0, curvature 2R off the curved wall's
+    side, else 0), normals LAMMPS's (the vector from the surface times 1 / distance); a point at
+    distance 0 has no contact. Returns how many rows (room for 3 a point)."""
+    m = 0
+    for p in range(x.shape[0]):
+        del1 = x[p, a] - c1
+        del2 = x[p, b] - c2
+        r = math.sqrt(del1 * del1 + del2 * del2)
+        along = x[p, axis]
+        if not exterior:
+            if r > radius or along < lo or along > hi:
+                continue
+            gap = radius - r
+            if gap < reach and r > 0.0 and gap > 0.0:
+                rinv = 1.0 / gap
+                index[m] = p
+                distance[m] = gap
+                normal[m, axis] = 0.0
+                normal[m, a] = del1 * (1.0 - radius / r) * rinv
+                normal[m, b] = del2 * (1.0 - radius / r) * rinv
+                element[m] = 2
+                curvature[m] = -2.0 * radius
+                m += 1
+            for cap in range(2):
+                gap = along - lo if cap == 0 else hi - along
+                if gap < reach and gap > 0.0:
+                    index[m] = p
+                    distance[m] = gap
+                    rinv = 1.0 / gap
+                    normal[m, a] = 0.0
+                    normal[m, b] = 0.0
+                    normal[m, axis] = gap * rinv if cap == 0 else -gap * rinv
+                    element[m] = cap
+                    curvature[m] = 0.0
+                    m += 1
+            continue
+        if r >= radius + reach or along <= lo - reach or along >= hi + reach:
+            continue
+        if r < radius and along > lo and along < hi:
+            continue
+        crad = 0.0
+        if r > radius:
+            pa = c1 + del1 * radius / r
+            pb = c2 + del2 * radius / r
+            crad = 2.0 * radius
+        else:
+            pa = x[p, a]
+            pb = x[p, b]
+        paxis = lo if along < lo else (hi if along > hi else along)
+        # the surface point's coordinates in x, y, z order (LAMMPS's add_contact)
+        s0 = paxis if axis == 0 else (pa if a == 0 else pb)
+        s1 = paxis if axis == 1 else (pa if a == 1 else pb)
+        s2 = paxis if axis == 2 else (pa if a == 2 else pb)
+        d0 = x[p, 0] - s0
+        d1 = x[p, 1] - s1
+        d2 = x[p, 2] - s2
+        gap = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        if gap < reach and gap > 0.0:
+            rinv = 1.0 / gap
+            index[m] = p
+            distance[m] = gap
+            normal[m, 0] = d0 * rinv
+            normal[m, 1] = d1 * rinv
+            normal[m, 2] = d2 * rinv
+            element[m] = 0
+            curvature[m] = crad
+            m += 1
+    return m
+
+
 class RegionCylinder(Region):
     name = "cylinder"
     usage = "region ID cylinder x|y|z C1 C2 RADIUS LO HI [side in|out] [units box|lattice]"
@@ -131,6 +206,13 @@ class RegionCylinder(Region):
         return out.rows(cylinder_contacts(x, self.axis, a, b, self.c[0], self.c[1], self.radius, self.lo, self.hi,
                                           abs(self.lo) < HUGE, abs(self.hi) < HUGE, float(reach),
                                           *out.room(3 * len(x))))
+
+    def own_wall_contacts(self, x, reach, out):
+        a, b = self.across
+        out.room(3 * len(x))
+        return out.wall_rows(cylinder_wall_contacts(x, self.axis, a, b, self.c[0], self.c[1], self.radius, self.lo,
+                                                    self.hi, float(reach), self.side_out, out.index, out.distance,
+                                                    out.normal, out.element, out.curvature))
 
     def bounds(self):
         if abs(self.lo) >= HUGE or abs(self.hi) >= HUGE:

@@ -36,7 +36,7 @@ from typing import Literal
 import meshio
 import numpy as np
 from numba import njit
-from pdps_core.api import Region, RegionArgs, ScriptError, param
+from pdps_core.api import Region, ScriptError, StyleArgs, keyword, param
 
 
 @njit(cache=True)
@@ -79,7 +79,8 @@ class RegionMeshTet(Region):
     name = "mesh/tet"
     usage = "region ID mesh/tet file FILE scale S move DX DY DZ rotate AX AY AZ [side in|out] units box"
 
-    class Args(RegionArgs):
+    class Args(StyleArgs):
+        """Its own words, then RegionArgs's keywords but move and rotate (here they place the mesh once)."""
         file_word: Literal["file"]
         file: str
         scale_word: Literal["scale"]
@@ -88,6 +89,9 @@ class RegionMeshTet(Region):
         move: tuple[float, float, float] = param(unit=("distance", "distance", "distance"))
         rotate_word: Literal["rotate"]
         rotate: tuple[float, float, float] = param(unit=("degrees", "degrees", "degrees"))
+        side: Literal["in", "out"] = keyword("in")
+        units: Literal["box", "lattice"] | None = keyword(None)
+        volume_limit: float | None = keyword(None, unit="volume")
 
     def __init__(self, sim, id, args):
         super().__init__(sim, id, args)

@@ -86,7 +86,7 @@ def test_block_edge_needs_a_box(make_sim):
     ("0 1 0 1 5 -5", "zlo must be <= zhi"),
     ("0 1 0 abc 0 1", "yhi must be a number, INF, -INF or EDGE (got abc)"),
     ("0 1 0 1 0", "missing argument zhi"),
-    ("0 1 0 1 0 1 7", "unknown keyword 7 (known: side, units, volume_limit)"),
+    ("0 1 0 1 0 1 7", "unknown keyword 7 (known: side, units, move, rotate, volume_limit, open)"),
     ("0 1 0 1 0 1 side sideways", "side must be one of"),
     ("0 1 0 1 0 nan", "zhi must be a number, INF, -INF or EDGE (got nan)"),
     ("inf 1 0 1 0 1", "xlo must be a number, INF, -INF or EDGE (got inf)"),
