@@ -18,7 +18,8 @@ How each script runs, unmodified but for two things done alike in both programs:
   out from numbers and other such variables, ``floor(${tprod}/${dt})``, the run line itself is cut
   and the variable keeps its value for the script's other uses). Where LAMMPS refuses the
   cut script (an average falling due past the cut), both programs run it whole.
-- Seed set k > 0 replaces each seed of the script (``velocity create``, ``fix langevin``, ``fix
+- Seed set k > 0 replaces each seed of the script (``velocity create``, ``fix langevin``, fix rigid*'s
+  ``langevin`` keyword, ``fix
   pour``, ``pair_style dpd*``, ``create_atoms random``, ``fix wall/reflect/stochastic``, ...; where
   the seed is a ``${name}``, the number of its ``variable`` line) by a prime of its own; set 0 is
   the script's own seeds.
@@ -197,6 +198,14 @@ SEEDS = [
     ("fix", 3, "evaporate", 7),
     ("fix", 3, "wall/reflect/stochastic", 5),
 ]
+# seeds after a keyword: (command, style word's index, style prefix, keyword, the seed's index after it)
+KEYWORD_SEEDS = [
+    ("fix", 3, "rigid", "langevin", 4),         # fix rigid* ... langevin TSTART TSTOP TPERIOD SEED
+    ("fix", 3, "bond/", "prob", 2),             # fix bond/create, bond/break ... prob P SEED
+    ("set", 0, "set", "type/fraction", 3),      # set ... type/fraction TYPE FRACTION SEED
+    ("set", 0, "set", "type/ratio", 3),
+    ("set", 0, "set", "type/subset", 3),
+]
 # pair styles with a seed: the seed's index after the style's name
 PAIR_SEEDS = {"dpd": 3, "dpd/tstat": 4, "dpd/ext": 3, "dpd/ext/tstat": 4}
 VARIABLE = re.compile(r"^\$\{(\w+)\}$|^\$(\w)$")
@@ -263,6 +272,9 @@ def seed_places(lines):
         words = line.split("#")[0].split()
         spots = [index for command, style_at, style, index in SEEDS
                  if words[:1] == [command] and len(words) > index and words[style_at] == style]
+        for command, style_at, prefix, keyword, offset in KEYWORD_SEEDS:
+            if words[:1] == [command] and len(words) > style_at and words[style_at].startswith(prefix):
+                spots += [at + offset for at, word in enumerate(words) if word == keyword and len(words) > at + offset]
         if words[:1] == ["pair_style"]:
             spots += [at + PAIR_SEEDS[word] for at, word in enumerate(words)
                       if word in PAIR_SEEDS and len(words) > at + PAIR_SEEDS[word]]

@@ -94,3 +94,15 @@ def test_a_flagged_script_is_measured_again_on_more_seed_sets(monkeypatch):
     assert [run["k"] for run in entry["pdps"]] == [0, 100, 101, 102, 103]
     how, _, detail = entry["agreement"]
     assert how == "statistics" and "of the 1001 choices of 4 of 14 runs" in detail
+
+
+def test_seeds_after_keywords_are_found():
+    script = """velocity all create 0.45 2349852
+fix 5 solute rigid/small molecule langevin 0.45 0.45 0.5 112211
+fix 6 all bond/create 10 1 1 1.0 1 prob 0.5 8834
+set type 1 type/fraction 2 0.3 4821
+"""
+    lines = tool.prepared(script, 1, 5000).splitlines()
+    assert [line.split()[-1] for line in lines] != ["2349852", "112211", "8834", "4821"]
+    assert all(line.split()[-1].isdigit() for line in lines)
+    assert [place for place in tool.seed_places(script.splitlines())] == [(0, 4), (1, 9), (2, 11), (3, 6)]
