@@ -51,10 +51,10 @@ class Misbehave(Fix):
             pid = os.getpid()
             # the loop ends with the case: a watchdog's kill skips the finally below, and a loop left
             # running would stop whatever process takes the pid next
-            throttle = subprocess.Popen(["sh", "-c", f"while kill -STOP {pid} 2>/dev/null; do sleep 0.3; "
-                                                     f"kill -CONT {pid}; sleep 0.1; done"])
+            throttle = subprocess.Popen(["sh", "-c", f"while kill -STOP {pid} 2>/dev/null; do sleep 0.2; "
+                                                     f"kill -CONT {pid}; sleep 0.2; done"])
             try:
-                until = time.process_time() + 3.0
+                until = time.process_time() + 4.0
                 while time.process_time() < until:
                     sum(range(10000))
             finally:
