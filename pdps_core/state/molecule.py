@@ -57,7 +57,10 @@ class MoleculeTemplate:
     molradius: float = field(init=False)
 
     def __post_init__(self):
-        self.center = self.coords.sum(axis=0) / len(self.coords)
+        self.center = np.zeros(3)
+        for row in self.coords:
+            self.center += row
+        self.center /= len(self.coords)
         self.dx = self.coords - self.center
         reach = np.sqrt((self.dx * self.dx).sum(axis=1))
         if self.radius is not None:
@@ -86,22 +89,38 @@ class MoleculeTemplate:
 
     def mass_properties(self, type_mass):
         """(total mass, centre of mass (3,), inertia tensor about it as xx yy zz yz xz xy): the header's
-        where it gives them (LAMMPS's compute_mass, compute_com, compute_inertia)."""
+        where it gives them (LAMMPS's compute_mass, compute_com, compute_inertia, summed atom by atom
+        in their order, as LAMMPS sums)."""
         m = self.masses(type_mass)
-        total = self.header_mass if self.header_mass is not None else float(m.sum())
+        n = self.natoms
+        total = self.header_mass
+        if total is None:
+            total = 0.0
+            for i in range(n):
+                total += m[i]
         if self.header_com is not None:
             com = self.header_com.copy()
         else:
-            com = (m[:, None] * self.coords).sum(axis=0) / total
+            com = np.zeros(3)
+            for i in range(n):
+                com += self.coords[i] * m[i]
+            com /= total
         if self.header_inertia is not None:
             ixx, iyy, izz, ixy, ixz, iyz = self.header_inertia
             return total, com, np.array([ixx, iyy, izz, iyz, ixz, ixy])
         d = self.coords - com
-        tensor = np.array([(m * (d[:, 1] ** 2 + d[:, 2] ** 2)).sum(), (m * (d[:, 0] ** 2 + d[:, 2] ** 2)).sum(),
-                           (m * (d[:, 0] ** 2 + d[:, 1] ** 2)).sum(), -(m * d[:, 1] * d[:, 2]).sum(),
-                           -(m * d[:, 0] * d[:, 2]).sum(), -(m * d[:, 0] * d[:, 1]).sum()])
+        tensor = np.zeros(6)
+        for i in range(n):
+            dx, dy, dz = d[i]
+            tensor[0] += m[i] * (dy * dy + dz * dz)
+            tensor[1] += m[i] * (dx * dx + dz * dz)
+            tensor[2] += m[i] * (dx * dx + dy * dy)
+            tensor[3] -= m[i] * dy * dz
+            tensor[4] -= m[i] * dx * dz
+            tensor[5] -= m[i] * dx * dy
         if self.radius is not None:
-            tensor[:3] += (SPHERE_INERTIA * m * self.radius ** 2).sum()
+            for i in range(n):
+                tensor[:3] += SPHERE_INERTIA * m[i] * self.radius[i] * self.radius[i]
         return total, com, tensor
 
     def summary(self):
