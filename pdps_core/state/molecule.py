@@ -213,6 +213,7 @@ def read_molecule_file(ident, path, label=None):
         width = SECTIONS[name]
         values = np.full((natoms, width), np.nan)
         seen = np.zeros(natoms, dtype=bool)
+        numbers = np.zeros(natoms, dtype=np.int64)
         index += 1
         count = 0
         while count < natoms:
@@ -232,31 +233,35 @@ def read_molecule_file(ident, path, label=None):
             if seen[atom - 1]:
                 raise ScriptError(f"{where}: atom {atom} given twice in section {name}")
             seen[atom - 1] = True
+            numbers[atom - 1] = number
             values[atom - 1] = [_number(w, name, where) for w in words[1:]]
             count += 1
-        sections[name] = (values, where)
+        sections[name] = (values, numbers)
     if "Coords" not in sections:
         raise ScriptError(f"{label}: no Coords section (a template needs its atoms' coordinates)")
     if "Types" not in sections:
         raise ScriptError(f"{label}: no Types section (a template needs its atoms' types)")
-    types, where = sections["Types"]
-    if np.any(types != np.round(types)) or np.any(types < 1):
-        raise ScriptError(f"{where}: Types: each type must be a whole number >= 1")
+    types, numbers = sections["Types"]
+    bad = (types[:, 0] != np.round(types[:, 0])) | (types[:, 0] < 1)
+    if bad.any():
+        raise ScriptError(f"{label}:{numbers[bad][0]}: Types: each type must be a whole number >= 1")
     radius = rmass = None
     if "Diameters" in sections:
-        diameters, where = sections["Diameters"]
-        if np.any(diameters < 0):
-            raise ScriptError(f"{where}: Diameters: each diameter must be >= 0")
+        diameters, numbers = sections["Diameters"]
+        bad = diameters[:, 0] < 0
+        if bad.any():
+            raise ScriptError(f"{label}:{numbers[bad][0]}: Diameters: each diameter must be >= 0")
         radius = 0.5 * diameters[:, 0]
     if "Masses" in sections:
-        masses, where = sections["Masses"]
-        if np.any(masses <= 0):
-            raise ScriptError(f"{where}: Masses: each mass must be > 0")
+        masses, numbers = sections["Masses"]
+        bad = ~(masses[:, 0] > 0)
+        if bad.any():
+            raise ScriptError(f"{label}:{numbers[bad][0]}: Masses: each mass must be > 0")
         rmass = masses[:, 0].copy()
     if "Molecules" in sections:
-        ids, where = sections["Molecules"]
+        ids, numbers = sections["Molecules"]
         if len(np.unique(ids)) > 1:
-            raise ScriptError(f"{where}: Molecules: the template holds {len(np.unique(ids))} molecules; pdps's "
+            raise ScriptError(f"{label}:{numbers[-1]}: Molecules: the template holds {len(np.unique(ids))} molecules; pdps's "
                               "templates are one molecule each")
     return MoleculeTemplate(ident, title, sections["Coords"][0], types[:, 0].astype(np.int64), radius, rmass,
                             float(header["mass"][0]) if "mass" in header else None, header.get("com"),
