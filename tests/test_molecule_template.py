@@ -59,7 +59,7 @@ HEADER = """LAMMPS data file created for rigid body molecule template
 
 0.4 0 0 com
 
-0.1 1.2 1.3 0 0 0 inertia
+0.1 1.2 1.3 0.01 0.02 0.03 inertia
 
 Coords
 
@@ -109,7 +109,8 @@ def test_the_header_s_mass_com_and_inertia_stand(tmp_path):
     total, com, tensor = sim.molecule_template("m").mass_properties(np.array([np.nan, 1.0]))
     assert total == 2.5
     assert com.tolist() == [0.4, 0.0, 0.0]
-    assert tensor.tolist() == [0.1, 1.2, 1.3, 0.0, 0.0, 0.0]
+    # xx yy zz, then yz xz xy: the order LAMMPS 22 Jul 2025 uses them in
+    assert tensor.tolist() == [0.1, 1.2, 1.3, 0.01, 0.02, 0.03]
     assert sim.molecule_template("m").radius is None
 
 

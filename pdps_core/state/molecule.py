@@ -13,7 +13,9 @@ What a template derives, as LAMMPS's Molecule does: the geometric centre (the me
 coordinates) and the displacements from it; ``molradius``, the largest distance of an atom's
 surface from the centre, :math:`\max_i (|x_i - c| + r_i)` (radii 0 without Diameters); the total
 mass, centre of mass and inertia tensor about it (spheres add :math:`\tfrac{2}{5} m r^2` to the
-diagonal), each from the header where it gives them. Masses come from Masses or, failing that, from
+diagonal), each from the header where it gives them. The header's six inertia values are taken as
+LAMMPS 22 Jul 2025 takes them, xx yy zz then yz xz xy (its manual names the last three Ixy Ixz Iyz;
+measured: examples/rigid's molecule.data, whose Ixy and Iyz differ, moves as LAMMPS's only so). Masses come from Masses or, failing that, from
 the types' masses when a style asks (``masses(type_mass)``), since ``mass`` may follow ``molecule``.
 """
 
@@ -42,7 +44,7 @@ SPHERE_INERTIA = 0.4        # of a solid sphere, m r^2 (LAMMPS uses it in 2-d to
 class MoleculeTemplate:
     """A molecule template: per-atom ``coords`` (n, 3), ``types`` (n,) int, ``radius`` (n,) or None
     (no Diameters), ``rmass`` (n,) or None (no Masses), the header's ``mass``, ``com``, ``inertia``
-    (Ixx Iyy Izz Ixy Ixz Iyz) or None, and what follows from them."""
+    (its six values in the file's order) or None, and what follows from them."""
     id: str
     title: str
     coords: np.ndarray
@@ -106,8 +108,7 @@ class MoleculeTemplate:
                 com += self.coords[i] * m[i]
             com /= total
         if self.header_inertia is not None:
-            ixx, iyy, izz, ixy, ixz, iyz = self.header_inertia
-            return total, com, np.array([ixx, iyy, izz, iyz, ixz, ixy])
+            return total, com, self.header_inertia.copy()
         d = self.coords - com
         tensor = np.zeros(6)
         for i in range(n):
