@@ -134,6 +134,9 @@ def test_masses_of_types_when_the_file_has_none(tmp_path):
     (TRI.replace("3 1.5 0.9 0.3", "4 1.5 0.9 0.3"), "m.mol:9: atom index 4 in section Coords is beyond the 3 atoms"),
     (TRI.replace("3 1.5 0.9 0.3", "3 1.5 0.9"), "m.mol:9: section Coords takes ID and 3 value(s) per line (got 3 1.5 0.9)"),
     (TRI.replace("3 1.5 0.9 0.3", "3 1.5 nan 0.3"), "m.mol:9: Coords must be finite (got nan)"),
+    (TRI.replace("3 1.5 0.9 0.3", "3 1.5 1e300 0.3"), "m.mol:9: Coords must lie within +-1e+100 (got 1e300)"),
+    (TRI.replace("3 atoms", "99999999999 atoms"), "m.mol: the header gives 99999999999 atoms, more than the file's 27 "
+     "lines can list"),
     (TRI.replace("2 0.8", "2 -0.8"), "m.mol:20: Diameters: each diameter must be >= 0"),
     (TRI.replace("3 0.9\n", "3 0\n"), "m.mol:27: Masses: each mass must be > 0"),
     (TRI.replace("3 1\n\nDiam", "3 0\n\nDiam"), "m.mol:15: Types: each type must be a whole number >= 1"),

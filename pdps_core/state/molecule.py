@@ -37,6 +37,7 @@ REFUSED_SECTIONS = {
     **{name: "pdps has no fix shake" for name in ("Shake Flags", "Shake Atoms", "Shake Bond Types")},
     **{name: "pdps has no body particles" for name in ("Body Integers", "Body Doubles")},
 }
+VALUE_LIMIT = 1.0e100          # so that a template's sums (centre, reach, inertia) stay finite
 SPHERE_INERTIA = 0.4        # of a solid sphere, m r^2 (LAMMPS uses it in 2-d too)
 
 
@@ -140,6 +141,8 @@ def _number(word, what, where):
         raise ScriptError(f"{where}: {what} must be a number (got {word})") from None
     if not np.isfinite(value):
         raise ScriptError(f"{where}: {what} must be finite (got {word})")
+    if abs(value) >= VALUE_LIMIT:
+        raise ScriptError(f"{where}: {what} must lie within +-{VALUE_LIMIT:g} (got {word})")
     return value
 
 
@@ -191,6 +194,8 @@ def read_molecule_file(ident, path, label=None):
     natoms = header.get("atoms", 0)
     if natoms < 1:
         raise ScriptError(f"{label}: the header must give 'N atoms' with N >= 1")
+    if natoms > len(lines):
+        raise ScriptError(f"{label}: the header gives {natoms} atoms, more than the file's {len(lines)} lines can list")
     if "mass" in header and not header["mass"][0] > 0:
         raise ScriptError(f"{label}: mass must be > 0 (got {header['mass'][0]:g})")
     if "inertia" in header and not np.all(header["inertia"][:3] >= 0):
@@ -264,6 +269,7 @@ def read_molecule_file(ident, path, label=None):
         if len(np.unique(ids)) > 1:
             raise ScriptError(f"{label}:{numbers[-1]}: Molecules: the template holds {len(np.unique(ids))} molecules; pdps's "
                               "templates are one molecule each")
-    return MoleculeTemplate(ident, title, sections["Coords"][0], types[:, 0].astype(np.int64), radius, rmass,
+    coords = sections["Coords"][0]
+    return MoleculeTemplate(ident, title, coords, types[:, 0].astype(np.int64), radius, rmass,
                             float(header["mass"][0]) if "mass" in header else None, header.get("com"),
                             header.get("inertia"))

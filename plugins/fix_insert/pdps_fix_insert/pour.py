@@ -17,7 +17,12 @@ Syntax::
         id max|next                        ids after the largest present one (pdps always numbers so)
         ignore                             LAMMPS skips line and triangle particles (pdps has none)
 
-``mol``, ``rigid``, ``shake`` and ``molfrac`` (molecules) are refused. Units: diameters distance,
+        mol TEMPLATE                       copies of a molecule template (the molecule command) instead
+                                           of spheres; TYPE is added to the template's types
+        rigid FIX_ID                       each copy a rigid body of that fix rigid/small ... mol TEMPLATE
+
+``shake`` and ``molfrac`` are refused (pdps has no fix shake; its templates are one molecule each).
+Units: diameters distance,
 densities mass/distance^3 (in 2-d too: the mass is :math:`\tfrac{4}{3}\pi r^3 \rho`, as LAMMPS), velocities.
 
 The schedule. A batch falls for the time a particle needs from the top of the volume to its bottom
@@ -42,6 +47,17 @@ height, each refused where the sphere touches or overlaps (:math:`d \le r_i + r_
 a present particle near the volume or one placed before it; the first particle that finds no room
 ends the batch, with LAMMPS's warning. A placed particle gets vx, vy uniform in their ranges and
 :math:`v_z = -\sqrt{v_z^2 + 2 g (z_{hi} - z)}`, the speed of a fall from the top, then its density.
+
+Molecules (``mol``), as LAMMPS draws them: the volume of one is the disc or sphere of the template's
+reach (``molradius``: the largest distance of an atom's surface from its geometric centre), which
+also widens the near list; per molecule a height; per try a centre (x, y at that height), a number
+LAMMPS uses to choose among a set of templates (pdps has one: drawn and unused), a random axis (three
+numbers less 1/2, normalised; z in 2-d) and an angle :math:`2\pi u`; the template turned by that
+quaternion about its centre and put there, each atom wrapped into the periodic box (its image
+flags counted); a try fails where any atom touches a present or placed particle. A placed copy
+takes the velocity (drawn as a sphere's) on every atom, a new molecule id (where the particles have
+molecule ids), the template's radii (0.5 without Diameters) and masses (4/3 pi r^3 without Masses);
+with ``rigid`` the fix makes each copy a body, given the centre, velocity and turn.
 
 Output: none (LAMMPS's fix pour has no f_ID).
 """

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from pdps_core.api import ScriptError, Simulation
+from pdps_core.testing import run_ranks
 
 RECORDED = json.loads((Path(__file__).parent / "data" / "pour_molecule.json").read_text())
 
@@ -242,3 +243,15 @@ def test_bad_molecule_pours_get_one_line(tmp_path, line, message):
     with pytest.raises(ScriptError) as caught:
         sim.command("region slab block 2 10 2 10 8 14 units box\n" + line)
     assert str(caught.value).split(": ", 1)[1] == message
+
+
+def test_rigid_molecules_on_2_ranks_as_on_1(tmp_path):
+    """Rank 0 adds every copy and the bodies' records travel with their owner particles: the rigid
+    L's print on 2 ranks what LAMMPS printed (to 1e-11)."""
+    (tmp_path / "ell.mol").write_text(ELL)
+    script = ELL_SCRIPT.format(folder=tmp_path)
+    script = "\n".join(line for line in script.splitlines() if not line.startswith(("dump", "undump")))
+    rows = thermo(run_ranks(script, 2, tmp_path).stdout, 4)
+    assert len(rows) == len(RECORDED["ell_thermo"])
+    for mine, lammps in zip(rows, RECORDED["ell_thermo"]):
+        assert mine == pytest.approx(lammps, rel=1e-11, abs=1e-20)

@@ -44,6 +44,7 @@ array (LAMMPS's rigid/small has none): ``compute rigid/local`` gives the bodies'
 Syntax::
 
     fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
+        [mol TEMPLATE] [gravity FIX_ID]
 
 - ``molecule``: one body per molecule id among the group's particles (LAMMPS's only bodystyle for
   rigid/small); the particles need molecule ids (atom_style molecular, bond, angle or full).
@@ -62,14 +63,32 @@ Syntax::
   ranks (not LAMMPS's numbers, which depend on the rank; its drag alone is LAMMPS's to round-off).
 - ``temp`` and ``tparam`` belong to rigid/nvt/small and rigid/npt/small, the barostat keywords (iso,
   aniso, x, y, z, couple, pchain, dilate) to rigid/nph/small and rigid/npt/small: refused here, as
-  LAMMPS does. ``mol`` and ``gravity`` are refused by name: not implemented yet.
+  LAMMPS does.
+- ``mol TEMPLATE`` (rigid/small and rigid/nve/small; the other variants refuse it): bodies made
+  during a run of the copies of a molecule template (the ``molecule`` command) that fix pour ``mol
+  TEMPLATE rigid ID`` inserts, as LAMMPS's set_molecule makes them: the template's body is worked out
+  once, at the first run, as LAMMPS's Molecule does it (mass, centre of mass and inertia tensor
+  from the file's header or its atoms, principal axes by Jacobi rotations in LAMMPS's arithmetic,
+  moments decreasing, each atom's displacement in the body frame, the owner the atom nearest the
+  centre of mass); a copy's centre of mass is the centre the pour chose plus the turned offset from
+  the template's geometric centre, its orientation the pour's turn times the template's axes, its
+  velocity the pour's and its angular momentum 0.
+- ``gravity FIX_ID`` (rigid/small and rigid/nve/small): each body's centre of mass feels
+  :math:`M\mathbf{g}`, g the acceleration of that fix gravity (LAMMPS's), so gravity puts no torque
+  on a body whose masses come from a template's header; ``fix ... gravity ... disable`` then leaves
+  the particles alone (else both act).
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
-Example::
+Examples::
 
     fix 1 water rigid/small molecule
     neigh_modify exclude molecule/intra water
+
+    molecule ell ell.mol
+    fix grav all gravity 9.8 vector 0 0 -1 disable
+    fix rig all rigid/small molecule mol ell gravity grav
+    fix ins all pour 9 0 7310 region slab mol ell rigid rig
 
 Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); the integrators'
 references are fix rigid's and rigid/nve's.
