@@ -8,7 +8,7 @@ range it supports as ``PDPS_API = ">=1.0,<2"`` in its package's ``__init__.py`` 
 by name, outside it.
 """
 
-from .capabilities import (ContactConduction, ContactRows, ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, SurfaceValues,
+from .capabilities import (ContactConduction, ContactRows, ContactTable, ContactTimes, GlobalProperty, HeatTransport, MeshSurface, MoleculeBodies, SurfaceValues,
                            TriangleSurface)
 from .commands.words import choice, integer, number, type_range, yes_no
 from .contact import ContactHistory, close_slot, find_slot, open_slot
@@ -27,7 +27,7 @@ from .styles import (API_VERSION, Analyze, Bond, Compute, Dump, Fix, FloatOrVari
                      PERATOM_REFERENCE, PeratomReference, peratom_column, registry)
 
 __all__ = ["API_VERSION", "Analyze", "Bond", "CONTRACT", "Compute", "ContactConduction", "ContactHistory", "ContactRows", "ContactTable", "ContactTimes",
-           "GlobalProperty", "HeatTransport", "MeshSurface", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
+           "GlobalProperty", "HeatTransport", "MeshSurface", "MoleculeBodies", "SurfaceValues", "TriangleSurface", "Dump", "Fix",
            "FloatOrVariable", "HOOKS", "NamedTemperature", "NeighborList", "Pair", "PairLaw", "Region", "RegionArgs", "ScriptError",
            "Simulation", "SimulationError", "StyleArgs", "StyleName", "SubModel", "SurfaceContacts", "Variable", "VariableRef", "check_bins", "check_images", "choice", "close_slot", "find_slot", "generated_module", "integer",
            "keyword", "number", "observables", "open_slot", "pair_gaussian", "park_gaussian", "park_state", "park_uniform", "pair_uniform", "param", "parse_args",
@@ -95,6 +95,7 @@ CONTRACT = {
         "require_group": "require_group(name): the name, or a one-line error",
         "require_box": "require_box(what): a one-line error when no box exists yet",
         "resolve": "resolve(path): a file named in a script, relative to the script's folder",
+        "molecule_template": "molecule_template(id): the molecule command's template (MoleculeTemplate) of that ID, or a one-line error",
         # services
         "comm": "communication (Comm): reductions, gathers, agreement on errors",
         "neighbor": "neighbor settings (Neighbor): skin",
@@ -146,6 +147,19 @@ CONTRACT = {
         "owners": "owners(particles): owned row of every local particle, -1 for remote ghosts",
         "send_rows": "send_rows(rows, ranks, kept=False): each row to the rank named; returns (rows received, the rank each came from) (kept=True: in buffers valid until the next such call; on one rank the rows given)",
         "rank_of": "rank_of(points): the rank whose sub-domain holds each point (points inside the box)",
+    },
+    "MoleculeTemplate": {
+        "id": "the template's ID", "natoms": "its number of atoms", "ntypes": "its largest type",
+        "coords": "(natoms, 3) coordinates as the file gives them (distance)",
+        "types": "(natoms,) int64 types, offsets to an inserting style's type",
+        "radius": "(natoms,) radii (half the Diameters), or None without that section",
+        "rmass": "(natoms,) masses (the Masses section), or None without it",
+        "center": "(3,) the geometric centre, the mean of the coordinates",
+        "dx": "(natoms, 3) the coordinates less the centre",
+        "molradius": "the largest |dx_i| + radius_i (radius 0 without Diameters)",
+        "masses": "masses(type_mass): per-atom masses, Masses or type_mass[types] (an array indexed by type)",
+        "mass_properties": "mass_properties(type_mass): (total mass, centre of mass (3,), inertia tensor about it "
+                           "as xx yy zz yz xz xy), the header's mass, com and inertia where given",
     },
     "Groups": {"bit": "bit(name): the group's mask bit", "select": "select(sim, name): owned mask"},
     "Units": {"name": "lj, real, metal, si, cgs, micro or nano", "boltz": "k_B", "mvv2e": "m v^2 to energy",

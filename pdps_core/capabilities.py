@@ -112,3 +112,19 @@ class ContactRows(Protocol):
     keywords: list
 
     def contact_columns(self, sim) -> list: ...
+
+
+@runtime_checkable
+class MoleculeBodies(Protocol):
+    """A fix that makes a rigid body of each copy of a molecule template another style inserts
+    during a run (fix rigid/small ``mol``, for fix pour ``mol ... rigid``): ``body_template`` is the
+    template (``sim.molecule_template(ID)``), and ``add_molecule_bodies(sim, rows, centres,
+    velocities, quats)``, called on every rank right after the copies were added (``pre_exchange``),
+    makes the bodies: ``rows`` (k, natoms) the owned rows of k new copies, atom by atom in the
+    template's order (none on the other ranks); ``centres`` (k, 3) where each copy's geometric
+    centre was put (distance), ``velocities`` (k, 3) their centre-of-mass velocities, ``quats``
+    (k, 4) the unit quaternions (w, x, y, z) that turned the template into each copy."""
+
+    body_template: object
+
+    def add_molecule_bodies(self, sim, rows, centres, velocities, quats) -> None: ...

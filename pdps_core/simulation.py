@@ -41,7 +41,7 @@ from .styles import VariableRef
 READ_THROUGH = {
     "system": ("particles", "units", "dimension", "box", "ntypes", "mass", "particle_style",
                "particle_styles", "lattice", "groups", "require_box", "require_group", "change_box",
-               "add_particles", "delete_particles", "stiffness_checks", "periodicity"),
+               "add_particles", "delete_particles", "stiffness_checks", "periodicity", "molecule_template"),
     "run_state": ("step", "time", "dt", "run_first_step", "run_last_step", "ramp", "eflag", "vflag",
                   "virial", "pe", "in_setup", "random_key"),
     "styles": ("pair", "pair_list", "fixes", "computes", "analyzes", "compute_value", "fix_value",

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from pdps_core.api import (ContactConduction, ContactTable, ContactTimes, HeatTransport, MeshSurface, SurfaceValues,
-                           registry)
+from pdps_core.api import (ContactConduction, ContactTable, ContactTimes, HeatTransport, MeshSurface, MoleculeBodies,
+                           SurfaceValues, registry)
 from pdps_core.styles import IN_PROCESS
 
 ROOT = Path(__file__).parents[1]
@@ -24,6 +24,9 @@ METHOD_CAPABILITIES = {
     HeatTransport: {("fix", "heat/gran"), ("fix", "heat/gran/conduction")},
     MeshSurface: {("fix", "mesh/surface"), ("fix", "mesh/surface/stress"), ("fix", "mesh/surface/planar")},
     SurfaceValues: {("fix", "mesh/surface/stress")},
+    # the thermostatted and barostatted variants inherit the method and refuse the mol keyword
+    MoleculeBodies: {("fix", name) for name in ("rigid/small", "rigid/nve/small", "rigid/nvt/small", "rigid/nph/small",
+                                                 "rigid/npt/small")},
 }
 
 

@@ -8,6 +8,7 @@ import pytest
 
 from pdps_core.state.lattice import USAGE
 from pdps_core.errors import ScriptError
+from pdps_core.simulation import Simulation
 from pdps_core.state import observables as obs
 from pdps_core.styles import registry
 
@@ -1099,3 +1100,19 @@ class TestResetTimestepAndRun:
 
     def test_run_before_the_box(self, sim):
         fails(sim, "run 0", "run", "run before the simulation box exists (use create_box or read_data first)")
+
+
+def test_atom_modify_first_names_a_group_and_needs_sorting_off():
+    """LAMMPS keeps the group's particles first in storage (for speed) and refuses it with sorting
+    on; pdps takes it where LAMMPS does and changes nothing."""
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("atom_modify map array sort 0 0\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\ngroup some type 1\n"
+                "atom_modify first some")
+    with pytest.raises(ScriptError, match=r"group nobody is not defined"):
+        sim.command("atom_modify first nobody")
+    other = Simulation(screen=False, log=None, dialect="lammps")
+    other.command("region b block 0 4 0 4 0 4\ncreate_box 1 b\ngroup some type 1")
+    with pytest.raises(ScriptError) as caught:
+        other.command("atom_modify first some")
+    assert str(caught.value) == ("<command>:1: atom_modify: first some needs sorting off (sort 0 0 first; LAMMPS: "
+                                 "Atom_modify sort and first options cannot be used together)")

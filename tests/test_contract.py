@@ -115,6 +115,7 @@ def test_plugins_read_only_what_the_contract_names():
 
 
 def test_every_name_in_the_contract_exists(tmp_path):
+    (tmp_path / "pair.mol").write_text("two spheres\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 1 0 0\n\nTypes\n\n1 1\n2 1\n")
     sim = Simulation(screen=False, log=None)
     sim.command(f"""
         particle_style sphere
@@ -125,11 +126,13 @@ def test_every_name_in_the_contract_exists(tmp_path):
         variable a equal 1
         pair_style dem/lsd 0.3 1.0
         pair_coeff * * 1000 16.6016 314.29 6.3008 0.5 1
+        molecule pair {tmp_path / 'pair.mol'}
         run 0
     """)
     objects = {"Simulation": sim, "Particles": sim.particles, "Box": sim.box, "Comm": sim.comm,
                "Groups": sim.groups, "Units": sim.units, "Neighbor": sim.neighbor,
-               "NeighborList": sim.pair_list, "Variables": sim.variables, "Pair": sim.pair}
+               "NeighborList": sim.pair_list, "Variables": sim.variables, "Pair": sim.pair,
+               "MoleculeTemplate": sim.molecule_template("pair")}
     assert set(objects) == set(CONTRACT)
     missing = [f"{kind}.{name}" for kind, names in CONTRACT.items() for name in names
                if not hasattr(objects[kind], name)]

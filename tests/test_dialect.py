@@ -142,8 +142,8 @@ def test_formulas_give_what_lammps_prints(formula, value, dialect):
 @pytest.mark.parametrize("line, message", [
     ("kspace_style pppm 1e-4", "kspace_style is a LAMMPS command pdps does not support; instead: pdps has no "
                                "long-range electrostatics (docs/lammps.md)"),
-    ("molecule water water.mol", "molecule is a LAMMPS command pdps does not support; instead: read_data with "
-                                 "molecule ids (docs/lammps.md)"),
+    ("labelmap atom 1 C", "labelmap is a LAMMPS command pdps does not support; instead: numeric types "
+                          "(docs/lammps.md)"),
 ])
 def test_lammps_commands_pdps_does_not_run_name_an_alternative(pdps_cli, line, message):
     done = pdps_cli(f"units lj\natom_style atomic\n{line}\n", "-log", "none")

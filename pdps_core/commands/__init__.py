@@ -13,4 +13,4 @@ def command(*names):
 
 
 from . import (bonds, change_box, control, create_atoms, edit_atoms, geometry, minimize, particles,  # noqa: E402,F401
-               info, read_dump, replicate, restart, settings, setup, styles, velocity)  # (they register)
+               info, molecule, read_dump, replicate, restart, settings, setup, styles, velocity)  # (they register)

@@ -278,11 +278,15 @@ def atom_modify(sim, args):
     """LAMMPS's ``atom_modify [sort N BINSIZE] [map array|hash|yes] [id yes] [first GROUP]``: re-sort
     owned particles by cell every N steps (0: never; the bin size is accepted, pdps sorts on cells of
     half the neighbor cutoff). ``map`` and ``id yes`` are accepted (pdps always has ids and finds
-    particles by id its own way); ``id no`` and ``first`` are refused."""
-    usage = "atom_modify [sort N BINSIZE] [map array|hash|yes] [id yes]"
+    particles by id its own way); ``id no`` is refused. ``first GROUP`` (LAMMPS keeps the group's
+    particles first in storage, for the speed of styles on that group, and refuses it with sorting
+    on) changes no result: the group must exist and sorting be off (``sort 0 0``), as LAMMPS asks;
+    pdps keeps its own order."""
+    usage = "atom_modify [sort N BINSIZE] [map array|hash|yes] [id yes] [first GROUP]"
     if not args:
         raise ScriptError(f"expected keywords; usage: {usage}")
     k = 0
+    first = None
     while k < len(args):
         key = args[k]
         if key == "sort":
@@ -298,7 +302,15 @@ def atom_modify(sim, args):
             elif choice(args[k + 1], "id", ("yes", "no")) == "no":
                 raise ScriptError("atom_modify id no is not supported: pdps particles always have ids")
             k += 2
+        elif key == "first" and k + 1 < len(args):
+            if args[k + 1] != "all":
+                sim.require_group(args[k + 1])
+                first = args[k + 1]
+            k += 2
         elif key == "first":
-            raise ScriptError("atom_modify first is not supported (pdps orders particles by cell)")
+            raise ScriptError(f"first needs a group; usage: {usage}")
         else:
             raise ScriptError(f"unknown atom_modify keyword {key}; usage: {usage}")
+    if first is not None and sim.neighbor.sort_every > 0:
+        raise ScriptError(f"first {first} needs sorting off (sort 0 0 first; LAMMPS: Atom_modify sort and first "
+                          "options cannot be used together)")

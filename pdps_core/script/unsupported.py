@@ -15,7 +15,7 @@ ALTERNATIVES = {
     "improper_coeff": "pdps has no improper styles", "improper_style": "pdps has no improper styles",
     "kim": "none in pdps",
     "kspace_modify": "pdps has no long-range electrostatics", "kspace_style": "pdps has no long-range electrostatics",
-    "labelmap": "numeric types", "mdi": "none in pdps", "molecule": "read_data with molecule ids",
+    "labelmap": "numeric types", "mdi": "none in pdps",
     "neb": "none in pdps", "package": "nothing: pdps compiles its kernels itself (numba)",
     "pair_write": "pdps doc pair STYLE (the formula) or a compute on two particles",
     "plugin": "pdps plugins are Python distributions (docs/plugin-guide.md)",

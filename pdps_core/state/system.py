@@ -14,7 +14,7 @@ from .units import UNITS
 class System:
     __slots__ = ("sim", "units", "dimension", "periodicity", "box", "shrink_faces", "ntypes", "mass",
                  "particle_style", "lattice", "particles", "groups", "regions", "processors",
-                 "ghost_velocity", "stiffness_checks", "dielectric", "topology")
+                 "ghost_velocity", "stiffness_checks", "dielectric", "topology", "molecules")
 
     def __init__(self, sim):
         self.sim = sim                  # for group selections (regions, variables)
@@ -30,6 +30,7 @@ class System:
         self.particles = Particles()
         self.groups = Groups()
         self.regions = {}
+        self.molecules = {}             # molecule templates by ID (the molecule command)
         self.processors = None          # the processors command's grid, or None
         self.ghost_velocity = False     # comm_modify vel yes: ghosts carry velocities
         # LIGGGHTS's bounds on youngsModulus, lifted by soft_particles yes / hard_particles yes
@@ -53,6 +54,14 @@ class System:
             return self.regions[id]
         except KeyError:
             raise ScriptError(f"region {id} is not defined (defined: {', '.join(self.regions) or 'none'})") from None
+
+    def molecule_template(self, id):
+        """A molecule template (pdps_core/state/molecule.py's MoleculeTemplate) by its ID."""
+        try:
+            return self.molecules[id]
+        except KeyError:
+            raise ScriptError(f"molecule template {id} is not defined (defined: "
+                              f"{', '.join(self.molecules) or 'none'})") from None
 
     def require_group(self, name):
         self.groups.bit(name)

@@ -8,7 +8,7 @@
   include, lj/cut with langevin, walls, pair formula, mvv/dpd, dem/hertz with nve/limit, the granular
   fixes, read_data, restart output, 2-d).
 - Data files: written with ``pdps_core.testing.write_data`` (atomic, with and without velocities,
-  one and two types, 2-d) and by hand (sphere style, image flags), each read by a short script that
+  one and two types, 2-d) and by hand (sphere style, image flags; a molecule template, poured as rigid bodies), each read by a short script that
   runs them with a pair style, an integrator, thermo output and a dump.
 - Restart files: written by running seed scripts with ``write_restart`` at the end (DPD with groups
   and fixes, granular contacts with their history, Lennard-Jones with langevin, mvv/dpd, the hopper
@@ -110,11 +110,49 @@ DATA_SCRIPTS = {
               "fix g all gravity 1.0 vector 0 0 -1\nfix 1 all rigid/small molecule\ntimestep 0.001\n"
               "thermo 5\nthermo_style custom step atoms pe\n"
               "dump 1 all custom 5 dump.fuzz id mol x y z radius omegax\nrun 10\nwrite_data out.data\n",
+    # the data file is a molecule template (the molecule command), poured as rigid bodies
+    "molecule": "atom_style sphere\nboundary p p f\ncomm_modify vel yes cutoff 3.0\n"
+                "fix prop all property/atom mol ghost yes\nregion box block 0 8 0 8 0 12 units box\ncreate_box 2 box\n"
+                "pair_style gran/hooke/history 4000 NULL 100 NULL 0.5 0\npair_coeff * *\n"
+                "neigh_modify exclude molecule/intra all\nfix g all gravity 9.8 vector 0 0 -1 disable\n"
+                "molecule m data.fuzz\nfix r all rigid/small molecule mol m gravity g\n"
+                "region slab block 2 6 2 6 6 10 units box\nfix p all pour 4 0 4321 vol 0.3 20 region slab mol m rigid r\n"
+                "fix w all wall/gran hooke/history 4000 NULL 100 NULL 0.5 0 zplane 0 NULL\ntimestep 0.001\n"
+                "thermo 5\nthermo_style custom step atoms\ndump 1 all custom 5 dump.fuzz id mol x y z radius\nrun 10\n",
     "full": "atom_style full\nbond_style harmonic\nread_data data.fuzz\npair_style lj/cut 2.5\npair_coeff * * 1.0 1.0\n"
             "group first molecule 1\nneigh_modify exclude molecule/intra all exclude molecule/inter first\n"
             "fix 1 all nve\ntimestep 0.002\nthermo 5\nthermo_style custom step atoms pe ke press\n"
             "dump 1 all custom 5 dump.fuzz id mol type q x y z\nrun 10\n",
 }
+MOLECULE_FILE = """# an L of three spheres (the molecule command's file)
+
+3 atoms
+0 bonds
+
+Coords
+
+1 0.0 0.0 0.0
+2 1.0 0.0 0.0
+3 1.0 1.0 0.2
+
+Types
+
+1 1
+2 2
+3 1
+
+Diameters
+
+1 1.0
+2 0.8
+3 1.0
+
+Masses
+
+1 0.5
+2 0.3
+3 0.5
+"""
 MOLECULES = """three molecules, bonds and charges (atom_style full)
 
 6 atoms
@@ -262,6 +300,8 @@ def data_seeds(folder):
     seeds.append(Seed("molecules", {SCRIPT: DATA_SCRIPTS["full"].encode(), DATA: MOLECULES.encode()},
                       target=DATA))
     seeds.append(Seed("clumps", {SCRIPT: DATA_SCRIPTS["hybrid"].encode(), DATA: CLUMPS.encode()},
+                      target=DATA))
+    seeds.append(Seed("molecule_file", {SCRIPT: DATA_SCRIPTS["molecule"].encode(), DATA: MOLECULE_FILE.encode()},
                       target=DATA))
     seeds.append(Seed("pair_coeffs", {SCRIPT: DATA_SCRIPTS["lj_coeffs"].encode(), DATA: PAIR_COEFFS.encode()},
                       target=DATA))

@@ -28,6 +28,10 @@ Syntax::
     fix ID GROUP gravity MAGNITUDE vector X Y Z
     fix ID GROUP gravity MAGNITUDE chute ANGLE
     fix ID GROUP gravity MAGNITUDE spherical PHI THETA
+    ... [disable]
+
+- ``disable`` (LAMMPS's): the particles feel nothing; the fix only holds the acceleration for the
+  styles that read it (fix rigid/small's and rigid's ``gravity FIX_ID``, fix pour's schedule).
 
 Examples::
 
@@ -39,7 +43,7 @@ import math
 from typing import Literal
 
 import numpy as np
-from pdps_core.api import Fix, ScriptError, StyleArgs, param
+from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
 
 from ._common import NO_RMASS, add_weight, add_weight_unbound
 
@@ -68,13 +72,14 @@ def direction(style, values, dimension):
 class FixGravity(Fix):
     name = "gravity"
     minimize_idle = True         # LAMMPS's fix gravity has no min_post_force (recorded: a minimization ignores it)
-    usage = "fix ID GROUP gravity MAGNITUDE vector X Y Z | chute ANGLE | spherical PHI THETA"
+    usage = "fix ID GROUP gravity MAGNITUDE vector X Y Z | chute ANGLE | spherical PHI THETA [disable]"
 
     class Args(StyleArgs):
         magnitude: float = param(unit="acceleration")
         direction: (tuple[Literal["vector"], float, float, float] | tuple[Literal["chute"], float]
                     | tuple[Literal["spherical"], float, float]) = param(
             unit={"vector": "dimensionless", "chute": "degrees", "spherical": "degrees"})
+        disable: tuple[()] | None = keyword(None)
 
     def __init__(self, sim, id, group, args):
         super().__init__(sim, id, group, args)
@@ -87,12 +92,16 @@ class FixGravity(Fix):
         return self.acceleration if name == "gvec" else None
 
     def setup(self, sim):
+        if self.args.disable is not None:
+            return
         # spheres of rigid clumps, whose weight their fix applies to the bodies (fix multisphere's)
         self.bound = next((name for fix in sim.fixes.values() if fix is not self
                            and (name := fix.extract("clump_body")) is not None), None)
         self.post_force(sim)
 
     def post_force(self, sim):
+        if self.args.disable is not None:
+            return
         p = sim.particles
         a = p.arrays
         ax, ay, az = self.acceleration

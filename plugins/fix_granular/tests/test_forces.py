@@ -186,6 +186,18 @@ def test_gravity_is_mass_times_g_along_the_normalised_direction(spheres, words, 
     np.testing.assert_allclose(sim.f[0], mass * 2.0 * np.array(direction), rtol=1e-12, atol=1e-15)
 
 
+def test_a_disabled_gravity_pulls_nothing_and_keeps_its_acceleration(spheres):
+    """LAMMPS's disable: the fix only holds g for the styles that read it (fix rigid/small's gravity
+    keyword, fix pour's schedule)."""
+    sim = spheres("""
+        create_particle 1 single 0 0 0 diameter 1.0 density 3.0
+        fix 1 all gravity 2.0 vector 0 0 -1 disable
+        run 0
+    """)
+    assert sim.f[0].tolist() == [0.0, 0.0, 0.0]
+    assert sim.fixes["1"].extract("gvec") == (0.0, 0.0, -2.0)
+
+
 # ---- errors -------------------------------------------------------------------------------------
 @pytest.mark.parametrize("fix, message", [
     ("viscous", "missing argument gamma; usage: fix ID GROUP viscous GAMMA [scale TYPE RATIO]..."),

@@ -17,7 +17,12 @@ Syntax::
         id max|next                        ids after the largest present one (pdps always numbers so)
         ignore                             LAMMPS skips line and triangle particles (pdps has none)
 
-``mol``, ``rigid``, ``shake`` and ``molfrac`` (molecules) are refused. Units: diameters distance,
+        mol TEMPLATE                       copies of a molecule template (the molecule command) instead
+                                           of spheres; TYPE is added to the template's types
+        rigid FIX_ID                       each copy a rigid body of that fix rigid/small ... mol TEMPLATE
+
+``shake`` and ``molfrac`` are refused (pdps has no fix shake; its templates are one molecule each).
+Units: diameters distance,
 densities mass/distance^3 (in 2-d too: the mass is :math:`\tfrac{4}{3}\pi r^3 \rho`, as LAMMPS), velocities.
 
 The schedule. A batch falls for the time a particle needs from the top of the volume to its bottom
@@ -43,6 +48,17 @@ a present particle near the volume or one placed before it; the first particle t
 ends the batch, with LAMMPS's warning. A placed particle gets vx, vy uniform in their ranges and
 :math:`v_z = -\sqrt{v_z^2 + 2 g (z_{hi} - z)}`, the speed of a fall from the top, then its density.
 
+Molecules (``mol``), as LAMMPS draws them: the volume of one is the disc or sphere of the template's
+reach (``molradius``: the largest distance of an atom's surface from its geometric centre), which
+also widens the near list; per molecule a height; per try a centre (x, y at that height), a number
+LAMMPS uses to choose among a set of templates (pdps has one: drawn and unused), a random axis (three
+numbers less 1/2, normalised; z in 2-d) and an angle :math:`2\pi u`; the template turned by that
+quaternion about its centre and put there, each atom wrapped into the periodic box (its image
+flags counted); a try fails where any atom touches a present or placed particle. A placed copy
+takes the velocity (drawn as a sphere's) on every atom, a new molecule id (where the particles have
+molecule ids), the template's radii (0.5 without Diameters) and masses (4/3 pi r^3 without Masses);
+with ``rigid`` the fix makes each copy a body, given the centre, velocity and turn.
+
 Output: none (LAMMPS's fix pour has no f_ID).
 """
 
@@ -51,7 +67,7 @@ from typing import Literal
 
 import numpy as np
 from numba import njit
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, park_state, park_uniform, param
+from pdps_core.api import Fix, MoleculeBodies, ScriptError, StyleArgs, keyword, park_state, park_uniform, param
 
 from .whole_number import WholeNumber
 
@@ -63,7 +79,7 @@ BLOCK, CYLINDER = 0, 1
 # LAMMPS takes these two region styles by name and reads their geometry (RegBlock's and
 # RegCylinder's bounds); pdps's regions declare no capability that gives it
 SHAPES = {"block": BLOCK, "cylinder": CYLINDER}
-MOLECULES = "pdps has no molecule templates (LAMMPS's fix pour inserts molecules with mol, rigid, shake)"
+ONE_TEMPLATE = "pdps's molecule templates are one molecule each (LAMMPS's molfrac chooses among a set's)"
 
 
 @njit(cache=True)
@@ -204,6 +220,144 @@ def pour_batch(state, nnew, maxattempt, lo_current, hi_current, shape, dimension
     return placed
 
 
+@njit(cache=True)
+def _remap(coord, image, boxlo, prd, periodic):
+    """LAMMPS's Domain::remap of one point into the periodic box, its image flags counted."""
+    for d in range(3):
+        if not periodic[d]:
+            continue
+        hi = boxlo[d] + prd[d]
+        while coord[d] < boxlo[d]:
+            coord[d] += prd[d]
+            image[d] -= 1
+        while coord[d] >= hi:
+            coord[d] -= prd[d]
+            image[d] += 1
+        coord[d] = max(coord[d], boxlo[d])
+
+
+@njit(cache=True)
+def pour_molecule_batch(state, nnew, maxattempt, lo_current, hi_current, shape, dimension, bounds, velocity, grav,
+                        dx, atom_r, near_x, near_r, boxlo, prd, periodic, new_x, new_image, centres, quats, new_v):
+    """One batch of molecules in LAMMPS's order of draws (FixPour::pre_exchange, mode MOLECULE): per
+    molecule a height; per try a centre, the template's draw (one template: unused), a random axis
+    (3-d; z in 2-d) and angle, the copy turned about its geometric centre and wrapped into the
+    box, refused where any atom touches a present or placed one; then the velocity. Writes the
+    atoms (molecule by molecule), their image flags, each copy's centre, quaternion and velocity;
+    returns how many molecules were placed."""
+    natom = len(atom_r)
+    nnear = len(near_r)
+    xs = np.empty((nnear + nnew * natom, 3))
+    rs = np.empty(nnear + nnew * natom)
+    xs[:nnear] = near_x
+    rs[:nnear] = near_r
+    coord = np.zeros(3)
+    axis = np.zeros(3)
+    quat = np.zeros(4)
+    rot = np.zeros((3, 3))
+    trial = np.zeros((natom, 3))
+    image = np.zeros((natom, 3), dtype=np.int32)
+    attempt = 0
+    maxiter = nnew * maxattempt
+    placed = 0
+    while placed < nnew:
+        rn = park_uniform(state)
+        h = hi_current - rn * rn * (hi_current - lo_current)
+        success = False
+        while attempt < maxiter:
+            attempt += 1
+            if dimension == 2:
+                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
+                coord[1] = h
+                coord[2] = 0.0
+            elif shape == BLOCK:
+                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
+                coord[1] = bounds[2] + park_uniform(state) * (bounds[3] - bounds[2])
+                coord[2] = h
+            else:
+                while True:
+                    r1 = park_uniform(state) - 0.5
+                    r2 = park_uniform(state) - 0.5
+                    if r1 * r1 + r2 * r2 < 0.25:
+                        break
+                coord[0] = bounds[4] + 2.0 * r1 * bounds[6]
+                coord[1] = bounds[5] + 2.0 * r2 * bounds[6]
+                coord[2] = h
+            park_uniform(state)     # LAMMPS's choice among the templates of a set (pdps: one)
+            if dimension == 3:
+                axis[0] = park_uniform(state) - 0.5
+                axis[1] = park_uniform(state) - 0.5
+                axis[2] = park_uniform(state) - 0.5
+            else:
+                axis[0] = 0.0
+                axis[1] = 0.0
+                axis[2] = 1.0
+            theta = park_uniform(state) * 2.0 * math.pi
+            scale = 1.0 / math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2])
+            half = 0.5 * theta
+            sine = math.sin(half)
+            quat[0] = math.cos(half)
+            for d in range(3):
+                quat[d + 1] = axis[d] * scale * sine
+            _rotation(quat, rot)
+            for m in range(natom):
+                for d in range(3):
+                    trial[m, d] = rot[d, 0] * dx[m, 0] + rot[d, 1] * dx[m, 1] + rot[d, 2] * dx[m, 2] + coord[d]
+                    image[m, d] = 0
+                _remap(trial[m], image[m], boxlo, prd, periodic)
+            clear = True
+            for m in range(natom):
+                for i in range(nnear):
+                    delx = _minimum_image(trial[m, 0] - xs[i, 0], prd[0], periodic[0])
+                    dely = _minimum_image(trial[m, 1] - xs[i, 1], prd[1], periodic[1])
+                    delz = _minimum_image(trial[m, 2] - xs[i, 2], prd[2], periodic[2])
+                    radsum = atom_r[m] + rs[i]
+                    if delx * delx + dely * dely + delz * delz <= radsum * radsum:
+                        clear = False
+                        break
+                if not clear:
+                    break
+            if clear:
+                success = True
+                break
+        if not success:
+            break
+        for m in range(natom):
+            xs[nnear] = trial[m]
+            rs[nnear] = atom_r[m]
+            nnear += 1
+            new_x[placed * natom + m] = trial[m]
+            new_image[placed * natom + m] = image[m]
+        centres[placed] = coord
+        quats[placed] = quat
+        new_v[placed, 0] = velocity[0] + park_uniform(state) * (velocity[1] - velocity[0])
+        if dimension == 3:
+            new_v[placed, 1] = velocity[2] + park_uniform(state) * (velocity[3] - velocity[2])
+            new_v[placed, 2] = -math.sqrt(velocity[5] * velocity[5] + 2.0 * grav * (coord[2] - hi_current))
+        else:
+            new_v[placed, 1] = -math.sqrt(velocity[4] * velocity[4] + 2.0 * grav * (coord[1] - hi_current))
+            new_v[placed, 2] = 0.0
+        placed += 1
+    return placed
+
+
+@njit(cache=True)
+def _rotation(q, rot):
+    """LAMMPS's MathExtra::quat_to_mat: the rotation matrix of a unit quaternion (w, x, y, z)."""
+    w2, i2, j2, k2 = q[0] * q[0], q[1] * q[1], q[2] * q[2], q[3] * q[3]
+    twoij, twoik, twojk = 2.0 * q[1] * q[2], 2.0 * q[1] * q[3], 2.0 * q[2] * q[3]
+    twoiw, twojw, twokw = 2.0 * q[1] * q[0], 2.0 * q[2] * q[0], 2.0 * q[3] * q[0]
+    rot[0, 0] = w2 + i2 - j2 - k2
+    rot[0, 1] = twoij - twokw
+    rot[0, 2] = twojw + twoik
+    rot[1, 0] = twoij + twokw
+    rot[1, 1] = w2 - i2 + j2 - k2
+    rot[1, 2] = twojk - twoiw
+    rot[2, 0] = twoik - twojw
+    rot[2, 1] = twojk + twoiw
+    rot[2, 2] = w2 - i2 - j2 + k2
+
+
 def gravity_of(sim):
     """The acceleration (3,) of the first gravity fix (its ``gvec``), or None."""
     return next((np.asarray(g, dtype=np.float64) for fix in sim.fixes.values()
@@ -214,12 +368,12 @@ class FixPour(Fix):
     name = "pour"
     usage = ("fix ID GROUP pour N TYPE SEED region ID [diam one D | range DLO DHI | poly N D1 P1 ...] "
              "[dens DLO DHI] [vol FRAC MAXATTEMPT] [rate V] [vel VXLO VXHI VYLO VYHI VZ | VXLO VXHI VY] "
-             "[id max|next] [ignore]")
-    refused = {"mol": MOLECULES, "molfrac": MOLECULES, "rigid": MOLECULES, "shake": MOLECULES}
+             "[id max|next] [ignore] [mol TEMPLATE [rigid FIX_ID]]")
+    refused = {"molfrac": ONE_TEMPLATE, "shake": "pdps has no fix shake"}
 
     class Args(StyleArgs):
         ninsert: WholeNumber = param(ge=1, unit="particles")
-        type: WholeNumber = param(ge=1, unit="1")
+        type: WholeNumber = param(ge=0, unit="1")
         seed: WholeNumber = param(ge=1, unit="1")
         region: str = keyword(..., names="region ID")
         diam: (tuple[Literal["one"], float] | tuple[Literal["range"], float, float]
@@ -230,9 +384,14 @@ class FixPour(Fix):
         vel: tuple[float, ...] | None = keyword(None, unit="velocity")
         id: Literal["max", "next"] = keyword("max")
         ignore: tuple[()] | None = keyword(None)
+        mol: str | None = keyword(None)
+        rigid: str | None = keyword(None)
 
     @classmethod
     def check_args(cls, args):
+        if args.rigid is not None and args.mol is None:
+            raise ScriptError("rigid needs mol: fix pour makes rigid bodies of molecules only (LAMMPS: Cannot use fix "
+                              "pour rigid and not molecule)")
         if args.dens[0] > args.dens[1]:
             raise ScriptError(f"dens: DLO must be <= DHI (got {args.dens[0]:g} {args.dens[1]:g})")
         if not args.vol[0] > 0:
@@ -265,8 +424,13 @@ class FixPour(Fix):
         if "sphere" not in sim.particle_styles:
             raise ScriptError(f"fix pour needs radius and rmass (atom_style sphere or granular; got "
                               f"{sim.particle_style})")
-        if args.type > sim.ntypes:
+        self.template = sim.molecule_template(args.mol) if args.mol is not None else None
+        if self.template is None and not 1 <= args.type <= sim.ntypes:
             raise ScriptError(f"TYPE must be from 1 to {sim.ntypes} (got {args.type})")
+        if self.template is not None and args.type + self.template.ntypes > sim.ntypes:
+            raise ScriptError(f"TYPE {args.type} plus molecule {args.mol}'s types (up to {self.template.ntypes}) must be "
+                              f"at most {sim.ntypes} (LAMMPS: Invalid atom type in fix pour mol command)")
+        self.rigid_id = args.rigid
         self.ninsert, self.ntype = args.ninsert, args.type
         self.volfrac, self.maxattempt = args.vol
         self.rate = args.rate
@@ -280,6 +444,9 @@ class FixPour(Fix):
         self.next_reneighbor = sim.step + 1
         self.nfirst = self.next_reneighbor
         self.ninserted = 0
+        if self.template is not None:
+            # the copies' radius, for the volume of one and for the present particles they may touch
+            self.radius_max = self.template.molradius
         self.nper = int(self.volfrac * self._volume(dimension) / self._volume_one(dimension))
         if self.nper == 0:
             raise ScriptError("fix pour inserts 0 particles each time (vol FRAC times the region's volume is "
@@ -378,7 +545,7 @@ class FixPour(Fix):
 
     def _volume_one(self, dimension):
         power, factor = (3, 4.0 / 3.0 * math.pi) if dimension == 3 else (2, math.pi)
-        if self.dstyle == POLY:
+        if self.dstyle == POLY and self.template is None:
             return float(sum(factor * r ** power * p for r, p in zip(self.poly_radius, self.poly_fraction)))
         return factor * self.radius_max ** power
 
@@ -402,13 +569,31 @@ class FixPour(Fix):
         if sim.dt != self.dt:
             raise ScriptError(f"fix {self.id} (pour): the time step changed since its first run ({self.dt:g}, now "
                               f"{sim.dt:g}; LAMMPS: Cannot change timestep with fix pour)")
+        self.bodies = self._rigid_fix(sim) if self.rigid_id is not None else None
         # LAMMPS's setup_pre_exchange: every run starts with a batch on its first step
         self.next_reneighbor = sim.step + 1 if self.ninserted < self.ninsert else None
+
+    def _rigid_fix(self, sim):
+        fix = sim.fixes.get(self.rigid_id)
+        if fix is None:
+            raise ScriptError(f"fix {self.id} (pour): rigid fix {self.rigid_id} does not exist")
+        if not isinstance(fix, MoleculeBodies):
+            raise ScriptError(f"fix {self.id} (pour): fix {self.rigid_id} ({fix.name}) makes no rigid bodies of "
+                              "molecule templates (fix rigid/small ... mol TEMPLATE does)")
+        if fix.body_template is not self.template:
+            theirs = getattr(fix.body_template, "id", None)
+            raise ScriptError(f"fix {self.id} (pour) and fix {self.rigid_id} use different molecule templates "
+                              f"({self.template.id} and {theirs or 'none'})")
+        return fix
 
     def reset_dt(self, sim):
         raise ScriptError(f"fix {self.id} (pour) cannot follow a change of time step (as LAMMPS)")
 
     def inserted_radius(self, type_):
+        if self.template is not None:
+            atom_r = self.template.radius if self.template.radius is not None else np.full(self.template.natoms, 0.5)
+            chosen = self.ntype + self.template.types == type_
+            return float(atom_r[chosen].max()) if chosen.any() else 0.0
         return self.radius_max if type_ == self.ntype else 0.0
 
     # ---- one batch ----
@@ -427,6 +612,9 @@ class FixPour(Fix):
         periodic = np.array(box.periodic, dtype=np.bool_)
         p = sim.particles
         n = p.nlocal
+        if self.template is not None:
+            self._pour_molecules(sim, nnew, lo_current, hi_current, boxlo, prd, periodic)
+            return
         rows = near_volume(p.x, p.radius, n, self.shape, sim.dimension, self.bounds, lo_current, hi_current,
                            self.radius_max, boxlo, prd, periodic)
         near = sim.comm.allgather_rows(np.column_stack([p.x[rows], p.radius[rows]]))
@@ -449,4 +637,49 @@ class FixPour(Fix):
                               mask=np.full(placed, bits, dtype=np.uint32))
         else:
             sim.add_particles(np.zeros((0, 3)), self.ntype)
+        self.next_reneighbor = sim.step + self.nfreq if self.ninserted < self.ninsert else None
+
+    def _pour_molecules(self, sim, nnew, lo_current, hi_current, boxlo, prd, periodic):
+        """A batch of copies of the template (LAMMPS's mode MOLECULE): each atom takes the type TYPE
+        plus its template type, the template's radius (0.5 without Diameters) and mass (4/3 pi r^3
+        without Masses), the copy's velocity; each copy a new molecule id; a rigid fix makes bodies."""
+        p = sim.particles
+        n = p.nlocal
+        template = self.template
+        natom = template.natoms
+        atom_r = template.radius if template.radius is not None else np.full(natom, 0.5)
+        rows = near_volume(p.x, p.radius, n, self.shape, sim.dimension, self.bounds, lo_current, hi_current,
+                           self.radius_max, boxlo, prd, periodic)
+        near = sim.comm.allgather_rows(np.column_stack([p.x[rows], p.radius[rows]]))
+        new_x, new_image = np.zeros((nnew * natom, 3)), np.zeros((nnew * natom, 3), dtype=np.int32)
+        centres, quats, new_v = np.zeros((nnew, 3)), np.zeros((nnew, 4)), np.zeros((nnew, 3))
+        placed = pour_molecule_batch(self.state, nnew, self.maxattempt, lo_current, hi_current, self.shape,
+                                     sim.dimension, self.bounds, self.velocity, self.grav,
+                                     np.ascontiguousarray(template.dx), np.ascontiguousarray(atom_r, dtype=np.float64),
+                                     np.ascontiguousarray(near[:, :3]), np.ascontiguousarray(near[:, 3]), boxlo, prd,
+                                     periodic, new_x, new_image, centres, quats, new_v)
+        self.ninserted += placed
+        if placed < nnew:
+            sim.warn(f"fix {self.id} (pour): inserted {placed} of {nnew} molecules at step {sim.step} (LAMMPS: Fewer "
+                     "insertions than requested)")
+        count = placed * natom
+        molecule = None
+        if p.has("molecule"):
+            largest = int(sim.comm.max(int(p.molecule[:n].max()) if n else 0))
+            molecule = np.repeat(np.arange(largest + 1, largest + 1 + placed, dtype=np.int64), natom)
+        radius = np.tile(atom_r, placed)
+        mass = (np.tile(template.rmass, placed) if template.rmass is not None
+                else 4.0 * math.pi / 3.0 * radius * radius * radius)
+        extra = {} if molecule is None else {"molecule": molecule}
+        bits = np.uint32(1) | sim.groups.bit(self.group)
+        if sim.comm.rank == 0:
+            added = sim.add_particles(new_x[:count], self.ntype + np.tile(template.types, placed),
+                                      v=np.repeat(new_v[:placed], natom, axis=0), radius=radius, rmass=mass,
+                                      image=new_image[:count], mask=np.full(count, bits, dtype=np.uint32), **extra)
+        else:
+            added = sim.add_particles(np.zeros((0, 3)), self.ntype)
+            placed = 0
+        if self.bodies is not None:
+            self.bodies.add_molecule_bodies(sim, np.asarray(added).reshape(placed, natom), centres[:placed],
+                                            new_v[:placed], quats[:placed])
         self.next_reneighbor = sim.step + self.nfreq if self.ninserted < self.ninsert else None

@@ -289,16 +289,17 @@ GRAVITY = "fix 2 all gravity 1.0 vector 0 0 -1"
 
 
 @pytest.mark.parametrize("args, message", [
-    ("10 1 5 region slab mol m1", "fix: keyword mol of fix pour: pdps has no molecule templates (LAMMPS's fix pour "
-     "inserts molecules with mol, rigid, shake)"),
-    ("10 1 5 region slab rigid r1", "fix: keyword rigid of fix pour: pdps has no molecule templates (LAMMPS's fix "
-     "pour inserts molecules with mol, rigid, shake)"),
-    ("10 1 5 region slab shake s1", "fix: keyword shake of fix pour: pdps has no molecule templates (LAMMPS's fix "
-     "pour inserts molecules with mol, rigid, shake)"),
+    ("10 1 5 region slab mol m1", "fix: molecule template m1 is not defined (defined: none)"),
+    ("10 1 5 region slab rigid r1", "fix: rigid needs mol: fix pour makes rigid bodies of molecules only (LAMMPS: "
+     "Cannot use fix pour rigid and not molecule)"),
+    ("10 1 5 region slab shake s1", "fix: keyword shake of fix pour: pdps has no fix shake"),
+    ("10 1 5 region slab molfrac 1", "fix: keyword molfrac of fix pour: pdps's molecule templates are one molecule "
+     "each (LAMMPS's molfrac chooses among a set's)"),
+    ("10 0 5 region slab", "fix: TYPE must be from 1 to 1 (got 0)"),
     ("10 1 5 diam one 1", "fix: missing keyword region; usage: fix ID GROUP pour N TYPE SEED region ID "
      "[diam one D | range DLO DHI | poly N D1 P1 ...] [dens DLO DHI] [vol FRAC MAXATTEMPT] [rate V] "
-     "[vel VXLO VXHI VYLO VYHI VZ | VXLO VXHI VY] [id max|next] [ignore]"),
-    ("10 1 5 region slab bogus 3", "fix: unknown keyword bogus (known: region, diam, dens, vol, rate, vel, id, ignore)"),
+     "[vel VXLO VXHI VYLO VYHI VZ | VXLO VXHI VY] [id max|next] [ignore] [mol TEMPLATE [rigid FIX_ID]]"),
+    ("10 1 5 region slab bogus 3", "fix: unknown keyword bogus (known: region, diam, dens, vol, rate, vel, id, ignore, mol, rigid)"),
     ("10 1 5 region slab diam poly 2 1.0 0.5 0.8 0.4", "fix: diam poly: the fractions must sum to 1 (got 0.9)"),
     ("10 1 5 region slab diam poly 2 1.0 0.5", "fix: diam poly 2 needs 4 values, a diameter and a fraction each "
      "(got 2)"),

@@ -9,8 +9,9 @@ Syntax (LAMMPS)::
 
 - ``i_NAME``: an integer per particle; ``d_NAME``: a floating-point number per particle; both 0 to
   start with, read elsewhere as ``i_NAME``/``d_NAME`` (fix rigid custom i_NAME, compute property/atom,
-  dump custom). LAMMPS's ``mol``, ``q``, ``rmass``, ``i2_NAME N`` and ``d2_NAME N`` are refused:
-  choose an atom_style that has them.
+  dump custom). ``mol``: a molecule id per particle (0 to start with), as atom_style molecular has
+  (fix rigid/small molecule, fix pour mol, group molecule read it). LAMMPS's ``q``, ``rmass``,
+  ``i2_NAME N`` and ``d2_NAME N`` are refused: choose an atom_style that has them.
 - ``ghost``: LAMMPS's ghost communication flag, read; pdps always copies the values to ghosts.
 - The fix may stand before the box exists, so that read_data reads its section: each line of
   SECTION is ``ID value1 [value2 ...]``, one value for each NAME in order.
@@ -48,7 +49,10 @@ class FixPropertyAtomLammps(Fix):
         super().__init__(sim, id, group, args)
         self.columns = []
         for word in args.names:
-            if word in ("mol", "q", "rmass", "temperature", "heatflow") or word.startswith(("i2_", "d2_")):
+            if word == "mol":
+                self._molecule_ids(sim, word)
+                continue
+            if word in ("q", "rmass", "temperature", "heatflow") or word.startswith(("i2_", "d2_")):
                 raise ScriptError(f"{word}: pdps's fix property/atom makes i_NAME and d_NAME values; for {word} "
                                   "choose an atom_style that has it")
             match = NAME.match(word)
@@ -62,6 +66,16 @@ class FixPropertyAtomLammps(Fix):
             dtype = np.int64 if kind == "i" else np.float64
             sim.particles.request(name, dtype=dtype, default=0, replicate="copy")
             self.columns.append((kind, name))
+
+    def _molecule_ids(self, sim, word):
+        """``mol``: a molecule id per particle (0: none), as the molecular styles have."""
+        if "molecule" in [column[1] for column in self.columns]:
+            raise ScriptError(f"{word}: named twice")
+        if sim.particles.has("molecule"):
+            raise ScriptError("mol: the particles already have molecule ids (LAMMPS: Fix property/atom mol when "
+                              "atom_style already has molecule attribute)")
+        sim.particles.request("molecule", dtype=np.int64, default=0, replicate="copy")
+        self.columns.append(("mol", "molecule"))
 
     def read_data_section(self, sim, section, lines, rows):
         """Fill the values from read_data's SECTION: ``lines`` (line number, words), ``rows`` maps a
@@ -80,7 +94,7 @@ class FixPropertyAtomLammps(Fix):
                 raise ScriptError(f"line {number} of section {section}: no particle has id {tag}")
             for (kind, name), word in zip(self.columns, words[1:]):
                 try:
-                    p.arrays[name][row] = int(word) if kind == "i" else float(word)
+                    p.arrays[name][row] = float(word) if kind == "d" else int(word)
                 except ValueError:
                     raise ScriptError(f"line {number} of section {section}: {word} is not "
-                                      f"{'an integer' if kind == 'i' else 'a number'}") from None
+                                      f"{'a number' if kind == 'd' else 'an integer'}") from None

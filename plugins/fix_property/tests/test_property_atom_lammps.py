@@ -95,9 +95,23 @@ def test_the_section_fills_the_property(folder):
     assert dict(zip(sim.tag.tolist(), clump.tolist())) == {k: (k - 1) // 3 + 1 for k in range(1, 10)}
 
 
+def test_mol_gives_the_particles_molecule_ids():
+    sim = Simulation(screen=False, log=None, dialect="lammps")
+    sim.command("units lj\natom_style sphere\nfix 0 all property/atom mol ghost yes\nregion b block 0 4 0 4 0 4\n"
+                "create_box 1 b\ncreate_atoms 1 single 1 1 1\ncreate_atoms 1 single 2 2 2\nset atom 2 mol 7\n"
+                "group seven molecule 7")
+    assert sim.particles.molecule[:2].tolist() == [0, 7]
+    assert sim.groups.select(sim, "seven").tolist() == [False, True]
+    with pytest.raises(ScriptError) as caught:
+        sim.command("fix 1 all property/atom mol")
+    assert str(caught.value) == ("<command>:1: fix: mol: the particles already have molecule ids (LAMMPS: Fix "
+                                 "property/atom mol when atom_style already has molecule attribute)")
+
+
 @pytest.mark.parametrize("lines, message", [
-    ("fix 0 all property/atom mol", "<command>:3: fix: mol: pdps's fix property/atom makes i_NAME and d_NAME values; for mol "
-                                    "choose an atom_style that has it"),
+    ("fix 0 all property/atom q", "<command>:3: fix: q: pdps's fix property/atom makes i_NAME and d_NAME values; for q "
+                                  "choose an atom_style that has it"),
+    ("fix 0 all property/atom mol mol", "<command>:3: fix: mol: named twice"),
     ("fix 0 all property/atom clump", "<command>:3: fix: clump: expected i_NAME or d_NAME"),
     ("fix 0 all property/atom i_a d_a", "<command>:3: fix: d_a: named twice"),
     ("fix 0 all property/atom i_clump\nread_data data.clumps fix 0 NULL Bodies",

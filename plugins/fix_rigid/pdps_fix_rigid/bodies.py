@@ -163,10 +163,17 @@ def force_torque(x, f, torque_atom, image, body, length, xcm, image_body, nlocal
         out[b, 3] += dy * f[i, 2] - dz * f[i, 1]
         out[b, 4] += dz * f[i, 0] - dx * f[i, 2]
         out[b, 5] += dx * f[i, 1] - dy * f[i, 0]
-        if with_torque:
-            out[b, 3] += torque_atom[i, 0]
-            out[b, 4] += torque_atom[i, 1]
-            out[b, 5] += torque_atom[i, 2]
+    if not with_torque:
+        return
+    # the spheres' own torques after all arms, in a second pass as LAMMPS sums them (the same
+    # total to round-off; in LAMMPS's order a body's spin noise is LAMMPS's to the bit)
+    for i in range(nlocal):
+        b = body[i]
+        if b < 0:
+            continue
+        out[b, 3] += torque_atom[i, 0]
+        out[b, 4] += torque_atom[i, 1]
+        out[b, 5] += torque_atom[i, 2]
 
 
 @njit(cache=True, inline="always")

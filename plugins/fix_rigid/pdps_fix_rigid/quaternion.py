@@ -172,3 +172,21 @@ def no_squish_rotate(k, conjqm, quat, inertia, b, dt):
                                                               c * p2 + s * kp2, c * p3 + s * kp3)
     quat[b, 0], quat[b, 1], quat[b, 2], quat[b, 3] = (c * q0 + s * kq0, c * q1 + s * kq1,
                                                       c * q2 + s * kq2, c * q3 + s * kq3)
+
+
+def rotation_matrix(q, rot):
+    """The rotation matrix of a unit quaternion (w, x, y, z) into ``rot`` (LAMMPS's quat_to_mat)."""
+    w2, i2, j2, k2 = q[0] * q[0], q[1] * q[1], q[2] * q[2], q[3] * q[3]
+    twoij, twoik, twojk = 2.0 * q[1] * q[2], 2.0 * q[1] * q[3], 2.0 * q[2] * q[3]
+    twoiw, twojw, twokw = 2.0 * q[1] * q[0], 2.0 * q[2] * q[0], 2.0 * q[3] * q[0]
+    rot[0] = w2 + i2 - j2 - k2, twoij - twokw, twojw + twoik
+    rot[1] = twoij + twokw, w2 - i2 + j2 - k2, twojk - twoiw
+    rot[2] = twoik - twojw, twojk + twoiw, w2 - i2 - j2 + k2
+
+
+def quaternion_product(a, b, c):
+    """c = a b, the turn b then a (LAMMPS's quatquat)."""
+    c[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3]
+    c[1] = a[0] * b[1] + b[0] * a[1] + a[2] * b[3] - a[3] * b[2]
+    c[2] = a[0] * b[2] + b[0] * a[2] + a[3] * b[1] - a[1] * b[3]
+    c[3] = a[0] * b[3] + b[0] * a[3] + a[1] * b[2] - a[2] * b[1]

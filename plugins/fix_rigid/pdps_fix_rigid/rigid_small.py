@@ -44,6 +44,7 @@ array (LAMMPS's rigid/small has none): ``compute rigid/local`` gives the bodies'
 Syntax::
 
     fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]
+        [mol TEMPLATE] [gravity FIX_ID]
 
 - ``molecule``: one body per molecule id among the group's particles (LAMMPS's only bodystyle for
   rigid/small); the particles need molecule ids (atom_style molecular, bond, angle or full).
@@ -62,14 +63,32 @@ Syntax::
   ranks (not LAMMPS's numbers, which depend on the rank; its drag alone is LAMMPS's to round-off).
 - ``temp`` and ``tparam`` belong to rigid/nvt/small and rigid/npt/small, the barostat keywords (iso,
   aniso, x, y, z, couple, pchain, dilate) to rigid/nph/small and rigid/npt/small: refused here, as
-  LAMMPS does. ``mol`` and ``gravity`` are refused by name: not implemented yet.
+  LAMMPS does.
+- ``mol TEMPLATE`` (rigid/small and rigid/nve/small; the other variants refuse it): bodies made
+  during a run of the copies of a molecule template (the ``molecule`` command) that fix pour ``mol
+  TEMPLATE rigid ID`` inserts, as LAMMPS's set_molecule makes them: the template's body is worked out
+  once, at the first run, as LAMMPS's Molecule does it (mass, centre of mass and inertia tensor
+  from the file's header or its atoms, principal axes by Jacobi rotations in LAMMPS's arithmetic,
+  moments decreasing, each atom's displacement in the body frame, the owner the atom nearest the
+  centre of mass); a copy's centre of mass is the centre the pour chose plus the turned offset from
+  the template's geometric centre, its orientation the pour's turn times the template's axes, its
+  velocity the pour's and its angular momentum 0.
+- ``gravity FIX_ID`` (rigid/small and rigid/nve/small): each body's centre of mass feels
+  :math:`M\mathbf{g}`, g the acceleration of that fix gravity (LAMMPS's), so gravity puts no torque
+  on a body whose masses come from a template's header; ``fix ... gravity ... disable`` then leaves
+  the particles alone (else both act).
 
 Units: masses (mass), positions (distance), torques (energy), as the particles'.
 
-Example::
+Examples::
 
     fix 1 water rigid/small molecule
     neigh_modify exclude molecule/intra water
+
+    molecule ell ell.mol
+    fix grav all gravity 9.8 vector 0 0 -1 disable
+    fix rig all rigid/small molecule mol ell gravity grav
+    fix ins all pour 9 0 7310 region slab mol ell rigid rig
 
 Reference: LAMMPS's fix rigid documentation (docs/lammps.md, "fix rigid"); the integrators'
 references are fix rigid's and rigid/nve's.
@@ -82,19 +101,21 @@ from typing import Literal
 import numpy as np
 from numba import njit
 
-from pdps_core.api import Fix, ScriptError, StyleArgs, keyword, param
+from pdps_core.api import Fix, MoleculeBodies, ScriptError, StyleArgs, keyword, param
 
 from . import bodies
-from .quaternion import axes_from_quaternion, quaternion_from_axes
+from .jacobi import eigen3
+from .quaternion import axes_from_quaternion, quaternion_from_axes, rotation_matrix, quaternion_product
 from .rigid import (EPSILON, TOLERANCE, BodyForcesTiming, BodyStyle, FixRigid, check_langevin, langevin_keyed_forces, omegas,
                     richardson_final, richardson_initial)
 
 NO_ARRAY = np.zeros(0)
 NO_ARRAY2 = np.zeros((0, 3))
-NOT_YET = {word: "not implemented yet" for word in ("mol", "gravity")}
 # keywords LAMMPS refuses for a style of the family (Illegal fix command)
 THERMOSTAT_ONLY = "only fix rigid/nvt/small and rigid/npt/small take it (as LAMMPS)"
 BAROSTAT_ONLY = "only fix rigid/nph/small and rigid/npt/small take it (as LAMMPS)"
+# the thermostatted and barostatted variants take no bodies added during a run, nor the gravity keyword
+NOT_YET = {word: "fix rigid/small and rigid/nve/small take it; this variant does not yet" for word in ("mol", "gravity")}
 BAROSTAT_REFUSED = {word: BAROSTAT_ONLY for word in ("iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate")}
 # a body's record, kept on its owner particle: where each value sits in the row
 MASS, XCM, VCM, ANGMOM, QUAT, INERTIA, IMAGE, CONJQM, NRIGID = 0, 1, 4, 7, 10, 14, 17, 20, 24
@@ -279,14 +300,50 @@ def principal_axes(tensor):
     return moments, quat
 
 
+class TemplateBody:
+    """A molecule template as one rigid body (LAMMPS's Molecule::compute_mass, compute_com and
+    compute_inertia, which fix rigid/small mol reads): mass, centre of mass less the geometric
+    centre, principal moments and the quaternion of the principal axes, each atom's displacement in
+    the body frame, the atom nearest the centre of mass (the body's owner) and the largest distance
+    from it to another atom."""
+
+    def __init__(self, template, type_mass, dimension):
+        self.mass, com, t = template.mass_properties(type_mass)
+        found = eigen3([[t[0], t[5], t[4]], [t[5], t[1], t[3]], [t[4], t[3], t[2]]])
+        if found is None:
+            raise ScriptError(f"molecule {template.id}: its inertia tensor does not diagonalise (LAMMPS: "
+                              "Insufficient Jacobi rotations for rigid molecule)")
+        moments, vectors = found
+        ex, ey, ez = (np.array([vectors[0][k], vectors[1][k], vectors[2][k]]) for k in range(3))
+        largest = max(moments)
+        self.inertia = np.array([0.0 if c < EPSILON * largest else c for c in moments])
+        if np.dot(np.cross(ex, ey), ez) < 0.0:
+            ez = -ez
+        self.quat = np.zeros(4)
+        quaternion_from_axes(ex, ey, ez, self.quat)
+        d = template.coords - com
+        self.displace = np.array([[a[0] * r[0] + a[1] * r[1] + a[2] * r[2] for a in (ex, ey, ez)] for r in d])
+        self.centre_to_com = com - template.center
+        self.owner = int(np.argmin([r[0] * r[0] + r[1] * r[1] + r[2] * r[2] for r in d]))
+        self.extent = float(np.sqrt(((template.coords - template.coords[self.owner]) ** 2).sum(axis=1).max()))
+        self.natoms = template.natoms
+
+
+def template_body(template, type_mass, dimension):
+    if template.natoms < 2:
+        raise ScriptError(f"molecule {template.id} has {template.natoms} atom: a rigid body needs at least 2")
+    return TemplateBody(template, type_mass, dimension)
+
+
 class FixRigidSmall(BodyForcesTiming, Fix):
     name = "rigid/small"
     time_integrate = True
-    usage = "fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED]"
+    usage = ("fix ID GROUP rigid/small molecule [reinit yes|no] [infile FILE] [langevin TSTART TSTOP TPERIOD SEED] "
+             "[mol TEMPLATE] [gravity FIX_ID]")
     can_virial = True
     virial_default = True
     virial_after = "final_integrate"
-    refused = {"temp": THERMOSTAT_ONLY, "tparam": THERMOSTAT_ONLY} | BAROSTAT_REFUSED | NOT_YET
+    refused = {"temp": THERMOSTAT_ONLY, "tparam": THERMOSTAT_ONLY} | BAROSTAT_REFUSED
 
     class Args(StyleArgs):
         # read as fix rigid's, to say that only molecule is taken
@@ -295,6 +352,8 @@ class FixRigidSmall(BodyForcesTiming, Fix):
         infile: str | None = keyword(None)
         langevin: tuple[float, float, float, int] | None = keyword(
             None, unit=("temperature", "temperature", "time", "dimensionless"))
+        mol: str | None = keyword(None)
+        gravity: str | None = keyword(None)
 
     @classmethod
     def check_args(cls, args):
@@ -334,7 +393,10 @@ class FixRigidSmall(BodyForcesTiming, Fix):
             p.request(self.sums_name, width=6)
         members = sim.groups.select(sim, group)
         self.nbody = 0              # counted when the bodies are set up
-        if sim.comm.sum(int(members.sum())) == 0:
+        self.body_template = sim.molecule_template(args.mol) if args.mol is not None else None
+        self.template_body = None   # the template's body, worked out at the first run (masses may come later)
+        self.gvec = None
+        if self.body_template is None and sim.comm.sum(int(members.sum())) == 0:
             raise ScriptError(f"fix {id}: no particles in group {group} to make rigid bodies of")
         self._check_other_fixes(sim, members)
         self.from_file = self._read_infile(sim, members) if args.infile is not None else {}
@@ -574,6 +636,72 @@ class FixRigidSmall(BodyForcesTiming, Fix):
         answers[:, 6 + RECORD] = masstotal[body]
         return answers, None, extent
 
+    # ---- bodies of a template's copies, added during a run (fix pour mol ... rigid) ------------------
+    def add_molecule_bodies(self, sim, rows, centres, velocities, quats):
+        """LAMMPS's FixRigidSmall::set_molecule for each new copy: the template's body, its centre
+        of mass at the copy's centre plus the turned offset from the geometric centre, its
+        orientation the insertion's turn times the template's principal axes', the velocity given,
+        no angular momentum; the owner the atom nearest the centre of mass."""
+        body = self.template_body
+        p = sim.particles
+        a = p.arrays
+        count = len(rows)
+        total = int(sim.comm.sum(count))
+        if total == 0:
+            return
+        self.nbody += total
+        self.dof_cache = {}
+        if count == 0:
+            return
+        record = np.zeros((count, RECORD))
+        rotation = np.zeros((3, 3))
+        combined = np.zeros((1, 4))
+        for k in range(count):
+            rotation_matrix(quats[k], rotation)
+            offset = body.centre_to_com
+            for d in range(3):
+                record[k, XCM + d] = (rotation[d, 0] * offset[0] + rotation[d, 1] * offset[1]
+                                      + rotation[d, 2] * offset[2]) + centres[k, d]
+            quaternion_product(quats[k], body.quat, combined[0])
+            record[k, QUAT:QUAT + 4] = combined[0]
+        record[:, MASS] = body.mass
+        record[:, VCM:VCM + 3] = velocities
+        record[:, INERTIA:INERTIA + 3] = body.inertia
+        record[:, NRIGID] = body.natoms
+        if sim.dimension == 2:
+            record[:, VCM + 2] = 0.0
+        flat = rows.ravel()
+        owners = rows[:, body.owner]
+        a[self.tag_name][flat] = np.repeat(p.tag[owners], body.natoms)
+        a[self.displace_name][flat] = np.tile(body.displace, (count, 1))
+        if p.has("body_mass"):
+            a["body_mass"][flat] = body.mass
+        if self.parallel:
+            self._to_records(sim)
+            a[self.record_name][owners] = record
+            return
+        nl = self.nlocal_body
+        self._allocate(nl + count)
+        self._load_at(nl, record)
+        self.owner_tag[nl:nl + count] = p.tag[owners]
+        self.nlocal_body = nl + count
+        self.compact = False
+        self.atom_arrays = None
+
+    def _load_at(self, first, records):
+        """Bodies first.. from records (one rank: straight into the arrays)."""
+        count = len(records)
+        last = first + count
+        self.masstotal[first:last] = records[:, MASS]
+        self.xcm[first:last] = records[:, XCM:XCM + 3]
+        self.vcm[first:last] = records[:, VCM:VCM + 3]
+        self.angmom[first:last] = records[:, ANGMOM:ANGMOM + 3]
+        self.quat[first:last] = records[:, QUAT:QUAT + 4]
+        self.inertia[first:last] = records[:, INERTIA:INERTIA + 3]
+        self.image_body[first:last] = records[:, IMAGE:IMAGE + 3].astype(np.int64)
+        self.conjqm[first:last] = records[:, CONJQM:CONJQM + 4]
+        self.nrigid[first:last] = records[:, NRIGID].astype(np.int64)
+
     # ---- bodies between the per-atom records and the compact arrays -------------------------------
     def _to_records(self, sim):
         """The local bodies back onto their owners' rows (before particles migrate or reorder; on one
@@ -645,15 +773,7 @@ class FixRigidSmall(BodyForcesTiming, Fix):
 
     def _load(self, records, count):
         """Bodies 0..count-1 from their records (rows of RECORD values)."""
-        self.masstotal[:count] = records[:, MASS]
-        self.xcm[:count] = records[:, XCM:XCM + 3]
-        self.vcm[:count] = records[:, VCM:VCM + 3]
-        self.angmom[:count] = records[:, ANGMOM:ANGMOM + 3]
-        self.quat[:count] = records[:, QUAT:QUAT + 4]
-        self.inertia[:count] = records[:, INERTIA:INERTIA + 3]
-        self.image_body[:count] = records[:, IMAGE:IMAGE + 3].astype(np.int64)
-        self.conjqm[:count] = records[:, CONJQM:CONJQM + 4]
-        self.nrigid[:count] = records[:, NRIGID].astype(np.int64)
+        self._load_at(0, records[:count])
 
     def _drop_lost_bodies(self, sim):
         """One rank: bodies whose every particle was lost (their owner among them) leave the arrays."""
@@ -707,6 +827,13 @@ class FixRigidSmall(BodyForcesTiming, Fix):
         # a rigid fix defined after this one does not look for this one's bodies
         self._check_other_fixes(sim, sim.groups.select(sim, self.group))
         self.reset_dt(sim)
+        self.gvec = FixRigid._gravity(self, sim)
+        if self.body_template is not None and self.template_body is None:
+            self.template_body = template_body(self.body_template, sim.mass, sim.dimension)
+            sim.info(f"fix {self.id}: bodies of molecule {self.body_template.id}: mass "
+                     f"{self.template_body.mass:.8g}, principal moments "
+                     f"{' '.join(f'{c:.8g}' for c in self.template_body.inertia)}; {self.template_body.extent:.8g} "
+                     "= max distance from body owner to body particle")
         # a file's values hold for the first run only (as fix rigid's infile)
         if (self.args.reinit == "yes" and self.args.infile is None) or not self.set_up:
             self.setup_bodies(sim)
@@ -738,6 +865,9 @@ class FixRigidSmall(BodyForcesTiming, Fix):
         split_sums(self.nlocal_body, self.sums, self.fcm, self.torque)
         if self.args.langevin is not None and not sim.in_setup:
             self._langevin(sim)
+        if self.gvec is not None:
+            nl = self.nlocal_body
+            self.fcm[:nl] += self.masstotal[:nl, None] * self.gvec
 
     def _langevin(self, sim):
         """The local bodies' Langevin force and torque of this step, added to their sums (LAMMPS's

@@ -115,7 +115,9 @@ def test_bodies_straddling_the_box_are_whole_and_owned_once(tmp_path):
     ("fix 1 all rigid/nve/small molecule langevin 1 1 1 0", r"langevin: the seed must be a positive integer \(got 0\)"),
     ("fix 1 all rigid/small molecule langevin -1 1 1 5", r"langevin: Tstart and Tstop must be >= 0 \(got -1 1\)"),
     ("fix 1 all rigid/small molecule langevin 1 1 1", "langevin"),
-    ("fix 1 all rigid/small molecule mol water", "keyword mol of fix rigid/small: not implemented yet"),
+    ("fix 1 all rigid/small molecule mol water", r"molecule template water is not defined \(defined: none\)"),
+    ("fix 1 all rigid/nvt/small molecule temp 1 1 1 mol water", "keyword mol of fix rigid/nvt/small: fix rigid/small and "
+     "rigid/nve/small take it; this variant does not yet"),
     ("fix 1 all rigid/small molecule infile nowhere.txt", "infile nowhere.txt: cannot read it"),
     ("fix 1 all rigid/small molecule infile BODIES", r"BODIES:3: no body 5 in fix 1 \(its bodies: 1..2\)"),
     ("fix 1 all rigid/small molecule force 1 off off off", "force"),

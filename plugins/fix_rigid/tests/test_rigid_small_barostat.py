@@ -81,7 +81,8 @@ def test_same_thermo_on_one_and_two_ranks(tmp_path, name):
     ("fix 1 all rigid/npt/small molecule temp 1 1 1 iso 1 1 1 tparam 3 2000 3", "tparam: TCHAIN and TITER must be"),
     ("fix 1 all rigid/nph/small molecule x 1 1 1 y 2 2 1 couple xy", "couple xy: coupled axes need the same"),
     ("fix 1 all rigid/nph/small molecule iso 1 1 1 couple banana", "couple"),
-    ("fix 1 all rigid/nph/small molecule iso 1 1 1 mol water", "keyword mol of fix rigid/nph/small: not implemented"),
+    ("fix 1 all rigid/nph/small molecule iso 1 1 1 mol water", "keyword mol of fix rigid/nph/small: fix rigid/small and rigid/nve/small take it; this "
+     "variant does not yet"),
     ("fix 1 all rigid/nph/small single iso 1 1 1", "fix rigid/nph/small takes bodystyle molecule only"),
     ("fix 1 all rigid/nvt/small molecule temp 1 1 1 iso 1 1 1", "keyword iso of fix rigid/nvt/small: only fix "
      "rigid/nph/small and rigid/npt/small take it"),
