@@ -136,6 +136,29 @@ def near_volume(x, radius, n, shape, dimension, bounds, lo_current, hi_current, 
 
 
 @njit(cache=True)
+def _draw_centre(state, coord, h, dimension, shape, bounds):
+    """A try's centre at height h, in LAMMPS's order of draws: x (2-d: the height is y), or x and
+    y in the block, or a point of the cylinder's disc by rejection."""
+    if dimension == 2:
+        coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
+        coord[1] = h
+        coord[2] = 0.0
+    elif shape == BLOCK:
+        coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
+        coord[1] = bounds[2] + park_uniform(state) * (bounds[3] - bounds[2])
+        coord[2] = h
+    else:
+        while True:
+            r1 = park_uniform(state) - 0.5
+            r2 = park_uniform(state) - 0.5
+            if r1 * r1 + r2 * r2 < 0.25:
+                break
+        coord[0] = bounds[4] + 2.0 * r1 * bounds[6]
+        coord[1] = bounds[5] + 2.0 * r2 * bounds[6]
+        coord[2] = h
+
+
+@njit(cache=True)
 def _radius(state, dstyle, radius_one, radius_lo, radius_hi, poly_radius, poly_fraction):
     if dstyle == ONE:
         return radius_one
@@ -172,23 +195,7 @@ def pour_batch(state, nnew, maxattempt, lo_current, hi_current, shape, dimension
         success = False
         while attempt < maxiter:
             attempt += 1
-            if dimension == 2:
-                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
-                coord[1] = h
-                coord[2] = 0.0
-            elif shape == BLOCK:
-                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
-                coord[1] = bounds[2] + park_uniform(state) * (bounds[3] - bounds[2])
-                coord[2] = h
-            else:
-                while True:
-                    r1 = park_uniform(state) - 0.5
-                    r2 = park_uniform(state) - 0.5
-                    if r1 * r1 + r2 * r2 < 0.25:
-                        break
-                coord[0] = bounds[4] + 2.0 * r1 * bounds[6]
-                coord[1] = bounds[5] + 2.0 * r2 * bounds[6]
-                coord[2] = h
+            _draw_centre(state, coord, h, dimension, shape, bounds)
             clear = True
             for i in range(nnear):
                 delx = _minimum_image(coord[0] - xs[i, 0], prd[0], periodic[0])
@@ -266,23 +273,7 @@ def pour_molecule_batch(state, nnew, maxattempt, lo_current, hi_current, shape, 
         success = False
         while attempt < maxiter:
             attempt += 1
-            if dimension == 2:
-                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
-                coord[1] = h
-                coord[2] = 0.0
-            elif shape == BLOCK:
-                coord[0] = bounds[0] + park_uniform(state) * (bounds[1] - bounds[0])
-                coord[1] = bounds[2] + park_uniform(state) * (bounds[3] - bounds[2])
-                coord[2] = h
-            else:
-                while True:
-                    r1 = park_uniform(state) - 0.5
-                    r2 = park_uniform(state) - 0.5
-                    if r1 * r1 + r2 * r2 < 0.25:
-                        break
-                coord[0] = bounds[4] + 2.0 * r1 * bounds[6]
-                coord[1] = bounds[5] + 2.0 * r2 * bounds[6]
-                coord[2] = h
+            _draw_centre(state, coord, h, dimension, shape, bounds)
             park_uniform(state)     # LAMMPS's choice among the templates of a set (pdps: one)
             if dimension == 3:
                 axis[0] = park_uniform(state) - 0.5
