@@ -9,7 +9,8 @@ import pytest
 
 from pdps_core.testing import assert_prints_as_lammps, script_error
 
-ISO = """units lj
+# the disordered lattice both relaxations start from
+LATTICE = """units lj
 dimension 2
 atom_style atomic
 lattice sq2 0.8442
@@ -23,7 +24,9 @@ pair_coeff 1 1 1.0 1.0 2.5
 pair_modify shift yes
 neighbor 0.3 bin
 neigh_modify delay 0 every 1 check yes
-fix 3 all box/relax iso 1.5 vmax 1.0e-3
+"""
+
+ISO = LATTICE + """fix 3 all box/relax iso 1.5 vmax 1.0e-3
 variable emin equal pe+f_3/atoms
 thermo 5
 thermo_style custom step pe press pxx pyy vol f_3 v_emin
@@ -44,21 +47,7 @@ ISO_LAMMPS = [
     [50, -2.42525904752452, 1.3935216449571, 1.40048231379845, 1.38656097611576, 70.5057569296375, -0.0141862117981509, -2.43944525932268],
 ]
 
-ANISO_THEN_DEVIATORIC = """units lj
-dimension 2
-atom_style atomic
-lattice sq2 0.8442
-region box block 0 6 0 5 -0.1 0.1
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
-displace_atoms all random 0.05 0.05 0.0 4821
-pair_style lj/cut 2.5
-pair_coeff 1 1 1.0 1.0 2.5
-pair_modify shift yes
-neighbor 0.3 bin
-neigh_modify delay 0 every 1 check yes
-fix 3 all box/relax aniso 1.5 vmax 1.0e-3
+ANISO_THEN_DEVIATORIC = LATTICE + """fix 3 all box/relax aniso 1.5 vmax 1.0e-3
 variable emin equal pe+f_3/atoms
 thermo 5
 thermo_style custom step pe press pxx pyy lx ly f_3 v_emin
