@@ -140,9 +140,8 @@ class FixBoxRelax(Fix):
         virial = observables.virial_parts(sim)
         tensor = (virial[0] + virial[1])[:3] / sim.box.volume * units
         current = tensor.copy()
-        if self.couple == "xyz":
-            current[:] = tensor.mean()
-        elif self.couple in ("xy", "yz", "xz"):
+        # couple xyz (and xy in 2-d) is the iso case above
+        if self.couple in ("xy", "yz", "xz"):
             axes = ["xyz".index(c) for c in self.couple]
             current[axes] = tensor[axes].mean()
         if not np.isfinite(current).all():
